@@ -1,0 +1,3 @@
+from urdfcli.cli import main
+
+main()

@@ -1,0 +1,79 @@
+"""The command line: one small module per subcommand, joined here."""
+
+from __future__ import annotations
+
+import os
+import sys
+from typing import Annotated
+
+import typer
+
+from .. import __version__
+from .check import check
+from .expand import expand
+
+app = typer.Typer(
+    name="urdfcli",
+    help="Check, expand, draw and lint URDF and xacro robot descriptions, without ROS.\n\n"
+    "Exit codes: 0 no errors, 1 problems found, 2 could not run.",
+    no_args_is_help=True,
+    add_completion=False,
+    pretty_exceptions_enable=False,
+    context_settings={"help_option_names": ["-h", "--help"]},
+)
+
+
+def _version(value: bool) -> None:
+    if value:
+        print(f"urdfcli {__version__}")
+        raise typer.Exit()
+
+
+@app.callback()
+def _main(
+    version: Annotated[bool, typer.Option("--version", callback=_version, is_eager=True, help="Show the version and exit.")] = False,
+) -> None:
+    pass
+
+
+app.command(name="expand")(expand)
+app.command(name="check")(check)
+
+
+def _planned(name: str, summary: str):
+    def command(args: Annotated[list[str] | None, typer.Argument(hidden=True)] = None) -> None:
+        from .common import fail
+
+        raise fail(f"'{name}' is not available in this version yet")
+
+    command.__doc__ = f"{summary} (not available yet)"
+    return command
+
+
+for _name, _summary in {
+    "tree": "Print the kinematic tree.",
+    "graph": "Draw the link tree as PDF, SVG, PNG or DOT.",
+    "inertia": "Audit mass properties against physics and geometry.",
+    "lint": "Check against documented, configurable rules.",
+}.items():
+    app.command(name=_name, context_settings={"allow_extra_args": True, "ignore_unknown_options": True})(_planned(_name, _summary))
+
+
+def main() -> None:
+    """Run the app; an internal error is one line, never a bare traceback."""
+    try:
+        app(standalone_mode=True)
+    except SystemExit:
+        raise
+    except KeyboardInterrupt:
+        sys.stderr.write("urdfcli: interrupted\n")
+        sys.exit(130)
+    except Exception as error:  # noqa: BLE001
+        if os.environ.get("URDFCLI_DEBUG"):
+            raise
+        name = " ".join(a for a in sys.argv[1:] if not a.startswith("-"))
+        sys.stderr.write(
+            f"urdfcli: internal error ({type(error).__name__}: {error}) on {name or 'the input'}; "
+            "please report this bug with the input file (URDFCLI_DEBUG=1 shows the traceback)\n"
+        )
+        sys.exit(2)

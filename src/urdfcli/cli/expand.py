@@ -1,0 +1,51 @@
+"""`urdfcli expand`: the xacro tool, in-process and without ROS."""
+
+from __future__ import annotations
+
+import sys
+from pathlib import Path
+from typing import Annotated
+
+import typer
+
+from ..formatters.text import print_diagnostic
+from ..load import InputError, LoadOptions, load_document
+from ..output import OutputError, write_atomic
+from ..packages import PackageError
+from .common import Exit, InputsArgument, PackagePathOption, fail, split_inputs, stderr
+
+
+def expand(
+    inputs: InputsArgument,
+    output: Annotated[Path | None, typer.Option("--output", "-o", help="Write to this file (atomically) instead of standard output.")] = None,
+    deps: Annotated[bool, typer.Option("--deps", help="List the files the input includes, one per line, instead of expanding.")] = False,
+    package_path: PackagePathOption = None,
+) -> None:
+    """Expand a xacro file to URDF, exactly as the xacro tool does.
+
+    $(find pkg) and package:// resolve without ROS (see --package-path).
+    A xacro error is one line with file:line, exit 1, and no output file.
+    """
+    paths, mappings = split_inputs(inputs)
+    if len(paths) != 1:
+        raise fail(f"expand takes one input file, got {len(paths)}")
+    path = paths[0]
+    try:
+        document, diagnostics = load_document(path, LoadOptions(tuple(package_path or ()), mappings), force_xacro=True)
+    except InputError as error:
+        raise fail(str(error)) from None
+    except PackageError as error:
+        raise fail(str(error)) from None
+    errors = [d for d in diagnostics if d.severity.value == "error"]
+    for diagnostic in diagnostics:
+        print_diagnostic(stderr, diagnostic)
+    if errors:
+        raise typer.Exit(Exit.PROBLEMS)
+    text = "".join(f"{name}\n" for name in document.includes) if deps else document.expanded_text
+    if output is None:
+        sys.stdout.write(text)
+        return
+    try:
+        write_atomic(output, text, [path])
+    except OutputError as error:
+        raise fail(str(error)) from None

@@ -1,0 +1,122 @@
+"""A parsed description: its XML tree and where each element was written."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from functools import cached_property
+from pathlib import Path
+
+from lxml import etree
+
+from .diagnostics import Location
+from .expansion import Origin
+
+NAMED = {"link", "joint", "material", "transmission", "gazebo"}
+
+
+def tag_name(element: etree._Element) -> str:
+    """The tag as tinyxml2 (urdfdom) sees it: the prefix kept, a default namespace ignored."""
+    qname = etree.QName(element)
+    return f"{element.prefix}:{qname.localname}" if element.prefix else qname.localname
+
+
+@dataclass
+class Document:
+    path: str  # as the user gave it ("-" for stdin)
+    root: etree._Element | None
+    file: Path | None = None  # the file on disk, None for stdin
+    is_xacro: bool = False
+    expanded_text: str | None = None  # xacro output, for xacro inputs
+    includes: list[str] = field(default_factory=list)
+    origins: list[Origin | None] | None = None  # xacro inputs: one per element
+
+    @property
+    def shown(self) -> str:
+        return "<stdin>" if self.path == "-" else self.path
+
+    @cached_property
+    def _index(self) -> dict[etree._Element, int]:
+        return {element: i for i, element in enumerate(self.root.iter(etree.Element))} if self.root is not None else {}
+
+    def locate(self, element: etree._Element | None) -> Location:
+        if element is None:
+            return Location(self.shown)
+        if self.origins is not None:
+            index = self._index.get(element)
+            origin = self.origins[index] if index is not None and index < len(self.origins) else None
+            if origin is not None:
+                return Location(origin.file, origin.line or None, source_column(origin.file, origin.line, element, origin.occurrence))
+            return Location(self.shown, element.sourceline, None, expanded=True)
+        line = element.sourceline
+        return Location(self.shown, line, self._column_here(element))
+
+    def _column_here(self, element: etree._Element) -> int | None:
+        if self.file is None or element.sourceline is None:
+            return None
+        same_line = [e for e in self._line_elements(element.sourceline) if e.tag == element.tag]
+        try:
+            occurrence = same_line.index(element) + 1
+        except ValueError:
+            return None
+        return source_column(str(self.file), element.sourceline, element, occurrence)
+
+    def _line_elements(self, line: int) -> list[etree._Element]:
+        cache = self.__dict__.setdefault("_by_line", None)
+        if cache is None:
+            cache = {}
+            for element in self.root.iter(etree.Element):
+                cache.setdefault(element.sourceline, []).append(element)
+            self.__dict__["_by_line"] = cache
+        return cache.get(line, [])
+
+    @staticmethod
+    def element_path(element: etree._Element | None) -> str | None:
+        """An XPath-like name such as ``link[@name='arm']/visual[2]/geometry``."""
+        if element is None:
+            return None
+        parts = []
+        node = element
+        while node is not None and node.getparent() is not None:
+            tag = tag_name(node)
+            name = node.get("name")
+            if tag in NAMED and name is not None and node.getparent().getparent() is None:
+                parts.append(f"{tag}[@name='{name}']")
+            elif tag == "gazebo" and node.get("reference") is not None:
+                parts.append(f"gazebo[@reference='{node.get('reference')}']")
+            else:
+                same = [s for s in node.getparent() if s.tag == node.tag]
+                parts.append(f"{tag}[{same.index(node) + 1}]" if len(same) > 1 else tag)
+            node = node.getparent()
+        if not parts:
+            name = element.get("name")
+            return f"robot[@name='{name}']" if name is not None else tag_name(element)
+        return "/".join(reversed(parts))
+
+
+_LINES: dict[str, list[str]] = {}
+
+
+def _source_lines(file: str) -> list[str]:
+    if file not in _LINES:
+        try:
+            _LINES[file] = Path(file).read_text(encoding="utf-8", errors="replace").splitlines()
+        except OSError:
+            _LINES[file] = []
+    return _LINES[file]
+
+
+def source_column(file: str, line: int | None, element: etree._Element, occurrence: int) -> int | None:
+    """1-based column of the occurrence-th ``<tag`` on a source line."""
+    if not line or occurrence < 1:
+        return None
+    lines = _source_lines(file)
+    if line > len(lines):
+        return None
+    text = lines[line - 1]
+    needle = "<" + tag_name(element)
+    start = -1
+    for _ in range(occurrence):
+        start = text.find(needle, start + 1)
+        if start < 0:
+            return None
+    return start + 1

@@ -1,0 +1,292 @@
+"""In-process xacro expansion that remembers where every element was written.
+
+The real ``xacro`` package does the expansion. Before xacro sees a file, every
+element gets an origin attribute (file, line, occurrence on that line); xacro
+copies attributes through includes and macro bodies, so after expansion each
+element still says where it was written. The attributes are then stripped, so
+the output is exactly what the ``xacro`` tool prints.
+"""
+
+from __future__ import annotations
+
+import contextlib
+import io
+import os
+import re
+import xml.dom.minidom
+from collections.abc import Callable
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import TYPE_CHECKING
+
+import xacro
+import xacro.substitution_args
+from lxml import etree
+
+from .xmlsafe import XmlError, parse_bytes
+
+if TYPE_CHECKING:
+    from .packages import PackageResolver
+
+ORIGIN = "urdfcli-origin"
+XACRO_PREFIX = "xacro:"
+
+
+@dataclass(frozen=True, slots=True)
+class Origin:
+    file: str
+    line: int
+    occurrence: int  # k-th element of this tag starting on that line, from 1
+
+
+class ExpansionError(Exception):
+    """A xacro error, with where it happened as far as it can be told."""
+
+    def __init__(self, message: str, origin: Origin | None, file: str | None, code: str = "X003"):
+        super().__init__(message)
+        self.message = message
+        self.origin = origin
+        self.file = file
+        self.code = code
+
+
+class PackageNotFound(LookupError):
+    pass
+
+
+@dataclass
+class Expansion:
+    text: str  # the expanded document, as `xacro` prints it
+    origins: list[Origin | None]  # one per element of `text`, in document order
+    includes: list[str]
+    warnings: list[tuple[str, Origin | None]] = field(default_factory=list)
+
+
+def tag_origins(root: etree._Element, file: str) -> None:
+    counts: dict[tuple[int, str], int] = {}
+    for element in root.iter(etree.Element):
+        line = element.sourceline or 0
+        key = (line, element.tag)
+        counts[key] = counts.get(key, 0) + 1
+        element.set(ORIGIN, f"{line}:{counts[key]}:{file}")
+
+
+def parse_origin(value: str) -> Origin | None:
+    try:
+        line, occurrence, file = value.split(":", 2)
+        return Origin(file, int(line), int(occurrence))
+    except ValueError:
+        return None
+
+
+def tagged_dom(root: etree._Element, file: str) -> xml.dom.minidom.Document:
+    tag_origins(root, file)
+    return xml.dom.minidom.parseString(etree.tostring(root, encoding="utf-8"))
+
+
+class _Session:
+    """Patches xacro's module functions for one expansion, and undoes it."""
+
+    TRACKED = ("eval_all", "handle_macro_call", "grab_property", "grab_macro", "process_include")
+    TOUCHED = ("check_attrs", "reqd_attrs")
+
+    def __init__(self, find_package: Callable[[str], Path | None]):
+        self.find_package = find_package
+        self.xacro_origins: dict[int, tuple[object, Origin]] = {}
+        self.stack: list[object] = []
+        self.touched: object | None = None
+        self.saved: dict[str, object] = {}
+
+    # -- where is xacro now --------------------------------------------------
+    def origin_of(self, node) -> Origin | None:
+        while node is not None and getattr(node, "nodeType", None) == xml.dom.Node.ELEMENT_NODE:
+            if node.hasAttribute(ORIGIN):
+                return parse_origin(node.getAttribute(ORIGIN))
+            entry = self.xacro_origins.get(id(node))
+            if entry is not None and entry[0] is node:
+                return entry[1]
+            node = node.parentNode
+        return None
+
+    def current_origin(self) -> Origin | None:
+        top = self.stack[-1] if self.stack else None
+        if self.touched is not None and top is not None and getattr(self.touched, "parentNode", None) is top:
+            return self.origin_of(self.touched)
+        return self.origin_of(top)
+
+    def hide_xacro_origins(self, node) -> None:
+        """xacro rejects unknown attributes on its own tags: keep their origin aside."""
+        child = node.firstChild
+        while child is not None:
+            if child.nodeType == xml.dom.Node.ELEMENT_NODE and child.tagName.startswith(XACRO_PREFIX):
+                if child.hasAttribute(ORIGIN):
+                    origin = parse_origin(child.getAttribute(ORIGIN))
+                    child.removeAttribute(ORIGIN)
+                    if origin is not None:
+                        self.xacro_origins[id(child)] = (child, origin)
+            child = child.nextSibling
+
+    # -- patches ---------------------------------------------------------------
+    def track(self, name: str, original):
+        def tracked(node, *args, **kwargs):
+            if name == "eval_all":
+                self.hide_xacro_origins(node)
+            self.stack.append(node)
+            try:
+                return original(node, *args, **kwargs)
+            except Exception as error:
+                if not hasattr(error, "urdfcli_origin"):
+                    error.urdfcli_origin = self.current_origin()
+                raise
+            finally:
+                self.stack.pop()
+
+        return tracked
+
+    def touch(self, original):
+        def touched(tag, *args, **kwargs):
+            self.touched = tag
+            return original(tag, *args, **kwargs)
+
+        return touched
+
+    def parse(self, inp, filename=None):
+        if inp is not None:
+            return self.saved["parse"](inp, filename)
+        path = os.path.join(xacro.root_dir, filename)
+        if os.path.abspath(path) in {os.path.abspath(f) for f in xacro.filestack[:-1] if f}:
+            chain = " -> ".join(display_path(f) for f in [*xacro.filestack[:-1], filename] if f)
+            xacro.filestack.pop()
+            raise xacro.XacroException(f"include cycle: {chain}")
+        try:
+            data = Path(path).read_bytes()
+        except OSError as error:
+            xacro.filestack.pop()
+            raise xacro.XacroException(f"cannot include {filename}: {error.strerror}", exc=error) from None
+        try:
+            root = parse_bytes(data)
+        except XmlError as error:
+            xacro.filestack.pop()
+            raise ExpansionError(
+                f"XML syntax error in included file: {error.message}",
+                Origin(display_path(path), error.line or 0, 0),
+                display_path(path),
+                code="X001",
+            ) from None
+        return tagged_dom(root, display_path(path))
+
+    def find(self, package: str) -> str:
+        folder = self.find_package(package)
+        if folder is None:
+            raise PackageNotFound(package)
+        return str(folder)
+
+    def __enter__(self):
+        for name in self.TRACKED:
+            self.saved[name] = getattr(xacro, name)
+            setattr(xacro, name, self.track(name, self.saved[name]))
+        for name in self.TOUCHED:
+            self.saved[name] = getattr(xacro, name)
+            setattr(xacro, name, self.touch(self.saved[name]))
+        self.saved["parse"] = xacro.parse
+        xacro.parse = self.parse
+        self.saved["_eval_find"] = xacro.substitution_args._eval_find
+        xacro.substitution_args._eval_find = self.find
+        xacro.all_includes = []
+        return self
+
+    def __exit__(self, *exc):
+        for name, original in self.saved.items():
+            module = xacro.substitution_args if name == "_eval_find" else xacro
+            setattr(module, name, original)
+        xacro.filestack = None
+        xacro.macrostack = None
+        return False
+
+
+def display_path(path: str) -> str:
+    try:
+        relative = os.path.relpath(path)
+    except ValueError:
+        return path
+    return path if relative.startswith("..") else relative
+
+
+def _collect_origins(doc: xml.dom.minidom.Document) -> list[Origin | None]:
+    """Strip the origin attributes, in document order, iteratively."""
+    origins: list[Origin | None] = []
+    stack = [doc.documentElement]
+    while stack:
+        node = stack.pop()
+        if node.hasAttribute(ORIGIN):
+            origins.append(parse_origin(node.getAttribute(ORIGIN)))
+            node.removeAttribute(ORIGIN)
+        else:
+            origins.append(None)
+        children = [c for c in node.childNodes if c.nodeType == xml.dom.Node.ELEMENT_NODE]
+        stack.extend(reversed(children))
+    return origins
+
+
+def _short(error: BaseException) -> str:
+    inner = getattr(error, "exc", None)
+    if isinstance(inner, PackageNotFound):
+        return f"package '{inner.args[0]}' not found"
+    text = " ".join(str(error).split())
+    if isinstance(inner, NameError) and "when evaluating expression" in text:
+        return text.replace(" when evaluating", ", when evaluating")
+    return text or type(error).__name__
+
+
+def _warnings(captured: str) -> list[str]:
+    return [line[len("warning: "):].strip() for line in captured.splitlines() if line.startswith("warning: ")]
+
+
+def expand(
+    root: etree._Element,
+    file: str | None,
+    mappings: dict[str, str],
+    resolver: "PackageResolver",
+) -> Expansion:
+    """Expand the parsed xacro document ``root`` read from ``file`` (None: stdin)."""
+    shown = display_path(file) if file else "<stdin>"
+    doc = tagged_dom(root, shown)
+    stderr = io.StringIO()
+    with _Session(resolver.find) as session, contextlib.redirect_stderr(stderr):
+        xacro.init_stacks(file)
+        try:
+            xacro.process_doc(doc, mappings=dict(mappings))
+        except ExpansionError:
+            raise
+        except RecursionError:
+            names = [m.body.getAttribute("name") for m in (xacro.macrostack or [])[-3:]]
+            what = f" in macro '{names[-1]}'" if names else ""
+            raise ExpansionError(
+                f"runaway recursion{what}: a macro or include that expands itself without end",
+                session.current_origin(),
+                shown,
+            ) from None
+        except Exception as error:
+            code = "X004" if isinstance(getattr(error, "exc", None), PackageNotFound) else "X003"
+            message = _short(error)
+            if code == "X004":
+                message += f" (looked in {resolver.where()})"
+            origin = getattr(error, "urdfcli_origin", None)
+            current_file = xacro.filestack[-1] if xacro.filestack else file
+            raise ExpansionError(message, origin, display_path(current_file) if current_file else shown, code) from None
+        finally:
+            includes = list(dict.fromkeys(xacro.all_includes))
+        if file is not None:
+            banner = [
+                " %s " % ("=" * 83),
+                " |    This document was autogenerated by xacro from %-30s | "
+                % re.sub(r"-+", "-", str(file)),
+                " |    EDITING THIS FILE BY HAND IS NOT RECOMMENDED  %-30s | " % "",
+                " %s " % ("=" * 83),
+            ]
+            first = doc.firstChild
+            for text in banner:
+                doc.insertBefore(xml.dom.minidom.Comment(text), first)
+    origins = _collect_origins(doc)
+    text = doc.toprettyxml(indent="  ")
+    return Expansion(text, origins, includes, [(w, None) for w in _warnings(stderr.getvalue())])

@@ -1,0 +1,39 @@
+"""SPEC section 4: the JSON contract of check and lint."""
+
+from __future__ import annotations
+
+import json
+
+from ..diagnostics import Diagnostic
+from ..loaded import Loaded
+from . import counts
+
+
+def diagnostic_dict(diagnostic: Diagnostic) -> dict:
+    return {
+        "code": diagnostic.code,
+        "severity": diagnostic.severity.value,
+        "message": diagnostic.message,
+        "path": diagnostic.location.file,
+        "line": diagnostic.location.line,
+        "column": diagnostic.location.column,
+        "element": diagnostic.element,
+    }
+
+
+def render(results: list[Loaded]) -> str:
+    errors, warnings, _ = counts(results)
+    document = {
+        "version": 1,
+        "files": [
+            {
+                "path": loaded.path,
+                "ok": loaded.ok,
+                "robot": loaded.robot.name if loaded.robot is not None else None,
+                "diagnostics": [diagnostic_dict(d) for d in loaded.diagnostics],
+            }
+            for loaded in results
+        ],
+        "summary": {"files": len(results), "errors": errors, "warnings": warnings},
+    }
+    return json.dumps(document, indent=2, ensure_ascii=False)

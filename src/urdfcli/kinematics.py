@@ -1,0 +1,121 @@
+"""The kinematic tree as a networkx DiGraph, and the checks that need the whole tree.
+
+Links are nodes; each joint whose parent and child exist is an edge
+``parent -> child`` carrying the Joint as ``joint``. Nothing here recurses,
+so a 20,000-link chain is as easy as a short one.
+"""
+
+from __future__ import annotations
+
+from collections import defaultdict
+from collections.abc import Iterator
+
+import networkx as nx
+
+from .diagnostics import Diagnostic
+from .document import Document
+from .model import Joint, Robot
+from .rules import rule
+
+
+def build_graph(robot: Robot) -> nx.DiGraph:
+    graph = nx.DiGraph()
+    graph.add_nodes_from(robot.links)
+    for joint in robot.joints.values():
+        if joint.parent in robot.links and joint.child in robot.links:
+            graph.add_edge(joint.parent, joint.child, joint=joint)
+    return graph
+
+
+def children_by_joint_name(robot: Robot) -> dict[str, list[Joint]]:
+    """Each link's child joints in check_urdf's order: sorted by joint name."""
+    children: dict[str, list[Joint]] = defaultdict(list)
+    for name in sorted(robot.joints):
+        joint = robot.joints[name]
+        if joint.parent in robot.links and joint.child in robot.links:
+            children[joint.parent].append(joint)
+    return children
+
+
+def roots(robot: Robot) -> list[str]:
+    has_parent = {j.child for j in robot.joints.values() if j.parent in robot.links and j.child in robot.links}
+    return [name for name in robot.links if name not in has_parent]
+
+
+def walk(robot: Robot, start: str, children: dict[str, list[Joint]] | None = None) -> Iterator[tuple[int, Joint | None, str]]:
+    """Depth-first (depth, joint leading here, link), children in joint-name order.
+
+    A link reached twice (two parents) is not entered again, so loops end.
+    """
+    children = children_by_joint_name(robot) if children is None else children
+    seen = {start}
+    stack: list[tuple[int, Joint | None, str]] = [(0, None, start)]
+    while stack:
+        depth, joint, link = stack.pop()
+        yield depth, joint, link
+        for child_joint in reversed(children.get(link, [])):
+            if child_joint.child not in seen:
+                seen.add(child_joint.child)
+                stack.append((depth + 1, child_joint, child_joint.child))
+
+
+def tree_diagnostics(robot: Robot, graph: nx.DiGraph, document: Document) -> list[Diagnostic]:
+    out: list[Diagnostic] = []
+
+    def report(code: str, message: str, element, hint: str | None = None) -> None:
+        out.append(Diagnostic(code, rule(code).severity, message, document.locate(element), Document.element_path(element), hint))
+
+    for joint in robot.joints.values():
+        for role, link in (("parent", joint.parent), ("child", joint.child)):
+            if link is not None and link not in robot.links:
+                report(
+                    "J005",
+                    f"{role} link '{link}' of joint '{joint.name}' does not exist",
+                    joint.element.find(role),
+                    f'every link a joint names must be defined: add <link name="{link}"/> or fix the name',
+                )
+    parents: dict[str, list[Joint]] = defaultdict(list)
+    for joint in robot.joints.values():
+        if joint.child in robot.links and joint.parent in robot.links:
+            parents[joint.child].append(joint)
+    for child, joints in parents.items():
+        for extra in joints[1:]:
+            report(
+                "T003",
+                f"link '{child}' is the child of joint '{extra.name}' and also of joint '{joints[0].name}'",
+                extra.element,
+                "a link has exactly one parent joint; for a closed chain, use a mimic joint or split the link",
+            )
+    for component in nx.strongly_connected_components(graph):
+        if len(component) == 1:
+            (node,) = component
+            if not graph.has_edge(node, node):
+                continue
+        cycle = nx.find_cycle(graph.subgraph(component))
+        first_joint = graph.edges[cycle[0][0], cycle[0][1]]["joint"]
+        path = " -> ".join([cycle[0][0], *(v for _, v in cycle)])
+        report("T004", f"the joints form a loop: {path}", first_joint.element, "URDF describes trees: remove one joint of the loop")
+    if robot.links:
+        found = roots(robot)
+        if len(found) > 1:
+            names = ", ".join(f"'{r}'" for r in found[:5]) + (" ..." if len(found) > 5 else "")
+            report(
+                "T001",
+                f"{len(found)} links have no parent: {names}",
+                robot.links[found[1]].element,
+                "connect every link to the tree with a joint, or remove the unused ones",
+            )
+        elif not found:
+            report("T002", "every link has a parent, so there is no root link", robot.element, "the joints form a loop")
+    return out
+
+
+def depth_and_leaves(robot: Robot, root: str) -> tuple[int, list[str]]:
+    children = children_by_joint_name(robot)
+    depth = 0
+    leaves = []
+    for level, _, link in walk(robot, root, children):
+        depth = max(depth, level)
+        if not children.get(link):
+            leaves.append(link)
+    return depth, leaves

@@ -1,0 +1,120 @@
+"""The loading core: one pipeline from a path to a checked model.
+
+read bytes -> parse (lxml, lines kept, nothing external) -> expand xacro
+in-process (origins kept) -> read the model tolerantly -> build the
+kinematic graph -> run the checks. Nothing here exits the process.
+"""
+
+from __future__ import annotations
+
+import sys
+from dataclasses import dataclass, field
+from pathlib import Path
+
+from lxml import etree
+
+from . import expansion
+from .diagnostics import Diagnostic, Location
+from .document import Document, source_column
+from .kinematics import build_graph, tree_diagnostics
+from .loaded import Loaded
+from .model import read
+from .packages import PackageResolver
+from .rules import REGISTRY, load_all, rule
+from .xmlsafe import XmlError, parse_bytes
+
+XACRO_NAMESPACES = {"http://www.ros.org/wiki/xacro", "http://ros.org/wiki/xacro", "http://wiki.ros.org/xacro"}
+STDIN = "-"
+
+
+class InputError(Exception):
+    """The input cannot be read at all (exit 2)."""
+
+
+@dataclass(frozen=True)
+class LoadOptions:
+    package_paths: tuple[str, ...] = ()
+    mappings: dict[str, str] = field(default_factory=dict)
+    checks: str = "check"  # which rules run: "check", "all", or "none"
+
+
+def read_input(path: str) -> bytes:
+    if path == STDIN:
+        return sys.stdin.buffer.read()
+    file = Path(path)
+    try:
+        if file.is_dir():
+            raise InputError(f"{path}: is a directory, not a file")
+        return file.read_bytes()
+    except FileNotFoundError:
+        raise InputError(f"{path}: no such file") from None
+    except PermissionError:
+        raise InputError(f"{path}: permission denied") from None
+    except IsADirectoryError:
+        raise InputError(f"{path}: is a directory, not a file") from None
+    except OSError as error:
+        raise InputError(f"{path}: cannot read: {error.strerror}") from None
+
+
+def is_xacro(path: str, root: etree._Element) -> bool:
+    if path.endswith(".xacro"):
+        return True
+    if XACRO_NAMESPACES & set(root.nsmap.values()):
+        return True
+    return any(element.prefix == "xacro" for element in root.iter(etree.Element))
+
+
+def _error(code: str, message: str, location: Location, hint: str | None = None) -> Diagnostic:
+    return Diagnostic(code, rule(code).severity, message, location, None, hint)
+
+
+def load_document(
+    path: str, options: LoadOptions, data: bytes | None = None, force_xacro: bool = False
+) -> tuple[Document, list[Diagnostic]]:
+    """Read, parse and (for xacro) expand one input. Raises InputError."""
+    data = read_input(path) if data is None else data
+    file = None if path == STDIN else Path(path)
+    shown = "<stdin>" if file is None else path
+    try:
+        root = parse_bytes(data)
+    except XmlError as error:
+        return Document(path, None, file), [_error("X001" if "entities" not in error.message else "X002", error.message, Location(shown, error.line, error.column))]
+    if not force_xacro and not is_xacro(path, root):
+        return Document(path, root, file), []
+    resolver = PackageResolver(options.package_paths, file)
+    try:
+        result = expansion.expand(root, str(file) if file else None, options.mappings, resolver)
+    except expansion.ExpansionError as error:
+        origin = error.origin
+        if origin is not None:
+            location = Location(origin.file, origin.line or None, None)
+        else:
+            location = Location(error.file or shown)
+        return Document(path, None, file, is_xacro=True), [_error(error.code, error.message, location)]
+    expanded_root = parse_bytes(result.text.encode("utf-8"))
+    document = Document(path, expanded_root, file, True, result.text, result.includes, result.origins)
+    warnings = [_error("X005", text, Location(shown)) for text, _ in result.warnings]
+    return document, warnings
+
+
+def load(path: str, options: LoadOptions = LoadOptions(), data: bytes | None = None) -> Loaded:
+    document, diagnostics = load_document(path, options, data)
+    loaded = Loaded(document, diagnostics=diagnostics)
+    if document.root is None:
+        return loaded
+    robot, found = read(document)
+    loaded.diagnostics += found
+    loaded.robot = robot
+    if robot.element is None:
+        return loaded
+    loaded.graph = build_graph(robot)
+    loaded.diagnostics += tree_diagnostics(robot, loaded.graph, document)
+    if options.checks != "none":
+        for spec in load_all().values():
+            if spec.function is not None and (options.checks == "all" or spec.in_check):
+                loaded.diagnostics.extend(spec.function(loaded))
+    loaded.diagnostics.sort(key=Diagnostic.sort_key)
+    return loaded
+
+
+__all__ = ["InputError", "LoadOptions", "Loaded", "load", "load_document", "read_input", "REGISTRY", "source_column"]

@@ -1,0 +1,54 @@
+"""A description once loaded: document, model, kinematic graph and diagnostics."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from functools import cached_property
+
+import networkx as nx
+from lxml import etree
+
+from .diagnostics import Diagnostic, Severity
+from .document import Document
+from .model import Joint, Robot
+from .rules import rule
+
+
+@dataclass
+class Loaded:
+    document: Document
+    robot: Robot | None = None
+    graph: nx.DiGraph | None = None
+    diagnostics: list[Diagnostic] = field(default_factory=list)
+
+    @property
+    def path(self) -> str:
+        return self.document.path
+
+    @property
+    def ok(self) -> bool:
+        return not any(d.severity is Severity.ERROR for d in self.diagnostics)
+
+    def diagnostic(self, code: str, message: str, element: etree._Element | None, hint: str | None = None) -> Diagnostic:
+        return Diagnostic(code, rule(code).severity, message, self.document.locate(element), Document.element_path(element), hint)
+
+    @cached_property
+    def _parent_joints(self) -> dict[str, Joint]:
+        found: dict[str, Joint] = {}
+        if self.robot is not None:
+            for joint in self.robot.joints.values():
+                if joint.child is not None:
+                    found.setdefault(joint.child, joint)
+        return found
+
+    def parent_joint(self, link: str) -> Joint | None:
+        return self._parent_joints.get(link)
+
+    @cached_property
+    def root(self) -> str | None:
+        if self.robot is None or self.graph is None:
+            return None
+        from .kinematics import roots
+
+        found = roots(self.robot)
+        return found[0] if len(found) == 1 else None

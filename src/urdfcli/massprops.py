@@ -1,0 +1,153 @@
+"""Mass-property maths: principal moments, validity, primitive tensors, composition.
+
+Plain Python on 3x3 matrices (tuples of rows), so that `check` needs no numpy.
+Tensors are about the centre of mass unless said otherwise; URDF axes.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Iterable
+
+Matrix = tuple[tuple[float, float, float], tuple[float, float, float], tuple[float, float, float]]
+Vector = tuple[float, float, float]
+KEYS = ("ixx", "ixy", "ixz", "iyy", "iyz", "izz")
+ZERO: Matrix = ((0.0, 0.0, 0.0), (0.0, 0.0, 0.0), (0.0, 0.0, 0.0))
+
+
+def matrix(inertia: dict[str, float]) -> Matrix:
+    xx, xy, xz, yy, yz, zz = (inertia[k] for k in KEYS)
+    return ((xx, xy, xz), (xy, yy, yz), (xz, yz, zz))
+
+
+def as_dict(m: Matrix) -> dict[str, float]:
+    return {"ixx": m[0][0], "ixy": m[0][1], "ixz": m[0][2], "iyy": m[1][1], "iyz": m[1][2], "izz": m[2][2]}
+
+
+def principal_moments(m: Matrix) -> tuple[float, float, float]:
+    """Eigenvalues of a symmetric 3x3 matrix, ascending (closed form)."""
+    a, b, c = m[0][0], m[1][1], m[2][2]
+    d, e, f = m[0][1], m[1][2], m[0][2]
+    off = d * d + e * e + f * f
+    if off <= 1e-30 * max(1.0, a * a + b * b + c * c):
+        return tuple(sorted((a, b, c)))  # type: ignore[return-value]
+    q = (a + b + c) / 3.0
+    p2 = (a - q) ** 2 + (b - q) ** 2 + (c - q) ** 2 + 2.0 * off
+    p = math.sqrt(p2 / 6.0)
+    inv = 1.0 / p
+    B = [[(m[i][j] - (q if i == j else 0.0)) * inv for j in range(3)] for i in range(3)]
+    det_b = (
+        B[0][0] * (B[1][1] * B[2][2] - B[1][2] * B[2][1])
+        - B[0][1] * (B[1][0] * B[2][2] - B[1][2] * B[2][0])
+        + B[0][2] * (B[1][0] * B[2][1] - B[1][1] * B[2][0])
+    )
+    r = max(-1.0, min(1.0, det_b / 2.0))
+    phi = math.acos(r) / 3.0
+    big = q + 2.0 * p * math.cos(phi)
+    small = q + 2.0 * p * math.cos(phi + 2.0 * math.pi / 3.0)
+    middle = 3.0 * q - big - small
+    return tuple(sorted((small, middle, big)))  # type: ignore[return-value]
+
+
+def scale_of(m: Matrix) -> float:
+    return max(abs(m[i][j]) for i in range(3) for j in range(3))
+
+
+def is_zero(m: Matrix) -> bool:
+    return scale_of(m) == 0.0
+
+
+def is_positive_semidefinite(m: Matrix, rel_tol: float = 1e-9) -> bool:
+    return principal_moments(m)[0] >= -rel_tol * max(scale_of(m), 1e-300)
+
+
+def triangle_violation(m: Matrix, rel_tol: float = 1e-6) -> tuple[float, float, float] | None:
+    """The principal moments when the two smaller sum to less than the largest."""
+    a, b, c = principal_moments(m)
+    if a + b < c * (1.0 - rel_tol):
+        return a, b, c
+    return None
+
+
+# -- primitives (about the centre, shape axes) -------------------------------------
+def box(mass: float, size: Vector) -> Matrix:
+    x, y, z = size
+    return diagonal(mass * (y * y + z * z) / 12.0, mass * (x * x + z * z) / 12.0, mass * (x * x + y * y) / 12.0)
+
+
+def cylinder(mass: float, radius: float, length: float) -> Matrix:
+    side = mass * (3.0 * radius * radius + length * length) / 12.0
+    return diagonal(side, side, mass * radius * radius / 2.0)
+
+
+def sphere(mass: float, radius: float) -> Matrix:
+    moment = 2.0 * mass * radius * radius / 5.0
+    return diagonal(moment, moment, moment)
+
+
+def diagonal(x: float, y: float, z: float) -> Matrix:
+    return ((x, 0.0, 0.0), (0.0, y, 0.0), (0.0, 0.0, z))
+
+
+# -- frames ----------------------------------------------------------------------
+def rotation(rpy: Vector) -> Matrix:
+    """URDF fixed-axis roll-pitch-yaw: R = Rz(yaw) Ry(pitch) Rx(roll)."""
+    r, p, y = rpy
+    cr, sr, cp, sp, cy, sy = math.cos(r), math.sin(r), math.cos(p), math.sin(p), math.cos(y), math.sin(y)
+    return (
+        (cy * cp, cy * sp * sr - sy * cr, cy * sp * cr + sy * sr),
+        (sy * cp, sy * sp * sr + cy * cr, sy * sp * cr - cy * sr),
+        (-sp, cp * sr, cp * cr),
+    )
+
+
+def multiply(a: Matrix, b: Matrix) -> Matrix:
+    return tuple(tuple(sum(a[i][k] * b[k][j] for k in range(3)) for j in range(3)) for i in range(3))  # type: ignore[return-value]
+
+
+def transpose(a: Matrix) -> Matrix:
+    return tuple(tuple(a[j][i] for j in range(3)) for i in range(3))  # type: ignore[return-value]
+
+
+def apply(a: Matrix, v: Vector) -> Vector:
+    return tuple(sum(a[i][k] * v[k] for k in range(3)) for i in range(3))  # type: ignore[return-value]
+
+
+def rotate(tensor: Matrix, r: Matrix) -> Matrix:
+    """The tensor expressed in the frame where the body's axes are rotated by r: R I Rᵀ."""
+    return multiply(multiply(r, tensor), transpose(r))
+
+
+def parallel_axis(tensor: Matrix, mass: float, offset: Vector) -> Matrix:
+    """Move a tensor about the centre of mass to a point ``offset`` away: I + m(|r|²E − r rᵀ)."""
+    r2 = sum(c * c for c in offset)
+    return tuple(
+        tuple(tensor[i][j] + mass * ((r2 if i == j else 0.0) - offset[i] * offset[j]) for j in range(3)) for i in range(3)
+    )  # type: ignore[return-value]
+
+
+def add(a: Matrix, b: Matrix) -> Matrix:
+    return tuple(tuple(a[i][j] + b[i][j] for j in range(3)) for i in range(3))  # type: ignore[return-value]
+
+
+def combine(parts: Iterable[tuple[float, Vector, Matrix]]) -> tuple[float, Vector, Matrix]:
+    """Total mass, centre of mass and tensor about it, of bodies given as
+    (mass, centre, tensor about that centre, already in the common frame)."""
+    parts = list(parts)
+    mass = sum(m for m, _, _ in parts)
+    if mass <= 0:
+        return 0.0, (0.0, 0.0, 0.0), ZERO
+    com = tuple(sum(m * c[i] for m, c, _ in parts) / mass for i in range(3))
+    total = ZERO
+    for m, c, tensor in parts:
+        offset = tuple(c[i] - com[i] for i in range(3))
+        total = add(total, parallel_axis(tensor, m, offset))  # type: ignore[arg-type]
+    return mass, com, total  # type: ignore[return-value]
+
+
+def relative_difference(a: Matrix, b: Matrix) -> float:
+    """Largest element difference, relative to the larger tensor's scale."""
+    scale = max(scale_of(a), scale_of(b))
+    if scale == 0:
+        return 0.0
+    return max(abs(a[i][j] - b[i][j]) for i in range(3) for j in range(3)) / scale

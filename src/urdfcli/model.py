@@ -1,0 +1,449 @@
+"""The robot model, read tolerantly: every problem becomes a diagnostic.
+
+The reader follows urdfdom's parser element by element (which child it reads,
+which attributes it requires, how it reads numbers), so that urdfcli rejects
+what check_urdf rejects; where urdfdom stops, urdfcli records the problem,
+leaves the field empty, and reads on.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterator
+from dataclasses import dataclass, field
+
+from lxml import etree
+
+from .diagnostics import Diagnostic
+from .document import Document, tag_name
+from .numbers import NumberError, VectorLengthError, format_number, parse_double, parse_vector
+from .rules import rule
+
+Vec3 = tuple[float, float, float]
+JOINT_TYPES = ("fixed", "revolute", "continuous", "prismatic", "floating", "planar")
+MOVING_AXIS_TYPES = ("revolute", "continuous", "prismatic", "planar")
+SHAPES = ("box", "cylinder", "sphere", "mesh")
+INERTIA_KEYS = ("ixx", "ixy", "ixz", "iyy", "iyz", "izz")
+
+
+@dataclass(frozen=True, slots=True)
+class Pose:
+    xyz: Vec3 = (0.0, 0.0, 0.0)
+    rpy: Vec3 = (0.0, 0.0, 0.0)
+
+
+@dataclass(frozen=True, slots=True)
+class Geometry:
+    kind: str  # box, cylinder, sphere, mesh
+    element: etree._Element
+    size: Vec3 | None = None
+    radius: float | None = None
+    length: float | None = None
+    filename: str | None = None
+    scale: Vec3 = (1.0, 1.0, 1.0)
+
+
+@dataclass(frozen=True, slots=True)
+class Shape:
+    """A ``<visual>`` or ``<collision>``."""
+
+    element: etree._Element
+    origin: Pose
+    geometry: Geometry | None
+    material: str | None = None
+
+
+@dataclass(frozen=True, slots=True)
+class Inertial:
+    element: etree._Element
+    origin: Pose
+    mass: float | None
+    inertia: dict[str, float] | None  # ixx ixy ixz iyy iyz izz
+
+
+@dataclass(frozen=True, slots=True)
+class Link:
+    name: str
+    element: etree._Element
+    inertial: Inertial | None
+    visuals: tuple[Shape, ...]
+    collisions: tuple[Shape, ...]
+
+
+@dataclass(frozen=True, slots=True)
+class Limit:
+    lower: float = 0.0
+    upper: float = 0.0
+    effort: float | None = None
+    velocity: float | None = None
+    has_lower: bool = False
+    has_upper: bool = False
+
+
+@dataclass(frozen=True, slots=True)
+class Mimic:
+    joint: str
+    multiplier: float = 1.0
+    offset: float = 0.0
+
+
+@dataclass(frozen=True, slots=True)
+class Joint:
+    name: str
+    element: etree._Element
+    type: str | None
+    parent: str | None
+    child: str | None
+    origin: Pose
+    axis: Vec3
+    limit: Limit | None
+    mimic: Mimic | None
+
+    @property
+    def moving(self) -> bool:
+        return self.type not in (None, "fixed")
+
+
+@dataclass(frozen=True, slots=True)
+class Material:
+    name: str
+    element: etree._Element
+    rgba: tuple[float, ...] | None
+    texture: str | None
+
+
+@dataclass
+class Robot:
+    name: str | None
+    element: etree._Element | None
+    links: dict[str, Link] = field(default_factory=dict)
+    joints: dict[str, Joint] = field(default_factory=dict)
+    materials: dict[str, Material] = field(default_factory=dict)
+
+
+class Reader:
+    """Builds a Robot from a Document, collecting diagnostics."""
+
+    def __init__(self, document: Document):
+        self.document = document
+        self.diagnostics: list[Diagnostic] = []
+
+    # -- reporting -------------------------------------------------------------
+    def report(self, code: str, message: str, element: etree._Element | None, hint: str | None = None) -> None:
+        spec = rule(code)
+        self.diagnostics.append(
+            Diagnostic(code, spec.severity, message, self.document.locate(element), Document.element_path(element), hint)
+        )
+
+    # -- values ----------------------------------------------------------------
+    def number(self, element: etree._Element, attribute: str, required: bool = False, what: str = "") -> float | None:
+        text = element.get(attribute)
+        if text is None:
+            if required:
+                self.report("V004", f"<{tag_name(element)}> has no '{attribute}' attribute{what}", element)
+            return None
+        try:
+            return parse_double(text)
+        except NumberError as error:
+            self.report(error.code, f"{tag_name(element)} {attribute}: {error.reason}{what}", element)
+            return None
+
+    def vector(self, element: etree._Element, attribute: str, default: Vec3 | None = None) -> Vec3 | None:
+        text = element.get(attribute)
+        if text is None:
+            return default
+        try:
+            return parse_vector(text)  # type: ignore[return-value]
+        except NumberError as error:
+            self.report(error.code, f"{tag_name(element)} {attribute}: component {error.reason}", element)
+        except VectorLengthError as error:
+            hint = "components are separated by single spaces" if ("\t" in text or "\n" in text or "," in text) else None
+            self.report("V003", f"{tag_name(element)} {attribute}: {error.reason}", element, hint)
+        return None
+
+    def pose(self, parent: etree._Element) -> Pose:
+        origin = parent.find("origin")
+        if origin is None:
+            return Pose()
+        return Pose(self.vector(origin, "xyz", (0.0, 0.0, 0.0)) or (0.0, 0.0, 0.0), self.vector(origin, "rpy", (0.0, 0.0, 0.0)) or (0.0, 0.0, 0.0))
+
+    def positive(self, element: etree._Element, attribute: str, value: float | None) -> None:
+        if value is not None and value <= 0:
+            self.report("V006", f"{tag_name(element)} {attribute} is {format_number(value)}; it must be positive", element)
+
+    # -- elements --------------------------------------------------------------
+    def rgba(self, material: etree._Element, color: etree._Element) -> tuple[float, ...] | None:
+        text = color.get("rgba")
+        name = material.get("name", "")
+        values = []
+        for piece in (p for p in text.split(" ") if p):
+            try:
+                value = parse_double(piece)
+            except NumberError as error:
+                self.report(error.code, f"material '{name}' rgba: component {error.reason}", color)
+                return None
+            if not 0.0 <= value <= 1.0:
+                self.report("V007", f"material '{name}' rgba component {piece} is outside [0, 1]", color)
+                return None
+            values.append(value)
+        if len(values) != 4:
+            self.report("M004", f"material '{name}' rgba '{text}' has {len(values)} components, 4 expected", color)
+        return tuple(values)
+
+    def material(self, element: etree._Element, top_level: bool) -> Material | None:
+        name = element.get("name")
+        if name is None:
+            self.report("N003", "<material> has no 'name' attribute", element)
+            return None
+        texture = element.find("texture")
+        texture_file = texture.get("filename") if texture is not None else None
+        color = element.find("color")
+        rgba = self.rgba(element, color) if color is not None and color.get("rgba") is not None else None
+        if top_level and rgba is None and texture_file is None:
+            hint = "did you mean rgba=?" if color is not None and color.get("rgb") is not None else None
+            self.report("M001", f"material '{name}' has neither <color rgba> nor <texture filename>", element, hint)
+        return Material(name, element, rgba, texture_file)
+
+    def geometry(self, parent: etree._Element) -> Geometry | None:
+        element = parent.find("geometry")
+        if element is None:
+            self.report("V005", f"<{tag_name(parent)}> has no <geometry>", parent)
+            return None
+        shapes = [child for child in element if isinstance(child.tag, str)]
+        if not shapes:
+            self.report("G001", "<geometry> holds no shape (box, cylinder, sphere or mesh)", element)
+            return None
+        shape = shapes[0]
+        if len(shapes) > 1:
+            self.report("G003", f"<geometry> holds {len(shapes)} shapes; only the first, <{tag_name(shape)}>, is used", shapes[1])
+        kind = tag_name(shape)
+        if kind == "sphere":
+            radius = self.number(shape, "radius", required=True)
+            self.positive(shape, "radius", radius)
+            return Geometry(kind, shape, radius=radius) if radius is not None else None
+        if kind == "box":
+            if shape.get("size") is None:
+                self.report("V004", "<box> has no 'size' attribute", shape)
+                return None
+            size = self.vector(shape, "size")
+            if size is None:
+                return None
+            if min(size) <= 0:
+                self.report("V006", f"box size '{shape.get('size')}' has a component that is not positive", shape)
+            return Geometry(kind, shape, size=size)
+        if kind == "cylinder":
+            if shape.get("radius") is None or shape.get("length") is None:
+                missing = " and ".join(a for a in ("radius", "length") if shape.get(a) is None)
+                self.report("V004", f"<cylinder> has no '{missing}' attribute", shape)
+                return None
+            length = self.number(shape, "length")
+            radius = self.number(shape, "radius")
+            self.positive(shape, "length", length)
+            self.positive(shape, "radius", radius)
+            return Geometry(kind, shape, radius=radius, length=length) if None not in (length, radius) else None
+        if kind == "mesh":
+            filename = shape.get("filename")
+            if filename is None:
+                self.report("V004", "<mesh> has no 'filename' attribute", shape)
+                return None
+            scale = self.vector(shape, "scale", (1.0, 1.0, 1.0))
+            return Geometry(kind, shape, filename=filename, scale=scale) if scale is not None else None
+        self.report("G002", f"unknown shape <{kind}> in <geometry>", shape, "URDF shapes are box, cylinder, sphere and mesh")
+        return None
+
+    def shape(self, element: etree._Element, visual: bool) -> Shape:
+        origin = self.pose(element)
+        geometry = self.geometry(element)
+        material_name = None
+        if visual:
+            material = element.find("material")
+            if material is not None:
+                parsed = self.material(material, top_level=False)
+                material_name = parsed.name if parsed else None
+                if parsed is not None:
+                    self._inline_materials.append(parsed)
+        return Shape(element, origin, geometry, material_name)
+
+    def inertial(self, element: etree._Element) -> Inertial:
+        origin = self.pose(element)
+        mass_element = element.find("mass")
+        mass = None
+        if mass_element is None:
+            self.report("V005", "<inertial> has no <mass>", element)
+        else:
+            mass = self.number(mass_element, "value", required=True)
+        inertia_element = element.find("inertia")
+        inertia = None
+        if inertia_element is None:
+            self.report("V005", "<inertial> has no <inertia>", element)
+        else:
+            values = {key: self.number(inertia_element, key, required=True) for key in INERTIA_KEYS}
+            inertia = values if None not in values.values() else None
+        return Inertial(element, origin, mass, inertia)  # type: ignore[arg-type]
+
+    def link(self, element: etree._Element) -> Link:
+        name = element.get("name")
+        if name is None:
+            self.report("N001", "<link> has no 'name' attribute", element)
+            name = ""
+        inertial_element = element.find("inertial")
+        inertial = self.inertial(inertial_element) if inertial_element is not None else None
+        visuals = tuple(self.shape(v, visual=True) for v in element.iterfind("visual"))
+        collisions = tuple(self.shape(c, visual=False) for c in element.iterfind("collision"))
+        return Link(name, element, inertial, visuals, collisions)
+
+    def joint_limit(self, joint_name: str, element: etree._Element) -> Limit:
+        what = f" (joint '{joint_name}')"
+        lower = self.number(element, "lower", what=what)
+        upper = self.number(element, "upper", what=what)
+        effort = self.number(element, "effort", required=True, what=what)
+        velocity = self.number(element, "velocity", required=True, what=what)
+        return Limit(
+            lower if lower is not None else 0.0,
+            upper if upper is not None else 0.0,
+            effort,
+            velocity,
+            element.get("lower") is not None,
+            element.get("upper") is not None,
+        )
+
+    def joint(self, element: etree._Element) -> Joint:
+        name = element.get("name")
+        if name is None:
+            self.report("N002", "<joint> has no 'name' attribute", element)
+        shown = name if name is not None else "?"
+        what = f" (joint '{shown}')"
+        joint_type = element.get("type")
+        if joint_type is None:
+            self.report("J001", f"joint '{shown}' has no 'type' attribute", element, f"the types are {', '.join(JOINT_TYPES)}")
+        elif joint_type not in JOINT_TYPES:
+            self.report("J002", f"joint '{shown}' has unknown type '{joint_type}'", element, f"the types are {', '.join(JOINT_TYPES)}")
+            joint_type = None
+        origin = self.pose(element)
+        axis: Vec3 = (1.0, 0.0, 0.0)
+        axis_element = element.find("axis")
+        if axis_element is not None and joint_type not in ("fixed", "floating"):
+            axis = self.vector(axis_element, "xyz", (1.0, 0.0, 0.0)) or axis
+        limit_element = element.find("limit")
+        limit = self.joint_limit(shown, limit_element) if limit_element is not None else None
+        if limit_element is None and joint_type in ("revolute", "prismatic"):
+            self.report("J003", f"{joint_type} joint '{shown}' has no <limit>", element, 'add <limit lower="..." upper="..." effort="..." velocity="..."/>')
+        safety = element.find("safety_controller")
+        if safety is not None:
+            for attribute in ("soft_lower_limit", "soft_upper_limit", "k_position"):
+                self.number(safety, attribute, what=what)
+            self.number(safety, "k_velocity", required=True, what=what)
+        calibration = element.find("calibration")
+        if calibration is not None:
+            for attribute in ("reference_position", "rising", "falling"):
+                self.number(calibration, attribute, what=what)
+        mimic = None
+        mimic_element = element.find("mimic")
+        if mimic_element is not None:
+            multiplier = self.number(mimic_element, "multiplier", what=what)
+            offset = self.number(mimic_element, "offset", what=what)
+            target = mimic_element.get("joint")
+            if target is None:
+                self.report("V004", f"<mimic> of joint '{shown}' has no 'joint' attribute", mimic_element)
+            else:
+                mimic = Mimic(target, 1.0 if multiplier is None else multiplier, offset or 0.0)
+        dynamics = element.find("dynamics")
+        if dynamics is not None:
+            if dynamics.get("damping") is None and dynamics.get("friction") is None:
+                self.report("J006", f"<dynamics> of joint '{shown}' has neither damping nor friction", dynamics)
+            self.number(dynamics, "damping", what=what)
+            self.number(dynamics, "friction", what=what)
+        parent = self._link_ref(element, "parent")
+        child = self._link_ref(element, "child")
+        if parent is None or child is None:
+            missing = " and ".join(t for t, v in (("<parent link>", parent), ("<child link>", child)) if v is None)
+            self.report("J004", f"joint '{shown}' has no {missing}", element)
+        return Joint(name if name is not None else "", element, joint_type, parent, child, origin, axis, limit, mimic)
+
+    @staticmethod
+    def _link_ref(joint: etree._Element, tag: str) -> str | None:
+        element = joint.find(tag)
+        value = element.get("link") if element is not None else None
+        return value or None  # urdfdom treats an empty name as missing
+
+    # -- robot -----------------------------------------------------------------
+    def robot(self) -> Robot:
+        root = self.document.root
+        self._inline_materials: list[Material] = []
+        if tag_name(root) != "robot":
+            self.report("R001", f"the root element is <{tag_name(root)}>, not <robot>", root)
+            return Robot(None, None)
+        name = root.get("name")
+        if name is None:
+            self.report("R002", "<robot> has no 'name' attribute", root)
+        self.version(root)
+        robot = Robot(name, root)
+        for element in root.iterfind("material"):
+            material = self.material(element, top_level=True)
+            if material is None:
+                continue
+            if material.name in robot.materials:
+                self.report("N006", f"material '{material.name}' is defined twice", element)
+            else:
+                robot.materials[material.name] = material
+        links = root.findall("link")
+        if not links:
+            self.report("R004", "the robot has no <link>", root)
+        for element in links:
+            link = self.link(element)
+            if link.name in robot.links:
+                self.report("N004", f"link '{link.name}' is defined twice", element, f"first defined at {_where(self.document, robot.links[link.name].element)}")
+            else:
+                robot.links[link.name] = link
+        for element in root.iterfind("joint"):
+            joint = self.joint(element)
+            if element.get("name") is None:
+                continue
+            if joint.name in robot.joints:
+                self.report("N005", f"joint '{joint.name}' is defined twice", element)
+            else:
+                robot.joints[joint.name] = joint
+        self.check_materials(robot)
+        return robot
+
+    def version(self, root: etree._Element) -> None:
+        version = root.get("version")
+        if version is None:
+            return
+        parts = version.split(".")
+        if len(parts) != 2 or not all(p.isdigit() for p in parts):
+            self.report("R003", f"robot version '{version}' is not of the form 'x.y'", root)
+        elif (int(parts[0]), int(parts[1])) != (1, 0):
+            self.report("R003", f"robot version '{version}' is not supported; only 1.0 is", root)
+
+    def check_materials(self, robot: Robot) -> None:
+        seen: dict[str, Material] = {m.name: m for m in robot.materials.values() if m.rgba is not None}
+        for material in self._inline_materials:
+            if material.rgba is None and material.texture is None:
+                if material.name not in robot.materials and material.name not in seen:
+                    self.report("M002", f"material '{material.name}' is defined nowhere", material.element, "define it at the top level, or give it a <color rgba>")
+                continue
+            first = seen.setdefault(material.name, material)
+            if first.rgba is not None and material.rgba is not None and first.rgba != material.rgba:
+                self.report(
+                    "M003",
+                    f"material '{material.name}' has rgba '{material.element.find('color').get('rgba')}' here "
+                    f"but '{first.element.find('color').get('rgba')}' at {_where(self.document, first.element)}",
+                    material.element,
+                    "consumers keep one colour per name: give each colour its own name",
+                )
+
+
+def _where(document: Document, element: etree._Element) -> str:
+    location = document.locate(element)
+    return f"{location.file}:{location.line}"
+
+
+def read(document: Document) -> tuple[Robot, list[Diagnostic]]:
+    reader = Reader(document)
+    robot = reader.robot()
+    return robot, reader.diagnostics
+
+
+def iter_shapes(link: Link) -> Iterator[Shape]:
+    yield from link.visuals
+    yield from link.collisions

@@ -1,0 +1,65 @@
+"""Numbers as urdfdom reads them, so that urdfcli accepts and rejects the same text.
+
+urdfdom reads a scalar with a C++ stream: leading white space is skipped, the
+whole rest must be a decimal number (no ``nan``, ``inf``, hex or trailing
+space), and a value that overflows is refused. A vector is split on single
+spaces only (tabs and newlines are not separators), empty pieces skipped.
+"""
+
+from __future__ import annotations
+
+import math
+import re
+
+_DECIMAL = re.compile(r"[+-]?(?:\d+\.?\d*|\.\d+)(?:[eE][+-]?\d+)?")
+_NON_FINITE = re.compile(r"[+-]?(?:nan|inf|infinity)", re.IGNORECASE)
+
+
+class NumberError(ValueError):
+    """``code`` is V001 (not a number) or V002 (not finite)."""
+
+    def __init__(self, code: str, reason: str):
+        super().__init__(reason)
+        self.code = code
+        self.reason = reason
+
+
+def parse_double(text: str) -> float:
+    body = text.lstrip(" \t\n\r\f\v")
+    if _DECIMAL.fullmatch(body):
+        value = float(body)
+        if math.isinf(value):
+            raise NumberError("V002", f"'{text}' overflows a double")
+        return value
+    if _NON_FINITE.fullmatch(body.strip()):
+        raise NumberError("V002", f"'{text}' is not a finite number")
+    if _DECIMAL.fullmatch(body.rstrip()):
+        raise NumberError("V001", f"'{text}' is not a number: it ends in white space")
+    return _malformed(text)
+
+
+def _malformed(text: str):
+    raise NumberError("V001", f"'{text}' is not a number")
+
+
+def parse_vector(text: str, length: int = 3) -> tuple[float, ...]:
+    """Raises NumberError, or VectorLengthError for a wrong count of components."""
+    pieces = [piece for piece in text.split(" ") if piece]
+    values = tuple(parse_double(piece) for piece in pieces)
+    if len(values) != length:
+        raise VectorLengthError(len(values), length, text)
+    return values
+
+
+class VectorLengthError(ValueError):
+    def __init__(self, found: int, expected: int, text: str):
+        super().__init__(f"'{text}' has {found} components, {expected} expected")
+        self.found = found
+        self.expected = expected
+        self.reason = str(self)
+
+
+def format_number(value: float) -> str:
+    """Shortest text that reads back as the same double (Python's repr, no '.0')."""
+    text = repr(float(value))
+    return text[:-2] if text.endswith(".0") else text

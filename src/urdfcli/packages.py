@@ -1,0 +1,158 @@
+"""Find ROS packages without ROS: `$(find pkg)` and `package://pkg/...`.
+
+Sources are searched in this order, each scanned only when an earlier one
+did not have the package:
+
+1. ``-P/--package-path`` options: ``NAME=DIR``, or a directory scanned for
+   ``package.xml`` files;
+2. ``ROS_PACKAGE_PATH`` (directories scanned);
+3. ``AMENT_PREFIX_PATH`` (``PREFIX/share/NAME``);
+4. the package holding the input file, and its siblings in the enclosing
+   workspace ``src/`` folder or repository.
+
+A package's name is the ``<name>`` in its ``package.xml``, never its folder name.
+"""
+
+from __future__ import annotations
+
+import os
+from collections.abc import Iterable, Iterator
+from pathlib import Path
+from urllib.parse import unquote, urlparse
+
+from lxml import etree
+
+SKIP_DIRS = {"build", "install", "log", "devel", "node_modules", "__pycache__", "site-packages"}
+MAX_SCAN_DEPTH = 8
+MAX_SCAN_DIRS = 20_000
+
+_SAFE_PARSER = etree.XMLParser(resolve_entities=False, no_network=True, load_dtd=False)
+
+
+class PackageError(ValueError):
+    """A ``-P`` option that is not ``NAME=DIR`` or an existing directory."""
+
+
+def package_name(manifest: Path) -> str | None:
+    """The ``<name>`` declared in a package.xml, or None when unreadable."""
+    try:
+        root = etree.parse(str(manifest), _SAFE_PARSER).getroot()
+    except (OSError, etree.XMLSyntaxError):
+        return None
+    name = root.findtext("name")
+    return name.strip() if name and name.strip() else None
+
+
+def scan(root: Path) -> Iterator[tuple[str, Path]]:
+    """Yield (name, dir) for every package below root, without entering a package."""
+    budget = MAX_SCAN_DIRS
+    stack = [(root, 0)]
+    while stack and budget > 0:
+        folder, depth = stack.pop()
+        budget -= 1
+        manifest = folder / "package.xml"
+        if manifest.is_file():
+            name = package_name(manifest)
+            if name:
+                yield name, folder
+            continue  # ROS packages do not nest
+        if depth >= MAX_SCAN_DEPTH or (folder / "CATKIN_IGNORE").exists() or (folder / "COLCON_IGNORE").exists():
+            continue
+        try:
+            children = sorted(
+                (p for p in folder.iterdir() if p.is_dir() and not p.name.startswith(".") and p.name not in SKIP_DIRS),
+                reverse=True,
+            )
+        except OSError:
+            continue
+        stack.extend((child, depth + 1) for child in children)
+
+
+def enclosing_package(start: Path) -> Path | None:
+    for folder in [start, *start.parents]:
+        if (folder / "package.xml").is_file():
+            return folder
+    return None
+
+
+def workspace_root(package_dir: Path) -> Path:
+    """The folder whose packages are siblings of package_dir: a workspace ``src``,
+    else the repository root, else the package's parent folder."""
+    for folder in package_dir.parents:
+        if folder.name == "src" or (folder / ".git").exists():
+            return folder
+    return package_dir.parent
+
+
+class PackageResolver:
+    def __init__(self, options: Iterable[str] = (), input_file: Path | None = None, env=None):
+        env = os.environ if env is None else env
+        self._explicit: dict[str, Path] = {}
+        self._scan_roots: list[Path] = []
+        for option in options:
+            if "=" in option:
+                name, _, folder = option.partition("=")
+                if not name or not folder:
+                    raise PackageError(f"--package-path {option!r}: expected NAME=DIR or DIR")
+                self._explicit.setdefault(name, Path(folder).expanduser().resolve())
+            else:
+                folder = Path(option).expanduser()
+                if not folder.is_dir():
+                    raise PackageError(f"--package-path {option!r}: not a directory")
+                self._scan_roots.append(folder.resolve())
+        self._scan_roots += [Path(p) for p in env.get("ROS_PACKAGE_PATH", "").split(os.pathsep) if p]
+        self._ament = [Path(p) for p in env.get("AMENT_PREFIX_PATH", "").split(os.pathsep) if p]
+        own = enclosing_package(input_file.resolve().parent) if input_file else None
+        self._own = own
+        self._local_root = workspace_root(own) if own else None
+        self._found: dict[str, Path] = {}
+        self._scanned: set[Path] = set()
+
+    def where(self) -> str:
+        """Where packages are looked for, for error messages."""
+        places = [f"-P {name}={path}" for name, path in self._explicit.items()]
+        places += [str(p) for p in self._scan_roots]
+        places += [f"{p}/share" for p in self._ament]
+        if self._local_root:
+            places.append(str(self._local_root))
+        return ", ".join(places) if places else "nowhere: the input is not inside a package (use -P NAME=DIR)"
+
+    def _scan_into_cache(self, root: Path) -> None:
+        if root in self._scanned:
+            return
+        self._scanned.add(root)
+        for name, folder in scan(root):
+            self._found.setdefault(name, folder)
+
+    def find(self, name: str) -> Path | None:
+        if name in self._explicit:
+            return self._explicit[name]
+        if name in self._found:
+            return self._found[name]
+        for root in self._scan_roots:
+            self._scan_into_cache(root)
+            if name in self._found:
+                return self._found[name]
+        for prefix in self._ament:
+            share = prefix / "share" / name
+            if share.is_dir():
+                return share
+        if self._own is not None:
+            if package_name(self._own / "package.xml") == name:
+                return self._own
+            if self._local_root is not None:
+                self._scan_into_cache(self._local_root)
+        return self._found.get(name)
+
+    def resolve_uri(self, uri: str, base_dir: Path | None = None) -> Path | None:
+        """The file on disk a mesh or texture URI names; never fetched from a network."""
+        parsed = urlparse(uri)
+        if parsed.scheme == "package":
+            folder = self.find(parsed.netloc)
+            return folder / unquote(parsed.path.lstrip("/")) if folder else None
+        if parsed.scheme == "file":
+            return Path(unquote(parsed.path))
+        if parsed.scheme == "" or len(parsed.scheme) == 1:  # plain or Windows-style path
+            path = Path(uri)
+            return path if path.is_absolute() or base_dir is None else base_dir / path
+        return None  # http, https, ...: never fetched

@@ -1,0 +1,64 @@
+"""Joint rules that need more than one element: axes, mimics and limits."""
+
+from __future__ import annotations
+
+import math
+
+from ..numbers import format_number
+from . import ERROR, WARNING, check
+from ..model import MOVING_AXIS_TYPES
+
+
+@check("J007", "zero-axis", ERROR, "A moving joint whose axis is the zero vector.")
+def zero_axis(loaded):
+    """A revolute, continuous, prismatic or planar joint with ``<axis xyz="0 0 0"/>`` has no direction to move in."""
+    for joint in loaded.robot.joints.values():
+        if joint.type in MOVING_AXIS_TYPES and not any(joint.axis):
+            yield loaded.diagnostic("J007", f"{joint.type} joint '{joint.name}' has a zero axis", joint.element.find("axis"))
+
+
+@check("J008", "mimic-joint-not-found", ERROR, "A `<mimic joint>` naming no joint.")
+def mimic_not_found(loaded):
+    """The joint a mimic follows must exist; robot_state_publisher and MoveIt fail otherwise."""
+    for joint in loaded.robot.joints.values():
+        if joint.mimic and joint.mimic.joint != joint.name and joint.mimic.joint not in loaded.robot.joints:
+            yield loaded.diagnostic("J008", f"joint '{joint.name}' mimics '{joint.mimic.joint}', which does not exist", joint.element.find("mimic"))
+
+
+@check("J009", "mimic-self", ERROR, "A joint that mimics itself.")
+def mimic_self(loaded):
+    """A joint cannot follow its own position."""
+    for joint in loaded.robot.joints.values():
+        if joint.mimic and joint.mimic.joint == joint.name:
+            yield loaded.diagnostic("J009", f"joint '{joint.name}' mimics itself", joint.element.find("mimic"))
+
+
+@check("J010", "limit-lower-above-upper", WARNING, "A joint limit whose lower bound is above its upper bound.")
+def lower_above_upper(loaded):
+    """With lower > upper no position is allowed; controllers refuse the joint."""
+    for joint in loaded.robot.joints.values():
+        limit = joint.limit
+        if joint.type in ("revolute", "prismatic") and limit and limit.lower > limit.upper:
+            yield loaded.diagnostic(
+                "J010",
+                f"joint '{joint.name}' has lower {format_number(limit.lower)} > upper {format_number(limit.upper)}",
+                joint.element.find("limit"),
+                hint="swap lower and upper",
+            )
+
+
+@check("J011", "axis-not-unit", WARNING, "A joint axis that is not a unit vector.", in_check=False)
+def axis_not_unit(loaded):
+    """urdfdom normalises the axis silently; a non-unit axis usually means a typo (``1 1 1`` for a caster)."""
+    for joint in loaded.robot.joints.values():
+        norm = math.sqrt(sum(c * c for c in joint.axis))
+        if joint.type in MOVING_AXIS_TYPES and norm > 0 and abs(norm - 1.0) > 1e-6:
+            yield loaded.diagnostic("J011", f"axis of joint '{joint.name}' has length {norm:.6g}, not 1", joint.element.find("axis"))
+
+
+@check("J012", "continuous-with-limits", WARNING, "A continuous joint given lower/upper limits.", in_check=False)
+def continuous_with_limits(loaded):
+    """A continuous joint turns without end: its lower and upper are ignored; use a revolute joint."""
+    for joint in loaded.robot.joints.values():
+        if joint.type == "continuous" and joint.limit and (joint.limit.has_lower or joint.limit.has_upper):
+            yield loaded.diagnostic("J012", f"continuous joint '{joint.name}' has lower/upper limits, which are ignored", joint.element.find("limit"), hint="make it revolute, or drop lower and upper")
