@@ -50,12 +50,14 @@ def _planned(name: str, summary: str):
     return command
 
 
-for _name, _summary in {
+# Subcommands still to come; each entry goes when its module is registered above.
+PLANNED = {
     "tree": "Print the kinematic tree.",
     "graph": "Draw the link tree as PDF, SVG, PNG or DOT.",
     "inertia": "Audit mass properties against physics and geometry.",
     "lint": "Check against documented, configurable rules.",
-}.items():
+}
+for _name, _summary in PLANNED.items():
     app.command(name=_name, context_settings={"allow_extra_args": True, "ignore_unknown_options": True})(_planned(_name, _summary))
 
 

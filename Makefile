@@ -1,0 +1,49 @@
+# Quickstart targets: `make demo` and `make test` work on a fresh machine.
+# They create .venv, install urdfcli with what it needs, and install the
+# system programs (graphviz; for tests also liburdfdom-tools and poppler-utils)
+# with apt-get when they are missing.
+
+PYTHON ?= python3
+VENV := .venv
+BIN := $(VENV)/bin
+DEMO := fixtures/urdf02_gazebo/urdf/car.urdf.xacro
+SUDO := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
+
+.PHONY: demo test bench system-runtime system-test clean
+
+demo: $(VENV)/.installed system-runtime
+	$(BIN)/urdfcli check $(DEMO)
+	$(BIN)/urdfcli tree $(DEMO)
+
+test: $(VENV)/.installed system-test
+	$(BIN)/python -m pytest
+
+bench: $(VENV)/.installed system-test
+	$(BIN)/python benchmarks/run.py
+
+$(VENV)/.installed: pyproject.toml
+	$(PYTHON) -m venv $(VENV)
+	$(BIN)/python -m pip install --quiet --upgrade pip
+	$(BIN)/python -m pip install --quiet -e '.[test]'
+	touch $@
+
+# apt-get only when a program is missing; `apt-get update` once before it.
+define apt_install
+	@missing=""; \
+	for pair in $(1); do prog=$${pair%%:*}; pkg=$${pair##*:}; \
+	  command -v $$prog >/dev/null 2>&1 || missing="$$missing $$pkg"; done; \
+	if [ -n "$$missing" ]; then \
+	  echo "installing$$missing with apt-get"; \
+	  $(SUDO) apt-get update -qq && \
+	  DEBIAN_FRONTEND=noninteractive $(SUDO) apt-get install -y -qq $$missing >/dev/null; \
+	fi
+endef
+
+system-runtime:
+	$(call apt_install,dot:graphviz)
+
+system-test:
+	$(call apt_install,dot:graphviz check_urdf:liburdfdom-tools pdfinfo:poppler-utils)
+
+clean:
+	rm -rf $(VENV) build *.egg-info src/*.egg-info .pytest_cache

@@ -1,0 +1,75 @@
+"""Shared test helpers: the fixtures folder, running the CLI, and real tools.
+
+Tests that need a real program (check_urdf, dot, xacro, pdfinfo...) skip
+locally when it is missing, but fail in CI (CI=true), where the Makefile
+installs them.
+"""
+
+from __future__ import annotations
+
+import os
+import shutil
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+from typer.testing import CliRunner
+
+ROOT = Path(__file__).resolve().parent.parent
+FIXTURES = ROOT / "fixtures"
+IN_CI = os.environ.get("CI", "").lower() in ("1", "true", "yes")
+
+
+def require_tool(name: str) -> str:
+    """The path of a real program, or skip (locally) / fail (in CI)."""
+    found = shutil.which(name) or (shutil.which(name, path=str(Path(sys.executable).parent)))
+    if found:
+        return found
+    if IN_CI:
+        pytest.fail(f"{name} is required in CI but is not installed")
+    pytest.skip(f"{name} is not installed")
+
+
+def run_cli(*args: str, input: str | bytes | None = None, cwd: Path | None = None, env: dict | None = None) -> subprocess.CompletedProcess:
+    """Run `python -m urdfcli` in a subprocess: real exit codes, real stdout/stderr."""
+    return subprocess.run(
+        [sys.executable, "-m", "urdfcli", *args],
+        input=input.encode() if isinstance(input, str) else input,
+        capture_output=True,
+        cwd=cwd,
+        env={**os.environ, "NO_COLOR": "1", "COLUMNS": "200", **(env or {})},
+        timeout=120,
+    )
+
+
+@pytest.fixture
+def cli():
+    """In-process runner (fast) for tests that need no real exit of the process."""
+    from urdfcli.cli import app
+
+    runner = CliRunner()
+
+    def invoke(*args: str, input: str | None = None):
+        return runner.invoke(app, list(args), input=input, catch_exceptions=False)
+
+    return invoke
+
+
+def all_fixture_models() -> list[Path]:
+    """Every complete model in fixtures/ (top-level .urdf and .urdf.xacro files)."""
+    return sorted(p for p in FIXTURES.rglob("*") if p.name.endswith((".urdf", ".urdf.xacro")) and is_complete(p))
+
+
+# Partial xacro files need properties or macros from the file that includes them (fixtures/README.md).
+PARTIAL = {
+    "urdf01_rviz/urdf/xacro/demo06_car_camera.urdf.xacro",
+    "urdf01_rviz/urdf/xacro/demo07_car_laser.urdf.xacro",
+    "urdf02_gazebo/urdf/demo05_car_base.urdf.xacro",
+    "urdf02_gazebo/urdf/demo06_car_camera.urdf.xacro",
+    "urdf02_gazebo/urdf/demo07_car_laser.urdf.xacro",
+}
+
+
+def is_complete(path: Path) -> bool:
+    return path.relative_to(FIXTURES).as_posix() not in PARTIAL
