@@ -45,7 +45,7 @@ class Document:
             index = self._index.get(element)
             origin = self.origins[index] if index is not None and index < len(self.origins) else None
             if origin is not None:
-                return Location(origin.file, origin.line or None, source_column(origin.file, origin.line, element, origin.occurrence))
+                return Location(origin.file, origin.line or None, origin.column)
             return Location(self.shown, element.sourceline, None, expanded=True)
         line = element.sourceline
         return Location(self.shown, line, self._column_here(element))
@@ -58,7 +58,7 @@ class Document:
             occurrence = same_line.index(element) + 1
         except ValueError:
             return None
-        return source_column(str(self.file), element.sourceline, element, occurrence)
+        return source_column(str(self.file), element.sourceline, tag_name(element), occurrence)
 
     def _line_elements(self, line: int) -> list[etree._Element]:
         cache = self.__dict__.setdefault("_by_line", None)
@@ -105,7 +105,7 @@ def _source_lines(file: str) -> list[str]:
     return _LINES[file]
 
 
-def source_column(file: str, line: int | None, element: etree._Element, occurrence: int) -> int | None:
+def source_column(file: str, line: int | None, tag: str, occurrence: int) -> int | None:
     """1-based column of the occurrence-th ``<tag`` on a source line."""
     if not line or occurrence < 1:
         return None
@@ -113,7 +113,7 @@ def source_column(file: str, line: int | None, element: etree._Element, occurren
     if line > len(lines):
         return None
     text = lines[line - 1]
-    needle = "<" + tag_name(element)
+    needle = "<" + tag
     start = -1
     for _ in range(occurrence):
         start = text.find(needle, start + 1)

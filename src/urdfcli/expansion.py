@@ -37,6 +37,13 @@ class Origin:
     file: str
     line: int
     occurrence: int  # k-th element of this tag starting on that line, from 1
+    tag: str = ""
+
+    @property
+    def column(self) -> int | None:
+        from .document import source_column
+
+        return source_column(self.file, self.line, self.tag, self.occurrence)
 
 
 class ExpansionError(Exception):
@@ -71,17 +78,17 @@ def tag_origins(root: etree._Element, file: str) -> None:
         element.set(ORIGIN, f"{line}:{counts[key]}:{file}")
 
 
-def parse_origin(value: str) -> Origin | None:
+def parse_origin(value: str, tag: str = "") -> Origin | None:
     try:
         line, occurrence, file = value.split(":", 2)
-        return Origin(file, int(line), int(occurrence))
+        return Origin(file, int(line), int(occurrence), tag)
     except ValueError:
         return None
 
 
 def tagged_dom(root: etree._Element, file: str) -> xml.dom.minidom.Document:
     tag_origins(root, file)
-    return xml.dom.minidom.parseString(etree.tostring(root, encoding="utf-8"))
+    return xml.dom.minidom.parseString(etree.tostring(root.getroottree(), encoding="utf-8"))
 
 
 class _Session:
@@ -101,7 +108,7 @@ class _Session:
     def origin_of(self, node) -> Origin | None:
         while node is not None and getattr(node, "nodeType", None) == xml.dom.Node.ELEMENT_NODE:
             if node.hasAttribute(ORIGIN):
-                return parse_origin(node.getAttribute(ORIGIN))
+                return parse_origin(node.getAttribute(ORIGIN), node.tagName)
             entry = self.xacro_origins.get(id(node))
             if entry is not None and entry[0] is node:
                 return entry[1]
@@ -120,7 +127,7 @@ class _Session:
         while child is not None:
             if child.nodeType == xml.dom.Node.ELEMENT_NODE and child.tagName.startswith(XACRO_PREFIX):
                 if child.hasAttribute(ORIGIN):
-                    origin = parse_origin(child.getAttribute(ORIGIN))
+                    origin = parse_origin(child.getAttribute(ORIGIN), child.tagName)
                     child.removeAttribute(ORIGIN)
                     if origin is not None:
                         self.xacro_origins[id(child)] = (child, origin)
@@ -219,7 +226,7 @@ def _collect_origins(doc: xml.dom.minidom.Document) -> list[Origin | None]:
     while stack:
         node = stack.pop()
         if node.hasAttribute(ORIGIN):
-            origins.append(parse_origin(node.getAttribute(ORIGIN)))
+            origins.append(parse_origin(node.getAttribute(ORIGIN), node.tagName))
             node.removeAttribute(ORIGIN)
         else:
             origins.append(None)
@@ -230,6 +237,8 @@ def _collect_origins(doc: xml.dom.minidom.Document) -> list[Origin | None]:
 
 def _short(error: BaseException) -> str:
     inner = getattr(error, "exc", None)
+    if isinstance(inner, OSError) and error.args:
+        return str(error.args[0])
     if isinstance(inner, PackageNotFound):
         return f"package '{inner.args[0]}' not found"
     text = " ".join(str(error).split())
@@ -258,12 +267,12 @@ def expand(
             xacro.process_doc(doc, mappings=dict(mappings))
         except ExpansionError:
             raise
-        except RecursionError:
+        except RecursionError as error:
             names = [m.body.getAttribute("name") for m in (xacro.macrostack or [])[-3:]]
             what = f" in macro '{names[-1]}'" if names else ""
             raise ExpansionError(
                 f"runaway recursion{what}: a macro or include that expands itself without end",
-                session.current_origin(),
+                getattr(error, "urdfcli_origin", None),
                 shown,
             ) from None
         except Exception as error:

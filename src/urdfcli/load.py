@@ -15,12 +15,12 @@ from lxml import etree
 
 from . import expansion
 from .diagnostics import Diagnostic, Location
-from .document import Document, source_column
+from .document import Document
 from .kinematics import build_graph, tree_diagnostics
 from .loaded import Loaded
 from .model import read
 from .packages import PackageResolver
-from .rules import REGISTRY, load_all, rule
+from .rules import load_all, rule
 from .xmlsafe import XmlError, parse_bytes
 
 XACRO_NAMESPACES = {"http://www.ros.org/wiki/xacro", "http://ros.org/wiki/xacro", "http://wiki.ros.org/xacro"}
@@ -87,7 +87,7 @@ def load_document(
     except expansion.ExpansionError as error:
         origin = error.origin
         if origin is not None:
-            location = Location(origin.file, origin.line or None, None)
+            location = Location(origin.file, origin.line or None, origin.column)
         else:
             location = Location(error.file or shown)
         return Document(path, None, file, is_xacro=True), [_error(error.code, error.message, location)]
@@ -117,4 +117,4 @@ def load(path: str, options: LoadOptions = LoadOptions(), data: bytes | None = N
     return loaded
 
 
-__all__ = ["InputError", "LoadOptions", "Loaded", "load", "load_document", "read_input", "REGISTRY", "source_column"]
+__all__ = ["InputError", "LoadOptions", "Loaded", "load", "load_document", "read_input"]
