@@ -1,0 +1,240 @@
+"""urdfcli check: each check with a failing and a passing snippet, and the CLI contract."""
+
+from __future__ import annotations
+
+import json
+
+import pytest
+
+from conftest import FIXTURES, run_cli
+from urdfcli.load import load
+
+BASE = '<link name="a"/><link name="b"/>'
+FIXED = '<joint name="j" type="fixed"><parent link="a"/><child link="b"/></joint>'
+INERTIA = 'ixx="1" ixy="0" ixz="0" iyy="1" iyz="0" izz="1"'
+
+
+def robot(body: str, attributes: str = 'name="r"') -> str:
+    return f"<robot {attributes}>{body}</robot>"
+
+
+def joint(kind: str = "revolute", inner: str = '<limit effort="1" velocity="1" lower="-1" upper="1"/>') -> str:
+    return BASE + f'<joint name="j" type="{kind}"><parent link="a"/><child link="b"/>{inner}</joint>'
+
+
+def link_a(inner: str) -> str:
+    return f'<link name="a">{inner}</link><link name="b"/>' + FIXED
+
+
+def inertial(mass: str = "1", inertia: str = INERTIA, origin: str = "") -> str:
+    return f'<inertial>{origin}<mass value="{mass}"/><inertia {inertia}/></inertial>'
+
+
+def visual(shape: str, extra: str = "") -> str:
+    return f"<visual><geometry>{shape}</geometry>{extra}</visual>"
+
+
+# code: (document with the defect, the same document corrected)
+CASES = {
+    "X001": ("<robot name='r'><link name='a'></robot>", robot("<link name='a'/>")),
+    "X002": ('<!DOCTYPE robot [<!ENTITY n "a">]><robot name="r"><link name="&n;"/></robot>', robot('<link name="a"/>')),
+    "R001": ("<model name='r'><link name='a'/></model>", robot("<link name='a'/>")),
+    "R002": ("<robot><link name='a'/></robot>", robot("<link name='a'/>")),
+    "R003": (robot("<link name='a'/>", 'name="r" version="2.0"'), robot("<link name='a'/>", 'name="r" version="1.0"')),
+    "R004": (robot(""), robot("<link name='a'/>")),
+    "N001": (robot("<link/><link name='a'/>"), robot("<link name='a'/>")),
+    "N002": (robot(BASE + '<joint type="fixed"><parent link="a"/><child link="b"/></joint>'), robot(BASE + FIXED)),
+    "N003": (robot('<link name="a"/><material><color rgba="1 0 0 1"/></material>'), robot('<link name="a"/><material name="red"><color rgba="1 0 0 1"/></material>')),
+    "N004": (robot('<link name="a"/><link name="a"/>'), robot('<link name="a"/>')),
+    "N005": (robot(BASE + '<link name="c"/>' + FIXED + '<joint name="j" type="fixed"><parent link="a"/><child link="c"/></joint>'),
+             robot(BASE + '<link name="c"/>' + FIXED + '<joint name="k" type="fixed"><parent link="a"/><child link="c"/></joint>')),
+    "N006": (robot('<link name="a"/><material name="m"><color rgba="1 0 0 1"/></material><material name="m"><color rgba="1 0 0 1"/></material>'),
+             robot('<link name="a"/><material name="m"><color rgba="1 0 0 1"/></material>')),
+    "V001": (robot(link_a(inertial(mass="x"))), robot(link_a(inertial(mass="1")))),
+    "V002": (robot(link_a(inertial(mass="nan"))), robot(link_a(inertial(mass="2")))),
+    "V003": (robot(link_a(visual('<box size="1 2"/>'))), robot(link_a(visual('<box size="1 2 3"/>')))),
+    "V004": (robot(link_a(visual("<sphere/>"))), robot(link_a(visual('<sphere radius="1"/>')))),
+    "V005": (robot(link_a('<inertial><mass value="1"/></inertial>')), robot(link_a(inertial()))),
+    "V006": (robot(link_a(visual('<cylinder radius="-0.1" length="1"/>'))), robot(link_a(visual('<cylinder radius="0.1" length="1"/>')))),
+    "V007": (robot('<link name="a"/><material name="m"><color rgba="2 0 0 1"/></material>'), robot('<link name="a"/><material name="m"><color rgba="1 0 0 1"/></material>')),
+    "G001": (robot(link_a("<visual><geometry/></visual>")), robot(link_a(visual('<box size="1 1 1"/>')))),
+    "G002": (robot(link_a(visual('<cone radius="1"/>'))), robot(link_a(visual('<sphere radius="1"/>')))),
+    "G003": (robot(link_a(visual('<box size="1 1 1"/><sphere radius="1"/>'))), robot(link_a(visual('<box size="1 1 1"/>')))),
+    "M001": (robot('<link name="a"/><material name="m"/>'), robot('<link name="a"/><material name="m"><texture filename="t.png"/></material>')),
+    "M002": (robot(link_a(visual('<box size="1 1 1"/>', '<material name="m"/>'))),
+             robot('<material name="m"><color rgba="0 0 1 1"/></material>' + link_a(visual('<box size="1 1 1"/>', '<material name="m"/>')))),
+    "M003": (robot(link_a(visual('<box size="1 1 1"/>', '<material name="m"><color rgba="0 0 0 1"/></material>')) + '<material name="m"><color rgba="1 1 1 1"/></material>'),
+             robot(link_a(visual('<box size="1 1 1"/>', '<material name="m"><color rgba="1 1 1 1"/></material>')) + '<material name="m"><color rgba="1 1 1 1"/></material>')),
+    "M004": (robot('<link name="a"/><material name="m"><color rgba="1 0 0"/></material>'), robot('<link name="a"/><material name="m"><color rgba="1 0 0 1"/></material>')),
+    "J001": (robot(BASE + '<joint name="j"><parent link="a"/><child link="b"/></joint>'), robot(BASE + FIXED)),
+    "J002": (robot(joint("ball", "")), robot(joint("floating", ""))),
+    "J003": (robot(joint("revolute", "")), robot(joint("continuous", ""))),
+    "J004": (robot(BASE + '<joint name="j" type="fixed"><parent link="a"/></joint>'), robot(BASE + FIXED)),
+    "J005": (robot(BASE + '<joint name="j" type="fixed"><parent link="arm"/><child link="b"/></joint>'), robot(BASE + FIXED)),
+    "J006": (robot(joint("continuous", "<dynamics/>")), robot(joint("continuous", '<dynamics damping="0.1"/>'))),
+    "J007": (robot(joint("continuous", '<axis xyz="0 0 0"/>')), robot(joint("continuous", '<axis xyz="0 0 1"/>'))),
+    "J008": (robot(joint("continuous", '<mimic joint="elbow"/>')), robot(joint("continuous", ""))),
+    "J009": (robot(joint("continuous", '<mimic joint="j"/>')), robot(joint("continuous", ""))),
+    "J010": (robot(joint("revolute", '<limit effort="1" velocity="1" lower="1" upper="-1"/>')), robot(joint("revolute"))),
+    "T001": (robot(BASE), robot(BASE + FIXED)),
+    "T002": (robot(BASE + FIXED + '<joint name="k" type="fixed"><parent link="b"/><child link="a"/></joint>'), robot(BASE + FIXED)),
+    "T003": (robot(BASE + '<link name="c"/>' + FIXED + '<joint name="k" type="fixed"><parent link="a"/><child link="c"/></joint><joint name="m" type="fixed"><parent link="b"/><child link="c"/></joint>'),
+             robot(BASE + '<link name="c"/>' + FIXED + '<joint name="k" type="fixed"><parent link="a"/><child link="c"/></joint>')),
+    "T004": (robot(BASE + '<link name="c"/>' + FIXED + '<joint name="k" type="fixed"><parent link="b"/><child link="c"/></joint><joint name="m" type="fixed"><parent link="c"/><child link="b"/></joint>'),
+             robot(BASE + '<link name="c"/>' + FIXED + '<joint name="k" type="fixed"><parent link="b"/><child link="c"/></joint>')),
+    "I001": (robot(link_a(inertial(mass="-1"))), robot(link_a(inertial(mass="1")))),
+    "I002": (robot('<link name="a">' + inertial() + '</link><link name="b"><inertial><mass value="0"/><inertia ixx="0" ixy="0" ixz="0" iyy="0" iyz="0" izz="0"/></inertial></link>' + joint("continuous", "")[len(BASE):]),
+             robot('<link name="a">' + inertial() + '</link><link name="b"><inertial><mass value="0"/><inertia ixx="0" ixy="0" ixz="0" iyy="0" iyz="0" izz="0"/></inertial></link>' + FIXED)),
+    "I003": (robot(link_a(inertial(mass="0"))), robot(link_a(inertial(mass="0", inertia='ixx="0" ixy="0" ixz="0" iyy="0" iyz="0" izz="0"')))),
+    "I004": (robot(link_a(inertial(inertia='ixx="0" ixy="0" ixz="0" iyy="0" iyz="0" izz="0"'))), robot(link_a(inertial()))),
+    "I005": (robot(link_a(inertial(inertia='ixx="1" ixy="0" ixz="0" iyy="0" iyz="1" izz="1"'))), robot(link_a(inertial()))),
+    "I006": (robot(link_a(inertial(inertia='ixx="0.001" ixy="0" ixz="0" iyy="0.001" iyz="0" izz="0.01"'))),
+             robot(link_a(inertial(inertia='ixx="0.006" ixy="0" ixz="0" iyy="0.006" iyz="0" izz="0.01"')))),
+}
+
+
+def codes(tmp_path, text: str, name: str = "model.urdf") -> set[str]:
+    path = tmp_path / name
+    path.write_text(text)
+    return {d.code for d in load(str(path)).diagnostics}
+
+
+@pytest.mark.parametrize("code", sorted(CASES))
+def test_each_check_flags_the_defect_and_passes_the_fix(tmp_path, code):
+    bad, good = CASES[code]
+    assert code in codes(tmp_path, bad)
+    assert code not in codes(tmp_path, good)
+
+
+def test_every_check_code_has_a_case():
+    from urdfcli.rules import load_all
+
+    in_check = {code for code, spec in load_all().items() if spec.in_check and code[0] in "XRNVGMJTI"}
+    untested = in_check - set(CASES) - {"X003", "X004", "X005"}  # xacro codes: tests/test_expand.py
+    assert not untested
+
+
+def test_massless_frame_links_on_fixed_joints_get_no_diagnostic(tmp_path):
+    frames = (
+        '<link name="base_link">' + inertial() + '</link>'
+        '<link name="tool0"/>'
+        '<link name="camera_optical_frame"><inertial><mass value="0"/><inertia ixx="0" ixy="0" ixz="0" iyy="0" iyz="0" izz="0"/></inertial></link>'
+        '<joint name="tool" type="fixed"><parent link="base_link"/><child link="tool0"/></joint>'
+        '<joint name="optical" type="fixed"><parent link="tool0"/><child link="camera_optical_frame"/></joint>'
+    )
+    assert codes(tmp_path, robot(frames)) == set()
+
+
+def test_all_problems_in_one_run(tmp_path):
+    text = robot(
+        '<link name="a"><inertial><mass value="x"/><inertia ' + INERTIA + "/></inertial>"
+        + visual('<box size="1 1"/>') + "</link><link name=\"b\"/><link name=\"c\"/>"
+        '<joint name="j" type="revolute"><parent link="a"/><child link="b"/></joint>'
+        '<joint name="k" type="fixed"><parent link="a"/><child link="zz"/></joint>'
+    )
+    assert {"V001", "V003", "J003", "J005", "T001"} <= codes(tmp_path, text)
+
+
+def test_text_output_tree_on_stdout_diagnostics_on_stderr(tmp_path):
+    path = tmp_path / "two.urdf"
+    path.write_text('<robot name="r">\n  <link name="a"/>\n  <link name="b"/>\n</robot>\n')
+    done = run_cli("check", str(path))
+    assert done.returncode == 1
+    assert done.stdout == b""
+    lines = done.stderr.decode().splitlines()
+    assert lines[0] == f"{path}:3:3: T001 error: 2 links have no parent: 'a', 'b'"
+    assert lines[1].startswith("    hint: ")
+    assert lines[-1] == "1 file checked: 1 error, 0 warnings"
+
+
+def test_check_urdf_format_on_the_bundled_example():
+    done = run_cli("check", "--format", "check_urdf", str(FIXTURES / "urdf02_gazebo/urdf/car.urdf.xacro"))
+    assert done.returncode == 0
+    assert done.stdout.decode().splitlines()[:3] == [
+        "robot name is: mycar",
+        "---------- Successfully Parsed XML ---------------",
+        "root Link: base_footprint has 1 child(ren)",
+    ]
+
+
+def test_json_format_follows_the_contract(tmp_path):
+    good = FIXTURES / "seed003" / "jtbot.urdf"
+    bad = tmp_path / "bad.urdf"
+    bad.write_text(robot(joint("revolute", "")))
+    done = run_cli("check", "--format", "json", str(good), str(bad))
+    assert done.returncode == 1
+    report = json.loads(done.stdout)
+    assert report["version"] == 1
+    assert [f["path"] for f in report["files"]] == [str(good), str(bad)]
+    assert [f["ok"] for f in report["files"]] == [True, False]
+    assert report["files"][0]["robot"] == "jtbot"
+    diagnostic = report["files"][1]["diagnostics"][0]
+    assert set(diagnostic) == {"code", "severity", "message", "path", "line", "column", "element"}
+    assert (diagnostic["code"], diagnostic["severity"], diagnostic["line"], diagnostic["element"]) == ("J003", "error", 1, "joint[@name='j']")
+    errors = sum(d["severity"] == "error" for f in report["files"] for d in f["diagnostics"])
+    warnings = sum(d["severity"] == "warning" for f in report["files"] for d in f["diagnostics"])
+    assert report["summary"] == {"files": 2, "errors": errors, "warnings": warnings}
+
+
+def test_strict_fails_on_warnings(tmp_path):
+    path = tmp_path / "w.urdf"
+    path.write_text(robot(link_a(inertial(mass="-1"))))
+    assert run_cli("check", str(path)).returncode == 0
+    assert run_cli("check", "--strict", str(path)).returncode == 1
+
+
+def test_standard_input(tmp_path):
+    done = run_cli("check", "-", input=robot(BASE + FIXED))
+    assert done.returncode == 0
+    assert done.stdout.decode().startswith("robot name is: r\n")
+    xacro_input = '<robot name="r" xmlns:xacro="http://www.ros.org/wiki/xacro"><xacro:property name="n" value="a"/><link name="${n}"/></robot>'
+    done = run_cli("check", "-", input=xacro_input)
+    assert done.returncode == 0, done.stderr
+    assert "root Link: a has 0 child(ren)" in done.stdout.decode()
+
+
+def test_could_not_run_is_exit_2_with_one_line(tmp_path):
+    missing = run_cli("check", str(tmp_path / "missing.urdf"))
+    assert missing.returncode == 2
+    assert missing.stderr.decode().splitlines()[0] == f"urdfcli: {tmp_path / 'missing.urdf'}: no such file"
+    directory = run_cli("check", str(tmp_path))
+    assert directory.returncode == 2 and "is a directory" in directory.stderr.decode()
+    option = run_cli("check", "--no-such-option", "x.urdf")
+    assert option.returncode == 2 and b"Traceback" not in option.stderr
+    bad_format = run_cli("check", "--format", "yaml", str(FIXTURES / "seed003" / "jtbot.urdf"))
+    assert bad_format.returncode == 2
+
+
+def test_many_files_each_get_a_verdict_worst_exit_code_wins(tmp_path):
+    good = tmp_path / "good.urdf"
+    good.write_text(robot(BASE + FIXED))
+    bad = tmp_path / "bad.urdf"
+    bad.write_text("<robot")
+    done = run_cli("check", "--format", "json", str(good), str(bad))
+    assert done.returncode == 1
+    assert [f["ok"] for f in json.loads(done.stdout)["files"]] == [True, False]
+    done = run_cli("check", "--format", "json", str(good), str(tmp_path / "missing.urdf"))
+    assert done.returncode == 2
+    assert [f["ok"] for f in json.loads(done.stdout)["files"]] == [True]
+
+
+def test_xacro_diagnostic_without_origin_says_so(tmp_path):
+    # xacro:element builds a tag from an expression: its origin is lost, the expanded line is given.
+    path = tmp_path / "dyn.urdf.xacro"
+    path.write_text('<robot name="r" xmlns:xacro="http://www.ros.org/wiki/xacro">\n<link name="a"/>\n<xacro:element xacro:name="link"/>\n</robot>\n')
+    done = run_cli("check", str(path))
+    assert "N001" in done.stderr.decode()
+    assert "(line in the xacro-expanded document)" in done.stderr.decode()
+
+
+def test_check_does_not_import_heavy_modules():
+    import subprocess
+    import sys
+
+    code = (
+        "import sys; from urdfcli.cli import app\n"
+        "try:\n    app(['check', sys.argv[1]])\nexcept SystemExit:\n    pass\n"
+        "print(sorted(m for m in ('yourdfpy', 'trimesh', 'scipy', 'graphviz', 'numpy') if m in sys.modules))"
+    )
+    done = subprocess.run([sys.executable, "-c", code, str(FIXTURES / "seed003" / "jtbot.urdf.xacro")], capture_output=True, text=True)
+    assert done.stdout.strip().splitlines()[-1] == "[]"

@@ -1,0 +1,163 @@
+"""urdfcli expand against the real xacro CLI, and its error handling."""
+
+from __future__ import annotations
+
+import shutil
+from pathlib import Path
+
+import pytest
+
+from conftest import FIXTURES, run_cli
+from differential import canonical, real_xacro
+
+XACRO_FIXTURES = sorted(p for p in FIXTURES.rglob("*.xacro"))
+
+
+@pytest.mark.parametrize("path", XACRO_FIXTURES, ids=lambda p: str(p.relative_to(FIXTURES)))
+def test_expand_matches_the_xacro_tool(path):
+    real = real_xacro(path)
+    mine = run_cli("expand", str(path), "-P", str(FIXTURES))
+    if real.returncode != 0:
+        # The same inputs fail (partial files, undeclared arguments): one short message, exit 1.
+        assert mine.returncode == 1
+        assert mine.stdout == b""
+        assert len(mine.stderr.decode().strip().splitlines()) <= 2
+        return
+    assert mine.returncode == 0, mine.stderr
+    assert canonical(mine.stdout.decode()) == canonical(real.stdout)
+    assert mine.stdout.decode() == real.stdout  # byte for byte, banner included
+
+
+def test_arguments_are_passed_to_xacro():
+    path = FIXTURES / "seed000" / "broken_xacro_robot.urdf.xacro"
+    real = real_xacro(path, "use_gpu_laser:=false")
+    mine = run_cli("expand", str(path), "use_gpu_laser:=false")
+    assert real.returncode != 0 and mine.returncode == 1  # next it needs $(find my_robot): no such package
+    assert "my_robot" in real.stderr
+    assert "package 'my_robot' not found" in mine.stderr.decode()
+
+
+def test_find_resolves_own_package_from_any_directory(tmp_path):
+    path = FIXTURES / "urdf01_rviz" / "urdf" / "xacro" / "car_find.urdf.xacro"
+    mine = run_cli("expand", str(path), cwd=tmp_path)
+    assert mine.returncode == 0, mine.stderr
+    assert canonical(mine.stdout.decode()) == canonical(real_xacro(path).stdout)
+
+
+def test_find_uses_package_name_not_folder_name(tmp_path):
+    workspace = tmp_path / "ws" / "src"
+    (workspace / "folder_a" / "urdf").mkdir(parents=True)
+    (workspace / "folder_b" / "urdf").mkdir(parents=True)
+    (workspace / "folder_a" / "package.xml").write_text("<package format='2'><name>robot_description</name></package>")
+    (workspace / "folder_b" / "package.xml").write_text("<package format='2'><name>robot_parts</name></package>")
+    (workspace / "folder_b" / "urdf" / "arm.xacro").write_text(
+        '<robot xmlns:xacro="http://www.ros.org/wiki/xacro"><xacro:macro name="arm"><link name="arm"/>'
+        '<joint name="j" type="fixed"><parent link="base"/><child link="arm"/></joint></xacro:macro></robot>'
+    )
+    top = workspace / "folder_a" / "urdf" / "robot.urdf.xacro"
+    top.write_text(
+        '<robot name="r" xmlns:xacro="http://www.ros.org/wiki/xacro">'
+        '<xacro:include filename="$(find robot_parts)/urdf/arm.xacro"/><link name="base"/><xacro:arm/></robot>'
+    )
+    mine = run_cli("expand", str(top), cwd=tmp_path)
+    assert mine.returncode == 0, mine.stderr
+    assert '<link name="arm"/>' in mine.stdout.decode()
+    check = run_cli("check", str(top), cwd=tmp_path)
+    assert check.returncode == 0, check.stderr
+
+
+def test_package_path_option_and_environment(tmp_path):
+    lib = tmp_path / "elsewhere" / "lib_folder"
+    lib.mkdir(parents=True)
+    (lib / "package.xml").write_text("<package><name>shared_lib</name></package>")
+    (lib / "m.xacro").write_text('<robot xmlns:xacro="http://www.ros.org/wiki/xacro"><link name="base"/></robot>')
+    top = tmp_path / "top.urdf.xacro"
+    top.write_text('<robot name="r" xmlns:xacro="http://www.ros.org/wiki/xacro"><xacro:include filename="$(find shared_lib)/m.xacro"/></robot>')
+    assert run_cli("expand", str(top)).returncode == 1
+    assert run_cli("expand", str(top), "-P", str(tmp_path / "elsewhere")).returncode == 0
+    assert run_cli("expand", str(top), "-P", f"shared_lib={lib}").returncode == 0
+    assert run_cli("expand", str(top), env={"ROS_PACKAGE_PATH": str(tmp_path / "elsewhere")}).returncode == 0
+    share = tmp_path / "prefix" / "share" / "shared_lib"
+    shutil.copytree(lib, share)
+    assert run_cli("expand", str(top), env={"AMENT_PREFIX_PATH": str(tmp_path / "prefix")}).returncode == 0
+
+
+XACRO_ERRORS = {
+    "undefined property": ('<link name="${nope}"/>', "name 'nope' is not defined", 3),
+    "undefined macro": ("<xacro:nothere/>", "unknown macro name: xacro:nothere", 3),
+    "undefined argument": ('<link name="$(arg missing)"/>', "Undefined substitution argument missing", 3),
+    "missing include": ('<xacro:include filename="missing.xacro"/>', "cannot include missing.xacro", 3),
+    "runaway recursion": ('<xacro:macro name="loop"><xacro:loop/></xacro:macro>\n  <xacro:loop/>', "runaway recursion in macro 'loop'", 3),
+}
+
+
+@pytest.mark.parametrize("body,message,line", XACRO_ERRORS.values(), ids=XACRO_ERRORS.keys())
+def test_xacro_errors_are_one_short_line_with_file_and_line(tmp_path, body, message, line):
+    path = tmp_path / "bad.urdf.xacro"
+    path.write_text(f'<robot name="r" xmlns:xacro="http://www.ros.org/wiki/xacro">\n  <link name="base"/>\n  {body}\n</robot>\n')
+    out = tmp_path / "out.urdf"
+    done = run_cli("expand", str(path), "-o", str(out), cwd=tmp_path)
+    stderr = done.stderr.decode()
+    assert done.returncode == 1
+    assert message in stderr
+    assert stderr.startswith(f"bad.urdf.xacro:{line}:")
+    assert len(stderr.strip().splitlines()) == 1
+    assert "Traceback" not in stderr
+    assert not out.exists()
+
+
+def test_include_cycle(tmp_path):
+    (tmp_path / "a.urdf.xacro").write_text('<robot name="r" xmlns:xacro="http://www.ros.org/wiki/xacro">\n<xacro:include filename="b.xacro"/></robot>')
+    (tmp_path / "b.xacro").write_text('<robot xmlns:xacro="http://www.ros.org/wiki/xacro">\n\n<xacro:include filename="a.urdf.xacro"/></robot>')
+    done = run_cli("expand", "a.urdf.xacro", cwd=tmp_path)
+    assert done.returncode == 1
+    assert done.stderr.decode().strip() == "b.xacro:3:1: X003 error: include cycle: a.urdf.xacro -> b.xacro -> a.urdf.xacro"
+
+
+def test_error_inside_macro_of_included_file_points_at_the_included_file(tmp_path):
+    (tmp_path / "parts.xacro").write_text(
+        '<robot xmlns:xacro="http://www.ros.org/wiki/xacro">\n'
+        '  <xacro:macro name="wheel" params="side">\n'
+        '    <link name="${side}_wheel"/>\n'
+        '    <joint name="${side}_joint" type="continuous">\n'
+        '      <parent link="chassis"/>\n'
+        '      <child link="${side}_wheel"/>\n'
+        "    </joint>\n"
+        "  </xacro:macro>\n"
+        "</robot>\n"
+    )
+    (tmp_path / "robot.urdf.xacro").write_text(
+        '<robot name="r" xmlns:xacro="http://www.ros.org/wiki/xacro">\n'
+        '  <xacro:include filename="parts.xacro"/>\n'
+        '  <link name="base"/>\n'
+        '  <xacro:wheel side="left"/>\n'
+        "</robot>\n"
+    )
+    done = run_cli("check", "robot.urdf.xacro", cwd=tmp_path)
+    assert done.returncode == 1
+    assert "parts.xacro:5:7: J005 error: parent link 'chassis' of joint 'left_joint' does not exist" in done.stderr.decode()
+
+
+def test_deps_lists_included_files(tmp_path):
+    path = FIXTURES / "urdf02_gazebo" / "urdf" / "car.urdf.xacro"
+    done = run_cli("expand", "--deps", str(path))
+    assert done.returncode == 0
+    listed = {Path(line).name for line in done.stdout.decode().split()}
+    real = {Path(name).name for name in real_xacro(path, "--deps").stdout.split()}
+    assert listed == real == {"head.xacro", "demo05_car_base.urdf.xacro", "demo06_car_camera.urdf.xacro", "demo07_car_laser.urdf.xacro"}
+
+
+def test_output_file_is_written_and_input_is_never_overwritten(tmp_path):
+    source = FIXTURES / "urdf01_rviz" / "urdf" / "xacro" / "car.urdf.xacro"
+    copy = tmp_path / "car"
+    shutil.copytree(source.parent, copy)
+    target = copy / "car.urdf.xacro"
+    before = target.read_bytes()
+    refused = run_cli("expand", str(target), "-o", str(target))
+    assert refused.returncode == 2
+    assert "refusing to overwrite the input" in refused.stderr.decode()
+    assert target.read_bytes() == before
+    out = tmp_path / "car.urdf"
+    assert run_cli("expand", str(target), "-o", str(out)).returncode == 0
+    assert canonical(out.read_text()) == canonical(real_xacro(source).stdout)
+    assert [p.name for p in tmp_path.iterdir() if p.name.startswith(".")] == []  # no temporary file left
