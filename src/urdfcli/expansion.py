@@ -23,6 +23,7 @@ import xacro
 import xacro.substitution_args
 from lxml import etree
 
+from . import sandbox
 from .xmlsafe import XmlError, parse_bytes
 
 if TYPE_CHECKING:
@@ -55,6 +56,9 @@ class ExpansionError(Exception):
         self.origin = origin
         self.file = file
         self.code = code
+
+    def __reduce__(self):
+        return (ExpansionError, (self.message, self.origin, self.file, self.code))
 
 
 class PackageNotFound(LookupError):
@@ -197,6 +201,8 @@ class _Session:
             setattr(xacro, name, self.touch(self.saved[name]))
         self.saved["parse"] = xacro.parse
         xacro.parse = self.parse
+        self.saved["safe_eval"] = xacro.safe_eval
+        xacro.safe_eval = sandbox.safe_eval
         self.saved["_eval_find"] = xacro.substitution_args._eval_find
         xacro.substitution_args._eval_find = self.find
         xacro.all_includes = []
@@ -242,6 +248,8 @@ def _short(error: BaseException) -> str:
     if isinstance(inner, PackageNotFound):
         return f"package '{inner.args[0]}' not found"
     text = " ".join(str(error).split())
+    if isinstance(inner, MemoryError):
+        return f"out of memory {text}"
     if isinstance(inner, NameError) and "when evaluating expression" in text:
         return text.replace(" when evaluating", ", when evaluating")
     return text or type(error).__name__
@@ -257,7 +265,18 @@ def expand(
     mappings: dict[str, str],
     resolver: "PackageResolver",
 ) -> Expansion:
-    """Expand the parsed xacro document ``root`` read from ``file`` (None: stdin)."""
+    """Expand the parsed xacro document ``root`` read from ``file`` (None: stdin).
+
+    The expansion runs under sandbox.bounded: limited in time and memory.
+    """
+    try:
+        return sandbox.bounded(_expand, root, file, mappings, resolver)
+    except sandbox.LimitExceeded as error:
+        shown = display_path(file) if file else "<stdin>"
+        raise ExpansionError(f"xacro expansion stopped: {error} (the limit for one file)", None, shown) from None
+
+
+def _expand(root: etree._Element, file: str | None, mappings: dict[str, str], resolver: "PackageResolver") -> Expansion:
     shown = display_path(file) if file else "<stdin>"
     doc = tagged_dom(root, shown)
     stderr = io.StringIO()
