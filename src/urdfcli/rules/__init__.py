@@ -188,6 +188,6 @@ def lookup(code_or_name: str) -> Rule:
 
 
 def load_all() -> dict[str, Rule]:
-    from . import structure, joints, physics, description, style, inertia  # noqa: F401  (registration side effects)
+    from . import structure, joints, physics, description, style, inertia, suppression  # noqa: F401  (registration side effects)
 
     return REGISTRY

@@ -318,6 +318,12 @@ def transmission_joint(loaded):
 
     ## Example
     ```xml
+    <link name="base_link"/>
+    <link name="wheel_link"/>
+    <joint name="wheel_joint" type="continuous">
+      <parent link="base_link"/>
+      <child link="wheel_link"/>
+    </joint>
     <transmission name="wheel_trans">
       <type>transmission_interface/SimpleTransmission</type>
       <joint name="wheel_jiont">
@@ -328,6 +334,12 @@ def transmission_joint(loaded):
 
     ## Use instead
     ```xml
+    <link name="base_link"/>
+    <link name="wheel_link"/>
+    <joint name="wheel_joint" type="continuous">
+      <parent link="base_link"/>
+      <child link="wheel_link"/>
+    </joint>
     <transmission name="wheel_trans">
       <type>transmission_interface/SimpleTransmission</type>
       <joint name="wheel_joint">
@@ -366,6 +378,12 @@ def plugin_joint(loaded):
 
     ## Example
     ```xml
+    <link name="base_link"/>
+    <link name="left_wheel_link"/>
+    <joint name="left_wheel_joint" type="continuous">
+      <parent link="base_link"/>
+      <child link="left_wheel_link"/>
+    </joint>
     <gazebo>
       <plugin name="diff_drive" filename="libgazebo_ros_diff_drive.so">
         <left_joint>left_wheel</left_joint>
@@ -375,6 +393,12 @@ def plugin_joint(loaded):
 
     ## Use instead
     ```xml
+    <link name="base_link"/>
+    <link name="left_wheel_link"/>
+    <joint name="left_wheel_joint" type="continuous">
+      <parent link="base_link"/>
+      <child link="left_wheel_link"/>
+    </joint>
     <gazebo>
       <plugin name="diff_drive" filename="libgazebo_ros_diff_drive.so">
         <left_joint>left_wheel_joint</left_joint>

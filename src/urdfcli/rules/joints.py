@@ -11,7 +11,37 @@ from ..model import MOVING_AXIS_TYPES
 
 @check("J007", "zero-axis", ERROR, "A moving joint whose axis is the zero vector.")
 def zero_axis(loaded):
-    """A revolute, continuous, prismatic or planar joint with ``<axis xyz="0 0 0"/>`` has no direction to move in."""
+    """## What it does
+    Flags a revolute, continuous, prismatic or planar joint whose `<axis xyz>` is `0 0 0`.
+
+    ## Why is this bad?
+    A moving joint needs a direction to move in; urdfdom accepts the zero vector,
+    but KDL, MoveIt and Gazebo divide by its length.
+
+    ## Example
+    ```xml
+    <link name="base_link"/>
+    <link name="arm_link"/>
+    <joint name="arm_joint" type="revolute">
+      <parent link="base_link"/>
+      <child link="arm_link"/>
+      <axis xyz="0 0 0"/>
+      <limit lower="-1" upper="1" effort="10" velocity="1"/>
+    </joint>
+    ```
+
+    ## Use instead
+    ```xml
+    <link name="base_link"/>
+    <link name="arm_link"/>
+    <joint name="arm_joint" type="revolute">
+      <parent link="base_link"/>
+      <child link="arm_link"/>
+      <axis xyz="0 0 1"/>
+      <limit lower="-1" upper="1" effort="10" velocity="1"/>
+    </joint>
+    ```
+    """
     for joint in loaded.robot.joints.values():
         if joint.type in MOVING_AXIS_TYPES and not any(joint.axis):
             yield loaded.diagnostic("J007", f"{joint.type} joint '{joint.name}' has a zero axis", joint.element.find("axis"))
@@ -19,7 +49,43 @@ def zero_axis(loaded):
 
 @check("J008", "mimic-joint-not-found", ERROR, "A `<mimic joint>` naming no joint.")
 def mimic_not_found(loaded):
-    """The joint a mimic follows must exist; robot_state_publisher and MoveIt fail otherwise."""
+    """## What it does
+    Flags a `<mimic joint>` that names a joint the robot does not have.
+
+    ## Why is this bad?
+    The joint a mimic follows must exist; robot_state_publisher and MoveIt fail
+    to load the model otherwise.
+
+    ## Example
+    ```xml
+    <link name="base_link"/>
+    <link name="arm_link"/>
+    <joint name="arm_joint" type="revolute">
+      <parent link="base_link"/>
+      <child link="arm_link"/>
+      <limit lower="-1" upper="1" effort="10" velocity="1"/>
+      <mimic joint="shoulder"/>
+    </joint>
+    ```
+
+    ## Use instead
+    ```xml
+    <link name="base_link"/>
+    <link name="arm_link"/>
+    <joint name="arm_joint" type="revolute">
+      <parent link="base_link"/>
+      <child link="arm_link"/>
+      <limit lower="-1" upper="1" effort="10" velocity="1"/>
+      <mimic joint="arm_joint_2"/>
+    </joint>
+    <link name="forearm_link"/>
+    <joint name="arm_joint_2" type="revolute">
+      <parent link="arm_link"/>
+      <child link="forearm_link"/>
+      <limit lower="-1" upper="1" effort="10" velocity="1"/>
+    </joint>
+    ```
+    """
     for joint in loaded.robot.joints.values():
         if joint.mimic and joint.mimic.joint != joint.name and joint.mimic.joint not in loaded.robot.joints:
             yield loaded.diagnostic("J008", f"joint '{joint.name}' mimics '{joint.mimic.joint}', which does not exist", joint.element.find("mimic"))
@@ -27,7 +93,35 @@ def mimic_not_found(loaded):
 
 @check("J009", "mimic-self", ERROR, "A joint that mimics itself.")
 def mimic_self(loaded):
-    """A joint cannot follow its own position."""
+    """## What it does
+    Flags a joint whose `<mimic joint>` is the joint itself.
+
+    ## Why is this bad?
+    A joint cannot follow its own position: solvers loop or reject the model.
+
+    ## Example
+    ```xml
+    <link name="base_link"/>
+    <link name="arm_link"/>
+    <joint name="arm_joint" type="revolute">
+      <parent link="base_link"/>
+      <child link="arm_link"/>
+      <limit lower="-1" upper="1" effort="10" velocity="1"/>
+      <mimic joint="arm_joint"/>
+    </joint>
+    ```
+
+    ## Use instead
+    ```xml
+    <link name="base_link"/>
+    <link name="arm_link"/>
+    <joint name="arm_joint" type="revolute">
+      <parent link="base_link"/>
+      <child link="arm_link"/>
+      <limit lower="-1" upper="1" effort="10" velocity="1"/>
+    </joint>
+    ```
+    """
     for joint in loaded.robot.joints.values():
         if joint.mimic and joint.mimic.joint == joint.name:
             yield loaded.diagnostic("J009", f"joint '{joint.name}' mimics itself", joint.element.find("mimic"))
@@ -35,7 +129,35 @@ def mimic_self(loaded):
 
 @check("J010", "limit-lower-above-upper", WARNING, "A joint limit whose lower bound is above its upper bound.")
 def lower_above_upper(loaded):
-    """With lower > upper no position is allowed; controllers refuse the joint."""
+    """## What it does
+    Flags a revolute or prismatic joint whose `lower` limit is above its `upper` limit.
+
+    ## Why is this bad?
+    No position satisfies lower > upper: controllers and planners refuse the joint,
+    and simulators clamp it somewhere arbitrary.
+
+    ## Example
+    ```xml
+    <link name="base_link"/>
+    <link name="arm_link"/>
+    <joint name="arm_joint" type="revolute">
+      <parent link="base_link"/>
+      <child link="arm_link"/>
+      <limit lower="1.57" upper="-1.57" effort="10" velocity="1"/>
+    </joint>
+    ```
+
+    ## Use instead
+    ```xml
+    <link name="base_link"/>
+    <link name="arm_link"/>
+    <joint name="arm_joint" type="revolute">
+      <parent link="base_link"/>
+      <child link="arm_link"/>
+      <limit lower="-1.57" upper="1.57" effort="10" velocity="1"/>
+    </joint>
+    ```
+    """
     for joint in loaded.robot.joints.values():
         limit = joint.limit
         if joint.type in ("revolute", "prismatic") and limit and limit.lower > limit.upper:
@@ -49,7 +171,35 @@ def lower_above_upper(loaded):
 
 @check("J011", "axis-not-unit", WARNING, "A joint axis that is not a unit vector.", in_check=False)
 def axis_not_unit(loaded):
-    """urdfdom normalises the axis silently; a non-unit axis usually means a typo (``1 1 1`` for a caster)."""
+    """## What it does
+    Flags a moving joint whose axis is not a unit vector.
+
+    ## Why is this bad?
+    urdfdom normalises the axis silently; a non-unit axis usually means a typo,
+    such as `1 1 1` for a wheel that should turn about one axis.
+
+    ## Example
+    ```xml
+    <link name="base_link"/>
+    <link name="arm_link"/>
+    <joint name="arm_joint" type="continuous">
+      <parent link="base_link"/>
+      <child link="arm_link"/>
+      <axis xyz="1 1 1"/>
+    </joint>
+    ```
+
+    ## Use instead
+    ```xml
+    <link name="base_link"/>
+    <link name="arm_link"/>
+    <joint name="arm_joint" type="continuous">
+      <parent link="base_link"/>
+      <child link="arm_link"/>
+      <axis xyz="0 1 0"/>
+    </joint>
+    ```
+    """
     for joint in loaded.robot.joints.values():
         norm = math.sqrt(sum(c * c for c in joint.axis))
         if joint.type in MOVING_AXIS_TYPES and norm > 0 and abs(norm - 1.0) > 1e-6:
@@ -58,7 +208,35 @@ def axis_not_unit(loaded):
 
 @check("J012", "continuous-with-limits", WARNING, "A continuous joint given lower/upper limits.", in_check=False)
 def continuous_with_limits(loaded):
-    """A continuous joint turns without end: its lower and upper are ignored; use a revolute joint."""
+    """## What it does
+    Flags a continuous joint whose `<limit>` gives `lower` or `upper`.
+
+    ## Why is this bad?
+    A continuous joint turns without end: its lower and upper are ignored, so
+    the range the author meant is not enforced.
+
+    ## Example
+    ```xml
+    <link name="base_link"/>
+    <link name="arm_link"/>
+    <joint name="arm_joint" type="continuous">
+      <parent link="base_link"/>
+      <child link="arm_link"/>
+      <limit lower="-1" upper="1" effort="10" velocity="1"/>
+    </joint>
+    ```
+
+    ## Use instead
+    ```xml
+    <link name="base_link"/>
+    <link name="arm_link"/>
+    <joint name="arm_joint" type="revolute">
+      <parent link="base_link"/>
+      <child link="arm_link"/>
+      <limit lower="-1" upper="1" effort="10" velocity="1"/>
+    </joint>
+    ```
+    """
     for joint in loaded.robot.joints.values():
         if joint.type == "continuous" and joint.limit and (joint.limit.has_lower or joint.limit.has_upper):
             yield loaded.diagnostic("J012", f"continuous joint '{joint.name}' has lower/upper limits, which are ignored", joint.element.find("limit"), hint="make it revolute, or drop lower and upper")

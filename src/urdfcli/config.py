@@ -1,0 +1,266 @@
+"""Project configuration for ``urdfcli lint``.
+
+Found by walking up from each linted file: in every folder, ``urdfcli.toml``
+or ``.urdfcli.toml`` (keys at the top level), else a ``pyproject.toml`` with a
+``[tool.urdfcli]`` table; the first folder that has one wins. ``--config FILE``
+names one explicitly. Every key, rule code and option value is validated: a
+mistake is a :class:`ConfigError` (the command exits 2).
+
+Keys::
+
+    select = ["D", "J"]            # codes or prefixes ("ALL" for every rule)
+    ignore = ["D002"]
+    extend-select = ["S"]          # added to select (or to the defaults)
+    package-paths = ["../vendor"]  # like -P: NAME=DIR or DIR, relative to the file
+    [per-file-ignores]             # glob (relative to the config's folder) -> codes
+    "legacy/*.urdf" = ["S"]
+    [severity]                     # code or prefix -> error | warning | info
+    I006 = "error"
+    [options.link-name-suffix]     # rule code or name -> its options
+    exempt = ["base_footprint", "*_frame"]
+    [xacro-args]                   # glob -> xacro arguments for the files it matches
+    "urdf/*.urdf.xacro" = { use_gpu = "false" }
+"""
+
+from __future__ import annotations
+
+import difflib
+import tomllib
+from dataclasses import dataclass, field, replace
+from fnmatch import fnmatchcase
+from functools import lru_cache
+from pathlib import Path
+from typing import Any
+
+from .diagnostics import Severity
+from .rules import Rule, UnknownRule, load_all, lookup
+
+CONFIG_NAMES = ("urdfcli.toml", ".urdfcli.toml")
+KEYS = ("select", "ignore", "extend-select", "per-file-ignores", "severity", "options", "package-paths", "xacro-args")
+ALL = "ALL"
+
+
+class ConfigError(ValueError):
+    """The configuration cannot be used; the message names the file and the key."""
+
+
+@dataclass(frozen=True)
+class Config:
+    """Which rules run where, how severe they are, and how files are loaded."""
+
+    source: str | None = None  # the file it was read from, for messages
+    root: Path = field(default_factory=Path.cwd)  # relative paths and globs start here
+    select: tuple[str, ...] | None = None  # None: the rules that are on by default
+    ignore: tuple[str, ...] = ()
+    extend_select: tuple[str, ...] = ()
+    per_file_ignores: tuple[tuple[str, tuple[str, ...]], ...] = ()
+    severity: tuple[tuple[str, Severity], ...] = ()
+    options: tuple[tuple[str, tuple[tuple[str, Any], ...]], ...] = ()  # code -> (name, value)...
+    package_paths: tuple[str, ...] = ()
+    xacro_args: tuple[tuple[str, tuple[tuple[str, str], ...]], ...] = ()
+
+    @classmethod
+    def everything(cls) -> "Config":
+        """Every rule on, with default severities and options."""
+        return cls(select=(ALL,))
+
+    def overridden(self, select: list[str] | None = None, ignore: list[str] | None = None, extend_select: list[str] | None = None) -> "Config":
+        """The command line over the file: --select replaces, --ignore and --extend-select add."""
+        where = "on the command line"
+        changes: dict[str, Any] = {}
+        if select:
+            changes["select"] = _selectors(select, where)
+        if ignore:
+            changes["ignore"] = self.ignore + _selectors(ignore, where)
+        if extend_select:
+            changes["extend_select"] = self.extend_select + _selectors(extend_select, where)
+        return replace(self, **changes)
+
+    # -- questions asked while linting -----------------------------------------
+    def enabled(self, rule: Rule, *files: str) -> bool:
+        """Is the rule on for diagnostics in these files? The most specific selector wins; ignore wins a tie."""
+        best: tuple[int, bool] | None = None
+        for selectors, on in ((self.select or ()) + self.extend_select, True), (self.ignore, False):
+            for selector in selectors:
+                if _matches(selector, rule.code):
+                    candidate = (_specificity(selector), on)
+                    if best is None or candidate[0] > best[0] or (candidate[0] == best[0] and not on):
+                        best = candidate
+        if best is None:
+            on = self.select is None and rule.default
+        else:
+            on = best[1]
+        return on and not any(
+            _matches(selector, rule.code) for pattern, selectors in self.per_file_ignores if any(self._glob(pattern, f) for f in files) for selector in selectors
+        )
+
+    def severity_of(self, code: str, default: Severity) -> Severity:
+        found = [(_specificity(s), level) for s, level in self.severity if _matches(s, code)]
+        return max(found, key=lambda pair: pair[0])[1] if found else default
+
+    def rule_options(self) -> dict[str, dict[str, Any]]:
+        return {code: dict(values) for code, values in self.options}
+
+    def mappings_for(self, file: str) -> dict[str, str]:
+        mappings: dict[str, str] = {}
+        for pattern, values in self.xacro_args:
+            if self._glob(pattern, file):
+                mappings.update(values)
+        return mappings
+
+    def _glob(self, pattern: str, file: str) -> bool:
+        path = Path(file)
+        candidates = {path.as_posix(), path.name}
+        try:
+            candidates.add(path.resolve().relative_to(self.root.resolve()).as_posix())
+        except (ValueError, OSError):
+            pass
+        return any(fnmatchcase(candidate, pattern) for candidate in candidates)
+
+
+# -- selectors -------------------------------------------------------------------
+def _matches(selector: str, code: str) -> bool:
+    return selector == ALL or code.startswith(selector)
+
+
+def _specificity(selector: str) -> int:
+    return 0 if selector == ALL else len(selector)
+
+
+def _selectors(values: Any, where: str) -> tuple[str, ...]:
+    """Validated codes or prefixes (upper-cased); unknown ones are an error."""
+    if isinstance(values, str):
+        values = [v for v in values.replace(",", " ").split() if v]
+    if not isinstance(values, list) or not all(isinstance(v, str) for v in values):
+        raise ConfigError(f"{where}: expected a list of rule codes or prefixes, not {values!r}")
+    codes = list(load_all())
+    out = []
+    for value in values:
+        selector = value.strip().upper()
+        if selector != ALL and not any(code.startswith(selector) for code in codes):
+            close = difflib.get_close_matches(selector, codes, n=1)
+            raise ConfigError(f"{where}: unknown rule code or prefix '{value}'" + (f" (did you mean '{close[0]}'?)" if close else "") + "; `urdfcli rules` lists them")
+        out.append(selector)
+    return tuple(out)
+
+
+# -- reading ---------------------------------------------------------------------
+def parse(table: dict[str, Any], source: str, root: Path) -> Config:
+    """A Config from the urdfcli table of a TOML file; every mistake is a ConfigError."""
+    for key in table:
+        if key not in KEYS:
+            close = difflib.get_close_matches(key, KEYS, n=1)
+            raise ConfigError(f"{source}: unknown key '{key}'" + (f" (did you mean '{close[0]}'?)" if close else "") + f"; the keys are {', '.join(KEYS)}")
+
+    def where(key: str) -> str:
+        return f"{source}: {key}"
+
+    def mapping(key: str) -> dict[str, Any]:
+        value = table.get(key, {})
+        if not isinstance(value, dict):
+            raise ConfigError(f"{where(key)}: expected a table, not {value!r}")
+        return value
+
+    select = _selectors(table["select"], where("select")) if "select" in table else None
+    per_file = tuple((pattern, _selectors(codes, where(f"per-file-ignores.{pattern!r}"))) for pattern, codes in mapping("per-file-ignores").items())
+    severity = []
+    for selector, level in mapping("severity").items():
+        (code,) = _selectors([selector], where("severity"))
+        try:
+            severity.append((code, Severity(level)))
+        except ValueError:
+            raise ConfigError(f"{where(f'severity.{selector}')}: {level!r} is not error, warning or info") from None
+    options = []
+    for name, values in mapping("options").items():
+        try:
+            rule = lookup(name)
+        except UnknownRule as error:
+            raise ConfigError(f"{where('options')}: {error}") from None
+        if not isinstance(values, dict):
+            raise ConfigError(f"{where(f'options.{name}')}: expected a table of option values, not {values!r}")
+        checked = []
+        for option, value in values.items():
+            try:
+                checked.append((option, rule.option(option).validate(value)))
+            except (KeyError, ValueError) as error:
+                raise ConfigError(f"{where(f'options.{name}')}: {error.args[0]}") from None
+        options.append((rule.code, tuple(checked)))
+    paths = table.get("package-paths", [])
+    if not isinstance(paths, list) or not all(isinstance(p, str) for p in paths):
+        raise ConfigError(f"{where('package-paths')}: expected a list of NAME=DIR or DIR strings")
+    xacro_args = []
+    for pattern, values in mapping("xacro-args").items():
+        if not isinstance(values, dict) or not all(isinstance(v, (str, int, float, bool)) for v in values.values()):
+            raise ConfigError(f"{where(f'xacro-args.{pattern!r}')}: expected a table of argument values")
+        xacro_args.append((pattern, tuple((k, _xacro_value(v)) for k, v in values.items())))
+    return Config(
+        source=source,
+        root=root,
+        select=select,
+        ignore=_selectors(table.get("ignore", []), where("ignore")),
+        extend_select=_selectors(table.get("extend-select", []), where("extend-select")),
+        per_file_ignores=per_file,
+        severity=tuple(severity),
+        options=tuple(options),
+        package_paths=tuple(_absolute_package_path(p, root) for p in paths),
+        xacro_args=tuple(xacro_args),
+    )
+
+
+def _xacro_value(value: str | int | float | bool) -> str:
+    return str(value).lower() if isinstance(value, bool) else str(value)
+
+
+def _absolute_package_path(entry: str, root: Path) -> str:
+    name, equals, folder = entry.rpartition("=") if "=" in entry else ("", "", entry)
+    absolute = str((root / Path(folder).expanduser()).resolve())
+    return f"{name}={absolute}" if equals else absolute
+
+
+def _read_toml(path: Path) -> dict[str, Any]:
+    try:
+        with path.open("rb") as handle:
+            return tomllib.load(handle)
+    except tomllib.TOMLDecodeError as error:
+        raise ConfigError(f"{path}: not valid TOML: {error}") from None
+    except OSError as error:
+        raise ConfigError(f"{path}: cannot read: {error.strerror}") from None
+
+
+def _table(path: Path) -> dict[str, Any] | None:
+    """The urdfcli table of a config file; None when a pyproject.toml has none."""
+    document = _read_toml(path)
+    if path.name == "pyproject.toml":
+        table = document.get("tool", {}).get("urdfcli")
+        if table is not None and not isinstance(table, dict):
+            raise ConfigError(f"{path}: [tool.urdfcli] must be a table")
+        return table
+    return document
+
+
+@lru_cache(maxsize=None)
+def read(path: Path) -> Config:
+    """The configuration in one file (urdfcli.toml, .urdfcli.toml or pyproject.toml)."""
+    if not path.is_file():
+        raise ConfigError(f"{path}: no such configuration file")
+    table = _table(path)
+    source = f"{path} [tool.urdfcli]" if path.name == "pyproject.toml" else str(path)
+    return parse(table or {}, source, path.resolve().parent)
+
+
+@lru_cache(maxsize=None)
+def _find_in(folder: Path) -> Path | None:
+    for name in CONFIG_NAMES:
+        if (folder / name).is_file():
+            return folder / name
+    pyproject = folder / "pyproject.toml"
+    if pyproject.is_file() and _table(pyproject) is not None:
+        return pyproject
+    return _find_in(folder.parent) if folder.parent != folder else None
+
+
+def discover(file: str) -> Config:
+    """The configuration that applies to a file: the nearest one above it, else the defaults."""
+    start = Path.cwd() if file == "-" else Path(file).resolve().parent
+    found = _find_in(start)
+    return read(found) if found is not None else Config()

@@ -1,0 +1,14 @@
+"""Rules about suppression comments themselves (reported by ``urdfcli lint``)."""
+
+from . import INFO, WARNING, declare, explain
+
+declare("U001", "unused-suppression", INFO, "A `urdfcli: noqa` comment that silences nothing.", explain(
+    "Reports a code in a `<!-- urdfcli: noqa: CODE -->` or `noqa-file` comment when no diagnostic with that code was silenced by it.",
+    "A stale suppression hides the next real problem of that kind on that line, and misleads readers about what is wrong there.",
+    '<!-- urdfcli: noqa: D002 -->\n<link name="base_link"/>',
+    '<link name="base_link"/>'), in_check=False)
+declare("U002", "suppression-code-unknown", WARNING, "A `urdfcli: noqa` comment names a code no rule has.", explain(
+    "Reports a code in a suppression comment that is not the code of any rule.",
+    "The comment silences nothing; the problem it was meant for is still reported, or the code is a typo.",
+    '<!-- urdfcli: noqa: D02 -->\n<link name="base_link">\n  <visual><geometry><box size="1 1 1"/></geometry><metrial/></visual>\n</link>',
+    '<link name="base_link">\n  <visual><geometry><box size="1 1 1"/></geometry><material name="grey"><color rgba="0.5 0.5 0.5 1"/></material></visual>\n</link>'), in_check=False)

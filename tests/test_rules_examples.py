@@ -1,0 +1,61 @@
+"""Every rule's documented Example is flagged with its code; its Use instead is not.
+
+The examples in the documentation are the test table: each is written into a
+small ROS package (``my_robot``, with ``meshes/arm.stl`` and ``urdf/arm.xacro``)
+and linted with every rule selected.
+"""
+
+from __future__ import annotations
+
+import re
+
+import pytest
+
+from urdfcli.config import Config
+from urdfcli.linter import lint_file
+from urdfcli.rules import example_code, load_all
+
+ROBOT_CHILDREN = {"link", "joint", "material", "gazebo", "transmission"}
+RULES = sorted(load_all().values(), key=lambda r: r.code)
+
+
+def first_tag(snippet: str) -> str:
+    without_comments = re.sub(r"<!--.*?-->", "", snippet, flags=re.DOTALL)
+    match = re.search(r"<([A-Za-z_][\w:.-]*)", without_comments)
+    return match.group(1) if match else ""
+
+
+def materialise(snippet: str, package) -> str:
+    """The snippet as a file in the package; fragments are wrapped in a <robot>."""
+    if first_tag(snippet) in ROBOT_CHILDREN:
+        snippet = f'<robot name="example">\n{snippet}\n</robot>\n'
+    name = "example.urdf.xacro" if "xacro:" in snippet else "example.urdf"
+    path = package / "urdf" / name
+    path.write_text(snippet, encoding="utf-8")
+    return str(path)
+
+
+@pytest.fixture
+def package(tmp_path):
+    root = tmp_path / "my_robot"
+    (root / "meshes").mkdir(parents=True)
+    (root / "urdf").mkdir()
+    (root / "package.xml").write_text('<package format="2"><name>my_robot</name></package>\n')
+    (root / "meshes" / "arm.stl").write_text("solid arm\nendsolid arm\n")
+    (root / "urdf" / "arm.xacro").write_text('<robot xmlns:xacro="http://www.ros.org/wiki/xacro"/>\n')
+    return root
+
+
+def codes(path: str) -> list[str]:
+    return [d.code for d in lint_file(path, Config.everything()).diagnostics]
+
+
+@pytest.mark.parametrize("rule", RULES, ids=lambda r: r.code)
+def test_example_is_flagged_and_use_instead_is_clean(rule, package, monkeypatch):
+    monkeypatch.delenv("ROS_PACKAGE_PATH", raising=False)
+    monkeypatch.delenv("AMENT_PREFIX_PATH", raising=False)
+    sections = rule.sections()
+    bad, good = example_code(sections.get("Example", "")), example_code(sections.get("Use instead", ""))
+    assert bad and good, f"{rule.code} needs an xml code block in Example and in Use instead"
+    assert rule.code in codes(materialise(bad, package)), f"{rule.code}'s Example is not flagged"
+    assert rule.code not in codes(materialise(good, package)), f"{rule.code}'s Use instead is flagged"
