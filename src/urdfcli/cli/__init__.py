@@ -62,20 +62,38 @@ for _name, _summary in PLANNED.items():
 
 
 def main() -> None:
-    """Run the app; an internal error is one line, never a bare traceback."""
+    """Run the app; a usage error or an internal error is one line, never a bare traceback."""
+    try:  # typer vendors click from 0.2x on
+        from typer._click.exceptions import ClickException, UsageError
+    except ImportError:
+        from click.exceptions import ClickException, UsageError
+
     try:
-        app(standalone_mode=True)
-    except SystemExit:
-        raise
-    except KeyboardInterrupt:
+        code = app(standalone_mode=False)
+    except UsageError as error:
+        command = error.ctx.command_path if error.ctx is not None else "urdfcli"
+        sys.stderr.write(f"urdfcli: {_one_line(error.format_message())} (see '{command} -h')\n")
+        sys.exit(error.exit_code)
+    except ClickException as error:
+        sys.stderr.write(f"urdfcli: {_one_line(error.format_message())}\n")
+        sys.exit(error.exit_code)
+    except (KeyboardInterrupt, typer.Abort):
         sys.stderr.write("urdfcli: interrupted\n")
         sys.exit(130)
+    except BrokenPipeError:
+        sys.stderr.close()
+        sys.exit(1)
     except Exception as error:  # noqa: BLE001
         if os.environ.get("URDFCLI_DEBUG"):
             raise
         name = " ".join(a for a in sys.argv[1:] if not a.startswith("-"))
         sys.stderr.write(
-            f"urdfcli: internal error ({type(error).__name__}: {error}) on {name or 'the input'}; "
+            f"urdfcli: internal error ({type(error).__name__}: {_one_line(str(error))}) on {name or 'the input'}; "
             "please report this bug with the input file (URDFCLI_DEBUG=1 shows the traceback)\n"
         )
         sys.exit(2)
+    sys.exit(code if isinstance(code, int) else 0)
+
+
+def _one_line(text: str) -> str:
+    return " ".join(text.split())
