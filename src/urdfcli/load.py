@@ -99,7 +99,7 @@ def load_document(
 
 def load(path: str, options: LoadOptions = LoadOptions(), data: bytes | None = None) -> Loaded:
     document, diagnostics = load_document(path, options, data)
-    loaded = Loaded(document, diagnostics=diagnostics)
+    loaded = Loaded(document, diagnostics=diagnostics, resolver=PackageResolver(options.package_paths, document.file))
     if document.root is None:
         return loaded
     robot, found = read(document)

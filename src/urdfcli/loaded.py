@@ -11,6 +11,7 @@ from lxml import etree
 from .diagnostics import Diagnostic, Severity
 from .document import Document
 from .model import Joint, Robot
+from .packages import PackageResolver
 from .rules import rule
 
 
@@ -20,6 +21,7 @@ class Loaded:
     robot: Robot | None = None
     graph: nx.DiGraph | None = None
     diagnostics: list[Diagnostic] = field(default_factory=list)
+    resolver: PackageResolver | None = None  # finds package:// files (meshes) with the run's -P options
 
     @property
     def path(self) -> str:

@@ -151,3 +151,63 @@ def relative_difference(a: Matrix, b: Matrix) -> float:
     if scale == 0:
         return 0.0
     return max(abs(a[i][j] - b[i][j]) for i in range(3) for j in range(3)) / scale
+
+
+def is_identity(m: Matrix) -> bool:
+    """Exactly the identity: the classic copy-pasted placeholder."""
+    return m == ((1.0, 0.0, 0.0), (0.0, 1.0, 0.0), (0.0, 0.0, 1.0))
+
+
+def tidy(m: Matrix, rel_tol: float = 1e-5) -> Matrix:
+    """Zero the elements that are rounding noise next to the largest (e.g. cos(1.5708))."""
+    floor = rel_tol * scale_of(m)
+    return tuple(tuple(0.0 if abs(v) <= floor else v for v in row) for row in m)  # type: ignore[return-value]
+
+
+def scaled(m: Matrix, factor: float) -> Matrix:
+    return tuple(tuple(v * factor for v in row) for row in m)  # type: ignore[return-value]
+
+
+def moments_difference(a: Matrix, b: Matrix) -> float:
+    """Like relative_difference, on the principal moments only (frame-independent)."""
+    pa, pb = principal_moments(a), principal_moments(b)
+    scale = max(max(abs(v) for v in pa), max(abs(v) for v in pb))
+    return 0.0 if scale == 0 else max(abs(x - y) for x, y in zip(pa, pb)) / scale
+
+
+# -- primitive volumes ----------------------------------------------------------------
+def box_volume(size: Vector) -> float:
+    return size[0] * size[1] * size[2]
+
+
+def cylinder_volume(radius: float, length: float) -> float:
+    return math.pi * radius * radius * length
+
+
+def sphere_volume(radius: float) -> float:
+    return 4.0 / 3.0 * math.pi * radius**3
+
+
+# -- rigid transforms (rotation, translation) -------------------------------------------
+Transform = tuple[Matrix, Vector]
+IDENTITY: Matrix = diagonal(1.0, 1.0, 1.0)
+ORIGIN: Transform = (IDENTITY, (0.0, 0.0, 0.0))
+
+
+def transform(xyz: Vector, rpy: Vector) -> Transform:
+    """The pose a URDF ``<origin xyz rpy>`` describes."""
+    return rotation(rpy), tuple(xyz)  # type: ignore[return-value]
+
+
+def compose(a: Transform, b: Transform) -> Transform:
+    """Pose b given in frame a, expressed in a's parent frame."""
+    (ra, ta), (rb, tb) = a, b
+    moved = apply(ra, tb)
+    return multiply(ra, rb), (ta[0] + moved[0], ta[1] + moved[1], ta[2] + moved[2])
+
+
+def place(pose: Transform, point: Vector) -> Vector:
+    """A point of the child frame, in the parent frame."""
+    moved = apply(pose[0], point)
+    return (moved[0] + pose[1][0], moved[1] + pose[1][1], moved[2] + pose[1][2])
+

@@ -11,6 +11,7 @@ import typer
 from .. import __version__
 from .check import check
 from .expand import expand
+from .inertia import inertia
 
 app = typer.Typer(
     name="urdfcli",
@@ -38,6 +39,7 @@ def _main(
 
 app.command(name="expand")(expand)
 app.command(name="check")(check)
+app.command(name="inertia")(inertia)
 
 
 def _planned(name: str, summary: str):
@@ -54,7 +56,6 @@ def _planned(name: str, summary: str):
 PLANNED = {
     "tree": "Print the kinematic tree.",
     "graph": "Draw the link tree as PDF, SVG, PNG or DOT.",
-    "inertia": "Audit mass properties against physics and geometry.",
     "lint": "Check against documented, configurable rules.",
 }
 for _name, _summary in PLANNED.items():

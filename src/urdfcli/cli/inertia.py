@@ -1,0 +1,137 @@
+"""`urdfcli inertia`: audit mass properties against physics and geometry, and print the fix."""
+
+from __future__ import annotations
+
+import json
+import sys
+from typing import Annotated
+
+import typer
+from rich.text import Text
+
+from .. import inertia as audit_module
+from .. import massprops
+from ..diagnostics import Severity
+from ..formatters.text import print_diagnostic
+from ..rules import rule
+from .common import Exit, InputsArgument, PackagePathOption, fail, load_all, stderr, stdout
+
+FORMATS = ("text", "json")
+
+
+def inertia(
+    inputs: InputsArgument,
+    tolerance: Annotated[
+        float,
+        typer.Option(
+            "--tolerance",
+            metavar="FRACTION",
+            help="Flag a tensor whose largest element difference from the geometry's exceeds this fraction of the larger "
+            "tensor's largest element. The default 0.1 catches swapped or unrotated axes and lets values rounded to two digits pass.",
+        ),
+    ] = audit_module.TOLERANCE,
+    suggest: Annotated[bool, typer.Option("--suggest", help="Print a corrected <inertial> block for each flagged link.")] = False,
+    xacro: Annotated[bool, typer.Option("--xacro", help="With --suggest: name the xacro macro that wrote each flagged <inertial>, and the call of it that gives the right values.")] = False,
+    density: Annotated[float | None, typer.Option("--density", metavar="KG_PER_M3", help="Compute masses from the geometry's volume at this density instead of using the declared masses.")] = None,
+    output_format: Annotated[str, typer.Option("--format", "-f", help="text, or json (one object per file; a list of them for several files).", case_sensitive=False)] = "text",
+    package_path: PackagePathOption = None,
+) -> None:
+    """Audit each link's mass, centre of mass and inertia against physics and its geometry.
+
+    Per link: the declared tensor, its principal moments, the tensor the collision
+    shapes (else the visual shapes) imply for the link's mass, and the problems.
+    Then the whole robot at zero joint positions: total mass, centre of mass in the
+    root link's frame, and the inertia about it. Exit 0 when nothing is found, 1 on
+    any warning or error, 2 when it cannot run.
+    """
+    output_format = output_format.lower()
+    if output_format not in FORMATS:
+        raise typer.BadParameter(f"unknown format {output_format!r}; choose from {', '.join(FORMATS)}", param_hint="--format")
+    if not tolerance > 0:
+        raise fail("--tolerance must be a positive fraction, such as 0.1")
+    if density is not None and not density > 0:
+        raise fail("--density must be a positive number of kg/m³")
+    if output_format == "json" and (suggest or xacro):
+        raise fail("--suggest and --xacro print XML; use them with the text format")
+    results, unreadable = load_all(inputs, package_path, checks="none")
+    reports = [audit_module.audit(loaded, tolerance, density) if loaded.robot is not None and loaded.robot.element is not None else None for loaded in results]
+    for loaded in results:
+        for diagnostic in loaded.diagnostics:
+            if diagnostic.severity is Severity.ERROR:
+                print_diagnostic(stderr, diagnostic)
+    if output_format == "json":
+        objects = [audit_module.report_json(r) if r else {"robot": None, "links": [], "total": None} for r in reports]
+        sys.stdout.write(json.dumps(objects[0] if len(objects) == 1 else objects, indent=2) + "\n")
+    else:
+        for loaded, report in zip(results, reports):
+            if report is not None:
+                print_report(report, show_name=len(results) > 1)
+                if suggest or xacro:
+                    print_suggestions(report, density, xacro)
+    problems = sum(len(r.problems) for r in reports if r) + sum(1 for loaded in results for d in loaded.diagnostics if d.severity is Severity.ERROR)
+    if output_format == "text":
+        stderr.print(f"{len(results)} file{'s' if len(results) != 1 else ''} audited: {problems} problem{'s' if problems != 1 else ''}", markup=False, style="bold")
+    if unreadable:
+        raise typer.Exit(Exit.CANNOT_RUN)
+    if problems:
+        raise typer.Exit(Exit.PROBLEMS)
+
+
+def _row(label: str, value: str, style: str = "") -> None:
+    stdout.print(Text(f"    {label:<10} ", style="dim") + Text(value, style=style), soft_wrap=True)
+
+
+def print_report(report: audit_module.Report, show_name: bool) -> None:
+    """The per-link table and the total on stdout; the problems with locations on stderr."""
+    number = audit_module.number
+    loaded = report.loaded
+    title = Text(f"robot '{loaded.robot.name}'", style="bold")
+    if show_name:
+        title.append(f"  ({loaded.document.shown})", style="dim")
+    stdout.print(title, soft_wrap=True)
+    for entry in report.links:
+        link, found = entry.link, entry.assessment
+        if entry.frame and not entry.problems:
+            stdout.print(Text(link.name, style="bold") + Text("  massless frame link", style="dim"), soft_wrap=True)
+            continue
+        inertial = link.inertial
+        header = Text(link.name, style="bold")
+        if inertial is not None and inertial.mass is not None:
+            header.append(f"  mass {number(inertial.mass)}  com {' '.join(map(number, inertial.origin.xyz))}")
+        stdout.print(header, soft_wrap=True)
+        if found is not None:
+            expected = found.expected
+            _row("declared", audit_module.tensor_text(found.declared, expected))
+            _row("principal", " ".join(number(m) for m in massprops.principal_moments(found.declared)))
+            if expected is not None:
+                style = "yellow" if found.off(report.tolerance) else "green"
+                _row("expected", f"{audit_module.tensor_text(expected, found.declared)}  ({found.implied.source}; {found.difference:.1%} apart)", style)
+            else:
+                _row("expected", f"unknown: {found.implied.source}", "dim")
+        if entry.problems:
+            _row("problems", ", ".join(f"{d.code} {rule(d.code).name}" for d in entry.problems), "yellow")
+    for diagnostic in report.problems:
+        print_diagnostic(stderr, diagnostic)
+    body = report.total
+    if body is not None:
+        stdout.print(Text("total", style="bold") + Text(f"  mass {number(body.mass)}  com {' '.join(map(number, body.com))} (in '{loaded.root}' frame, joints at zero)"), soft_wrap=True)
+        _row("inertia", audit_module.tensor_text(body.tensor) + "  about the centre of mass")
+
+
+def print_suggestions(report: audit_module.Report, density: float | None, xacro: bool) -> None:
+    flagged = audit_module.flagged(report)
+    if not flagged:
+        return
+    stdout.print()
+    for entry in flagged:
+        loaded = report.loaded
+        use = audit_module.macro_use(loaded, entry.link) if xacro else None
+        if use is not None:
+            called = f", called at {use.called_at} as {use.call}" if use.call else ""
+            stdout.print(f"<!-- link '{entry.link.name}': its <inertial> comes from xacro macro '{use.name}' ({use.defined_at}){called} -->", markup=False, soft_wrap=True)
+            call = audit_module.matching_call(loaded, entry.link, use) if density is None else None
+            if call is not None:
+                stdout.print(f"<!-- the call that gives the geometry's values: -->\n{call}", markup=False, soft_wrap=True)
+                continue
+            stdout.print(f"<!-- no call of '{use.name}' gives the geometry's values: replace the call with -->", markup=False, soft_wrap=True)
+        stdout.print(audit_module.suggestion(loaded, entry, density), markup=False, soft_wrap=True)

@@ -1,0 +1,513 @@
+"""Mass properties of each link and of the whole robot: declared, and implied by geometry.
+
+The closed-form maths is :mod:`urdfcli.massprops`. Meshes are read with trimesh
+(imported only when a link has a mesh, through urdfcli's package resolver; never
+from a network). The robot's pose at zero joint positions composes the joint
+origins along the tree (every joint type is the identity motion at zero).
+
+Frames: a declared tensor is given in the frame of its ``<inertial><origin>``;
+the *expected* tensor is expressed in that same frame, so the two compare one to one.
+"""
+
+from __future__ import annotations
+
+import functools
+from dataclasses import dataclass
+from pathlib import Path
+
+from lxml import etree
+
+from . import massprops
+from .kinematics import walk
+from .loaded import Loaded
+from .massprops import Matrix, Transform, Vector
+from .model import Link, Shape
+from .packages import PackageResolver
+
+TOLERANCE = 0.1
+"""Default largest relative element difference between declared and expected tensors.
+
+Rounding a tensor to two significant digits moves it by under 5 %; swapping or
+rotating the axes of any body whose moments differ by more than 10 % of the
+largest moves it by more. 0.1 separates the two.
+"""
+
+
+class GeometryUnknown(Exception):
+    """The geometry cannot give mass properties (unreadable mesh, bad size...)."""
+
+
+@dataclass(frozen=True)
+class Body:
+    mass: float
+    com: Vector  # centre of mass
+    tensor: Matrix  # about the centre of mass
+
+
+@dataclass(frozen=True)
+class Implied:
+    """What a link's geometry implies; ``body`` is None when it cannot tell, and ``source`` says why."""
+
+    body: Body | None
+    source: str
+    volume: float | None = None
+    shapes: tuple[Shape, ...] = ()
+
+
+@dataclass(frozen=True)
+class Assessment:
+    """A link's declared tensor next to the one its geometry implies, both in the inertial frame."""
+
+    link: Link
+    declared: Matrix
+    implied: Implied
+    expected: Matrix | None
+    difference: float | None
+
+    def off(self, tolerance: float) -> bool:
+        return self.difference is not None and self.difference > tolerance
+
+
+# -- declared --------------------------------------------------------------------------
+def inertial_rotation(link: Link) -> Matrix:
+    return massprops.rotation(link.inertial.origin.rpy) if link.inertial is not None else massprops.IDENTITY
+
+
+def declared_tensor(link: Link) -> Matrix | None:
+    """The tensor as written, in the inertial frame."""
+    inertial = link.inertial
+    if inertial is None or inertial.inertia is None:
+        return None
+    return massprops.matrix(inertial.inertia)
+
+
+def declared_body(link: Link) -> Body | None:
+    """Mass, centre and tensor as declared, in the link frame."""
+    tensor = declared_tensor(link)
+    if tensor is None or link.inertial.mass is None:
+        return None
+    return Body(link.inertial.mass, link.inertial.origin.xyz, massprops.rotate(tensor, inertial_rotation(link)))
+
+
+def is_frame(link: Link) -> bool:
+    """A massless frame link: no inertial, or mass 0 with a zero (or no) tensor."""
+    inertial = link.inertial
+    if inertial is None:
+        return True
+    tensor = declared_tensor(link)
+    return inertial.mass == 0 and (tensor is None or massprops.is_zero(tensor))
+
+
+# -- implied by geometry ---------------------------------------------------------------
+def resolver_of(loaded: Loaded) -> PackageResolver:
+    return loaded.resolver or PackageResolver((), loaded.document.file)
+
+
+def implied(loaded: Loaded, link: Link, density: float | None = None) -> Implied:
+    """The body the link's collision shapes (else its visual shapes) make, with the
+    declared mass spread by volume, or ``density`` times the volume when given."""
+    kind, shapes = ("collision", link.collisions) if link.collisions else ("visual", link.visuals)
+    shapes = tuple(s for s in shapes if s.geometry is not None)
+    if not shapes:
+        return Implied(None, "no collision or visual geometry")
+    names = ", ".join(s.geometry.kind for s in shapes)
+    source = f"{kind} {names}" if len(shapes) == 1 else f"{kind} shapes ({names})"
+    try:
+        parts = [shape_part(loaded, shape) for shape in shapes]
+    except GeometryUnknown as error:
+        return Implied(None, str(error), shapes=shapes)
+    volume = sum(v for v, _, _ in parts)
+    if volume <= 0:
+        return Implied(None, f"{source} has no volume", shapes=shapes)
+    mass = density * volume if density is not None else (link.inertial.mass if link.inertial else None)
+    if mass is None or mass <= 0:
+        return Implied(None, "no mass to spread over the geometry", volume, shapes)
+    total, com, tensor = massprops.combine(
+        (mass * v / volume, centre, massprops.scaled(unit, mass * v / volume)) for v, centre, unit in parts
+    )
+    return Implied(Body(total, com, tensor), source, volume, shapes)
+
+
+def shape_part(loaded: Loaded, shape: Shape) -> tuple[float, Vector, Matrix]:
+    """Volume, centre (link frame) and tensor per unit mass (link axes) of one shape."""
+    geometry = shape.geometry
+    if geometry.kind == "mesh":
+        path = mesh_path(loaded, geometry.filename)
+        volume, centre, unit = mesh_properties(str(path), tuple(geometry.scale))
+    else:
+        volume, unit = primitive(geometry)
+        centre = (0.0, 0.0, 0.0)
+    pose = massprops.transform(shape.origin.xyz, shape.origin.rpy)
+    return volume, massprops.place(pose, centre), massprops.rotate(unit, pose[0])
+
+
+def primitive(geometry) -> tuple[float, Matrix]:
+    """Volume and tensor per unit mass of a box, cylinder or sphere (SPEC section 6)."""
+    if geometry.kind == "box":
+        dims = geometry.size
+        if min(dims) <= 0:
+            raise GeometryUnknown("box size is not positive")
+        return massprops.box_volume(dims), massprops.box(1.0, dims)
+    if geometry.kind == "cylinder":
+        if geometry.radius <= 0 or geometry.length <= 0:
+            raise GeometryUnknown("cylinder radius or length is not positive")
+        return massprops.cylinder_volume(geometry.radius, geometry.length), massprops.cylinder(1.0, geometry.radius, geometry.length)
+    if geometry.radius <= 0:
+        raise GeometryUnknown("sphere radius is not positive")
+    return massprops.sphere_volume(geometry.radius), massprops.sphere(1.0, geometry.radius)
+
+
+def mesh_path(loaded: Loaded, filename: str) -> Path:
+    base = loaded.document.file.resolve().parent if loaded.document.file else None
+    path = resolver_of(loaded).resolve_uri(filename, base)
+    if path is None:
+        raise GeometryUnknown(f"mesh {filename} cannot be resolved")
+    if not path.is_file():
+        raise GeometryUnknown(f"mesh {filename} not found ({path})")
+    return path
+
+
+@functools.lru_cache(maxsize=256)
+def mesh_properties(path: str, scale: Vector) -> tuple[float, Vector, Matrix]:
+    """Volume, centre and tensor per unit mass of a mesh file, ``scale`` applied.
+
+    A mesh that is not closed has no inside: its convex hull stands in for it."""
+    import numpy
+    import trimesh
+
+    try:
+        mesh = trimesh.load(path, force="mesh")
+    except Exception as error:  # noqa: BLE001  (trimesh raises many kinds)
+        raise GeometryUnknown(f"mesh {Path(path).name} cannot be read: {error}") from None
+    if not isinstance(mesh, trimesh.Trimesh) or mesh.is_empty:
+        raise GeometryUnknown(f"mesh {Path(path).name} has no triangles")
+    if tuple(scale) != (1.0, 1.0, 1.0):
+        mesh.apply_transform(numpy.diag([*scale, 1.0]))
+    if not mesh.is_watertight:
+        mesh = mesh.convex_hull
+    if mesh.volume < 0:
+        mesh.invert()
+    properties = mesh.mass_properties  # density 1: mass equals volume
+    volume = float(properties["volume"])
+    if volume <= 0:
+        raise GeometryUnknown(f"mesh {Path(path).name} has no volume")
+    unit = tuple(tuple(float(v) / volume for v in row) for row in properties["inertia"])
+    return volume, tuple(float(c) for c in properties["center_mass"]), unit  # type: ignore[return-value]
+
+
+# -- comparison ------------------------------------------------------------------------
+def assess(loaded: Loaded, link: Link, density: float | None = None) -> Assessment | None:
+    """Declared against implied, for a link that declares a tensor (None otherwise)."""
+    declared = declared_tensor(link)
+    if declared is None or is_frame(link):
+        return None
+    found = implied(loaded, link, density)
+    if found.body is None:
+        return Assessment(link, declared, found, None, None)
+    back = massprops.transpose(inertial_rotation(link))
+    expected = massprops.tidy(massprops.rotate(found.body.tensor, back))
+    return Assessment(link, declared, found, expected, massprops.relative_difference(declared, expected))
+
+
+def shapes_rotation(shapes: tuple[Shape, ...]) -> Matrix | None:
+    """The rotation every shape shares, or None when they differ."""
+    rotations = [massprops.rotation(s.origin.rpy) for s in shapes]
+    first = rotations[0] if rotations else None
+    if first is None or any(massprops.relative_difference(r, first) > 1e-9 for r in rotations[1:]):
+        return None
+    return first
+
+
+def rotated_fit(assessment: Assessment) -> tuple[Vector, float] | None:
+    """When the geometry is rotated and the inertial frame is not rotated with it:
+    the shapes' rpy, and the difference left if the tensor were read in their frame."""
+    shapes = assessment.implied.shapes
+    shared = shapes_rotation(shapes)
+    inertial = inertial_rotation(assessment.link)
+    if shared is None or massprops.relative_difference(shared, inertial) < 1e-6:
+        return None
+    # the declared tensor read in the shapes' frame, then expressed in the inertial frame
+    in_link = massprops.rotate(assessment.declared, shared)
+    moved = massprops.rotate(in_link, massprops.transpose(inertial))
+    return shapes[0].origin.rpy, massprops.relative_difference(moved, assessment.expected)
+
+
+# -- the whole robot -------------------------------------------------------------------
+def link_poses(loaded: Loaded) -> dict[str, Transform]:
+    """Each link's pose in the root frame at zero joint positions."""
+    root = loaded.root
+    if root is None:
+        return {}
+    poses = {root: massprops.ORIGIN}
+    for _, joint, link in walk(loaded.robot, root):
+        if joint is not None:
+            poses[link] = massprops.compose(poses[joint.parent], massprops.transform(joint.origin.xyz, joint.origin.rpy))
+    return poses
+
+
+def total(loaded: Loaded) -> Body | None:
+    """Mass, centre of mass (root frame) and tensor about it of the declared links."""
+    poses = link_poses(loaded)
+    if not poses:
+        return None
+    parts = []
+    for name, pose in poses.items():
+        body = declared_body(loaded.robot.links[name])
+        if body is not None and body.mass > 0:
+            parts.append((body.mass, massprops.place(pose, body.com), massprops.rotate(body.tensor, pose[0])))
+    mass, com, tensor = massprops.combine(parts)
+    return Body(mass, com, massprops.tidy(tensor))
+
+
+# -- the audit -------------------------------------------------------------------------
+@dataclass(frozen=True)
+class LinkReport:
+    link: Link
+    frame: bool  # a massless frame link: listed quietly
+    assessment: Assessment | None
+    problems: tuple  # Diagnostics located in this link
+
+
+@dataclass(frozen=True)
+class Report:
+    loaded: Loaded
+    links: tuple[LinkReport, ...]
+    total: Body | None
+    problems: tuple  # every mass-property Diagnostic, in file order
+    tolerance: float = TOLERANCE
+
+
+def problems(loaded: Loaded, tolerance: float = TOLERANCE, density: float | None = None) -> list:
+    """Every mass-property rule (codes I...), with this run's options where a rule takes them."""
+    from .rules import load_all
+
+    given = {"tolerance": tolerance, "density": density or 0.0}
+    found = []
+    for code, spec in sorted(load_all().items()):
+        if code.startswith("I") and spec.function is not None:
+            found.extend(spec.run(loaded, {k: v for k, v in given.items() if k in spec.defaults}))
+    return sorted(found, key=lambda d: d.sort_key())
+
+
+def audit(loaded: Loaded, tolerance: float = TOLERANCE, density: float | None = None) -> Report:
+    """The per-link table, the problems and the whole-robot total of one loaded model."""
+    from .document import Document
+
+    found = problems(loaded, tolerance, density)
+    links = []
+    for link in loaded.robot.links.values():
+        prefix = Document.element_path(link.element)
+        mine = tuple(d for d in found if d.element == prefix or (d.element or "").startswith(prefix + "/"))
+        links.append(LinkReport(link, is_frame(link), assess(loaded, link, density), mine))
+    return Report(loaded, tuple(links), total(loaded), tuple(found), tolerance)
+
+
+# -- presenting ------------------------------------------------------------------------
+def number(value: float) -> str:
+    """Six significant digits, never '-0'."""
+    text = f"{value:.6g}"
+    return "0" if text in ("-0", "0") else text
+
+
+def tensor_text(tensor: Matrix, other: Matrix | None = None) -> str:
+    """``ixx=.. iyy=.. izz=..``, with the products of inertia where either tensor has one."""
+    values = massprops.as_dict(tensor)
+    extra = massprops.as_dict(other) if other is not None else values
+    shown = [k for k in massprops.KEYS if k in ("ixx", "iyy", "izz") or values[k] or extra[k]]
+    return " ".join(f"{k}={values[k]:.3g}" for k in shown)
+
+
+def _vector(values) -> list[float]:
+    return [float(v) for v in values]
+
+
+def _tensor(tensor: Matrix | None) -> dict[str, float] | None:
+    return None if tensor is None else {k: float(v) for k, v in massprops.as_dict(tensor).items()}
+
+
+def link_json(entry: LinkReport) -> dict:
+    link, found = entry.link, entry.assessment
+    inertial = link.inertial
+    declared = declared_tensor(link)
+    return {
+        "name": link.name,
+        "mass": inertial.mass if inertial is not None else None,
+        "com": _vector(inertial.origin.xyz) if inertial is not None else None,
+        "inertia": _tensor(declared),
+        "principal": _vector(massprops.principal_moments(declared)) if declared is not None else None,
+        "expected": _tensor(found.expected) if found is not None else None,
+        "expected_from": expected_from(entry),
+        "problems": [{"code": d.code, "severity": d.severity.value, "message": d.message} for d in entry.problems],
+    }
+
+
+def expected_from(entry: LinkReport) -> str:
+    if entry.frame:
+        return "massless frame link"
+    if entry.assessment is None:
+        return "no inertia tensor declared"
+    return entry.assessment.implied.source
+
+
+def report_json(report: Report) -> dict:
+    body = report.total
+    return {
+        "robot": report.loaded.robot.name if report.loaded.robot is not None else None,
+        "links": [link_json(entry) for entry in report.links],
+        "total": None if body is None else {"mass": body.mass, "com": _vector(body.com), "inertia": _tensor(body.tensor)},
+    }
+
+
+FIXABLE = {"I001", "I002", "I003", "I004", "I005", "I006", "I007", "I008", "I009", "I010"}
+
+
+def flagged(report: Report) -> list[LinkReport]:
+    """Links whose <inertial> a corrected block would fix."""
+    return [entry for entry in report.links if any(d.code in FIXABLE for d in entry.problems)]
+
+
+def suggestion(loaded: Loaded, entry: LinkReport, density: float | None = None) -> str:
+    """A ready-to-paste ``<inertial>`` for a link, in the frame of its current one;
+    an XML comment saying why when the geometry cannot tell."""
+    link = entry.link
+    found = implied(loaded, link, density)
+    if found.body is None:
+        why = found.source if link.inertial is not None or density else "it declares no mass (give --density)"
+        return f"<!-- link '{link.name}': no suggestion: {why} -->"
+    rpy = link.inertial.origin.rpy if link.inertial is not None else (0.0, 0.0, 0.0)
+    tensor = massprops.tidy(massprops.rotate(found.body.tensor, massprops.transpose(massprops.rotation(rpy))))
+    values = massprops.as_dict(tensor)
+    return "\n".join(
+        [
+            f"<!-- link '{link.name}': from its {found.source} -->",
+            "<inertial>",
+            f'  <origin xyz="{" ".join(map(number, found.body.com))}" rpy="{" ".join(map(number, rpy))}"/>',
+            f'  <mass value="{number(found.body.mass)}"/>',
+            "  <inertia " + " ".join(f'{k}="{number(values[k])}"' for k in massprops.KEYS) + "/>",
+            "</inertial>",
+        ]
+    )
+
+
+# -- xacro macros ----------------------------------------------------------------------
+@dataclass(frozen=True)
+class MacroUse:
+    """The xacro macro whose body wrote a link's <inertial>, and the call that used it."""
+
+    name: str
+    params: str
+    defined_at: str  # FILE:LINE
+    call: str | None  # the call as written, e.g. <xacro:box_inertia m="${mass}" .../>
+    called_at: str | None
+
+
+@functools.lru_cache(maxsize=64)
+def _source_tree(file: str):
+    from .xmlsafe import XmlError, parse_bytes
+
+    try:
+        return parse_bytes(Path(file).read_bytes())
+    except (OSError, XmlError):
+        return None
+
+
+def _written(file: str, line: int, tag: str):
+    """The element of that tag written at file:line, in the xacro source."""
+    root = _source_tree(file)
+    if root is None:
+        return None
+    return next((e for e in root.iter(etree.Element) if e.sourceline == line and etree.QName(e).localname == tag), None)
+
+
+def _is_xacro(element, name: str) -> bool:
+    from .load import XACRO_NAMESPACES
+
+    qname = etree.QName(element)
+    return qname.namespace in XACRO_NAMESPACES and qname.localname == name
+
+
+def macro_use(loaded: Loaded, link: Link) -> MacroUse | None:
+    """Which xacro macro produced the link's <inertial> (None when it was written in place)."""
+    if link.inertial is None or loaded.document.origins is None:
+        return None
+    where = loaded.document.locate(link.inertial.element)
+    written = _written(where.file, where.line, "inertial") if where.line and not where.expanded else None
+    macro = next((a for a in written.iterancestors() if _is_xacro(a, "macro")), None) if written is not None else None
+    if macro is None:
+        return None
+    name = macro.get("name", "")
+    call, called_at = None, None
+    link_where = loaded.document.locate(link.element)
+    source_link = _written(link_where.file, link_where.line, "link") if link_where.line and not link_where.expanded else None
+    if source_link is not None:
+        found = next((e for e in source_link.iter(etree.Element) if _is_xacro(e, name)), None)
+        if found is not None:
+            attributes = " ".join(f'{k}="{v}"' for k, v in found.attrib.items())
+            call, called_at = f"<xacro:{name} {attributes}/>", f"{link_where.file}:{found.sourceline}"
+    return MacroUse(name, macro.get("params", ""), f"{where.file}:{macro.sourceline}", call, called_at)
+
+
+def _macro_element(use: MacroUse):
+    file, _, line = use.defined_at.rpartition(":")
+    return _written(file, int(line), "macro")
+
+
+def _dimensions(geometry) -> tuple[float, ...]:
+    if geometry.kind == "box":
+        return tuple(geometry.size)
+    if geometry.kind == "cylinder":
+        return geometry.radius, geometry.length
+    return (geometry.radius,)
+
+
+def matching_call(loaded: Loaded, link: Link, use: MacroUse) -> str | None:
+    """A call of the macro that writes the tensor the link's geometry implies, found by
+    expanding the macro with the mass and each ordering of the shape's dimensions;
+    None when no call does (e.g. the macro cannot rotate its tensor with the shape)."""
+    import itertools
+
+    from . import expansion
+    from .xmlsafe import parse_bytes
+
+    found = implied(loaded, link)
+    macro = _macro_element(use)
+    if found.body is None or len(found.shapes) != 1 or found.shapes[0].geometry.kind == "mesh" or macro is None:
+        return None
+    required = [p.lstrip("^") for p in use.params.split() if not p.startswith("*") and ":=" not in p and "=" not in p]
+    masses = [p for p in required if p.lower() in ("m", "mass") or "mass" in p.lower()]
+    others = [p for p in required if p not in masses]
+    dimensions = _dimensions(found.shapes[0].geometry)
+    if len(masses) != 1 or len(others) != len(dimensions):
+        return None
+    calls = []
+    for order in dict.fromkeys(itertools.permutations(dimensions)):
+        values = {masses[0]: found.body.mass, **dict(zip(others, order))}
+        calls.append(f"<xacro:{use.name} " + " ".join(f'{k}="{number(v)}"' for k, v in values.items()) + "/>")
+    namespace = etree.QName(macro).namespace
+    probe = f'<robot name="probe" xmlns:xacro="{namespace}">{etree.tostring(macro, encoding="unicode", with_tail=False)}'
+    probe += "".join(f'<link name="c{i}">{call}</link>' for i, call in enumerate(calls)) + "</robot>"
+    try:
+        text = expansion.expand(parse_bytes(probe.encode()), None, {}, resolver_of(loaded)).text
+        links = parse_bytes(text.encode()).findall("link")
+    except Exception:  # noqa: BLE001  (a macro that needs more than its parameters)
+        return None
+    for call, probe_link in zip(calls, links):
+        tensor = _probe_tensor(probe_link)
+        if tensor is not None and massprops.relative_difference(tensor, found.body.tensor) <= 1e-3:
+            return call
+    return None
+
+
+def _probe_tensor(link) -> Matrix | None:
+    """The link-frame tensor of an expanded probe link's <inertial>."""
+    from .model import INERTIA_KEYS
+    from .numbers import NumberError, parse_double, parse_vector
+
+    try:
+        inertia = link.find("inertial/inertia")
+        values = {k: parse_double(inertia.get(k)) for k in INERTIA_KEYS}
+        origin = link.find("inertial/origin")
+        rpy = parse_vector(origin.get("rpy", "0 0 0")) if origin is not None else (0.0, 0.0, 0.0)
+    except (AttributeError, TypeError, NumberError, ValueError):
+        return None
+    return massprops.rotate(massprops.matrix(values), massprops.rotation(rpy))
