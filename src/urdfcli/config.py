@@ -69,11 +69,11 @@ class Config:
         where = "on the command line"
         changes: dict[str, Any] = {}
         if select:
-            changes["select"] = _selectors(select, where)
+            changes["select"] = _selectors(",".join(select), where)
         if ignore:
-            changes["ignore"] = self.ignore + _selectors(ignore, where)
+            changes["ignore"] = self.ignore + _selectors(",".join(ignore), where)
         if extend_select:
-            changes["extend_select"] = self.extend_select + _selectors(extend_select, where)
+            changes["extend_select"] = self.extend_select + _selectors(",".join(extend_select), where)
         return replace(self, **changes)
 
     # -- questions asked while linting -----------------------------------------

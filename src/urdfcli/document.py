@@ -105,6 +105,12 @@ def _source_lines(file: str) -> list[str]:
     return _LINES[file]
 
 
+def source_line(file: str, line: int) -> str | None:
+    """One line of a source file (1-based), or None when there is no such line."""
+    lines = _source_lines(file)
+    return lines[line - 1] if 0 < line <= len(lines) else None
+
+
 def source_column(file: str, line: int | None, tag: str, occurrence: int) -> int | None:
     """1-based column of the occurrence-th ``<tag`` on a source line."""
     if not line or occurrence < 1:

@@ -11,6 +11,8 @@ import typer
 from .. import __version__
 from .check import check
 from .expand import expand
+from .lint import lint
+from .rules import rule, rules
 from .inertia import inertia
 
 app = typer.Typer(
@@ -39,6 +41,9 @@ def _main(
 
 app.command(name="expand")(expand)
 app.command(name="check")(check)
+app.command(name="lint")(lint)
+app.command(name="rules")(rules)
+app.command(name="rule")(rule)
 app.command(name="inertia")(inertia)
 
 
@@ -56,7 +61,6 @@ def _planned(name: str, summary: str):
 PLANNED = {
     "tree": "Print the kinematic tree.",
     "graph": "Draw the link tree as PDF, SVG, PNG or DOT.",
-    "lint": "Check against documented, configurable rules.",
 }
 for _name, _summary in PLANNED.items():
     app.command(name=_name, context_settings={"allow_extra_args": True, "ignore_unknown_options": True})(_planned(_name, _summary))

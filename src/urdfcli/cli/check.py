@@ -48,7 +48,8 @@ def check(
         raise typer.Exit(Exit.PROBLEMS)
 
 
-def emit(results, output_format: str) -> None:
+def emit(results, output_format: str, tree: bool = True) -> None:
+    """Write the results in one format; ``tree`` adds check's kinematic tree to the text format."""
     if output_format == "json":
         sys.stdout.write(json_format.render(results) + "\n")
     elif output_format == "sarif":
@@ -73,9 +74,10 @@ def emit(results, output_format: str) -> None:
                 sys.stdout.write("".join(line + "\n" for line in check_urdf.tree_lines(loaded)))
     else:
         for loaded in results:
-            if len(results) > 1:
-                stdout.print(f"==> {loaded.document.shown} <==", style="bold", markup=False)
-            print_tree(stdout, loaded)
+            if tree:
+                if len(results) > 1:
+                    stdout.print(f"==> {loaded.document.shown} <==", style="bold", markup=False)
+                print_tree(stdout, loaded)
             for diagnostic in loaded.diagnostics:
-                print_diagnostic(stderr, diagnostic)
+                print_diagnostic(stderr, diagnostic, excerpt=True)
         stderr.print(summary_line(results), markup=False, style="bold")

@@ -6,6 +6,7 @@ from rich.console import Console
 from rich.text import Text
 
 from ..diagnostics import Diagnostic
+from ..document import source_line
 from ..loaded import Loaded
 from . import plain_line, position
 from .check_urdf import tree_lines
@@ -14,7 +15,12 @@ STYLES = {"error": "bold red", "warning": "yellow", "info": "cyan"}
 
 
 def print_tree(console: Console, loaded: Loaded) -> None:
-    for line in tree_lines(loaded):
+    lines = tree_lines(loaded)
+    if not console.is_terminal and not console.color_system:
+        # Without colour there is nothing for rich to do, and it is slow on big trees.
+        console.file.write("".join(line + "\n" for line in lines))
+        return
+    for line in lines:
         text = Text(line)
         if line.startswith("robot name is: "):
             text.stylize("bold", 15)
@@ -25,7 +31,8 @@ def print_tree(console: Console, loaded: Loaded) -> None:
         console.print(text, soft_wrap=True, highlight=False)
 
 
-def print_diagnostic(console: Console, diagnostic: Diagnostic) -> None:
+def print_diagnostic(console: Console, diagnostic: Diagnostic, excerpt: bool = False) -> None:
+    """``PATH:LINE:COL: CODE severity: message``, its hint, and (with ``excerpt``) the source line."""
     if not console.is_terminal and not console.color_system:
         console.print(Text(plain_line(diagnostic)), soft_wrap=True, highlight=False)
     else:
@@ -40,3 +47,23 @@ def print_diagnostic(console: Console, diagnostic: Diagnostic) -> None:
         console.print(text, soft_wrap=True, highlight=False)
     if diagnostic.hint:
         console.print(Text("    hint: " + diagnostic.hint, style="dim"), soft_wrap=True, highlight=False)
+    if excerpt:
+        for line in excerpt_lines(diagnostic):
+            console.print(Text(line, style="dim"), soft_wrap=True, highlight=False)
+
+
+def excerpt_lines(diagnostic: Diagnostic, width: int = 160) -> list[str]:
+    """The diagnostic's source line, numbered, with a caret under its column."""
+    location = diagnostic.location
+    if location.expanded or not location.line:
+        return []
+    text = source_line(location.file, location.line)
+    if text is None:
+        return []
+    text = text.replace("\t", " ").rstrip()
+    shown = text if len(text) <= width else text[: width - 3] + "..."
+    width = max(4, len(str(location.line)))
+    lines = [f"  {location.line:>{width}} | {shown}"]
+    if location.column and location.column <= len(shown):
+        lines.append(f"  {'':>{width}} | {' ' * (location.column - 1)}^")
+    return lines

@@ -1,0 +1,134 @@
+"""`urdfcli lint`: every documented rule, with project configuration and suppressions."""
+
+from __future__ import annotations
+
+import contextlib
+import time
+from concurrent.futures import ProcessPoolExecutor
+from pathlib import Path
+from typing import Annotated
+
+import typer
+
+from ..config import Config, ConfigError, discover, read
+from ..diagnostics import Severity
+from ..formatters import resolve
+from ..linter import Job, Linted, run_job
+from ..load import STDIN
+from ..packages import SKIP_DIRS
+from .check import emit
+from .common import Exit, PackagePathOption, fail, split_inputs, stderr
+
+LINT_FORMATS = ("auto", "text", "concise", "json", "sarif", "github")
+MODEL_SUFFIXES = (".urdf", ".urdf.xacro")
+PROGRESS_AFTER = 1.0  # seconds: a run this long shows a progress bar on a terminal
+
+
+
+def lint(
+    inputs: Annotated[
+        list[str],
+        typer.Argument(
+            metavar="PATH... [NAME:=VALUE]...",
+            help="Files, or folders to search for *.urdf and *.urdf.xacro ('-' reads standard input); NAME:=VALUE sets a xacro argument.",
+            show_default=False,
+        ),
+    ],
+    output_format: Annotated[str, typer.Option("--format", "-f", help="auto (text, or github under GitHub Actions), text, concise, json, sarif or github.", case_sensitive=False)] = "auto",
+    select: Annotated[list[str] | None, typer.Option("--select", metavar="CODES", help="Only these rule codes or prefixes (comma-separated; replaces the configuration's select). ALL selects every rule.", show_default=False)] = None,
+    ignore: Annotated[list[str] | None, typer.Option("--ignore", metavar="CODES", help="Also ignore these codes or prefixes.", show_default=False)] = None,
+    extend_select: Annotated[list[str] | None, typer.Option("--extend-select", metavar="CODES", help="Also select these codes or prefixes (e.g. S for the style rules).", show_default=False)] = None,
+    config: Annotated[Path | None, typer.Option("--config", help="Use this urdfcli.toml or pyproject.toml instead of the nearest one.", show_default=False)] = None,
+    exit_zero: Annotated[bool, typer.Option("--exit-zero", help="Exit 0 even when problems remain (2 still means it could not run).")] = False,
+    jobs: Annotated[int, typer.Option("--jobs", "-j", min=0, help="Lint files in N processes (0: one per CPU); the output order does not change.")] = 1,
+    package_path: PackagePathOption = None,
+) -> None:
+    """Lint URDF/xacro files against documented, configurable rules.
+
+    Configuration comes from [tool.urdfcli] in the nearest pyproject.toml, or
+    urdfcli.toml; `urdfcli rules` lists the rules. Exit 0 when nothing remains,
+    1 when a warning or error remains, 2 when it cannot run.
+    """
+    if output_format not in LINT_FORMATS:
+        raise fail(f"unknown format {output_format!r}; choose from {', '.join(LINT_FORMATS)}")
+    paths, mappings = split_inputs(inputs)
+    files = expand_paths(paths)
+    try:
+        work = [Job(f, config_for(f, config).overridden(select, ignore, extend_select), tuple(package_path or ()), tuple(mappings.items())) for f in files]
+    except ConfigError as error:
+        raise fail(str(error)) from None
+    outcomes = run(work, jobs)
+    results: list[Linted] = []
+    unreadable = False
+    for outcome in outcomes:
+        if isinstance(outcome, str):
+            stderr.print(f"urdfcli: {outcome}", markup=False)
+            unreadable = True
+        else:
+            results.append(outcome)
+    emit(results, resolve(output_format), tree=False)
+    if unreadable:
+        raise typer.Exit(Exit.CANNOT_RUN)
+    if not exit_zero and any(d.severity.rank >= Severity.WARNING.rank for r in results for d in r.diagnostics):
+        raise typer.Exit(Exit.PROBLEMS)
+
+
+def expand_paths(paths: list[str]) -> list[str]:
+    """Files as given; folders searched (sorted) for *.urdf and *.urdf.xacro."""
+    files: list[str] = []
+    for path in paths:
+        folder = Path(path)
+        if path != STDIN and folder.is_dir():
+            found = models_in(folder)
+            if not found:
+                raise fail(f"{path}: no *.urdf or *.urdf.xacro file in this folder")
+            files.extend(str(f) for f in found)
+        else:
+            files.append(path)
+    return files
+
+
+def models_in(folder: Path) -> list[Path]:
+    """Robot models below a folder, skipping hidden and build folders. Plain *.xacro
+    files are macro libraries: they are linted through the models that include them."""
+    found = []
+    stack = [folder]
+    while stack:
+        current = stack.pop()
+        try:
+            entries = sorted(current.iterdir())
+        except OSError:
+            continue
+        for entry in entries:
+            if entry.is_dir():
+                if not entry.name.startswith(".") and entry.name not in SKIP_DIRS:
+                    stack.append(entry)
+            elif entry.name.endswith(MODEL_SUFFIXES):
+                found.append(entry)
+    return sorted(found)
+
+
+def config_for(file: str, explicit: Path | None) -> Config:
+    return read(explicit) if explicit is not None else discover(file)
+
+
+def run(work: list[Job], jobs: int) -> list:
+    """Each job's result, in order; in processes when asked, with a progress bar on long runs."""
+    parallel = (jobs == 0 or jobs > 1) and len(work) > 1 and not any(job.path == STDIN for job in work)
+    pool = ProcessPoolExecutor(max_workers=jobs or None) if parallel else contextlib.nullcontext()
+    outcomes = []
+    start, progress, task = time.monotonic(), None, None
+    with pool:
+        for done, outcome in enumerate(pool.map(run_job, work) if parallel else map(run_job, work), 1):
+            outcomes.append(outcome)
+            if progress is None and stderr.is_terminal and done < len(work) and time.monotonic() - start > PROGRESS_AFTER:
+                from rich.progress import Progress
+
+                progress = Progress(console=stderr, transient=True)
+                progress.start()
+                task = progress.add_task("linting", total=len(work))
+            if progress is not None:
+                progress.update(task, completed=done)
+    if progress is not None:
+        progress.stop()
+    return outcomes

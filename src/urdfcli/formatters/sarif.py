@@ -1,0 +1,78 @@
+"""SARIF 2.1.0, for code-scanning services (GitHub, GitLab, Azure DevOps).
+
+One run; ``tool.driver.rules`` lists every rule of the registry with its
+documentation; each result names its rule by id and index, its level, and a
+region whose ``startLine`` is the diagnostic's line (1 when it has none).
+"""
+
+from __future__ import annotations
+
+import json
+from pathlib import Path
+
+from .. import __version__
+from ..diagnostics import Diagnostic
+from ..rules import Rule, load_all
+
+SCHEMA = "https://json.schemastore.org/sarif-2.1.0.json"
+LEVELS = {"error": "error", "warning": "warning", "info": "note"}
+
+
+def rule_descriptor(rule: Rule) -> dict:
+    return {
+        "id": rule.code,
+        "name": rule.name,
+        "shortDescription": {"text": rule.summary},
+        "fullDescription": {"text": rule.sections().get("What it does", rule.summary)},
+        "help": {"text": rule.doc, "markdown": rule.doc},
+        "defaultConfiguration": {"level": LEVELS[rule.severity.value], "enabled": rule.default},
+        "properties": {"tags": ["urdf"]},
+    }
+
+
+def artifact_uri(file: str) -> str:
+    path = Path(file)
+    return path.as_uri() if path.is_absolute() else path.as_posix()
+
+
+def result(diagnostic: Diagnostic, index: dict[str, int]) -> dict:
+    location = diagnostic.location
+    region = {"startLine": location.line or 1}
+    if location.column:
+        region["startColumn"] = location.column
+    message = diagnostic.message + (f"\nhint: {diagnostic.hint}" if diagnostic.hint else "")
+    physical = {"artifactLocation": {"uri": artifact_uri(location.file)}, "region": region}
+    found = {
+        "ruleId": diagnostic.code,
+        "level": LEVELS[diagnostic.severity.value],
+        "message": {"text": message},
+        "locations": [{"physicalLocation": physical}],
+    }
+    if diagnostic.code in index:
+        found["ruleIndex"] = index[diagnostic.code]
+    if diagnostic.element:
+        found["locations"][0]["logicalLocations"] = [{"fullyQualifiedName": diagnostic.element, "kind": "element"}]
+    return found
+
+
+def render(results) -> str:
+    rules = sorted(load_all().values(), key=lambda r: r.code)
+    index = {rule.code: i for i, rule in enumerate(rules)}
+    document = {
+        "$schema": SCHEMA,
+        "version": "2.1.0",
+        "runs": [
+            {
+                "tool": {
+                    "driver": {
+                        "name": "urdfcli",
+                        "version": __version__,
+                        "rules": [rule_descriptor(rule) for rule in rules],
+                    }
+                },
+                "results": [result(d, index) for loaded in results for d in loaded.diagnostics],
+                "columnKind": "unicodeCodePoints",
+            }
+        ],
+    }
+    return json.dumps(document, indent=2, ensure_ascii=False)
