@@ -31,7 +31,7 @@ def inertia(
         ),
     ] = audit_module.TOLERANCE,
     suggest: Annotated[bool, typer.Option("--suggest", help="Print a corrected <inertial> block for each flagged link.")] = False,
-    xacro: Annotated[bool, typer.Option("--xacro", help="With --suggest: name the xacro macro that wrote each flagged <inertial>, and the call of it that gives the right values.")] = False,
+    xacro: Annotated[bool, typer.Option("--xacro", help="Implies --suggest: name the xacro macro that wrote each flagged <inertial>, and print the call of it that gives the right values.")] = False,
     density: Annotated[float | None, typer.Option("--density", metavar="KG_PER_M3", help="Compute masses from the geometry's volume at this density instead of using the declared masses.")] = None,
     output_format: Annotated[str, typer.Option("--format", "-f", help="text, or json (one object per file; a list of them for several files).", case_sensitive=False)] = "text",
     package_path: PackagePathOption = None,

@@ -33,6 +33,14 @@ def _assess(loaded, link, options):
     return inertia.assess(loaded, link, options.get("density") or None)
 
 
+def _off_geometry(loaded, options):
+    """(link, assessment, rotated fit) for each link whose tensor is off its geometry's."""
+    for link in _declaring(loaded):
+        found = _assess(loaded, link, options)
+        if found is not None and found.off(options["tolerance"]):
+            yield link, found, inertia.rotated_fit(found)
+
+
 def _implies(found) -> str | None:
     return f"its {found.implied.source} implies {inertia.tensor_text(found.expected)}" if found and found.expected else None
 
@@ -178,11 +186,7 @@ def geometry_mismatch(loaded, options):
     ```
     """
     tolerance = options["tolerance"]
-    for link in _declaring(loaded):
-        found = _assess(loaded, link, options)
-        if found is None or not found.off(tolerance):
-            continue
-        rotated = inertia.rotated_fit(found)
+    for link, found, rotated in _off_geometry(loaded, options):
         if rotated is not None and rotated[1] <= tolerance:
             continue  # I010 explains it
         hints = ["`urdfcli inertia --suggest` prints the corrected <inertial>"]
@@ -242,11 +246,7 @@ def frame_rotated(loaded, options):
     ```
     """
     tolerance = options["tolerance"]
-    for link in _declaring(loaded):
-        found = _assess(loaded, link, options)
-        if found is None or not found.off(tolerance):
-            continue
-        rotated = inertia.rotated_fit(found)
+    for link, found, rotated in _off_geometry(loaded, options):
         if rotated is None or (rotated[1] > tolerance and rotated[1] > found.difference / 2):
             continue
         rpy = " ".join(f"{a:.6g}" for a in rotated[0])

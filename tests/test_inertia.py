@@ -1,0 +1,458 @@
+"""`urdfcli inertia`: geometry-implied tensors, the seeds' inertia mistakes, totals, fixes."""
+
+from __future__ import annotations
+
+import json
+import math
+import re
+import shutil
+
+import numpy
+import pytest
+from lxml import etree
+
+from conftest import FIXTURES, run_cli
+from urdfcli import inertia, massprops
+from urdfcli.load import LoadOptions, load
+
+CAR = FIXTURES / "urdf02_gazebo/urdf/broken_rotated_box_inertia_car.urdf.xacro"
+HELLOWORLD = FIXTURES / "urdf02_gazebo/urdf/broken_invalid_inertia_helloworld.urdf"
+MOBILE = FIXTURES / "seed000/my_mobile_robot.urdf"
+CRANE = FIXTURES / "seed001/broken_inertia_crane.urdf"
+JTBOT = FIXTURES / "seed003/jtbot.urdf"
+JTBOT_XACRO = FIXTURES / "seed003/jtbot.urdf.xacro"
+
+# A small, correct rover: a massless root, a box body, wheels rotated both ways
+# (inertial rpy, or values already rotated), an offset mast, a massless frame.
+ROVER = """<robot name="rover">
+  <link name="base_footprint"/>
+  <joint name="base_joint" type="fixed">
+    <parent link="base_footprint"/><child link="base_link"/><origin xyz="0 0 0.1"/>
+  </joint>
+  <link name="base_link">
+    <visual><geometry><box size="0.4 0.3 0.1"/></geometry></visual>
+    <collision><geometry><box size="0.4 0.3 0.1"/></geometry></collision>
+    <inertial><mass value="2"/><inertia ixx="0.0166667" ixy="0" ixz="0" iyy="0.0283333" iyz="0" izz="0.0416667"/></inertial>
+  </link>
+  <link name="left_wheel">
+    <collision><origin rpy="1.5708 0 0"/><geometry><cylinder radius="0.05" length="0.02"/></geometry></collision>
+    <inertial>
+      <origin rpy="1.5708 0 0"/><mass value="0.5"/>
+      <inertia ixx="0.000329167" ixy="0" ixz="0" iyy="0.000329167" iyz="0" izz="0.000625"/>
+    </inertial>
+  </link>
+  <joint name="left_wheel_joint" type="continuous">
+    <parent link="base_link"/><child link="left_wheel"/><origin xyz="0 0.16 0"/><axis xyz="0 1 0"/>
+  </joint>
+  <link name="right_wheel">
+    <collision><origin rpy="1.5708 0 0"/><geometry><cylinder radius="0.05" length="0.02"/></geometry></collision>
+    <inertial><mass value="0.5"/><inertia ixx="0.000329167" ixy="0" ixz="0" iyy="0.000625" iyz="0" izz="0.000329167"/></inertial>
+  </link>
+  <joint name="right_wheel_joint" type="continuous">
+    <parent link="base_link"/><child link="right_wheel"/><origin xyz="0 -0.16 0"/><axis xyz="0 1 0"/>
+  </joint>
+  <link name="mast">
+    <collision><origin xyz="0 0 0.25"/><geometry><box size="0.05 0.05 0.5"/></geometry></collision>
+    <inertial>
+      <origin xyz="0 0 0.25"/><mass value="1"/>
+      <inertia ixx="0.0210417" ixy="0" ixz="0" iyy="0.0210417" iyz="0" izz="0.000416667"/>
+    </inertial>
+  </link>
+  <joint name="mast_joint" type="fixed">
+    <parent link="base_link"/><child link="mast"/><origin xyz="-0.1 0 0.05" rpy="0 0 0.3"/>
+  </joint>
+  <link name="camera_optical_frame">
+    <inertial><mass value="0"/><inertia ixx="0" ixy="0" ixz="0" iyy="0" iyz="0" izz="0"/></inertial>
+  </link>
+  <joint name="camera_joint" type="fixed">
+    <parent link="mast"/><child link="camera_optical_frame"/><origin xyz="0 0 0.5" rpy="-1.5708 0 -1.5708"/>
+  </joint>
+</robot>
+"""
+
+
+def audited(path, **kwargs) -> inertia.Report:
+    return inertia.audit(load(str(path), LoadOptions(checks="none")), **kwargs)
+
+
+def codes_by_link(report: inertia.Report) -> dict[str, set[str]]:
+    return {entry.link.name: {d.code for d in entry.problems} for entry in report.links}
+
+
+def one_link(tmp_path, body: str, mass: float = 1.0, name: str = "model.urdf") -> inertia.Implied:
+    """What the geometry of a single link implies for the given mass."""
+    path = tmp_path / name
+    path.write_text(
+        f'<robot name="r"><link name="l">{body}<inertial><mass value="{mass}"/>'
+        '<inertia ixx="1" ixy="0" ixz="0" iyy="1" iyz="0" izz="1"/></inertial></link></robot>'
+    )
+    loaded = load(str(path), LoadOptions(checks="none"))
+    return inertia.implied(loaded, loaded.robot.links["l"])
+
+
+def close(a, b, rel=1e-9, abs_=1e-15):
+    assert numpy.allclose(numpy.array(a, dtype=float), numpy.array(b, dtype=float), rtol=rel, atol=abs_), (a, b)
+
+
+# -- geometry-implied tensors ------------------------------------------------------------
+def test_primitives_in_closed_form(tmp_path):
+    close(one_link(tmp_path, '<collision><geometry><box size="0.5 0.3 0.1"/></geometry></collision>', 2).body.tensor, massprops.box(2, (0.5, 0.3, 0.1)))
+    close(one_link(tmp_path, '<collision><geometry><cylinder radius="0.05" length="0.02"/></geometry></collision>', 0.5).body.tensor, massprops.cylinder(0.5, 0.05, 0.02))
+    close(one_link(tmp_path, '<collision><geometry><sphere radius="0.2"/></geometry></collision>', 3).body.tensor, massprops.sphere(3, 0.2))
+
+
+def test_collision_shapes_win_over_visual_shapes(tmp_path):
+    found = one_link(tmp_path, '<visual><geometry><sphere radius="1"/></geometry></visual><collision><geometry><box size="1 2 3"/></geometry></collision>')
+    assert found.source == "collision box"
+    close(found.body.tensor, massprops.box(1, (1, 2, 3)))
+    found = one_link(tmp_path, '<visual><geometry><sphere radius="1"/></geometry></visual>')
+    assert found.source == "visual sphere"
+
+
+def test_rotated_geometry(tmp_path):
+    found = one_link(tmp_path, '<collision><origin rpy="0 0 1.5707963267948966"/><geometry><box size="0.4 0.2 0.1"/></geometry></collision>')
+    close(massprops.tidy(found.body.tensor), massprops.box(1, (0.2, 0.4, 0.1)))
+    found = one_link(tmp_path, '<collision><origin rpy="0.3 -0.7 1.1"/><geometry><box size="0.4 0.2 0.1"/></geometry></collision>')
+    r = numpy.array(massprops.rotation((0.3, -0.7, 1.1)))
+    close(found.body.tensor, r @ numpy.array(massprops.box(1, (0.4, 0.2, 0.1))) @ r.T)
+
+
+def test_offset_shape_moves_the_centre_not_the_tensor(tmp_path):
+    found = one_link(tmp_path, '<collision><origin xyz="0.1 -0.2 0.3"/><geometry><box size="0.4 0.2 0.1"/></geometry></collision>')
+    close(found.body.com, (0.1, -0.2, 0.3))
+    close(found.body.tensor, massprops.box(1, (0.4, 0.2, 0.1)))
+
+
+def test_several_shapes_compose_by_volume_with_the_parallel_axis_theorem(tmp_path):
+    halves = "".join(
+        f'<collision><origin xyz="{x} 0 0"/><geometry><box size="0.5 1 2"/></geometry></collision>' for x in (-0.25, 0.25)
+    )
+    found = one_link(tmp_path, halves, 4)
+    assert found.source == "collision shapes (box, box)"
+    close(found.body.com, (0, 0, 0))
+    close(found.body.tensor, massprops.box(4, (1, 1, 2)))
+    # unequal volumes: the mass is spread by volume
+    found = one_link(tmp_path, '<collision><geometry><box size="1 1 1"/></geometry></collision>'
+                     '<collision><origin xyz="2 0 0"/><geometry><box size="3 1 1"/></geometry></collision>', 4)
+    close(found.body.com, (1.5, 0, 0))
+
+
+def write_mesh(mesh, folder, name):
+    folder.mkdir(parents=True, exist_ok=True)
+    mesh.export(str(folder / name))
+    return folder / name
+
+
+def test_box_mesh_matches_the_closed_form_with_scale_applied(tmp_path):
+    import trimesh
+
+    write_mesh(trimesh.creation.box(extents=(0.4, 0.3, 0.1)), tmp_path / "meshes", "body.stl")
+    found = one_link(tmp_path, '<collision><geometry><mesh filename="meshes/body.stl" scale="2 1 0.5"/></geometry></collision>', 2)
+    assert found.source == "collision mesh"
+    assert found.volume == pytest.approx(0.8 * 0.3 * 0.05, rel=1e-6)
+    close(found.body.com, (0, 0, 0), abs_=1e-12)
+    close(found.body.tensor, massprops.box(2, (0.8, 0.3, 0.05)), rel=1e-6, abs_=1e-12)  # STL stores float32
+
+
+def test_cylinder_mesh_through_a_package_uri_matches_the_closed_form(tmp_path):
+    import trimesh
+
+    package = tmp_path / "wheel_description"
+    (package / "urdf").mkdir(parents=True)
+    (package / "package.xml").write_text("<package format='2'><name>wheel_description</name></package>")
+    write_mesh(trimesh.creation.cylinder(radius=0.05, height=0.02, sections=720), package / "meshes", "wheel.stl")
+    found = one_link(package / "urdf", '<collision><origin rpy="1.5708 0 0"/><geometry><mesh filename="package://wheel_description/meshes/wheel.stl"/></geometry></collision>', 0.5)
+    expected = massprops.rotate(massprops.cylinder(0.5, 0.05, 0.02), massprops.rotation((1.5708, 0, 0)))
+    assert massprops.relative_difference(found.body.tensor, expected) < 1e-4  # a 720-sided prism
+
+
+def test_unreadable_meshes_give_no_expected_tensor_and_no_problem(tmp_path):
+    found = one_link(tmp_path, '<collision><geometry><mesh filename="meshes/missing.stl"/></geometry></collision>')
+    assert found.body is None and "not found" in found.source
+    found = one_link(tmp_path, '<collision><geometry><mesh filename="https://example.com/arm.stl"/></geometry></collision>')
+    assert found.body is None and "cannot be resolved" in found.source  # never fetched
+    (tmp_path / "junk.stl").write_text("not a mesh")
+    found = one_link(tmp_path, '<collision><geometry><mesh filename="junk.stl"/></geometry></collision>')
+    assert found.body is None
+
+
+# -- the seeds' mistakes -----------------------------------------------------------------
+def test_seed002_rotated_box_macro_is_flagged_on_the_camera():
+    report = audited(CAR)
+    found = codes_by_link(report)
+    assert "I009" in found["camera"]
+    camera = next(e for e in report.links if e.link.name == "camera").assessment
+    close(camera.expected, massprops.diagonal(4.16667e-6, 2.41667e-6, 2.41667e-6), rel=1e-5)
+    assert {"I010"} <= found["left_wheel"] and {"I010"} <= found["right_wheel"]  # unrotated wheels
+    for link in ("base_link", "front_wheel", "back_wheel", "support", "laser"):
+        assert not found[link] & {"I009", "I010"}, link
+    assert found["base_footprint"] == set()
+
+
+def test_seed002_invalid_tensor_is_flagged():
+    found = codes_by_link(audited(HELLOWORLD))
+    assert {"I005", "I009", "I011"} <= found["base_link"]
+
+
+def test_seed000_unrotated_wheels_and_placeholders_are_flagged():
+    found = codes_by_link(audited(MOBILE))
+    for wheel in ("left_wheel", "right_wheel"):
+        assert {"I006", "I009", "I010"} <= found[wheel]
+    assert "I009" in found["base_link"]
+    for sensor in ("caster_wheel", "laser_link", "camera_link", "imu_link"):
+        assert "I008" in found[sensor], sensor
+
+
+def test_seed001_crane_is_flagged():
+    found = codes_by_link(audited(CRANE))
+    assert {"I006", "I009", "I011"} <= found["base_link"]
+    assert "I009" in found["shoulder_link_base"]
+    assert {"I007", "I009"} <= found["shoulder_link_top"]
+    assert {"I006", "I009"} <= found["shoulder_link_right"]
+    assert "I006" in found["shoulder_link_left"]  # its mesh is missing: no expected tensor
+
+
+@pytest.mark.parametrize("path", [JTBOT, JTBOT_XACRO], ids=lambda p: p.name)
+def test_jtbot_base_and_wheels_are_correct_once_the_inertial_rpy_is_applied(path):
+    report = audited(path)
+    found = codes_by_link(report)
+    for link in ("base_link", "left_wheel_link", "right_wheel_link", "caster_link"):
+        assert not found[link] & {"I009", "I010"}, (link, found[link])
+    assert found["base_link"] == {"I011"}
+    assert "I009" in found["imu_link"]  # computed for a 0.1 m cube
+    assert {"I008", "I009"} <= found["laser"] and {"I008", "I009"} <= found["camera_link"]
+
+
+def test_a_correct_model_has_no_problem(tmp_path):
+    path = tmp_path / "rover.urdf"
+    path.write_text(ROVER)
+    report = audited(path)
+    assert report.problems == ()
+    frames = [e.link.name for e in report.links if e.frame]
+    assert frames == ["base_footprint", "camera_optical_frame"]
+    result = run_cli("inertia", str(path))
+    assert result.returncode == 0, result.stderr.decode()
+    assert "0 problems" in result.stderr.decode()
+
+
+def test_identical_wheels_sharing_a_tensor_are_not_placeholders(tmp_path):
+    path = tmp_path / "rover.urdf"
+    path.write_text(ROVER.replace('iyy="0.000625" iyz="0" izz="0.000329167"', 'iyy="0.000329167" iyz="0" izz="0.000625"').replace(
+        '<inertial><mass value="0.5"/>', '<inertial><origin rpy="1.5708 0 0"/><mass value="0.5"/>'))
+    assert audited(path).problems == ()
+
+
+def test_tolerance_passes_rounding_and_catches_swaps(tmp_path):
+    rounded = ROVER.replace("0.0166667", "0.017").replace("0.0283333", "0.028").replace("0.0416667", "0.042")
+    path = tmp_path / "rounded.urdf"
+    path.write_text(rounded)
+    assert audited(path).problems == ()
+    swapped = ROVER.replace('ixx="0.0166667" ixy="0" ixz="0" iyy="0.0283333"', 'ixx="0.0283333" ixy="0" ixz="0" iyy="0.0166667"')
+    path.write_text(swapped)
+    assert {d.code for d in audited(path).problems} == {"I009"}
+    assert audited(path, tolerance=0.5).problems == ()
+
+
+# -- the whole robot ---------------------------------------------------------------------
+@pytest.mark.parametrize("path", [JTBOT, MOBILE, CRANE], ids=lambda p: p.name)
+def test_link_poses_match_yourdfpy_forward_kinematics(path):
+    import yourdfpy
+
+    reference = yourdfpy.URDF.load(str(path), build_scene_graph=True, load_meshes=False)
+    loaded = load(str(path), LoadOptions(checks="none"))
+    poses = inertia.link_poses(loaded)
+    assert set(poses) == set(loaded.robot.links)
+    for name, (rotation, translation) in poses.items():
+        matrix = reference.get_transform(name, loaded.root)
+        close(rotation, matrix[:3, :3], abs_=1e-9)
+        close(translation, matrix[:3, 3], abs_=1e-9)
+
+
+def test_total_of_the_rover_against_a_hand_computation(tmp_path):
+    path = tmp_path / "rover.urdf"
+    path.write_text(ROVER)
+    body = inertia.total(load(str(path), LoadOptions(checks="none")))
+    # by hand: body at z=0.1; wheels at y=±0.16 (z 0.1); mast rotated 0.3 about z, centre 0.25 above (-0.1, 0, 0.15)
+    parts = [
+        (2.0, numpy.array([0, 0, 0.1]), numpy.diag([0.0166667, 0.0283333, 0.0416667])),
+        (0.5, numpy.array([0, 0.16, 0.1]), numpy.diag([0.000329167, 0.000625, 0.000329167])),
+        (0.5, numpy.array([0, -0.16, 0.1]), numpy.diag([0.000329167, 0.000625, 0.000329167])),
+        (1.0, numpy.array([-0.1, 0, 0.4]), numpy.diag([0.0210417, 0.0210417, 0.000416667])),  # symmetric about z: turning changes nothing
+    ]
+    mass = sum(m for m, _, _ in parts)
+    com = sum(m * c for m, c, _ in parts) / mass
+    tensor = sum(t + m * ((c - com) @ (c - com) * numpy.eye(3) - numpy.outer(c - com, c - com)) for m, c, t in parts)
+    assert body.mass == pytest.approx(4.0)
+    close(body.com, com, rel=1e-6, abs_=1e-6)
+    close(body.tensor, tensor, rel=1e-4, abs_=1e-8)
+
+
+def test_total_rotates_each_link_tensor_into_the_root_frame(tmp_path):
+    """A box turned a quarter turn by its joint: its ixx and iyy swap in the root frame."""
+    path = tmp_path / "turned.urdf"
+    path.write_text(
+        '<robot name="t"><link name="root"/><link name="plate"><inertial><mass value="1"/>'
+        '<inertia ixx="1" ixy="0" ixz="0" iyy="2" iyz="0" izz="3"/></inertial></link>'
+        '<joint name="j" type="revolute"><parent link="root"/><child link="plate"/><origin xyz="1 0 0" rpy="0 0 1.5707963267948966"/>'
+        '<axis xyz="0 0 1"/><limit effort="1" velocity="1" lower="-1" upper="1"/></joint></robot>'
+    )
+    body = inertia.total(load(str(path), LoadOptions(checks="none")))
+    close(body.com, (1, 0, 0), abs_=1e-12)
+    close(body.tensor, massprops.diagonal(2, 1, 3), abs_=1e-12)
+
+
+# -- the command -------------------------------------------------------------------------
+def test_json_has_exactly_the_documented_shape():
+    result = run_cli("inertia", "--format", "json", str(CAR))
+    assert result.returncode == 1
+    data = json.loads(result.stdout)
+    assert set(data) == {"robot", "links", "total"} and data["robot"] == "mycar"
+    tensor_keys = {"ixx", "ixy", "ixz", "iyy", "iyz", "izz"}
+    for link in data["links"]:
+        assert set(link) == {"name", "mass", "com", "inertia", "principal", "expected", "expected_from", "problems"}
+        for problem in link["problems"]:
+            assert set(problem) == {"code", "severity", "message"}
+    camera = next(link for link in data["links"] if link["name"] == "camera")
+    assert camera["mass"] == pytest.approx(0.01) and camera["com"] == [0, 0, 0]
+    assert set(camera["inertia"]) == tensor_keys and set(camera["expected"]) == tensor_keys
+    assert camera["expected"]["ixx"] == pytest.approx(4.16667e-6, rel=1e-5)
+    assert camera["principal"] == pytest.approx(sorted([2.41667e-6, 2.41667e-6, 4.16667e-6]), rel=1e-5)
+    assert camera["expected_from"] == "collision box"
+    assert [p["code"] for p in camera["problems"]] == ["I009"] and camera["problems"][0]["severity"] == "warning"
+    frame = next(link for link in data["links"] if link["name"] == "base_footprint")
+    assert frame == {"name": "base_footprint", "mass": None, "com": None, "inertia": None, "principal": None,
+                     "expected": None, "expected_from": "massless frame link", "problems": []}
+    assert set(data["total"]) == {"mass", "com", "inertia"} and data["total"]["mass"] == pytest.approx(2.38)
+    assert set(data["total"]["inertia"]) == tensor_keys
+
+
+def test_text_output_lists_links_problems_and_total():
+    result = run_cli("inertia", str(CAR))
+    out, err = result.stdout.decode(), result.stderr.decode()
+    assert result.returncode == 1
+    assert "base_footprint  massless frame link" in out
+    assert "I009 inertia-geometry-mismatch" in out and "total  mass 2.38" in out
+    assert re.search(r"broken_rotated_box_inertia_head\.xacro:\d+:\d+: I009 warning: inertia of link 'camera'", err)
+    assert "1 file audited: 3 problems" in err
+
+
+def paste_suggestions(source: str, suggestions: str) -> str:
+    """The URDF with each suggested <inertial> pasted over the link's own."""
+    root = etree.fromstring(source.encode())
+    for name, block in re.findall(r"<!-- link '([^']+)': from its [^>]*-->\n(<inertial>.*?</inertial>)", suggestions, re.S):
+        link = root.find(f"link[@name='{name}']")
+        old = link.find("inertial")
+        link.replace(old, etree.fromstring(block)) if old is not None else link.append(etree.fromstring(block))
+    return etree.tostring(root, encoding="unicode")
+
+
+@pytest.mark.parametrize("path", [MOBILE, JTBOT, HELLOWORLD, CRANE], ids=lambda p: p.name)
+def test_pasting_the_suggested_blocks_fixes_the_flagged_links(path, tmp_path):
+    result = run_cli("inertia", "--suggest", str(path))
+    fixed = tmp_path / path.name
+    fixed.write_text(paste_suggestions(path.read_text(), result.stdout.decode()))
+    remaining = {d.code for d in audited(fixed).problems}
+    unfixable = {"I011"} | ({"I006"} if path == CRANE else set())  # the crane's shoulder_link_left mesh is missing
+    assert remaining <= unfixable, remaining
+
+
+def test_suggest_says_why_when_it_cannot(tmp_path):
+    result = run_cli("inertia", "--suggest", str(CRANE))
+    assert "<!-- link 'shoulder_link_left': no suggestion: mesh /home/user/catkin_ws/src/sim_api/model/meshes/car_link.stl not found" in result.stdout.decode()
+
+
+def test_xacro_names_the_macro_and_the_call_that_fixes_it(tmp_path):
+    package = tmp_path / "urdf02_gazebo"
+    shutil.copytree(FIXTURES / "urdf02_gazebo", package)
+    car = package / "urdf" / CAR.name
+    out = run_cli("inertia", "--suggest", "--xacro", str(car)).stdout.decode()
+    assert re.search(r"<!-- link 'camera': its <inertial> comes from xacro macro 'Box_inertial_matrix' \(\S+broken_rotated_box_inertia_head\.xacro:23\), "
+                     r"called at \S+demo06_car_camera\.urdf\.xacro:25 as <xacro:Box_inertial_matrix", out)
+    call = re.search(r'<xacro:Box_inertial_matrix m="0.01" [^>]*/>', out.split("the call that gives")[1]).group(0)
+    assert "no call of 'cylinder_inertial_matrix' gives the geometry's values" in out  # the wheels need a rotation
+    # the printed call, pasted in place of the original one, fixes the camera
+    camera_file = package / "urdf" / "demo06_car_camera.urdf.xacro"
+    camera_file.write_text(re.sub(r"<xacro:Box_inertial_matrix [^>]*/>", call, camera_file.read_text()))
+    found = codes_by_link(audited(car))
+    assert not found["camera"]
+
+
+def test_xacro_finds_the_right_call_for_jtbots_imu():
+    out = run_cli("inertia", "--suggest", "--xacro", str(JTBOT_XACRO)).stdout.decode()
+    assert "macro 'box_inertia'" in out
+    call = re.search(r"<xacro:box_inertia m=\"0.1\" [^>]*/>\n", out.split("<!-- link 'imu_link'")[1]).group(0)
+    assert sorted(re.findall(r'[whd]="([\d.]+)"', call)) == ["0.03", "0.03", "0.06"]
+
+
+def test_density_computes_masses_from_volume(tmp_path):
+    path = tmp_path / "cube.urdf"
+    path.write_text('<robot name="c"><link name="root"/><link name="cube"><collision><geometry><box size="0.1 0.1 0.1"/></geometry></collision>'
+                    '<inertial><mass value="1"/><inertia ixx="0.00166667" ixy="0" ixz="0" iyy="0.00166667" iyz="0" izz="0.00166667"/></inertial></link>'
+                    '<joint name="j" type="fixed"><parent link="root"/><child link="cube"/></joint></robot>')
+    assert run_cli("inertia", "--density", "1000", str(path)).returncode == 0  # 1 kg of water: as declared
+    result = run_cli("inertia", "--density", "2700", "--suggest", str(path))  # aluminium
+    assert result.returncode == 1
+    assert '<mass value="2.7"/>' in result.stdout.decode()
+    assert 'ixx="0.0045"' in result.stdout.decode()
+
+
+def test_massless_moving_link_gets_a_suggestion_only_with_density(tmp_path):
+    path = tmp_path / "arm.urdf"
+    path.write_text(ROVER.replace('<link name="mast">', '<link name="mast_unused">').replace(
+        '<link name="base_footprint"/>', '<link name="base_footprint"/><link name="mast"><collision><geometry><box size="0.1 0.1 0.1"/></geometry></collision></link>'
+    ).replace('<joint name="mast_joint" type="fixed">', '<joint name="mast_joint" type="continuous"><axis xyz="0 0 1"/>'))
+    result = run_cli("inertia", "--suggest", str(path))
+    assert "no suggestion: it declares no mass (give --density)" in result.stdout.decode()
+    assert '<mass value="1"/>' in run_cli("inertia", "--suggest", "--density", "1000", str(path)).stdout.decode()
+
+
+def test_check_stays_a_drop_in_and_never_loads_numpy():
+    result = run_cli("check", str(CAR))
+    assert result.returncode == 0
+    assert not re.search(r"I0(07|08|09|10|11)", result.stderr.decode())
+    probe = "import sys; from urdfcli.cli import main; sys.argv = ['urdfcli', 'check', %r]\ntry: main()\nexcept SystemExit: pass\nprint(sorted(m for m in ('numpy', 'trimesh', 'yourdfpy') if m in sys.modules))" % str(CAR)
+    import subprocess
+    import sys
+
+    out = subprocess.run([sys.executable, "-c", probe], capture_output=True, text=True).stdout
+    assert out.strip().endswith("[]")
+
+
+@pytest.mark.parametrize(
+    "args,message",
+    [
+        (["--tolerance", "0"], "--tolerance must be a positive fraction"),
+        (["--density", "-3"], "--density must be a positive number"),
+        (["--format", "json", "--suggest"], "--suggest and --xacro print XML"),
+    ],
+)
+def test_bad_options_exit_2_in_one_line(args, message):
+    result = run_cli("inertia", *args, str(JTBOT))
+    assert result.returncode == 2
+    assert message in result.stderr.decode() and "Traceback" not in result.stderr.decode()
+
+
+def test_missing_file_exits_2():
+    result = run_cli("inertia", "no/such.urdf")
+    assert result.returncode == 2 and "no such file" in result.stderr.decode()
+
+
+def test_malformed_input_exits_1_with_its_error(tmp_path):
+    path = tmp_path / "bad.urdf"
+    path.write_text("<robot name='x'><link name='a'></robot>")
+    result = run_cli("inertia", "--format", "json", str(path))
+    assert result.returncode == 1
+    assert json.loads(result.stdout) == {"robot": None, "links": [], "total": None}
+    assert "X001" in result.stderr.decode()
+
+
+def test_angles_in_messages_are_readable():
+    found = [d for d in audited(MOBILE).problems if d.code == "I010"]
+    assert found and "rpy 1.5708 0 0" in found[0].message
+    assert math.isclose(float(found[0].message.split("rpy ")[1].split()[0]), 1.5708)
+
+
+def test_json_for_several_files_is_a_list():
+    result = run_cli("inertia", "--format", "json", str(JTBOT), str(MOBILE))
+    data = json.loads(result.stdout)
+    assert [d["robot"] for d in data] == ["jtbot", "my_mobile_robot"]
