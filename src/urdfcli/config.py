@@ -28,7 +28,6 @@ import difflib
 import tomllib
 from dataclasses import dataclass, field, replace
 from fnmatch import fnmatchcase
-from functools import lru_cache
 from pathlib import Path
 from typing import Any
 
@@ -227,18 +226,23 @@ def _read_toml(path: Path) -> dict[str, Any]:
         raise ConfigError(f"{path}: cannot read: {error.strerror}") from None
 
 
+_TABLES: dict[tuple[Path, int, int], dict[str, Any] | None] = {}
+
+
 def _table(path: Path) -> dict[str, Any] | None:
-    """The urdfcli table of a config file; None when a pyproject.toml has none."""
-    document = _read_toml(path)
-    if path.name == "pyproject.toml":
-        table = document.get("tool", {}).get("urdfcli")
+    """The urdfcli table of a config file; None when a pyproject.toml has none.
+    Cached while the file is unchanged."""
+    stat = path.stat()
+    key = (path.resolve(), stat.st_mtime_ns, stat.st_size)
+    if key not in _TABLES:
+        document = _read_toml(path)
+        table = document.get("tool", {}).get("urdfcli") if path.name == "pyproject.toml" else document
         if table is not None and not isinstance(table, dict):
             raise ConfigError(f"{path}: [tool.urdfcli] must be a table")
-        return table
-    return document
+        _TABLES[key] = table
+    return _TABLES[key]
 
 
-@lru_cache(maxsize=None)
 def read(path: Path) -> Config:
     """The configuration in one file (urdfcli.toml, .urdfcli.toml or pyproject.toml)."""
     if not path.is_file():
@@ -248,19 +252,20 @@ def read(path: Path) -> Config:
     return parse(table or {}, source, path.resolve().parent)
 
 
-@lru_cache(maxsize=None)
-def _find_in(folder: Path) -> Path | None:
-    for name in CONFIG_NAMES:
-        if (folder / name).is_file():
-            return folder / name
-    pyproject = folder / "pyproject.toml"
-    if pyproject.is_file() and _table(pyproject) is not None:
-        return pyproject
-    return _find_in(folder.parent) if folder.parent != folder else None
+def find(start: Path) -> Path | None:
+    """The nearest configuration file at or above a folder."""
+    for folder in (start, *start.parents):
+        for name in CONFIG_NAMES:
+            if (folder / name).is_file():
+                return folder / name
+        pyproject = folder / "pyproject.toml"
+        if pyproject.is_file() and _table(pyproject) is not None:
+            return pyproject
+    return None
 
 
 def discover(file: str) -> Config:
     """The configuration that applies to a file: the nearest one above it, else the defaults."""
     start = Path.cwd() if file == "-" else Path(file).resolve().parent
-    found = _find_in(start)
+    found = find(start)
     return read(found) if found is not None else Config()

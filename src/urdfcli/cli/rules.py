@@ -20,7 +20,7 @@ def rules(
     output_format: Annotated[str, typer.Option("--format", "-f", help="table, json, or markdown (the text of docs/rules.md).", case_sensitive=False)] = "table",
 ) -> None:
     """List every rule: code, name, default severity, on or off by default, summary."""
-    registry = sorted(load_all().values(), key=lambda r: r.code)
+    registry = rules_format.ordered(load_all().values())
     if output_format == "json":
         sys.stdout.write(rules_format.as_json(registry) + "\n")
     elif output_format == "markdown":

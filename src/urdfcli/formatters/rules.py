@@ -23,6 +23,12 @@ PREFIXES = {
 }
 
 
+def ordered(rules) -> list[Rule]:
+    """Rules grouped as the documentation presents them (input first, style last), by code within a group."""
+    order = list(PREFIXES)
+    return sorted(rules, key=lambda r: (order.index(r.code[0]) if r.code[0] in order else len(order), r.code))
+
+
 def facts(rule: Rule) -> str:
     """One line: severity, on or off by default, and where it is reported."""
     where = "check and lint" if rule.in_check else "lint"
@@ -38,7 +44,7 @@ def options_markdown(rule: Rule) -> str:
     lines = ["## Options", ""]
     for option in rule.options:
         lines.append(f"- `{option.name}` ({option.kind}, default `{json.dumps(option.default)}`): {option.doc}")
-    lines += ["", f"Set them in `[tool.urdfcli.options.{rule.code}]` (or `.{rule.name}`)."]
+    lines += ["", f"Set them in `[tool.urdfcli.options.{rule.code}]` of pyproject.toml, or `[options.{rule.code}]` of urdfcli.toml (the rule's name works too)."]
     return "\n".join(lines)
 
 
@@ -82,6 +88,7 @@ def markdown(rules: list[Rule]) -> str:
         "| Code | Name | Severity | Default | Summary |",
         "| --- | --- | --- | --- | --- |",
     ]
+    rules = ordered(rules)
     for rule in rules:
         summary = rule.summary.replace("|", "\\|")
         lines.append(f"| [{rule.code}](#{rule.code.lower()}-{rule.name}) | {rule.name} | {rule.severity.value} | {'on' if rule.default else 'off'} | {summary} |")

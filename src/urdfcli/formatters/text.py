@@ -64,6 +64,6 @@ def excerpt_lines(diagnostic: Diagnostic, width: int = 160) -> list[str]:
     shown = text if len(text) <= width else text[: width - 3] + "..."
     width = max(4, len(str(location.line)))
     lines = [f"  {location.line:>{width}} | {shown}"]
-    if location.column and location.column <= len(shown):
+    if location.column and location.column <= len(shown) + 1:
         lines.append(f"  {'':>{width}} | {' ' * (location.column - 1)}^")
     return lines

@@ -1,0 +1,178 @@
+"""Project configuration: discovery, selection, options, severities, paths, xacro args, errors."""
+
+from __future__ import annotations
+
+import json
+import textwrap
+
+import pytest
+
+from conftest import run_cli
+from urdfcli.config import Config, ConfigError, discover, parse
+from urdfcli.linter import lint_file
+from urdfcli.rules import load_all
+
+# A model with a typo (D002), an undefined material (M002), and names that break the style rules (S001, S002).
+MODEL = """<robot name="r">
+  <link name="base_link">
+    <visual>
+      <geometry><box size="1 1 1"/></geometry>
+      <material name="grey"><color rgb="0.5 0.5 0.5 1"/></material>
+    </visual>
+  </link>
+  <link name="arm"/>
+  <joint name="shoulder" type="fixed">
+    <parent link="base_link"/>
+    <child link="arm"/>
+  </joint>
+</robot>
+"""
+
+
+def write(folder, name, text):
+    path = folder / name
+    path.parent.mkdir(parents=True, exist_ok=True)
+    path.write_text(textwrap.dedent(text))
+    return path
+
+
+def codes(path, config=None):
+    config = discover(str(path)) if config is None else config
+    return sorted({d.code for d in lint_file(str(path), config).diagnostics})
+
+
+def lint_json(*args, cwd=None):
+    done = run_cli("lint", "--format", "json", *args, cwd=cwd)
+    return done, json.loads(done.stdout or b"null")
+
+
+def test_defaults_leave_style_rules_off(tmp_path):
+    model = write(tmp_path, "robot.urdf", MODEL)
+    assert codes(model) == ["D002", "M002"]
+
+
+def test_nearest_pyproject_with_a_urdfcli_table_wins(tmp_path):
+    write(tmp_path, "pyproject.toml", '[tool.urdfcli]\nextend-select = ["S"]\n')
+    write(tmp_path, "sub/pyproject.toml", '[project]\nname = "x"\n')  # no [tool.urdfcli]: skipped
+    model = write(tmp_path, "sub/urdf/robot.urdf", MODEL)
+    assert {"S001", "S002"} <= set(codes(model))
+    write(tmp_path, "sub/urdf/urdfcli.toml", 'ignore = ["D"]\n')
+    assert "D002" not in codes(model) and "S001" not in codes(model)
+
+
+def test_select_ignore_and_prefix_specificity(tmp_path):
+    model = write(tmp_path, "robot.urdf", MODEL)
+    root = tmp_path
+    assert codes(model, parse({"select": ["S"]}, "t", root)) == ["S001", "S002"]
+    assert codes(model, parse({"select": ["S"], "ignore": ["S002"]}, "t", root)) == ["S001"]
+    # the more specific selector wins: ignore S, but select S001
+    assert codes(model, parse({"extend-select": ["S001"], "ignore": ["S"]}, "t", root)) == ["D002", "M002", "S001"]
+    assert codes(model, parse({"select": ["ALL"], "ignore": ["D", "M"]}, "t", root)) == ["S001", "S002"]
+
+
+def test_per_file_ignores_match_globs_relative_to_the_config(tmp_path):
+    write(tmp_path, "urdfcli.toml", '[per-file-ignores]\n"legacy/*.urdf" = ["D002"]\n')
+    legacy = write(tmp_path, "legacy/old.urdf", MODEL)
+    current = write(tmp_path, "new/robot.urdf", MODEL)
+    assert "D002" not in codes(legacy)
+    assert "D002" in codes(current)
+
+
+def test_severity_overrides_decide_the_exit_code(tmp_path):
+    model = write(tmp_path, "robot.urdf", MODEL)
+    write(tmp_path, "urdfcli.toml", '[severity]\nD = "info"\nM002 = "info"\n')
+    done, report = lint_json(str(model))
+    assert {d["severity"] for d in report["files"][0]["diagnostics"]} == {"info"}
+    assert done.returncode == 0
+    write(tmp_path, "urdfcli.toml", '[severity]\nM002 = "error"\n')
+    done, report = lint_json(str(model))
+    assert done.returncode == 1 and report["files"][0]["ok"] is False
+
+
+def test_rule_options_change_what_the_style_rules_accept(tmp_path):
+    model = write(tmp_path, "robot.urdf", MODEL)
+    config = parse({"select": ["S"], "options": {"link-name-suffix": {"exempt": ["arm"]}, "S002": {"suffix": "_j"}}}, "t", tmp_path)
+    diagnostics = lint_file(str(model), config).diagnostics
+    assert [d.code for d in diagnostics] == ["S002"]
+    assert "does not end in '_j'" in diagnostics[0].message
+
+
+def test_package_paths_are_relative_to_the_config(tmp_path):
+    write(tmp_path, "vendor/arm_pkg/package.xml", "<package><name>arm_pkg</name></package>")
+    write(tmp_path, "vendor/arm_pkg/meshes/arm.stl", "solid a\nendsolid a\n")
+    model = write(tmp_path, "urdf/robot.urdf", '<robot name="r"><link name="a"><visual><geometry><mesh filename="package://arm_pkg/meshes/arm.stl"/></geometry></visual></link></robot>')
+    assert "D005" in codes(model)
+    write(tmp_path, "urdfcli.toml", 'package-paths = ["vendor"]\n')
+    assert codes(model) == []
+
+
+def test_xacro_args_per_file(tmp_path):
+    model = write(
+        tmp_path,
+        "urdf/robot.urdf.xacro",
+        """\
+        <robot name="r" xmlns:xacro="http://www.ros.org/wiki/xacro">
+          <xacro:arg name="prefix" default=""/>
+          <link name="$(arg prefix)base_link"/>
+        </robot>
+        """,
+    )
+    write(tmp_path, "urdfcli.toml", '[xacro-args]\n"urdf/*.urdf.xacro" = { prefix = "Left" }\n')
+    config = discover(str(model)).overridden(select=["S003"])
+    [diagnostic] = lint_file(str(model), config).diagnostics
+    assert diagnostic.message == "link name 'Leftbase_link' is not snake_case"
+
+
+@pytest.mark.parametrize(
+    ("text", "message"),
+    [
+        ('selct = ["D"]\n', "unknown key 'selct' (did you mean 'select'?)"),
+        ('select = ["Q123"]\n', "unknown rule code or prefix 'Q123'"),
+        ('ignore = "D001"\n', None),  # a comma-separated string is accepted
+        ('[severity]\nD001 = "fatal"\n', "'fatal' is not error, warning or info"),
+        ('[options.S001]\nsufix = "_l"\n', "has no option 'sufix' (did you mean 'suffix'?)"),
+        ('[options.S001]\nsuffix = 3\n', "option 'suffix' must be a string, not 3"),
+        ('[options.Z999]\nsuffix = "_l"\n', "unknown rule 'Z999'"),
+        ('select = [\n', "not valid TOML"),
+    ],
+)
+def test_configuration_mistakes_are_one_line_and_exit_2(tmp_path, text, message):
+    write(tmp_path, "urdfcli.toml", text)
+    model = write(tmp_path, "robot.urdf", MODEL)
+    done = run_cli("lint", str(model))
+    if message is None:
+        assert done.returncode in (0, 1)
+        return
+    assert done.returncode == 2
+    err = done.stderr.decode()
+    assert message in err and "Traceback" not in err and len(err.strip().splitlines()) == 1
+    assert str(tmp_path / "urdfcli.toml") in err
+
+
+def test_command_line_overrides_the_file(tmp_path):
+    write(tmp_path, "urdfcli.toml", 'select = ["D"]\n')
+    model = write(tmp_path, "robot.urdf", MODEL)
+    _, report = lint_json(str(model))
+    assert {d["code"] for d in report["files"][0]["diagnostics"]} == {"D002"}
+    _, report = lint_json("--select", "S001,M", str(model))
+    assert {d["code"] for d in report["files"][0]["diagnostics"]} == {"S001", "M002"}
+    _, report = lint_json("--ignore", "D002", str(model))
+    assert report["files"][0]["diagnostics"] == []
+    done = run_cli("lint", "--select", "NOPE", str(model))
+    assert done.returncode == 2 and "unknown rule code or prefix 'NOPE'" in done.stderr.decode()
+
+
+def test_explicit_config_file(tmp_path):
+    other = write(tmp_path, "elsewhere/settings.toml", 'select = ["S002"]\n')
+    model = write(tmp_path, "robot.urdf", MODEL)
+    _, report = lint_json("--config", str(other), str(model))
+    assert [d["code"] for d in report["files"][0]["diagnostics"]] == ["S002"]
+    done = run_cli("lint", "--config", str(tmp_path / "missing.toml"), str(model))
+    assert done.returncode == 2 and "no such configuration file" in done.stderr.decode()
+
+
+def test_everything_selects_every_rule():
+    config = Config.everything()
+    assert all(config.enabled(rule, "x.urdf") for rule in load_all().values())
+    with pytest.raises(ConfigError):
+        Config().overridden(select=["not-a-code"])

@@ -1,0 +1,153 @@
+"""Every output format of check and lint, on a model with a typo and on one that is not XML."""
+
+from __future__ import annotations
+
+import json
+
+import pytest
+
+from conftest import run_cli
+from urdfcli.rules import load_all
+
+TYPO = """<robot name="r">
+  <link name="base_link">
+    <visual>
+      <geometry><box size="1 1 1"/></geometry>
+      <material name="grey"><color rgb="0.5 0.5 0.5 1"/></material>
+    </visual>
+  </link>
+</robot>
+"""
+NOT_XML = '<robot name="r">\n  <link name="a">\n</robot>\n'
+
+
+@pytest.fixture
+def models(tmp_path):
+    typo = tmp_path / "typo.urdf"
+    typo.write_text(TYPO)
+    broken = tmp_path / "broken.urdf"
+    broken.write_text(NOT_XML)
+    return typo, broken
+
+
+def run(command, fmt, *paths, env=None):
+    return run_cli(command, "--format", fmt, *map(str, paths), env=env)
+
+
+def test_concise_lint(models):
+    typo, broken = models
+    done = run("lint", "concise", typo, broken)
+    assert done.stdout.decode().splitlines() == [
+        f"{typo}:5:7: M002 warning: material 'grey' is defined nowhere",
+        f"{typo}:5:29: D002 warning: <color> has no attribute 'rgb'; it is ignored",
+        f"{broken}:3:9: X001 error: Opening and ending tag mismatch: link line 2 and robot",
+    ]
+    assert done.stderr.decode() == "2 files checked: 1 error, 2 warnings\n"
+    assert done.returncode == 1
+
+
+def test_concise_check_reports_only_check_rules(models):
+    typo, broken = models
+    done = run("check", "concise", typo, broken)
+    assert done.stdout.decode().splitlines() == [
+        f"{typo}:5:7: M002 warning: material 'grey' is defined nowhere",
+        f"{broken}:3:9: X001 error: Opening and ending tag mismatch: link line 2 and robot",
+    ]
+
+
+def test_text_has_a_source_excerpt_and_a_summary(models):
+    typo, broken = models
+    done = run("lint", "text", typo, broken)
+    assert done.stdout == b""
+    assert done.stderr.decode().splitlines() == [
+        f"{typo}:5:7: M002 warning: material 'grey' is defined nowhere",
+        "    hint: define it at the top level, or give it a <color rgba>",
+        '     5 |       <material name="grey"><color rgb="0.5 0.5 0.5 1"/></material>',
+        "       |       ^",
+        f"{typo}:5:29: D002 warning: <color> has no attribute 'rgb'; it is ignored",
+        "    hint: did you mean 'rgba'?",
+        '     5 |       <material name="grey"><color rgb="0.5 0.5 0.5 1"/></material>',
+        "       |                             ^",
+        f"{broken}:3:9: X001 error: Opening and ending tag mismatch: link line 2 and robot",
+        "     3 | </robot>",
+        "       |         ^",
+        "2 files checked: 1 error, 2 warnings",
+    ]
+
+
+def test_check_text_keeps_the_tree_on_stdout(models):
+    typo, _ = models
+    done = run("check", "text", typo)
+    assert done.stdout.decode().splitlines()[0] == "robot name is: r"
+    assert "     5 |" in done.stderr.decode()
+
+
+@pytest.mark.parametrize("command", ["check", "lint"])
+def test_json_contract(models, command):
+    typo, broken = models
+    report = json.loads(run(command, "json", typo, broken).stdout)
+    assert set(report) == {"version", "files", "summary"} and report["version"] == 1
+    typo_file, broken_file = report["files"]
+    assert (typo_file["path"], typo_file["ok"], typo_file["robot"]) == (str(typo), True, "r")
+    assert (broken_file["ok"], broken_file["robot"]) == (False, None)
+    assert broken_file["diagnostics"] == [
+        {"code": "X001", "severity": "error", "message": "Opening and ending tag mismatch: link line 2 and robot",
+         "path": str(broken), "line": 3, "column": 9, "element": None}
+    ]
+    assert typo_file["diagnostics"][0] == {
+        "code": "M002", "severity": "warning", "message": "material 'grey' is defined nowhere",
+        "path": str(typo), "line": 5, "column": 7, "element": "link[@name='base_link']/visual/material",
+    }
+    warnings = 2 if command == "lint" else 1
+    assert report["summary"] == {"files": 2, "errors": 1, "warnings": warnings}
+
+
+@pytest.mark.parametrize("command", ["check", "lint"])
+def test_github_annotations(models, command):
+    typo, broken = models
+    lines = run(command, "github", typo, broken).stdout.decode().splitlines()
+    assert lines[0] == f"::warning file={typo},line=5,col=7,title=M002::material 'grey' is defined nowhere"
+    assert lines[-1] == f"::error file={broken},line=3,col=9,title=X001::Opening and ending tag mismatch: link line 2 and robot"
+    if command == "lint":
+        assert lines[1] == f"::warning file={typo},line=5,col=29,title=D002::<color> has no attribute 'rgb'; it is ignored"
+
+
+@pytest.mark.parametrize("command", ["check", "lint"])
+def test_auto_is_github_under_github_actions(models, command):
+    typo, _ = models
+    under_actions = run(command, "auto", typo, env={"GITHUB_ACTIONS": "true"})
+    assert under_actions.stdout.decode().startswith("::warning file=")
+    elsewhere = run(command, "auto", typo, env={"GITHUB_ACTIONS": ""})
+    assert "::warning" not in elsewhere.stdout.decode() + elsewhere.stderr.decode()
+    assert f"{typo}:5:7: M002 warning" in elsewhere.stderr.decode()
+
+
+@pytest.mark.parametrize("command", ["check", "lint"])
+def test_sarif_2_1_0(models, command):
+    typo, broken = models
+    log = json.loads(run(command, "sarif", typo, broken).stdout)
+    assert log["version"] == "2.1.0" and log["$schema"].endswith("sarif-2.1.0.json")
+    [sarif_run] = log["runs"]
+    driver = sarif_run["tool"]["driver"]
+    assert driver["name"] == "urdfcli"
+    rules = driver["rules"]
+    assert [r["id"] for r in rules] == sorted(load_all())
+    for descriptor in rules:
+        assert descriptor["shortDescription"]["text"] and "## What it does" in descriptor["help"]["markdown"]
+        assert descriptor["defaultConfiguration"]["level"] in ("error", "warning", "note")
+    results = sarif_run["results"]
+    assert [(r["ruleId"], r["level"]) for r in results] == (
+        [("M002", "warning"), ("D002", "warning"), ("X001", "error")] if command == "lint" else [("M002", "warning"), ("X001", "error")]
+    )
+    for result in results:
+        assert rules[result["ruleIndex"]]["id"] == result["ruleId"]
+        location = result["locations"][0]["physicalLocation"]
+        assert location["region"]["startLine"] >= 1
+        assert location["artifactLocation"]["uri"].startswith("file:///")
+    assert results[-1]["locations"][0]["physicalLocation"]["region"] == {"startLine": 3, "startColumn": 9}
+
+
+def test_sarif_relative_paths_stay_relative(models):
+    typo, _ = models
+    log = json.loads(run_cli("lint", "--format", "sarif", typo.name, cwd=typo.parent).stdout)
+    assert log["runs"][0]["results"][0]["locations"][0]["physicalLocation"]["artifactLocation"]["uri"] == "typo.urdf"

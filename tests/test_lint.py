@@ -1,0 +1,154 @@
+"""`urdfcli lint` end to end: exit codes, folders, parallel runs, suppressions."""
+
+from __future__ import annotations
+
+import json
+import textwrap
+
+from conftest import FIXTURES, run_cli
+from urdfcli.config import Config
+from urdfcli.linter import lint_file
+
+CLEAN = FIXTURES / "urdf01_rviz/urdf/urdf/demo01_helloworld.urdf"
+TYPO = FIXTURES / "urdf01_rviz/urdf/urdf/demo03_joint.urdf"  # <color rgb=...>: D002 and M002, warnings only
+
+
+def write(folder, name, text):
+    path = folder / name
+    path.parent.mkdir(parents=True, exist_ok=True)
+    path.write_text(textwrap.dedent(text))
+    return path
+
+
+def concise(*args, cwd=None):
+    done = run_cli("lint", "--format", "concise", *args, cwd=cwd)
+    return done, done.stdout.decode().splitlines()
+
+
+def test_exit_codes(tmp_path):
+    assert run_cli("lint", str(CLEAN)).returncode == 0
+    assert run_cli("lint", str(TYPO)).returncode == 1
+    assert run_cli("check", str(TYPO)).returncode == 0  # check fails on errors only
+    assert run_cli("lint", "--exit-zero", str(TYPO)).returncode == 0
+    missing = run_cli("lint", "--exit-zero", str(tmp_path / "missing.urdf"))
+    assert missing.returncode == 2
+    assert missing.stderr.decode().splitlines()[0] == f"urdfcli: {tmp_path / 'missing.urdf'}: no such file"
+    broken = write(tmp_path, "broken.urdf", '<robot name="r"><link name="a"></robot>\n')
+    assert run_cli("lint", str(broken)).returncode == 1
+    assert run_cli("lint", "--format", "nope", str(CLEAN)).returncode == 2
+
+
+def test_the_documented_fixture_mistakes_are_found():
+    _, lines = concise(str(TYPO))
+    assert lines == [
+        f"{TYPO}:9:13: M002 warning: material 'car_color' is defined nowhere",
+        f"{TYPO}:10:17: D002 warning: <color> has no attribute 'rgb'; it is ignored",
+    ]
+    jtbot = FIXTURES / "seed003/jtbot.urdf"
+    _, lines = concise("--select", "D", str(jtbot))
+    assert lines == [f"{jtbot}:382:3: D006 warning: <gazebo reference='camera_depth_link'> names no link or joint"]
+
+
+def test_a_correct_plugin_model_has_no_description_warnings():
+    done, lines = concise("--select", "D", str(FIXTURES / "urdf02_gazebo/urdf/car_with_plugins.urdf.xacro"))
+    assert done.returncode == 0 and lines == []
+
+
+def test_folders_are_searched_for_models_only(tmp_path):
+    for name in ("a.urdf", "sub/b.urdf.xacro", "sub/macros.xacro", ".hidden/c.urdf", "build/d.urdf"):
+        write(tmp_path, name, '<robot name="r" xmlns:xacro="http://www.ros.org/wiki/xacro"><link name="Bad"/></robot>\n')
+    _, lines = concise("--select", "S003", str(tmp_path))
+    assert [line.split(":")[0] for line in lines] == [str(tmp_path / "a.urdf"), str(tmp_path / "sub/b.urdf.xacro")]
+    _, lines = concise("--select", "S003", str(tmp_path / "sub/macros.xacro"))
+    assert len(lines) == 1  # named explicitly, a plain .xacro is linted
+    empty = tmp_path / "empty"
+    empty.mkdir()
+    done = run_cli("lint", str(empty))
+    assert done.returncode == 2 and "no *.urdf or *.urdf.xacro file" in done.stderr.decode()
+
+
+def test_parallel_runs_print_the_same_output_in_the_same_order():
+    one = run_cli("lint", "--format", "concise", str(FIXTURES))
+    four = run_cli("lint", "--format", "concise", "-j", "4", str(FIXTURES))
+    assert one.stdout.decode().count("\n") > 50
+    assert (one.returncode, one.stdout, one.stderr) == (four.returncode, four.stdout, four.stderr)
+    every_cpu = run_cli("lint", "--format", "json", "-j", "0", str(FIXTURES))
+    assert json.loads(every_cpu.stdout)["summary"]["files"] == len([p for p in FIXTURES.rglob("*") if p.name.endswith((".urdf", ".urdf.xacro"))])
+
+
+def test_standard_input(tmp_path):
+    text = TYPO.read_text()
+    done = run_cli("lint", "--format", "concise", "-", input=text)
+    assert done.returncode == 1
+    line = done.stdout.decode().splitlines()[1]
+    assert line.startswith("<stdin>:10:") and line.endswith(": D002 warning: <color> has no attribute 'rgb'; it is ignored")
+
+
+# -- suppressions ------------------------------------------------------------------
+SUPPRESSED = """\
+<robot name="r">
+  <material name="a"><color rgba="1 0 0 1" rgb="1 0 0"/></material> <!-- urdfcli: noqa: D002 -->
+  <!-- urdfcli: noqa: D002, M004 -->
+  <material name="b"><color rgba="1 0 0 1" rgb="1 0 0"/></material>
+  <material name="c"><color rgba="1 0 0 1" rgb="1 0 0"/></material>
+  <!-- urdfcli: noqa: S001 -->
+  <link name="base_link"/>
+  <!-- urdfcli: noqa: D099 -->
+</robot>
+"""
+
+
+def test_noqa_on_the_line_and_the_line_above(tmp_path):
+    model = write(tmp_path, "robot.urdf", SUPPRESSED)
+    found = [(d.line, d.code, d.severity.value, d.message) for d in lint_file(str(model), Config()).diagnostics]
+    assert found == [
+        (3, "U001", "info", "'noqa: M004' silences nothing: no M004 on line 4"),
+        (5, "D002", "warning", "<color> has no attribute 'rgb'; it is ignored"),
+        (8, "U002", "warning", "'noqa: D099' names no rule"),
+    ]
+    # S001 is off by default: its suppression is not reported as unused
+    selected = [(d.line, d.code) for d in lint_file(str(model), Config(extend_select=("S001",))).diagnostics]
+    assert (6, "U001") in selected
+
+
+def test_noqa_file_silences_a_code_everywhere_in_its_file(tmp_path):
+    model = write(tmp_path, "robot.urdf", SUPPRESSED.replace("<robot name=\"r\">", "<robot name=\"r\"> <!-- urdfcli: noqa-file: D002, D003 -->"))
+    found = [(d.line, d.code, d.message) for d in lint_file(str(model), Config()).diagnostics]
+    assert (5, "D002", "<color> has no attribute 'rgb'; it is ignored") not in found
+    assert (1, "U001", "'noqa-file: D003' silences nothing: no D003 in this file") in found
+    assert all(code != "D002" for _, code, _ in found)
+
+
+def test_only_info_left_exits_0(tmp_path):
+    model = write(tmp_path, "robot.urdf", '<robot name="r">\n  <!-- urdfcli: noqa: D002 -->\n  <link name="base_link"/>\n</robot>\n')
+    done, lines = concise(str(model))
+    assert lines == [f"{model}:2:3: U001 info: 'noqa: D002' silences nothing: no D002 on line 3"]
+    assert done.returncode == 0
+
+
+def test_suppressions_in_an_included_xacro_file(tmp_path):
+    write(
+        tmp_path,
+        "parts.xacro",
+        """\
+        <robot xmlns:xacro="http://www.ros.org/wiki/xacro">
+          <xacro:macro name="part" params="name">
+            <!-- urdfcli: noqa: D002 -->
+            <link name="${name}" colour="red"/>
+          </xacro:macro>
+        </robot>
+        """,
+    )
+    model = write(
+        tmp_path,
+        "robot.urdf.xacro",
+        """\
+        <robot name="r" xmlns:xacro="http://www.ros.org/wiki/xacro">
+          <xacro:include filename="parts.xacro"/>
+          <xacro:part name="a"/>
+          <link name="b" colour="blue"/>
+        </robot>
+        """,
+    )
+    found = [(d.file, d.line, d.code) for d in lint_file(str(model), Config(select=("D002", "U"))).diagnostics]
+    assert found == [(str(model), 4, "D002")]
