@@ -176,3 +176,16 @@ def test_everything_selects_every_rule():
     assert all(config.enabled(rule, "x.urdf") for rule in load_all().values())
     with pytest.raises(ConfigError):
         Config().overridden(select=["not-a-code"])
+
+
+def test_the_readme_example_configuration_is_valid(tmp_path):
+    import re
+    import tomllib
+
+    from conftest import ROOT
+
+    readme = (ROOT / "README.md").read_text(encoding="utf-8")
+    [example] = [block for block in re.findall(r"```toml\n(.*?)```", readme, re.DOTALL) if "[tool.urdfcli]" in block]
+    config = parse(tomllib.loads(example)["tool"]["urdfcli"], "README", tmp_path)
+    assert config.select == ("ALL",) and config.mappings_for("urdf/robot.urdf.xacro") == {"use_gpu": "false", "prefix": ""}
+    assert config.package_paths == (str(tmp_path.parent / "vendor"), f"my_robot={tmp_path / 'src/my_robot'}")
