@@ -152,3 +152,26 @@ def test_suppressions_in_an_included_xacro_file(tmp_path):
     )
     found = [(d.file, d.line, d.code) for d in lint_file(str(model), Config(select=("D002", "U"))).diagnostics]
     assert found == [(str(model), 4, "D002")]
+
+
+def test_progress_bar_only_on_a_terminal_for_a_long_run(monkeypatch):
+    import importlib
+    import io
+
+    from rich.console import Console
+
+    from urdfcli.linter import Job
+
+    lint_command = importlib.import_module("urdfcli.cli.lint")  # the module, not the command it defines
+
+    work = [Job(str(path), Config()) for path in sorted(FIXTURES.rglob("*.urdf"))[:3]]
+    terminal = io.StringIO()
+    monkeypatch.setattr(lint_command, "stderr", Console(file=terminal, force_terminal=True, width=100))
+    monkeypatch.setattr(lint_command, "PROGRESS_AFTER", 0.0)
+    outcomes = lint_command.run(work, jobs=1)
+    assert [o.path for o in outcomes] == [job.path for job in work]
+    assert "linting" in terminal.getvalue()
+    piped = io.StringIO()
+    monkeypatch.setattr(lint_command, "stderr", Console(file=piped, force_terminal=False))
+    lint_command.run(work, jobs=1)
+    assert piped.getvalue() == ""
