@@ -9,16 +9,20 @@ from __future__ import annotations
 
 from collections import defaultdict
 from collections.abc import Iterator
-
-import networkx as nx
+from typing import TYPE_CHECKING
 
 from .diagnostics import Diagnostic
 from .document import Document
 from .model import Joint, Robot
 from .rules import rule
 
+if TYPE_CHECKING:
+    import networkx as nx
+
 
 def build_graph(robot: Robot) -> nx.DiGraph:
+    import networkx as nx  # only here: importing networkx takes longer than checking a small file
+
     graph = nx.DiGraph()
     graph.add_nodes_from(robot.links)
     for joint in robot.joints.values():
@@ -47,19 +51,50 @@ def walk(robot: Robot, start: str, children: dict[str, list[Joint]] | None = Non
 
     A link reached twice (two parents) is not entered again, so loops end.
     """
+    for depth, joint, link, repeat in walk_all(robot, start, children):
+        if not repeat:
+            yield depth, joint, link
+
+
+def walk_all(
+    robot: Robot, start: str, children: dict[str, list[Joint]] | None = None
+) -> Iterator[tuple[int, Joint | None, str, bool]]:
+    """``walk``, plus each joint that reaches a link already reached (a second
+    parent, or a loop closing), flagged ``repeat``; nothing below it follows."""
     children = children_by_joint_name(robot) if children is None else children
     seen = {start}
-    stack: list[tuple[int, Joint | None, str]] = [(0, None, start)]
+    stack: list[tuple[int, Joint | None, str, bool]] = [(0, None, start, False)]
     while stack:
-        depth, joint, link = stack.pop()
-        yield depth, joint, link
+        depth, joint, link, repeat = stack.pop()
+        yield depth, joint, link, repeat
+        if repeat:
+            continue
         for child_joint in reversed(children.get(link, [])):
-            if child_joint.child not in seen:
-                seen.add(child_joint.child)
-                stack.append((depth + 1, child_joint, child_joint.child))
+            stack.append((depth + 1, child_joint, child_joint.child, child_joint.child in seen))
+            seen.add(child_joint.child)
 
 
-def tree_diagnostics(robot: Robot, graph: nx.DiGraph, document: Document) -> list[Diagnostic]:
+def has_loop(robot: Robot) -> bool:
+    """Whether the joints form a directed loop (Kahn's algorithm, without networkx)."""
+    waiting = dict.fromkeys(robot.links, 0)  # parent joints not yet visited, per link
+    children: dict[str, list[str]] = defaultdict(list)
+    for joint in robot.joints.values():
+        if joint.parent in waiting and joint.child in waiting:
+            waiting[joint.child] += 1
+            children[joint.parent].append(joint.child)
+    ready = [link for link, count in waiting.items() if count == 0]
+    visited = 0
+    while ready:
+        link = ready.pop()
+        visited += 1
+        for child in children.get(link, ()):
+            waiting[child] -= 1
+            if waiting[child] == 0:
+                ready.append(child)
+    return visited < len(waiting)
+
+
+def tree_diagnostics(robot: Robot, document: Document) -> list[Diagnostic]:
     out: list[Diagnostic] = []
 
     def report(code: str, message: str, element, hint: str | None = None) -> None:
@@ -86,15 +121,19 @@ def tree_diagnostics(robot: Robot, graph: nx.DiGraph, document: Document) -> lis
                 extra.element,
                 "a link has exactly one parent joint; for a closed chain, use a mimic joint or split the link",
             )
-    for component in nx.strongly_connected_components(graph):
-        if len(component) == 1:
-            (node,) = component
-            if not graph.has_edge(node, node):
-                continue
-        cycle = nx.find_cycle(graph.subgraph(component))
-        first_joint = graph.edges[cycle[0][0], cycle[0][1]]["joint"]
-        path = " -> ".join([cycle[0][0], *(v for _, v in cycle)])
-        report("T004", f"the joints form a loop: {path}", first_joint.element, "URDF describes trees: remove one joint of the loop")
+    if has_loop(robot):  # rare: only then is networkx worth importing
+        import networkx as nx
+
+        graph = build_graph(robot)
+        for component in nx.strongly_connected_components(graph):
+            if len(component) == 1:
+                (node,) = component
+                if not graph.has_edge(node, node):
+                    continue
+            cycle = nx.find_cycle(graph.subgraph(component))
+            first_joint = graph.edges[cycle[0][0], cycle[0][1]]["joint"]
+            path = " -> ".join([cycle[0][0], *(v for _, v in cycle)])
+            report("T004", f"the joints form a loop: {path}", first_joint.element, "URDF describes trees: remove one joint of the loop")
     if robot.links:
         found = roots(robot)
         if len(found) > 1:

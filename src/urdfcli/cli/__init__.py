@@ -11,9 +11,11 @@ import typer
 from .. import __version__
 from .check import check
 from .expand import expand
+from .graph import graph
+from .inertia import inertia
 from .lint import lint
 from .rules import rule, rules
-from .inertia import inertia
+from .tree import tree
 
 app = typer.Typer(
     name="urdfcli",
@@ -41,10 +43,12 @@ def _main(
 
 app.command(name="expand")(expand)
 app.command(name="check")(check)
+app.command(name="tree")(tree)
+app.command(name="graph")(graph)
+app.command(name="inertia")(inertia)
 app.command(name="lint")(lint)
 app.command(name="rules")(rules)
 app.command(name="rule")(rule)
-app.command(name="inertia")(inertia)
 
 
 def _planned(name: str, summary: str):
@@ -59,8 +63,6 @@ def _planned(name: str, summary: str):
 
 # Subcommands still to come; each entry goes when its module is registered above.
 PLANNED = {
-    "tree": "Print the kinematic tree.",
-    "graph": "Draw the link tree as PDF, SVG, PNG or DOT.",
 }
 for _name, _summary in PLANNED.items():
     app.command(name=_name, context_settings={"allow_extra_args": True, "ignore_unknown_options": True})(_planned(_name, _summary))

@@ -1,0 +1,107 @@
+"""`urdfcli graph`: the link tree as PDF, SVG, PNG or DOT (a better urdf_to_graphviz)."""
+
+from __future__ import annotations
+
+import sys
+from enum import Enum
+from pathlib import Path
+from typing import Annotated
+
+import typer
+
+from ..drawing import RENDER_FORMATS, RenderError, Style, compat_dot, render, styled_dot
+from ..output import OutputError, write_atomic
+from .common import Exit, PackagePathOption, fail, split_inputs, stderr, stdout
+from .tree import load_model, report_errors, start_link
+
+EXTENSIONS = {".pdf": "pdf", ".svg": "svg", ".png": "png", ".gv": "dot", ".dot": "dot"}
+
+
+class RankDir(str, Enum):
+    TB = "TB"
+    LR = "LR"
+
+
+def graph(
+    inputs: Annotated[
+        list[str],
+        typer.Argument(
+            metavar="FILE [OUT] [NAME:=VALUE]...",
+            help="URDF or xacro file ('-' reads standard input); OUT names the outputs OUT.gv and OUT.pdf "
+            "(default: the robot's name); NAME:=VALUE sets a xacro argument.",
+            show_default=False,
+        ),
+    ],
+    output: Annotated[Path | None, typer.Option("--output", "-o", metavar="PATH", help="Write one file instead, its format chosen by the extension: .pdf .svg .png .gv .dot.")] = None,
+    output_format: Annotated[str | None, typer.Option("--format", "-f", metavar="dot", help="'dot': print the DOT text on standard output, write no file.")] = None,
+    compat: Annotated[bool, typer.Option("--compat", help="Exactly urdf_to_graphviz's DOT statements (for scripts that parse them).")] = False,
+    limits: Annotated[bool, typer.Option("--limits", help="Add joint limits (range, effort, velocity).")] = False,
+    inertial: Annotated[bool, typer.Option("--inertial", help="Add link masses.")] = False,
+    rankdir: Annotated[RankDir, typer.Option("--rankdir", case_sensitive=False, help="Top to bottom, or left to right.")] = RankDir.TB,
+    collapse_fixed: Annotated[bool, typer.Option("--collapse-fixed", help="Merge links joined by fixed joints into one box (for large robots).")] = False,
+    timeout: Annotated[float, typer.Option("--timeout", min=1, metavar="SECONDS", help="Give up rendering after this long.")] = 120,
+    package_path: PackagePathOption = None,
+) -> None:
+    """Draw the link tree, like urdf_to_graphviz: writes OUT.gv and OUT.pdf.
+
+    The default drawing labels each joint with its name and type (and axis),
+    coloured by type, with a legend and each joint's origin on its edge.
+    Rendering needs the Graphviz program 'dot'. Children follow the order of
+    their joints' names. Exit 0; 1 when the model has errors (nothing is
+    written); 2 when the input cannot be read, an output cannot be written,
+    or dot is missing or fails (the DOT file is still written).
+    """
+    paths, mappings = split_inputs(inputs)
+    if len(paths) > 2:
+        raise fail(f"graph takes a file and an optional output name, got {len(paths)} paths")
+    if output_format is not None and output_format.lower() != "dot":
+        raise typer.BadParameter(f"unknown format {output_format!r}; the only one is dot", param_hint="--format")
+    if sum(x is not None for x in (output, output_format, paths[1] if len(paths) == 2 else None)) > 1:
+        raise fail("give only one of OUT, --output and --format")
+    output_kind = EXTENSIONS.get(output.suffix.lower()) if output is not None else None
+    if output is not None and output_kind is None:
+        raise fail(f"{output}: unknown extension; use one of {' '.join(EXTENSIONS)}")
+    loaded = load_model(paths[0], mappings, package_path)
+    if report_errors(loaded) or (start := start_link(loaded, None)) is None:
+        raise typer.Exit(Exit.PROBLEMS)
+    robot = loaded.robot
+    dot = compat_dot(robot, start) if compat else styled_dot(robot, start, Style(limits, inertial, rankdir.value, collapse_fixed))
+    if output_format is not None:
+        sys.stdout.write(dot)
+        return
+    inputs_read = [paths[0], *loaded.document.includes]
+    if output is not None:
+        write_one(dot, output, output_kind, timeout, inputs_read)
+        return
+    base = paths[1] if len(paths) == 2 else (robot.name or "robot").replace("/", "_")
+    write(Path(f"{base}.gv"), dot, inputs_read)
+    make_picture(dot, Path(f"{base}.pdf"), "pdf", timeout, inputs_read, Path(f"{base}.gv"))
+
+
+def write_one(dot: str, output: Path, kind: str, timeout: float, inputs: list[str]) -> None:
+    """-o PATH: DOT text, or a rendered picture (and its DOT beside it when dot is missing)."""
+    if kind == "dot":
+        write(output, dot, inputs)
+        return
+    make_picture(dot, output, kind, timeout, inputs, None)
+
+
+def make_picture(dot: str, output: Path, kind: str, timeout: float, inputs: list[str], dot_file: Path | None) -> None:
+    """Render and write ``output``; on failure, say so (and where the DOT is) and exit 2."""
+    try:
+        picture = render(dot, kind, timeout)
+    except RenderError as error:
+        if dot_file is None:
+            dot_file = output.with_suffix(".gv")
+            write(dot_file, dot, inputs)
+        stderr.print(f"urdfcli: cannot make {output}: {error}; the graph is in {dot_file}", markup=False)
+        raise typer.Exit(Exit.CANNOT_RUN) from None
+    write(output, picture, inputs)
+
+
+def write(path: Path, data: str | bytes, inputs: list[str]) -> None:
+    try:
+        write_atomic(path, data, inputs)
+    except OutputError as error:
+        raise fail(str(error)) from None
+    stdout.print(f"Created file {path}", markup=False, highlight=False)
