@@ -88,7 +88,7 @@ def start_link(loaded: Loaded, from_link: str | None) -> str | None:
     if from_link is not None:
         if from_link not in robot.links:
             close = difflib.get_close_matches(from_link, list(robot.links), n=3)
-            suggestion = f"; did you mean {', '.join(repr(c) for c in close)}?" if close else ""
+            suggestion = f"; did you mean {' or '.join(repr(c) for c in close)}?" if close else ""
             raise fail(f"no link named {from_link!r} in robot {robot.name!r}{suggestion}")
         return from_link
     if loaded.root is None:

@@ -16,7 +16,7 @@ from dataclasses import dataclass
 
 from rich.text import Text
 
-from ..kinematics import children_by_joint_name, walk_all
+from ..kinematics import depth_and_leaves, walk_all
 from ..model import JOINT_TYPES, MOVING_AXIS_TYPES, Joint, Link, Robot, Vec3
 from ..numbers import format_number
 
@@ -142,15 +142,14 @@ def tree_rows(robot: Robot, start: str) -> list[Row]:
 
 
 def summarise(robot: Robot, rows: list[Row]) -> Summary:
-    children = children_by_joint_name(robot)
-    joints = Counter(row.joint.type or "unknown" for row in rows if row.joint is not None)
-    entered = [row for row in rows if not row.repeat]
+    """Counts over all ``rows`` (the whole tree below their first link)."""
+    depth, leaves = depth_and_leaves(robot, rows[0].link)
     return Summary(
-        links=len(entered),
-        joints=joints,
+        links=sum(1 for row in rows if not row.repeat),
+        joints=Counter(row.joint.type or "unknown" for row in rows if row.joint is not None),
         dof=sum(DOF.get(row.joint.type or "", 0) for row in rows if row.joint is not None),
-        depth=max(row.depth for row in rows),
-        leaves=sum(1 for row in entered if not children.get(row.link)),
+        depth=depth,
+        leaves=len(leaves),
     )
 
 
@@ -181,19 +180,26 @@ def text_lines(robot: Robot, rows: list[Row], joints: bool = True, ascii_only: b
             line.append("".join(through if is_open else blank for is_open in open_levels[1:]), style="bright_black")
             line.append(corner if row.last else branch, style="bright_black")
         open_levels.append(not row.last)
-        line.append(row.link, style="bold green" if row.depth == 0 else "bold")
-        if row.repeat:
-            line.append(f" {again}", style="red")
+        line.append(printable(row.link), style="bold green" if row.depth == 0 else "bold")
         if joints and row.joint is not None:
             line.append(f"  {arrow} ", style="bright_black")
-            line.append(row.joint.name, style="cyan")
+            line.append(printable(row.joint.name), style="cyan")
             line.append(" (", style="bright_black")
             line.append(row.joint.type or "unknown type", style=TYPE_STYLES.get(row.joint.type or "", "red"))
-            line.append("".join(", " + part for part in joint_details(row.joint, ascii_only)), style="bright_black")
+            line.append(printable("".join(", " + part for part in joint_details(row.joint, ascii_only))), style="bright_black")
             line.append(")", style="bright_black")
+        if row.repeat:
+            line.append(f"  {again}", style="red")
         if row.hidden:
             line.append(f"  {more} {plural(row.hidden, 'link')} below", style="bright_black")
         yield line
+
+
+def printable(text: str) -> str:
+    """A name on one line: control characters shown as escapes."""
+    if text.isprintable():
+        return text
+    return "".join(c if c.isprintable() else c.encode("unicode_escape").decode("ascii") for c in text)
 
 
 # -- JSON -------------------------------------------------------------------------
