@@ -15,11 +15,21 @@ from ..kinematics import roots
 from ..load import InputError, LoadOptions, load
 from ..loaded import Loaded
 from ..packages import PackageError
-from .common import Exit, InputsArgument, PackagePathOption, fail, split_inputs, stderr, stdout
+from .common import Exit, PackagePathOption, fail, split_inputs, stderr, stdout
+
+
+FileArgument = Annotated[
+    list[str],
+    typer.Argument(
+        metavar="FILE [NAME:=VALUE]...",
+        help="URDF or xacro file ('-' reads standard input); NAME:=VALUE sets a xacro argument.",
+        show_default=False,
+    ),
+]
 
 
 def tree(
-    inputs: InputsArgument,
+    inputs: FileArgument,
     max_depth: Annotated[int | None, typer.Option("--max-depth", min=0, metavar="N", help="Show links down to depth N (the start link is depth 0).")] = None,
     from_link: Annotated[str | None, typer.Option("--from", metavar="LINK", help="Show the subtree below LINK instead of the whole tree.")] = None,
     no_joints: Annotated[bool, typer.Option("--no-joints", help="Show link names only.")] = False,
