@@ -288,3 +288,10 @@ def test_format_dot_prints_and_writes_nothing(tmp_path):
     assert list(tmp_path.iterdir()) == []
     clash = run_cli("graph", "--format", "dot", "-o", "x.pdf", str(CRANE), cwd=tmp_path)
     assert clash.returncode == 2
+
+
+def test_readme_example_picture_is_committed():
+    readme = (FIXTURES.parent / "README.md").read_text(encoding="utf-8")
+    assert "(docs/images/crane_graph.png)" in readme
+    png = (FIXTURES.parent / "docs" / "images" / "crane_graph.png").read_bytes()
+    assert png.startswith(b"\x89PNG") and len(png) > 10000

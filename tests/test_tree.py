@@ -219,3 +219,12 @@ def test_a_deep_chain_serialises(tmp_path, cli):
     finally:
         sys.setrecursionlimit(limit)
     assert data["summary"] == {"links": 3000, "joints": {"continuous": 2999}, "dof": 2999, "depth": 2999, "leaf_links": 1}
+
+
+def test_readme_shows_the_real_tree_of_the_bundled_example():
+    readme = (FIXTURES.parent / "README.md").read_text(encoding="utf-8")
+    command = "$ urdfcli tree fixtures/urdf02_gazebo/urdf/car.urdf.xacro\n"
+    shown = readme.split(command, 1)[1].split("```", 1)[0]
+    result = run_cli("tree", "fixtures/urdf02_gazebo/urdf/car.urdf.xacro", cwd=FIXTURES.parent)
+    assert result.returncode == 0
+    assert shown == result.stdout.decode()
