@@ -174,6 +174,9 @@ class _Session:
         except OSError as error:
             xacro.filestack.pop()
             raise xacro.XacroException(f"cannot include {filename}: {error.strerror}", exc=error) from None
+        if not data.lstrip(b"\xef\xbb\xbf \t\r\n").startswith(b"<"):  # never show a line of a non-XML file
+            xacro.filestack.pop()
+            raise xacro.XacroException(f"cannot include {display_path(path)}: it is not an XML file")
         try:
             root = parse_bytes(data)
         except XmlError as error:

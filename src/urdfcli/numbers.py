@@ -24,22 +24,29 @@ class NumberError(ValueError):
         self.reason = reason
 
 
+def shown(text: str, limit: int = 60) -> str:
+    """``text`` quoted for a message, shortened when it is long."""
+    if len(text) <= limit:
+        return f"'{text}'"
+    return f"'{text[:limit]}...' ({len(text)} characters)"
+
+
 def parse_double(text: str) -> float:
     body = text.lstrip(" \t\n\r\f\v")
     if _DECIMAL.fullmatch(body):
         value = float(body)
         if math.isinf(value):
-            raise NumberError("V002", f"'{text}' overflows a double")
+            raise NumberError("V002", f"{shown(text)} overflows a double")
         return value
     if _NON_FINITE.fullmatch(body.strip()):
-        raise NumberError("V002", f"'{text}' is not a finite number")
+        raise NumberError("V002", f"{shown(text)} is not a finite number")
     if _DECIMAL.fullmatch(body.rstrip()):
-        raise NumberError("V001", f"'{text}' is not a number: it ends in white space")
+        raise NumberError("V001", f"{shown(text)} is not a number: it ends in white space")
     return _malformed(text)
 
 
 def _malformed(text: str):
-    raise NumberError("V001", f"'{text}' is not a number")
+    raise NumberError("V001", f"{shown(text)} is not a number")
 
 
 def parse_vector(text: str, length: int = 3) -> tuple[float, ...]:
@@ -53,7 +60,7 @@ def parse_vector(text: str, length: int = 3) -> tuple[float, ...]:
 
 class VectorLengthError(ValueError):
     def __init__(self, found: int, expected: int, text: str):
-        super().__init__(f"'{text}' has {found} components, {expected} expected")
+        super().__init__(f"{shown(text)} has {found} components, {expected} expected")
         self.found = found
         self.expected = expected
         self.reason = str(self)

@@ -178,12 +178,13 @@ def safe_eval(expr, globals, locals=None):
 
 
 # -- the time and memory bound ------------------------------------------------------
-def bounded(function, *args, seconds: float = TIMEOUT_SECONDS, memory_mib: int = MEMORY_MIB):
-    """``function(*args)`` in a forked child with at most ``seconds`` and ``memory_mib`` more memory.
+def bounded(function, *args):
+    """``function(*args)`` in a forked child with at most TIMEOUT_SECONDS and MEMORY_MIB more memory.
 
     Returns its result or raises its exception; raises LimitExceeded when the
     child runs out of time or memory. Where fork is missing, runs in-process.
     """
+    seconds, memory_mib = TIMEOUT_SECONDS, MEMORY_MIB
     if not hasattr(os, "fork"):
         return function(*args)
     read_end, write_end = os.pipe()
