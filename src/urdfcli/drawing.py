@@ -30,7 +30,6 @@ JOINT_COLOURS = {
     "planar": "#9467bd",
 }
 UNKNOWN_COLOUR = "#000000"
-RENDER_FORMATS = ("pdf", "svg", "png")
 DOT_PACKAGE_HINT = "install Graphviz (Debian/Ubuntu: sudo apt-get install graphviz)"
 
 
@@ -105,7 +104,6 @@ class Style:
     inertial: bool = False
     rankdir: str = "TB"
     collapse_fixed: bool = False
-    legend: bool = True
 
 
 def quote(text: str) -> str:
@@ -193,7 +191,7 @@ def styled_dot(robot: Robot, root: str, style: Style = Style()) -> str:
         edge_label = f", label={quote(origin)}" if origin else ""
         lines.append(f"{link_id(head[joint.parent])} -> {node} [color={quote(colour)}{edge_label}];")
         lines.append(f"{node} -> {link_id(head[link])} [color={quote(colour)}];")
-    if style.legend and used_types:
+    if used_types:
         lines.append(legend([t for t in JOINT_COLOURS if t in used_types]))
     lines.append("}")
     return "".join(line + "\n" for line in lines)

@@ -9,7 +9,7 @@ from typing import Annotated
 
 import typer
 
-from ..drawing import RENDER_FORMATS, RenderError, Style, compat_dot, render, styled_dot
+from ..drawing import RenderError, Style, compat_dot, render, styled_dot
 from ..output import OutputError, write_atomic
 from .common import Exit, PackagePathOption, fail, split_inputs, stderr, stdout
 from .tree import load_model, report_errors, start_link
@@ -70,24 +70,19 @@ def graph(
         sys.stdout.write(dot)
         return
     inputs_read = [paths[0], *loaded.document.includes]
-    if output is not None:
-        write_one(dot, output, output_kind, timeout, inputs_read)
-        return
-    base = paths[1] if len(paths) == 2 else (robot.name or "robot").replace("/", "_")
-    write(Path(f"{base}.gv"), dot, inputs_read)
-    make_picture(dot, Path(f"{base}.pdf"), "pdf", timeout, inputs_read, Path(f"{base}.gv"))
-
-
-def write_one(dot: str, output: Path, kind: str, timeout: float, inputs: list[str]) -> None:
-    """-o PATH: DOT text, or a rendered picture (and its DOT beside it when dot is missing)."""
-    if kind == "dot":
-        write(output, dot, inputs)
-        return
-    make_picture(dot, output, kind, timeout, inputs, None)
+    if output is not None and output_kind == "dot":
+        write(output, dot, inputs_read)
+    elif output is not None:
+        make_picture(dot, output, output_kind, timeout, inputs_read, None)
+    else:
+        base = paths[1] if len(paths) == 2 else (robot.name or "robot").replace("/", "_")
+        write(Path(f"{base}.gv"), dot, inputs_read)
+        make_picture(dot, Path(f"{base}.pdf"), "pdf", timeout, inputs_read, Path(f"{base}.gv"))
 
 
 def make_picture(dot: str, output: Path, kind: str, timeout: float, inputs: list[str], dot_file: Path | None) -> None:
-    """Render and write ``output``; on failure, say so (and where the DOT is) and exit 2."""
+    """Render and write ``output``; on failure, say so and exit 2, with the DOT
+    kept in ``dot_file`` (written now, beside ``output``, when not given)."""
     try:
         picture = render(dot, kind, timeout)
     except RenderError as error:
