@@ -4,7 +4,6 @@ from __future__ import annotations
 
 import contextlib
 import time
-from concurrent.futures import ProcessPoolExecutor
 from pathlib import Path
 from typing import Annotated
 
@@ -115,7 +114,12 @@ def config_for(file: str, explicit: Path | None) -> Config:
 def run(work: list[Job], jobs: int) -> list:
     """Each job's result, in order; in processes when asked, with a progress bar on long runs."""
     parallel = (jobs == 0 or jobs > 1) and len(work) > 1 and not any(job.path == STDIN for job in work)
-    pool = ProcessPoolExecutor(max_workers=jobs or None) if parallel else contextlib.nullcontext()
+    if parallel:
+        from concurrent.futures import ProcessPoolExecutor  # only parallel runs pay for it
+
+        pool = ProcessPoolExecutor(max_workers=jobs or None)
+    else:
+        pool = contextlib.nullcontext()
     outcomes = []
     start, progress, task = time.monotonic(), None, None
     with pool:
