@@ -432,9 +432,11 @@ def test_bad_options_exit_2_in_one_line(args, message):
     assert message in result.stderr.decode() and "Traceback" not in result.stderr.decode()
 
 
-def test_missing_file_exits_2():
-    result = run_cli("inertia", "no/such.urdf")
+@pytest.mark.parametrize("output_format", ["text", "json"])
+def test_missing_file_exits_2(output_format):
+    result = run_cli("inertia", "--format", output_format, "no/such.urdf")
     assert result.returncode == 2 and "no such file" in result.stderr.decode()
+    assert "Traceback" not in result.stderr.decode() and result.stdout == b""
 
 
 def test_malformed_input_exits_1_with_its_error(tmp_path):

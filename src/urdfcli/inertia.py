@@ -106,8 +106,8 @@ def resolver_of(loaded: Loaded) -> PackageResolver:
 def implied(loaded: Loaded, link: Link, density: float | None = None) -> Implied:
     """The body the link's collision shapes (else its visual shapes) make, with the
     declared mass spread by volume, or ``density`` times the volume when given."""
-    kind, shapes = ("collision", link.collisions) if link.collisions else ("visual", link.visuals)
-    shapes = tuple(s for s in shapes if s.geometry is not None)
+    collisions = tuple(s for s in link.collisions if s.geometry is not None)
+    kind, shapes = ("collision", collisions) if collisions else ("visual", tuple(s for s in link.visuals if s.geometry is not None))
     if not shapes:
         return Implied(None, "no collision or visual geometry")
     names = ", ".join(s.geometry.kind for s in shapes)

@@ -54,6 +54,8 @@ def inertia(
     if output_format == "json" and (suggest or xacro):
         raise fail("--suggest and --xacro print XML; use them with the text format")
     results, unreadable = load_all(inputs, package_path, checks="none")
+    if not results:
+        raise typer.Exit(Exit.CANNOT_RUN)
     reports = [audit_module.audit(loaded, tolerance, density) if loaded.robot is not None and loaded.robot.element is not None else None for loaded in results]
     for loaded in results:
         for diagnostic in loaded.diagnostics:
