@@ -5,17 +5,23 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 from functools import cached_property
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 from lxml import etree
 
 from .diagnostics import Location
-from .expansion import Origin
+
+if TYPE_CHECKING:
+    from .expansion import Origin
 
 NAMED = {"link", "joint", "material", "transmission", "gazebo"}
 
 
 def tag_name(element: etree._Element) -> str:
     """The tag as tinyxml2 (urdfdom) sees it: the prefix kept, a default namespace ignored."""
+    tag = element.tag
+    if isinstance(tag, str) and "{" not in tag and ":" not in tag:
+        return tag  # no namespace and no prefix: the common case, and much faster
     qname = etree.QName(element)
     return f"{element.prefix}:{qname.localname}" if element.prefix else qname.localname
 

@@ -4,8 +4,8 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 from functools import cached_property
+from typing import TYPE_CHECKING
 
-import networkx as nx
 from lxml import etree
 
 from .diagnostics import Diagnostic, Severity
@@ -14,12 +14,14 @@ from .model import Joint, Robot
 from .packages import PackageResolver
 from .rules import rule
 
+if TYPE_CHECKING:
+    import networkx as nx
+
 
 @dataclass
 class Loaded:
     document: Document
     robot: Robot | None = None
-    graph: nx.DiGraph | None = None
     diagnostics: list[Diagnostic] = field(default_factory=list)
     resolver: PackageResolver | None = None  # finds package:// files (meshes) with the run's -P options
 
@@ -47,8 +49,18 @@ class Loaded:
         return self._parent_joints.get(link)
 
     @cached_property
+    def graph(self) -> nx.DiGraph | None:
+        """The kinematic tree as a networkx DiGraph (links as nodes, joints on the
+        edges), built on first use: most runs never need networkx."""
+        if self.robot is None or self.robot.element is None:
+            return None
+        from .kinematics import build_graph
+
+        return build_graph(self.robot)
+
+    @cached_property
     def root(self) -> str | None:
-        if self.robot is None or self.graph is None:
+        if self.robot is None or self.robot.element is None:
             return None
         from .kinematics import roots
 

@@ -160,8 +160,7 @@ class Reader:
             self.report("V003", f"{tag_name(element)} {attribute}: {error.reason}", element, hint)
         return None
 
-    def pose(self, parent: etree._Element) -> Pose:
-        origin = parent.find("origin")
+    def pose(self, origin: etree._Element | None) -> Pose:
         if origin is None:
             return Pose()
         return Pose(self.vector(origin, "xyz", (0.0, 0.0, 0.0)) or (0.0, 0.0, 0.0), self.vector(origin, "rpy", (0.0, 0.0, 0.0)) or (0.0, 0.0, 0.0))
@@ -194,17 +193,17 @@ class Reader:
         if name is None:
             self.report("N003", "<material> has no 'name' attribute", element)
             return None
-        texture = element.find("texture")
+        found = first_children(element)
+        texture = found.get("texture")
         texture_file = texture.get("filename") if texture is not None else None
-        color = element.find("color")
+        color = found.get("color")
         rgba = self.rgba(element, color) if color is not None and color.get("rgba") is not None else None
         if top_level and rgba is None and texture_file is None:
             hint = "did you mean rgba=?" if color is not None and color.get("rgb") is not None else None
             self.report("M001", f"material '{name}' has neither <color rgba> nor <texture filename>", element, hint)
         return Material(name, element, rgba, texture_file)
 
-    def geometry(self, parent: etree._Element) -> Geometry | None:
-        element = parent.find("geometry")
+    def geometry(self, parent: etree._Element, element: etree._Element | None) -> Geometry | None:
         if element is None:
             self.report("V005", f"<{tag_name(parent)}> has no <geometry>", parent)
             return None
@@ -251,11 +250,12 @@ class Reader:
         return None
 
     def shape(self, element: etree._Element, visual: bool) -> Shape:
-        origin = self.pose(element)
-        geometry = self.geometry(element)
+        found = first_children(element)
+        origin = self.pose(found.get("origin"))
+        geometry = self.geometry(element, found.get("geometry"))
         material_name = None
         if visual:
-            material = element.find("material")
+            material = found.get("material")
             if material is not None:
                 parsed = self.material(material, top_level=False)
                 material_name = parsed.name if parsed else None
@@ -264,14 +264,15 @@ class Reader:
         return Shape(element, origin, geometry, material_name)
 
     def inertial(self, element: etree._Element) -> Inertial:
-        origin = self.pose(element)
-        mass_element = element.find("mass")
+        found = first_children(element)
+        origin = self.pose(found.get("origin"))
+        mass_element = found.get("mass")
         mass = None
         if mass_element is None:
             self.report("V005", "<inertial> has no <mass>", element)
         else:
             mass = self.number(mass_element, "value", required=True)
-        inertia_element = element.find("inertia")
+        inertia_element = found.get("inertia")
         inertia = None
         if inertia_element is None:
             self.report("V005", "<inertial> has no <inertia>", element)
@@ -285,10 +286,10 @@ class Reader:
         if name is None:
             self.report("N001", "<link> has no 'name' attribute", element)
             name = ""
-        inertial_element = element.find("inertial")
+        inertial_element = next(element.iterchildren("inertial"), None)
         inertial = self.inertial(inertial_element) if inertial_element is not None else None
-        visuals = tuple(self.shape(v, visual=True) for v in element.iterfind("visual"))
-        collisions = tuple(self.shape(c, visual=False) for c in element.iterfind("collision"))
+        visuals = tuple([self.shape(v, visual=True) for v in element.iterchildren("visual")])
+        collisions = tuple([self.shape(c, visual=False) for c in element.iterchildren("collision")])
         return Link(name, element, inertial, visuals, collisions)
 
     def joint_limit(self, joint_name: str, element: etree._Element) -> Limit:
@@ -318,26 +319,27 @@ class Reader:
         elif joint_type not in JOINT_TYPES:
             self.report("J002", f"joint '{shown}' has unknown type '{joint_type}'", element, f"the types are {', '.join(JOINT_TYPES)}")
             joint_type = None
-        origin = self.pose(element)
+        found = first_children(element)
+        origin = self.pose(found.get("origin"))
         axis: Vec3 = (1.0, 0.0, 0.0)
-        axis_element = element.find("axis")
+        axis_element = found.get("axis")
         if axis_element is not None and joint_type not in ("fixed", "floating"):
             axis = self.vector(axis_element, "xyz", (1.0, 0.0, 0.0)) or axis
-        limit_element = element.find("limit")
+        limit_element = found.get("limit")
         limit = self.joint_limit(shown, limit_element) if limit_element is not None else None
         if limit_element is None and joint_type in ("revolute", "prismatic"):
             self.report("J003", f"{joint_type} joint '{shown}' has no <limit>", element, 'add <limit lower="..." upper="..." effort="..." velocity="..."/>')
-        safety = element.find("safety_controller")
+        safety = found.get("safety_controller")
         if safety is not None:
             for attribute in ("soft_lower_limit", "soft_upper_limit", "k_position"):
                 self.number(safety, attribute, what=what)
             self.number(safety, "k_velocity", required=True, what=what)
-        calibration = element.find("calibration")
+        calibration = found.get("calibration")
         if calibration is not None:
             for attribute in ("reference_position", "rising", "falling"):
                 self.number(calibration, attribute, what=what)
         mimic = None
-        mimic_element = element.find("mimic")
+        mimic_element = found.get("mimic")
         if mimic_element is not None:
             multiplier = self.number(mimic_element, "multiplier", what=what)
             offset = self.number(mimic_element, "offset", what=what)
@@ -346,22 +348,21 @@ class Reader:
                 self.report("V004", f"<mimic> of joint '{shown}' has no 'joint' attribute", mimic_element)
             else:
                 mimic = Mimic(target, 1.0 if multiplier is None else multiplier, offset or 0.0)
-        dynamics = element.find("dynamics")
+        dynamics = found.get("dynamics")
         if dynamics is not None:
             if dynamics.get("damping") is None and dynamics.get("friction") is None:
                 self.report("J006", f"<dynamics> of joint '{shown}' has neither damping nor friction", dynamics)
             self.number(dynamics, "damping", what=what)
             self.number(dynamics, "friction", what=what)
-        parent = self._link_ref(element, "parent")
-        child = self._link_ref(element, "child")
+        parent = self._link_ref(found.get("parent"))
+        child = self._link_ref(found.get("child"))
         if parent is None or child is None:
             missing = " and ".join(t for t, v in (("<parent link>", parent), ("<child link>", child)) if v is None)
             self.report("J004", f"joint '{shown}' has no {missing}", element)
         return Joint(name if name is not None else "", element, joint_type, parent, child, origin, axis, limit, mimic)
 
     @staticmethod
-    def _link_ref(joint: etree._Element, tag: str) -> str | None:
-        element = joint.find(tag)
+    def _link_ref(element: etree._Element | None) -> str | None:
         value = element.get("link") if element is not None else None
         return value or None  # urdfdom treats an empty name as missing
 
@@ -431,6 +432,15 @@ class Reader:
                     material.element,
                     "consumers keep one colour per name: give each colour its own name",
                 )
+
+
+def first_children(element: etree._Element) -> dict[str, etree._Element]:
+    """The first child of each tag, as ``element.find(tag)`` gives it, in one pass
+    over the children (a model has millions of these lookups)."""
+    found: dict[str, etree._Element] = {}
+    for child in element:
+        found.setdefault(child.tag, child)
+    return found
 
 
 def _where(document: Document, element: etree._Element) -> str:

@@ -12,6 +12,7 @@ import math
 import re
 
 _DECIMAL = re.compile(r"[+-]?(?:\d+\.?\d*|\.\d+)(?:[eE][+-]?\d+)?")
+_DECIMAL_CHARACTERS = "0123456789.eE+-"
 _NON_FINITE = re.compile(r"[+-]?(?:nan|inf|infinity)", re.IGNORECASE)
 
 
@@ -32,6 +33,16 @@ def shown(text: str, limit: int = 60) -> str:
 
 
 def parse_double(text: str) -> float:
+    if text and not text.strip(_DECIMAL_CHARACTERS):
+        # Only digits, signs, points and exponents: here float() accepts exactly
+        # what _DECIMAL matches, and is much faster (models hold millions of numbers).
+        try:
+            value = float(text)
+        except ValueError:
+            pass
+        else:
+            if not math.isinf(value):
+                return value
     body = text.lstrip(" \t\n\r\f\v")
     if _DECIMAL.fullmatch(body):
         value = float(body)
@@ -51,8 +62,7 @@ def _malformed(text: str):
 
 def parse_vector(text: str, length: int = 3) -> tuple[float, ...]:
     """Raises NumberError, or VectorLengthError for a wrong count of components."""
-    pieces = [piece for piece in text.split(" ") if piece]
-    values = tuple(parse_double(piece) for piece in pieces)
+    values = tuple([parse_double(piece) for piece in text.split(" ") if piece])
     if len(values) != length:
         raise VectorLengthError(len(values), length, text)
     return values
