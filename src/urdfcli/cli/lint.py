@@ -44,8 +44,8 @@ def lint(
 ) -> None:
     """Lint URDF/xacro files against documented, configurable rules.
 
-    Configuration comes from [tool.urdfcli] in the nearest pyproject.toml, or
-    urdfcli.toml; `urdfcli rules` lists the rules. Exit 0 when nothing remains,
+    Configuration comes from the tool.urdfcli table of the nearest
+    pyproject.toml, or from urdfcli.toml; `urdfcli rules` lists the rules. Exit 0 when nothing remains,
     1 when a warning or error remains, 2 when it cannot run.
     """
     if output_format not in LINT_FORMATS:
