@@ -59,21 +59,23 @@ class Document:
     def _column_here(self, element: etree._Element) -> int | None:
         if self.file is None or element.sourceline is None:
             return None
-        same_line = [e for e in self._line_elements(element.sourceline) if e.tag == element.tag]
-        try:
-            occurrence = same_line.index(element) + 1
-        except ValueError:
+        occurrence = self._occurrences.get(element)
+        if occurrence is None:
             return None
         return source_column(str(self.file), element.sourceline, tag_name(element), occurrence)
 
-    def _line_elements(self, line: int) -> list[etree._Element]:
-        cache = self.__dict__.setdefault("_by_line", None)
-        if cache is None:
-            cache = {}
-            for element in self.root.iter(etree.Element):
-                cache.setdefault(element.sourceline, []).append(element)
-            self.__dict__["_by_line"] = cache
-        return cache.get(line, [])
+    @cached_property
+    def _occurrences(self) -> dict[etree._Element, int]:
+        """Each element's rank among the elements of its tag starting on its line (from 1).
+
+        Computed once: a model written on one line has all its elements there.
+        """
+        counts: dict[tuple[int | None, str], int] = {}
+        found = {}
+        for element in self.root.iter(etree.Element):
+            key = (element.sourceline, element.tag)
+            counts[key] = found[element] = counts.get(key, 0) + 1
+        return found
 
     @staticmethod
     def element_path(element: etree._Element | None) -> str | None:
@@ -124,11 +126,21 @@ def source_column(file: str, line: int | None, tag: str, occurrence: int) -> int
     lines = _source_lines(file)
     if line > len(lines):
         return None
-    text = lines[line - 1]
-    needle = "<" + tag
-    start = -1
-    for _ in range(occurrence):
-        start = text.find(needle, start + 1)
-        if start < 0:
-            return None
-    return start + 1
+    starts = _tag_starts(file, line, "<" + tag)
+    return starts[occurrence - 1] + 1 if occurrence <= len(starts) else None
+
+
+_STARTS: dict[tuple[str, int, str], list[int]] = {}
+
+
+def _tag_starts(file: str, line: int, needle: str) -> list[int]:
+    """Where ``needle`` starts on a source line, found once per line and tag."""
+    key = (file, line, needle)
+    if key not in _STARTS:
+        text = _source_lines(file)[line - 1]
+        starts, start = [], text.find(needle)
+        while start >= 0:
+            starts.append(start)
+            start = text.find(needle, start + 1)
+        _STARTS[key] = starts
+    return _STARTS[key]
