@@ -76,7 +76,7 @@ def main() -> None:
         from click.exceptions import ClickException, UsageError
 
     try:
-        code = app(standalone_mode=False)
+        code = app(prog_name="urdfcli", standalone_mode=False)
     except UsageError as error:
         command = error.ctx.command_path if error.ctx is not None else "urdfcli"
         sys.stderr.write(f"urdfcli: {_one_line(error.format_message())} (see '{command} -h')\n")
