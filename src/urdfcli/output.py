@@ -39,6 +39,8 @@ def write_atomic(out: Path, data: bytes | str, inputs: Iterable[str | Path] = ()
             stream.write(payload)
         os.chmod(temporary, 0o644)
         os.replace(temporary, out)
-    except BaseException:
+    except BaseException as error:
         Path(temporary).unlink(missing_ok=True)
+        if isinstance(error, OSError):
+            raise OutputError(f"{out}: cannot write: {error.strerror}") from None
         raise

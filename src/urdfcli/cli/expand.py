@@ -46,6 +46,6 @@ def expand(
         sys.stdout.write(text)
         return
     try:
-        write_atomic(output, text, [path])
+        write_atomic(output, text, [path, *document.includes])
     except OutputError as error:
         raise fail(str(error)) from None
