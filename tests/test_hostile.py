@@ -128,34 +128,53 @@ def test_xacro_include_of_a_non_xml_file_does_not_show_its_content(cli, tmp_path
 
 
 ESCAPES = {
-    "import": "${__import__('os').system('touch {marker}')}",
-    "class-walk": "${().__class__.__bases__[0].__subclasses__()}",
-    "base-walk": "${[].__class__.__base__}",
-    "vars-subclasses": "${[c for c in python.vars(python.type)['__subclasses__'](python.int.mro()[1]) "
-    "if 'Popen' in python.repr(c)][0](['touch', '{marker}'])}",
-    "generator-frame": "${python.list((x for x in [1]).gi_frame.f_globals)}",
-    "format-field": "${attribute_field.format((x for x in [1]))}",
-    "format-map": "${item_field.format_map(dict(x=[(y for y in [1])]))}",
-    "format-spec": "${spec_field.format(1, (x for x in [1]))}",
-    "type-three-args": "${python.type('A', (), dict())}",
-    "open": "${open('{marker}', 'w')}",
-    "private-attribute": "${xacro._symbols}",
-    "lambda-globals": "${(lambda: 0).__globals__}",
+    "import": ("${__import__('os').system('touch {marker}')}", "Use of invalid name(s): __import__"),
+    "class-walk": ("${().__class__.__bases__[0].__subclasses__()}", "Use of invalid name(s): "),
+    "base-walk": ("${[].__class__.__base__}", "Use of invalid name(s): "),
+    "vars-subclasses": (
+        "${[c for c in python.vars(python.type)['__subclasses__'](python.int.mro()[1]) "
+        "if 'Popen' in python.repr(c)][0](['touch', '{marker}'])}",
+        "name 'vars' is not defined",
+    ),
+    "vars-by-subscript": ("${python['vars'](python['type'])['_' + '_subclasses__'](python.int.mro()[1])}", "'vars'"),
+    "type-by-subscript": ("${python['type']('A', (), dict())}", "takes 1 positional argument but 3 were given"),
+    "type-three-args": ("${python.type('A', (), dict())}", "takes 1 positional argument but 3 were given"),
+    "generator-frame": ("${python.list((x for x in [1]).gi_frame.f_globals)}", "access to 'gi_frame' is not allowed"),
+    "class-method": ("${python.int.mro()[1]}", "access to 'mro' is not allowed"),
+    "format-field": ("${attribute_field.format((x for x in [1]))}", "format field '{0.gi_frame}' is not allowed"),
+    "format-map": ("${item_field.format_map(dict(x=[(y for y in [1])]))}", "format field '{x[0]}' is not allowed"),
+    "format-spec": ("${spec_field.format(1, (x for x in [1]))}", "format field '{1.gi_code}' is not allowed"),
+    "open": ("${open('{marker}', 'w')}", "name 'open' is not defined"),
+    "private-attribute": ("${xacro._symbols}", "access to '_symbols' is not allowed"),
+    "lambda-globals": ("${(lambda: 0).__globals__}", "Use of invalid name(s): __globals__"),
+    "function-attribute": ("${xacro.load_yaml.func_globals}", "access to 'func_globals' is not allowed"),
 }
 
 
-@pytest.mark.parametrize("expression", ESCAPES.values(), ids=ESCAPES.keys())
-def test_xacro_expressions_cannot_reach_python_internals(cli, tmp_path, expression):
+@pytest.mark.parametrize("expression, refusal", ESCAPES.values(), ids=ESCAPES.keys())
+def test_xacro_expressions_cannot_reach_python_internals(cli, tmp_path, expression, refusal):
     marker = tmp_path / "PWNED"
     path = write(tmp_path, "escape.urdf.xacro", xacro_robot(expression.replace("{marker}", str(marker))))
     for command in ("check", "expand"):
         result = cli(command, str(path))
         assert result.exit_code == 1, result.stdout
         assert f"{path}:1:" in result.stderr
-        assert "X003 error" in result.stderr
+        assert "X003 error" in result.stderr and refusal in result.stderr
         assert len(result.stderr.strip().splitlines()) <= 4
         assert_clean(result)
     assert not marker.exists()
+
+
+def test_no_symbol_can_replace_the_expression_guard():
+    """The guard is a parameter of the compiled expression, not a name looked up in the symbols."""
+
+    class Fake:
+        @staticmethod
+        def attribute(obj, name):
+            return "replaced"
+
+    with pytest.raises(sandbox.Refused, match="access to 'gi_frame' is not allowed"):
+        sandbox.safe_eval("(x for x in [1]).gi_frame", {"__urdfcli_guard__": Fake})
 
 
 @pytest.mark.parametrize(

@@ -206,6 +206,7 @@ class _Session:
         xacro.parse = self.parse
         self.saved["safe_eval"] = xacro.safe_eval
         xacro.safe_eval = sandbox.safe_eval
+        sandbox.restrict(xacro._global_symbols)
         self.saved["_eval_find"] = xacro.substitution_args._eval_find
         xacro.substitution_args._eval_find = self.find
         xacro.all_includes = []

@@ -8,7 +8,10 @@ urdfcli evaluates every expression through :func:`safe_eval` instead:
 
 - every ``a.b`` goes through :func:`attribute`, which refuses names starting
   with ``_`` and the attributes of frames, code, generators, functions,
-  classes and modules; ``vars`` is refused and ``type`` takes one argument;
+  classes and modules; the guard is a parameter of the compiled expression,
+  so no symbol can replace it;
+- ``python.vars`` is taken out of xacro's symbols and ``python.type`` takes
+  one argument (:func:`restrict`), so that ``python['vars']`` finds nothing;
 - ``str.format`` and ``format_map`` refuse fields that reach into an
   attribute or an item (``{0.x}``, ``{0[k]}``);
 - ``**``, ``*`` and ``<<`` refuse integers beyond :data:`MAX_BITS` bits and
@@ -156,8 +159,9 @@ def _compile(expression: str) -> types.CodeType:
         import xacro
 
         raise xacro.XacroException("Use of invalid name(s): ", ", ".join(invalid))
-    tree = ast.fix_missing_locations(_Rewrite().visit(tree))
-    return compile(tree, "<expression>", "eval")
+    body = _Rewrite().visit(tree).body
+    guarded = ast.Lambda(ast.arguments([], [ast.arg(_GUARD)], None, [], [], None, []), body)
+    return compile(ast.fix_missing_locations(ast.Expression(guarded)), "<expression>", "eval")
 
 
 def _names(tree: ast.AST) -> list[str]:
@@ -173,8 +177,16 @@ def _names(tree: ast.AST) -> list[str]:
 def safe_eval(expr, globals, locals=None):
     """Drop-in for ``xacro.safe_eval``: the same names allowed, nothing reachable beyond them."""
     code = _compile(expr.strip())
-    dict.update(globals, __builtins__={}, **{_GUARD: _Guard})
-    return eval(code, globals, locals)
+    dict.update(globals, __builtins__={})
+    return eval(code, globals, locals)(_Guard)
+
+
+def restrict(symbols: dict) -> None:
+    """Take out of xacro's global symbols what leads to Python's internals."""
+    python = symbols.get("python")
+    if isinstance(python, dict):
+        dict.pop(python, "vars", None)
+        dict.__setitem__(python, "type", _type_of)
 
 
 # -- the time and memory bound ------------------------------------------------------
