@@ -40,7 +40,21 @@ def test_volumes():
 def test_principal_moments_are_numpys_eigenvalues(values):
     tensor = mp.matrix(dict(zip(mp.KEYS, values)))
     expected = numpy.linalg.eigvalsh(numpy.array(tensor))
-    close(mp.principal_moments(tensor), expected, rel=1e-6, abs_=1e-7)
+    close(mp.principal_moments(tensor), expected, rel=1e-6, abs_=1e-7 * max(1.0, mp.scale_of(tensor)))
+
+
+@settings(max_examples=300, deadline=None)
+@given(st.lists(finite, min_size=6, max_size=6))
+def test_positive_semidefinite_agrees_with_numpy(values):
+    tensor = mp.matrix(dict(zip(mp.KEYS, values)))
+    smallest = numpy.linalg.eigvalsh(numpy.array(tensor))[0]
+    scale = max(mp.scale_of(tensor), 1e-300)
+    if abs(smallest) > 1e-6 * scale:  # clear cases only: the boundary is rounding
+        assert mp.is_positive_semidefinite(tensor) == (smallest > 0)
+
+
+def test_a_rank_one_tensor_is_positive_semidefinite():
+    assert mp.is_positive_semidefinite(mp.matrix(dict.fromkeys(mp.KEYS, 7.953125)))
 
 
 @settings(max_examples=100, deadline=None)

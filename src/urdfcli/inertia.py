@@ -294,10 +294,16 @@ def audit(loaded: Loaded, tolerance: float = TOLERANCE, density: float | None = 
     from .document import Document
 
     found = problems(loaded, tolerance, density)
+    by_link: dict[str, list] = {Document.element_path(link.element): [] for link in loaded.robot.links.values()}
+    for diagnostic in found:
+        path = diagnostic.element or ""
+        cuts = [i for i, c in enumerate(path) if c == "/"] + [len(path)]
+        prefix = next((path[:cut] for cut in cuts if path[:cut] in by_link), None)
+        if prefix is not None:
+            by_link[prefix].append(diagnostic)
     links = []
     for link in loaded.robot.links.values():
-        prefix = Document.element_path(link.element)
-        mine = tuple(d for d in found if d.element == prefix or (d.element or "").startswith(prefix + "/"))
+        mine = tuple(by_link[Document.element_path(link.element)])
         links.append(LinkReport(link, is_frame(link), assess(loaded, link, density), mine))
     return Report(loaded, tuple(links), total(loaded), tuple(found), tolerance)
 

@@ -79,45 +79,56 @@ def inertia(
         raise typer.Exit(Exit.PROBLEMS)
 
 
-def _row(label: str, value: str, style: str = "") -> None:
-    stdout.print(Text(f"    {label:<10} ", style="dim") + Text(value, style=style), soft_wrap=True)
+def _row(label: str, value: str, style: str = "") -> Text:
+    return Text(f"    {label:<10} ", style="dim") + Text(value, style=style)
 
 
 def print_report(report: audit_module.Report, show_name: bool) -> None:
     """The per-link table and the total on stdout; the problems with locations on stderr."""
+    lines = list(report_lines(report, show_name))
+    if stdout.is_terminal:
+        for line in lines:
+            stdout.print(line, soft_wrap=True)
+    else:  # plain text, written at once: rich's per-line rendering is slow on 100,000 links
+        sys.stdout.write("".join(line.plain + "\n" for line in lines))
+        sys.stdout.flush()
+    for diagnostic in report.problems:
+        print_diagnostic(stderr, diagnostic)
+
+
+def report_lines(report: audit_module.Report, show_name: bool):
+    """The report as styled lines."""
     number = audit_module.number
     loaded = report.loaded
     title = Text(f"robot '{loaded.robot.name}'", style="bold")
     if show_name:
         title.append(f"  ({loaded.document.shown})", style="dim")
-    stdout.print(title, soft_wrap=True)
+    yield title
     for entry in report.links:
         link, found = entry.link, entry.assessment
         if entry.frame and not entry.problems:
-            stdout.print(Text(link.name, style="bold") + Text("  massless frame link", style="dim"), soft_wrap=True)
+            yield Text(link.name, style="bold") + Text("  massless frame link", style="dim")
             continue
         inertial = link.inertial
         header = Text(link.name, style="bold")
         if inertial is not None and inertial.mass is not None:
             header.append(f"  mass {number(inertial.mass)}  com {' '.join(map(number, inertial.origin.xyz))}")
-        stdout.print(header, soft_wrap=True)
+        yield header
         if found is not None:
             expected = found.expected
-            _row("declared", audit_module.tensor_text(found.declared, expected))
-            _row("principal", " ".join(number(m) for m in massprops.principal_moments(found.declared)))
+            yield _row("declared", audit_module.tensor_text(found.declared, expected))
+            yield _row("principal", " ".join(number(m) for m in massprops.principal_moments(found.declared)))
             if expected is not None:
                 style = "yellow" if found.off(report.tolerance) else "green"
-                _row("expected", f"{audit_module.tensor_text(expected, found.declared)}  ({found.implied.source}; {found.difference:.1%} apart)", style)
+                yield _row("expected", f"{audit_module.tensor_text(expected, found.declared)}  ({found.implied.source}; {found.difference:.1%} apart)", style)
             else:
-                _row("expected", f"unknown: {found.implied.source}", "dim")
+                yield _row("expected", f"unknown: {found.implied.source}", "dim")
         if entry.problems:
-            _row("problems", ", ".join(f"{d.code} {rule(d.code).name}" for d in entry.problems), "yellow")
-    for diagnostic in report.problems:
-        print_diagnostic(stderr, diagnostic)
+            yield _row("problems", ", ".join(f"{d.code} {rule(d.code).name}" for d in entry.problems), "yellow")
     body = report.total
     if body is not None:
-        stdout.print(Text("total", style="bold") + Text(f"  mass {number(body.mass)}  com {' '.join(map(number, body.com))} (in '{loaded.root}' frame, joints at zero)"), soft_wrap=True)
-        _row("inertia", audit_module.tensor_text(body.tensor) + "  about the centre of mass")
+        yield Text("total", style="bold") + Text(f"  mass {number(body.mass)}  com {' '.join(map(number, body.com))} (in '{loaded.root}' frame, joints at zero)")
+        yield _row("inertia", audit_module.tensor_text(body.tensor) + "  about the centre of mass")
 
 
 def print_suggestions(report: audit_module.Report, density: float | None, xacro: bool) -> None:

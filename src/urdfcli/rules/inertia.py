@@ -138,8 +138,8 @@ def placeholder_repeated(loaded, options):
             assessment = found[link.name]
             if assessment is not None and assessment.expected is not None and not assessment.off(options["tolerance"]):
                 continue
-            others = [f"'{other.name}'" for other in links if other is not link]
-            shown = ", ".join(others[:3]) + (f" and {len(others) - 3} more" if len(others) > 3 else "")
+            others = [f"'{other.name}'" for other in links[:4] if other is not link][:3]
+            shown = ", ".join(others) + (f" and {len(links) - 4} more" if len(links) > 4 else "")
             yield loaded.diagnostic(
                 "I008",
                 f"link '{link.name}' has the same inertia ({inertia.tensor_text(tensor)}) as {shown}, links of very different size: a placeholder",
