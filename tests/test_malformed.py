@@ -462,3 +462,21 @@ def test_lint_reports_every_file_and_the_worst_exit_code(cli, tmp_path):
     assert result.exit_code == 2
     assert f"{broken}:1:" in result.stderr + result.stdout
     no_traceback(result)
+
+
+@pytest.mark.parametrize("where", ["main", "included"])
+def test_a_name_lxml_accepts_but_xacro_refuses(cli, tmp_path, where):
+    """U+FEFF is a name character for libxml2 (XML 1.0 5th edition) but not for xacro's expat."""
+    odd = f'<robot {XACRO} name="r">\n<link\ufeffx name="a"/>\n</robot>'
+    if where == "main":
+        path = write(tmp_path, "odd.urdf.xacro", odd)
+        located = f"{path}:2:"
+    else:
+        write(tmp_path, "odd.xacro", odd)
+        path = write(tmp_path, "main.urdf.xacro", f'<robot {XACRO} name="r"><xacro:include filename="odd.xacro"/></robot>')
+        located = "odd.xacro:2:"
+    result = cli("check", str(path))
+    assert result.exit_code == 1
+    assert located in result.stderr
+    assert "X001 error: xacro cannot read this document: not well-formed (invalid token)" in result.stderr
+    no_traceback(result)

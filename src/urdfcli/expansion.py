@@ -14,6 +14,7 @@ import io
 import os
 import re
 import xml.dom.minidom
+import xml.parsers.expat
 from collections.abc import Callable
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -92,7 +93,11 @@ def parse_origin(value: str, tag: str = "") -> Origin | None:
 
 def tagged_dom(root: etree._Element, file: str) -> xml.dom.minidom.Document:
     tag_origins(root, file)
-    return xml.dom.minidom.parseString(etree.tostring(root.getroottree(), encoding="utf-8"))
+    try:
+        return xml.dom.minidom.parseString(etree.tostring(root.getroottree(), encoding="utf-8"))
+    except xml.parsers.expat.ExpatError as error:  # XML 1.0 5th-edition names that xacro's expat refuses
+        message = f"xacro cannot read this document: {xml.parsers.expat.ErrorString(error.code)}"
+        raise ExpansionError(message, Origin(file, error.lineno, 0), file, code="X001") from None
 
 
 class _Session:
