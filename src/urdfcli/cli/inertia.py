@@ -80,7 +80,7 @@ def inertia(
 
 
 def _row(label: str, value: str, style: str = "") -> Text:
-    return Text(f"    {label:<10} ", style="dim") + Text(value, style=style)
+    return Text.assemble((f"    {label:<10} ", "dim"), (value, style))
 
 
 def print_report(report: audit_module.Report, show_name: bool) -> None:
@@ -100,17 +100,17 @@ def report_lines(report: audit_module.Report, show_name: bool):
     """The report as styled lines."""
     number = audit_module.number
     loaded = report.loaded
-    title = Text(f"robot '{loaded.robot.name}'", style="bold")
+    title = Text.assemble((f"robot '{loaded.robot.name}'", "bold"))
     if show_name:
         title.append(f"  ({loaded.document.shown})", style="dim")
     yield title
     for entry in report.links:
         link, found = entry.link, entry.assessment
         if entry.frame and not entry.problems:
-            yield Text(link.name, style="bold") + Text("  massless frame link", style="dim")
+            yield Text.assemble((link.name, "bold"), ("  massless frame link", "dim"))
             continue
         inertial = link.inertial
-        header = Text(link.name, style="bold")
+        header = Text.assemble((link.name, "bold"))
         if inertial is not None and inertial.mass is not None:
             header.append(f"  mass {number(inertial.mass)}  com {' '.join(map(number, inertial.origin.xyz))}")
         yield header
@@ -127,7 +127,7 @@ def report_lines(report: audit_module.Report, show_name: bool):
             yield _row("problems", ", ".join(f"{d.code} {rule(d.code).name}" for d in entry.problems), "yellow")
     body = report.total
     if body is not None:
-        yield Text("total", style="bold") + Text(f"  mass {number(body.mass)}  com {' '.join(map(number, body.com))} (in '{loaded.root}' frame, joints at zero)")
+        yield Text.assemble(("total", "bold"), f"  mass {number(body.mass)}  com {' '.join(map(number, body.com))} (in '{loaded.root}' frame, joints at zero)")
         yield _row("inertia", audit_module.tensor_text(body.tensor) + "  about the centre of mass")
 
 
