@@ -194,24 +194,20 @@ def huge(tmp_path_factory) -> dict[str, Path]:
     return {"wide": write(folder, "wide.urdf", wide_model(100_000)), "chain": write(folder, "chain.urdf", chain_model(20_000))}
 
 
-def test_a_100000_link_model_is_checked(cli, huge):
+@pytest.mark.parametrize(
+    "model, children, last",
+    [("wide", 99_999, "    child(99999):  l99999"), ("chain", 1, " " * 4 * 19_999 + "child(1):  l19999")],
+    ids=["100000-links", "20000-deep-chain"],
+)
+def test_huge_models_are_checked_without_recursion(cli, huge, model, children, last):
     started = time.monotonic()
-    result = cli("check", "--format", "check_urdf", str(huge["wide"]))
+    result = cli("check", "--format", "check_urdf", str(huge[model]))
     assert time.monotonic() - started < 60
     assert result.exit_code == 0
     lines = result.stdout.splitlines()
-    assert lines[2] == "root Link: l0 has 99999 child(ren)"
-    assert len(lines) == 3 + 99_999
-
-
-def test_a_20000_deep_chain_is_checked_without_recursion(cli, huge):
-    started = time.monotonic()
-    result = cli("check", "--format", "check_urdf", str(huge["chain"]))
-    assert time.monotonic() - started < 60
-    assert result.exit_code == 0
-    lines = result.stdout.splitlines()
-    assert len(lines) == 3 + 19_999
-    assert lines[-1] == " " * 4 * 19_999 + "child(1):  l19999"
+    assert lines[2] == f"root Link: l0 has {children} child(ren)"
+    assert len(lines) == {"wide": 3 + 99_999, "chain": 3 + 19_999}[model]
+    assert lines[-1] == last
 
 
 @pytest.mark.skipif(not available("tree"), reason="tree is not registered yet")
