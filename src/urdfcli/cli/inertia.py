@@ -38,11 +38,9 @@ def inertia(
 ) -> None:
     """Audit each link's mass, centre of mass and inertia against physics and its geometry.
 
-    Per link: the declared tensor, its principal moments, the tensor the collision
-    shapes (else the visual shapes) imply for the link's mass, and the problems.
-    Then the whole robot at zero joint positions: total mass, centre of mass in the
-    root link's frame, and the inertia about it. Exit 0 when nothing is found, 1 on
-    any warning or error, 2 when it cannot run.
+    Per link: the declared tensor, its principal moments, the tensor the collision shapes (else the visual shapes) imply for the link's mass, and the problems. Then the whole robot at zero joint positions: total mass, centre of mass in the root link's frame, and the inertia about it.
+
+    Exit 0 when nothing is found, 1 on any warning or error, 2 when it cannot run.
     """
     output_format = output_format.lower()
     if output_format not in FORMATS:
