@@ -37,7 +37,7 @@ FIXTURES = ROOT / "fixtures"
 GENERATED = ROOT / "benchmarks" / "generated"
 BIN = Path(sys.executable).parent
 SIZES = (1_000, 10_000, 100_000)
-RUNS = {1_000: 5, 10_000: 3, 100_000: 3}  # fewer repetitions where one run takes seconds
+RUNS = {1_000: 5, 10_000: 3, 100_000: 2}  # fewer repetitions where one run takes seconds
 SMALL = FIXTURES / "seed000" / "my_robot.urdf"
 MIXED_SIZES_KB = (5, 40, 100, 200)
 
@@ -59,6 +59,7 @@ def _seconds(value: float) -> str:
 
 def measure(command: list[str], runs: int) -> Measure:
     """Median wall time and median peak RSS of ``runs`` runs, output discarded."""
+    print("  " + " ".join(Path(part).name if os.sep in part else part for part in command[:3]) + (" ..." if len(command) > 3 else ""), flush=True)
     times, peaks, status = [], [], 0
     for _ in range(runs):
         start = time.perf_counter()
@@ -231,13 +232,13 @@ def failed(measured: Measure, allowed: tuple[int, ...]) -> str:
 # -- the measurements ----------------------------------------------------------
 def compare_check(rows: list[Row], kind: str, links: int, path: Path, check_urdf: str | None) -> Measure:
     runs = RUNS[links]
-    ours = measure(urdfcli("check", str(path)), runs)
     case = f"check, {kind} of {links:,} links"
     if kind == "chain" and links >= 100_000:
         # Both tools print the tree indented by depth: ~20 GB of spaces on a 100k chain.
         ours = measure(urdfcli("check", "--format", "concise", str(path)), runs)
         rows.append(Row(case + " (--format concise)", str(ours) + failed(ours, (0,)), "check_urdf: not run (its tree output would be ~20 GB)"))
         return ours
+    ours = measure(urdfcli("check", str(path)), runs)
     if check_urdf is None:
         rows.append(Row(case, str(ours) + failed(ours, (0,)), "check_urdf: not installed"))
         return ours

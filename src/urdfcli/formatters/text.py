@@ -18,7 +18,7 @@ def print_tree(console: Console, loaded: Loaded) -> None:
     lines = tree_lines(loaded)
     if not console.is_terminal and not console.color_system:
         # Without colour there is nothing for rich to do, and it is slow on big trees.
-        console.file.write("".join(line + "\n" for line in lines))
+        console.file.writelines(line + "\n" for line in lines)  # line by line: a deep tree's text is large
         return
     for line in lines:
         text = Text(line)
