@@ -6,6 +6,7 @@ that nothing secret or dangerous came out of it.
 
 from __future__ import annotations
 
+import os
 import time
 import tracemalloc
 from pathlib import Path
@@ -326,3 +327,11 @@ def test_mesh_uris_are_never_fetched(cli, tmp_path, monkeypatch, secret):
             continue
         assert result.exit_code in (0, 1)
         assert_clean(result)
+
+
+def test_the_bounded_child_returns_results_and_errors_and_survives_a_crash():
+    assert sandbox.bounded(sum, [1, 2, 3]) == 6
+    with pytest.raises(ZeroDivisionError):
+        sandbox.bounded(lambda: 1 / 0)
+    with pytest.raises(sandbox.LimitExceeded, match="ended without a result"):
+        sandbox.bounded(os._exit, 3)

@@ -213,7 +213,7 @@ def bounded(function, *args):
     if data is None:
         raise LimitExceeded(f"it took longer than {seconds:g} s")
     if not data:
-        raise LimitExceeded(f"it needed more than {memory_mib} MiB of memory")
+        raise LimitExceeded(f"its process ended without a result (more than {memory_mib} MiB of memory?)")
     ok, value = pickle.loads(data)
     if ok:
         return value
