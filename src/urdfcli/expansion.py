@@ -178,7 +178,7 @@ class _Session:
             data = Path(path).read_bytes()
         except OSError as error:
             xacro.filestack.pop()
-            raise xacro.XacroException(f"cannot include {filename}: {error.strerror}", exc=error) from None
+            raise xacro.XacroException(f"cannot include {display_path(path)}: {error.strerror}", exc=error) from None
         if not data.lstrip(b"\xef\xbb\xbf \t\r\n").startswith(b"<"):  # never show a line of a non-XML file
             xacro.filestack.pop()
             raise xacro.XacroException(f"cannot include {display_path(path)}: it is not an XML file")
