@@ -307,7 +307,7 @@ def _expand(root: etree._Element, file: str | None, mappings: dict[str, str], re
             code = "X004" if isinstance(getattr(error, "exc", None), PackageNotFound) else "X003"
             message = _short(error)
             if code == "X004":
-                message += f" (looked in {resolver.where()})"
+                message += f" {resolver.where()}"
             origin = getattr(error, "urdfcli_origin", None)
             current_file = xacro.filestack[-1] if xacro.filestack else file
             raise ExpansionError(message, origin, display_path(current_file) if current_file else shown, code) from None

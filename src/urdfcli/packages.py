@@ -109,13 +109,15 @@ class PackageResolver:
         self._scanned: set[Path] = set()
 
     def where(self) -> str:
-        """Where packages are looked for, for error messages."""
+        """Where packages were looked for, as ``(looked in ...)`` for error messages."""
         places = [f"-P {name}={path}" for name, path in self._explicit.items()]
         places += [str(p) for p in self._scan_roots]
         places += [f"{p}/share" for p in self._ament]
         if self._local_root:
             places.append(str(self._local_root))
-        return ", ".join(places) if places else "nowhere: the input is not inside a package (use -P NAME=DIR)"
+        if not places:
+            return "(the input is not inside a package and no package path is set: use -P NAME=DIR)"
+        return f"(looked in {', '.join(places)})"
 
     def _scan_into_cache(self, root: Path) -> None:
         if root in self._scanned:

@@ -266,7 +266,7 @@ def package_not_found(loaded):
     for element, kind, uri in _resources(loaded):
         package = _package_of(uri)
         if package is not None and loaded.resolver.find(package) is None:
-            yield loaded.diagnostic("D005", f"{kind} '{uri}': package '{package}' not found (looked in {loaded.resolver.where()})", element, "name the package's folder with -P NAME=DIR, or fix its name")
+            yield loaded.diagnostic("D005", f"{kind} '{uri}': package '{package}' not found {loaded.resolver.where()}", element, "name the package's folder with -P NAME=DIR, or fix its name")
 
 
 def _known_names(loaded) -> set[str]:
