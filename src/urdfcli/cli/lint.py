@@ -15,8 +15,8 @@ from ..formatters import resolve
 from ..linter import Job, Linted, run_job
 from ..load import STDIN
 from ..packages import SKIP_DIRS
-from .check import emit
-from .common import Exit, PackagePathOption, fail, split_inputs, stderr
+from ..formatters.emit import emit
+from .common import Exit, PackagePathOption, fail, split_inputs, stderr, stdout
 
 LINT_FORMATS = ("auto", "text", "concise", "json", "sarif", "github")
 MODEL_SUFFIXES = (".urdf", ".urdf.xacro")
@@ -65,7 +65,7 @@ def lint(
             unreadable = True
         else:
             results.append(outcome)
-    emit(results, resolve(output_format), tree=False)
+    emit(results, resolve(output_format), stdout, stderr, tree=False)
     if unreadable:
         raise typer.Exit(Exit.CANNOT_RUN)
     if not exit_zero and any(d.severity.rank >= Severity.WARNING.rank for r in results for d in r.diagnostics):

@@ -1,0 +1,49 @@
+"""Writing results in the format asked for: one entry point for check and lint."""
+
+from __future__ import annotations
+
+import sys
+
+from rich.console import Console
+
+from . import check_urdf, github, plain_line, summary_line
+from . import json as json_format
+from .text import print_diagnostic, print_tree
+
+
+def emit(results, output_format: str, stdout: Console, stderr: Console, tree: bool = True) -> None:
+    """Write the results in one format; ``tree`` adds check's kinematic tree to the text format.
+
+    Machine formats go to the standard streams as plain text; the text format
+    goes through the given rich consoles (results on stdout, diagnostics on stderr)."""
+    if output_format == "json":
+        sys.stdout.write(json_format.render(results) + "\n")
+    elif output_format == "sarif":
+        from ..formatters import sarif
+
+        sys.stdout.write(sarif.render(results) + "\n")
+    elif output_format == "github":
+        for loaded in results:
+            for diagnostic in loaded.diagnostics:
+                sys.stdout.write(github.line(diagnostic) + "\n")
+    elif output_format == "concise":
+        for loaded in results:
+            for diagnostic in loaded.diagnostics:
+                sys.stdout.write(plain_line(diagnostic) + "\n")
+        sys.stderr.write(summary_line(results) + "\n")
+    elif output_format == "check_urdf":
+        for loaded in results:
+            errors = check_urdf.error_lines(loaded)
+            if errors:
+                sys.stderr.write("\n".join(errors) + "\n")
+            else:
+                sys.stdout.write("".join(line + "\n" for line in check_urdf.tree_lines(loaded)))
+    else:
+        for loaded in results:
+            if tree:
+                if len(results) > 1:
+                    stdout.print(f"==> {loaded.document.shown} <==", style="bold", markup=False)
+                print_tree(stdout, loaded)
+            for diagnostic in loaded.diagnostics:
+                print_diagnostic(stderr, diagnostic, excerpt=True)
+        stderr.print(summary_line(results), markup=False, style="bold")
