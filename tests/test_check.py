@@ -196,7 +196,7 @@ def test_standard_input(tmp_path):
 def test_could_not_run_is_exit_2_with_one_line(tmp_path):
     missing = run_cli("check", str(tmp_path / "missing.urdf"))
     assert missing.returncode == 2
-    assert missing.stderr.decode().splitlines()[0] == f"urdfcli: {tmp_path / 'missing.urdf'}: no such file"
+    assert missing.stderr.decode().splitlines() == [f"urdfcli: {tmp_path / 'missing.urdf'}: no such file"]
     directory = run_cli("check", str(tmp_path))
     assert directory.returncode == 2 and "is a directory" in directory.stderr.decode()
     option = run_cli("check", "--no-such-option", "x.urdf")

@@ -30,7 +30,8 @@ def emit(results, output_format: str, stdout: Console, stderr: Console, tree: bo
         for loaded in results:
             for diagnostic in loaded.diagnostics:
                 sys.stdout.write(plain_line(diagnostic) + "\n")
-        sys.stderr.write(summary_line(results) + "\n")
+        if results:  # nothing was read: the one-line reasons already said why
+            sys.stderr.write(summary_line(results) + "\n")
     elif output_format == "check_urdf":
         for loaded in results:
             errors = check_urdf.error_lines(loaded)
@@ -46,4 +47,5 @@ def emit(results, output_format: str, stdout: Console, stderr: Console, tree: bo
                 print_tree(stdout, loaded)
             for diagnostic in loaded.diagnostics:
                 print_diagnostic(stderr, diagnostic, excerpt=True)
-        stderr.print(summary_line(results), markup=False, style="bold")
+        if results:
+            stderr.print(summary_line(results), markup=False, style="bold")
