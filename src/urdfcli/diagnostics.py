@@ -47,6 +47,13 @@ class Diagnostic:
     def line(self) -> int | None:
         return self.location.line
 
+    @classmethod
+    def of(cls, code: str, message: str, location: Location, element: str | None = None, hint: str | None = None) -> "Diagnostic":
+        """A diagnostic with its rule's default severity."""
+        from .rules import rule
+
+        return cls(code, rule(code).severity, message, location, element, hint)
+
     def with_severity(self, severity: Severity) -> "Diagnostic":
         return replace(self, severity=severity)
 

@@ -9,7 +9,7 @@ from typing import TYPE_CHECKING
 
 from lxml import etree
 
-from .diagnostics import Location
+from .diagnostics import Diagnostic, Location
 
 if TYPE_CHECKING:
     from .expansion import Origin
@@ -43,6 +43,10 @@ class Document:
     @cached_property
     def _index(self) -> dict[etree._Element, int]:
         return {element: i for i, element in enumerate(self.root.iter(etree.Element))} if self.root is not None else {}
+
+    def diagnostic(self, code: str, message: str, element: etree._Element | None, hint: str | None = None) -> Diagnostic:
+        """A diagnostic about ``element``, located where it was written."""
+        return Diagnostic.of(code, message, self.locate(element), self.element_path(element), hint)
 
     def locate(self, element: etree._Element | None) -> Location:
         if element is None:

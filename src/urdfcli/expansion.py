@@ -289,7 +289,7 @@ def _expand(root: etree._Element, file: str | None, mappings: dict[str, str], re
     shown = display_path(file) if file else "<stdin>"
     doc = tagged_dom(root, shown)
     stderr = io.StringIO()
-    with _Session(resolver.find) as session, contextlib.redirect_stderr(stderr):
+    with _Session(resolver.find), contextlib.redirect_stderr(stderr):
         xacro.init_stacks(file)
         try:
             xacro.process_doc(doc, mappings=dict(mappings))

@@ -14,7 +14,6 @@ from typing import TYPE_CHECKING
 from .diagnostics import Diagnostic
 from .document import Document
 from .model import Joint, Robot
-from .rules import rule
 
 if TYPE_CHECKING:
     import networkx as nx
@@ -98,7 +97,7 @@ def tree_diagnostics(robot: Robot, document: Document) -> list[Diagnostic]:
     out: list[Diagnostic] = []
 
     def report(code: str, message: str, element, hint: str | None = None) -> None:
-        out.append(Diagnostic(code, rule(code).severity, message, document.locate(element), Document.element_path(element), hint))
+        out.append(document.diagnostic(code, message, element, hint))
 
     for joint in robot.joints.values():
         for role, link in (("parent", joint.parent), ("child", joint.child)):

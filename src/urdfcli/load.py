@@ -21,7 +21,7 @@ from .kinematics import tree_diagnostics
 from .loaded import Loaded
 from .model import read
 from .packages import PackageResolver
-from .rules import load_all, rule
+from .rules import load_all
 from .xmlsafe import XmlError, parse_bytes
 
 XACRO_NAMESPACES = {"http://www.ros.org/wiki/xacro", "http://ros.org/wiki/xacro", "http://wiki.ros.org/xacro"}
@@ -67,11 +67,15 @@ def is_xacro(path: str, root: etree._Element) -> bool:
 
 
 def _error(code: str, message: str, location: Location, hint: str | None = None) -> Diagnostic:
-    return Diagnostic(code, rule(code).severity, message, location, None, hint)
+    return Diagnostic.of(code, message, location, None, hint)
 
 
 def load_document(
-    path: str, options: LoadOptions, data: bytes | None = None, force_xacro: bool = False
+    path: str,
+    options: LoadOptions,
+    data: bytes | None = None,
+    force_xacro: bool = False,
+    resolver: PackageResolver | None = None,
 ) -> tuple[Document, list[Diagnostic]]:
     """Read, parse and (for xacro) expand one input. Raises InputError."""
     data = read_input(path) if data is None else data
@@ -80,12 +84,12 @@ def load_document(
     try:
         root = parse_bytes(data)
     except XmlError as error:
-        return Document(path, None, file), [_error("X001" if "entities" not in error.message else "X002", error.message, Location(shown, error.line, error.column))]
+        return Document(path, None, file), [_error(error.code, error.message, Location(shown, error.line, error.column))]
     if not force_xacro and not is_xacro(path, root):
         return Document(path, root, file), []
     from . import expansion  # xacro and its dependencies, only for xacro inputs
 
-    resolver = PackageResolver(options.package_paths, file)
+    resolver = resolver or PackageResolver(options.package_paths, file)
     try:
         result = expansion.expand(root, str(file) if file else None, options.mappings, resolver)
     except expansion.ExpansionError as error:
@@ -121,8 +125,9 @@ def _collector_paused(function):
 
 @_collector_paused
 def load(path: str, options: LoadOptions = LoadOptions(), data: bytes | None = None) -> Loaded:
-    document, diagnostics = load_document(path, options, data)
-    loaded = Loaded(document, diagnostics=diagnostics, resolver=PackageResolver(options.package_paths, document.file))
+    resolver = PackageResolver(options.package_paths, None if path == STDIN else Path(path))
+    document, diagnostics = load_document(path, options, data, resolver=resolver)
+    loaded = Loaded(document, diagnostics=diagnostics, resolver=resolver)
     if document.root is None:
         return loaded
     robot, found = read(document)

@@ -12,7 +12,6 @@ from .diagnostics import Diagnostic, Severity
 from .document import Document
 from .model import Joint, Robot
 from .packages import PackageResolver
-from .rules import rule
 
 if TYPE_CHECKING:
     import networkx as nx
@@ -34,7 +33,7 @@ class Loaded:
         return not any(d.severity is Severity.ERROR for d in self.diagnostics)
 
     def diagnostic(self, code: str, message: str, element: etree._Element | None, hint: str | None = None) -> Diagnostic:
-        return Diagnostic(code, rule(code).severity, message, self.document.locate(element), Document.element_path(element), hint)
+        return self.document.diagnostic(code, message, element, hint)
 
     @cached_property
     def _parent_joints(self) -> dict[str, Joint]:

@@ -8,7 +8,6 @@ leaves the field empty, and reads on.
 
 from __future__ import annotations
 
-from collections.abc import Iterator
 from dataclasses import dataclass, field
 
 from lxml import etree
@@ -16,12 +15,10 @@ from lxml import etree
 from .diagnostics import Diagnostic
 from .document import Document, tag_name
 from .numbers import NumberError, VectorLengthError, format_number, parse_double, parse_vector
-from .rules import rule
 
 Vec3 = tuple[float, float, float]
 JOINT_TYPES = ("fixed", "revolute", "continuous", "prismatic", "floating", "planar")
 MOVING_AXIS_TYPES = ("revolute", "continuous", "prismatic", "planar")
-SHAPES = ("box", "cylinder", "sphere", "mesh")
 INERTIA_KEYS = ("ixx", "ixy", "ixz", "iyy", "iyz", "izz")
 
 
@@ -129,10 +126,7 @@ class Reader:
 
     # -- reporting -------------------------------------------------------------
     def report(self, code: str, message: str, element: etree._Element | None, hint: str | None = None) -> None:
-        spec = rule(code)
-        self.diagnostics.append(
-            Diagnostic(code, spec.severity, message, self.document.locate(element), Document.element_path(element), hint)
-        )
+        self.diagnostics.append(self.document.diagnostic(code, message, element, hint))
 
     # -- values ----------------------------------------------------------------
     def number(self, element: etree._Element, attribute: str, required: bool = False, what: str = "") -> float | None:
@@ -452,8 +446,3 @@ def read(document: Document) -> tuple[Robot, list[Diagnostic]]:
     reader = Reader(document)
     robot = reader.robot()
     return robot, reader.diagnostics
-
-
-def iter_shapes(link: Link) -> Iterator[Shape]:
-    yield from link.visuals
-    yield from link.collisions

@@ -14,7 +14,7 @@ import re
 from dataclasses import dataclass, field
 
 from .diagnostics import Diagnostic, Location
-from .rules import load_all, rule
+from .rules import load_all
 
 COMMENT = re.compile(r"<!--\s*urdfcli\s*:\s*(noqa-file|noqa)\s*:\s*(.*?)\s*-->", re.DOTALL)
 
@@ -72,9 +72,9 @@ def apply(diagnostics: list[Diagnostic], suppressions: list[Suppression], enable
         kind = "noqa-file" if suppression.target is None else "noqa"
         for code in suppression.codes:
             if code not in known:
-                kept.append(Diagnostic("U002", rule("U002").severity, f"'{kind}: {code}' names no rule", where, hint="`urdfcli rules` lists the codes"))
+                kept.append(Diagnostic.of("U002", f"'{kind}: {code}' names no rule", where, hint="`urdfcli rules` lists the codes"))
             elif code not in suppression.used and enabled(code):
                 scope = "in this file" if suppression.target is None else f"on line {suppression.target}"
-                kept.append(Diagnostic("U001", rule("U001").severity, f"'{kind}: {code}' silences nothing: no {code} {scope}", where, hint="remove it"))
+                kept.append(Diagnostic.of("U001", f"'{kind}: {code}' silences nothing: no {code} {scope}", where, hint="remove it"))
     return kept
 

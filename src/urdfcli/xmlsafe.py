@@ -19,11 +19,14 @@ _PARSER_OPTIONS = dict(
 
 
 class XmlError(ValueError):
-    def __init__(self, message: str, line: int | None = None, column: int | None = None):
+    """``code`` is the rule: X001 (not well-formed) or X002 (entity declarations)."""
+
+    def __init__(self, message: str, line: int | None = None, column: int | None = None, code: str = "X001"):
         super().__init__(message)
         self.message = message
         self.line = line
         self.column = column
+        self.code = code
 
 
 def parse_bytes(data: bytes) -> etree._Element:
@@ -42,7 +45,7 @@ def parse_bytes(data: bytes) -> etree._Element:
         raise XmlError(str(error), 1, 1) from None
     dtd = root.getroottree().docinfo.internalDTD
     if dtd is not None and any(True for _ in dtd.iterentities()):
-        raise XmlError("the document declares XML entities; urdfcli never expands entities", 1, 1)
+        raise XmlError("the document declares XML entities; urdfcli never expands entities", 1, 1, code="X002")
     for node in root.iter(etree.Entity):
         raise XmlError(f"undefined entity reference {node.text}", node.sourceline, None)
     return root

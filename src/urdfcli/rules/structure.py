@@ -8,7 +8,6 @@ from . import ERROR, WARNING, declare, explain
 
 U = dict(urdfdom=True)
 REJECTED = "check_urdf rejects the file, and so does every tool built on urdfdom (robot_state_publisher, RViz, MoveIt, Gazebo's URDF import)."
-LOADER = "urdfcli reads the rest of the file and reports every other problem too; consumers stop here."
 
 # Input
 declare("X001", "xml-syntax-error", ERROR, "The file is not well-formed XML.", explain(
