@@ -255,7 +255,7 @@ def test_tolerance_passes_rounding_and_catches_swaps(tmp_path):
 
 # -- the whole robot ---------------------------------------------------------------------
 @pytest.mark.parametrize("path", [JTBOT, MOBILE, CRANE], ids=lambda p: p.name)
-def test_link_poses_match_yourdfpy_forward_kinematics(path):
+def test_link_poses_match_yourdfpy_reading_the_file_itself(path):
     import yourdfpy
 
     reference = yourdfpy.URDF.load(str(path), build_scene_graph=True, load_meshes=False)
@@ -266,6 +266,21 @@ def test_link_poses_match_yourdfpy_forward_kinematics(path):
         matrix = reference.get_transform(name, loaded.root)
         close(rotation, matrix[:3, :3], abs_=1e-9)
         close(translation, matrix[:3, 3], abs_=1e-9)
+
+
+def test_a_mimic_joint_sits_at_its_offset_at_zero_positions(tmp_path):
+    path = tmp_path / "mimic.urdf"
+    path.write_text(
+        '<robot name="m"><link name="base"/><link name="a"/><link name="b"/><link name="c"/>'
+        '<joint name="j1" type="revolute"><parent link="base"/><child link="a"/><axis xyz="0 0 1"/>'
+        '<limit lower="-3" upper="3" effort="1" velocity="1"/></joint>'
+        '<joint name="j2" type="revolute"><parent link="a"/><child link="b"/><origin xyz="1 0 0"/><axis xyz="0 0 1"/>'
+        '<limit lower="-3" upper="3" effort="1" velocity="1"/><mimic joint="j1" multiplier="2" offset="1.5707963267948966"/></joint>'
+        '<joint name="j3" type="fixed"><parent link="b"/><child link="c"/><origin xyz="1 0 0"/></joint></robot>'
+    )
+    poses = inertia.link_poses(load(str(path), LoadOptions(checks="none")))
+    close(poses["b"][1], (1, 0, 0), abs_=1e-12)
+    close(poses["c"][1], (1, 1, 0), abs_=1e-12)  # b is turned a quarter about z by the offset
 
 
 def test_total_of_the_rover_against_a_hand_computation(tmp_path):
@@ -285,6 +300,17 @@ def test_total_of_the_rover_against_a_hand_computation(tmp_path):
     assert body.mass == pytest.approx(4.0)
     close(body.com, com, rel=1e-6, abs_=1e-6)
     close(body.tensor, tensor, rel=1e-4, abs_=1e-8)
+
+
+def test_total_with_density_weighs_each_link_by_its_geometry(tmp_path):
+    path = tmp_path / "rover.urdf"
+    path.write_text(ROVER)
+    loaded = load(str(path), LoadOptions(checks="none"))
+    body = inertia.total(loaded, density=1000)
+    # body box 0.4 x 0.3 x 0.1; wheels r 0.05 l 0.02; mast 0.05 x 0.05 x 0.5 (collision shapes)
+    volumes = 0.4 * 0.3 * 0.1 + 2 * math.pi * 0.05**2 * 0.02 + 0.05 * 0.05 * 0.5
+    assert body.mass == pytest.approx(1000 * volumes)
+    assert inertia.total(loaded).mass == pytest.approx(4.0)
 
 
 def test_total_rotates_each_link_tensor_into_the_root_frame(tmp_path):

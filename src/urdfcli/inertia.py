@@ -1,9 +1,9 @@
 """Mass properties of each link and of the whole robot: declared, and implied by geometry.
 
-The closed-form maths is :mod:`urdfcli.massprops`. Meshes are read with trimesh
-(imported only when a link has a mesh, through urdfcli's package resolver; never
-from a network). The robot's pose at zero joint positions composes the joint
-origins along the tree (every joint type is the identity motion at zero).
+The closed-form maths is :mod:`urdfcli.massprops`. Meshes are loaded by yourdfpy and
+trimesh, with urdfcli's package resolver as the filename handler (never from a network);
+the robot's pose at zero joint positions comes from yourdfpy's scene graph. Both are
+imported only when this work needs them.
 
 Frames: a declared tensor is given in the frame of its ``<inertial><origin>``;
 the *expected* tensor is expressed in that same frame, so the two compare one to one.
@@ -11,7 +11,10 @@ the *expected* tensor is expressed in that same frame, so the two compare one to
 
 from __future__ import annotations
 
+import contextlib
 import functools
+import logging
+import warnings
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -21,7 +24,7 @@ from . import massprops
 from .kinematics import walk
 from .loaded import Loaded
 from .massprops import Matrix, Transform, Vector
-from .model import Link, Shape
+from .model import Joint, Link, Shape
 from .packages import PackageResolver
 
 TOLERANCE = 0.1
@@ -103,6 +106,7 @@ def resolver_of(loaded: Loaded) -> PackageResolver:
     return loaded.resolver or PackageResolver((), loaded.document.file)
 
 
+
 def implied(loaded: Loaded, link: Link, density: float | None = None) -> Implied:
     """The body the link's collision shapes (else its visual shapes) make, with the
     declared mass spread by volume, or ``density`` times the volume when given."""
@@ -132,8 +136,7 @@ def shape_part(loaded: Loaded, shape: Shape) -> tuple[float, Vector, Matrix]:
     """Volume, centre (link frame) and tensor per unit mass (link axes) of one shape."""
     geometry = shape.geometry
     if geometry.kind == "mesh":
-        path = mesh_path(loaded, geometry.filename)
-        volume, centre, unit = mesh_properties(str(path), tuple(geometry.scale))
+        volume, centre, unit = mesh_properties(geometry.filename, tuple(geometry.scale), MeshFiles.of(loaded))
     else:
         volume, unit = primitive(geometry)
         centre = (0.0, 0.0, 0.0)
@@ -157,32 +160,55 @@ def primitive(geometry) -> tuple[float, Matrix]:
     return massprops.sphere_volume(geometry.radius), massprops.sphere(1.0, geometry.radius)
 
 
-def mesh_path(loaded: Loaded, filename: str) -> Path:
-    base = loaded.document.file.resolve().parent if loaded.document.file else None
-    path = resolver_of(loaded).resolve_uri(filename, base)
-    if path is None:
-        raise GeometryUnknown(f"mesh {filename} cannot be resolved")
-    if not path.is_file():
-        raise GeometryUnknown(f"mesh {filename} not found ({path})")
-    return path
+@dataclass(frozen=True)
+class MeshFiles:
+    """yourdfpy's filename handler: a mesh's URI to a file, through urdfcli's package resolver.
+
+    Raises GeometryUnknown, which passes through yourdfpy, when there is no such file.
+    Equal for one input's shapes, so each of its meshes is read once."""
+
+    resolver: PackageResolver
+    base: Path | None
+
+    @classmethod
+    def of(cls, loaded: Loaded) -> MeshFiles:
+        return cls(resolver_of(loaded), loaded.document.file.resolve().parent if loaded.document.file else None)
+
+    def __call__(self, fname: str) -> str:
+        path = self.resolver.resolve_uri(fname, self.base)
+        if path is None:
+            raise GeometryUnknown(f"mesh {fname} cannot be resolved")
+        if not path.is_file():
+            raise GeometryUnknown(f"mesh {fname} not found ({path})")
+        return str(path)
 
 
 @functools.lru_cache(maxsize=256)
-def mesh_properties(path: str, scale: Vector) -> tuple[float, Vector, Matrix]:
-    """Volume, centre and tensor per unit mass of a mesh file, ``scale`` applied.
+def mesh_properties(filename: str, scale: Vector, files: MeshFiles) -> tuple[float, Vector, Matrix]:
+    """Volume, centre and tensor per unit mass of a mesh, ``scale`` applied.
 
-    A mesh that is not closed has no inside: its convex hull stands in for it."""
+    yourdfpy loads it (through ``files``, with trimesh) as the collision geometry of a
+    one-link robot. A mesh that is not closed has no inside: its convex hull stands in."""
     import numpy
     import trimesh
+    import yourdfpy
 
+    name = Path(filename).name
+    geometry = yourdfpy.Geometry(mesh=yourdfpy.Mesh(filename=filename, scale=numpy.array(scale)))
+    robot = yourdfpy.Robot(name="mesh", links=[yourdfpy.Link(name="mesh", collisions=[yourdfpy.Collision(name="mesh", geometry=geometry)])])
     try:
-        mesh = trimesh.load(path, force="mesh")
+        with quiet_libraries():
+            scene = yourdfpy.URDF(
+                robot, build_scene_graph=False, build_collision_scene_graph=True, load_collision_meshes=True, filename_handler=files
+            ).collision_scene
+    except GeometryUnknown:
+        raise
     except Exception as error:  # noqa: BLE001  (trimesh raises many kinds)
-        raise GeometryUnknown(f"mesh {Path(path).name} cannot be read: {error}") from None
-    if not isinstance(mesh, trimesh.Trimesh) or mesh.is_empty:
-        raise GeometryUnknown(f"mesh {Path(path).name} has no triangles")
-    if tuple(scale) != (1.0, 1.0, 1.0):
-        mesh.apply_transform(numpy.diag([*scale, 1.0]))
+        raise GeometryUnknown(f"mesh {name} cannot be read: {error}") from None
+    meshes = [m for m in scene.geometry.values() if isinstance(m, trimesh.Trimesh) and not m.is_empty]
+    if not meshes:
+        raise GeometryUnknown(f"mesh {name} has no triangles")
+    mesh = meshes[0]
     if not mesh.is_watertight:
         mesh = mesh.convex_hull
     if mesh.volume < 0:
@@ -190,9 +216,26 @@ def mesh_properties(path: str, scale: Vector) -> tuple[float, Vector, Matrix]:
     properties = mesh.mass_properties  # density 1: mass equals volume
     volume = float(properties["volume"])
     if volume <= 0:
-        raise GeometryUnknown(f"mesh {Path(path).name} has no volume")
+        raise GeometryUnknown(f"mesh {name} has no volume")
     unit = tuple(tuple(float(v) / volume for v in row) for row in properties["inertia"])
     return volume, tuple(float(c) for c in properties["center_mass"]), unit  # type: ignore[return-value]
+
+
+@contextlib.contextmanager
+def quiet_libraries():
+    """yourdfpy and trimesh log warnings to stderr (and yourdfpy calls a deprecated trimesh
+    function); urdfcli reports the problems itself."""
+    loggers = [logging.getLogger(name) for name in ("yourdfpy", "trimesh")]
+    levels = [logger.level for logger in loggers]
+    for logger in loggers:
+        logger.setLevel(logging.CRITICAL)
+    try:
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore", DeprecationWarning)
+            yield
+    finally:
+        for logger, level in zip(loggers, levels):
+            logger.setLevel(level)
 
 
 # -- comparison ------------------------------------------------------------------------
@@ -234,25 +277,62 @@ def rotated_fit(assessment: Assessment) -> tuple[Vector, float] | None:
 
 # -- the whole robot -------------------------------------------------------------------
 def link_poses(loaded: Loaded) -> dict[str, Transform]:
-    """Each link's pose in the root frame at zero joint positions."""
+    """Each link's pose in the root frame at zero joint positions (a mimic joint at its offset).
+
+    yourdfpy's scene graph gives each joint's transform; urdfcli chains them down the tree,
+    because a root-to-link query multiplies the whole path each time (trimesh orders that
+    product at a cost that grows with the path's length cubed: minutes on a 300-link chain).
+    Only the tree's joints are given to yourdfpy; the structure rules report the others."""
     root = loaded.root
     if root is None:
         return {}
+    joints = [joint for _, joint, _ in walk(loaded.robot, root) if joint is not None]
     poses = {root: massprops.ORIGIN}
-    for _, joint, link in walk(loaded.robot, root):
-        if joint is not None:
-            poses[link] = massprops.compose(poses[joint.parent], massprops.transform(joint.origin.xyz, joint.origin.rpy))
+    if not joints:
+        return poses
+    scene = kinematic_scene(loaded.robot.name or "robot", root, joints)
+    for joint in joints:
+        matrix = scene.get_transform(joint.child, joint.parent)
+        step = (tuple(tuple(float(v) for v in row[:3]) for row in matrix[:3]), tuple(float(v) for v in matrix[:3, 3]))
+        poses[joint.child] = massprops.compose(poses[joint.parent], step)
     return poses
 
 
-def total(loaded: Loaded) -> Body | None:
-    """Mass, centre of mass (root frame) and tensor about it of the declared links."""
+def kinematic_scene(name: str, root: str, joints: list[Joint]):
+    """A yourdfpy model of the kinematic tree alone (no geometry), at zero joint positions.
+
+    At zero positions only a mimic joint's offset moves a joint, so the others are given
+    as fixed: yourdfpy looks each moving joint up in a list, which would make setting up
+    a large robot quadratic in its joints."""
+    import numpy
+    import trimesh.transformations as tra
+    import yourdfpy
+
+    def joint_of(joint: Joint) -> yourdfpy.Joint:
+        matrix = tra.euler_matrix(*joint.origin.rpy, axes="sxyz")
+        matrix[:3, 3] = joint.origin.xyz
+        moves = joint.mimic is not None and joint.type in ("revolute", "continuous", "prismatic") and any(joint.axis)
+        return yourdfpy.Joint(
+            name=joint.name, type=joint.type if moves else "fixed", parent=joint.parent, child=joint.child, origin=matrix,
+            axis=numpy.array(joint.axis) if moves else None,
+            mimic=yourdfpy.Mimic(joint.mimic.joint, joint.mimic.multiplier, joint.mimic.offset) if moves else None,
+        )
+
+    links = [yourdfpy.Link(name=root)] + [yourdfpy.Link(name=joint.child) for joint in joints]
+    with quiet_libraries():
+        return yourdfpy.URDF(yourdfpy.Robot(name=name, links=links, joints=[joint_of(j) for j in joints]), load_meshes=False)
+
+
+def total(loaded: Loaded, density: float | None = None) -> Body | None:
+    """Mass, centre of mass (root frame) and tensor about it of the whole robot: the declared
+    links, or with ``density`` each link its geometry fills (links without any keep theirs)."""
     poses = link_poses(loaded)
     if not poses:
         return None
     parts = []
     for name, pose in poses.items():
-        body = declared_body(loaded.robot.links[name])
+        link = loaded.robot.links[name]
+        body = (density is not None and implied(loaded, link, density).body) or declared_body(link)
         if body is not None and body.mass > 0:
             parts.append((body.mass, massprops.place(pose, body.com), massprops.rotate(body.tensor, pose[0])))
     mass, com, tensor = massprops.combine(parts)
@@ -305,7 +385,7 @@ def audit(loaded: Loaded, tolerance: float = TOLERANCE, density: float | None = 
     for link in loaded.robot.links.values():
         mine = tuple(by_link[Document.element_path(link.element)])
         links.append(LinkReport(link, is_frame(link), assess(loaded, link, density), mine))
-    return Report(loaded, tuple(links), total(loaded), tuple(found), tolerance)
+    return Report(loaded, tuple(links), total(loaded, density), tuple(found), tolerance)
 
 
 # -- presenting ------------------------------------------------------------------------

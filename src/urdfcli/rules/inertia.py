@@ -153,7 +153,7 @@ def geometry_mismatch(loaded, options):
     """## What it does
     Computes the tensor the link's collision shapes (else its visual shapes) imply
     for its mass: uniform density, box, cylinder and sphere in closed form, meshes
-    through trimesh, several shapes composed with their origins. Flags a declared
+    loaded by yourdfpy and trimesh, several shapes composed with their origins. Flags a declared
     tensor whose largest element difference exceeds ``tolerance`` (0.1) of the
     larger tensor's largest element. When the tensor fits once rotated as the
     shapes are, I010 is reported instead.
