@@ -30,17 +30,7 @@ def write(folder: Path, name: str, data: str | bytes) -> Path:
     return path
 
 
-def available(command: str) -> bool:
-    """Whether the subcommand is registered (not a placeholder still to come)."""
-    from urdfcli.cli import PLANNED, app
-
-    registered = {c.name for c in app.registered_commands}
-    return command in registered and command not in PLANNED
-
-
-MODEL_COMMANDS = [c for c in ("check", "lint", "tree", "inertia") if available(c)] + (
-    [("graph", "--format", "dot")] if available("graph") else []
-)
+MODEL_COMMANDS = ["check", "lint", "tree", "inertia", ("graph", "--format", "dot")]
 
 
 def run(cli, command, path: Path):
@@ -210,7 +200,6 @@ def test_huge_models_are_checked_without_recursion(cli, huge, model, children, l
     assert lines[-1] == last
 
 
-@pytest.mark.skipif(not available("tree"), reason="tree is not registered yet")
 @pytest.mark.parametrize("model, depth", [("wide", 1), ("chain", 19_999)])
 def test_tree_prints_huge_models(cli, huge, model, depth):
     started = time.monotonic()
@@ -249,7 +238,7 @@ def test_directory_given_as_a_file(cli, tmp_path):
     assert cli_lines(result) == [f"urdfcli: {tmp_path}: is a directory, not a file"]
 
 
-@pytest.mark.parametrize("command", [c for c in ("tree", "inertia", "expand") if c == "expand" or available(c)])
+@pytest.mark.parametrize("command", ["tree", "inertia", "expand"])
 def test_missing_file_and_directory_in_other_subcommands(cli, tmp_path, command):
     for path, message in ((tmp_path / "missing.urdf", "no such file"), (tmp_path, "is a directory, not a file")):
         result = cli(command, str(path))
@@ -276,7 +265,7 @@ def test_unreadable_file(tmp_path):
     assert "Traceback" not in result.stderr
 
 
-@pytest.mark.parametrize("command", ["check", "expand", *[c for c in ("tree", "graph", "inertia", "lint") if available(c)]])
+@pytest.mark.parametrize("command", ["check", "expand", "tree", "graph", "inertia", "lint"])
 def test_unknown_option_is_one_line_exit_2(tmp_path, command):
     path = write(tmp_path, "ok.urdf", ONE_LINK)
     result = run_cli(command, "--no-such-option", str(path))
@@ -398,7 +387,6 @@ def test_output_equal_to_an_input_is_refused(cli, tmp_path):
     assert leftovers(tmp_path) == []
 
 
-@pytest.mark.skipif(not available("graph"), reason="graph is not registered yet")
 def test_graph_failure_leaves_no_file_and_keeps_the_previous_output(cli, tmp_path):
     good = write(tmp_path, "robot.urdf", '<robot name="r"><link name="a"/><link name="b"/>'
                  '<joint name="j" type="fixed"><parent link="a"/><child link="b"/></joint></robot>')
@@ -416,7 +404,6 @@ def test_graph_failure_leaves_no_file_and_keeps_the_previous_output(cli, tmp_pat
     assert leftovers(tmp_path) == []
 
 
-@pytest.mark.skipif(not available("graph"), reason="graph is not registered yet")
 def test_graph_output_equal_to_the_input_is_refused(cli, tmp_path):
     path = write(tmp_path, "robot.gv", ONE_LINK)
     result = cli("graph", str(path), "-o", str(path))
@@ -449,7 +436,6 @@ def test_exit_code_is_the_worst_of_all_files(cli, tmp_path):
     assert "robot name is: r" in result.stdout
 
 
-@pytest.mark.skipif(not available("lint"), reason="lint is not registered yet")
 def test_lint_reports_every_file_and_the_worst_exit_code(cli, tmp_path):
     good = write(tmp_path, "good.urdf", ONE_LINK)
     broken = write(tmp_path, "broken.urdf", "<robot")

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import importlib
 import os
 import sys
 from typing import Annotated
@@ -9,23 +10,19 @@ from typing import Annotated
 import typer
 
 from .. import __version__
-from .check import check
-from .expand import expand
-from .graph import graph
-from .inertia import inertia
-from .lint import lint
-from .rules import rule, rules
-from .tree import tree
 
-app = typer.Typer(
-    name="urdfcli",
-    help="Check, expand, draw and lint URDF and xacro robot descriptions, without ROS.\n\n"
-    "Exit codes: 0 no errors, 1 problems found, 2 could not run.",
-    no_args_is_help=True,
-    add_completion=False,
-    pretty_exceptions_enable=False,
-    context_settings={"help_option_names": ["-h", "--help"]},
-)
+# Each subcommand: the module defining it and its function. A run imports only the
+# module of the command it runs (help lists them all), so no command pays for the others.
+COMMANDS = {
+    "expand": ("expand", "expand"),
+    "check": ("check", "check"),
+    "tree": ("tree", "tree"),
+    "graph": ("graph", "graph"),
+    "inertia": ("inertia", "inertia"),
+    "lint": ("lint", "lint"),
+    "rules": ("rules", "rules"),
+    "rule": ("rules", "rule"),
+}
 
 
 def _version(value: bool) -> None:
@@ -34,38 +31,40 @@ def _version(value: bool) -> None:
         raise typer.Exit()
 
 
-@app.callback()
-def _main(
-    version: Annotated[bool, typer.Option("--version", callback=_version, is_eager=True, help="Show the version and exit.")] = False,
-) -> None:
-    pass
+def build_app(names=COMMANDS) -> typer.Typer:
+    """The application with the named subcommands registered."""
+    app = typer.Typer(
+        name="urdfcli",
+        help="Check, expand, draw and lint URDF and xacro robot descriptions, without ROS.\n\n"
+        "Exit codes: 0 no errors, 1 problems found, 2 could not run.",
+        no_args_is_help=True,
+        add_completion=False,
+        pretty_exceptions_enable=False,
+        context_settings={"help_option_names": ["-h", "--help"]},
+    )
+
+    @app.callback()
+    def _main(
+        version: Annotated[bool, typer.Option("--version", callback=_version, is_eager=True, help="Show the version and exit.")] = False,
+    ) -> None:
+        pass
+
+    for name in names:
+        module, function = COMMANDS[name]
+        app.command(name=name)(getattr(importlib.import_module(f".{module}", __name__), function))
+    return app
 
 
-app.command(name="expand")(expand)
-app.command(name="check")(check)
-app.command(name="tree")(tree)
-app.command(name="graph")(graph)
-app.command(name="inertia")(inertia)
-app.command(name="lint")(lint)
-app.command(name="rules")(rules)
-app.command(name="rule")(rule)
+def __getattr__(name: str):
+    if name == "app":  # the whole application, for those who import it
+        return build_app()
+    raise AttributeError(name)
 
 
-def _planned(name: str, summary: str):
-    def command(args: Annotated[list[str] | None, typer.Argument(hidden=True)] = None) -> None:
-        from .common import fail
-
-        raise fail(f"'{name}' is not available in this version yet")
-
-    command.__doc__ = f"{summary} (not available yet)"
-    return command
-
-
-# Subcommands still to come; each entry goes when its module is registered above.
-PLANNED = {
-}
-for _name, _summary in PLANNED.items():
-    app.command(name=_name, context_settings={"allow_extra_args": True, "ignore_unknown_options": True})(_planned(_name, _summary))
+def _app_for(argv: list[str]) -> typer.Typer:
+    """Only the subcommand named first on the command line, when one is (else all, for help)."""
+    first = next((a for a in argv if not a.startswith("-")), None)
+    return build_app([first] if first in COMMANDS else COMMANDS)
 
 
 def main() -> None:
@@ -76,7 +75,7 @@ def main() -> None:
         from click.exceptions import ClickException, UsageError
 
     try:
-        code = app(prog_name="urdfcli", standalone_mode=False)
+        code = _app_for(sys.argv[1:])(prog_name="urdfcli", standalone_mode=False)
     except UsageError as error:
         command = error.ctx.command_path if error.ctx is not None else "urdfcli"
         sys.stderr.write(f"urdfcli: {_one_line(error.format_message())} (see '{command} -h')\n")

@@ -37,9 +37,11 @@ def tree(
     output_format: Annotated[str, typer.Option("--format", "-f", help="text, or json (nested: each link with its children as {joint, link}).", case_sensitive=False)] = "text",
     package_path: PackagePathOption = None,
 ) -> None:
-    """Print the kinematic tree: each link, the joint leading to it (name, type,
-    axis, limits; revolute limits in radians with degrees alongside), and a
-    summary (links, joints by type, degrees of freedom, depth, leaf links).
+    """Print the kinematic tree, each joint's type, axis and limits, and a summary.
+
+    Each link is shown with the joint leading to it (name, type, axis, limits;
+    revolute limits in radians with degrees alongside); the summary counts links,
+    joints by type, degrees of freedom, depth and leaf links.
 
     Children are listed in the order of the names of the joints that lead to
     them, the order check_urdf uses. A link reached by a second joint (two

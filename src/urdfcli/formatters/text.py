@@ -14,10 +14,14 @@ from .check_urdf import tree_lines
 STYLES = {"error": "bold red", "warning": "yellow", "info": "cyan"}
 
 
+def plain(console: Console) -> bool:
+    """Without colour there is nothing for rich to do, and it is slow on many lines."""
+    return not console.is_terminal and not console.color_system
+
+
 def print_tree(console: Console, loaded: Loaded) -> None:
     lines = tree_lines(loaded)
-    if not console.is_terminal and not console.color_system:
-        # Without colour there is nothing for rich to do, and it is slow on big trees.
+    if plain(console):
         console.file.writelines(line + "\n" for line in lines)  # line by line: a deep tree's text is large
         return
     for line in lines:
@@ -33,23 +37,21 @@ def print_tree(console: Console, loaded: Loaded) -> None:
 
 def print_diagnostic(console: Console, diagnostic: Diagnostic, excerpt: bool = False) -> None:
     """``PATH:LINE:COL: CODE severity: message``, its hint, and (with ``excerpt``) the source line."""
-    if not console.is_terminal and not console.color_system:
-        console.print(Text(plain_line(diagnostic)), soft_wrap=True, highlight=False)
-    else:
-        text = Text()
-        text.append(position(diagnostic), style="bold")
-        text.append(": ")
-        text.append(diagnostic.code, style=STYLES[diagnostic.severity.value])
-        text.append(f" {diagnostic.severity.value}: ", style=STYLES[diagnostic.severity.value])
-        text.append(diagnostic.message)
-        if diagnostic.location.expanded:
-            text.append(" (line in the xacro-expanded document)", style="dim")
-        console.print(text, soft_wrap=True, highlight=False)
-    if diagnostic.hint:
-        console.print(Text("    hint: " + diagnostic.hint, style="dim"), soft_wrap=True, highlight=False)
-    if excerpt:
-        for line in excerpt_lines(diagnostic):
-            console.print(Text(line, style="dim"), soft_wrap=True, highlight=False)
+    details = (["    hint: " + diagnostic.hint] if diagnostic.hint else []) + (excerpt_lines(diagnostic) if excerpt else [])
+    if plain(console):
+        console.file.write("".join(line + "\n" for line in [plain_line(diagnostic), *details]))
+        return
+    text = Text()
+    text.append(position(diagnostic), style="bold")
+    text.append(": ")
+    text.append(diagnostic.code, style=STYLES[diagnostic.severity.value])
+    text.append(f" {diagnostic.severity.value}: ", style=STYLES[diagnostic.severity.value])
+    text.append(diagnostic.message)
+    if diagnostic.location.expanded:
+        text.append(" (line in the xacro-expanded document)", style="dim")
+    console.print(text, soft_wrap=True, highlight=False)
+    for line in details:
+        console.print(Text(line, style="dim"), soft_wrap=True, highlight=False)
 
 
 def excerpt_lines(diagnostic: Diagnostic, width: int = 160) -> list[str]:
