@@ -6,6 +6,7 @@ Tensors are about the centre of mass unless said otherwise; URDF axes.
 
 from __future__ import annotations
 
+import functools
 import math
 from collections.abc import Iterable
 
@@ -24,6 +25,7 @@ def as_dict(m: Matrix) -> dict[str, float]:
     return {"ixx": m[0][0], "ixy": m[0][1], "ixz": m[0][2], "iyy": m[1][1], "iyz": m[1][2], "izz": m[2][2]}
 
 
+@functools.lru_cache(maxsize=4096)  # several rules ask for the same link's moments
 def principal_moments(m: Matrix) -> tuple[float, float, float]:
     """Eigenvalues of a symmetric 3x3 matrix, ascending (closed form)."""
     size = scale_of(m)
@@ -55,7 +57,7 @@ def principal_moments(m: Matrix) -> tuple[float, float, float]:
 
 
 def scale_of(m: Matrix) -> float:
-    return max(abs(m[i][j]) for i in range(3) for j in range(3))
+    return max(map(abs, (*m[0], *m[1], *m[2])))
 
 
 def is_zero(m: Matrix) -> bool:

@@ -13,6 +13,7 @@ import re
 
 _DECIMAL = re.compile(r"[+-]?(?:\d+\.?\d*|\.\d+)(?:[eE][+-]?\d+)?")
 _DECIMAL_CHARACTERS = "0123456789.eE+-"
+_VECTOR_CHARACTERS = _DECIMAL_CHARACTERS + " "
 _NON_FINITE = re.compile(r"[+-]?(?:nan|inf|infinity)", re.IGNORECASE)
 
 
@@ -62,6 +63,15 @@ def _malformed(text: str):
 
 def parse_vector(text: str, length: int = 3) -> tuple[float, ...]:
     """Raises NumberError, or VectorLengthError for a wrong count of components."""
+    if not text.strip(_VECTOR_CHARACTERS):
+        # The common case, whole: as in parse_double, float() then accepts exactly urdfdom's numbers.
+        try:
+            values = tuple(map(float, text.split()))
+        except ValueError:
+            pass
+        else:
+            if len(values) == length and all(map(math.isfinite, values)):
+                return values
     values = tuple([parse_double(piece) for piece in text.split(" ") if piece])
     if len(values) != length:
         raise VectorLengthError(len(values), length, text)
