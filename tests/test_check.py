@@ -238,3 +238,34 @@ def test_check_does_not_import_heavy_modules():
     )
     done = subprocess.run([sys.executable, "-c", code, str(FIXTURES / "seed003" / "jtbot.urdf.xacro")], capture_output=True, text=True)
     assert done.stdout.strip().splitlines()[-1] == "[]"
+
+
+# -- xacro found by content, whatever the file is named --------------------------------------
+XACRO_NS = "http://www.ros.org/wiki/xacro"
+LINK_BY_MACRO = '<xacro:macro name="m"><link name="made"/></xacro:macro><xacro:m/>'
+LINK_BY_PROPERTY_BELOW = f'<xacro:property xmlns:xacro="{XACRO_NS}" name="n" value="made"/><link name="${{n}}"/>'  # bound below the root
+
+
+@pytest.mark.parametrize(
+    "text, encoding",
+    [
+        (f'<robot name="r" xmlns:xacro="{XACRO_NS}">{LINK_BY_MACRO}</robot>', "utf-8"),
+        (f'<robot name="r">{LINK_BY_PROPERTY_BELOW}</robot>', "utf-8"),
+        (f'<?xml version="1.0" encoding="UTF-16"?><robot name="r">{LINK_BY_PROPERTY_BELOW}</robot>', "utf-16"),
+    ],
+    ids=["namespace-on-root", "prefix-below-root", "utf-16"],
+)
+def test_a_urdf_named_file_with_xacro_in_it_is_expanded(tmp_path, text, encoding):
+    path = tmp_path / "robot.urdf"
+    path.write_bytes(text.encode(encoding))
+    loaded = load(str(path))
+    assert loaded.document.is_xacro
+    assert "made" in loaded.robot.links
+
+
+def test_a_plain_urdf_is_not_expanded(tmp_path):
+    path = tmp_path / "robot.urdf"
+    path.write_text('<robot name="r"><link name="plain"/><!-- xacro is not used here --></robot>')
+    loaded = load(str(path))
+    assert not loaded.document.is_xacro
+    assert list(loaded.robot.links) == ["plain"]

@@ -220,6 +220,24 @@ def test_numbers_are_read_or_refused(text):
         assert len(values) == 3
 
 
+@settings(max_examples=1000, deadline=None)
+@given(st.text(alphabet="0123456789.eE+- ", max_size=40) | st.lists(st.floats(allow_nan=False, width=64).map(repr), max_size=4).map(" ".join))
+def test_a_vector_reads_as_its_components_do(text):
+    """The whole-vector fast path gives what reading each space-separated component gives."""
+    try:
+        expected = tuple(parse_double(piece) for piece in text.split(" ") if piece)
+    except NumberError as error:
+        with pytest.raises(NumberError) as raised:
+            parse_vector(text)
+        assert raised.value.code == error.code
+        return
+    if len(expected) != 3:
+        with pytest.raises(VectorLengthError):
+            parse_vector(text)
+    else:
+        assert parse_vector(text) == expected
+
+
 @settings(max_examples=300, deadline=None)
 @given(st.binary(max_size=400) | st.text(max_size=200).map(lambda t: f'<robot name="r">{t}</robot>'.encode()))
 def test_xml_is_parsed_or_refused_with_a_line(data):
