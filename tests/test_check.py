@@ -227,17 +227,21 @@ def test_xacro_diagnostic_without_origin_says_so(tmp_path):
     assert "(line in the xacro-expanded document)" in done.stderr.decode()
 
 
-def test_check_does_not_import_heavy_modules():
+def test_check_imports_neither_heavy_modules_nor_other_commands():
     import subprocess
     import sys
 
     code = (
-        "import sys; from urdfcli.cli import app\n"
-        "try:\n    app(['check', sys.argv[1]])\nexcept SystemExit:\n    pass\n"
-        "print(sorted(m for m in ('yourdfpy', 'trimesh', 'scipy', 'graphviz', 'numpy') if m in sys.modules))"
+        "import sys; from urdfcli.cli import main\n"
+        "sys.argv = ['urdfcli', 'check', sys.argv[1]]\n"
+        "try:\n    main()\nexcept SystemExit:\n    pass\n"
+        "heavy = ('yourdfpy', 'trimesh', 'scipy', 'graphviz', 'numpy', 'networkx')\n"
+        "others = ('urdfcli.cli.inertia', 'urdfcli.cli.lint', 'urdfcli.cli.graph', 'urdfcli.cli.tree', 'urdfcli.cli.rules')\n"
+        "print(sorted(m for m in heavy + others if m in sys.modules))"
     )
-    done = subprocess.run([sys.executable, "-c", code, str(FIXTURES / "seed003" / "jtbot.urdf.xacro")], capture_output=True, text=True)
-    assert done.stdout.strip().splitlines()[-1] == "[]"
+    for model in (FIXTURES / "seed003" / "jtbot.urdf.xacro", FIXTURES / "urdf02_gazebo" / "urdf" / "car.urdf.xacro"):
+        done = subprocess.run([sys.executable, "-c", code, str(model)], capture_output=True, text=True)
+        assert done.stdout.strip().splitlines()[-1] == "[]", done.stdout
 
 
 # -- xacro found by content, whatever the file is named --------------------------------------

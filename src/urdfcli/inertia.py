@@ -106,7 +106,6 @@ def resolver_of(loaded: Loaded) -> PackageResolver:
     return loaded.resolver or PackageResolver((), loaded.document.file)
 
 
-
 def implied(loaded: Loaded, link: Link, density: float | None = None) -> Implied:
     """The body the link's collision shapes (else its visual shapes) make, with the
     declared mass spread by volume, or ``density`` times the volume when given."""
@@ -240,7 +239,13 @@ def quiet_libraries():
 
 # -- comparison ------------------------------------------------------------------------
 def assess(loaded: Loaded, link: Link, density: float | None = None) -> Assessment | None:
-    """Declared against implied, for a link that declares a tensor (None otherwise)."""
+    """Declared against implied, for a link that declares a tensor (None otherwise).
+
+    Worked out once per link and density: three rules and the audit ask for it."""
+    return loaded.remembered(("assess", link.name, density), lambda: _assess(loaded, link, density))
+
+
+def _assess(loaded: Loaded, link: Link, density: float | None) -> Assessment | None:
     declared = declared_tensor(link)
     if declared is None or is_frame(link):
         return None
@@ -281,7 +286,7 @@ def link_poses(loaded: Loaded) -> dict[str, Transform]:
 
     yourdfpy's scene graph gives each joint's transform; urdfcli chains them down the tree,
     because a root-to-link query multiplies the whole path each time (trimesh orders that
-    product at a cost that grows with the path's length cubed: minutes on a 300-link chain).
+    product at a cost that grows with the path's length cubed: 20 s on a 200-link chain).
     Only the tree's joints are given to yourdfpy; the structure rules report the others."""
     root = loaded.root
     if root is None:

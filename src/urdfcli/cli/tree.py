@@ -7,9 +7,10 @@ import sys
 from typing import Annotated
 
 import typer
+from rich.text import Text
 
 from ..diagnostics import Severity
-from ..formatters.text import print_diagnostic
+from ..formatters.text import plain, print_diagnostic
 from ..formatters.tree import cut, summarise, text_lines, tree_json, tree_rows
 from ..kinematics import roots
 from ..load import InputError, LoadOptions, load
@@ -68,8 +69,12 @@ def tree(
     if output_format.lower() == "json":
         sys.stdout.write(tree_json(robot, shown, summary) + "\n")
     else:
-        for line in text_lines(robot, shown, joints=not no_joints, ascii_only=ascii_only):
-            stdout.print(line, soft_wrap=True, highlight=False)
+        lines = text_lines(robot, shown, joints=not no_joints, ascii_only=ascii_only)
+        if plain(stdout):
+            stdout.file.writelines("".join(text for text, _ in line) + "\n" for line in lines)
+        else:
+            for line in lines:
+                stdout.print(Text.assemble(*line), soft_wrap=True, highlight=False)
         stdout.print(summary.text(), style="bold", markup=False, highlight=False)
     if has_errors:
         raise typer.Exit(Exit.PROBLEMS)

@@ -14,8 +14,6 @@ from collections import Counter
 from collections.abc import Callable, Iterator
 from dataclasses import dataclass
 
-from rich.text import Text
-
 from ..kinematics import depth_and_leaves, walk_all
 from ..model import JOINT_TYPES, MOVING_AXIS_TYPES, Joint, Link, Robot, Vec3
 from ..numbers import format_number
@@ -169,29 +167,29 @@ def cut(rows: list[Row], max_depth: int | None) -> list[Row]:
 # -- text -------------------------------------------------------------------------
 
 
-def text_lines(robot: Robot, rows: list[Row], joints: bool = True, ascii_only: bool = False) -> Iterator[Text]:
-    """One rich Text per row, with tree guides and joint details."""
+def text_lines(robot: Robot, rows: list[Row], joints: bool = True, ascii_only: bool = False) -> Iterator[list[tuple[str, str]]]:
+    """One line per row, with tree guides and joint details, as (text, rich style) pieces."""
     branch, corner, through, blank, arrow, more, _, again = ASCII_GUIDES if ascii_only else UNICODE_GUIDES
     open_levels: list[bool] = []  # per depth: does the ancestor there have siblings after it?
     for row in rows:
         del open_levels[row.depth :]
-        line = Text()
+        line = []
         if row.depth:
-            line.append("".join(through if is_open else blank for is_open in open_levels[1:]), style="bright_black")
-            line.append(corner if row.last else branch, style="bright_black")
+            line.append(("".join(through if is_open else blank for is_open in open_levels[1:]), "bright_black"))
+            line.append((corner if row.last else branch, "bright_black"))
         open_levels.append(not row.last)
-        line.append(printable(row.link), style="bold green" if row.depth == 0 else "bold")
+        line.append((printable(row.link), "bold green" if row.depth == 0 else "bold"))
         if joints and row.joint is not None:
-            line.append(f"  {arrow} ", style="bright_black")
-            line.append(printable(row.joint.name), style="cyan")
-            line.append(" (", style="bright_black")
-            line.append(row.joint.type or "unknown type", style=TYPE_STYLES.get(row.joint.type or "", "red"))
-            line.append(printable("".join(", " + part for part in joint_details(row.joint, ascii_only))), style="bright_black")
-            line.append(")", style="bright_black")
+            line.append((f"  {arrow} ", "bright_black"))
+            line.append((printable(row.joint.name), "cyan"))
+            line.append((" (", "bright_black"))
+            line.append((row.joint.type or "unknown type", TYPE_STYLES.get(row.joint.type or "", "red")))
+            line.append((printable("".join(", " + part for part in joint_details(row.joint, ascii_only))), "bright_black"))
+            line.append((")", "bright_black"))
         if row.repeat:
-            line.append(f"  {again}", style="red")
+            line.append((f"  {again}", "red"))
         if row.hidden:
-            line.append(f"  {more} {plural(row.hidden, 'link')} below", style="bright_black")
+            line.append((f"  {more} {plural(row.hidden, 'link')} below", "bright_black"))
         yield line
 
 

@@ -58,9 +58,12 @@ def _suggestion(word: str, known) -> str | None:
     return close[0] if close else None
 
 
-def _schema_elements(loaded):
-    """(element, its schema) for every URDF element outside other formats' blocks."""
-    root = loaded.robot.element
+def _schema_elements(loaded) -> list:
+    """(element, its schema) for every URDF element outside other formats' blocks (D001 and D002 share it)."""
+    return loaded.remembered("schema-elements", lambda: list(_walk_schema(loaded.robot.element)))
+
+
+def _walk_schema(root):
     stack = [root]
     while stack:
         element = stack.pop()
