@@ -57,9 +57,8 @@ def read_input(path: str) -> bytes:
         raise InputError(f"{path}: cannot read: {error.strerror}") from None
 
 
-def is_xacro(path: str, root: etree._Element, data: bytes) -> bool:
-    if path.endswith(".xacro"):
-        return True
+def is_xacro(root: etree._Element, data: bytes) -> bool:
+    """Whether a document not named .xacro uses xacro: its namespace, or any xacro: element."""
     if XACRO_NAMESPACES & set(root.nsmap.values()):
         return True
     encoding = (root.getroottree().docinfo.encoding or "").lower().replace("-", "")
@@ -84,12 +83,15 @@ def load_document(
     data = read_input(path) if data is None else data
     file = None if path == STDIN else Path(path)
     shown = "<stdin>" if file is None else path
+    named_xacro = force_xacro or path.endswith(".xacro")
     try:
-        root = parse_bytes(data)
+        root = parse_bytes(data, keep_blank_text=named_xacro)
     except XmlError as error:
         return Document(path, None, file), [_error(error.code, error.message, Location(shown, error.line, error.column))]
-    if not force_xacro and not is_xacro(path, root, data):
-        return Document(path, root, file), []
+    if not named_xacro:
+        if not is_xacro(root, data):
+            return Document(path, root, file), []
+        root = parse_bytes(data)  # xacro found by content: read again with the white space it lays out
     from . import expansion  # xacro and its dependencies, only for xacro inputs
 
     resolver = resolver or PackageResolver(options.package_paths, file)
@@ -102,7 +104,7 @@ def load_document(
         else:
             location = Location(error.file or shown)
         return Document(path, None, file, is_xacro=True), [_error(error.code, error.message, location)]
-    expanded_root = parse_bytes(result.text.encode("utf-8"))
+    expanded_root = parse_bytes(result.text.encode("utf-8"), keep_blank_text=False)
     document = Document(path, expanded_root, file, True, result.text, result.includes, result.origins)
     warnings = [_error("X005", text, Location(shown)) for text, _ in result.warnings]
     return document, warnings
