@@ -316,6 +316,7 @@ def kinematic_scene(name: str, root: str, joints: list[Joint]):
     def joint_of(joint: Joint) -> yourdfpy.Joint:
         matrix = tra.euler_matrix(*joint.origin.rpy, axes="sxyz")
         matrix[:3, 3] = joint.origin.xyz
+        # a zero axis (reported by J007) gives no direction to move along
         moves = joint.mimic is not None and joint.type in ("revolute", "continuous", "prismatic") and any(joint.axis)
         return yourdfpy.Joint(
             name=joint.name, type=joint.type if moves else "fixed", parent=joint.parent, child=joint.child, origin=matrix,
