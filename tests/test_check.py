@@ -56,6 +56,7 @@ CASES = {
     "V004": (robot(link_a(visual("<sphere/>"))), robot(link_a(visual('<sphere radius="1"/>')))),
     "V005": (robot(link_a('<inertial><mass value="1"/></inertial>')), robot(link_a(inertial()))),
     "V006": (robot(link_a(visual('<cylinder radius="-0.1" length="1"/>'))), robot(link_a(visual('<cylinder radius="0.1" length="1"/>')))),
+    "V008": (robot(link_a(visual('<box size="0 1 1"/>'))), robot(link_a(visual('<box size="1 1 1"/>')))),
     "V007": (robot('<link name="a"/><material name="m"><color rgba="2 0 0 1"/></material>'), robot('<link name="a"/><material name="m"><color rgba="1 0 0 1"/></material>')),
     "G001": (robot(link_a("<visual><geometry/></visual>")), robot(link_a(visual('<box size="1 1 1"/>')))),
     "G002": (robot(link_a(visual('<cone radius="1"/>'))), robot(link_a(visual('<sphere radius="1"/>')))),
@@ -112,6 +113,21 @@ def test_every_check_code_has_a_case():
     in_check = {code for code, spec in load_all().items() if spec.in_check and code[0] in "XRNVGMJTI"}
     untested = in_check - set(CASES) - {"X003", "X004", "X005"}  # xacro codes: tests/test_expand.py
     assert not untested
+
+
+@pytest.mark.parametrize("shape", ['<box size="0 0 0"/>', '<sphere radius="0"/>', '<cylinder radius="0.1" length="-0"/>'])
+def test_a_zero_dimension_is_a_warning_that_check_urdf_accepts_a_negative_one_an_error(tmp_path, shape):
+    from differential import check_urdf
+
+    zero = tmp_path / "zero.urdf"
+    zero.write_text(robot(link_a(visual(shape))))
+    done = run_cli("check", str(zero))
+    assert done.returncode == 0 and b"V008 warning" in done.stderr and b"V006" not in done.stderr
+    assert not check_urdf(zero).rejects  # urdfdom (and ROS, MoveIt) load it
+    negative = tmp_path / "negative.urdf"
+    negative.write_text(robot(link_a(visual(shape.replace('"0', '"-1').replace('"-0', '"-1')))))
+    done = run_cli("check", str(negative))
+    assert done.returncode == 1 and b"V006 error" in done.stderr and b"V008" not in done.stderr
 
 
 def test_massless_frame_links_on_fixed_joints_get_no_diagnostic(tmp_path):

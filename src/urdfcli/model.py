@@ -20,6 +20,7 @@ Vec3 = tuple[float, float, float]
 JOINT_TYPES = ("fixed", "revolute", "continuous", "prismatic", "floating", "planar")
 MOVING_AXIS_TYPES = ("revolute", "continuous", "prismatic", "planar")
 INERTIA_KEYS = ("ixx", "ixy", "ixz", "iyy", "iyz", "izz")
+ZERO_HINT = "a placeholder shape is better left out; give a real shape a positive size"
 
 
 @dataclass(frozen=True, slots=True)
@@ -160,8 +161,11 @@ class Reader:
         return Pose(self.vector(origin, "xyz", (0.0, 0.0, 0.0)) or (0.0, 0.0, 0.0), self.vector(origin, "rpy", (0.0, 0.0, 0.0)) or (0.0, 0.0, 0.0))
 
     def positive(self, element: etree._Element, attribute: str, value: float | None) -> None:
-        if value is not None and value <= 0:
+        """A negative dimension is an error (V006); zero is a warning (V008): ROS loads it, physics engines do not."""
+        if value is not None and value < 0:
             self.report("V006", f"{tag_name(element)} {attribute} is {format_number(value)}; it must be positive", element)
+        elif value == 0:
+            self.report("V008", f"{tag_name(element)} {attribute} is 0: the shape has no volume", element, ZERO_HINT)
 
     # -- elements --------------------------------------------------------------
     def rgba(self, material: etree._Element, color: etree._Element) -> tuple[float, ...] | None:
@@ -220,8 +224,10 @@ class Reader:
             size = self.vector(shape, "size")
             if size is None:
                 return None
-            if min(size) <= 0:
-                self.report("V006", f"box size '{shape.get('size')}' has a component that is not positive", shape)
+            if min(size) < 0:
+                self.report("V006", f"box size '{shape.get('size')}' has a negative component", shape)
+            elif min(size) == 0:
+                self.report("V008", f"box size '{shape.get('size')}' has a zero component: the box has no volume", shape, ZERO_HINT)
             return Geometry(kind, shape, size=size)
         if kind == "cylinder":
             if shape.get("radius") is None or shape.get("length") is None:

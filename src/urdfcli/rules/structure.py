@@ -115,9 +115,10 @@ declare("V005", "element-missing", ERROR, "A required child element is missing."
     f"{REJECTED}",
     '<link name="base_link">\n  <visual><origin xyz="0 0 0"/></visual>\n</link>',
     '<link name="base_link">\n  <visual><origin xyz="0 0 0"/><geometry><box size="1 1 1"/></geometry></visual>\n</link>'), **U)
-declare("V006", "dimension-not-positive", ERROR, "A box size, radius or length that is zero or negative.", explain(
-    "Flags a box size component, sphere or cylinder radius, or cylinder length that is zero or negative.",
-    "urdfdom accepts it, but collision checkers and physics engines reject or mishandle a shape without volume.",
+declare("V006", "dimension-negative", ERROR, "A box size, radius or length that is negative.", explain(
+    "Flags a box size component, sphere or cylinder radius, or cylinder length below zero. A zero one is V008.",
+    "A negative size describes no shape: urdfdom accepts it, but collision checkers and physics engines reject it or "
+    "compute a negative volume. It is an error because no reading of it is right.",
     '<link name="base_link">\n  <collision><geometry><cylinder radius="-0.1" length="0.2"/></geometry></collision>\n</link>',
     '<link name="base_link">\n  <collision><geometry><cylinder radius="0.1" length="0.2"/></geometry></collision>\n</link>'))
 declare("V007", "rgba-out-of-range", ERROR, "An rgba component outside [0, 1].", explain(
@@ -125,6 +126,13 @@ declare("V007", "rgba-out-of-range", ERROR, "An rgba component outside [0, 1].",
     f"Colours are fractions. {REJECTED}",
     '<material name="orange"><color rgba="255 128 0 255"/></material>\n<link name="base_link"/>',
     '<material name="orange"><color rgba="1 0.5 0 1"/></material>\n<link name="base_link"/>'), **U)
+declare("V008", "dimension-zero", WARNING, "A box size, radius or length that is zero.", explain(
+    "Flags a box size component, sphere or cylinder radius, or cylinder length that is exactly zero "
+    "(often a placeholder shape). A negative one is V006.",
+    "A shape without volume loads in urdfdom, ROS and MoveIt, so it is a warning, not an error; but physics "
+    "engines (Gazebo, MuJoCo, Drake) reject or mishandle a zero-sized collision shape, and it draws nothing.",
+    '<link name="base_link">\n  <collision><geometry><box size="0 0 0"/></geometry></collision>\n</link>',
+    '<link name="base_link">\n  <collision><geometry><box size="0.1 0.1 0.1"/></geometry></collision>\n</link>'))
 
 # Geometry and materials
 declare("G001", "geometry-empty", ERROR, "`<geometry>` holds no shape.", explain(
