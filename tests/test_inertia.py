@@ -422,6 +422,25 @@ def test_density_computes_masses_from_volume(tmp_path):
     assert 'ixx="0.0045"' in result.stdout.decode()
 
 
+def test_density_rows_show_the_mass_used_and_the_total_adds_them(tmp_path):
+    path = tmp_path / "two.urdf"
+    cube = '<collision><geometry><box size="0.1 0.1 0.1"/></geometry></collision>'
+    path.write_text('<robot name="c"><link name="root"><inertial><mass value="3"/><inertia ixx="1" ixy="0" ixz="0" iyy="1" iyz="0" izz="1"/></inertial></link>'
+                    f'<link name="cube">{cube}<inertial><mass value="1"/><inertia ixx="0.00166667" ixy="0" ixz="0" iyy="0.00166667" iyz="0" izz="0.00166667"/></inertial></link>'
+                    f'<link name="shell">{cube}</link>'
+                    '<joint name="j" type="fixed"><parent link="root"/><child link="cube"/></joint>'
+                    '<joint name="k" type="fixed"><parent link="root"/><child link="shell"/></joint></robot>')
+    out = run_cli("inertia", "--density", "2700", str(path)).stdout.decode()
+    assert "cube  mass 2.7 from density (declared 1)" in out
+    assert "shell  mass 2.7 from density (none declared)" in out  # a massless link with geometry counts too
+    assert "root  mass 3  com" in out  # no geometry: its declared mass
+    assert re.search(r"^total  mass 8.4 ", out, re.M)
+    report = json.loads(run_cli("inertia", "--density", "2700", "--format", "json", str(path)).stdout)
+    used = {link["name"]: link["mass_used"] for link in report["links"]}
+    assert used == pytest.approx({"root": 3, "cube": 2.7, "shell": 2.7})
+    assert report["total"]["mass"] == pytest.approx(sum(used.values()))
+
+
 def test_massless_moving_link_gets_a_suggestion_only_with_density(tmp_path):
     path = tmp_path / "arm.urdf"
     path.write_text(ROVER.replace('<link name="mast">', '<link name="mast_unused">').replace(

@@ -17,7 +17,7 @@ from conftest import FIXTURES, all_fixture_models, require_tool, run_cli
 BROKEN = {"seed000/broken_xacro_robot.urdf.xacro"}  # xacro cannot expand it
 MODELS = [p for p in all_fixture_models() if p.relative_to(FIXTURES).as_posix() not in BROKEN]
 IDS = [p.relative_to(FIXTURES).as_posix() for p in MODELS]
-DOF = {"fixed": 0, "revolute": 1, "continuous": 1, "prismatic": 1, "planar": 2, "floating": 6}
+DOF = {"fixed": 0, "revolute": 1, "continuous": 1, "prismatic": 1, "planar": 3, "floating": 6}
 
 
 def plain_urdf(path: Path, folder: Path) -> Path:
@@ -72,7 +72,8 @@ def test_links_in_check_urdf_order_with_every_joint(path, tmp_path, cli):
     assert f"{sum(types.values())} joint" in summary
     for joint_type, count in types.items():
         assert f"{count} {joint_type}" in summary
-    assert f"{sum(DOF[t] * n for t, n in types.items())} DOF" in summary
+    free = [j.get("type") for j in joints.values() if j.find("mimic") is None]
+    assert f"{sum(DOF[t] for t in free)} DOF" in summary
     assert f"depth {max(d for d, _ in expected)}" in summary
     assert f"{leaves} leaf link" in summary
 
@@ -218,7 +219,7 @@ def test_a_deep_chain_serialises(tmp_path, cli):
         data = json.loads(result.stdout)
     finally:
         sys.setrecursionlimit(limit)
-    assert data["summary"] == {"links": 3000, "joints": {"continuous": 2999}, "dof": 2999, "depth": 2999, "leaf_links": 1}
+    assert data["summary"] == {"links": 3000, "joints": {"continuous": 2999}, "dof": 2999, "mimic_joints": 0, "depth": 2999, "leaf_links": 1}
 
 
 def test_readme_shows_the_real_tree_of_the_bundled_example():
@@ -228,3 +229,22 @@ def test_readme_shows_the_real_tree_of_the_bundled_example():
     result = run_cli("tree", "fixtures/urdf02_gazebo/urdf/car.urdf.xacro", cwd=FIXTURES.parent)
     assert result.returncode == 0
     assert shown == result.stdout.decode()
+
+
+def test_dof_leaves_out_mimic_joints_and_a_planar_joint_counts_three(tmp_path):
+    links = "".join(f'<link name="{n}"/>' for n in "abcde")
+    limit = '<limit effort="1" velocity="1" lower="-1" upper="1"/>'
+    path = tmp_path / "gripper.urdf"
+    path.write_text(
+        f'<robot name="g">{links}'
+        '<joint name="base" type="planar"><parent link="a"/><child link="b"/><axis xyz="0 0 1"/></joint>'
+        f'<joint name="finger" type="prismatic"><parent link="b"/><child link="c"/>{limit}</joint>'
+        f'<joint name="finger2" type="prismatic"><parent link="b"/><child link="d"/>{limit}<mimic joint="finger"/></joint>'
+        f'<joint name="finger3" type="revolute"><parent link="b"/><child link="e"/>{limit}<mimic joint="finger" multiplier="2"/></joint>'
+        "</robot>"
+    )
+    result = run_cli("tree", str(path))
+    assert result.returncode == 0, result.stderr
+    assert result.stdout.decode().splitlines()[-1].endswith("4 DOF (2 mimic joints follow others, not counted), depth 2, 3 leaf links")
+    summary = json.loads(run_cli("tree", "--format", "json", str(path)).stdout)["summary"]
+    assert (summary["dof"], summary["mimic_joints"]) == (4, 2)

@@ -329,6 +329,12 @@ def kinematic_scene(name: str, root: str, joints: list[Joint]):
         return yourdfpy.URDF(yourdfpy.Robot(name=name, links=links, joints=[joint_of(j) for j in joints]), load_meshes=False)
 
 
+def used_body(loaded: Loaded, link: Link, density: float | None = None) -> Body | None:
+    """The body the total counts for a link: with ``density`` the one its geometry fills
+    (a link without geometry keeps its declared one), else the declared one."""
+    return (density is not None and implied(loaded, link, density).body) or declared_body(link)
+
+
 def total(loaded: Loaded, density: float | None = None) -> Body | None:
     """Mass, centre of mass (root frame) and tensor about it of the whole robot: the declared
     links, or with ``density`` each link its geometry fills (links without any keep theirs)."""
@@ -337,8 +343,7 @@ def total(loaded: Loaded, density: float | None = None) -> Body | None:
         return None
     parts = []
     for name, pose in poses.items():
-        link = loaded.robot.links[name]
-        body = (density is not None and implied(loaded, link, density).body) or declared_body(link)
+        body = used_body(loaded, loaded.robot.links[name], density)
         if body is not None and body.mass > 0:
             parts.append((body.mass, massprops.place(pose, body.com), massprops.rotate(body.tensor, pose[0])))
     mass, com, tensor = massprops.combine(parts)
@@ -352,6 +357,8 @@ class LinkReport:
     frame: bool  # a massless frame link: listed quietly
     assessment: Assessment | None
     problems: tuple  # Diagnostics located in this link
+    mass: float | None = None  # the mass the total counts: from --density, or as declared
+    from_density: bool = False
 
 
 @dataclass(frozen=True)
@@ -390,7 +397,9 @@ def audit(loaded: Loaded, tolerance: float = TOLERANCE, density: float | None = 
     links = []
     for link in loaded.robot.links.values():
         mine = tuple(by_link[Document.element_path(link.element)])
-        links.append(LinkReport(link, is_frame(link), assess(loaded, link, density), mine))
+        used = used_body(loaded, link, density)
+        from_density = density is not None and implied(loaded, link, density).body is not None
+        links.append(LinkReport(link, is_frame(link), assess(loaded, link, density), mine, used.mass if used else None, from_density))
     return Report(loaded, tuple(links), total(loaded, density), tuple(found), tolerance)
 
 
@@ -424,6 +433,7 @@ def link_json(entry: LinkReport) -> dict:
     return {
         "name": link.name,
         "mass": inertial.mass if inertial is not None else None,
+        "mass_used": entry.mass,
         "com": _vector(inertial.origin.xyz) if inertial is not None else None,
         "inertia": _tensor(declared),
         "principal": _vector(massprops.principal_moments(declared)) if declared is not None else None,

@@ -104,12 +104,15 @@ def report_lines(report: audit_module.Report, show_name: bool):
     yield title
     for entry in report.links:
         link, found = entry.link, entry.assessment
-        if entry.frame and not entry.problems:
+        if entry.frame and not entry.problems and not entry.from_density:
             yield Text.assemble((link.name, "bold"), ("  massless frame link", "dim"))
             continue
         inertial = link.inertial
         header = Text.assemble((link.name, "bold"))
-        if inertial is not None and inertial.mass is not None:
+        if entry.from_density:  # the mass the total counts, and the declared one beside it
+            declared = f"declared {number(inertial.mass)}" if inertial is not None and inertial.mass is not None else "none declared"
+            header.append(f"  mass {number(entry.mass)} from density ({declared})")
+        elif inertial is not None and inertial.mass is not None:
             header.append(f"  mass {number(inertial.mass)}  com {' '.join(map(number, inertial.origin.xyz))}")
         yield header
         if found is not None:

@@ -18,7 +18,8 @@ from ..kinematics import depth_and_leaves, walk_all
 from ..model import JOINT_TYPES, MOVING_AXIS_TYPES, Joint, Link, Robot, Vec3
 from ..numbers import format_number
 
-DOF = {"fixed": 0, "revolute": 1, "continuous": 1, "prismatic": 1, "planar": 2, "floating": 6}
+# Degrees of freedom per joint type, as MoveIt and Pinocchio count them (planar: x, y and yaw).
+DOF = {"fixed": 0, "revolute": 1, "continuous": 1, "prismatic": 1, "planar": 3, "floating": 6}
 TYPE_STYLES = {
     "fixed": "bright_black",
     "revolute": "blue",
@@ -45,9 +46,10 @@ class Row:
 class Summary:
     links: int
     joints: Counter
-    dof: int
+    dof: int  # without the mimic joints: they follow others
     depth: int
     leaves: int
+    mimics: int = 0  # moving joints that mimic another
 
     def text(self) -> str:
         by_type = ", ".join(f"{self.joints[t]} {t}" for t in JOINT_TYPES if self.joints[t])
@@ -56,14 +58,20 @@ class Summary:
         joints = sum(self.joints.values())
         return (
             f"{plural(self.links, 'link')}, {plural(joints, 'joint')}{f' ({by_type})' if by_type else ''}, "
-            f"{self.dof} DOF, depth {self.depth}, {plural(self.leaves, 'leaf link')}"
+            f"{self.dof} DOF{self.mimic_text()}, depth {self.depth}, {plural(self.leaves, 'leaf link')}"
         )
+
+    def mimic_text(self) -> str:
+        if not self.mimics:
+            return ""
+        return f" ({plural(self.mimics, 'mimic joint')} {'follows' if self.mimics == 1 else 'follow'} others, not counted)"
 
     def as_dict(self) -> dict:
         return {
             "links": self.links,
             "joints": {t: self.joints[t] for t in JOINT_TYPES if self.joints[t]},
             "dof": self.dof,
+            "mimic_joints": self.mimics,
             "depth": self.depth,
             "leaf_links": self.leaves,
         }
@@ -142,12 +150,14 @@ def tree_rows(robot: Robot, start: str) -> list[Row]:
 def summarise(robot: Robot, rows: list[Row]) -> Summary:
     """Counts over all ``rows`` (the whole tree below their first link)."""
     depth, leaves = depth_and_leaves(robot, rows[0].link)
+    moving = [row for row in rows if row.joint is not None and DOF.get(row.joint.type or "", 0)]
     return Summary(
         links=sum(1 for row in rows if not row.repeat),
         joints=Counter(row.joint.type or "unknown" for row in rows if row.joint is not None),
-        dof=sum(DOF.get(row.joint.type or "", 0) for row in rows if row.joint is not None),
+        dof=sum(DOF.get(row.joint.type or "", 0) for row in moving if row.joint.mimic is None),
         depth=depth,
         leaves=len(leaves),
+        mimics=sum(1 for row in moving if row.joint.mimic is not None),
     )
 
 
