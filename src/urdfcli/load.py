@@ -57,15 +57,22 @@ def read_input(path: str) -> bytes:
         raise InputError(f"{path}: cannot read: {error.strerror}") from None
 
 
+_ASCII_COMPATIBLE = ("utf8", "ascii", "usascii", "iso88591", "latin1")
+_XACRO_ELEMENT = "//*[" + " or ".join(f"namespace-uri() = '{ns}'" for ns in sorted(XACRO_NAMESPACES)) + " or (namespace-uri() != '' and starts-with(name(), 'xacro:'))]"
+# ${...} and $(...) where xacro evaluates them: attribute values and text (comments are not text here).
+_SUBSTITUTION = "//@*[contains(., '${') or contains(., '$(')] | //text()[contains(., '${') or contains(., '$(')]"
+_USES_XACRO = etree.XPath(f"boolean({_XACRO_ELEMENT} | {_SUBSTITUTION})")
+
+
 def is_xacro(root: etree._Element, data: bytes) -> bool:
-    """Whether a document not named .xacro uses xacro: its namespace, or any xacro: element."""
-    if XACRO_NAMESPACES & set(root.nsmap.values()):
-        return True
+    """Whether a document not named .xacro uses xacro: a xacro element (in xacro's
+    namespace, or any element prefixed ``xacro:``), or ``${`` / ``$(`` in an attribute
+    or in text outside comments. A namespace declaration alone is not use: xacro's
+    output would read the same, at many times the cost."""
     encoding = (root.getroottree().docinfo.encoding or "").lower().replace("-", "")
-    if encoding in ("utf8", "ascii", "usascii", "iso88591", "latin1") and b"xacro:" not in data:
+    if encoding in _ASCII_COMPATIBLE and b"xacro" not in data and b"${" not in data and b"$(" not in data:
         return False  # a byte search is much faster than the XPath below on a large model
-    # Any element with the prefix xacro (bound to some namespace), found by libxml2 itself.
-    return bool(root.xpath("boolean(//*[namespace-uri() != '' and starts-with(name(), 'xacro:')])"))
+    return bool(_USES_XACRO(root))
 
 
 def _error(code: str, message: str, location: Location, hint: str | None = None) -> Diagnostic:

@@ -1,0 +1,70 @@
+"""A document is expanded with xacro only when it uses xacro, and skipping xacro for
+one that merely declares the namespace changes no diagnostic."""
+
+from __future__ import annotations
+
+import importlib.metadata
+from pathlib import Path
+
+import pytest
+
+from urdfcli import load as load_module
+from urdfcli.load import XACRO_NAMESPACES, is_xacro, load
+from urdfcli.xmlsafe import parse_bytes
+
+XACRO_NS = "http://www.ros.org/wiki/xacro"
+
+
+def corpus() -> list[Path]:
+    """The URDFs of the installed example-robot-data package (empty when it is missing)."""
+    try:
+        robots = Path(importlib.metadata.distribution("example-robot-data").locate_file("cmeel.prefix/share/example-robot-data/robots"))
+    except importlib.metadata.PackageNotFoundError:
+        return []
+    return sorted(robots.rglob("*.urdf"))
+
+
+def declares_xacro(path: Path) -> bool:
+    return bool(XACRO_NAMESPACES & set(parse_bytes(path.read_bytes()).nsmap.values()))
+
+
+@pytest.mark.parametrize(
+    "body, uses",
+    [
+        ('<link name="a"/>', False),
+        ('<link name="a"/><!-- ${not evaluated} $(nor this) -->', False),
+        ('<link name="${n}"/>', True),
+        ('<link name="a"><visual><geometry><mesh filename="$(find p)/m.stl"/></geometry></visual></link>', True),
+        ("<link name='a'/><gazebo>${x}</gazebo>", True),
+        ('<xacro:property name="n" value="1"/>', True),
+        ('<x:property xmlns:x="http://ros.org/wiki/xacro" name="n" value="1"/>', True),  # another prefix
+        ('<link name="a" data="$ {not} $"/>', False),
+    ],
+)
+def test_xacro_is_use_not_declaration(body, uses):
+    data = f'<robot name="r" xmlns:xacro="{XACRO_NS}">{body}</robot>'.encode()
+    assert is_xacro(parse_bytes(data), data) is uses
+
+
+def test_a_declared_but_unused_namespace_is_read_as_plain_urdf(tmp_path):
+    path = tmp_path / "robot.urdf"
+    path.write_text(f'<robot name="r" xmlns:xacro="{XACRO_NS}"><link name="a"/></robot>')
+    loaded = load(str(path))
+    assert not loaded.document.is_xacro
+    assert list(loaded.robot.links) == ["a"]
+
+
+DECLARING = [p for p in corpus() if declares_xacro(p)]
+
+
+@pytest.mark.skipif(not DECLARING, reason="example-robot-data is not installed")
+@pytest.mark.parametrize("path", DECLARING, ids=lambda p: p.name)
+def test_corpus_diagnostics_are_the_same_with_or_without_xacro(path, monkeypatch):
+    """The published URDFs that declare xmlns:xacro and use nothing of it: expanding them
+    with xacro (as a namespace declaration used to decide) gives the same diagnostics."""
+    plain = load(str(path))
+    assert not plain.document.is_xacro
+    monkeypatch.setattr(load_module, "is_xacro", lambda root, data: True)
+    expanded = load(str(path))
+    assert expanded.document.is_xacro
+    assert expanded.diagnostics == plain.diagnostics
