@@ -335,7 +335,7 @@ def test_json_has_exactly_the_documented_shape():
     assert set(data) == {"robot", "links", "total"} and data["robot"] == "mycar"
     tensor_keys = {"ixx", "ixy", "ixz", "iyy", "iyz", "izz"}
     for link in data["links"]:
-        assert set(link) == {"name", "mass", "com", "inertia", "principal", "expected", "expected_from", "problems"}
+        assert set(link) == {"name", "mass", "mass_used", "com", "inertia", "principal", "expected", "expected_from", "problems"}
         for problem in link["problems"]:
             assert set(problem) == {"code", "severity", "message"}
     camera = next(link for link in data["links"] if link["name"] == "camera")
@@ -346,7 +346,7 @@ def test_json_has_exactly_the_documented_shape():
     assert camera["expected_from"] == "collision box"
     assert [p["code"] for p in camera["problems"]] == ["I009"] and camera["problems"][0]["severity"] == "warning"
     frame = next(link for link in data["links"] if link["name"] == "base_footprint")
-    assert frame == {"name": "base_footprint", "mass": None, "com": None, "inertia": None, "principal": None,
+    assert frame == {"name": "base_footprint", "mass": None, "mass_used": None, "com": None, "inertia": None, "principal": None,
                      "expected": None, "expected_from": "massless frame link", "problems": []}
     assert set(data["total"]) == {"mass", "com", "inertia"} and data["total"]["mass"] == pytest.approx(2.38)
     assert set(data["total"]["inertia"]) == tensor_keys
