@@ -87,10 +87,10 @@ def test_standard_input(tmp_path):
 # -- suppressions ------------------------------------------------------------------
 SUPPRESSED = """\
 <robot name="r">
-  <material name="a"><color rgba="1 0 0 1" rgb="1 0 0"/></material> <!-- urdfcli: noqa: D002 -->
+  <material name="a"><color rgba="1 0 0 1"/><color rgb="1 0 0 1"/></material> <!-- urdfcli: noqa: D002 -->
   <!-- urdfcli: noqa: D002, M004 -->
-  <material name="b"><color rgba="1 0 0 1" rgb="1 0 0"/></material>
-  <material name="c"><color rgba="1 0 0 1" rgb="1 0 0"/></material>
+  <material name="b"><color rgba="1 0 0 1"/><color rgb="1 0 0 1"/></material>
+  <material name="c"><color rgba="1 0 0 1"/><color rgb="1 0 0 1"/></material>
   <!-- urdfcli: noqa: S001 -->
   <link name="base_link"/>
   <!-- urdfcli: noqa: D099 -->
@@ -134,7 +134,7 @@ def test_suppressions_in_an_included_xacro_file(tmp_path):
         <robot xmlns:xacro="http://www.ros.org/wiki/xacro">
           <xacro:macro name="part" params="name">
             <!-- urdfcli: noqa: D002 -->
-            <link name="${name}" colour="red"/>
+            <link name="${name}" typ="red"/>
           </xacro:macro>
         </robot>
         """,
@@ -146,7 +146,7 @@ def test_suppressions_in_an_included_xacro_file(tmp_path):
         <robot name="r" xmlns:xacro="http://www.ros.org/wiki/xacro">
           <xacro:include filename="parts.xacro"/>
           <xacro:part name="a"/>
-          <link name="b" colour="blue"/>
+          <link name="b" typ="blue"/>
         </robot>
         """,
     )

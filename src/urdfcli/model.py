@@ -417,14 +417,19 @@ class Reader:
             self.report("R003", f"robot version '{version}' is not supported; only 1.0 is", root)
 
     def check_materials(self, robot: Robot) -> None:
+        """M002 and M003 as urdfdom shares materials: by name, the first definition
+        winning. A visual material with an empty name is never shared (urdfdom skips
+        it), so it can neither be undefined nor clash."""
         seen: dict[str, Material] = {m.name: m for m in robot.materials.values() if m.rgba is not None}
         for material in self._inline_materials:
+            if not material.name:
+                continue
             if material.rgba is None and material.texture is None:
                 if material.name not in robot.materials and material.name not in seen:
                     self.report("M002", f"material '{material.name}' is defined nowhere", material.element, "define it at the top level, or give it a <color rgba>")
                 continue
             first = seen.setdefault(material.name, material)
-            if first.rgba is not None and material.rgba is not None and first.rgba != material.rgba:
+            if first.rgba is not None and material.rgba is not None and not same_colour(first.rgba, material.rgba):
                 self.report(
                     "M003",
                     f"material '{material.name}' has rgba '{material.element.find('color').get('rgba')}' here "
@@ -432,6 +437,14 @@ class Reader:
                     material.element,
                     "consumers keep one colour per name: give each colour its own name",
                 )
+
+
+# Half of an 8-bit colour step: closer components render the same (0.75294 is 192/255 rounded).
+COLOUR_TOLERANCE = 0.5 / 255
+
+
+def same_colour(a: tuple[float, ...], b: tuple[float, ...]) -> bool:
+    return len(a) == len(b) and all(abs(x - y) <= COLOUR_TOLERANCE for x, y in zip(a, b))
 
 
 def first_children(element: etree._Element) -> dict[str, etree._Element]:

@@ -4,16 +4,18 @@ from __future__ import annotations
 
 import difflib
 import re
+from dataclasses import dataclass
 
 from lxml import etree
 
 from ..document import tag_name
-from . import WARNING, check
+from . import INFO, WARNING, check
 
 # What the URDF format allows: element -> (attributes, child elements). Elements
 # whose contents belong to another format (gazebo, transmission, ros2_control)
-# are not looked into; <geometry> shapes are G002's business.
-ORIGIN = ({"xyz", "rpy"}, set())
+# are not looked into; <geometry> shapes are G002's business. Newer urdfdom
+# releases read `quat_xyzw` (URDF 1.1) and acceleration limits (URDF 1.2).
+ORIGIN = ({"xyz", "rpy", "quat_xyzw"}, set())
 SCHEMA: dict[str, tuple[set[str], set[str]]] = {
     "robot": ({"name", "version"}, {"link", "joint", "material", "transmission", "gazebo", "ros2_control"}),
     "link": ({"name", "type"}, {"inertial", "visual", "collision"}),
@@ -37,11 +39,48 @@ SCHEMA: dict[str, tuple[set[str], set[str]]] = {
     "axis": ({"xyz"}, set()),
     "calibration": ({"rising", "falling", "reference_position"}, set()),
     "dynamics": ({"damping", "friction"}, set()),
-    "limit": ({"lower", "upper", "effort", "velocity"}, set()),
+    "limit": ({"lower", "upper", "effort", "velocity", "acceleration", "deceleration", "jerk"}, set()),
     "mimic": ({"joint", "multiplier", "offset"}, set()),
     "safety_controller": ({"soft_lower_limit", "soft_upper_limit", "k_position", "k_velocity"}, set()),
 }
 OPAQUE = {"gazebo", "transmission", "ros2_control"}
+# Elements a URDF holds more than once: a typo of one is a typo even when another is there.
+REPEATED = {"link", "joint", "material", "transmission", "gazebo", "ros2_control", "visual", "collision"}
+
+# Documented extensions other consumers read: never typos, never reported.
+# element -> (attributes, child elements), each with who reads it.
+EXTENSIONS: dict[str, tuple[dict[str, str], dict[str, str]]] = {
+    "robot": ({}, {
+        "sensor": "urdfdom's and iDynTree's sensor extension",
+        "mujoco": "MuJoCo's compiler options",
+        "deformable": "PyBullet's soft bodies",
+    }),
+    "link": ({}, {
+        "contact": "PyBullet's contact parameters",
+        "audio_source": "PyBullet's audio source",
+    }),
+    "collision": ({"group": "PyBullet's collision filter", "mask": "PyBullet's collision filter", "concave": "PyBullet's concave meshes"}, {
+        "material": "exporters that write one material for visual and collision; harmless",
+    }),
+    "material": ({}, {"specular": "PyBullet's specular colour"}),
+    "joint": ({"dont_collapse": "Isaac Sim's URDF importer (keeps a fixed joint)"}, {}),
+    "dynamics": ({"K": "Franka's joint friction model", "D": "Franka's joint friction model",
+                  "mu_coulomb": "Franka's joint friction model", "mu_viscous": "Franka's joint friction model"}, {}),
+    "limit": ({"command_effort": "ANYmal's actuator limits", "current": "ANYmal's actuator limits",
+               "gear_velocity": "ANYmal's actuator limits"}, {}),
+}
+
+# Gazebo's URDF extension keys and the SDFormat elements Gazebo reads in a
+# <gazebo reference> block (sdformat's URDF to SDF conversion): written anywhere
+# else, Gazebo never sees them.
+GAZEBO_TAGS = {
+    "gazebo", "plugin", "static", "turnGravityOff", "dampingFactor", "maxVel", "minDepth", "mu1", "mu2", "fdir1",
+    "kp", "kd", "selfCollide", "maxContacts", "laserRetro", "springReference", "springStiffness", "stopCfm",
+    "stopErp", "fudgeFactor", "provideFeedback", "canonicalBody", "cfmDamping", "implicitSpringDamper",
+    "disableFixedJointLumping", "preserveFixedJoint",
+    "gravity", "kinematic", "self_collide", "enable_wind", "velocity_decay", "must_be_base_link", "sensor",
+    "surface", "laser_retro", "max_contacts", "cast_shadows", "transparency", "physics",
+}
 
 # Gazebo plugin parameters that name a joint or a link (ROS 1 and ROS 2 spellings).
 PLUGIN_JOINT_TAGS = {
@@ -58,8 +97,40 @@ def _suggestion(word: str, known) -> str | None:
     return close[0] if close else None
 
 
+def _edits(a: str, b: str) -> int:
+    """Edits (insertion, deletion, substitution, swap of neighbours) from a to b."""
+    previous, current = None, list(range(len(b) + 1))
+    for i in range(1, len(a) + 1):
+        before, previous, current = previous, current, [i] + [0] * len(b)
+        for j in range(1, len(b) + 1):
+            cost = a[i - 1] != b[j - 1]
+            current[j] = min(previous[j] + 1, current[j - 1] + 1, previous[j - 1] + cost)
+            if before is not None and j > 1 and a[i - 1] == b[j - 2] and a[i - 2] == b[j - 1]:
+                current[j] = min(current[j], before[j - 2] + 1)
+    return current[len(b)]
+
+
+def _typo_of(word: str, candidates) -> str | None:
+    """The candidate ``word`` is a misspelling of: one edit away (two for longer words), case aside."""
+    allowed = 1 if len(word) <= 4 else 2
+    scored = sorted((_edits(word.lower(), c.lower()), c) for c in candidates)
+    return scored[0][1] if scored and scored[0][0] <= allowed else None
+
+
+@dataclass(frozen=True)
+class Unknown:
+    """Markup that neither URDF nor a known extension defines where it is written."""
+
+    element: etree._Element  # the unknown child, or the element carrying the unknown attribute
+    parent: str  # the tag of the element it is written in (or on)
+    name: str
+    attribute: bool
+    typo_of: str | None = None  # a name missing there that it is one or two edits from
+    gazebo: bool = False  # Gazebo markup outside <gazebo>
+
+
 def _schema_elements(loaded) -> list:
-    """(element, its schema) for every URDF element outside other formats' blocks (D001 and D002 share it)."""
+    """(element, its schema) for every URDF element outside other formats' blocks."""
     return loaded.remembered("schema-elements", lambda: list(_walk_schema(loaded.robot.element)))
 
 
@@ -77,15 +148,48 @@ def _walk_schema(root):
 
 
 def _is_foreign(name: str) -> bool:
-    """Namespaced names (``xacro:``, ``{uri}``) belong to other formats."""
+    """Namespaced names (``xacro:``, ``drake:``, ``{uri}``) belong to other formats."""
     return ":" in name or name.startswith("{")
 
 
-@check("D001", "unknown-element", WARNING, "An element the URDF format does not have where it is written.", in_check=False)
+def _unknown_markup(loaded) -> list[Unknown]:
+    """Every unknown element and attribute, classified once for D001, D002, D010 and D011."""
+    return loaded.remembered("unknown-markup", lambda: list(_classify(loaded)))
+
+
+def _classify(loaded):
+    for element, (attributes, children) in _schema_elements(loaded):
+        tag = tag_name(element)
+        extra_attributes, extra_children = EXTENSIONS.get(tag, ({}, {}))
+        known = attributes | set(extra_attributes)
+        for name in element.attrib:
+            if name not in known and not _is_foreign(name):
+                yield Unknown(element, tag, name, True, _typo_of(name, known - set(element.attrib)))
+        if children is None:
+            continue
+        known = children | set(extra_children)
+        present = {tag_name(c) for c in element if isinstance(c.tag, str)}
+        missing = {c for c in known if c in REPEATED or c not in present}
+        for child in element:
+            if not isinstance(child.tag, str):
+                continue
+            name = tag_name(child)
+            if name in known or _is_foreign(name):
+                continue
+            if name in GAZEBO_TAGS and not (tag == "robot" and name == "gazebo"):
+                yield Unknown(child, tag, name, False, gazebo=True)
+            else:
+                yield Unknown(child, tag, name, False, _typo_of(name, missing))
+
+
+@check("D001", "unknown-element", WARNING, "A misspelt element: close to a URDF element missing where it is written.", in_check=False)
 def unknown_element(loaded):
     """## What it does
-    Flags a child element that URDF does not define inside its parent, such as a
-    misspelt `<metrial>` in a `<visual>`, and suggests the closest known element.
+    Flags a child element that URDF does not define inside its parent and that
+    is one or two letters away from an element missing there, such as
+    `<metrial>` in a `<visual>`, and names the element meant. Documented
+    extensions (Gazebo, PyBullet, Drake, Isaac, MuJoCo, vendors) are not typos;
+    other unknown markup is D010 (info), Gazebo markup outside `<gazebo>` D011.
 
     ## Why is this bad?
     urdfdom and every other consumer skip elements they do not know, silently:
@@ -111,23 +215,21 @@ def unknown_element(loaded):
     </link>
     ```
     """
-    for element, (_, children) in _schema_elements(loaded):
-        if children is None:
-            continue
-        for child in element:
-            if not isinstance(child.tag, str) or _is_foreign(tag_name(child)) or tag_name(child) in children:
-                continue
-            tag, parent = tag_name(child), tag_name(element)
-            close = _suggestion(tag, children)
-            hint = f"did you mean <{close}>?" if close else f"<{parent}> may hold {', '.join(f'<{c}>' for c in sorted(children))}"
-            yield loaded.diagnostic("D001", f"<{tag}> is not a URDF element inside <{parent}>; it is ignored", child, hint)
+    for unknown in _unknown_markup(loaded):
+        if not unknown.attribute and unknown.typo_of:
+            yield loaded.diagnostic("D001", f"<{unknown.name}> is not a URDF element inside <{unknown.parent}>; it is ignored", unknown.element, f"did you mean <{unknown.typo_of}>?")
 
 
-@check("D002", "unknown-attribute", WARNING, "An attribute the URDF format does not define on its element.", in_check=False)
+@check("D002", "unknown-attribute", WARNING, "A misspelt attribute: close to a URDF attribute missing on its element.", in_check=False)
 def unknown_attribute(loaded):
     """## What it does
-    Flags an attribute that URDF does not define on its element, such as
-    `<color rgb="...">` for `rgba`, and suggests the closest known attribute.
+    Flags an attribute that URDF does not define on its element and that is one
+    or two letters away from an attribute the element lacks, such as
+    `<color rgb="...">` for `rgba`. An attribute already on the element is
+    never suggested. Vendor attributes (Franka's `<dynamics K D mu_coulomb
+    mu_viscous>`, ANYmal's `<limit command_effort current gear_velocity>`,
+    Isaac's `dont_collapse`, PyBullet's collision `group`, `mask`, `concave`)
+    are not typos; other unknown attributes are D010 (info).
 
     ## Why is this bad?
     The attribute is ignored: the colour, limit or axis it meant to set keeps
@@ -147,14 +249,118 @@ def unknown_attribute(loaded):
     </material>
     ```
     """
-    for element, (attributes, _) in _schema_elements(loaded):
-        for name in element.attrib:
-            if name in attributes or _is_foreign(name):
-                continue
-            tag = tag_name(element)
-            close = _suggestion(name, attributes)
-            hint = f"did you mean '{close}'?" if close else (f"<{tag}> takes {', '.join(sorted(attributes))}" if attributes else f"<{tag}> takes no attributes")
-            yield loaded.diagnostic("D002", f"<{tag}> has no attribute '{name}'; it is ignored", element, hint)
+    for unknown in _unknown_markup(loaded):
+        if unknown.attribute and unknown.typo_of:
+            yield loaded.diagnostic("D002", f"<{unknown.parent}> has no attribute '{unknown.name}'; it is ignored", unknown.element, f"did you mean '{unknown.typo_of}'?")
+
+
+def _belongs_in(tag: str) -> list[str]:
+    return sorted(parent for parent, (_, children) in SCHEMA.items() if children and tag in children)
+
+
+@check("D010", "unknown-markup", INFO, "Markup that neither URDF nor a known extension defines, and that is no typo.", in_check=False)
+def unknown_markup(loaded):
+    """## What it does
+    Notes an element or attribute that neither URDF nor a documented extension
+    defines where it is written, and that is not close to a URDF name missing
+    there: a URDF element in the wrong place (`<origin>` directly in `<link>`),
+    an old or private extension (`<verbose>`, `<self_filter>`), an attribute
+    on an element that takes none. Info: shown, never fails a run.
+
+    Known extensions draw nothing: Gazebo's tags inside `<gazebo>`, PyBullet's
+    `<contact>` in a link, anything prefixed (`drake:`, `xacro:`), Isaac's
+    `dont_collapse`, `<material>` in a `<collision>`, MuJoCo's `<mujoco>`,
+    robot-level `<sensor>` (urdfdom, iDynTree), vendor attributes. Pinocchio
+    reads URDF through urdfdom; its own extras live in SRDF.
+
+    ## Why is this bad?
+    Every URDF consumer skips it: if it was meant to configure something, it
+    does not. Often it is harmless leftover markup; sometimes a setting in the
+    wrong place.
+
+    ## Example
+    ```xml
+    <link name="tool_link">
+      <origin xyz="0 0 0.1"/>
+    </link>
+    ```
+
+    ## Use instead
+    ```xml
+    <link name="tool_link">
+      <inertial>
+        <origin xyz="0 0 0.1"/>
+        <mass value="0.2"/>
+        <inertia ixx="1e-4" ixy="0" ixz="0" iyy="1e-4" iyz="0" izz="1e-4"/>
+      </inertial>
+    </link>
+    ```
+    """
+    for unknown in _unknown_markup(loaded):
+        if unknown.typo_of or unknown.gazebo:
+            continue
+        if unknown.attribute:
+            attributes = sorted(SCHEMA[unknown.parent][0])
+            hint = f"<{unknown.parent}> takes {', '.join(attributes)}" if attributes else f"<{unknown.parent}> takes no attributes"
+            yield loaded.diagnostic("D010", f"<{unknown.parent}> has no attribute '{unknown.name}'; URDF consumers ignore it", unknown.element, hint)
+            continue
+        places = _belongs_in(unknown.name)
+        if places:
+            hint = f"<{unknown.name}> belongs in " + ", ".join(f"<{p}>" for p in places)
+        else:
+            hint = f"<{unknown.parent}> may hold " + ", ".join(f"<{c}>" for c in sorted(SCHEMA[unknown.parent][1]))
+        yield loaded.diagnostic("D010", f"<{unknown.name}> is not URDF markup inside <{unknown.parent}>; URDF consumers ignore it", unknown.element, hint)
+
+
+def _owner_name(element) -> str | None:
+    """The link or joint an element is written in, for a <gazebo reference>."""
+    for ancestor in (element, *element.iterancestors()):
+        if tag_name(ancestor) in ("link", "joint"):
+            return ancestor.get("name")
+    return None
+
+
+@check("D011", "gazebo-tag-outside-gazebo", WARNING, "Gazebo markup written outside `<gazebo>`, where Gazebo never reads it.", in_check=False)
+def gazebo_outside_gazebo(loaded):
+    """## What it does
+    Flags Gazebo markup (`<surface>`, `<mu1>`, `<gravity>`, `<kinematic>`,
+    `<selfCollide>`, `<sensor>` in a link, `<plugin>`...) written directly in a
+    `<link>`, `<joint>`, `<visual>`, `<collision>` or `<robot>` instead of in a
+    `<gazebo>` block: one diagnostic per element holding it.
+
+    ## Why is this bad?
+    Gazebo reads its settings only from `<gazebo>` blocks; everything else is
+    dropped while the URDF is converted to SDFormat. The friction, sensor or
+    plugin written there is dead configuration: the simulation runs without it.
+
+    ## Example
+    ```xml
+    <link name="wheel_link">
+      <collision><geometry><cylinder radius="0.07" length="0.05"/></geometry></collision>
+      <surface><friction><ode><mu1>1.0</mu1></ode></friction></surface>
+    </link>
+    ```
+
+    ## Use instead
+    ```xml
+    <link name="wheel_link">
+      <collision><geometry><cylinder radius="0.07" length="0.05"/></geometry></collision>
+    </link>
+    <gazebo reference="wheel_link">
+      <mu1>1.0</mu1>
+    </gazebo>
+    ```
+    """
+    found: dict = {}
+    for unknown in _unknown_markup(loaded):
+        if unknown.gazebo:
+            found.setdefault(unknown.element.getparent(), []).append(unknown)
+    for parent, unknowns in found.items():
+        tags = ", ".join(f"<{u.name}>" for u in unknowns)
+        owner = _owner_name(parent)
+        where = f"<{unknowns[0].parent}>" + (f" of '{owner}'" if owner else "")
+        hint = f'move it into <gazebo reference="{owner}">' if owner else "move it into a <gazebo> block"
+        yield loaded.diagnostic("D011", f"Gazebo markup {tags} in {where} is outside <gazebo>: Gazebo never reads it", unknowns[0].element, hint)
 
 
 @check("D003", "visual-without-collision", WARNING, "A link with inertia and a visual, but no collision.", in_check=False)
@@ -358,6 +564,63 @@ def transmission_joint(loaded):
             if name is not None and name not in joints:
                 close = _suggestion(name, joints)
                 yield loaded.diagnostic("D007", f"transmission '{transmission.get('name', '')}' names joint '{name}', which does not exist", joint, f"did you mean '{close}'?" if close else None)
+
+
+@check("D012", "transmission-fixed-joint", WARNING, "A transmission driving a fixed joint.", in_check=False)
+def transmission_fixed_joint(loaded):
+    """## What it does
+    Flags a `<transmission>` whose `<joint name>` is a fixed joint.
+
+    ## Why is this bad?
+    A fixed joint has no degree of freedom to drive: ros_control and
+    gazebo_ros_control refuse or skip the transmission, and the actuator it
+    describes moves nothing. Usually the joint was fixed on purpose (a
+    simplified model) and the transmission left behind, or the joint should
+    move and its type is wrong.
+
+    ## Example
+    ```xml
+    <link name="base_link"/>
+    <link name="caster_link"/>
+    <joint name="caster_joint" type="fixed">
+      <parent link="base_link"/>
+      <child link="caster_link"/>
+    </joint>
+    <transmission name="caster_trans">
+      <type>transmission_interface/SimpleTransmission</type>
+      <joint name="caster_joint">
+        <hardwareInterface>hardware_interface/EffortJointInterface</hardwareInterface>
+      </joint>
+    </transmission>
+    ```
+
+    ## Use instead
+    ```xml
+    <link name="base_link"/>
+    <link name="caster_link"/>
+    <joint name="caster_joint" type="continuous">
+      <parent link="base_link"/>
+      <child link="caster_link"/>
+      <axis xyz="0 0 1"/>
+    </joint>
+    <transmission name="caster_trans">
+      <type>transmission_interface/SimpleTransmission</type>
+      <joint name="caster_joint">
+        <hardwareInterface>hardware_interface/EffortJointInterface</hardwareInterface>
+      </joint>
+    </transmission>
+    ```
+    """
+    for transmission in loaded.robot.element.iterfind("transmission"):
+        for element in transmission.iterfind("joint"):
+            joint = loaded.robot.joints.get(element.get("name"))
+            if joint is not None and joint.type == "fixed":
+                yield loaded.diagnostic(
+                    "D012",
+                    f"transmission '{transmission.get('name', '')}' drives joint '{joint.name}', which is fixed",
+                    element,
+                    "remove the transmission if the joint is fixed on purpose, or give the joint the type it moves with",
+                )
 
 
 def _plugin_references(loaded, tags: set[str]):

@@ -1,0 +1,194 @@
+"""Markup and material rules on real-world patterns: each false alarm seen on
+published robots draws nothing, next to the real defect that still draws its warning."""
+
+from __future__ import annotations
+
+from urdfcli.config import Config
+from urdfcli.linter import lint_file
+
+MARKUP = ("D001", "D002", "D010", "D011", "D012", "M002", "M003")
+
+
+def found(tmp_path, body: str, head: str = "") -> list[tuple[str, str, str]]:
+    """(code, severity, message) of the markup and material rules on a robot made of ``body``."""
+    path = tmp_path / "robot.urdf"
+    path.write_text(f'<robot name="r" {head}>\n{body}\n</robot>\n')
+    return [(d.code, d.severity.value, d.message) for d in lint_file(str(path), Config()).diagnostics if d.code in MARKUP]
+
+
+def codes(tmp_path, body: str, head: str = "") -> list[str]:
+    return [code for code, _, _ in found(tmp_path, body, head)]
+
+
+def visual(material: str, link: str = "a") -> str:
+    return f'<link name="{link}"><visual><geometry><box size="1 1 1"/></geometry>{material}</visual></link>'
+
+
+def fixed(parent: str, child: str, name: str | None = None) -> str:
+    return f'<joint name="{name or child + "_joint"}" type="fixed"><parent link="{parent}"/><child link="{child}"/></joint>'
+
+
+# -- materials (M002, M003) -----------------------------------------------------------
+
+
+def test_materials_without_a_name_are_never_shared(tmp_path):
+    # urdfdom only shares named materials: an empty name is each visual's own colour
+    body = (
+        visual('<material name=""><color rgba="1 0 0 1"/></material>', "a")
+        + visual('<material name=""><color rgba="0 1 0 1"/></material>', "b")
+        + visual('<material name=""/>', "c")
+        + fixed("a", "b") + fixed("a", "c")
+    )
+    assert codes(tmp_path, body) == []
+
+
+def test_a_named_material_given_two_colours_is_still_flagged(tmp_path):
+    body = (
+        visual('<material name="grey"><color rgba="0.2 0.2 0.2 1"/></material>', "a")
+        + visual('<material name="grey"><color rgba="0.5 0.5 0.5 1"/></material>', "b")
+        + fixed("a", "b")
+    )
+    assert codes(tmp_path, body) == ["M003"]
+
+
+def test_colours_equal_to_print_precision_are_the_same_colour(tmp_path):
+    body = (
+        '<material name="silver"><color rgba="0.75294 0.75294 0.75294 1"/></material>'
+        + visual('<material name="silver"><color rgba="0.752941176470588 0.752941176470588 0.752941176470588 1"/></material>')
+    )
+    assert codes(tmp_path, body) == []
+    assert codes(tmp_path, body.replace("0.752941176470588", "0.76", 1)) == ["M003"]
+
+
+def test_an_undefined_named_material_is_still_flagged(tmp_path):
+    assert codes(tmp_path, visual('<material name="FlatBlack"/>')) == ["M002"]
+
+
+# -- documented extensions (D001, D002, D010) -----------------------------------------
+
+EXTENSIONS = """
+<link name="base">
+  <contact><lateral_friction value="1"/><rolling_friction value="0.01"/></contact>
+  <inertial><mass value="1"/><inertia ixx="0.1" ixy="0" ixz="0" iyy="0.1" iyz="0" izz="0.1"/></inertial>
+  <visual><geometry><box size="0.4 0.4 0.4"/></geometry><material name="grey"><color rgba="0.5 0.5 0.5 1"/><specular rgb="1 1 1"/></material></visual>
+  <collision group="1" mask="2" concave="yes">
+    <geometry><box size="0.4 0.4 0.4"/></geometry>
+    <material name="grey"/>
+    <drake:proximity_properties><drake:mu_dynamic value="0.5"/></drake:proximity_properties>
+  </collision>
+</link>
+<link name="arm">
+  <inertial><mass value="1"/><inertia ixx="0.1" ixy="0" ixz="0" iyy="0.1" iyz="0" izz="0.1"/></inertial>
+  <collision><geometry><box size="0.4 0.4 0.4"/></geometry></collision>
+</link>
+<link name="tool"/>
+<joint name="shoulder" type="revolute">
+  <parent link="base"/><child link="arm"/><axis xyz="0 0 1"/>
+  <limit lower="-1" upper="1" effort="80" velocity="2" command_effort="80" current="10" gear_velocity="7"/>
+  <dynamics D="1" K="1" mu_coulomb="0" mu_viscous="0" damping="0.1"/>
+  <drake:rotor_inertia value="0.01"/>
+</joint>
+<joint name="tool_joint" type="fixed" dont_collapse="true"><parent link="arm"/><child link="tool"/></joint>
+<sensor name="ft" type="force_torque"><parent joint="shoulder"/></sensor>
+<mujoco><compiler meshdir="meshes" discardvisual="false"/></mujoco>
+<gazebo reference="base"><mu1>0.9</mu1><selfCollide>true</selfCollide></gazebo>
+"""
+DRAKE = 'xmlns:drake="http://drake.mit.edu"'
+
+
+def test_documented_extensions_draw_nothing(tmp_path):
+    """PyBullet, Drake, Isaac, MuJoCo, Franka, ANYmal, urdfdom sensors, Gazebo inside <gazebo>."""
+    assert found(tmp_path, EXTENSIONS, DRAKE) == []
+
+
+def test_typos_next_to_the_extensions_are_warnings(tmp_path):
+    body = EXTENSIONS.replace('<material name="grey"><color', '<metrial name="grey"><color').replace("</material></visual>", "</metrial></visual>")
+    body = body.replace('<axis xyz="0 0 1"/>', '<axis xyz="0 0 1"/><limt effort="1"/>').replace('effort="80" velocity', 'effort="80" velocty')
+    assert found(tmp_path, body, DRAKE) == [
+        ("D001", "warning", "<metrial> is not a URDF element inside <visual>; it is ignored"),
+        ("D010", "info", "<limt> is not URDF markup inside <joint>; URDF consumers ignore it"),
+        ("D002", "warning", "<limit> has no attribute 'velocty'; it is ignored"),
+    ]
+
+
+def test_a_misspelt_element_that_is_already_there_is_no_typo(tmp_path):
+    # <limt> next to a <limit>: the joint has its limit, so <limt> is leftover markup, not the missing one
+    body = '<link name="a"/><link name="b"/><joint name="j" type="revolute"><parent link="a"/><child link="b"/><axis xyz="0 0 1"/><limit lower="-1" upper="1" effort="1" velocity="1"/><limt/></joint>'
+    assert found(tmp_path, body) == [("D010", "info", "<limt> is not URDF markup inside <joint>; URDF consumers ignore it")]
+    assert codes(tmp_path, body.replace("<limit ", "<limmit ")) == ["D001", "D001"]
+
+
+def test_did_you_mean_never_suggests_an_attribute_already_there(tmp_path):
+    body = '<material name="m"><color rgba="1 0 0 1" rgb="1 0 0"/></material><link name="a"/>'
+    assert found(tmp_path, body) == [("D010", "info", "<color> has no attribute 'rgb'; URDF consumers ignore it")]
+    assert codes(tmp_path, '<material name="m"><color rgba="1 0 0 1"/><color rgb="1 0 0 1"/></material><link name="a"/>') == ["D002"]
+
+
+def test_unknown_markup_that_is_no_typo_is_info(tmp_path):
+    body = (
+        '<link name="gripper"><collision><geometry><box size="0.1 0.1 0.1"/></geometry><verbose value="Yes"/></collision>'
+        '<self_filter><padding value="0.01"/></self_filter></link>'
+        '<link name="frame"><origin xyz="0 0 0"/></link>' + fixed("gripper", "frame")
+    )
+    result = found(tmp_path, body)
+    assert {(code, severity) for code, severity, _ in result} == {("D010", "info")}
+    assert len(result) == 3
+
+
+# -- Gazebo markup outside <gazebo> (D011) --------------------------------------------
+
+WHEEL = """
+<link name="base_link"/>
+<link name="wheel_link">
+  <collision><geometry><cylinder radius="0.07" length="0.05"/></geometry></collision>
+  SURFACE
+</link>
+<joint name="wheel_joint" type="continuous"><parent link="base_link"/><child link="wheel_link"/><axis xyz="0 1 0"/></joint>
+"""
+SURFACE = "<surface><friction><ode><mu1>100000.0</mu1></ode></friction></surface><kinematic>0</kinematic>"
+
+
+def test_gazebo_markup_outside_gazebo_is_dead_configuration(tmp_path):
+    assert found(tmp_path, WHEEL.replace("SURFACE", SURFACE)) == [
+        ("D011", "warning", "Gazebo markup <surface>, <kinematic> in <link> of 'wheel_link' is outside <gazebo>: Gazebo never reads it"),
+    ]
+
+
+def test_gazebo_markup_inside_gazebo_draws_nothing(tmp_path):
+    body = WHEEL.replace("SURFACE", "") + f'<gazebo reference="wheel_link">{SURFACE}</gazebo>'
+    assert found(tmp_path, body) == []
+
+
+# -- transmissions (D012, D007) -------------------------------------------------------
+
+CASTER = """
+<link name="base_link"/>
+<link name="caster_link"/>
+<joint name="caster_joint" type="TYPE"><parent link="base_link"/><child link="caster_link"/><axis xyz="0 0 1"/></joint>
+<transmission name="caster_trans">
+  <type>transmission_interface/SimpleTransmission</type>
+  <joint name="JOINT"><hardwareInterface>hardware_interface/EffortJointInterface</hardwareInterface></joint>
+  <actuator name="caster_motor"><mechanicalReduction>1</mechanicalReduction></actuator>
+</transmission>
+"""
+
+
+def test_a_transmission_driving_a_fixed_joint_is_flagged(tmp_path):
+    assert found(tmp_path, CASTER.replace("TYPE", "fixed").replace("JOINT", "caster_joint")) == [
+        ("D012", "warning", "transmission 'caster_trans' drives joint 'caster_joint', which is fixed"),
+    ]
+
+
+def test_a_transmission_driving_a_moving_joint_draws_nothing(tmp_path):
+    assert found(tmp_path, CASTER.replace("TYPE", "continuous").replace("JOINT", "caster_joint")) == []
+
+
+def test_a_transmission_naming_no_joint_is_still_flagged(tmp_path):
+    result = [(d.code) for d in _lint(tmp_path, CASTER.replace("TYPE", "continuous").replace("JOINT", "caster"))]
+    assert "D007" in result and "D012" not in result
+
+
+def _lint(tmp_path, body: str):
+    path = tmp_path / "robot.urdf"
+    path.write_text(f'<robot name="r">\n{body}\n</robot>\n')
+    return lint_file(str(path), Config()).diagnostics
