@@ -171,7 +171,9 @@ class MeshFiles:
 
     @classmethod
     def of(cls, loaded: Loaded) -> MeshFiles:
-        return cls(resolver_of(loaded), loaded.document.file.resolve().parent if loaded.document.file else None)
+        return loaded.remembered(
+            "mesh files", lambda: cls(resolver_of(loaded), loaded.document.file.resolve().parent if loaded.document.file else None)
+        )
 
     def __call__(self, fname: str) -> str:
         path = self.resolver.resolve_uri(fname, self.base)
@@ -182,12 +184,17 @@ class MeshFiles:
         return str(path)
 
 
-@functools.lru_cache(maxsize=256)
 def mesh_properties(filename: str, scale: Vector, files: MeshFiles) -> tuple[float, Vector, Matrix]:
     """Volume, centre and tensor per unit mass of a mesh, ``scale`` applied.
 
     yourdfpy loads it (through ``files``, with trimesh) as the collision geometry of a
     one-link robot. A mesh that is not closed has no inside: its convex hull stands in."""
+    files(filename)  # a mesh that does not resolve is told before numpy, trimesh and yourdfpy load (1-2 s)
+    return _mesh_properties(filename, scale, files)
+
+
+@functools.lru_cache(maxsize=256)
+def _mesh_properties(filename: str, scale: Vector, files: MeshFiles) -> tuple[float, Vector, Matrix]:
     import numpy
     import trimesh
     import yourdfpy

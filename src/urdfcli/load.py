@@ -61,6 +61,7 @@ _ASCII_COMPATIBLE = ("utf8", "ascii", "usascii", "iso88591", "latin1")
 _XACRO_ELEMENT = "//*[" + " or ".join(f"namespace-uri() = '{ns}'" for ns in sorted(XACRO_NAMESPACES)) + " or (namespace-uri() != '' and starts-with(name(), 'xacro:'))]"
 # ${...} and $(...) where xacro evaluates them: attribute values and text (comments are not text here).
 _SUBSTITUTION = "//@*[contains(., '${') or contains(., '$(')] | //text()[contains(., '${') or contains(., '$(')]"
+_HAS_XACRO_ELEMENT = etree.XPath(f"boolean({_XACRO_ELEMENT})")
 _USES_XACRO = etree.XPath(f"boolean({_XACRO_ELEMENT} | {_SUBSTITUTION})")
 
 
@@ -70,8 +71,9 @@ def is_xacro(root: etree._Element, data: bytes) -> bool:
     or in text outside comments. A namespace declaration alone is not use: xacro's
     output would read the same, at many times the cost."""
     encoding = (root.getroottree().docinfo.encoding or "").lower().replace("-", "")
-    if encoding in _ASCII_COMPATIBLE and b"xacro" not in data and b"${" not in data and b"$(" not in data:
-        return False  # a byte search is much faster than the XPath below on a large model
+    if encoding in _ASCII_COMPATIBLE and b"${" not in data and b"$(" not in data:
+        # A byte search first: much faster than XPath on a large model.
+        return b"xacro" in data and bool(_HAS_XACRO_ELEMENT(root))
     return bool(_USES_XACRO(root))
 
 

@@ -34,7 +34,24 @@ class PackageError(ValueError):
 
 
 def package_name(manifest: Path) -> str | None:
-    """The ``<name>`` declared in a package.xml, or None when unreadable."""
+    """The ``<name>`` declared in a package.xml, or None when unreadable.
+
+    Each manifest is read once per run (again only if it changes): every input of a
+    run looks in the same packages."""
+    try:
+        state = os.stat(manifest)
+    except OSError:
+        return None
+    key = (str(manifest), state.st_mtime_ns, state.st_size)
+    if key not in _NAMES:
+        _NAMES[key] = _read_package_name(manifest)
+    return _NAMES[key]
+
+
+_NAMES: dict[tuple[str, int, int], str | None] = {}
+
+
+def _read_package_name(manifest: Path) -> str | None:
     try:
         root = etree.parse(str(manifest), _SAFE_PARSER).getroot()
     except (OSError, etree.XMLSyntaxError):
@@ -107,6 +124,7 @@ class PackageResolver:
         self._local_root = workspace_root(own) if own else None
         self._found: dict[str, Path] = {}
         self._scanned: set[Path] = set()
+        self._answers: dict[str, Path | None] = {}  # every look-up, found or not
 
     def where(self) -> str:
         """Where packages were looked for, as ``(looked in ...)`` for error messages."""
@@ -127,6 +145,12 @@ class PackageResolver:
             self._found.setdefault(name, folder)
 
     def find(self, name: str) -> Path | None:
+        """The folder of package ``name``, or None; each name is looked up once."""
+        if name not in self._answers:
+            self._answers[name] = self._find(name)
+        return self._answers[name]
+
+    def _find(self, name: str) -> Path | None:
         if name in self._explicit:
             return self._explicit[name]
         if name in self._found:

@@ -1,0 +1,63 @@
+"""What a run loads and repeats: heavy libraries only when they are used, each package
+looked up once."""
+
+from __future__ import annotations
+
+import subprocess
+import sys
+
+from urdfcli import packages
+from urdfcli.packages import PackageResolver
+
+IMPORTED = (
+    "import sys; from urdfcli.cli import main\n"
+    "sys.argv = ['urdfcli', *sys.argv[1:]]\n"
+    "try:\n    main()\nexcept SystemExit:\n    pass\n"
+    "print(sorted({m.split('.')[0] if not m.startswith('urdfcli') else m for m in sys.modules}))"
+)
+
+
+def imported(*args: str) -> list[str]:
+    """The modules a run of ``urdfcli ARGS`` has imported when it ends."""
+    done = subprocess.run([sys.executable, "-c", IMPORTED, *args], capture_output=True, text=True)
+    return eval(done.stdout.strip().splitlines()[-1])  # a list literal printed by the child
+
+
+MESHES = """<robot name="r">
+  <link name="a">
+    <inertial><mass value="1"/><inertia ixx="0.1" ixy="0" ixz="0" iyy="0.1" iyz="0" izz="0.1"/></inertial>
+    <collision><geometry><mesh filename="package://nowhere/meshes/a.stl"/></geometry></collision>
+  </link>
+  <link name="b">
+    <inertial><mass value="1"/><inertia ixx="0.1" ixy="0" ixz="0" iyy="0.1" iyz="0" izz="0.1"/></inertial>
+    <collision><geometry><mesh filename="meshes/missing.stl"/></geometry></collision>
+  </link>
+  <joint name="j" type="fixed"><parent link="a"/><child link="b"/></joint>
+</robot>
+"""
+
+
+def test_lint_loads_no_mesh_library_when_no_mesh_resolves(tmp_path):
+    path = tmp_path / "robot.urdf"
+    path.write_text(MESHES)
+    modules = imported("lint", "--format", "concise", str(path))
+    assert "urdfcli.rules.inertia" in modules  # the mass-property rules did run
+    assert not {"numpy", "trimesh", "yourdfpy", "scipy"} & set(modules)
+
+
+def test_each_package_is_looked_up_once_found_or_not(tmp_path, monkeypatch):
+    own = tmp_path / "ws" / "src" / "own"
+    (own / "urdf").mkdir(parents=True)
+    (own / "package.xml").write_text("<package><name>own</name></package>")
+    sibling = tmp_path / "ws" / "src" / "sibling"
+    sibling.mkdir()
+    (sibling / "package.xml").write_text("<package><name>sibling</name></package>")
+    parsed = []
+    real = packages._read_package_name
+    monkeypatch.setattr(packages, "_read_package_name", lambda manifest: parsed.append(manifest) or real(manifest))
+    resolver = PackageResolver((), own / "urdf" / "robot.urdf", env={})
+    for _ in range(3):
+        assert resolver.find("missing") is None
+        assert resolver.find("sibling") == sibling
+        assert resolver.find("own") == own
+    assert len(parsed) == len(set(parsed))  # no manifest read twice
