@@ -2,7 +2,9 @@
 
 from __future__ import annotations
 
+import functools
 import importlib
+import inspect
 import os
 import sys
 from typing import Annotated
@@ -51,8 +53,30 @@ def build_app(names=COMMANDS) -> typer.Typer:
 
     for name in names:
         module, function = COMMANDS[name]
-        app.command(name=name)(getattr(importlib.import_module(f".{module}", __name__), function))
+        command = getattr(importlib.import_module(f".{module}", __name__), function)
+        app.command(name=name, help=reflow(command.__doc__ or ""))(with_color_option(command))
     return app
+
+
+def reflow(doc: str) -> str:
+    """The help text with each paragraph on one line, for the help screen to wrap
+    (it would keep the docstring's line breaks, and wrap the long lines again)."""
+    return "\n\n".join(" ".join(paragraph.split()) for paragraph in inspect.cleandoc(doc).split("\n\n"))
+
+
+def with_color_option(command):
+    """``command`` with the ``--color`` option every command has (it only sets up the consoles)."""
+    from .common import ColorOption
+
+    @functools.wraps(command)
+    def run(*args, color: str = "auto", **kwargs):
+        return command(*args, **kwargs)
+
+    signature = inspect.signature(command, eval_str=True)
+    extra = inspect.Parameter("color", inspect.Parameter.KEYWORD_ONLY, default="auto", annotation=ColorOption)
+    run.__signature__ = signature.replace(parameters=[*signature.parameters.values(), extra])
+    run.__annotations__ = {**getattr(command, "__annotations__", {}), "color": ColorOption}
+    return run
 
 
 def __getattr__(name: str):
@@ -70,12 +94,20 @@ def _app_for(argv: list[str]) -> typer.Typer:
 def main() -> None:
     """Run the app; a usage error or an internal error is one line, never a bare traceback."""
     try:  # typer vendors click from 0.2x on
-        from typer._click.exceptions import ClickException, UsageError
+        from typer._click.exceptions import ClickException, NoArgsIsHelpError, UsageError
     except ImportError:
-        from click.exceptions import ClickException, UsageError
+        from click.exceptions import ClickException, NoArgsIsHelpError, UsageError
 
+    if os.environ.get("NO_COLOR") and (len(sys.argv) == 1 or {"-h", "--help"} & set(sys.argv)):
+        from typer import rich_utils  # the help screen: no bold or dim either
+
+        rich_utils.COLOR_SYSTEM = None
     try:
         code = _app_for(sys.argv[1:])(prog_name="urdfcli", standalone_mode=False)
+    except NoArgsIsHelpError as error:  # the help is printed already (rich prints it, the message is empty)
+        if error.format_message().strip():
+            sys.stderr.write(error.format_message().rstrip("\n") + "\n")
+        sys.exit(error.exit_code)
     except UsageError as error:
         command = error.ctx.command_path if error.ctx is not None else "urdfcli"
         sys.stderr.write(f"urdfcli: {_one_line(error.format_message())} (see '{command} -h')\n")

@@ -16,6 +16,7 @@ FormatOption = Annotated[
     typer.Option(
         "--format",
         "-f",
+        metavar="FORMAT",
         help="Output format: auto (text, or github under GitHub Actions), text, concise, json, sarif, github, "
         "or check_urdf (exactly check_urdf's standard output).",
         case_sensitive=False,

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import os
 from enum import IntEnum
 from typing import Annotated
 
@@ -19,14 +20,48 @@ class Exit(IntEnum):
     CANNOT_RUN = 2
 
 
-stdout = Console(highlight=False, soft_wrap=True)
-stderr = Console(stderr=True, highlight=False, soft_wrap=True)
+COLOR_MODES = ("auto", "always", "never")
+
+
+def console_options(mode: str, to_stderr: bool) -> dict:
+    """Colour and styles on a terminal (``auto``), always, or never. NO_COLOR, when
+    set, means never for ``auto``: no bold or dim either, not only no colours."""
+    never = mode == "never" or (mode == "auto" and os.environ.get("NO_COLOR"))
+    return dict(stderr=to_stderr, highlight=False, soft_wrap=True, color_system=None if never else "auto", force_terminal=True if mode == "always" else None)
+
+
+stdout = Console(**console_options("auto", False))
+stderr = Console(**console_options("auto", True))
+
+
+def set_color(mode: str) -> str:
+    """The --color option: set the two consoles up again for this mode."""
+    if mode not in COLOR_MODES:
+        raise typer.BadParameter(f"{mode!r} is not one of {', '.join(COLOR_MODES)}")
+    for console, to_stderr in ((stdout, False), (stderr, True)):
+        console.__init__(**console_options(mode, to_stderr))
+    return mode
+
+
+ColorOption = Annotated[
+    str,
+    typer.Option("--color", metavar="WHEN", callback=set_color, is_eager=True,
+                 help="Colour and bold text: auto (on a terminal, unless NO_COLOR is set), always, or never."),
+]
 
 InputsArgument = Annotated[
     list[str],
     typer.Argument(
         metavar="FILE... [NAME:=VALUE]...",
         help="URDF or xacro files ('-' reads standard input); NAME:=VALUE sets a xacro argument.",
+        show_default=False,
+    ),
+]
+FileArgument = Annotated[
+    list[str],
+    typer.Argument(
+        metavar="FILE [NAME:=VALUE]...",
+        help="URDF or xacro file ('-' reads standard input); NAME:=VALUE sets a xacro argument.",
         show_default=False,
     ),
 ]

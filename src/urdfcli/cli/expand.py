@@ -12,12 +12,12 @@ from ..formatters.text import print_diagnostic
 from ..load import InputError, LoadOptions, load_document
 from ..output import OutputError, write_atomic
 from ..packages import PackageError
-from .common import Exit, InputsArgument, PackagePathOption, fail, split_inputs, stderr
+from .common import Exit, FileArgument, PackagePathOption, fail, split_inputs, stderr
 
 
 def expand(
-    inputs: InputsArgument,
-    output: Annotated[Path | None, typer.Option("--output", "-o", help="Write to this file (atomically) instead of standard output.")] = None,
+    inputs: FileArgument,
+    output: Annotated[Path | None, typer.Option("--output", "-o", metavar="PATH", help="Write to this file (atomically) instead of standard output.")] = None,
     deps: Annotated[bool, typer.Option("--deps", help="List the files the input includes, one per line, instead of expanding.")] = False,
     package_path: PackagePathOption = None,
 ) -> None:

@@ -37,7 +37,7 @@ def graph(
     compat: Annotated[bool, typer.Option("--compat", help="Exactly urdf_to_graphviz's DOT statements (for scripts that parse them).")] = False,
     limits: Annotated[bool, typer.Option("--limits", help="Add joint limits (range, effort, velocity).")] = False,
     inertial: Annotated[bool, typer.Option("--inertial", help="Add link masses.")] = False,
-    rankdir: Annotated[RankDir, typer.Option("--rankdir", case_sensitive=False, help="Top to bottom, or left to right.")] = RankDir.TB,
+    rankdir: Annotated[RankDir, typer.Option("--rankdir", case_sensitive=False, metavar="TB|LR", help="Top to bottom, or left to right.")] = RankDir.TB,
     collapse_fixed: Annotated[bool, typer.Option("--collapse-fixed", help="Merge links joined by fixed joints into one box (for large robots).")] = False,
     timeout: Annotated[float, typer.Option("--timeout", min=1, metavar="SECONDS", help="Give up rendering after this long.")] = 120,
     package_path: PackagePathOption = None,

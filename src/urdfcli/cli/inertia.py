@@ -33,7 +33,7 @@ def inertia(
     suggest: Annotated[bool, typer.Option("--suggest", help="Print a corrected <inertial> block for each flagged link.")] = False,
     xacro: Annotated[bool, typer.Option("--xacro", help="Implies --suggest: name the xacro macro that wrote each flagged <inertial>, and print the call of it that gives the right values.")] = False,
     density: Annotated[float | None, typer.Option("--density", metavar="KG_PER_M3", help="Compute masses from the geometry's volume at this density instead of using the declared masses.")] = None,
-    output_format: Annotated[str, typer.Option("--format", "-f", help="text, or json (one object per file; a list of them for several files).", case_sensitive=False)] = "text",
+    output_format: Annotated[str, typer.Option("--format", "-f", metavar="FORMAT", help="text, or json (one object per file; a list of them for several files).", case_sensitive=False)] = "text",
     package_path: PackagePathOption = None,
 ) -> None:
     """Audit each link's mass, centre of mass and inertia against physics and its geometry.

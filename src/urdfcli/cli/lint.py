@@ -33,13 +33,13 @@ def lint(
             show_default=False,
         ),
     ],
-    output_format: Annotated[str, typer.Option("--format", "-f", help="auto (text, or github under GitHub Actions), text, concise, json, sarif or github.", case_sensitive=False)] = "auto",
+    output_format: Annotated[str, typer.Option("--format", "-f", metavar="FORMAT", help="auto (text, or github under GitHub Actions), text, concise, json, sarif or github.", case_sensitive=False)] = "auto",
     select: Annotated[list[str] | None, typer.Option("--select", metavar="CODES", help="Only these rule codes or prefixes (comma-separated; replaces the configuration's select). ALL selects every rule.", show_default=False)] = None,
     ignore: Annotated[list[str] | None, typer.Option("--ignore", metavar="CODES", help="Also ignore these codes or prefixes.", show_default=False)] = None,
     extend_select: Annotated[list[str] | None, typer.Option("--extend-select", metavar="CODES", help="Also select these codes or prefixes (e.g. S for the style rules).", show_default=False)] = None,
-    config: Annotated[Path | None, typer.Option("--config", help="Use this urdfcli.toml or pyproject.toml instead of the nearest one.", show_default=False)] = None,
+    config: Annotated[Path | None, typer.Option("--config", metavar="PATH", help="Use this urdfcli.toml or pyproject.toml instead of the nearest one.", show_default=False)] = None,
     exit_zero: Annotated[bool, typer.Option("--exit-zero", help="Exit 0 even when problems remain (2 still means it could not run).")] = False,
-    jobs: Annotated[int, typer.Option("--jobs", "-j", min=0, help="Lint files in N processes (0: one per CPU); the output order does not change.")] = 1,
+    jobs: Annotated[int, typer.Option("--jobs", "-j", min=0, metavar="N", help="Lint files in N processes (0: one per CPU); the output order does not change.")] = 1,
     package_path: PackagePathOption = None,
 ) -> None:
     """Lint URDF/xacro files against documented, configurable rules.

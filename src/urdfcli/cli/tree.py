@@ -16,17 +16,7 @@ from ..kinematics import roots
 from ..load import InputError, LoadOptions, load
 from ..loaded import Loaded
 from ..packages import PackageError
-from .common import Exit, PackagePathOption, fail, split_inputs, stderr, stdout
-
-
-FileArgument = Annotated[
-    list[str],
-    typer.Argument(
-        metavar="FILE [NAME:=VALUE]...",
-        help="URDF or xacro file ('-' reads standard input); NAME:=VALUE sets a xacro argument.",
-        show_default=False,
-    ),
-]
+from .common import Exit, FileArgument, PackagePathOption, fail, split_inputs, stderr, stdout
 
 
 def tree(
@@ -35,7 +25,7 @@ def tree(
     from_link: Annotated[str | None, typer.Option("--from", metavar="LINK", help="Show the subtree below LINK instead of the whole tree.")] = None,
     no_joints: Annotated[bool, typer.Option("--no-joints", help="Show link names only.")] = False,
     ascii_only: Annotated[bool, typer.Option("--ascii", help="Plain ASCII characters (for logs).")] = False,
-    output_format: Annotated[str, typer.Option("--format", "-f", help="text, or json (nested: each link with its children as {joint, link}).", case_sensitive=False)] = "text",
+    output_format: Annotated[str, typer.Option("--format", "-f", metavar="FORMAT", help="text, or json (nested: each link with its children as {joint, link}).", case_sensitive=False)] = "text",
     package_path: PackagePathOption = None,
 ) -> None:
     """Print the kinematic tree, each joint's type, axis and limits, and a summary.

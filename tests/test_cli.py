@@ -1,0 +1,84 @@
+"""The command line on first contact: help, usage, metavars and colour."""
+
+from __future__ import annotations
+
+import os
+import pty
+import re
+import subprocess
+import sys
+
+import pytest
+
+from conftest import run_cli
+
+COMMANDS = ("expand", "check", "tree", "graph", "inertia", "lint", "rules", "rule")
+BROKEN = '<robot name="r"><link name="a"/><link name="a"/></robot>'
+
+
+def test_bare_urdfcli_prints_the_help_and_exits_2_without_an_error_line():
+    done = run_cli()
+    assert done.returncode == 2
+    assert b"Usage: urdfcli" in done.stdout and b"Commands" in done.stdout
+    assert done.stderr == b""
+
+
+def test_expand_usage_says_one_file():
+    usage = next(line for line in run_cli("expand", "--help").stdout.decode().splitlines() if "Usage:" in line)
+    assert "FILE [NAME:=VALUE]..." in usage and "FILE..." not in usage
+
+
+@pytest.mark.parametrize("command", COMMANDS)
+def test_options_read_as_words_and_every_command_has_color(command):
+    text = run_cli(command, "--help", env={"COLUMNS": "200"}).stdout.decode()
+    options = [line for line in text.splitlines() if re.match(r"\W*--", line)]
+    assert any(re.search(r"--color\s+WHEN\s", line) for line in options)
+    for line in options:
+        assert not re.search(r"<(str|int|float|path|int range|float range)>", line), line
+    for line in (o for o in options if "--format" in o):
+        assert re.search(r"--format\s+-f\s+(FORMAT|dot)\s", line), line
+
+
+def test_lint_help_paragraphs_wrap_as_one():
+    """The docstring's own line breaks do not show: no short line inside a paragraph."""
+    text = run_cli("lint", "--help", env={"COLUMNS": "80"}).stdout.decode()
+    prose = text.split("Arguments")[0]
+    paragraphs = [[line.strip() for line in block.splitlines() if line.strip()] for block in re.split(r"\n\s*\n", prose)]
+    paragraph = next(p for p in paragraphs if p and p[0].startswith("Configuration comes from"))
+    assert " ".join(paragraph).endswith("Exit 0 when nothing remains, 1 when a warning or error remains, 2 when it cannot run.")
+    assert all(len(line) > 60 for line in paragraph[:-1]), paragraph
+
+
+def on_a_terminal(*args: str, env: dict) -> bytes:
+    """What urdfcli writes to a terminal (both streams)."""
+    leader, follower = pty.openpty()
+    environment = {k: v for k, v in os.environ.items() if k not in ("NO_COLOR", "FORCE_COLOR")}
+    process = subprocess.Popen([sys.executable, "-m", "urdfcli", *args], stdout=follower, stderr=follower,
+                               env={**environment, "TERM": "xterm-256color", "COLUMNS": "200", **env})
+    os.close(follower)
+    out = b""
+    while True:
+        try:
+            chunk = os.read(leader, 65536)
+        except OSError:
+            break
+        if not chunk:
+            break
+        out += chunk
+    process.wait(timeout=60)
+    os.close(leader)
+    return out
+
+
+def test_no_color_removes_bold_and_dim_too_and_color_option_decides(tmp_path):
+    path = tmp_path / "broken.urdf"
+    path.write_text(BROKEN)
+    assert b"\x1b[1m" in on_a_terminal("check", str(path), env={})  # bold summary on a terminal
+    assert b"\x1b[" not in on_a_terminal("check", str(path), env={"NO_COLOR": "1"})
+    assert b"\x1b[" not in on_a_terminal("check", "--color", "never", str(path), env={})
+    assert b"\x1b[" not in on_a_terminal("check", "--help", env={"NO_COLOR": "1"})
+    piped = run_cli("check", "--color", "always", str(path))
+    assert b"\x1b[1m" in piped.stderr
+    assert b"\x1b[" not in run_cli("check", str(path)).stderr
+    bad = run_cli("tree", "--color", "sometimes", str(path))
+    assert bad.returncode == 2 and b"sometimes" in bad.stderr
