@@ -192,3 +192,37 @@ def _lint(tmp_path, body: str):
     path = tmp_path / "robot.urdf"
     path.write_text(f'<robot name="r">\n{body}\n</robot>\n')
     return lint_file(str(path), Config()).diagnostics
+
+
+# -- missing files: one cause, one diagnostic (D004, D005) ----------------------------
+
+
+def meshes(*uris: str) -> str:
+    return "".join(f'<link name="l{i}"><visual><geometry><mesh filename="{uri}"/></geometry></visual></link>' for i, uri in enumerate(uris)) + "".join(
+        fixed("l0", f"l{i}") for i in range(1, len(uris))
+    )
+
+
+def resources(tmp_path, body: str) -> list[tuple[str, str]]:
+    return [(d.code, d.message) for d in _lint(tmp_path, body) if d.code in ("D004", "D005")]
+
+
+def test_a_missing_package_is_one_diagnostic_however_many_meshes_name_it(tmp_path):
+    found_ = resources(tmp_path, meshes("package://gone/a.stl", "package://gone/b.stl", "package://gone/c.stl"))
+    assert [code for code, _ in found_] == ["D005"]
+    assert "(and 2 other files)" in found_[0][1]
+
+
+def test_an_empty_package_name_is_said_so(tmp_path):
+    assert resources(tmp_path, meshes("package:///robot/a.stl", "package:///robot/b.stl")) == [
+        ("D005", "mesh 'package:///robot/a.stl' (and 1 other file): the package name is empty"),
+    ]
+
+
+def test_files_in_a_missing_folder_are_one_diagnostic_a_missing_file_one_each(tmp_path):
+    (tmp_path / "meshes").mkdir()
+    (tmp_path / "meshes" / "arm.stl").write_text("solid arm\nendsolid arm\n")
+    body = meshes("/nowhere/romeo/Torso.mesh", "/nowhere/romeo/Head.mesh", "meshes/arm.stl", "meshes/Arm.STL", "meshes/leg.stl")
+    found_ = resources(tmp_path, body)
+    assert [code for code, _ in found_] == ["D004", "D004", "D004"]
+    assert found_[0][1] == "mesh '/nowhere/romeo/Torso.mesh' and 1 other file there: folder /nowhere/romeo does not exist"

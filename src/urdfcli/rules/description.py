@@ -413,6 +413,8 @@ def file_not_found(loaded):
     Resolves each `<mesh filename>` and `<texture filename>` (`package://`,
     `file://`, absolute or relative paths; never a network address) and flags
     a file that does not exist. Relative paths are taken from the input's folder.
+    Files in a folder that does not exist at all (an absolute path from another
+    machine) are one diagnostic per folder.
 
     ## Why is this bad?
     RViz, Gazebo and MoveIt show nothing, or refuse to load the robot, when a
@@ -435,14 +437,22 @@ def file_not_found(loaded):
     if loaded.resolver is None:
         return
     base = loaded.document.file.parent if loaded.document.file else None
+    missing_folders: dict = {}
     for element, kind, uri in _resources(loaded):
         package = _package_of(uri)
         if package is not None and loaded.resolver.find(package) is None:
             continue  # D005
         path = loaded.resolver.resolve_uri(uri, base)
         if path is not None and not path.exists():
-            looked = f" (looked for {path})" if str(path) != uri else ""
-            yield loaded.diagnostic("D004", f"{kind} '{uri}' not found{looked}", element, "file names are case-sensitive" if path.parent.is_dir() else None)
+            if path.parent.is_dir():
+                looked = f" (looked for {path})" if str(path) != uri else ""
+                yield loaded.diagnostic("D004", f"{kind} '{uri}' not found{looked}", element, "file names are case-sensitive")
+            else:
+                missing_folders.setdefault(path.parent, []).append((element, kind, uri))
+    for folder, uses in missing_folders.items():  # a missing folder is one cause: one diagnostic
+        element, kind, uri = uses[0]
+        others = f" and {len(uses) - 1} other {'files' if len(uses) > 2 else 'file'} there" if len(uses) > 1 else ""
+        yield loaded.diagnostic("D004", f"{kind} '{uri}'{others}: folder {folder} does not exist", element, None)
 
 
 @check("D005", "package-uri-not-found", WARNING, "A `package://` URI names a package that cannot be found.", in_check=False)
@@ -450,7 +460,9 @@ def package_not_found(loaded):
     """## What it does
     Flags a `package://NAME/...` mesh or texture whose package cannot be found
     with `-P/--package-path`, `ROS_PACKAGE_PATH`, `AMENT_PREFIX_PATH`, or next
-    to the input file (its own package and its siblings).
+    to the input file (its own package and its siblings), and a `package:///...`
+    URI whose package name is empty. One diagnostic per missing package, at
+    its first use, saying how many other files name it.
 
     ## Why is this bad?
     Consumers resolve `package://` through the ROS package index: a misspelt
@@ -472,10 +484,19 @@ def package_not_found(loaded):
     """
     if loaded.resolver is None:
         return
+    missing: dict[str, list] = {}
     for element, kind, uri in _resources(loaded):
         package = _package_of(uri)
         if package is not None and loaded.resolver.find(package) is None:
-            yield loaded.diagnostic("D005", f"{kind} '{uri}': package '{package}' not found {loaded.resolver.where()}", element, "name the package's folder with -P NAME=DIR, or fix its name")
+            missing.setdefault(package, []).append((element, kind, uri))
+    for package, uses in missing.items():  # one cause: one diagnostic, at the first use
+        element, kind, uri = uses[0]
+        others = f" (and {len(uses) - 1} other {'files' if len(uses) > 2 else 'file'})" if len(uses) > 1 else ""
+        if package:
+            message, hint = f"{kind} '{uri}'{others}: package '{package}' not found {loaded.resolver.where()}", "name the package's folder with -P NAME=DIR, or fix its name"
+        else:
+            message, hint = f"{kind} '{uri}'{others}: the package name is empty", "a package URI is package://PACKAGE/PATH: two slashes, then the package's name"
+        yield loaded.diagnostic("D005", message, element, hint)
 
 
 def _known_names(loaded) -> set[str]:
