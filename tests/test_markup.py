@@ -74,6 +74,7 @@ EXTENSIONS = """
   <collision group="1" mask="2" concave="yes">
     <geometry><box size="0.4 0.4 0.4"/></geometry>
     <material name="grey"/>
+    <contact_coefficients mu="0.8" kp="1e6" kd="1"/>
     <drake:proximity_properties><drake:mu_dynamic value="0.5"/></drake:proximity_properties>
   </collision>
 </link>
@@ -91,6 +92,7 @@ EXTENSIONS = """
 <joint name="tool_joint" type="fixed" dont_collapse="true"><parent link="arm"/><child link="tool"/></joint>
 <sensor name="ft" type="force_torque"><parent joint="shoulder"/></sensor>
 <mujoco><compiler meshdir="meshes" discardvisual="false"/></mujoco>
+<klampt use_vis_geom="1"/>
 <gazebo reference="base"><mu1>0.9</mu1><selfCollide>true</selfCollide></gazebo>
 """
 DRAKE = 'xmlns:drake="http://drake.mit.edu"'
@@ -152,6 +154,10 @@ def test_gazebo_markup_outside_gazebo_is_dead_configuration(tmp_path):
     assert found(tmp_path, WHEEL.replace("SURFACE", SURFACE)) == [
         ("D011", "warning", "Gazebo markup <surface>, <kinematic> in <link> of 'wheel_link' is outside <gazebo>: Gazebo never reads it"),
     ]
+
+
+def test_a_gazebo_material_in_a_link_is_gazebo_markup(tmp_path):
+    assert [code for code, _, _ in found(tmp_path, WHEEL.replace("SURFACE", "<material>Gazebo/Black</material>"))] == ["D011"]
 
 
 def test_gazebo_markup_inside_gazebo_draws_nothing(tmp_path):

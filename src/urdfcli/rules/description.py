@@ -54,6 +54,7 @@ EXTENSIONS: dict[str, tuple[dict[str, str], dict[str, str]]] = {
         "sensor": "urdfdom's and iDynTree's sensor extension",
         "mujoco": "MuJoCo's compiler options",
         "deformable": "PyBullet's soft bodies",
+        "klampt": "Klampt's robot settings",
     }),
     "link": ({}, {
         "contact": "PyBullet's contact parameters",
@@ -61,6 +62,7 @@ EXTENSIONS: dict[str, tuple[dict[str, str], dict[str, str]]] = {
     }),
     "collision": ({"group": "PyBullet's collision filter", "mask": "PyBullet's collision filter", "concave": "PyBullet's concave meshes"}, {
         "material": "exporters that write one material for visual and collision; harmless",
+        "contact_coefficients": "the ROS URDF tutorial's contact coefficients (mu, kp, kd)",
     }),
     "material": ({}, {"specular": "PyBullet's specular colour"}),
     "joint": ({"dont_collapse": "Isaac Sim's URDF importer (keeps a fixed joint)"}, {}),
@@ -152,6 +154,11 @@ def _is_foreign(name: str) -> bool:
     return ":" in name or name.startswith("{")
 
 
+def _gazebo_material(element) -> bool:
+    """Gazebo's ``<material>Gazebo/Grey</material>``: a script name as text, no name attribute."""
+    return tag_name(element) == "material" and element.get("name") is None and bool((element.text or "").strip())
+
+
 def _unknown_markup(loaded) -> list[Unknown]:
     """Every unknown element and attribute, classified once for D001, D002, D010 and D011."""
     return loaded.remembered("unknown-markup", lambda: list(_classify(loaded)))
@@ -176,7 +183,7 @@ def _classify(loaded):
             name = tag_name(child)
             if name in known or _is_foreign(name):
                 continue
-            if name in GAZEBO_TAGS and not (tag == "robot" and name == "gazebo"):
+            if (name in GAZEBO_TAGS and not (tag == "robot" and name == "gazebo")) or _gazebo_material(child):
                 yield Unknown(child, tag, name, False, gazebo=True)
             else:
                 yield Unknown(child, tag, name, False, _typo_of(name, missing))
@@ -324,7 +331,8 @@ def _owner_name(element) -> str | None:
 def gazebo_outside_gazebo(loaded):
     """## What it does
     Flags Gazebo markup (`<surface>`, `<mu1>`, `<gravity>`, `<kinematic>`,
-    `<selfCollide>`, `<sensor>` in a link, `<plugin>`...) written directly in a
+    `<selfCollide>`, `<sensor>` in a link, `<material>Gazebo/Grey</material>`,
+    `<plugin>`...) written directly in a
     `<link>`, `<joint>`, `<visual>`, `<collision>` or `<robot>` instead of in a
     `<gazebo>` block: one diagnostic per element holding it.
 
