@@ -187,5 +187,5 @@ def test_the_readme_example_configuration_is_valid(tmp_path):
     readme = (ROOT / "README.md").read_text(encoding="utf-8")
     [example] = [block for block in re.findall(r"```toml\n(.*?)```", readme, re.DOTALL) if "[tool.urdfcli]" in block]
     config = parse(tomllib.loads(example)["tool"]["urdfcli"], "README", tmp_path)
-    assert config.select == ("ALL",) and config.mappings_for("urdf/robot.urdf.xacro") == {"use_gpu": "false", "prefix": ""}
+    assert config.select == ("ALL",) and config.mappings_for(str(tmp_path / "urdf/robot.urdf.xacro")) == {"use_gpu": "false", "prefix": ""}
     assert config.package_paths == (str(tmp_path.parent / "vendor"), f"my_robot={tmp_path / 'src/my_robot'}")

@@ -1,6 +1,7 @@
-"""Project configuration for ``urdfcli lint``.
+"""Project configuration for every command that reads a model (check, lint,
+inertia, tree, graph).
 
-Found by walking up from each linted file: in every folder, ``urdfcli.toml``
+Found by walking up from each input file: in every folder, ``urdfcli.toml``
 or ``.urdfcli.toml`` (keys at the top level), else a ``pyproject.toml`` with a
 ``[tool.urdfcli]`` table; the first folder that has one wins. ``--config FILE``
 names one explicitly. Every key, rule code and option value is validated: a
@@ -20,6 +21,11 @@ Keys::
     exempt = ["base_footprint", "*_frame"]
     [xacro-args]                   # glob -> xacro arguments for the files it matches
     "urdf/*.urdf.xacro" = { use_gpu = "false" }
+    [models]                       # model -> the argument sets it is checked with
+    "ur_description/urdf/ur.urdf.xacro" = [["ur_type:=ur5e", "name:=ur"]]
+
+Paths and globs are relative to the folder of the file that holds them, whatever
+the working directory; a glob without a ``/`` also matches a file's name alone.
 """
 
 from __future__ import annotations
@@ -35,7 +41,7 @@ from .diagnostics import Severity
 from .rules import Rule, UnknownRule, load_all, lookup
 
 CONFIG_NAMES = ("urdfcli.toml", ".urdfcli.toml")
-KEYS = ("select", "ignore", "extend-select", "per-file-ignores", "severity", "options", "package-paths", "xacro-args")
+KEYS = ("select", "ignore", "extend-select", "per-file-ignores", "severity", "options", "package-paths", "xacro-args", "models")
 ALL = "ALL"
 
 
@@ -57,6 +63,7 @@ class Config:
     options: tuple[tuple[str, tuple[tuple[str, Any], ...]], ...] = ()  # code -> (name, value)...
     package_paths: tuple[str, ...] = ()
     xacro_args: tuple[tuple[str, tuple[tuple[str, str], ...]], ...] = ()
+    models: tuple[tuple[Path, tuple[tuple[tuple[str, str], ...], ...]], ...] = ()  # absolute model -> argument sets
 
     @classmethod
     def everything(cls) -> "Config":
@@ -107,14 +114,28 @@ class Config:
                 mappings.update(values)
         return mappings
 
-    def _glob(self, pattern: str, file: str) -> bool:
-        path = Path(file)
-        candidates = {path.as_posix(), path.name}
+    def argument_sets(self, file: str) -> list[dict[str, str]] | None:
+        """The argument sets ``models`` lists for a model, None when it is not listed."""
         try:
-            candidates.add(path.resolve().relative_to(self.root.resolve()).as_posix())
+            resolved = Path(file).resolve()
+        except OSError:
+            return None
+        for model, sets in self.models:
+            if model == resolved:
+                return [dict(arguments) for arguments in sets]
+        return None
+
+    def _glob(self, pattern: str, file: str) -> bool:
+        """Whether a glob (relative to the config's folder) matches a file; one
+        without a ``/`` also matches the file's name in any folder."""
+        path = Path(file)
+        if "/" not in pattern and fnmatchcase(path.name, pattern):
+            return True
+        try:
+            relative = path.resolve().relative_to(self.root.resolve()).as_posix()
         except (ValueError, OSError):
-            pass
-        return any(fnmatchcase(candidate, pattern) for candidate in candidates)
+            return False
+        return fnmatchcase(relative, pattern)
 
 
 # -- selectors -------------------------------------------------------------------
@@ -192,6 +213,9 @@ def parse(table: dict[str, Any], source: str, root: Path) -> Config:
         if not isinstance(values, dict) or not all(isinstance(v, (str, int, float, bool)) for v in values.values()):
             raise ConfigError(f"{where(f'xacro-args.{pattern!r}')}: expected a table of argument values")
         xacro_args.append((pattern, tuple((k, _xacro_value(v)) for k, v in values.items())))
+    models = []
+    for model, sets in mapping("models").items():
+        models.append(((root / model).resolve(), _argument_sets(sets, where(f"models.{model!r}"))))
     return Config(
         source=source,
         root=root,
@@ -203,7 +227,24 @@ def parse(table: dict[str, Any], source: str, root: Path) -> Config:
         options=tuple(options),
         package_paths=tuple(_absolute_package_path(p, root) for p in paths),
         xacro_args=tuple(xacro_args),
+        models=tuple(models),
     )
+
+
+def _argument_sets(value: Any, where: str) -> tuple[tuple[tuple[str, str], ...], ...]:
+    """``[["name:=ur", "ur_type:=ur5e"], ...]``: each inner list is one run of the model."""
+    if not isinstance(value, list) or not value or not all(isinstance(s, list) for s in value):
+        raise ConfigError(f'{where}: expected a list of argument lists, such as [["ur_type:=ur5e", "name:=ur"]]')
+    sets = []
+    for arguments in value:
+        pairs = []
+        for argument in arguments:
+            name, separator, text = argument.partition(":=") if isinstance(argument, str) else ("", "", "")
+            if not separator or not name:
+                raise ConfigError(f"{where}: expected NAME:=VALUE, not {argument!r}")
+            pairs.append((name, text))
+        sets.append(tuple(pairs))
+    return tuple(sets)
 
 
 def _xacro_value(value: str | int | float | bool) -> str:
@@ -269,3 +310,11 @@ def discover(file: str) -> Config:
     start = Path.cwd() if file == "-" else Path(file).resolve().parent
     found = find(start)
     return read(found) if found is not None else Config()
+
+
+def for_input(file: str, explicit: Path | None = None, isolated: bool = False) -> Config:
+    """The configuration a command uses for one input: none with ``isolated``,
+    the ``explicit`` file when given, else the nearest one above the input."""
+    if isolated:
+        return Config()
+    return read(explicit) if explicit is not None else discover(file)

@@ -51,15 +51,16 @@ class Origin:
 class ExpansionError(Exception):
     """A xacro error, with where it happened as far as it can be told."""
 
-    def __init__(self, message: str, origin: Origin | None, file: str | None, code: str = "X003"):
+    def __init__(self, message: str, origin: Origin | None, file: str | None, code: str = "X003", includes: tuple[str, ...] = ()):
         super().__init__(message)
         self.message = message
         self.origin = origin
         self.file = file
         self.code = code
+        self.includes = includes  # the files read before it stopped: a library it reached is affected
 
     def __reduce__(self):
-        return (ExpansionError, (self.message, self.origin, self.file, self.code))
+        return (ExpansionError, (self.message, self.origin, self.file, self.code, self.includes))
 
 
 class PackageNotFound(LookupError):
@@ -293,7 +294,8 @@ def _expand(root: etree._Element, file: str | None, mappings: dict[str, str], re
         xacro.init_stacks(file)
         try:
             xacro.process_doc(doc, mappings=dict(mappings))
-        except ExpansionError:
+        except ExpansionError as error:
+            error.includes = tuple(dict.fromkeys(xacro.all_includes))
             raise
         except RecursionError as error:
             names = [m.body.getAttribute("name") for m in (xacro.macrostack or [])[-3:]]
@@ -310,7 +312,7 @@ def _expand(root: etree._Element, file: str | None, mappings: dict[str, str], re
                 message += f" {resolver.where()}"
             origin = getattr(error, "urdfcli_origin", None)
             current_file = xacro.filestack[-1] if xacro.filestack else file
-            raise ExpansionError(message, origin, display_path(current_file) if current_file else shown, code) from None
+            raise ExpansionError(message, origin, display_path(current_file) if current_file else shown, code, tuple(dict.fromkeys(xacro.all_includes))) from None
         finally:
             includes = list(dict.fromkeys(xacro.all_includes))
         if file is not None:

@@ -1,23 +1,32 @@
-"""Lint one file: every rule's diagnostics, then configuration and suppressions.
+"""Load one input with its configuration applied: the path every command shares.
 
-``load(..., checks="all")`` gives the diagnostics of every rule; the linter
+``load`` gives the diagnostics of the rules a command runs; this module
 re-runs the rules whose options the configuration changes, keeps the rules
 the configuration selects for the file, applies severity overrides, and drops
-what suppression comments silence. Nothing here exits the process; results
-are plain, picklable data so that files can be linted in other processes.
+what suppression comments silence. ``check``, ``lint``, ``inertia``, ``tree``
+and ``graph`` all load through :func:`load_configured`, so configuration and
+``noqa`` comments mean the same everywhere. Nothing here exits the process;
+:class:`Linted` results are plain, picklable data so that files can be
+linted in other processes.
 """
 
 from __future__ import annotations
 
+import re
 from dataclasses import dataclass, field
 from pathlib import Path
 
 from .config import Config
 from .diagnostics import Diagnostic, Severity
-from .load import STDIN, InputError, LoadOptions, load, read_input
-from .packages import PackageError
+from .load import STDIN, InputError, LoadOptions, load, load_document, read_input
+from .loaded import Loaded
+from .packages import PackageError, PackageResolver
 from .rules import load_all
 from . import suppressions
+
+# xacro's words for $(arg NAME) when NAME has no value, and what urdfcli says instead
+_UNDEFINED_ARGUMENT = re.compile(r"\bUndefined substitution argument (\w+)")
+NEEDS_ARGUMENT = re.compile(r"^needs xacro argument '([^']+)', which has no default")
 
 
 @dataclass(frozen=True)
@@ -32,24 +41,60 @@ class Linted:
     path: str
     robot: RobotName | None
     diagnostics: list[Diagnostic] = field(default_factory=list)
+    includes: tuple[str, ...] = ()  # every file the xacro expansion read
 
     @property
     def ok(self) -> bool:
         return not any(d.severity is Severity.ERROR for d in self.diagnostics)
 
 
-def lint_file(path: str, config: Config, package_paths: tuple[str, ...] = (), mappings: dict[str, str] | None = None, data: bytes | None = None) -> Linted:
-    """Lint one input. Raises InputError (unreadable) or PackageError (bad -P)."""
+def load_configured(
+    path: str,
+    config: Config,
+    package_paths: tuple[str, ...] = (),
+    mappings: dict[str, str] | None = None,
+    data: bytes | None = None,
+    checks: str = "all",
+    alone: bool = False,
+) -> Loaded:
+    """Load one input and keep the diagnostics its configuration and suppressions leave.
+
+    ``checks`` names the rules that run ("check", "all" or "none"); ``alone``
+    expands a xacro library on its own and keeps only what reading and
+    expanding it reports (its macros are not called, so there is no robot to
+    judge). Raises InputError (unreadable) or PackageError (bad -P).
+    """
     if data is None and path == STDIN:
         data = read_input(path)
-    options = LoadOptions(config.package_paths + tuple(package_paths), {**config.mappings_for(path), **(mappings or {})}, checks="all")
-    loaded = load(path, options, data)
-    diagnostics = loaded.diagnostics
+    options = LoadOptions(config.package_paths + tuple(package_paths), {**config.mappings_for(path), **(mappings or {})}, checks=checks)
+    if alone:
+        resolver = PackageResolver(options.package_paths, None if path == STDIN else Path(path))
+        document, found = load_document(path, options, data, resolver=resolver)
+        loaded = Loaded(document, diagnostics=found, resolver=resolver)
+    else:
+        loaded = load(path, options, data)
+    loaded.diagnostics = configured(loaded, path, config, data, checks)
+    return loaded
+
+
+def configured(
+    loaded: Loaded, path: str, config: Config, data: bytes | None = None, checks: str = "all", diagnostics: list[Diagnostic] | None = None
+) -> list[Diagnostic]:
+    """A loaded file's diagnostics (or the ``diagnostics`` given, found on it)
+    after configuration and suppression comments. A suppression naming a rule
+    that did not run under ``checks`` is not reported as unused."""
     registry = load_all()
-    configured = config.rule_options()
-    if configured and loaded.robot is not None and loaded.robot.element is not None:
-        diagnostics = [d for d in diagnostics if d.code not in configured]
-        for code, values in configured.items():
+
+    def ran(code: str) -> bool:
+        spec = registry[code]
+        return checks == "all" or spec.function is None or (checks == "check" and spec.in_check)
+
+    rerun = diagnostics is None
+    diagnostics = [_explained(d) for d in (loaded.diagnostics if diagnostics is None else diagnostics)]
+    configured_options = {code: values for code, values in config.rule_options().items() if ran(code)}
+    if rerun and configured_options and loaded.robot is not None and loaded.robot.element is not None:
+        diagnostics = [d for d in diagnostics if d.code not in configured_options]
+        for code, values in configured_options.items():
             diagnostics.extend(registry[code].run(loaded, values))
 
     def enabled(code: str, file: str) -> bool:
@@ -58,12 +103,35 @@ def lint_file(path: str, config: Config, package_paths: tuple[str, ...] = (), ma
     selected = [d for d in diagnostics if enabled(d.code, d.file)]
     sources = _sources(loaded.document.shown, path, data, {d.file for d in selected} | set(loaded.document.includes))
     found = [s for file, text in sources.items() for s in suppressions.parse(file, text)]
-    kept = suppressions.apply(selected, found, lambda code: enabled(code, path))
+    kept = suppressions.apply(selected, found, lambda code: ran(code) and enabled(code, path))
     kept = [d for d in kept if d.code not in ("U001", "U002") or enabled(d.code, d.file)]
     kept = [_with_severity(d, config) for d in kept]
     kept.sort(key=Diagnostic.sort_key)
+    return kept
+
+
+def _explained(diagnostic: Diagnostic) -> Diagnostic:
+    """xacro's 'Undefined substitution argument X', said so that it names the fix."""
+    match = _UNDEFINED_ARGUMENT.search(diagnostic.message) if diagnostic.code == "X003" else None
+    if match is None:
+        return diagnostic
+    name = match.group(1)
+    message = f"needs xacro argument '{name}', which has no default: pass {name}:=VALUE, or list the model's argument sets in [tool.urdfcli] models"
+    return Diagnostic(diagnostic.code, diagnostic.severity, message, diagnostic.location, diagnostic.element, diagnostic.hint)
+
+
+def lint_file(
+    path: str,
+    config: Config,
+    package_paths: tuple[str, ...] = (),
+    mappings: dict[str, str] | None = None,
+    data: bytes | None = None,
+    alone: bool = False,
+) -> Linted:
+    """Lint one input. Raises InputError (unreadable) or PackageError (bad -P)."""
+    loaded = load_configured(path, config, package_paths, mappings, data, "all", alone)
     robot = RobotName(loaded.robot.name) if loaded.robot is not None else None
-    return Linted(loaded.path, robot, kept)
+    return Linted(loaded.path, robot, loaded.diagnostics, tuple(loaded.document.includes))
 
 
 def _with_severity(diagnostic: Diagnostic, config: Config) -> Diagnostic:
@@ -91,14 +159,15 @@ class Job:
     config: Config
     package_paths: tuple[str, ...] = ()
     mappings: tuple[tuple[str, str], ...] = ()
+    alone: bool = False
 
 
 def run_job(job: Job) -> Linted | str:
     """Lint in a worker: the result, or the one-line reason the file could not be read."""
     try:
-        return lint_file(job.path, job.config, job.package_paths, dict(job.mappings))
+        return lint_file(job.path, job.config, job.package_paths, dict(job.mappings), alone=job.alone)
     except (InputError, PackageError) as error:
         return str(error)
 
 
-__all__ = ["Job", "Linted", "lint_file", "run_job"]
+__all__ = ["Job", "Linted", "configured", "lint_file", "load_configured", "run_job"]

@@ -112,7 +112,7 @@ def load_document(
             location = Location(origin.file, origin.line or None, origin.column)
         else:
             location = Location(error.file or shown)
-        return Document(path, None, file, is_xacro=True), [_error(error.code, error.message, location)]
+        return Document(path, None, file, is_xacro=True, includes=list(error.includes)), [_error(error.code, error.message, location)]
     expanded_root = parse_bytes(result.text.encode("utf-8"), keep_blank_text=False)
     document = Document(path, expanded_root, file, True, result.text, result.includes, result.origins)
     warnings = [_error("X005", text, Location(shown)) for text, _ in result.warnings]

@@ -7,8 +7,12 @@ did not have the package:
    ``package.xml`` files;
 2. ``ROS_PACKAGE_PATH`` (directories scanned);
 3. ``AMENT_PREFIX_PATH`` (``PREFIX/share/NAME``);
-4. the package holding the input file, and its siblings in the enclosing
-   workspace ``src/`` folder or repository.
+4. the package holding the input file;
+5. its siblings in the repository (the nearest folder above it holding
+   ``.git``), or in the workspace ``src/`` folder when that comes first;
+6. then, when that repository sits inside a workspace ``src/`` folder (each
+   repository cloned into ``ws/src/``, as ``vcs import`` lays them out), the
+   packages of the whole workspace.
 
 A package's name is the ``<name>`` in its ``package.xml``, never its folder name.
 """
@@ -92,13 +96,23 @@ def enclosing_package(start: Path) -> Path | None:
     return None
 
 
-def workspace_root(package_dir: Path) -> Path:
-    """The folder whose packages are siblings of package_dir: a workspace ``src``,
-    else the repository root, else the package's parent folder."""
+def local_roots(package_dir: Path) -> list[Path]:
+    """The folders whose packages are siblings of package_dir, nearest first: the
+    repository root or workspace ``src`` (whichever comes first), then a workspace
+    ``src`` above that repository; else the package's parent folder."""
+    roots: list[Path] = []
     for folder in package_dir.parents:
-        if folder.name == "src" or (folder / ".git").exists():
-            return folder
-    return package_dir.parent
+        if folder.name == "src":
+            roots.append(folder)
+            break
+        if not roots and (folder / ".git").exists():
+            roots.append(folder)
+    return roots or [package_dir.parent]
+
+
+def workspace_root(package_dir: Path) -> Path:
+    """The widest folder whose packages are siblings of package_dir."""
+    return local_roots(package_dir)[-1]
 
 
 class PackageResolver:
@@ -121,7 +135,7 @@ class PackageResolver:
         self._ament = [Path(p) for p in env.get("AMENT_PREFIX_PATH", "").split(os.pathsep) if p]
         own = enclosing_package(input_file.resolve().parent) if input_file else None
         self._own = own
-        self._local_root = workspace_root(own) if own else None
+        self._local_roots = local_roots(own) if own else []
         self._found: dict[str, Path] = {}
         self._scanned: set[Path] = set()
         self._answers: dict[str, Path | None] = {}  # every look-up, found or not
@@ -131,8 +145,7 @@ class PackageResolver:
         places = [f"-P {name}={path}" for name, path in self._explicit.items()]
         places += [str(p) for p in self._scan_roots]
         places += [f"{p}/share" for p in self._ament]
-        if self._local_root:
-            places.append(str(self._local_root))
+        places += [str(p) for p in self._local_roots]
         if not places:
             return "(the input is not inside a package and no package path is set: use -P NAME=DIR)"
         return f"(looked in {', '.join(places)})"
@@ -166,8 +179,10 @@ class PackageResolver:
         if self._own is not None:
             if package_name(self._own / "package.xml") == name:
                 return self._own
-            if self._local_root is not None:
-                self._scan_into_cache(self._local_root)
+            for root in self._local_roots:  # the repository first, the whole workspace only when needed
+                self._scan_into_cache(root)
+                if name in self._found:
+                    break
         return self._found.get(name)
 
     def resolve_uri(self, uri: str, base_dir: Path | None = None) -> Path | None:

@@ -9,7 +9,7 @@ import typer
 from ..diagnostics import Severity
 from ..formatters import FORMATS, resolve
 from ..formatters.emit import emit
-from .common import Exit, InputsArgument, PackagePathOption, load_all, stderr, stdout
+from .common import LIBRARIES_HELP, ConfigOption, Exit, InputsArgument, IsolatedOption, PackagePathOption, configurations, load_all, stderr, stdout
 
 FormatOption = Annotated[
     str,
@@ -29,19 +29,27 @@ def check(
     output_format: FormatOption = "auto",
     strict: Annotated[bool, typer.Option("--strict", help="Fail (exit 1) on warnings too.")] = False,
     package_path: PackagePathOption = None,
+    config: ConfigOption = None,
+    isolated: IsolatedOption = False,
 ) -> None:
     """Check URDF/xacro files the way check_urdf does, and find what it misses.
 
     Prints the kinematic tree (as check_urdf does) and every problem as
     PATH:LINE:COL: CODE severity: message. Exit 0 when no file has errors,
     1 when one has (or warnings, with --strict), 2 when a file cannot be read.
+
+    Configuration ([tool.urdfcli] in the nearest pyproject.toml, or urdfcli.toml)
+    and noqa comments apply as they do for lint.
     """
     if output_format not in FORMATS:
         raise typer.BadParameter(f"unknown format {output_format!r}; choose from {', '.join(FORMATS)}", param_hint="--format")
-    results, unreadable = load_all(inputs, package_path)
+    results, unreadable = load_all(inputs, package_path, "check", configurations(config, isolated), libraries=True)
     emit(results, resolve(output_format), stdout, stderr)
     failing = Severity.WARNING.rank if strict else Severity.ERROR.rank
     if unreadable:
         raise typer.Exit(Exit.CANNOT_RUN)
     if any(d.severity.rank >= failing for loaded in results for d in loaded.diagnostics):
         raise typer.Exit(Exit.PROBLEMS)
+
+
+check.__doc__ += "\n\n    " + LIBRARIES_HELP

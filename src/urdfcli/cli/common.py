@@ -1,15 +1,18 @@
-"""What every subcommand shares: input arguments, consoles and exit codes."""
+"""What every subcommand shares: input arguments, configuration, loading, consoles and exit codes."""
 
 from __future__ import annotations
 
 import os
+from collections.abc import Callable
 from enum import IntEnum
+from pathlib import Path
 from typing import Annotated
 
 import typer
 from rich.console import Console
 
-from ..load import InputError, LoadOptions, load
+from ..config import Config, ConfigError, for_input
+from ..load import InputError
 from ..loaded import Loaded
 from ..packages import PackageError
 
@@ -74,6 +77,19 @@ PackagePathOption = Annotated[
         help="Where to find ROS packages for $(find) and package://: NAME=DIR, or a folder to scan for package.xml. Repeatable.",
     ),
 ]
+ConfigOption = Annotated[
+    Path | None,
+    typer.Option("--config", metavar="FILE", help="Use this urdfcli.toml or pyproject.toml instead of the nearest one above each input.", show_default=False),
+]
+IsolatedOption = Annotated[
+    bool,
+    typer.Option("--isolated", help="Read no configuration file ([tool.urdfcli] in pyproject.toml, urdfcli.toml)."),
+]
+LIBRARIES_HELP = (
+    "A xacro file that only defines macros and properties (no link, joint or macro call outside its macros) "
+    "is a library: it is checked through the models of its repository or workspace that include it, "
+    "with the diagnostics located in it, or, when no model includes it, expanded on its own for its own xacro errors."
+)
 
 
 def fail(message: str) -> typer.Exit:
@@ -97,20 +113,74 @@ def split_inputs(arguments: list[str]) -> tuple[list[str], dict[str, str]]:
     return paths, mappings
 
 
-def load_all(arguments: list[str], package_paths: list[str] | None, checks: str = "check") -> tuple[list[Loaded], bool]:
-    """Load every input; an unreadable one is reported in one line and skipped.
+def configurations(explicit: Path | None = None, isolated: bool = False, overrides: dict | None = None) -> Callable[[str], Config]:
+    """The configuration of each input (read once per file); a mistake in one exits 2."""
+    cache: dict[str, Config] = {}
 
-    Returns the loaded files and whether any input could not be read.
+    def config_for(path: str) -> Config:
+        if path not in cache:
+            try:
+                cache[path] = for_input(path, explicit, isolated).overridden(**(overrides or {}))
+            except ConfigError as error:
+                raise fail(str(error)) from None
+        return cache[path]
+
+    return config_for
+
+
+def load_one(path: str, mappings: dict[str, str], package_paths: list[str] | None, checks: str = "none", config_for: Callable[[str], Config] | None = None, data: bytes | None = None) -> Loaded:
+    """Load one input with its configuration; an unreadable one exits 2."""
+    from ..linter import load_configured
+
+    config_for = config_for or configurations()
+    config = config_for(path)
+    first_set = (config.argument_sets(path) or [{}])[0]  # one model to draw: the first listed argument set
+    try:
+        return load_configured(path, config, tuple(package_paths or ()), {**first_set, **mappings}, data, checks)
+    except (InputError, PackageError) as error:
+        raise fail(str(error)) from None
+
+
+def load_all(
+    arguments: list[str],
+    package_paths: list[str] | None,
+    checks: str = "check",
+    config_for: Callable[[str], Config] | None = None,
+    libraries: bool = False,
+) -> tuple[list, bool]:
+    """Load every input with its configuration; an unreadable one is reported in one line and skipped.
+
+    With ``libraries``, a xacro library is checked through the models that
+    include it (see urdfcli.workspace), and a model listed in ``[tool.urdfcli]
+    models`` once per argument set. Returns the results and whether any input
+    could not be read.
     """
+    from ..linter import load_configured
+    from ..workspace import Entry, assemble, model_targets, plan
+
     paths, mappings = split_inputs(arguments)
-    options = LoadOptions(tuple(package_paths or ()), mappings, checks)
-    results, unreadable = [], False
-    for path in paths:
-        try:
-            results.append(load(path, options))
-        except InputError as error:
-            stderr.print(f"urdfcli: {error}", markup=False)
-            unreadable = True
-        except PackageError as error:
-            raise fail(str(error)) from None
-    return results, unreadable
+    config_for = config_for or configurations()
+    extra = tuple(package_paths or ())
+    try:
+        if libraries:
+            entries = plan(paths, config_for, extra)
+        else:
+            entries = [Entry(path, model_targets(path, config_for(path).argument_sets(path))) for path in paths]
+    except PackageError as error:
+        raise fail(str(error)) from None
+    done: dict = {}
+
+    def outcome(target):
+        if target not in done:
+            try:
+                done[target] = load_configured(target.path, config_for(target.path), extra, {**mappings, **dict(target.arguments)}, checks=checks, alone=target.alone)
+            except InputError as error:
+                done[target] = str(error)
+            except PackageError as error:
+                raise fail(str(error)) from None
+        return done[target]
+
+    results, unreadable = assemble(entries, outcome, lambda loaded: loaded.document.includes)
+    for reason in unreadable:
+        stderr.print(f"urdfcli: {reason}", markup=False)
+    return results, bool(unreadable)

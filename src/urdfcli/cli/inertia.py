@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import json
 import sys
+from dataclasses import replace
 from typing import Annotated
 
 import typer
@@ -13,8 +14,9 @@ from .. import inertia as audit_module
 from .. import massprops
 from ..diagnostics import Severity
 from ..formatters.text import print_diagnostic
+from ..linter import configured
 from ..rules import rule
-from .common import Exit, InputsArgument, PackagePathOption, fail, load_all, stderr, stdout
+from .common import ConfigOption, Exit, InputsArgument, IsolatedOption, PackagePathOption, configurations, fail, load_all, stderr, stdout
 
 FORMATS = ("text", "json")
 
@@ -35,6 +37,8 @@ def inertia(
     density: Annotated[float | None, typer.Option("--density", metavar="KG_PER_M3", help="Compute masses from the geometry's volume at this density instead of using the declared masses.")] = None,
     output_format: Annotated[str, typer.Option("--format", "-f", metavar="FORMAT", help="text, or json (one object per file; a list of them for several files).", case_sensitive=False)] = "text",
     package_path: PackagePathOption = None,
+    config: ConfigOption = None,
+    isolated: IsolatedOption = False,
 ) -> None:
     """Audit each link's mass, centre of mass and inertia against physics and its geometry.
 
@@ -51,10 +55,12 @@ def inertia(
         raise fail("--density must be a positive number of kg/m³")
     if output_format == "json" and (suggest or xacro):
         raise fail("--suggest and --xacro print XML; use them with the text format")
-    results, unreadable = load_all(inputs, package_path, checks="none")
+    config_for = configurations(config, isolated)
+    results, unreadable = load_all(inputs, package_path, "none", config_for)
     if not results:
         raise typer.Exit(Exit.CANNOT_RUN)
     reports = [audit_module.audit(loaded, tolerance, density) if loaded.robot is not None and loaded.robot.element is not None else None for loaded in results]
+    reports = [configured_report(r, config_for(r.loaded.path)) if r is not None else None for r in reports]
     for loaded in results:
         for diagnostic in loaded.diagnostics:
             if diagnostic.severity is Severity.ERROR:
@@ -75,6 +81,19 @@ def inertia(
         raise typer.Exit(Exit.CANNOT_RUN)
     if problems:
         raise typer.Exit(Exit.PROBLEMS)
+
+
+def configured_report(report: audit_module.Report, config) -> audit_module.Report:
+    """The report with the findings the configuration and noqa comments leave (severities as configured)."""
+    loaded = report.loaded
+    kept = configured(loaded, loaded.path, config, diagnostics=list(report.problems))
+    by_key = {(d.code, d.location, d.message): d for d in kept if d.code not in ("U001", "U002")}
+
+    def keep(found) -> tuple:
+        return tuple(by_key[key] for d in found if (key := (d.code, d.location, d.message)) in by_key)
+
+    links = tuple(replace(entry, problems=keep(entry.problems)) for entry in report.links)
+    return replace(report, links=links, problems=keep(report.problems))
 
 
 def _row(label: str, value: str, style: str = "") -> Text:

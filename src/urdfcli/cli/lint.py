@@ -9,14 +9,14 @@ from typing import Annotated
 
 import typer
 
-from ..config import Config, ConfigError, discover, read
 from ..diagnostics import Severity
 from ..formatters import resolve
 from ..linter import Job, Linted, run_job
 from ..load import STDIN
-from ..packages import SKIP_DIRS
+from ..packages import SKIP_DIRS, PackageError
+from ..workspace import Target, assemble, plan
 from ..formatters.emit import emit
-from .common import Exit, PackagePathOption, fail, split_inputs, stderr, stdout
+from .common import LIBRARIES_HELP, ConfigOption, Exit, IsolatedOption, PackagePathOption, configurations, fail, split_inputs, stderr, stdout
 
 LINT_FORMATS = ("auto", "text", "concise", "json", "sarif", "github")
 MODEL_SUFFIXES = (".urdf", ".urdf.xacro")
@@ -37,7 +37,8 @@ def lint(
     select: Annotated[list[str] | None, typer.Option("--select", metavar="CODES", help="Only these rule codes or prefixes (comma-separated; replaces the configuration's select). ALL selects every rule.", show_default=False)] = None,
     ignore: Annotated[list[str] | None, typer.Option("--ignore", metavar="CODES", help="Also ignore these codes or prefixes.", show_default=False)] = None,
     extend_select: Annotated[list[str] | None, typer.Option("--extend-select", metavar="CODES", help="Also select these codes or prefixes (e.g. S for the style rules).", show_default=False)] = None,
-    config: Annotated[Path | None, typer.Option("--config", metavar="PATH", help="Use this urdfcli.toml or pyproject.toml instead of the nearest one.", show_default=False)] = None,
+    config: ConfigOption = None,
+    isolated: IsolatedOption = False,
     exit_zero: Annotated[bool, typer.Option("--exit-zero", help="Exit 0 even when problems remain (2 still means it could not run).")] = False,
     jobs: Annotated[int, typer.Option("--jobs", "-j", min=0, metavar="N", help="Lint files in N processes (0: one per CPU); the output order does not change.")] = 1,
     package_path: PackagePathOption = None,
@@ -52,19 +53,27 @@ def lint(
         raise fail(f"unknown format {output_format!r}; choose from {', '.join(LINT_FORMATS)}")
     paths, mappings = split_inputs(inputs)
     files = expand_paths(paths)
+    config_for = configurations(config, isolated, {"select": select, "ignore": ignore, "extend_select": extend_select})
+    extra = tuple(package_path or ())
     try:
-        work = [Job(f, config_for(f, config).overridden(select, ignore, extend_select), tuple(package_path or ()), tuple(mappings.items())) for f in files]
-    except ConfigError as error:
+        entries = plan(files, config_for, extra)
+    except PackageError as error:
         raise fail(str(error)) from None
-    outcomes = run(work, jobs)
-    results: list[Linted] = []
-    unreadable = False
-    for outcome in outcomes:
-        if isinstance(outcome, str):
-            stderr.print(f"urdfcli: {outcome}", markup=False)
-            unreadable = True
-        else:
-            results.append(outcome)
+
+    def job(target: Target) -> Job:
+        return Job(target.path, config_for(target.path), extra, tuple({**mappings, **dict(target.arguments)}.items()), target.alone)
+
+    targets = list(dict.fromkeys(t for entry in entries for t in entry.targets))
+    done = dict(zip(targets, run([job(t) for t in targets], jobs)))
+
+    def outcome(target: Target) -> Linted | str:
+        if target not in done:  # a library no model includes, expanded on its own
+            done[target] = run_job(job(target))
+        return done[target]
+
+    results, unreadable = assemble(entries, outcome, lambda linted: linted.includes)
+    for reason in unreadable:
+        stderr.print(f"urdfcli: {reason}", markup=False)
     emit(results, resolve(output_format), stdout, stderr, tree=False)
     if unreadable:
         raise typer.Exit(Exit.CANNOT_RUN)
@@ -107,10 +116,6 @@ def models_in(folder: Path) -> list[Path]:
     return sorted(found)
 
 
-def config_for(file: str, explicit: Path | None) -> Config:
-    return read(explicit) if explicit is not None else discover(file)
-
-
 def run(work: list[Job], jobs: int) -> list:
     """Each job's result, in order; in processes when asked, with a progress bar on long runs."""
     parallel = (jobs == 0 or jobs > 1) and len(work) > 1 and not any(job.path == STDIN for job in work)
@@ -136,3 +141,6 @@ def run(work: list[Job], jobs: int) -> list:
     if progress is not None:
         progress.stop()
     return outcomes
+
+
+lint.__doc__ += "\n\n    " + LIBRARIES_HELP

@@ -30,6 +30,7 @@ def emit(results, output_format: str, stdout: Console, stderr: Console, tree: bo
         for loaded in results:
             for diagnostic in loaded.diagnostics:
                 sys.stdout.write(plain_line(diagnostic) + "\n")
+            sys.stderr.writelines(line + "\n" for line in library_lines(loaded))
         if results:  # nothing was read: the one-line reasons already said why
             sys.stderr.write(summary_line(results) + "\n")
     elif output_format == "check_urdf":
@@ -41,11 +42,23 @@ def emit(results, output_format: str, stdout: Console, stderr: Console, tree: bo
                 sys.stdout.write("".join(line + "\n" for line in check_urdf.tree_lines(loaded)))
     else:
         for loaded in results:
-            if tree:
+            library = getattr(loaded, "checked_through", None) is not None
+            if tree and not library:
                 if len(results) > 1:
-                    stdout.print(f"==> {loaded.document.shown} <==", style="bold", markup=False)
+                    stdout.print(f"==> {getattr(loaded, 'label', None) or loaded.document.shown} <==", style="bold", markup=False)
                 print_tree(stdout, loaded)
             for diagnostic in loaded.diagnostics:
                 print_diagnostic(stderr, diagnostic, excerpt=True)
+            for line in library_lines(loaded):
+                stderr.print(line, markup=False, style="dim")
         if results:
             stderr.print(summary_line(results), markup=False, style="bold")
+
+
+def library_lines(result) -> list[str]:
+    """For a xacro library: which models it was checked through, and why one could not be."""
+    through = getattr(result, "checked_through", None)
+    if through is None:
+        return []
+    lines = [f"{result.path}: xacro library, checked through {', '.join(through)}"] if through else []
+    return lines + [f"{result.path}: {note}" for note in result.notes]

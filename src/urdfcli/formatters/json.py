@@ -21,17 +21,27 @@ def diagnostic_dict(diagnostic: Diagnostic) -> dict:
     }
 
 
+def file_dict(loaded: Loaded) -> dict:
+    entry = {
+        "path": loaded.path,
+        "ok": loaded.ok,
+        "robot": loaded.robot.name if loaded.robot is not None else None,
+        "diagnostics": [diagnostic_dict(d) for d in loaded.diagnostics],
+    }
+    if getattr(loaded, "checked_through", None) is not None:  # a xacro library
+        entry["checked_through"] = loaded.checked_through
+        entry["notes"] = loaded.notes
+    if getattr(loaded, "arguments", None):  # a model run with an argument set from [tool.urdfcli] models
+        entry["arguments"] = loaded.arguments
+    return entry
+
+
 def render(results: list[Loaded]) -> str:
     errors, warnings, _ = counts(results)
     document = {
         "version": 1,
         "files": [
-            {
-                "path": loaded.path,
-                "ok": loaded.ok,
-                "robot": loaded.robot.name if loaded.robot is not None else None,
-                "diagnostics": [diagnostic_dict(d) for d in loaded.diagnostics],
-            }
+            file_dict(loaded)
             for loaded in results
         ],
         "summary": {"files": len(results), "errors": errors, "warnings": warnings},

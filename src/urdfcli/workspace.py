@@ -1,0 +1,473 @@
+"""Libraries, models and the includes between them: which models a changed file affects.
+
+A xacro file is a *library* when, outside its macro definitions, it writes no
+``<link>``, no ``<joint>`` and no macro call: it defines macros and properties,
+includes other files, or holds ``<gazebo>`` or ``<material>`` blocks for links
+made elsewhere. Any other file is a *model*: every plain URDF, a xacro file
+that makes a link, a joint or calls a macro at its top level, and a file that
+cannot be read as XML (loading it says why). Only ``xacro:if`` and
+``xacro:unless`` blocks are looked into; when in doubt a file is a library,
+because a library is never reported as a broken robot.
+
+A library given to ``check`` or ``lint`` is checked through the top-level
+models that include it, directly or through other files: the models of its
+repository or workspace (the folders the package resolver searches, see
+:mod:`urdfcli.packages`) that no other file includes, plus those listed in
+``[tool.urdfcli] models``. Which models include it is decided by reading the
+``xacro:include`` elements of every xacro file there, without expanding
+anything: ``$(find pkg)``, ``$(arg x)`` with a default, ``$(dirname)``,
+``$(env X)`` and ``${name}`` of a plain property are resolved; an include
+that stays unresolved is matched by its file name, or, when even that is
+computed, taken to include anything. Only the models found are expanded.
+"""
+
+from __future__ import annotations
+
+import os
+import re
+from collections.abc import Callable, Iterable
+from dataclasses import dataclass, field
+from fnmatch import fnmatchcase
+from pathlib import Path
+
+from lxml import etree
+
+from .diagnostics import Diagnostic, Severity
+from .load import STDIN, XACRO_NAMESPACES
+from .packages import MAX_SCAN_DIRS, SKIP_DIRS, PackageResolver, enclosing_package, local_roots
+
+XACRO_SUFFIXES = (".xacro", ".urdf")
+# xacro elements that make nothing by themselves; any other one (a macro call,
+# xacro:element, xacro:insert_block, xacro:call) makes part of a robot
+_DECLARATIONS = {"include", "property", "arg", "macro"}
+_BLOCKS = {"if", "unless"}
+_SUBSTITUTION = re.compile(r"\$\(\s*(\w+)\s*([^()]*?)\s*\)|\$\{\s*([A-Za-z_]\w*)\s*\}")
+_PARSER = etree.XMLParser(resolve_entities=False, no_network=True, load_dtd=False, huge_tree=True)
+
+
+@dataclass(frozen=True)
+class Source:
+    """What reading a file (not expanding it) tells about it."""
+
+    path: Path  # resolved
+    kind: str  # "model" or "library"
+    includes: tuple[str, ...] = ()  # filename attributes of its xacro:include elements, as written
+    arguments: tuple[tuple[str, str], ...] = ()  # xacro:arg defaults
+    properties: tuple[tuple[str, str], ...] = ()  # xacro:property values written as attributes
+
+
+def _is_xacro(element: etree._Element) -> bool:
+    return element.prefix == "xacro" or etree.QName(element).namespace in XACRO_NAMESPACES
+
+
+def read_source(path: Path, data: bytes | None = None) -> Source:
+    """Read a file's kind and includes. Never raises: an unreadable file is a model."""
+    try:
+        data = path.read_bytes() if data is None else data
+    except OSError:
+        return Source(path, "model")
+    named_xacro = path.name.endswith(".xacro")
+    if not named_xacro and b"xacro" not in data:
+        return Source(path, "model")  # plain URDF
+    try:
+        root = etree.fromstring(data, _PARSER)
+    except (etree.XMLSyntaxError, ValueError):
+        return Source(path, "model")  # loading it reports the syntax error
+    if not named_xacro and not any(_is_xacro(e) for e in root.iter(etree.Element)) and not set(root.nsmap.values()) & XACRO_NAMESPACES:
+        return Source(path, "model")
+    makes = False
+    stack = list(root)
+    while stack and not makes:
+        element = stack.pop()
+        if not isinstance(element.tag, str):
+            continue  # comment or processing instruction
+        local = etree.QName(element).localname
+        if _is_xacro(element):
+            if local in _BLOCKS:
+                stack.extend(element)
+            elif local not in _DECLARATIONS:
+                makes = True
+        elif local in ("link", "joint"):
+            makes = True
+    includes, arguments, properties = [], [], []
+    for element in root.iter(etree.Element):
+        if not _is_xacro(element):
+            continue
+        local = etree.QName(element).localname
+        name = element.get("name")
+        if local == "include" and element.get("filename"):
+            includes.append(element.get("filename"))
+        elif local == "arg" and name and element.get("default") is not None:
+            arguments.append((name, element.get("default")))
+        elif local == "property" and name and element.get("value") is not None:
+            properties.append((name, element.get("value")))
+    return Source(path, "model" if makes else "library", tuple(includes), tuple(arguments), tuple(properties))
+
+
+@dataclass(frozen=True)
+class Include:
+    """Where an include leads, as far as it can be told without expanding: a file,
+    a glob, only a file name, or (``kind == "any"``) nothing known."""
+
+    kind: str  # "path", "glob", "name" or "any"
+    value: str = ""
+
+    def may_be(self, file: Path) -> bool:
+        if self.kind == "path":
+            return Path(self.value) == file
+        if self.kind == "glob":
+            return fnmatchcase(str(file), self.value)
+        if self.kind == "name":
+            return file.name == self.value
+        return True
+
+
+def resolve_include(text: str, source: Source, find: Callable[[str], Path | None], arguments: dict[str, str] | None = None) -> Include:
+    """Where ``<xacro:include filename=text>`` in ``source`` leads, statically."""
+    values = {**dict(source.arguments), **(arguments or {})}
+    properties = dict(source.properties)
+
+    def substitute(match: re.Match) -> str:
+        function, argument, prop = match.group(1), match.group(2), match.group(3)
+        if prop is not None:
+            value = properties.get(prop)
+        elif function == "find":
+            folder = find(argument)
+            value = str(folder) if folder is not None else None
+        elif function == "arg":
+            value = values.get(argument)
+        elif function == "dirname":
+            value = str(source.path.parent)
+        elif function in ("env", "optenv"):
+            name, _, default = argument.partition(" ")
+            value = os.environ.get(name, default if function == "optenv" else None)
+        else:
+            value = None
+        return match.group(0) if value is None else value
+
+    for _ in range(5):  # a default may itself hold a substitution
+        substituted = _SUBSTITUTION.sub(substitute, text)
+        if substituted == text:
+            break
+        text = substituted
+    if "$" not in text:
+        path = Path(text) if Path(text).is_absolute() else source.path.parent / text
+        path = Path(os.path.normpath(path))
+        if any(c in text for c in "*?["):
+            return Include("glob", str(path))
+        try:
+            return Include("path", str(path.resolve()))
+        except OSError:
+            return Include("path", str(path))
+    name = re.split(r"[/\\]", text)[-1]
+    if name and "$" not in name and not any(c in name for c in "*?["):
+        return Include("name", name)
+    return Include("any")
+
+
+def search_roots(file: Path) -> tuple[list[Path], bool]:
+    """The folders whose models may include ``file``, and whether to search below
+    them: those the package resolver searches for its siblings (repository,
+    workspace ``src/``); for a file in no package, the repository holding it,
+    else its own folder alone."""
+    package = enclosing_package(file.parent)
+    if package is not None:
+        return local_roots(package), True
+    for folder in file.parents:
+        if (folder / ".git").exists():
+            return [folder], True
+    return [file.parent], False
+
+
+def source_files(root: Path, recursive: bool = True) -> Iterable[Path]:
+    """``*.xacro`` and ``*.urdf`` files below a folder, skipping hidden, build and ignored folders."""
+    budget = MAX_SCAN_DIRS
+    stack = [root]
+    while stack and budget > 0:
+        folder = stack.pop()
+        budget -= 1
+        if folder != root and ((folder / "CATKIN_IGNORE").exists() or (folder / "COLCON_IGNORE").exists()):
+            continue
+        try:
+            entries = sorted(folder.iterdir())
+        except OSError:
+            continue
+        for entry in entries:
+            if entry.name.startswith("."):
+                continue
+            if entry.name.endswith(XACRO_SUFFIXES):
+                if entry.is_file():
+                    yield entry
+            elif recursive and entry.name not in SKIP_DIRS and entry.is_dir():
+                stack.append(entry)
+
+
+class Index:
+    """Sources read once each (the files of the folders searched, and any file an
+    include leads to), and the includes between them."""
+
+    def __init__(self, package_paths: tuple[str, ...] = ()):
+        self.sources: dict[Path, Source] = {}
+        self.scanned: dict[Path, list[Path]] = {}  # a searched folder -> its files
+        self._package_paths = package_paths
+        self._resolvers: dict[Path | None, PackageResolver] = {}
+        self._edges: dict[tuple[Path, tuple], list[Include]] = {}
+        self._kinds: dict[Path, str] = {}
+
+    def scan(self, roots: list[Path], recursive: bool = True) -> list[Path]:
+        """The source files below the folders (read once per folder)."""
+        files: list[Path] = []
+        for root in roots:
+            if root not in self.scanned:
+                self.scanned[root] = [file.resolve() for file in source_files(root, recursive)]
+            files += self.scanned[root]
+        return list(dict.fromkeys(files))
+
+    def kind(self, file: Path, visiting: frozenset = frozenset()) -> str:
+        """"model" or "library": a file that makes nothing itself but includes a
+        model (a robot assembled from included files) is a model too."""
+        if file not in self._kinds:
+            kind = self.source(file).kind
+            if kind == "library" and file not in visiting:
+                for include in self.includes(file):
+                    target = Path(include.value)
+                    if include.kind == "path" and target.is_file() and self.kind(target, visiting | {file}) == "model":
+                        kind = "model"
+                        break
+            self._kinds[file] = kind
+        return self._kinds[file]
+
+    def _find(self, file: Path) -> Callable[[str], Path | None]:
+        """The package look-up the expansion of ``file`` would make (shared per package)."""
+        package = enclosing_package(file.parent)
+        if package not in self._resolvers:
+            try:
+                self._resolvers[package] = PackageResolver(self._package_paths, file)
+            except ValueError:  # a bad -P is reported when the model loads
+                self._resolvers[package] = PackageResolver((), file)
+        return self._resolvers[package].find
+
+    def source(self, file: Path) -> Source:
+        if file not in self.sources:
+            self.sources[file] = read_source(file)
+        return self.sources[file]
+
+    def includes(self, file: Path, arguments: dict[str, str] | None = None) -> list[Include]:
+        key = (file, tuple(sorted((arguments or {}).items())))
+        if key not in self._edges:
+            source = self.source(file)
+            self._edges[key] = [resolve_include(text, source, self._find(file), arguments) for text in source.includes]
+        return self._edges[key]
+
+    def top_level_models(self, files: list[Path]) -> list[Path]:
+        """The models among ``files`` that none of them includes (by a resolved path)."""
+        included = {Path(i.value) for file in files for i in self.includes(file) if i.kind == "path"}
+        return sorted(f for f in files if f not in included and self.kind(f) == "model")
+
+    def reaches(self, model: Path, library: Path, arguments: dict[str, str] | None = None) -> bool:
+        """Whether expanding ``model`` may read ``library``, through any chain of includes."""
+        seen = {model}
+        stack = [(model, arguments)]
+        while stack:
+            file, args = stack.pop()
+            for include in self.includes(file, args):
+                if include.may_be(library):
+                    return True
+                if include.kind == "path":
+                    nexts = [Path(include.value)]
+                else:
+                    known = {f for files in self.scanned.values() for f in files} | set(self.sources)
+                    nexts = [f for f in known if include.may_be(f)]
+                for nxt in nexts:
+                    if nxt not in seen and nxt.is_file():
+                        seen.add(nxt)
+                        stack.append((nxt, None))  # arguments reach included files too, but rarely name includes there
+        return False
+
+
+@dataclass(frozen=True)
+class Target:
+    """One expansion to run: a model with an argument set, or a library on its own."""
+
+    path: str
+    arguments: tuple[tuple[str, str], ...] = ()  # from [tool.urdfcli] models
+    alone: bool = False
+
+    @property
+    def label(self) -> str:
+        if not self.arguments:
+            return self.path
+        return f"{self.path} [{' '.join(f'{k}:={v}' for k, v in self.arguments)}]"
+
+
+@dataclass
+class Entry:
+    """A given file: a model and its runs, or a library and the models it is checked through."""
+
+    path: str
+    targets: list[Target]
+    library: bool = False
+
+
+@dataclass
+class LibraryResult:
+    """A library's diagnostics gathered from the models it was checked through (the shape of a Loaded)."""
+
+    path: str
+    diagnostics: list[Diagnostic] = field(default_factory=list)
+    checked_through: list[str] = field(default_factory=list)
+    notes: list[str] = field(default_factory=list)  # why a model could not be used, or that none includes it
+    robot: None = None
+
+    @property
+    def ok(self) -> bool:
+        return not any(d.severity is Severity.ERROR for d in self.diagnostics)
+
+
+def shown(path: Path) -> str:
+    """A path as diagnostics name files: relative to the working directory when below it."""
+    try:
+        relative = os.path.relpath(path)
+    except ValueError:
+        return str(path)
+    return str(path) if relative.startswith("..") else relative
+
+
+def model_targets(path: str, argument_sets: list[dict[str, str]] | None) -> list[Target]:
+    return [Target(path, tuple(arguments.items())) for arguments in (argument_sets or [{}])]
+
+
+def plan(paths: list[str], config_for, package_paths: tuple[str, ...] = ()) -> list[Entry]:
+    """What to run for the given files: each model once per argument set, each
+    library through the models that may include it (none: on its own).
+
+    ``config_for(path)`` gives the configuration of a file (for ``models`` and
+    package paths). Raises what ``config_for`` raises.
+    """
+    entries: list[Entry] = []
+    index: Index | None = None
+    for path in paths:
+        config = config_for(path)
+        library = Path(path).resolve() if path != STDIN else None
+        if library is not None and read_source(library).kind == "library":  # else no look-up at all
+            index = index or Index(config.package_paths + package_paths)
+            if index.kind(library) == "model":
+                library = None
+        else:
+            library = None
+        if library is None or index is None:
+            entries.append(Entry(path, model_targets(path, config.argument_sets(path))))
+            continue
+        roots, recursive = search_roots(library)
+        candidates = index.top_level_models(index.scan(roots, recursive))
+        for model, _ in config.models:
+            if model not in candidates and model.is_file():
+                candidates.append(model)
+        targets: list[Target] = []
+        for model in candidates:
+            if model == library:
+                continue
+            model_config = config_for(str(model))
+            sets = model_config.argument_sets(str(model))
+            if any(index.reaches(model, library, arguments) for arguments in (sets or [None])):
+                targets += model_targets(shown(model), sets)
+        entries.append(Entry(path, targets, library=True))
+    return entries
+
+
+def _same(file: str, library: Path) -> bool:
+    try:
+        return Path(file).resolve() == library
+    except OSError:
+        return False
+
+
+def _key(diagnostic: Diagnostic) -> tuple:
+    location = diagnostic.location
+    return (diagnostic.code, location.file, location.line, location.column, diagnostic.message)
+
+
+def assemble(entries: list[Entry], outcome: Callable[[Target], object], includes_of: Callable[[object], Iterable[str]]) -> tuple[list, list[str]]:
+    """The results to show, in the order the files were given, and the reasons
+    some inputs could not be read.
+
+    ``outcome(target)`` runs a target (once: the caller remembers), giving a
+    loaded result or the one-line reason it could not be read. A diagnostic
+    located in another file than the result's own, already shown for an
+    earlier result, is not shown again: a library shared by three models
+    reports its mistakes once.
+    """
+    results, unreadable, shown_keys = [], [], set()
+    for entry in entries:
+        if not entry.library:
+            for target in entry.targets:
+                result = outcome(target)
+                if isinstance(result, str):
+                    unreadable.append(result)
+                    continue
+                own = Path(entry.path).resolve() if entry.path != STDIN else None
+                result.diagnostics = [d for d in result.diagnostics if _fresh(d, own, shown_keys)]
+                if target.arguments:  # shown with the model's name and in JSON
+                    result.label, result.arguments = target.label, dict(target.arguments)
+                results.append(result)
+            continue
+        results.append(_library_result(entry, outcome, includes_of, shown_keys, unreadable))
+    return results, unreadable
+
+
+def _fresh(diagnostic: Diagnostic, own: Path | None, shown_keys: set) -> bool:
+    key = _key(diagnostic)
+    if own is not None and _same(diagnostic.file, own):
+        shown_keys.add(key)
+        return True
+    if key in shown_keys:
+        return False
+    shown_keys.add(key)
+    return True
+
+
+def _library_result(entry: Entry, outcome, includes_of, shown_keys: set, unreadable: list[str]) -> LibraryResult:
+    from .linter import NEEDS_ARGUMENT
+
+    library = Path(entry.path).resolve()
+    result = LibraryResult(entry.path)
+    found: list[Diagnostic] = []
+    for target in entry.targets:
+        loaded = outcome(target)
+        if isinstance(loaded, str):
+            result.notes.append(f"not checked through {target.label}: {loaded}")
+            continue
+        needs = next((m for d in loaded.diagnostics if d.code == "X003" and (m := NEEDS_ARGUMENT.match(d.message))), None)
+        if needs is not None:  # the model cannot be expanded as it is: say how to make it, do not fail the library
+            result.notes.append(
+                f"not checked through {target.label}: it needs xacro argument '{needs.group(1)}', which has no default; "
+                "list the argument sets it is checked with in [tool.urdfcli] models"
+            )
+            continue
+        reached = any(_same(f, library) for f in includes_of(loaded)) or any(_same(d.file, library) for d in loaded.diagnostics)
+        if not reached:
+            continue
+        result.checked_through.append(target.label)
+        # mistakes written in the library, and whatever breaks a model that uses it
+        found += [d for d in loaded.diagnostics if _same(d.file, library) or d.severity is Severity.ERROR]
+    if not result.checked_through:
+        alone = outcome(Target(entry.path, alone=True))
+        if isinstance(alone, str):
+            unreadable.append(alone)
+        else:
+            found += alone.diagnostics
+            if not entry.targets:
+                result.notes.append("a xacro library that no model includes: only its own xacro was checked")
+    # One mistake written in a macro shows once, however many calls and models
+    # made copies of it (the messages differ only by the names the calls gave).
+    places = set()
+    for diagnostic in sorted(found, key=Diagnostic.sort_key):
+        place = _key(diagnostic)[:4]
+        if place not in places:
+            places.add(place)
+            if _fresh(diagnostic, None, shown_keys):
+                result.diagnostics.append(diagnostic)
+    return result
+
+
+__all__ = ["Entry", "Index", "LibraryResult", "Source", "Target", "assemble", "is_library", "plan", "read_source", "resolve_include", "search_roots"]
