@@ -189,3 +189,128 @@ def test_the_readme_example_configuration_is_valid(tmp_path):
     config = parse(tomllib.loads(example)["tool"]["urdfcli"], "README", tmp_path)
     assert config.select == ("ALL",) and config.mappings_for(str(tmp_path / "urdf/robot.urdf.xacro")) == {"use_gpu": "false", "prefix": ""}
     assert config.package_paths == (str(tmp_path.parent / "vendor"), f"my_robot={tmp_path / 'src/my_robot'}")
+
+
+# -- every command reads the same configuration -----------------------------------
+# A zero axis on a revolute joint: an error for check, tree, graph and lint alike.
+ZERO_AXIS = """<robot name="r">
+  <link name="base_link"/>
+  <link name="arm"/>
+  <joint name="shoulder" type="revolute">
+    <parent link="base_link"/>
+    <child link="arm"/>
+    <axis xyz="0 0 0"/>  <!-- urdfcli: noqa: J007 -->
+    <limit lower="-1" upper="1" effort="1" velocity="1"/>
+  </joint>
+</robot>
+"""
+
+
+def test_check_honours_noqa_severity_ignore_and_isolated(tmp_path):
+    quiet = write(tmp_path, "quiet/robot.urdf", ZERO_AXIS)
+    assert run_cli("check", str(quiet)).returncode == 0  # the noqa comment silences J007
+    loud = write(tmp_path, "loud/robot.urdf", ZERO_AXIS.replace("  <!-- urdfcli: noqa: J007 -->", ""))
+    done = run_cli("check", str(loud))
+    assert done.returncode == 1 and "J007 error" in done.stderr.decode()
+    write(tmp_path, "loud/pyproject.toml", '[tool.urdfcli.severity]\nJ007 = "warning"\n')
+    done = run_cli("check", str(loud))
+    assert done.returncode == 0 and "J007 warning" in done.stderr.decode()
+    assert run_cli("check", "--strict", str(loud)).returncode == 1
+    write(tmp_path, "loud/pyproject.toml", '[tool.urdfcli]\nignore = ["J007"]\n')
+    done = run_cli("check", str(loud))
+    assert done.returncode == 0 and "J007" not in done.stderr.decode()
+    done = run_cli("check", "--isolated", str(loud))
+    assert done.returncode == 1 and "J007 error" in done.stderr.decode()
+
+
+def test_inertia_honours_noqa_and_severity(tmp_path):
+    heavy_root = """<robot name="r">
+  <link name="base_link">
+    <inertial><mass value="5"/>  <!-- urdfcli: noqa: I011 --><inertia ixx="1" ixy="0" ixz="0" iyy="1" iyz="0" izz="1"/></inertial>
+  </link>
+</robot>
+"""
+    model = write(tmp_path, "robot.urdf", heavy_root)
+    plain = write(tmp_path, "plain/robot.urdf", heavy_root.replace("  <!-- urdfcli: noqa: I011 -->", ""))
+    found = run_cli("inertia", "--format", "json", "--isolated", str(plain))
+    codes_found = {p["code"] for link in json.loads(found.stdout)["links"] for p in link["problems"]}
+    assert "I011" in codes_found
+    silenced = run_cli("inertia", "--format", "json", str(model))
+    assert "I011" not in {p["code"] for link in json.loads(silenced.stdout)["links"] for p in link["problems"]}
+    write(tmp_path, "plain/urdfcli.toml", 'ignore = ["I011"]\n')
+    ignored = run_cli("inertia", "--format", "json", str(plain))
+    assert "I011" not in {p["code"] for link in json.loads(ignored.stdout)["links"] for p in link["problems"]}
+    again = run_cli("inertia", "--format", "json", "--isolated", str(plain))
+    assert {p["code"] for link in json.loads(again.stdout)["links"] for p in link["problems"]} == codes_found
+
+
+def test_tree_and_graph_read_xacro_args_and_package_paths_from_the_config(tmp_path):
+    write(tmp_path, "vendor/parts/package.xml", "<package><name>acme_parts</name></package>")
+    write(tmp_path, "vendor/parts/urdf/arm.xacro", """\
+        <robot xmlns:xacro="http://www.ros.org/wiki/xacro">
+          <link name="$(arg prefix)arm"/>
+          <joint name="$(arg prefix)shoulder" type="fixed"><parent link="base_link"/><child link="$(arg prefix)arm"/></joint>
+        </robot>
+        """)
+    model = write(tmp_path, "robots/urdf/robot.urdf.xacro", """\
+        <robot name="r" xmlns:xacro="http://www.ros.org/wiki/xacro">
+          <link name="base_link"/>
+          <xacro:include filename="$(find acme_parts)/urdf/arm.xacro"/>
+        </robot>
+        """)
+    write(tmp_path, "robots/pyproject.toml", '[tool.urdfcli]\npackage-paths = ["../vendor"]\n[tool.urdfcli.xacro-args]\n"urdf/*.urdf.xacro" = { prefix = "left_" }\n')
+    elsewhere = tmp_path / "elsewhere"
+    elsewhere.mkdir()
+    for cwd in (elsewhere, model.parent):  # globs and paths are relative to the config's folder
+        done = run_cli("tree", "--ascii", str(model), cwd=cwd)
+        assert done.returncode == 0, done.stderr.decode()
+        assert "left_arm" in done.stdout.decode()
+        done = run_cli("graph", "--format", "dot", str(model), cwd=cwd)
+        assert done.returncode == 0 and "left_arm" in done.stdout.decode()
+    isolated = run_cli("tree", "--isolated", str(model), cwd=elsewhere)
+    assert isolated.returncode != 0 and "acme_parts" in isolated.stderr.decode()
+
+
+def test_per_file_ignores_do_not_depend_on_the_working_directory(tmp_path):
+    write(tmp_path, "urdfcli.toml", '[per-file-ignores]\n"legacy/*.urdf" = ["D002"]\n"robot.urdf" = ["M002"]\n')
+    legacy = write(tmp_path, "legacy/robot.urdf", MODEL)
+    other = write(tmp_path, "other/legacy/robot.urdf", MODEL)  # legacy/robot.urdf only from other/
+    for cwd in (tmp_path, legacy.parent, other.parent.parent):
+        _, report = lint_json(str(legacy), str(other), cwd=cwd)
+        found = [{d["code"] for d in f["diagnostics"]} for f in report["files"]]
+        assert found == [set(), {"D002"}]  # a glob with no '/' matches the name anywhere
+
+
+def test_models_are_checked_once_per_argument_set(tmp_path):
+    model = write(tmp_path, "pkg/urdf/arm.urdf.xacro", """\
+        <robot name="arm" xmlns:xacro="http://www.ros.org/wiki/xacro">
+          <link name="$(arg arm_type)_base"/>
+        </robot>
+        """)
+    done = run_cli("check", "--format", "json", str(model))
+    [file] = json.loads(done.stdout)["files"]
+    assert done.returncode == 1
+    [diagnostic] = file["diagnostics"]
+    assert diagnostic["code"] == "X003" and diagnostic["message"].startswith("needs xacro argument 'arm_type', which has no default")
+    assert "[tool.urdfcli] models" in diagnostic["message"]
+    write(tmp_path, "pyproject.toml", '[tool.urdfcli]\nmodels = { "pkg/urdf/arm.urdf.xacro" = [["arm_type:=small"], ["arm_type:=large"]] }\n')
+    done = run_cli("check", "--format", "json", str(model), cwd=model.parent)
+    assert done.returncode == 0, done.stdout.decode()
+    files = json.loads(done.stdout)["files"]
+    assert [(f["arguments"], f["diagnostics"]) for f in files] == [({"arm_type": "small"}, []), ({"arm_type": "large"}, [])]
+    done = run_cli("check", str(model))
+    assert "==> " in done.stdout.decode() and "[arm_type:=large] <==" in done.stdout.decode()
+
+
+@pytest.mark.parametrize(
+    ("text", "message"),
+    [
+        ('models = { "a.urdf.xacro" = ["x:=1"] }\n', "expected a list of argument lists"),
+        ('models = { "a.urdf.xacro" = [["x=1"]] }\n', "expected NAME:=VALUE, not 'x=1'"),
+    ],
+)
+def test_models_mistakes_are_one_line(tmp_path, text, message):
+    write(tmp_path, "urdfcli.toml", text)
+    model = write(tmp_path, "robot.urdf", MODEL)
+    done = run_cli("check", str(model))
+    assert done.returncode == 2 and message in done.stderr.decode() and len(done.stderr.decode().strip().splitlines()) == 1

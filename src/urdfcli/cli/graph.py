@@ -11,7 +11,7 @@ import typer
 
 from ..drawing import RenderError, Style, compat_dot, render, styled_dot
 from ..output import OutputError, write_atomic
-from .common import Exit, PackagePathOption, fail, split_inputs, stderr, stdout
+from .common import ConfigOption, Exit, IsolatedOption, PackagePathOption, fail, split_inputs, stderr, stdout
 from .tree import load_model, report_errors, start_link
 
 EXTENSIONS = {".pdf": "pdf", ".svg": "svg", ".png": "png", ".gv": "dot", ".dot": "dot"}
@@ -41,6 +41,8 @@ def graph(
     collapse_fixed: Annotated[bool, typer.Option("--collapse-fixed", help="Merge links joined by fixed joints into one box (for large robots).")] = False,
     timeout: Annotated[float, typer.Option("--timeout", min=1, metavar="SECONDS", help="Give up rendering after this long.")] = 120,
     package_path: PackagePathOption = None,
+    config: ConfigOption = None,
+    isolated: IsolatedOption = False,
 ) -> None:
     """Draw the link tree, like urdf_to_graphviz: writes OUT.gv and OUT.pdf.
 
@@ -61,7 +63,7 @@ def graph(
     output_kind = EXTENSIONS.get(output.suffix.lower()) if output is not None else None
     if output is not None and output_kind is None:
         raise fail(f"{output}: unknown extension; use one of {' '.join(EXTENSIONS)}")
-    loaded = load_model(paths[0], mappings, package_path)
+    loaded = load_model(paths[0], mappings, package_path, config, isolated)
     if report_errors(loaded) or (start := start_link(loaded, None)) is None:
         raise typer.Exit(Exit.PROBLEMS)
     robot = loaded.robot

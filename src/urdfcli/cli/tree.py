@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import difflib
 import sys
+from pathlib import Path
 from typing import Annotated
 
 import typer
@@ -13,10 +14,8 @@ from ..diagnostics import Severity
 from ..formatters.text import plain, print_diagnostic
 from ..formatters.tree import cut, summarise, text_lines, tree_json, tree_rows
 from ..kinematics import roots
-from ..load import InputError, LoadOptions, load
 from ..loaded import Loaded
-from ..packages import PackageError
-from .common import Exit, FileArgument, PackagePathOption, fail, split_inputs, stderr, stdout
+from .common import ConfigOption, Exit, FileArgument, IsolatedOption, PackagePathOption, configurations, fail, load_one, split_inputs, stderr, stdout
 
 
 def tree(
@@ -27,6 +26,8 @@ def tree(
     ascii_only: Annotated[bool, typer.Option("--ascii", help="Plain ASCII characters (for logs).")] = False,
     output_format: Annotated[str, typer.Option("--format", "-f", metavar="FORMAT", help="text, or json (nested: each link with its children as {joint, link}).", case_sensitive=False)] = "text",
     package_path: PackagePathOption = None,
+    config: ConfigOption = None,
+    isolated: IsolatedOption = False,
 ) -> None:
     """Print the kinematic tree, each joint's type, axis and limits, and a summary.
 
@@ -47,7 +48,7 @@ def tree(
     paths, mappings = split_inputs(inputs)
     if len(paths) != 1:
         raise fail(f"tree takes one input file, got {len(paths)}")
-    loaded = load_model(paths[0], mappings, package_path)
+    loaded = load_model(paths[0], mappings, package_path, config, isolated)
     has_errors = report_errors(loaded)
     start = start_link(loaded, from_link)
     if start is None:
@@ -70,12 +71,9 @@ def tree(
         raise typer.Exit(Exit.PROBLEMS)
 
 
-def load_model(path: str, mappings: dict[str, str], package_path: list[str] | None) -> Loaded:
-    """Load one input for drawing: structure only, no physics or style rules."""
-    try:
-        return load(path, LoadOptions(tuple(package_path or ()), mappings, checks="none"))
-    except (InputError, PackageError) as error:
-        raise fail(str(error)) from None
+def load_model(path: str, mappings: dict[str, str], package_path: list[str] | None, config: Path | None = None, isolated: bool = False) -> Loaded:
+    """Load one input for drawing, with its configuration: structure only, no physics or style rules."""
+    return load_one(path, mappings, package_path, "none", configurations(config, isolated))
 
 
 def report_errors(loaded: Loaded) -> bool:
