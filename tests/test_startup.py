@@ -6,6 +6,9 @@ from __future__ import annotations
 import subprocess
 import sys
 
+import pytest
+from conftest import FIXTURES
+
 from urdfcli import packages
 from urdfcli.packages import PackageResolver
 
@@ -61,3 +64,22 @@ def test_each_package_is_looked_up_once_found_or_not(tmp_path, monkeypatch):
         assert resolver.find("sibling") == sibling
         assert resolver.find("own") == own
     assert len(parsed) == len(set(parsed))  # no manifest read twice
+
+
+def test_check_modules_hold_every_rule_check_runs():
+    from urdfcli import rules
+
+    run_by_check = {spec.function.__module__ for spec in rules.load_all().values() if spec.function is not None and spec.in_check}
+    assert run_by_check <= {f"urdfcli.rules.{name}" for name in rules.CHECK_MODULES}
+
+
+@pytest.mark.parametrize("command", ["check", "tree", "expand"])
+def test_plain_output_of_a_small_file_imports_neither_rich_nor_rules_that_do_not_run(command):
+    from urdfcli import rules
+
+    modules = set(imported(command, str(FIXTURES / "seed000" / "my_robot.urdf")))
+    assert "rich" not in modules
+    assert not {"urdfcli.inertia", "numpy", "networkx"} & modules
+    assert ("xacro" in modules) == (command == "expand")  # expand always runs xacro, as the xacro tool does
+    loaded_rules = {m.rpartition(".")[2] for m in modules if m.startswith("urdfcli.rules.")}
+    assert loaded_rules <= set(rules.CHECK_MODULES)

@@ -27,13 +27,7 @@ from .massprops import Matrix, Transform, Vector
 from .model import Joint, Link, Shape
 from .packages import PackageResolver
 
-TOLERANCE = 0.1
-"""Default largest relative element difference between declared and expected tensors.
-
-Rounding a tensor to two significant digits moves it by under 5 %; swapping or
-rotating the axes of any body whose moments differ by more than 10 % of the
-largest moves it by more. 0.1 separates the two.
-"""
+TOLERANCE = massprops.TOLERANCE
 
 
 class GeometryUnknown(Exception):

@@ -21,7 +21,7 @@ from .kinematics import tree_diagnostics
 from .loaded import Loaded
 from .model import read
 from .packages import PackageResolver
-from .rules import load_all
+from .rules import load_all, load_check
 from .xmlsafe import XmlError, parse_bytes
 
 XACRO_NAMESPACES = {"http://www.ros.org/wiki/xacro", "http://ros.org/wiki/xacro", "http://wiki.ros.org/xacro"}
@@ -151,7 +151,7 @@ def load(path: str, options: LoadOptions = LoadOptions(), data: bytes | None = N
         return loaded
     loaded.diagnostics += tree_diagnostics(robot, document)
     if options.checks != "none":
-        for spec in load_all().values():
+        for spec in (load_check() if options.checks == "check" else load_all()).values():
             if spec.function is not None and (options.checks == "all" or spec.in_check):
                 loaded.diagnostics.extend(spec.function(loaded))
     loaded.diagnostics.sort(key=Diagnostic.sort_key)

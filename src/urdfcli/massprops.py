@@ -14,8 +14,13 @@ Matrix = tuple[tuple[float, float, float], tuple[float, float, float], tuple[flo
 Vector = tuple[float, float, float]
 KEYS = ("ixx", "ixy", "ixz", "iyy", "iyz", "izz")
 ZERO: Matrix = ((0.0, 0.0, 0.0), (0.0, 0.0, 0.0), (0.0, 0.0, 0.0))
+TOLERANCE = 0.1
+"""Default largest relative element difference between declared and expected tensors.
 
-
+Rounding a tensor to two significant digits moves it by under 5 %; swapping or
+rotating the axes of any body whose moments differ by more than 10 % of the
+largest moves it by more. 0.1 separates the two.
+"""
 def matrix(inertia: dict[str, float]) -> Matrix:
     xx, xy, xz, yy, yz, zz = (inertia[k] for k in KEYS)
     return ((xx, xy, xz), (xy, yy, yz), (xz, yz, zz))

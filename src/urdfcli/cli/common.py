@@ -9,12 +9,12 @@ from pathlib import Path
 from typing import Annotated
 
 import typer
-from rich.console import Console
 
 from ..config import Config, ConfigError, for_input
 from ..load import InputError
 from ..loaded import Loaded
 from ..packages import PackageError
+from .streams import Stream
 
 
 class Exit(IntEnum):
@@ -33,8 +33,8 @@ def console_options(mode: str, to_stderr: bool) -> dict:
     return dict(stderr=to_stderr, highlight=False, soft_wrap=True, color_system=None if never else "auto", force_terminal=True if mode == "always" else None)
 
 
-stdout = Console(**console_options("auto", False))
-stderr = Console(**console_options("auto", True))
+stdout = Stream(**console_options("auto", False))
+stderr = Stream(**console_options("auto", True))
 
 
 def set_color(mode: str) -> str:
@@ -42,7 +42,7 @@ def set_color(mode: str) -> str:
     if mode not in COLOR_MODES:
         raise typer.BadParameter(f"{mode!r} is not one of {', '.join(COLOR_MODES)}")
     for console, to_stderr in ((stdout, False), (stderr, True)):
-        console.__init__(**console_options(mode, to_stderr))
+        console.configure(**console_options(mode, to_stderr))
     return mode
 
 

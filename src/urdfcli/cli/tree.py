@@ -8,7 +8,6 @@ from pathlib import Path
 from typing import Annotated
 
 import typer
-from rich.text import Text
 
 from ..diagnostics import Severity
 from ..formatters.text import plain, print_diagnostic
@@ -64,6 +63,8 @@ def tree(
         if plain(stdout):
             stdout.file.writelines("".join(text for text, _ in line) + "\n" for line in lines)
         else:
+            from rich.text import Text  # only to style: plain output never imports rich
+
             for line in lines:
                 stdout.print(Text.assemble(*line), soft_wrap=True, highlight=False)
         stdout.print(summary.text(), style="bold", markup=False, highlight=False)

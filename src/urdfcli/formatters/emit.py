@@ -3,12 +3,14 @@
 from __future__ import annotations
 
 import sys
-
-from rich.console import Console
+from typing import TYPE_CHECKING
 
 from . import check_urdf, github, plain_line, summary_line
 from . import json as json_format
 from .text import print_diagnostic, print_tree
+
+if TYPE_CHECKING:
+    from rich.console import Console
 
 
 def emit(results, output_format: str, stdout: Console, stderr: Console, tree: bool = True) -> None:

@@ -2,14 +2,16 @@
 
 from __future__ import annotations
 
-from rich.console import Console
-from rich.text import Text
+from typing import TYPE_CHECKING
 
 from ..diagnostics import Diagnostic
 from ..document import source_line
 from ..loaded import Loaded
 from . import plain_line, position
 from .check_urdf import tree_lines
+
+if TYPE_CHECKING:
+    from rich.console import Console
 
 STYLES = {"error": "bold red", "warning": "yellow", "info": "cyan"}
 
@@ -24,6 +26,8 @@ def print_tree(console: Console, loaded: Loaded) -> None:
     if plain(console):
         console.file.writelines(line + "\n" for line in lines)  # line by line: a deep tree's text is large
         return
+    from rich.text import Text  # only to style: plain output never imports rich
+
     for line in lines:
         text = Text(line)
         if line.startswith("robot name is: "):
@@ -41,6 +45,8 @@ def print_diagnostic(console: Console, diagnostic: Diagnostic, excerpt: bool = F
     if plain(console):
         console.file.write("".join(line + "\n" for line in [plain_line(diagnostic), *details]))
         return
+    from rich.text import Text
+
     text = Text()
     text.append(position(diagnostic), style="bold")
     text.append(": ")

@@ -8,18 +8,25 @@ from __future__ import annotations
 
 from collections import defaultdict
 
-from .. import inertia, massprops
+from .. import massprops
 from ..numbers import format_number
 from . import WARNING, Option, check
 
 SIZE_RATIO = 2.0  # links this many times apart in mass or size cannot share one honest tensor
 TOLERANCE = Option(
     "tolerance",
-    inertia.TOLERANCE,
+    massprops.TOLERANCE,
     "Largest element difference between declared and expected tensors, relative to the larger's largest element. "
     "0.1 catches swapped or unrotated axes and lets values rounded to two digits pass.",
 )
 DENSITY = Option("density", 0.0, "kg/m³: when positive, masses come from the geometry's volume instead of the declared mass.")
+
+
+def _inertia():
+    """:mod:`urdfcli.inertia`, imported when one of these rules first runs (`check` runs none)."""
+    from .. import inertia
+
+    return inertia
 
 
 def _declaring(loaded):
@@ -30,7 +37,7 @@ def _declaring(loaded):
 
 
 def _assess(loaded, link, options):
-    return inertia.assess(loaded, link, options.get("density") or None)
+    return _inertia().assess(loaded, link, options.get("density") or None)
 
 
 def _off_geometry(loaded, options):
@@ -38,11 +45,11 @@ def _off_geometry(loaded, options):
     for link in _declaring(loaded):
         found = _assess(loaded, link, options)
         if found is not None and found.off(options["tolerance"]):
-            yield link, found, inertia.rotated_fit(found)
+            yield link, found, _inertia().rotated_fit(found)
 
 
 def _implies(found) -> str | None:
-    return f"its {found.implied.source} implies {inertia.tensor_text(found.expected)}" if found and found.expected else None
+    return f"its {found.implied.source} implies {_inertia().tensor_text(found.expected)}" if found and found.expected else None
 
 
 @check("I007", "placeholder-identity", WARNING, "An inertia tensor that is the identity: a placeholder.", in_check=False, options=(TOLERANCE,))
@@ -79,7 +86,7 @@ def placeholder_identity(loaded, options):
     `urdfcli inertia --suggest` prints the values for each link.
     """
     for link in _declaring(loaded):
-        if massprops.is_identity(inertia.declared_tensor(link)):
+        if massprops.is_identity(_inertia().declared_tensor(link)):
             found = _assess(loaded, link, options)
             if found is not None and found.expected is not None and not found.off(options["tolerance"]):
                 continue
@@ -123,7 +130,7 @@ def placeholder_repeated(loaded, options):
     """
     groups = defaultdict(list)
     for link in _declaring(loaded):
-        tensor = inertia.declared_tensor(link)
+        tensor = _inertia().declared_tensor(link)
         if not massprops.is_zero(tensor):
             groups[tensor].append(link)
     for tensor, links in groups.items():
@@ -142,7 +149,7 @@ def placeholder_repeated(loaded, options):
             shown = ", ".join(others) + (f" and {len(links) - 4} more" if len(links) > 4 else "")
             yield loaded.diagnostic(
                 "I008",
-                f"link '{link.name}' has the same inertia ({inertia.tensor_text(tensor)}) as {shown}, links of very different size: a placeholder",
+                f"link '{link.name}' has the same inertia ({_inertia().tensor_text(tensor)}) as {shown}, links of very different size: a placeholder",
                 link.inertial.element.find("inertia"),
                 _implies(assessment),
             )
@@ -199,7 +206,7 @@ def geometry_mismatch(loaded, options):
         yield loaded.diagnostic(
             "I009",
             f"inertia of link '{link.name}' is {found.difference:.0%} off what its {found.implied.source} implies for {basis}: "
-            f"declared {inertia.tensor_text(found.declared, found.expected)}, expected {inertia.tensor_text(found.expected, found.declared)}",
+            f"declared {_inertia().tensor_text(found.declared, found.expected)}, expected {_inertia().tensor_text(found.expected, found.declared)}",
             link.inertial.element.find("inertia"),
             "; ".join(hints),
         )
