@@ -16,6 +16,7 @@ from collections import defaultdict
 from collections.abc import Iterable
 from dataclasses import dataclass
 
+from .escape import escape
 from .formatters.tree import axis_text, limit_text, short
 from .kinematics import children_by_joint_name, walk
 from .model import MOVING_AXIS_TYPES, Joint, Robot, Vec3
@@ -75,20 +76,22 @@ def urdfdom_rpy(rpy: Vec3) -> Vec3:
 def compat_dot(robot: Robot, root: str) -> str:
     """urdf_to_graphviz's .gv file: links depth-first, then two edges per joint.
 
-    Names are written unescaped, as urdf_to_graphviz does.
+    Names are written as urdf_to_graphviz writes them, except that control
+    and direction-changing characters are shown as escapes.
     """
     children = children_by_joint_name(robot)
     order = list(walk(robot, root, children))
     lines = ["digraph G {", "node [shape=box];"]
-    lines += [f'"{link}" [label="{link}"];' for _, _, link in order]
+    lines += [f'"{escape(link)}" [label="{escape(link)}"];' for _, _, link in order]
     lines.append("node [shape=ellipse, color=blue, fontcolor=blue];")
     for _, joint, link in order:
         if joint is None:
             continue
         xyz = " ".join(cpp_number(v) for v in joint.origin.xyz)
         rpy = " ".join(cpp_number(v) for v in urdfdom_rpy(joint.origin.rpy))
-        lines.append(f'"{joint.parent}" -> "{joint.name}" [label="xyz: {xyz} \\nrpy: {rpy}"]')
-        lines.append(f'"{joint.name}" -> "{link}"')
+        parent, name = escape(joint.parent), escape(joint.name)
+        lines.append(f'"{parent}" -> "{name}" [label="xyz: {xyz} \\nrpy: {rpy}"]')
+        lines.append(f'"{name}" -> "{escape(link)}"')
     lines.append("}")
     return "".join(line + "\n" for line in lines)
 
@@ -106,26 +109,30 @@ class Style:
     collapse_fixed: bool = False
 
 
+def dot_text(text: str) -> str:
+    """``text`` inside a DOT quoted string, shown literally: control characters
+    escaped (a line break in a name too), then backslashes and quotes."""
+    return escape(text).replace("\\", "\\\\").replace('"', '\\"')
+
+
 def quote(text: str) -> str:
     """``text`` as a DOT quoted string whose label shows it literally."""
-    escaped = text.replace("\\", "\\\\").replace('"', '\\"')
-    escaped = escaped.replace("\r\n", "\n").replace("\r", "\n").replace("\n", "\\n")
-    return f'"{escaped}"'
+    return f'"{dot_text(text)}"'
 
 
 def label(*lines: str) -> str:
     """A quoted, escaped DOT label of several centred lines."""
-    return quote("\n".join(line for line in lines if line))
+    return '"' + "\\n".join(dot_text(line) for line in lines if line) + '"'
 
 
-def origin_text(joint: Joint) -> str:
-    """``xyz: ...`` and ``rpy: ...`` lines, each left out when zero."""
+def origin_lines(joint: Joint) -> list[str]:
+    """``xyz: ...`` and ``rpy: ...``, each left out when zero."""
     parts = []
     if any(joint.origin.xyz):
         parts.append("xyz: " + " ".join(short(v) for v in joint.origin.xyz))
     if any(joint.origin.rpy):
         parts.append("rpy: " + " ".join(short(v) for v in joint.origin.rpy))
-    return "\n".join(parts)
+    return parts
 
 
 def joint_lines(joint: Joint, style: Style) -> list[str]:
@@ -187,8 +194,8 @@ def styled_dot(robot: Robot, root: str, style: Style = Style()) -> str:
             used_types.append(joint.type)
         node = joint_id(joint.name)
         lines.append(f"{node} [label={label(*joint_lines(joint, style))}, color={quote(colour)}, fontcolor={quote(colour)}];")
-        origin = origin_text(joint)
-        edge_label = f", label={quote(origin)}" if origin else ""
+        origin = origin_lines(joint)
+        edge_label = f", label={label(*origin)}" if origin else ""
         lines.append(f"{link_id(head[joint.parent])} -> {node} [color={quote(colour)}{edge_label}];")
         lines.append(f"{node} -> {link_id(head[link])} [color={quote(colour)}];")
     if used_types:
@@ -197,12 +204,18 @@ def styled_dot(robot: Robot, root: str, style: Style = Style()) -> str:
     return "".join(line + "\n" for line in lines)
 
 
+def identity(name: str) -> str:
+    """A name for a node ID: its backslashes doubled, so that no two names
+    give one ID once control characters are escaped."""
+    return name.replace("\\", "\\\\")
+
+
 def link_id(name: str) -> str:
-    return quote(f"link:{name}")
+    return quote(f"link:{identity(name)}")
 
 
 def joint_id(name: str) -> str:
-    return quote(f"joint:{name}")
+    return quote(f"joint:{identity(name)}")
 
 
 def legend(types: Iterable[str]) -> str:

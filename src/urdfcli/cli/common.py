@@ -11,6 +11,7 @@ from typing import Annotated
 import typer
 
 from ..config import Config, ConfigError, for_input
+from ..escape import escape
 from ..load import InputError
 from ..loaded import Loaded
 from ..packages import PackageError
@@ -94,7 +95,7 @@ LIBRARIES_HELP = (
 
 def fail(message: str) -> typer.Exit:
     """Print one line and give the exit code for 'could not run'."""
-    stderr.print(f"urdfcli: {message}", markup=False)
+    stderr.print(f"urdfcli: {escape(message)}", markup=False)
     return typer.Exit(Exit.CANNOT_RUN)
 
 

@@ -9,6 +9,7 @@ from typing import Annotated
 
 import typer
 
+from ..escape import escape
 from ..drawing import RenderError, Style, compat_dot, render, styled_dot
 from ..output import OutputError, write_atomic
 from .common import ConfigOption, Exit, IsolatedOption, PackagePathOption, fail, split_inputs, stderr, stdout
@@ -101,4 +102,4 @@ def write(path: Path, data: str | bytes, inputs: list[str]) -> None:
         write_atomic(path, data, inputs)
     except OutputError as error:
         raise fail(str(error)) from None
-    stdout.print(f"Created file {path}", markup=False, highlight=False)
+    stdout.print(f"Created file {escape(str(path))}", markup=False, highlight=False)

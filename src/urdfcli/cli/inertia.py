@@ -13,6 +13,7 @@ from rich.text import Text
 from .. import inertia as audit_module
 from .. import massprops
 from ..diagnostics import Severity
+from ..escape import escape
 from ..formatters.text import print_diagnostic
 from ..linter import configured
 from ..rules import rule
@@ -117,17 +118,17 @@ def report_lines(report: audit_module.Report, show_name: bool):
     """The report as styled lines."""
     number = audit_module.number
     loaded = report.loaded
-    title = Text.assemble((f"robot '{loaded.robot.name}'", "bold"))
+    title = Text.assemble((f"robot '{escape(loaded.robot.name or '')}'", "bold"))
     if show_name:
-        title.append(f"  ({loaded.document.shown})", style="dim")
+        title.append(f"  ({escape(loaded.document.shown)})", style="dim")
     yield title
     for entry in report.links:
         link, found = entry.link, entry.assessment
         if entry.frame and not entry.problems and not entry.from_density:
-            yield Text.assemble((link.name, "bold"), ("  massless frame link", "dim"))
+            yield Text.assemble((escape(link.name), "bold"), ("  massless frame link", "dim"))
             continue
         inertial = link.inertial
-        header = Text.assemble((link.name, "bold"))
+        header = Text.assemble((escape(link.name), "bold"))
         if entry.from_density:  # the mass the total counts, and the declared one beside it
             declared = f"declared {number(inertial.mass)}" if inertial is not None and inertial.mass is not None else "none declared"
             header.append(f"  mass {number(entry.mass)} from density ({declared})")
@@ -147,7 +148,7 @@ def report_lines(report: audit_module.Report, show_name: bool):
             yield _row("problems", ", ".join(f"{d.code} {rule(d.code).name}" for d in entry.problems), "yellow")
     body = report.total
     if body is not None:
-        yield Text.assemble(("total", "bold"), f"  mass {number(body.mass)}  com {' '.join(map(number, body.com))} (in '{loaded.root}' frame, joints at zero)")
+        yield Text.assemble(("total", "bold"), f"  mass {number(body.mass)}  com {' '.join(map(number, body.com))} (in '{escape(loaded.root or '')}' frame, joints at zero)")
         yield _row("inertia", audit_module.tensor_text(body.tensor) + "  about the centre of mass")
 
 
@@ -161,7 +162,7 @@ def print_suggestions(report: audit_module.Report, density: float | None, xacro:
         use = audit_module.macro_use(loaded, entry.link) if xacro else None
         if use is not None:
             called = f", called at {use.called_at} as {use.call}" if use.call else ""
-            stdout.print(f"<!-- link '{entry.link.name}': its <inertial> comes from xacro macro '{use.name}' ({use.defined_at}){called} -->", markup=False, soft_wrap=True)
+            stdout.print(f"<!-- link '{escape(entry.link.name)}': its <inertial> comes from xacro macro '{use.name}' ({use.defined_at}){called} -->", markup=False, soft_wrap=True)
             call = audit_module.matching_call(loaded, entry.link, use) if density is None else None
             if call is not None:
                 stdout.print(f"<!-- the call that gives the geometry's values: -->\n{call}", markup=False, soft_wrap=True)

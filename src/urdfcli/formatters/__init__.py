@@ -9,6 +9,7 @@ from __future__ import annotations
 import os
 
 from ..diagnostics import Diagnostic, Severity
+from ..escape import escape
 from ..loaded import Loaded
 
 FORMATS = ("auto", "text", "concise", "json", "sarif", "github", "check_urdf")
@@ -45,7 +46,7 @@ def position(diagnostic: Diagnostic) -> str:
 
 def plain_line(diagnostic: Diagnostic) -> str:
     expanded = " (line in the xacro-expanded document)" if diagnostic.location.expanded else ""
-    return f"{position(diagnostic)}: {diagnostic.code} {diagnostic.severity.value}: {diagnostic.message}{expanded}"
+    return escape(f"{position(diagnostic)}: {diagnostic.code} {diagnostic.severity.value}: {diagnostic.message}{expanded}")
 
 
 def summary_line(results: list[Loaded]) -> str:

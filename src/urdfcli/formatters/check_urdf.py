@@ -2,22 +2,24 @@
 
 from __future__ import annotations
 
+from ..escape import escape
 from ..kinematics import children_by_joint_name
 from ..loaded import Loaded
 
 
 def tree_lines(loaded: Loaded) -> list[str]:
     """check_urdf's tree. A link with two parents is listed under both, as
-    urdfdom does; a loop is cut where it closes (urdfdom would print forever)."""
+    urdfdom does; a loop is cut where it closes (urdfdom would print forever).
+    Names are shown escaped where check_urdf would print control characters."""
     robot = loaded.robot
     root = loaded.root
     if robot is None or root is None:
         return []
     children = children_by_joint_name(robot)
     lines = [
-        f"robot name is: {robot.name or ''}",
+        f"robot name is: {escape(robot.name or '')}",
         "---------- Successfully Parsed XML ---------------",
-        f"root Link: {root} has {len(children.get(root, []))} child(ren)",
+        f"root Link: {escape(root)} has {len(children.get(root, []))} child(ren)",
     ]
     stack = [(root, 0, iter(children.get(root, [])), 0)]
     on_path = {root}
@@ -30,7 +32,7 @@ def tree_lines(loaded: Loaded) -> list[str]:
             continue
         count += 1
         stack[-1] = (link, level, pending, count)
-        lines.append("    " * (level + 1) + f"child({count}):  {joint.child}")
+        lines.append("    " * (level + 1) + f"child({count}):  {escape(joint.child)}")
         if joint.child not in on_path:
             on_path.add(joint.child)
             stack.append((joint.child, level + 1, iter(children.get(joint.child, [])), 0))
@@ -38,5 +40,5 @@ def tree_lines(loaded: Loaded) -> list[str]:
 
 
 def error_lines(loaded: Loaded) -> list[str]:
-    lines = [f"Error:   {d.message}" for d in loaded.diagnostics if d.severity.value == "error"]
+    lines = [f"Error:   {escape(d.message)}" for d in loaded.diagnostics if d.severity.value == "error"]
     return lines + ["ERROR: Model Parsing the xml failed"] if lines else []

@@ -5,6 +5,7 @@ from __future__ import annotations
 import sys
 from typing import TYPE_CHECKING
 
+from ..escape import escape
 from . import check_urdf, github, plain_line, summary_line
 from . import json as json_format
 from .text import print_diagnostic, print_tree
@@ -47,7 +48,7 @@ def emit(results, output_format: str, stdout: Console, stderr: Console, tree: bo
             library = getattr(loaded, "checked_through", None) is not None
             if tree and not library:
                 if len(results) > 1:
-                    stdout.print(f"==> {getattr(loaded, 'label', None) or loaded.document.shown} <==", style="bold", markup=False)
+                    stdout.print(f"==> {escape(getattr(loaded, 'label', None) or loaded.document.shown)} <==", style="bold", markup=False)
                 print_tree(stdout, loaded)
             for diagnostic in loaded.diagnostics:
                 print_diagnostic(stderr, diagnostic, excerpt=True)

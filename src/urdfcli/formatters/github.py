@@ -3,12 +3,14 @@
 from __future__ import annotations
 
 from ..diagnostics import Diagnostic
+from ..escape import escape
 
 LEVELS = {"error": "error", "warning": "warning", "info": "notice"}
 
 
 def _escape_data(text: str) -> str:
-    return text.replace("%", "%25").replace("\r", "%0D").replace("\n", "%0A")
+    """Workflow-command escaping, after the control characters are made visible (the log is a terminal)."""
+    return escape(text).replace("%", "%25").replace("\r", "%0D").replace("\n", "%0A")
 
 
 def _escape_property(text: str) -> str:

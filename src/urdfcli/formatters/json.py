@@ -5,6 +5,7 @@ from __future__ import annotations
 import json
 
 from ..diagnostics import Diagnostic
+from ..escape import json_escape
 from ..loaded import Loaded
 from . import counts
 
@@ -46,4 +47,4 @@ def render(results: list[Loaded]) -> str:
         ],
         "summary": {"files": len(results), "errors": errors, "warnings": warnings},
     }
-    return json.dumps(document, indent=2, ensure_ascii=False)
+    return json_escape(json.dumps(document, indent=2, ensure_ascii=False))

@@ -12,6 +12,7 @@ from pathlib import Path
 
 from .. import __version__
 from ..diagnostics import Diagnostic
+from ..escape import json_escape
 from ..rules import Rule, load_all
 
 SCHEMA = "https://json.schemastore.org/sarif-2.1.0.json"
@@ -75,4 +76,4 @@ def render(results) -> str:
             }
         ],
     }
-    return json.dumps(document, indent=2, ensure_ascii=False)
+    return json_escape(json.dumps(document, indent=2, ensure_ascii=False))

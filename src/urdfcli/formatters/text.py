@@ -6,6 +6,7 @@ from typing import TYPE_CHECKING
 
 from ..diagnostics import Diagnostic
 from ..document import source_line
+from ..escape import escape
 from ..loaded import Loaded
 from . import plain_line, position
 from .check_urdf import tree_lines
@@ -33,7 +34,7 @@ def print_tree(console: Console, loaded: Loaded) -> None:
         if line.startswith("robot name is: "):
             text.stylize("bold", 15)
         elif line.startswith("root Link: "):
-            text.stylize("bold green", 11, 11 + len(loaded.root or ""))
+            text.stylize("bold green", 11, 11 + len(escape(loaded.root or "")))
         elif "child(" in line:
             text.stylize("green", line.index("):  ") + 4)
         console.print(text, soft_wrap=True, highlight=False)
@@ -41,18 +42,18 @@ def print_tree(console: Console, loaded: Loaded) -> None:
 
 def print_diagnostic(console: Console, diagnostic: Diagnostic, excerpt: bool = False) -> None:
     """``PATH:LINE:COL: CODE severity: message``, its hint, and (with ``excerpt``) the source line."""
-    details = (["    hint: " + diagnostic.hint] if diagnostic.hint else []) + (excerpt_lines(diagnostic) if excerpt else [])
+    details = (["    hint: " + escape(diagnostic.hint)] if diagnostic.hint else []) + (excerpt_lines(diagnostic) if excerpt else [])
     if plain(console):
         console.file.write("".join(line + "\n" for line in [plain_line(diagnostic), *details]))
         return
     from rich.text import Text
 
     text = Text()
-    text.append(position(diagnostic), style="bold")
+    text.append(escape(position(diagnostic)), style="bold")
     text.append(": ")
     text.append(diagnostic.code, style=STYLES[diagnostic.severity.value])
     text.append(f" {diagnostic.severity.value}: ", style=STYLES[diagnostic.severity.value])
-    text.append(diagnostic.message)
+    text.append(escape(diagnostic.message))
     if diagnostic.location.expanded:
         text.append(" (line in the xacro-expanded document)", style="dim")
     console.print(text, soft_wrap=True, highlight=False)
@@ -69,9 +70,11 @@ def excerpt_lines(diagnostic: Diagnostic, width: int = 160) -> list[str]:
     if text is None:
         return []
     text = text.replace("\t", " ").rstrip()
-    shown = text if len(text) <= width else text[: width - 3] + "..."
+    safe = escape(text)  # the caret moves right by what the escapes before it add
+    shown = safe if len(safe) <= width else safe[: width - 3] + "..."
     width = max(4, len(str(location.line)))
     lines = [f"  {location.line:>{width}} | {shown}"]
-    if location.column and location.column <= len(shown) + 1:
-        lines.append(f"  {'':>{width}} | {' ' * (location.column - 1)}^")
+    caret = len(escape(text[: location.column - 1])) if location.column else None
+    if caret is not None and caret <= len(shown):
+        lines.append(f"  {'':>{width}} | {' ' * caret}^")
     return lines

@@ -14,6 +14,7 @@ from collections import Counter
 from collections.abc import Callable, Iterator
 from dataclasses import dataclass
 
+from ..escape import escape
 from ..kinematics import depth_and_leaves, walk_all
 from ..model import JOINT_TYPES, MOVING_AXIS_TYPES, Joint, Link, Robot, Vec3
 from ..numbers import format_number
@@ -188,26 +189,19 @@ def text_lines(robot: Robot, rows: list[Row], joints: bool = True, ascii_only: b
             line.append(("".join(through if is_open else blank for is_open in open_levels[1:]), "bright_black"))
             line.append((corner if row.last else branch, "bright_black"))
         open_levels.append(not row.last)
-        line.append((printable(row.link), "bold green" if row.depth == 0 else "bold"))
+        line.append((escape(row.link), "bold green" if row.depth == 0 else "bold"))
         if joints and row.joint is not None:
             line.append((f"  {arrow} ", "bright_black"))
-            line.append((printable(row.joint.name), "cyan"))
+            line.append((escape(row.joint.name), "cyan"))
             line.append((" (", "bright_black"))
-            line.append((row.joint.type or "unknown type", TYPE_STYLES.get(row.joint.type or "", "red")))
-            line.append((printable("".join(", " + part for part in joint_details(row.joint, ascii_only))), "bright_black"))
+            line.append((escape(row.joint.type or "unknown type"), TYPE_STYLES.get(row.joint.type or "", "red")))
+            line.append((escape("".join(", " + part for part in joint_details(row.joint, ascii_only))), "bright_black"))
             line.append((")", "bright_black"))
         if row.repeat:
             line.append((f"  {again}", "red"))
         if row.hidden:
             line.append((f"  {more} {plural(row.hidden, 'link')} below", "bright_black"))
         yield line
-
-
-def printable(text: str) -> str:
-    """A name on one line: control characters shown as escapes."""
-    if text.isprintable():
-        return text
-    return "".join(c if c.isprintable() else c.encode("unicode_escape").decode("ascii") for c in text)
 
 
 # -- JSON -------------------------------------------------------------------------
