@@ -281,6 +281,42 @@ def test_a_model_with_errors_writes_nothing(tmp_path):
     assert sorted(p.name for p in tmp_path.iterdir()) == ["bad.urdf"]
 
 
+LIMIT = '<limit effort="1" velocity="1" lower="-1" upper="1"/>'
+CHECK_ERRORS = (  # errors only check's rules find: a zero axis (J007), a mimic of a missing joint (J008)
+    '<robot name="r"><link name="a"/><link name="b"/><link name="c"/>'
+    f'<joint name="j" type="revolute"><parent link="a"/><child link="b"/><axis xyz="0 0 0"/>{LIMIT}</joint>'
+    f'<joint name="k" type="revolute"><parent link="a"/><child link="c"/>{LIMIT}<mimic joint="nope"/></joint></robot>'
+)
+
+
+def error_lines(stderr: bytes) -> list[str]:
+    """The diagnostics and their details, without check's summary line."""
+    return [line for line in stderr.decode().splitlines() if "file checked" not in line and "files checked" not in line]
+
+
+@pytest.mark.parametrize("command", [("tree",), ("tree", "--format", "json"), ("graph", "--format", "dot"), ("graph",)])
+def test_tree_and_graph_report_checks_errors_as_check_does(tmp_path, command):
+    path = tmp_path / "r.urdf"
+    path.write_text(CHECK_ERRORS)
+    check = run_cli("check", str(path), cwd=tmp_path)
+    assert check.returncode == 1 and "J007 error" in check.stderr.decode() and "J008 error" in check.stderr.decode()
+    done = run_cli(*command, str(path), cwd=tmp_path)
+    assert done.returncode == 1
+    assert error_lines(done.stderr) == error_lines(check.stderr)
+    if command[0] == "graph":
+        assert done.stdout == b"" and sorted(p.name for p in tmp_path.iterdir()) == ["r.urdf"]
+
+
+def test_graph_force_draws_a_model_with_errors_and_still_exits_1(tmp_path):
+    path = tmp_path / "r.urdf"
+    path.write_text(CHECK_ERRORS)
+    dot = run_cli("graph", "--force", "--format", "dot", str(path), cwd=tmp_path)
+    assert dot.returncode == 1 and dot.stdout.decode().startswith('digraph "r"') and "J007 error" in dot.stderr.decode()
+    files = run_cli("graph", "--force", str(path), "out", cwd=tmp_path)
+    assert files.returncode == 1 and (tmp_path / "out.gv").exists()
+    assert "--force" in run_cli("graph", "--help", env={"COLUMNS": "200"}).stdout.decode()
+
+
 def test_format_dot_prints_and_writes_nothing(tmp_path):
     result = run_cli("graph", "--compat", "--format", "dot", str(CRANE), cwd=tmp_path)
     assert result.returncode == 0

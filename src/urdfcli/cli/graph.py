@@ -40,6 +40,7 @@ def graph(
     inertial: Annotated[bool, typer.Option("--inertial", help="Add link masses.")] = False,
     rankdir: Annotated[RankDir, typer.Option("--rankdir", case_sensitive=False, metavar="TB|LR", help="Top to bottom, or left to right.")] = RankDir.TB,
     collapse_fixed: Annotated[bool, typer.Option("--collapse-fixed", help="Merge links joined by fixed joints into one box (for large robots).")] = False,
+    force: Annotated[bool, typer.Option("--force", help="Draw even when the model has errors (they are still printed, and the exit code is still 1).")] = False,
     timeout: Annotated[float, typer.Option("--timeout", min=1, metavar="SECONDS", help="Give up rendering after this long.")] = 120,
     package_path: PackagePathOption = None,
     config: ConfigOption = None,
@@ -50,9 +51,13 @@ def graph(
     The default drawing labels each joint with its name and type (and axis),
     coloured by type, with a legend and each joint's origin on its edge.
     Rendering needs the Graphviz program 'dot'. Children follow the order of
-    their joints' names. Exit 0; 1 when the model has errors (nothing is
-    written); 2 when the input cannot be read, an output cannot be written,
-    or dot is missing or fails (the DOT file is still written).
+    their joints' names.
+
+    The model's errors are those `check` reports (J007 zero axis, J008 mimic
+    of a missing joint...), printed on stderr. Exit 0; 1 when the model has
+    errors: then nothing is written, unless --force draws it anyway; 2 when
+    the input cannot be read, an output cannot be written, or dot is missing
+    or fails (the DOT file is still written).
     """
     paths, mappings = split_inputs(inputs)
     if len(paths) > 2:
@@ -65,15 +70,16 @@ def graph(
     if output is not None and output_kind is None:
         raise fail(f"{output}: unknown extension; use one of {' '.join(EXTENSIONS)}")
     loaded = load_model(paths[0], mappings, package_path, config, isolated)
-    if report_errors(loaded) or (start := start_link(loaded, None)) is None:
+    has_errors = report_errors(loaded)
+    start = start_link(loaded, None) if force or not has_errors else None
+    if start is None:
         raise typer.Exit(Exit.PROBLEMS)
     robot = loaded.robot
     dot = compat_dot(robot, start) if compat else styled_dot(robot, start, Style(limits, inertial, rankdir.value, collapse_fixed))
+    inputs_read = [paths[0], *loaded.document.includes]
     if output_format is not None:
         sys.stdout.write(dot)
-        return
-    inputs_read = [paths[0], *loaded.document.includes]
-    if output is not None and output_kind == "dot":
+    elif output is not None and output_kind == "dot":
         write(output, dot, inputs_read)
     elif output is not None:
         make_picture(dot, output, output_kind, timeout, inputs_read, None)
@@ -81,6 +87,8 @@ def graph(
         base = paths[1] if len(paths) == 2 else (robot.name or "robot").replace("/", "_")
         write(Path(f"{base}.gv"), dot, inputs_read)
         make_picture(dot, Path(f"{base}.pdf"), "pdf", timeout, inputs_read, Path(f"{base}.gv"))
+    if has_errors:  # drawn with --force
+        raise typer.Exit(Exit.PROBLEMS)
 
 
 def make_picture(dot: str, output: Path, kind: str, timeout: float, inputs: list[str], dot_file: Path | None) -> None:

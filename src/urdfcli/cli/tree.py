@@ -39,8 +39,9 @@ def tree(
     parents, or a loop) is shown again, marked, and not followed. The summary
     covers the whole tree below the start link, also what --max-depth hides.
 
-    Exit 0; 1 when the model has errors (printed on stderr; the tree is still
-    shown when there is one); 2 when the input cannot be read.
+    Exit 0; 1 when the model has errors, the ones `check` reports (printed on
+    stderr; the tree is still shown when there is one); 2 when the input
+    cannot be read.
     """
     if output_format.lower() not in ("text", "json"):
         raise typer.BadParameter(f"unknown format {output_format!r}; choose text or json", param_hint="--format")
@@ -73,15 +74,16 @@ def tree(
 
 
 def load_model(path: str, mappings: dict[str, str], package_path: list[str] | None, config: Path | None = None, isolated: bool = False) -> Loaded:
-    """Load one input for drawing, with its configuration: structure only, no physics or style rules."""
-    return load_one(path, mappings, package_path, "none", configurations(config, isolated))
+    """Load one input for drawing, with its configuration and the rules `check` runs:
+    its errors are the model's errors, the same as `check` reports."""
+    return load_one(path, mappings, package_path, "check", configurations(config, isolated))
 
 
 def report_errors(loaded: Loaded) -> bool:
-    """Print the model's errors on stderr; whether there were any."""
+    """Print the model's errors on stderr as `check` prints them; whether there were any."""
     errors = [d for d in loaded.diagnostics if d.severity is Severity.ERROR]
     for diagnostic in errors:
-        print_diagnostic(stderr, diagnostic)
+        print_diagnostic(stderr, diagnostic, excerpt=True)
     return bool(errors) or loaded.robot is None or loaded.robot.element is None
 
 
