@@ -17,17 +17,29 @@ class Severity(str, Enum):
 
 
 @dataclass(frozen=True, slots=True)
+class Call:
+    """A xacro macro call: where it was written, and the macro it called."""
+
+    file: str
+    line: int | None
+    column: int | None
+    macro: str
+
+
+@dataclass(frozen=True, slots=True)
 class Location:
     """Where an element was written.
 
     ``expanded`` is true when the line is in the xacro-expanded document
     because the element's origin in the sources could not be determined.
+    ``trace`` lists the macro calls that made the element, innermost first.
     """
 
     file: str
     line: int | None = None
     column: int | None = None
     expanded: bool = False
+    trace: tuple[Call, ...] = ()
 
 
 @dataclass(frozen=True, slots=True)
@@ -58,4 +70,5 @@ class Diagnostic:
         return replace(self, severity=severity)
 
     def sort_key(self) -> tuple:
-        return (self.file, self.line or 0, self.location.column or 0, self.code)
+        trace = tuple((c.file, c.line or 0, c.column or 0) for c in self.location.trace)
+        return (self.file, self.line or 0, self.location.column or 0, self.code, trace)

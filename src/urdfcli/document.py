@@ -10,6 +10,7 @@ from typing import TYPE_CHECKING
 from lxml import etree
 
 from .diagnostics import Diagnostic, Location
+from .positions import Source, source
 
 if TYPE_CHECKING:
     from .expansion import Origin
@@ -55,31 +56,18 @@ class Document:
             index = self._index.get(element)
             origin = self.origins[index] if index is not None and index < len(self.origins) else None
             if origin is not None:
-                return Location(origin.file, origin.line or None, origin.column)
+                return Location(origin.file, origin.line or None, origin.column, trace=origin.trace)
             return Location(self.shown, element.sourceline, None, expanded=True)
-        line = element.sourceline
-        return Location(self.shown, line, self._column_here(element))
-
-    def _column_here(self, element: etree._Element) -> int | None:
-        if self.file is None or element.sourceline is None:
-            return None
-        occurrence = self._occurrences.get(element)
-        if occurrence is None:
-            return None
-        return source_column(str(self.file), element.sourceline, tag_name(element), occurrence)
+        text, index = self._source, self._index.get(element)
+        start = text.start(index, tag_name(element)) if text is not None and index is not None else None
+        if start is None:
+            return Location(self.shown, element.sourceline)
+        line, column = text.position(start)
+        return Location(self.shown, line, column)
 
     @cached_property
-    def _occurrences(self) -> dict[etree._Element, int]:
-        """Each element's rank among the elements of its tag starting on its line (from 1).
-
-        Computed once: a model written on one line has all its elements there.
-        """
-        counts: dict[tuple[int | None, str], int] = {}
-        found = {}
-        for element in self.root.iter(etree.Element):
-            key = (element.sourceline, element.tag)
-            counts[key] = found[element] = counts.get(key, 0) + 1
-        return found
+    def _source(self) -> Source | None:
+        return source(self.shown)
 
     @staticmethod
     def element_path(element: etree._Element | None) -> str | None:
@@ -105,46 +93,7 @@ class Document:
         return "/".join(reversed(parts))
 
 
-_LINES: dict[str, list[str]] = {}
-
-
-def _source_lines(file: str) -> list[str]:
-    if file not in _LINES:
-        try:
-            _LINES[file] = Path(file).read_text(encoding="utf-8", errors="replace").splitlines()
-        except OSError:
-            _LINES[file] = []
-    return _LINES[file]
-
-
 def source_line(file: str, line: int) -> str | None:
     """One line of a source file (1-based), or None when there is no such line."""
-    lines = _source_lines(file)
-    return lines[line - 1] if 0 < line <= len(lines) else None
-
-
-def source_column(file: str, line: int | None, tag: str, occurrence: int) -> int | None:
-    """1-based column of the occurrence-th ``<tag`` on a source line."""
-    if not line or occurrence < 1:
-        return None
-    lines = _source_lines(file)
-    if line > len(lines):
-        return None
-    starts = _tag_starts(file, line, "<" + tag)
-    return starts[occurrence - 1] + 1 if occurrence <= len(starts) else None
-
-
-_STARTS: dict[tuple[str, int, str], list[int]] = {}
-
-
-def _tag_starts(file: str, line: int, needle: str) -> list[int]:
-    """Where ``needle`` starts on a source line, found once per line and tag."""
-    key = (file, line, needle)
-    if key not in _STARTS:
-        text = _source_lines(file)[line - 1]
-        starts, start = [], text.find(needle)
-        while start >= 0:
-            starts.append(start)
-            start = text.find(needle, start + 1)
-        _STARTS[key] = starts
-    return _STARTS[key]
+    text = source(file)
+    return text.line(line) if text is not None else None

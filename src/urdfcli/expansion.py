@@ -25,27 +25,27 @@ import xacro.substitution_args
 from lxml import etree
 
 from . import sandbox
+from .diagnostics import Call, Location
+from .positions import Source, decode
 from .xmlsafe import XmlError, parse_bytes
 
 if TYPE_CHECKING:
     from .packages import PackageResolver
 
 ORIGIN = "urdfcli-origin"
+TRACE = "urdfcli-trace"  # the macro calls whose output starts at this element, innermost first
 XACRO_PREFIX = "xacro:"
 
 
 @dataclass(frozen=True, slots=True)
 class Origin:
+    """Where an element was written (line and column of its ``<``), and the macro
+    calls that made it, innermost first."""
+
     file: str
     line: int
-    occurrence: int  # k-th element of this tag starting on that line, from 1
-    tag: str = ""
-
-    @property
-    def column(self) -> int | None:
-        from .document import source_column
-
-        return source_column(self.file, self.line, self.tag, self.occurrence)
+    column: int | None = None
+    trace: tuple[Call, ...] = ()
 
 
 class ExpansionError(Exception):
@@ -75,30 +75,35 @@ class Expansion:
     warnings: list[tuple[str, Origin | None]] = field(default_factory=list)
 
 
-def tag_origins(root: etree._Element, file: str) -> None:
-    counts: dict[tuple[int, str], int] = {}
-    for element in root.iter(etree.Element):
-        line = element.sourceline or 0
-        key = (line, element.tag)
-        counts[key] = counts.get(key, 0) + 1
-        element.set(ORIGIN, f"{line}:{counts[key]}:{file}")
+def tag_origins(root: etree._Element, file: str, data: bytes | None) -> None:
+    """Mark every element with where its ``<`` was written (``LINE:COLUMN:FILE``)."""
+    elements = list(root.iter(etree.Element))
+    text = Source(decode(data)) if data is not None else None
+    starts = text.element_starts(len(elements)) if text is not None else None
+    if starts is None:  # not the text of this tree: the line libxml2 gives, no column
+        for element in elements:
+            element.set(ORIGIN, f"{element.sourceline or 0}:0:{file}")
+        return
+    for element, start in zip(elements, starts):
+        line, column = text.position(start)
+        element.set(ORIGIN, f"{line}:{column}:{file}")
 
 
-def parse_origin(value: str, tag: str = "") -> Origin | None:
+def parse_origin(value: str) -> Origin | None:
     try:
-        line, occurrence, file = value.split(":", 2)
-        return Origin(file, int(line), int(occurrence), tag)
+        line, column, file = value.split(":", 2)
+        return Origin(file, int(line), int(column) or None)
     except ValueError:
         return None
 
 
-def tagged_dom(root: etree._Element, file: str) -> xml.dom.minidom.Document:
-    tag_origins(root, file)
+def tagged_dom(root: etree._Element, file: str, data: bytes | None) -> xml.dom.minidom.Document:
+    tag_origins(root, file, data)
     try:
         return xml.dom.minidom.parseString(etree.tostring(root.getroottree(), encoding="utf-8"))
     except xml.parsers.expat.ExpatError as error:  # XML 1.0 5th-edition names that xacro's expat refuses
         message = f"xacro cannot read this document: {xml.parsers.expat.ErrorString(error.code)}"
-        raise ExpansionError(message, Origin(file, error.lineno, 0), file, code="X001") from None
+        raise ExpansionError(message, Origin(file, error.lineno, error.offset + 1), file, code="X001") from None
 
 
 class _Session:
@@ -113,12 +118,16 @@ class _Session:
         self.stack: list[object] = []
         self.touched: object | None = None
         self.saved: dict[str, object] = {}
+        self.calling: list[object] = []  # the macro calls being expanded, outermost first
+        self.calls: list[Call] = []  # each macro call site once, by its index in TRACE attributes
+        self.call_index: dict[Call, int] = {}
+        self.warnings: list[tuple[str, Origin | None]] = []
 
     # -- where is xacro now --------------------------------------------------
     def origin_of(self, node) -> Origin | None:
         while node is not None and getattr(node, "nodeType", None) == xml.dom.Node.ELEMENT_NODE:
             if node.hasAttribute(ORIGIN):
-                return parse_origin(node.getAttribute(ORIGIN), node.tagName)
+                return parse_origin(node.getAttribute(ORIGIN))
             entry = self.xacro_origins.get(id(node))
             if entry is not None and entry[0] is node:
                 return entry[1]
@@ -126,10 +135,43 @@ class _Session:
         return None
 
     def current_origin(self) -> Origin | None:
+        """Where xacro is now, with the macro calls it is inside, innermost first."""
         top = self.stack[-1] if self.stack else None
         if self.touched is not None and top is not None and getattr(self.touched, "parentNode", None) is top:
-            return self.origin_of(self.touched)
-        return self.origin_of(top)
+            origin = self.origin_of(self.touched)
+        else:
+            origin = self.origin_of(top)
+        if origin is None:
+            return None
+        trace = tuple(self.calls[i] for i in reversed([self.call_of(node) for node in self.calling]) if i is not None)
+        if trace and (trace[0].file, trace[0].line, trace[0].column) == (origin.file, origin.line, origin.column):
+            trace = trace[1:]  # xacro is at the call itself (its parameters)
+        return Origin(origin.file, origin.line, origin.column, trace) if trace else origin
+
+    def call_of(self, node) -> int | None:
+        """The index of a macro call node's call site (None when unknown)."""
+        origin = self.origin_of(node)
+        if origin is None:
+            return None
+        call = Call(origin.file, origin.line or None, origin.column, node.tagName[len(XACRO_PREFIX):])
+        index = self.call_index.get(call)
+        if index is None:
+            index = self.call_index[call] = len(self.calls)
+            self.calls.append(call)
+        return index
+
+    def stamp(self, node, body) -> None:
+        """Mark the top elements a macro call made with its call site; their
+        descendants inherit it (see _collect_origins)."""
+        index = self.call_of(node)
+        if index is None:
+            return
+        child = body.firstChild
+        while child is not None:
+            if child.nodeType == xml.dom.Node.ELEMENT_NODE:
+                before = child.getAttribute(TRACE)
+                child.setAttribute(TRACE, f"{before} {index}" if before else str(index))
+            child = child.nextSibling
 
     def hide_xacro_origins(self, node) -> None:
         """xacro rejects unknown attributes on its own tags: keep their origin aside."""
@@ -137,7 +179,7 @@ class _Session:
         while child is not None:
             if child.nodeType == xml.dom.Node.ELEMENT_NODE and child.tagName.startswith(XACRO_PREFIX):
                 if child.hasAttribute(ORIGIN):
-                    origin = parse_origin(child.getAttribute(ORIGIN), child.tagName)
+                    origin = parse_origin(child.getAttribute(ORIGIN))
                     child.removeAttribute(ORIGIN)
                     if origin is not None:
                         self.xacro_origins[id(child)] = (child, origin)
@@ -145,10 +187,14 @@ class _Session:
 
     # -- patches ---------------------------------------------------------------
     def track(self, name: str, original):
+        calling = name == "handle_macro_call"
+
         def tracked(node, *args, **kwargs):
             if name == "eval_all":
                 self.hide_xacro_origins(node)
             self.stack.append(node)
+            if calling:
+                self.calling.append(node)
             try:
                 return original(node, *args, **kwargs)
             except Exception as error:
@@ -157,8 +203,16 @@ class _Session:
                 raise
             finally:
                 self.stack.pop()
+                if calling:
+                    self.calling.pop()
 
         return tracked
+
+    def replace_node(self, node, by, content_only=False):
+        """xacro puts a macro's output in place of its call here: stamp it first."""
+        if content_only and by is not None and self.calling and node is self.calling[-1]:
+            self.stamp(node, by)
+        return self.saved["replace_node"](node, by, content_only)
 
     def touch(self, original):
         def touched(tag, *args, **kwargs):
@@ -189,11 +243,11 @@ class _Session:
             xacro.filestack.pop()
             raise ExpansionError(
                 f"XML syntax error in included file: {error.message}",
-                Origin(display_path(path), error.line or 0, 0),
+                Origin(display_path(path), error.line or 0, error.column),
                 display_path(path),
                 code="X001",
             ) from None
-        return tagged_dom(root, display_path(path))
+        return tagged_dom(root, display_path(path), data)
 
     def find(self, package: str) -> str:
         folder = self.find_package(package)
@@ -210,6 +264,8 @@ class _Session:
             setattr(xacro, name, self.touch(self.saved[name]))
         self.saved["parse"] = xacro.parse
         xacro.parse = self.parse
+        self.saved["replace_node"] = xacro.replace_node
+        xacro.replace_node = self.replace_node
         self.saved["safe_eval"] = xacro.safe_eval
         xacro.safe_eval = sandbox.safe_eval
         sandbox.restrict(xacro._global_symbols)
@@ -227,6 +283,18 @@ class _Session:
         return False
 
 
+def _untraced(origin: Origin | None) -> Origin | None:
+    """The origin without its macro calls (a runaway recursion's are the same call, hundreds of times)."""
+    return Origin(origin.file, origin.line, origin.column) if origin is not None else None
+
+
+def located(origin: Origin | None, file: str) -> Location:
+    """The location of an origin; just ``file`` when there is none."""
+    if origin is None:
+        return Location(file)
+    return Location(origin.file, origin.line or None, origin.column, trace=origin.trace)
+
+
 def display_path(path: str) -> str:
     try:
         relative = os.path.relpath(path)
@@ -235,18 +303,33 @@ def display_path(path: str) -> str:
     return path if relative.startswith("..") else relative
 
 
-def _collect_origins(doc: xml.dom.minidom.Document) -> list[Origin | None]:
-    """Strip the origin attributes, in document order, iteratively."""
+def _collect_origins(doc: xml.dom.minidom.Document, calls: list[Call]) -> list[Origin | None]:
+    """Strip the origin and trace attributes, in document order, iteratively.
+
+    An element's trace is its own stamps (innermost first) then its parent's.
+    Files, traces and origins are shared, not repeated: the list is sent from
+    the expansion's process whole."""
     origins: list[Origin | None] = []
-    stack = [doc.documentElement]
+    files: dict[str, str] = {}
+    traces: dict[tuple[Call, ...], tuple[Call, ...]] = {}
+    stack: list[tuple[object, tuple[Call, ...]]] = [(doc.documentElement, ())]
     while stack:
-        node = stack.pop()
+        node, trace = stack.pop()
+        if node.hasAttribute(TRACE):
+            own = tuple(calls[int(i)] for i in node.getAttribute(TRACE).split())
+            node.removeAttribute(TRACE)
+            trace = own + trace
+            trace = traces.setdefault(trace, trace)
         if node.hasAttribute(ORIGIN):
-            origins.append(parse_origin(node.getAttribute(ORIGIN), node.tagName))
+            origin = parse_origin(node.getAttribute(ORIGIN))
             node.removeAttribute(ORIGIN)
+            if origin is not None:
+                file = files.setdefault(origin.file, origin.file)
+                origin = Origin(file, origin.line, origin.column, trace)
+            origins.append(origin)
         else:
             origins.append(None)
-        children = [c for c in node.childNodes if c.nodeType == xml.dom.Node.ELEMENT_NODE]
+        children = [(c, trace) for c in node.childNodes if c.nodeType == xml.dom.Node.ELEMENT_NODE]
         stack.extend(reversed(children))
     return origins
 
@@ -265,8 +348,26 @@ def _short(error: BaseException) -> str:
     return text or type(error).__name__
 
 
-def _warnings(captured: str) -> list[str]:
-    return [line[len("warning: "):].strip() for line in captured.splitlines() if line.startswith("warning: ")]
+class _Stderr(io.StringIO):
+    """xacro's standard error: each ``warning:`` line kept with where xacro was when it began."""
+
+    def __init__(self, session: _Session):
+        super().__init__()
+        self.session = session
+        self.line: list[str] = []
+        self.origin: Origin | None = None
+
+    def write(self, text: str) -> int:
+        for piece in text.splitlines(keepends=True):
+            if not self.line:
+                self.origin = self.session.current_origin()
+            self.line.append(piece)
+            if piece.endswith("\n"):
+                line = "".join(self.line)
+                self.line = []
+                if line.startswith("warning: "):
+                    self.session.warnings.append((line[len("warning: "):].strip(), self.origin))
+        return len(text)
 
 
 def expand(
@@ -274,23 +375,24 @@ def expand(
     file: str | None,
     mappings: dict[str, str],
     resolver: "PackageResolver",
+    data: bytes | None = None,
 ) -> Expansion:
-    """Expand the parsed xacro document ``root`` read from ``file`` (None: stdin).
+    """Expand the parsed xacro document ``root`` read from ``file`` (None: stdin) as ``data``.
 
     The expansion runs under sandbox.bounded: limited in time and memory.
     """
     try:
-        return sandbox.bounded(_expand, root, file, mappings, resolver)
+        return sandbox.bounded(_expand, root, file, mappings, resolver, data)
     except sandbox.LimitExceeded as error:
         shown = display_path(file) if file else "<stdin>"
         raise ExpansionError(f"xacro expansion stopped: {error} (the limit for one file)", None, shown) from None
 
 
-def _expand(root: etree._Element, file: str | None, mappings: dict[str, str], resolver: "PackageResolver") -> Expansion:
+def _expand(root: etree._Element, file: str | None, mappings: dict[str, str], resolver: "PackageResolver", data: bytes | None) -> Expansion:
     shown = display_path(file) if file else "<stdin>"
-    doc = tagged_dom(root, shown)
-    stderr = io.StringIO()
-    with _Session(resolver.find), contextlib.redirect_stderr(stderr):
+    doc = tagged_dom(root, shown, data)
+    session = _Session(resolver.find)
+    with session, contextlib.redirect_stderr(_Stderr(session)):
         xacro.init_stacks(file)
         try:
             xacro.process_doc(doc, mappings=dict(mappings))
@@ -302,7 +404,7 @@ def _expand(root: etree._Element, file: str | None, mappings: dict[str, str], re
             what = f" in macro '{names[-1]}'" if names else ""
             raise ExpansionError(
                 f"runaway recursion{what}: a macro or include that expands itself without end",
-                getattr(error, "urdfcli_origin", None),
+                _untraced(getattr(error, "urdfcli_origin", None)),
                 shown,
             ) from None
         except Exception as error:
@@ -326,6 +428,6 @@ def _expand(root: etree._Element, file: str | None, mappings: dict[str, str], re
             first = doc.firstChild
             for text in banner:
                 doc.insertBefore(xml.dom.minidom.Comment(text), first)
-    origins = _collect_origins(doc)
+    origins = _collect_origins(doc, session.calls)
     text = doc.toprettyxml(indent="  ")
-    return Expansion(text, origins, includes, [(w, None) for w in _warnings(stderr.getvalue())])
+    return Expansion(text, origins, includes, session.warnings)

@@ -16,6 +16,7 @@ from pathlib import Path
 from lxml import etree
 
 from .diagnostics import Diagnostic, Location
+from . import positions
 from .document import Document
 from .kinematics import tree_diagnostics
 from .loaded import Loaded
@@ -92,6 +93,8 @@ def load_document(
     data = read_input(path) if data is None else data
     file = None if path == STDIN else Path(path)
     shown = "<stdin>" if file is None else path
+    if file is None:
+        positions.register(shown, data)  # excerpts and columns, as for a file
     named_xacro = force_xacro or path.endswith(".xacro")
     try:
         root = parse_bytes(data, keep_blank_text=named_xacro)
@@ -105,17 +108,13 @@ def load_document(
 
     resolver = resolver or PackageResolver(options.package_paths, file)
     try:
-        result = expansion.expand(root, str(file) if file else None, options.mappings, resolver)
+        result = expansion.expand(root, str(file) if file else None, options.mappings, resolver, data)
     except expansion.ExpansionError as error:
-        origin = error.origin
-        if origin is not None:
-            location = Location(origin.file, origin.line or None, origin.column)
-        else:
-            location = Location(error.file or shown)
+        location = expansion.located(error.origin, error.file or shown)
         return Document(path, None, file, is_xacro=True, includes=list(error.includes)), [_error(error.code, error.message, location)]
     expanded_root = parse_bytes(result.text.encode("utf-8"), keep_blank_text=False)
     document = Document(path, expanded_root, file, True, result.text, result.includes, result.origins)
-    warnings = [_error("X005", text, Location(shown)) for text, _ in result.warnings]
+    warnings = [_error("X005", text, expansion.located(origin, shown)) for text, origin in result.warnings]
     return document, warnings
 
 

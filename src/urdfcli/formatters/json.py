@@ -19,6 +19,10 @@ def diagnostic_dict(diagnostic: Diagnostic) -> dict:
         "line": diagnostic.location.line,
         "column": diagnostic.location.column,
         "element": diagnostic.element,
+        "trace": [
+            {"path": call.file, "line": call.line, "column": call.column, "macro": call.macro}
+            for call in diagnostic.location.trace
+        ],
     }
 
 

@@ -53,7 +53,21 @@ def result(diagnostic: Diagnostic, index: dict[str, int]) -> dict:
         found["ruleIndex"] = index[diagnostic.code]
     if diagnostic.element:
         found["locations"][0]["logicalLocations"] = [{"fullyQualifiedName": diagnostic.element, "kind": "element"}]
+    if location.trace:
+        found["relatedLocations"] = [related(i, call) for i, call in enumerate(location.trace)]
     return found
+
+
+def related(index: int, call) -> dict:
+    """A macro call that made the element: innermost first."""
+    region = {"startLine": call.line or 1}
+    if call.column:
+        region["startColumn"] = call.column
+    return {
+        "id": index,
+        "physicalLocation": {"artifactLocation": {"uri": artifact_uri(call.file)}, "region": region},
+        "message": {"text": f"in macro '{call.macro}' called here"},
+    }
 
 
 def render(results) -> str:

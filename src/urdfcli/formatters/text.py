@@ -42,7 +42,7 @@ def print_tree(console: Console, loaded: Loaded) -> None:
 
 def print_diagnostic(console: Console, diagnostic: Diagnostic, excerpt: bool = False) -> None:
     """``PATH:LINE:COL: CODE severity: message``, its hint, and (with ``excerpt``) the source line."""
-    details = (["    hint: " + escape(diagnostic.hint)] if diagnostic.hint else []) + (excerpt_lines(diagnostic) if excerpt else [])
+    details = trace_notes(diagnostic) + (["    hint: " + escape(diagnostic.hint)] if diagnostic.hint else []) + (excerpt_lines(diagnostic) if excerpt else [])
     if plain(console):
         console.file.write("".join(line + "\n" for line in [plain_line(diagnostic), *details]))
         return
@@ -59,6 +59,23 @@ def print_diagnostic(console: Console, diagnostic: Diagnostic, excerpt: bool = F
     console.print(text, soft_wrap=True, highlight=False)
     for line in details:
         console.print(Text(line, style="dim"), soft_wrap=True, highlight=False)
+
+
+TRACE_LEVELS = 3
+
+
+def trace_notes(diagnostic: Diagnostic, levels: int = TRACE_LEVELS) -> list[str]:
+    """One ``note:`` line per macro call that made the element, innermost first."""
+    trace = diagnostic.location.trace
+    notes = [escape(f"    note: in macro '{call.macro}' called at {call_position(call)}") for call in trace[:levels]]
+    if len(trace) > levels:
+        notes.append(f"    note: ... and {len(trace) - levels} more macro call{'s' if len(trace) - levels > 1 else ''}")
+    return notes
+
+
+def call_position(call) -> str:
+    parts = [call.file] + ([str(call.line), str(call.column or 1)] if call.line else [])
+    return ":".join(parts)
 
 
 def excerpt_lines(diagnostic: Diagnostic, width: int = 160) -> list[str]:

@@ -1,0 +1,177 @@
+"""Where each element of a source text starts: the line and column of its ``<``.
+
+libxml2 (lxml's ``sourceline``) gives the line where a start tag *ends*, which
+for a tag written over several lines is not where anyone looks. In well-formed
+XML a ``<`` outside comments, CDATA sections, processing instructions and the
+document type declaration always opens markup, so the element starts are the
+``<`` not followed by ``!``, ``?`` or ``/``, in document order: the order in
+which lxml's ``iter(etree.Element)`` visits the same document's elements.
+
+Texts are read once per file and kept for excerpts; standard input is
+registered under the name diagnostics give it.
+"""
+
+from __future__ import annotations
+
+import bisect
+import itertools
+import codecs
+import re
+from functools import cached_property
+from pathlib import Path
+
+_AFTER_NAME = frozenset(" \t\n/>")
+_ELEMENT = re.compile(r"<(?![!?/])")
+# Markup in which a '<' opens no element. DOCTYPE: its internal subset in brackets.
+_IGNORED = re.compile(r"<!--.*?-->|<!\[CDATA\[.*?\]\]>|<\?.*?\?>|<!DOCTYPE(?:[^\[>]|\[.*?\])*>", re.DOTALL)
+# A start tag (name, attributes with quoted values that may hold '>', then '/>' or '>') or an end tag.
+_TAG = re.compile(r"""<(?:/[^>]*>|[^\s/>!?](?:[^>"'/]|/(?!>)|"[^"]*"|'[^']*')*(/?)>)""")
+_DECLARED = re.compile(rb"""^<\?xml[^>]*?encoding\s*=\s*["']([A-Za-z0-9._-]+)["']""")
+_BOMS = ((codecs.BOM_UTF32_LE, "utf-32"), (codecs.BOM_UTF32_BE, "utf-32"), (codecs.BOM_UTF8, "utf-8-sig"),
+         (codecs.BOM_UTF16_LE, "utf-16"), (codecs.BOM_UTF16_BE, "utf-16"))
+
+
+def decode(data: bytes) -> str:
+    """The text of an XML document: its byte-order mark, else its declared encoding, else UTF-8."""
+    encoding = next((name for bom, name in _BOMS if data.startswith(bom)), None)
+    if encoding is None:
+        declared = _DECLARED.match(data[:200])
+        encoding = declared.group(1).decode("ascii") if declared else "utf-8"
+    try:
+        return data.decode(encoding, errors="replace")
+    except LookupError:
+        return data.decode("utf-8", errors="replace")
+
+
+class Source:
+    """One source text, its line ends normalised as XML does (CR LF and CR read as LF)."""
+
+    def __init__(self, text: str):
+        self.text = text.replace("\r\n", "\n").replace("\r", "\n") if "\r" in text else text
+        self._asked = 0
+
+    @cached_property
+    def lines(self) -> list[str]:
+        return self.text.split("\n")
+
+    @cached_property
+    def _line_starts(self) -> list[int]:
+        starts = [0]
+        starts.extend(itertools.accumulate(len(line) + 1 for line in self.lines))
+        return starts
+
+    @cached_property
+    def _holes(self) -> list[tuple[int, int]]:
+        """Comments, CDATA, processing instructions and DOCTYPE that hold a '<' of their own."""
+        text = self.text
+        return [(m.start(), m.end()) for m in _IGNORED.finditer(text) if text.find("<", m.start() + 1, m.end()) >= 0]
+
+    def _outside(self, offsets: list[int]) -> list[int]:
+        holes = self._holes
+        if not holes:
+            return offsets
+        ends = [end for _, end in holes]
+        kept = []
+        for offset in offsets:
+            i = bisect.bisect_right(ends, offset)
+            if i == len(holes) or offset < holes[i][0]:
+                kept.append(offset)
+        return kept
+
+    @cached_property
+    def starts(self) -> list[int]:
+        """The offset of every element's ``<``, in document order."""
+        return self._outside([m.start() for m in _ELEMENT.finditer(self.text)])
+
+    def start(self, index: int, tag: str) -> int | None:
+        """The offset of the ``<`` of the element ``index`` (in document order), checked
+        against its tag. Found by scanning no further than needed: a diagnostic near
+        the top of a large model costs nearly nothing."""
+        found = self._found
+        while len(found) <= index:
+            batch = [m.start() for m in itertools.islice(self._scan, max(1024, index + 1 - len(found)))]
+            if not batch:
+                return None
+            found.extend(self._outside(batch))
+        start = found[index]
+        if not self.text.startswith(tag, start + 1):
+            return None  # not the text of this tree
+        end = start + 1 + len(tag)
+        return start if end == len(self.text) or self.text[end] in _AFTER_NAME else None
+
+    @cached_property
+    def _found(self) -> list[int]:
+        return []
+
+    @cached_property
+    def _scan(self):
+        return _ELEMENT.finditer(self.text)
+
+    @cached_property
+    def spans(self) -> list[tuple[int, int, int]]:
+        """Per element in document order: offsets of its ``<``, of the end of its start
+        tag, and of the end of the element (after its end tag). Empty when the text is
+        not the well-formed document it should be."""
+        holes = self._holes
+        ends = [end for _, end in holes]
+        found: list[list[int]] = []
+        open_: list[int] = []
+        for match in _TAG.finditer(self.text):
+            start = match.start()
+            i = bisect.bisect_right(ends, start)
+            if i < len(holes) and holes[i][0] <= start:
+                continue
+            if self.text[start + 1] == "/":
+                if not open_:
+                    return []
+                found[open_.pop()][2] = match.end()
+            else:
+                found.append([start, match.end(), match.end()])
+                if not match.group(1):
+                    open_.append(len(found) - 1)
+        if open_:
+            return []
+        return [(a, b, c) for a, b, c in found]
+
+    def position(self, offset: int) -> tuple[int, int]:
+        """1-based line and column (in characters) of an offset."""
+        self._asked += 1
+        if self._asked < 32 and "_line_starts" not in self.__dict__:  # a few: counting is faster than a table
+            line_start = self.text.rfind("\n", 0, offset) + 1
+            return self.text.count("\n", 0, line_start) + 1, offset - line_start + 1
+        line = bisect.bisect_right(self._line_starts, offset)
+        return line, offset - self._line_starts[line - 1] + 1
+
+    def offset(self, line: int, column: int | None = None) -> int | None:
+        if not 0 < line <= len(self._line_starts):
+            return None
+        return self._line_starts[line - 1] + (column or 1) - 1
+
+    def line(self, number: int) -> str | None:
+        lines = self.lines
+        return lines[number - 1] if 0 < number <= len(lines) else None
+
+    def element_starts(self, count: int) -> list[int] | None:
+        """The element starts, if there are exactly ``count`` of them (the parsed tree's
+        element count): anything else means the text is not that tree's source."""
+        starts = self.starts
+        return starts if len(starts) == count else None
+
+
+_SOURCES: dict[str, Source | None] = {}
+
+
+def register(name: str, data: bytes) -> Source:
+    """Keep a text read from elsewhere than its name (standard input) under that name."""
+    _SOURCES[name] = Source(decode(data))
+    return _SOURCES[name]
+
+
+def source(name: str) -> Source | None:
+    """The source text diagnostics call ``name`` (a path), read once; None when unreadable."""
+    if name not in _SOURCES:
+        try:
+            _SOURCES[name] = Source(decode(Path(name).read_bytes()))
+        except OSError:
+            _SOURCES[name] = None
+    return _SOURCES[name]
