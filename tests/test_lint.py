@@ -102,7 +102,7 @@ def test_noqa_on_the_line_and_the_line_above(tmp_path):
     model = write(tmp_path, "robot.urdf", SUPPRESSED)
     found = [(d.line, d.code, d.severity.value, d.message) for d in lint_file(str(model), Config()).diagnostics]
     assert found == [
-        (3, "U001", "info", "'noqa: M004' silences nothing: no M004 on line 4"),
+        (3, "U001", "info", "'noqa: M004' silences nothing: no M004 on the element at line 4"),
         (5, "D002", "warning", "<color> has no attribute 'rgb'; it is ignored"),
         (8, "U002", "warning", "'noqa: D099' names no rule"),
     ]
@@ -122,7 +122,7 @@ def test_noqa_file_silences_a_code_everywhere_in_its_file(tmp_path):
 def test_only_info_left_exits_0(tmp_path):
     model = write(tmp_path, "robot.urdf", '<robot name="r">\n  <!-- urdfcli: noqa: D002 -->\n  <link name="base_link"/>\n</robot>\n')
     done, lines = concise(str(model))
-    assert lines == [f"{model}:2:3: U001 info: 'noqa: D002' silences nothing: no D002 on line 3"]
+    assert lines == [f"{model}:2:3: U001 info: 'noqa: D002' silences nothing: no D002 on the element at line 3"]
     assert done.returncode == 0
 
 

@@ -9,7 +9,7 @@ mistake is a :class:`ConfigError` (the command exits 2).
 
 Keys::
 
-    select = ["D", "J"]            # codes or prefixes ("ALL" for every rule)
+    select = ["D", "J"]            # codes, prefixes or rule names ("ALL" for every rule)
     ignore = ["D002"]
     extend-select = ["S"]          # added to select (or to the defaults)
     package-paths = ["../vendor"]  # like -P: NAME=DIR or DIR, relative to the file
@@ -143,6 +143,21 @@ def _matches(selector: str, code: str) -> bool:
     return selector == ALL or code.startswith(selector)
 
 
+matches = _matches
+
+
+def selector(value: str) -> str | None:
+    """``ALL``, a code or code prefix (upper-cased), or the code of a rule named
+    ``value`` (``visual-without-collision``); None when it selects no rule."""
+    key = value.strip()
+    if key.upper() == ALL:
+        return ALL
+    registry = load_all()
+    if any(code.startswith(key.upper()) for code in registry) and key:
+        return key.upper()
+    return next((rule.code for rule in registry.values() if rule.name == key.lower()), None)
+
+
 def _specificity(selector: str) -> int:
     return 0 if selector == ALL else len(selector)
 
@@ -156,11 +171,11 @@ def _selectors(values: Any, where: str) -> tuple[str, ...]:
     codes = list(load_all())
     out = []
     for value in values:
-        selector = value.strip().upper()
-        if selector != ALL and not any(code.startswith(selector) for code in codes):
-            close = difflib.get_close_matches(selector, codes, n=1)
+        found = selector(value)
+        if found is None:
+            close = difflib.get_close_matches(value.strip().upper(), codes, n=1)
             raise ConfigError(f"{where}: unknown rule code or prefix '{value}'" + (f" (did you mean '{close[0]}'?)" if close else "") + "; `urdfcli rules` lists them")
-        out.append(selector)
+        out.append(found)
     return tuple(out)
 
 

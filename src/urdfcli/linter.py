@@ -22,7 +22,7 @@ from .load import STDIN, InputError, LoadOptions, load, load_document, read_inpu
 from .loaded import Loaded
 from .packages import PackageError, PackageResolver
 from .rules import load_all
-from . import suppressions
+from . import positions, suppressions
 
 # xacro's words for $(arg NAME) when NAME has no value, and what urdfcli says instead
 _UNDEFINED_ARGUMENT = re.compile(r"\bUndefined substitution argument (\w+)")
@@ -100,9 +100,11 @@ def configured(
     def enabled(code: str, file: str) -> bool:
         return config.enabled(registry[code], path, file)
 
-    selected = [d for d in diagnostics if enabled(d.code, d.file)]
-    sources = _sources(loaded.document.shown, path, data, {d.file for d in selected} | set(loaded.document.includes))
-    found = [s for file, text in sources.items() for s in suppressions.parse(file, text)]
+    unreadable = loaded.document.root is None  # why nothing was checked is never selected away
+    selected = [d for d in diagnostics if unreadable or enabled(d.code, d.file)]
+    files = {loaded.document.shown, *loaded.document.includes}
+    files |= {place.file for d in selected for place in (d.location, *d.location.trace)}
+    found = [s for file in sorted(files) if (text := positions.source(file)) is not None for s in suppressions.parse(file, text.text)]
     kept = suppressions.apply(selected, found, lambda code: ran(code) and enabled(code, path))
     kept = [d for d in kept if d.code not in ("U001", "U002") or enabled(d.code, d.file)]
     kept = [_with_severity(d, config) for d in kept]
@@ -137,20 +139,6 @@ def lint_file(
 def _with_severity(diagnostic: Diagnostic, config: Config) -> Diagnostic:
     severity = config.severity_of(diagnostic.code, diagnostic.severity)
     return diagnostic if severity is diagnostic.severity else diagnostic.with_severity(severity)
-
-
-def _sources(shown: str, path: str, data: bytes | None, files: set[str]) -> dict[str, str]:
-    """The text of every source file a suppression may sit in, by the name diagnostics use."""
-    texts = {}
-    if data is not None:
-        texts[shown] = data.decode("utf-8", errors="replace")
-    for file in {shown, *files} - set(texts):
-        source = Path(path if file == shown else file)
-        try:
-            texts[file] = source.read_text(encoding="utf-8", errors="replace")
-        except OSError:
-            continue
-    return texts
 
 
 @dataclass(frozen=True)
