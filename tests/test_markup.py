@@ -160,6 +160,12 @@ def test_a_gazebo_material_in_a_link_is_gazebo_markup(tmp_path):
     assert [code for code, _, _ in found(tmp_path, WHEEL.replace("SURFACE", "<material>Gazebo/Black</material>"))] == ["D011"]
 
 
+def test_a_gazebo_block_inside_a_link_is_dead_too(tmp_path):
+    assert found(tmp_path, WHEEL.replace("SURFACE", "<gazebo><mu1>1</mu1></gazebo>")) == [
+        ("D011", "warning", "Gazebo markup <gazebo> in <link> of 'wheel_link': Gazebo reads <gazebo> blocks only at the top level of <robot>"),
+    ]
+
+
 def test_gazebo_markup_inside_gazebo_draws_nothing(tmp_path):
     body = WHEEL.replace("SURFACE", "") + f'<gazebo reference="wheel_link">{SURFACE}</gazebo>'
     assert found(tmp_path, body) == []

@@ -368,7 +368,12 @@ def gazebo_outside_gazebo(loaded):
         owner = _owner_name(parent)
         where = f"<{unknowns[0].parent}>" + (f" of '{owner}'" if owner else "")
         hint = f'move it into <gazebo reference="{owner}">' if owner else "move it into a <gazebo> block"
-        yield loaded.diagnostic("D011", f"Gazebo markup {tags} in {where} is outside <gazebo>: Gazebo never reads it", unknowns[0].element, hint)
+        if any(u.name == "gazebo" for u in unknowns):
+            hint = f'move it to the top level of <robot>, as <gazebo reference="{owner}">' if owner else "move it to the top level of <robot>"
+            message = f"Gazebo markup {tags} in {where}: Gazebo reads <gazebo> blocks only at the top level of <robot>"
+        else:
+            message = f"Gazebo markup {tags} in {where} is outside <gazebo>: Gazebo never reads it"
+        yield loaded.diagnostic("D011", message, unknowns[0].element, hint)
 
 
 @check("D003", "visual-without-collision", WARNING, "A link with inertia and a visual, but no collision.", in_check=False)
