@@ -15,6 +15,7 @@ from __future__ import annotations
 
 import bisect
 import itertools
+import os
 import codecs
 import re
 from functools import cached_property
@@ -158,20 +159,27 @@ class Source:
         return starts if len(starts) == count else None
 
 
-_SOURCES: dict[str, Source | None] = {}
+_SOURCES: dict[str, tuple[tuple[int, int] | None, Source | None]] = {}  # name -> (file stamp, text)
 
 
 def register(name: str, data: bytes) -> Source:
     """Keep a text read from elsewhere than its name (standard input) under that name."""
-    _SOURCES[name] = Source(decode(data))
-    return _SOURCES[name]
+    text = Source(decode(data))
+    _SOURCES[name] = (None, text)
+    return text
 
 
 def source(name: str) -> Source | None:
-    """The source text diagnostics call ``name`` (a path), read once; None when unreadable."""
-    if name not in _SOURCES:
-        try:
-            _SOURCES[name] = Source(decode(Path(name).read_bytes()))
-        except OSError:
-            _SOURCES[name] = None
-    return _SOURCES[name]
+    """The source text diagnostics call ``name`` (a path), read again only when the
+    file changed; None when unreadable."""
+    known = _SOURCES.get(name)
+    if known is not None and known[0] is None:
+        return known[1]  # registered
+    try:
+        status = os.stat(name)
+        stamp = (status.st_mtime_ns, status.st_size)
+        if known is None or known[0] != stamp:
+            _SOURCES[name] = (stamp, Source(decode(Path(name).read_bytes())))
+    except OSError:
+        _SOURCES[name] = ((0, -1), None)
+    return _SOURCES[name][1]

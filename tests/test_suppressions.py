@@ -1,0 +1,128 @@
+"""noqa comments silence an element and everything inside it, whatever line a
+diagnostic points at; codes, prefixes and rule names; bare noqa; macro calls."""
+
+from __future__ import annotations
+
+import textwrap
+
+from conftest import run_cli
+from urdfcli.config import Config
+from urdfcli.linter import lint_file
+
+# I006 points at the <inertia> line, four lines below the <link>.
+SENSOR = """\
+<robot name="r">
+  <link name="base_link"/>
+  {comment}
+  <link name="sensor_mount_link">
+    <inertial>
+      <mass value="1"/>
+      <inertia ixx="1" iyy="1"
+               izz="5" ixy="0" ixz="0" iyz="0"/>
+    </inertial>
+  </link>
+  <joint name="j" type="fixed"><parent link="base_link"/><child link="sensor_mount_link"/></joint>
+</robot>
+"""
+
+
+def codes(tmp_path, text, name="robot.urdf", config=Config(select=("I006", "U"))):
+    path = tmp_path / name
+    path.write_text(textwrap.dedent(text))
+    return [(d.line, d.code) for d in lint_file(str(path), config).diagnostics]
+
+
+def test_the_unsuppressed_model_has_the_defect(tmp_path):
+    assert codes(tmp_path, SENSOR.format(comment="")) == [(7, "I006")]
+
+
+def test_a_comment_above_an_element_silences_what_points_inside_it(tmp_path):
+    for words in ("I006", "I", "inertia-triangle-inequality", "I006, I009", "i006", ""):
+        comment = f"<!-- urdfcli: noqa: {words} -->" if words else "<!-- urdfcli: noqa -->"
+        assert codes(tmp_path, SENSOR.format(comment=comment)) == [], comment
+
+
+def test_the_rule_name_is_the_registered_one():
+    from urdfcli.rules import load_all
+
+    assert load_all()["I006"].name == "inertia-triangle-inequality"
+
+
+def test_a_comment_naming_another_rule_silences_nothing(tmp_path):
+    found = codes(tmp_path, SENSOR.format(comment="<!-- urdfcli: noqa: I009 -->"), config=Config(select=("I006", "I009", "U")))
+    assert found == [(3, "U001"), (7, "I006")]
+
+
+def test_a_comment_on_any_line_of_a_start_tag_written_over_several(tmp_path):
+    text = SENSOR.format(comment="").replace(
+        '      <inertia ixx="1" iyy="1"\n               izz="5" ixy="0" ixz="0" iyz="0"/>',
+        '      <inertia ixx="1" iyy="1"\n               izz="5" ixy="0" ixz="0" iyz="0"/> <!-- urdfcli: noqa: I006 -->',
+    )
+    assert codes(tmp_path, text) == []
+    multiline = SENSOR.format(comment="").replace(
+        '  <link name="sensor_mount_link">', '  <link\n      name="sensor_mount_link">  <!-- urdfcli: noqa: I006 -->'
+    )
+    assert codes(tmp_path, multiline) == []
+
+
+def test_a_comment_after_an_element_on_its_line_silences_only_it(tmp_path):
+    text = """\
+    <robot name="r">
+      <link name="a"/> <link name="b" colour="red"/>  <!-- urdfcli: noqa: D -->
+      <link name="c" colour="blue"/>
+    </robot>
+    """
+    assert codes(tmp_path, text.replace("<!-- urdfcli: noqa: D -->", ""), config=Config(select=("D", "U")))[0][0] == 2
+    found = codes(tmp_path, text, config=Config(select=("D", "U")))
+    assert [line for line, _ in found] == [3]
+
+
+def test_stacked_comments_above_one_element_all_apply(tmp_path):
+    text = SENSOR.format(comment="<!-- urdfcli: noqa: I006 -->\n  <!-- urdfcli: noqa: I009 -->")
+    found = codes(tmp_path, text, config=Config(select=("I006", "I009", "U")))
+    assert found == [(4, "U001")]  # I009 has nothing there; I006 is silenced
+
+
+def test_unknown_words_are_reported_and_silence_nothing(tmp_path):
+    found = codes(tmp_path, SENSOR.format(comment="<!-- urdfcli: noqa: I0066 -->"))
+    assert found == [(3, "U002"), (7, "I006")]
+
+
+def test_a_bare_noqa_that_silences_nothing_is_reported(tmp_path):
+    path = tmp_path / "robot.urdf"
+    path.write_text('<robot name="r">\n  <!-- urdfcli: noqa -->\n  <link name="base_link"/>\n</robot>\n')
+    found = [(d.line, d.code, d.message) for d in lint_file(str(path), Config()).diagnostics]
+    assert found == [(2, "U001", "'noqa' silences nothing: no diagnostic on the element at line 3")]
+
+
+def test_a_comment_on_a_macro_call_silences_what_the_call_made(tmp_path, monkeypatch):
+    monkeypatch.chdir(tmp_path)
+    (tmp_path / "wheel.xacro").write_text(
+        '<robot xmlns:xacro="http://www.ros.org/wiki/xacro">\n'
+        '  <xacro:macro name="wheel" params="side">\n'
+        '    <link name="${side}"><inertial><mass value="1"/>\n'
+        '      <inertia ixx="1" iyy="1" izz="5" ixy="0" ixz="0" iyz="0"/></inertial></link>\n'
+        '    <joint name="${side}_j" type="fixed"><parent link="base"/><child link="${side}"/></joint>\n'
+        "  </xacro:macro>\n"
+        "</robot>\n"
+    )
+    text = """\
+    <robot name="r" xmlns:xacro="http://www.ros.org/wiki/xacro">
+      <xacro:include filename="wheel.xacro"/>
+      <link name="base"/>
+      <!-- urdfcli: noqa: I006 -->
+      <xacro:wheel side="left"/>
+      <xacro:wheel side="right"/>
+    </robot>
+    """
+    (tmp_path / "robot.urdf.xacro").write_text(textwrap.dedent(text))
+    found = [(d.file, d.line, d.code, d.location.trace[0].line) for d in lint_file("robot.urdf.xacro", Config(select=("I006", "U"))).diagnostics]
+    assert found == [("wheel.xacro", 4, "I006", 6)]
+
+
+def test_select_never_hides_malformed_xml(tmp_path):
+    path = tmp_path / "broken.urdf"
+    path.write_text('<robot name="r">\n  <link name="a">\n</robot>\n')
+    done = run_cli("lint", "--select", "I", "--format", "concise", str(path))
+    assert done.returncode == 1
+    assert ": X001 error: " in done.stdout.decode()
