@@ -514,12 +514,24 @@ def _source_tree(file: str):
         return None
 
 
+@functools.lru_cache(maxsize=64)
+def _start_lines(file: str) -> dict:
+    """The line of each source element's ``<`` (where diagnostics point)."""
+    from .positions import source
+
+    root, text = _source_tree(file), source(file)
+    if root is None:
+        return {}
+    elements = list(root.iter(etree.Element))
+    starts = text.element_starts(len(elements)) if text is not None else None
+    if starts is None:
+        return {e: e.sourceline for e in elements}
+    return {e: text.position(start)[0] for e, start in zip(elements, starts)}
+
+
 def _written(file: str, line: int, tag: str):
     """The element of that tag written at file:line, in the xacro source."""
-    root = _source_tree(file)
-    if root is None:
-        return None
-    return next((e for e in root.iter(etree.Element) if e.sourceline == line and etree.QName(e).localname == tag), None)
+    return next((e for e, at in _start_lines(file).items() if at == line and etree.QName(e).localname == tag), None)
 
 
 def _is_xacro(element, name: str) -> bool:
@@ -546,8 +558,8 @@ def macro_use(loaded: Loaded, link: Link) -> MacroUse | None:
         found = next((e for e in source_link.iter(etree.Element) if _is_xacro(e, name)), None)
         if found is not None:
             attributes = " ".join(f'{k}="{v}"' for k, v in found.attrib.items())
-            call, called_at = f"<xacro:{name} {attributes}/>", f"{link_where.file}:{found.sourceline}"
-    return MacroUse(name, macro.get("params", ""), f"{where.file}:{macro.sourceline}", call, called_at)
+            call, called_at = f"<xacro:{name} {attributes}/>", f"{link_where.file}:{_start_lines(link_where.file)[found]}"
+    return MacroUse(name, macro.get("params", ""), f"{where.file}:{_start_lines(where.file)[macro]}", call, called_at)
 
 
 def _macro_element(use: MacroUse):
