@@ -49,7 +49,8 @@ MALFORMED = {
     "truncated-in-a-tag": (b'<robot name="r"><link name="a"/><lin', 1, "X001 error"),
     "truncated-in-an-attribute": (b'<robot name="r', 1, "X001 error"),
     "truncated-before-the-end-tag": (b'<robot name="r">\n<link name="a"/>\n', 3, "X001 error"),
-    "unknown-encoding": (b'<?xml version="1.0" encoding="bogus-8"?>' + ONE_LINK.encode(), 1, "Unsupported encoding"),
+    "unknown-encoding": (b'<?xml version="1.0" encoding="bogus-8"?>' + ONE_LINK.encode(), 1, "unknown encoding 'bogus-8' in the XML declaration"),
+    "not-in-the-declared-encoding": (b'<?xml version="1.0" encoding="windows_1252"?>\n<robot name="r\x81"/>', 2, "byte 0x81 is not windows_1252"),
     "declared-utf16-is-utf8": (b'<?xml version="1.0" encoding="UTF-16"?>' + ONE_LINK.encode(), 1, "X001 error"),
     "declared-utf8-is-latin1": ('<robot name="r\xe9"><link name="a"/></robot>'.encode("latin-1"), 1, "X001 error"),
     "nul-in-attribute": (b'<robot name="r"><link name="a\x00b"/></robot>', 1, "X001 error"),
@@ -96,6 +97,33 @@ def test_byte_order_marks_and_declared_encodings_are_accepted(cli, tmp_path, dat
     result = cli("check", "--format", "json", str(path))
     assert result.exit_code == 0
     assert json.loads(result.stdout)["files"][0]["robot"] == "r\xf4bot"
+
+
+ENCODINGS = ["latin-1", "latin1", "ISO-8859-1", "iso-8859-15", "cp1252", "windows-1252", "windows_1252", "mac-roman", "utf-16", "koi8-r"]
+
+
+@pytest.mark.parametrize("encoding", ENCODINGS)
+def test_every_encoding_python_reads_is_read(tmp_path, encoding):
+    name = "\u0440\u043e\u0431\u043e\u0442" if encoding == "koi8-r" else "r\xf4bot"
+    text = f'<?xml version="1.0" encoding="{encoding}"?>\n<robot name="{name}"><link name="a"/></robot>\n'
+    path = write(tmp_path, "ok.urdf", text.encode(encoding))
+    result = run_cli("check", "--format", "json", str(path))
+    assert result.returncode == 0, result.stderr
+    assert json.loads(result.stdout)["files"][0]["robot"] == name
+
+
+@pytest.mark.parametrize("encoding", ["latin-1", "ISO-8859-1", "cp1252"])
+def test_declared_encodings_are_read_as_check_urdf_reads_them(tmp_path, encoding):
+    """check_urdf reads these files (names in ASCII, the comment not): same verdict, same output."""
+    from differential import check_urdf
+
+    text = (f'<?xml version="1.0" encoding="{encoding}"?>\n<!-- Gr\xfc\xdfe, \xe9t\xe9 -->\n'
+            '<robot name="r"><link name="a"/><link name="b"/><joint name="j" type="fixed"><parent link="a"/><child link="b"/></joint></robot>\n')
+    path = write(tmp_path, "ok.urdf", text.encode(encoding))
+    real = check_urdf(path)
+    assert not real.rejects
+    mine = run_cli("check", "--format", "check_urdf", str(path))
+    assert mine.returncode == 0 and mine.stdout.decode() == real.stdout
 
 
 def numbers_robot(mass: str, xyz: str) -> str:

@@ -6,6 +6,9 @@ entities is refused outright, which also disarms entity-expansion bombs.
 
 from __future__ import annotations
 
+import codecs
+import re
+
 from lxml import etree
 
 _PARSER_OPTIONS = dict(
@@ -16,6 +19,9 @@ _PARSER_OPTIONS = dict(
     huge_tree=False,
     collect_ids=False,
 )
+
+
+_DECLARED_ENCODING = re.compile(rb"""\A(?:\xef\xbb\xbf)?\s*<\?xml[^>]*?\sencoding\s*=\s*["']([A-Za-z0-9._:-]{1,64})["']""")
 
 
 class XmlError(ValueError):
@@ -38,12 +44,20 @@ def parse_bytes(data: bytes, keep_blank_text: bool = True) -> etree._Element:
         raise XmlError("the document is empty", 1, 1)
     parser = etree.XMLParser(**_PARSER_OPTIONS, remove_blank_text=not keep_blank_text)
     try:
-        root = etree.fromstring(data, parser)
+        try:
+            root = etree.fromstring(data, parser)
+        except etree.XMLSyntaxError as error:
+            if not (error.msg or "").startswith("Unsupported encoding"):
+                raise
+            # libxml2 does not know the name (latin-1, cp1252 without iconv...): Python may.
+            root = etree.fromstring(recoded(data), etree.XMLParser(**_PARSER_OPTIONS, remove_blank_text=not keep_blank_text, encoding="utf-8"))
     except etree.XMLSyntaxError as error:
         line, column = error.position if error.position else (error.lineno, None)
         message = error.msg or str(error)
         message = message.split(", line ")[0] if ", line " in message else message
         raise XmlError(message, line or 1, column) from None
+    except XmlError:
+        raise
     except ValueError as error:  # lxml refuses some inputs before parsing
         raise XmlError(str(error), 1, 1) from None
     dtd = root.getroottree().docinfo.internalDTD
@@ -52,3 +66,20 @@ def parse_bytes(data: bytes, keep_blank_text: bool = True) -> etree._Element:
     for node in root.iter(etree.Entity):
         raise XmlError(f"undefined entity reference {node.text}", node.sourceline, None)
     return root
+
+
+def recoded(data: bytes) -> bytes:
+    """``data`` as UTF-8, read in the encoding its XML declaration names (a name
+    libxml2 does not know); lines stay where they were. Raises XmlError when
+    Python does not know the encoding either, or the bytes are not in it."""
+    found = _DECLARED_ENCODING.match(data)
+    name = found.group(1).decode("ascii") if found else "?"
+    try:
+        codec = codecs.lookup(name)
+    except LookupError:
+        raise XmlError(f"unknown encoding '{name}' in the XML declaration; save the file as UTF-8 and declare encoding=\"UTF-8\"", 1, 1) from None
+    try:
+        return data.decode(codec.name).encode("utf-8")
+    except UnicodeDecodeError as error:
+        line = data[: error.start].count(b"\n") + 1
+        raise XmlError(f"byte 0x{data[error.start]:02x} is not {name}, the encoding the XML declaration names", line, None) from None
