@@ -131,24 +131,6 @@ class Unknown:
     gazebo: bool = False  # Gazebo markup outside <gazebo>
 
 
-def _schema_elements(loaded) -> list:
-    """(element, its schema) for every URDF element outside other formats' blocks."""
-    return loaded.remembered("schema-elements", lambda: list(_walk_schema(loaded.robot.element)))
-
-
-def _walk_schema(root):
-    stack = [root]
-    while stack:
-        element = stack.pop()
-        tag = tag_name(element)
-        schema = SCHEMA.get(tag)
-        if schema is None or (tag in OPAQUE and element is not root):
-            continue
-        yield element, schema
-        if schema[1] is not None:
-            stack.extend(reversed([c for c in element if isinstance(c.tag, str) and tag_name(c) in schema[1]]))
-
-
 def _is_foreign(name: str) -> bool:
     """Namespaced names (``xacro:``, ``drake:``, ``{uri}``) belong to other formats."""
     return ":" in name or name.startswith("{")
@@ -164,29 +146,41 @@ def _unknown_markup(loaded) -> list[Unknown]:
     return loaded.remembered("unknown-markup", lambda: list(_classify(loaded)))
 
 
+# What each element may carry: URDF's own names and the documented extensions', computed once.
+KNOWN_ATTRIBUTES = {tag: frozenset(attributes | set(EXTENSIONS.get(tag, ({}, {}))[0])) for tag, (attributes, _) in SCHEMA.items()}
+KNOWN_CHILDREN = {tag: frozenset(children | set(EXTENSIONS.get(tag, ({}, {}))[1])) for tag, (_, children) in SCHEMA.items() if children is not None}
+
+
 def _classify(loaded):
-    for element, (attributes, children) in _schema_elements(loaded):
+    """One walk over the URDF elements (not into other formats' blocks), yielding what is unknown."""
+    root = loaded.robot.element
+    stack = [root]
+    while stack:
+        element = stack.pop()
         tag = tag_name(element)
-        extra_attributes, extra_children = EXTENSIONS.get(tag, ({}, {}))
-        known = attributes | set(extra_attributes)
+        known = KNOWN_ATTRIBUTES[tag]
         for name in element.attrib:
             if name not in known and not _is_foreign(name):
                 yield Unknown(element, tag, name, True, _typo_of(name, known - set(element.attrib)))
+        children = KNOWN_CHILDREN.get(tag)
         if children is None:
             continue
-        known = children | set(extra_children)
-        present = {tag_name(c) for c in element if isinstance(c.tag, str)}
-        missing = {c for c in known if c in REPEATED or c not in present}
+        inside = []
         for child in element:
             if not isinstance(child.tag, str):
                 continue
             name = tag_name(child)
-            if name in known or _is_foreign(name):
-                continue
-            if (name in GAZEBO_TAGS and not (tag == "robot" and name == "gazebo")) or _gazebo_material(child):
-                yield Unknown(child, tag, name, False, gazebo=True)
-            else:
-                yield Unknown(child, tag, name, False, _typo_of(name, missing))
+            if name in children:
+                if name in SCHEMA and name not in OPAQUE:
+                    inside.append(child)
+            elif not _is_foreign(name):
+                if (name in GAZEBO_TAGS and not (tag == "robot" and name == "gazebo")) or _gazebo_material(child):
+                    yield Unknown(child, tag, name, False, gazebo=True)
+                else:
+                    present = {tag_name(c) for c in element if isinstance(c.tag, str)}
+                    missing = {c for c in children if c in REPEATED or c not in present}
+                    yield Unknown(child, tag, name, False, _typo_of(name, missing))
+        stack.extend(reversed(inside))
 
 
 @check("D001", "unknown-element", WARNING, "A misspelt element: close to a URDF element missing where it is written.", in_check=False)
