@@ -207,6 +207,8 @@ def test_a_macro_body_diagnostic_names_each_call_site_innermost_first(tmp_path):
     related = [r.get("relatedLocations", []) for r in sarif["runs"][0]["results"] if r["ruleId"] == "I006"]
     assert sorted(len(r) for r in related) == [1, 2]
     assert all(r[0]["message"]["text"].startswith("in macro 'wheel'") for r in related)
+    github = run("lint", "robot.urdf.xacro", "--format", "github", cwd=tmp_path).stdout.decode()
+    assert "breaks the triangle inequality: 1 + 1 < 5%0Ain macro 'wheel' called at robot.urdf.xacro:5:3\n" in github
 
 
 def test_a_deep_trace_is_cut_after_three_levels(tmp_path):

@@ -169,6 +169,18 @@ def register(name: str, data: bytes) -> Source:
     return text
 
 
+def text_of(name: str) -> str | None:
+    """The text of a source, without keeping it when it was not kept already: a
+    large model read only to look for comments stays out of memory."""
+    known = _SOURCES.get(name)
+    if known is not None and known[0] is None:
+        return known[1].text  # registered (standard input)
+    try:
+        return decode(Path(name).read_bytes())
+    except OSError:
+        return None
+
+
 def source(name: str) -> Source | None:
     """The source text diagnostics call ``name`` (a path), read again only when the
     file changed; None when unreadable."""

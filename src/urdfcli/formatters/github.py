@@ -25,4 +25,5 @@ def line(diagnostic: Diagnostic) -> str:
         if location.column:
             props.append(f"col={location.column}")
     props.append(f"title={_escape_property(diagnostic.code)}")
-    return f"::{LEVELS[diagnostic.severity.value]} {','.join(props)}::{_escape_data(diagnostic.message)}"
+    calls = [f"in macro '{c.macro}' called at {c.file}:{c.line or 1}:{c.column or 1}" for c in location.trace]
+    return f"::{LEVELS[diagnostic.severity.value]} {','.join(props)}::" + "%0A".join(map(_escape_data, [diagnostic.message, *calls]))
