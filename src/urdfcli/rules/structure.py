@@ -8,6 +8,10 @@ from . import ERROR, WARNING, declare, explain
 
 U = dict(urdfdom=True)
 REJECTED = "check_urdf rejects the file, and so does every tool built on urdfdom (robot_state_publisher, RViz, MoveIt, Gazebo's URDF import)."
+LIBRARY = (
+    " A xacro *library* (a file that writes no link, joint or macro call outside its macro definitions, such as"
+    " a file of macros) is never judged as a robot: `check` and `lint` check it through the models that include it."
+)
 
 # Input
 declare("X001", "xml-syntax-error", ERROR, "The file is not well-formed XML.", explain(
@@ -43,7 +47,7 @@ declare("R001", "robot-element-missing", ERROR, "The root element is not `<robot
     '<model name="r">\n  <link name="base_link"/>\n</model>',
     '<robot name="r">\n  <link name="base_link"/>\n</robot>'), **U)
 declare("R002", "robot-name-missing", ERROR, "`<robot>` has no `name` attribute.", explain(
-    "Flags a `<robot>` without `name`.",
+    "Flags a `<robot>` without `name`." + LIBRARY,
     f"The name identifies the model (and names the graph urdf_to_graphviz draws). {REJECTED}",
     '<robot>\n  <link name="base_link"/>\n</robot>',
     '<robot name="r">\n  <link name="base_link"/>\n</robot>'), **U)
@@ -53,7 +57,7 @@ declare("R003", "robot-version-unsupported", ERROR, "`<robot version>` is not `1
     '<robot name="r" version="2.0">\n  <link name="base_link"/>\n</robot>',
     '<robot name="r" version="1.0">\n  <link name="base_link"/>\n</robot>'), **U)
 declare("R004", "robot-without-links", ERROR, "The robot has no `<link>`.", explain(
-    "Flags a robot that defines no link at all (often a macro library checked on its own).",
+    "Flags a robot that defines no link at all." + LIBRARY,
     f"A robot needs at least a root link. {REJECTED}",
     '<robot name="r">\n  <material name="grey"><color rgba="0.5 0.5 0.5 1"/></material>\n</robot>',
     '<robot name="r">\n  <link name="base_link"/>\n</robot>'), **U)

@@ -1,0 +1,184 @@
+"""Libraries and models in real repository layouts: how files are classified, which
+models a library is checked through, and $(find) across a colcon workspace."""
+
+from __future__ import annotations
+
+import json
+import textwrap
+from pathlib import Path
+
+import pytest
+
+from conftest import run_cli
+from ros_workspace import INERTIA, WHEEL, XACRO, edit, line_of, make_repository, package_xml
+from urdfcli.packages import PackageResolver
+from urdfcli.workspace import Index, read_source, resolve_include
+
+
+def write(path: Path, text: str) -> Path:
+    path.parent.mkdir(parents=True, exist_ok=True)
+    path.write_text(textwrap.dedent(text))
+    return path
+
+
+def check_json(*args, cwd):
+    done = run_cli("check", "--format", "json", *args, cwd=cwd)
+    return done, json.loads(done.stdout or b"null")
+
+
+@pytest.mark.parametrize(
+    ("body", "kind"),
+    [
+        ('<xacro:macro name="m" params=""><link name="a"/></xacro:macro>', "library"),
+        ('<xacro:property name="r" value="1"/><material name="grey"><color rgba="1 1 1 1"/></material>', "library"),
+        ('<xacro:include filename="other.xacro"/>', "library"),  # an include that leads nowhere known
+        ('<gazebo reference="a"><xacro:sensor_plugin/></gazebo>', "library"),  # a call inside a Gazebo block makes no link
+        ('<link name="a"/>', "model"),
+        ('<xacro:if value="true"><joint name="j" type="fixed"/></xacro:if>', "model"),
+        ('<xacro:macro name="m" params=""/><xacro:m/>', "model"),  # calls a macro at its top level
+        ('<xacro:insert_block name="body"/>', "model"),
+    ],
+)
+def test_a_file_is_a_library_when_it_makes_nothing_outside_its_macros(tmp_path, body, kind):
+    path = write(tmp_path / "file.xacro", f"<robot {XACRO}>{body}</robot>")
+    assert read_source(path).kind == kind
+
+
+def test_plain_urdf_and_unreadable_files_are_models(tmp_path):
+    assert read_source(write(tmp_path / "empty.urdf", '<robot name="r"/>')).kind == "model"
+    assert read_source(write(tmp_path / "broken.xacro", f"<robot {XACRO}><xacro:macro")).kind == "model"
+
+
+def test_a_file_assembled_from_included_models_is_a_model(tmp_path):
+    write(tmp_path / "base.urdf.xacro", f'<robot {XACRO}><link name="base_link"/></robot>')
+    car = write(tmp_path / "car.urdf.xacro", f'<robot name="car" {XACRO}><xacro:include filename="base.urdf.xacro"/></robot>')
+    assert read_source(car).kind == "library"  # by itself
+    assert Index().kind(car.resolve()) == "model"  # through what it includes
+
+
+def test_includes_resolve_find_arg_defaults_properties_and_dirname(tmp_path):
+    package = tmp_path / "repo" / "parts"
+    write(package / "package.xml", package_xml("acme_parts"))
+    source = read_source(
+        write(
+            package / "urdf" / "robot.urdf.xacro",
+            f"""\
+            <robot name="r" {XACRO}>
+              <xacro:arg name="kind" default="wheel"/>
+              <xacro:property name="folder" value="$(find acme_parts)/urdf"/>
+              <link name="a"/>
+              <xacro:include filename="$(find acme_parts)/urdf/inertia.xacro"/>
+              <xacro:include filename="${{folder}}/$(arg kind).xacro"/>
+              <xacro:include filename="$(dirname)/sensors/*.xacro"/>
+              <xacro:include filename="$(find nowhere)/urdf/gripper.xacro"/>
+              <xacro:include filename="${{python.computed()}}"/>
+            </robot>
+            """,
+        )
+    )
+    find = PackageResolver((), source.path).find
+    urdf = (package / "urdf").resolve()
+    kinds = [resolve_include(text, source, find) for text in source.includes]
+    assert [(i.kind, i.value) for i in kinds] == [
+        ("path", str(urdf / "inertia.xacro")),
+        ("path", str(urdf / "wheel.xacro")),
+        ("glob", str(urdf / "sensors" / "*.xacro")),
+        ("name", "gripper.xacro"),
+        ("any", ""),
+    ]
+    assert resolve_include(source.includes[1], source, find, {"kind": "caster"}).value == str(urdf / "caster.xacro")
+
+
+@pytest.fixture
+def repository(tmp_path):
+    root = make_repository(tmp_path / "acme_robots")
+    (root / ".git").mkdir()
+    return root
+
+
+def test_a_library_is_checked_through_every_model_that_includes_it(repository):
+    done, report = check_json("common/urdf/wheel.xacro", "common/urdf/inertia.xacro", cwd=repository)
+    assert done.returncode == 0, done.stderr.decode()
+    through = [f["checked_through"] for f in report["files"]]
+    models = ["description/urdf/arm.urdf.xacro [arm_type:=small]", "description/urdf/arm.urdf.xacro [arm_type:=large]", "description/urdf/rover.urdf.xacro"]
+    assert through == [models, models]  # inertia.xacro is reached through wheel.xacro
+    assert all(f["diagnostics"] == [] for f in report["files"])
+
+
+def test_a_mistake_in_a_macro_is_reported_once_in_the_library(repository):
+    wheel = repository / "common/urdf/wheel.xacro"
+    edit(wheel, '<parent link="${parent}"/>', '<parent link="${parent}_mount"/>')
+    done, report = check_json("common/urdf/wheel.xacro", cwd=repository)
+    assert done.returncode == 1
+    [file] = report["files"]
+    j005 = [d for d in file["diagnostics"] if d["code"] == "J005"]
+    # three models (two argument sets of one, and another) and three calls: one diagnostic
+    assert [(d["path"], d["line"]) for d in j005] == [("common/urdf/wheel.xacro", line_of(wheel, "_mount"))]
+    assert all(d["path"] == "common/urdf/wheel.xacro" for d in file["diagnostics"])
+    text = run_cli("check", "common/urdf/wheel.xacro", cwd=repository).stderr.decode()
+    assert "common/urdf/wheel.xacro: xacro library, checked through description/urdf/arm.urdf.xacro [arm_type:=small]" in text
+    assert "R002" not in text and "R004" not in text
+
+
+def test_a_model_given_too_reports_the_library_mistake_once(repository):
+    wheel = repository / "common/urdf/wheel.xacro"
+    edit(wheel, 'radius="${radius}"', 'radius="${wheel_radius}"')
+    done, report = check_json("description/urdf/rover.urdf.xacro", "common/urdf/wheel.xacro", cwd=repository)
+    assert done.returncode == 1
+    located = [(f["path"], d["code"], d["path"], d["line"]) for f in report["files"] for d in f["diagnostics"]]
+    assert located == [("description/urdf/rover.urdf.xacro", "X003", "common/urdf/wheel.xacro", line_of(wheel, "wheel_radius"))]
+
+
+def test_a_changed_interface_breaks_the_model_and_fails_the_library(repository):
+    edit(repository / "common/urdf/wheel.xacro", 'params="prefix parent radius *origin"', 'params="prefix parent diameter *origin"')
+    done = run_cli("check", "common/urdf/wheel.xacro", cwd=repository)
+    assert done.returncode == 1
+    assert "X003 error" in done.stderr.decode()
+
+
+def test_an_unused_library_is_expanded_alone_and_named_once(repository):
+    done = run_cli("lint", "common/urdf/sensor.xacro", cwd=repository)
+    err = done.stderr.decode()
+    assert done.returncode == 0, err
+    assert err.count("sensor.xacro") == 1 and "no model includes" in err
+    edit(repository / "common/urdf/sensor.xacro", '<xacro:property name="sensor_size" value="0.05"/>', '<xacro:include filename="camera.xacro"/>')
+    done, report = check_json("common/urdf/sensor.xacro", cwd=repository)
+    assert done.returncode == 1
+    [diagnostic] = report["files"][0]["diagnostics"]
+    assert (diagnostic["code"], diagnostic["path"], diagnostic["line"]) == ("X003", "common/urdf/sensor.xacro", 3)
+
+
+def test_a_model_needing_an_argument_names_the_models_setting(repository):
+    (repository / "pyproject.toml").unlink()
+    done = run_cli("check", "common/urdf/wheel.xacro", cwd=repository)
+    err = done.stderr.decode()
+    assert done.returncode == 0, err  # the library itself is fine, and rover.urdf.xacro shows it
+    assert "checked through description/urdf/rover.urdf.xacro" in err
+    assert ("not checked through description/urdf/arm.urdf.xacro: it needs xacro argument 'arm_type', which has no default; "
+            "list the argument sets it is checked with in [tool.urdfcli] models") in err
+
+
+def test_a_colcon_workspace_resolves_packages_across_repositories(tmp_path):
+    src = tmp_path / "ws" / "src"
+    repo_a, repo_b = src / "repo_a", src / "repo_b"
+    for repo in (repo_a, repo_b):
+        (repo / ".git").mkdir(parents=True)
+    write(repo_b / "wheels" / "package.xml", package_xml("acme_wheels"))
+    write(repo_b / "wheels" / "urdf" / "wheel.xacro", WHEEL.replace("$(find acme_common)/urdf/inertia.xacro", "inertia.xacro"))
+    write(repo_b / "wheels" / "urdf" / "inertia.xacro", INERTIA)
+    write(repo_a / "robot" / "package.xml", package_xml("acme_robot"))
+    model = write(
+        repo_a / "robot" / "urdf" / "robot.urdf.xacro",
+        f"""\
+        <robot name="r" {XACRO}>
+          <xacro:include filename="$(find acme_wheels)/urdf/wheel.xacro"/>
+          <link name="base_link"/>
+          <xacro:wheel prefix="left" parent="base_link" radius="0.1"><origin xyz="0 0 0"/></xacro:wheel>
+        </robot>
+        """,
+    )
+    done = run_cli("check", str(model), cwd=tmp_path)
+    assert done.returncode == 0, done.stderr.decode()
+    # and a library of repo_b is checked through the model in repo_a
+    done, report = check_json(str(repo_b / "wheels/urdf/wheel.xacro"), cwd=tmp_path)
+    assert done.returncode == 0 and report["files"][0]["checked_through"] == [str(model.relative_to(tmp_path))]
