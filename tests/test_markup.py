@@ -191,6 +191,21 @@ def test_a_transmission_driving_a_fixed_joint_is_flagged(tmp_path):
     ]
 
 
+ROS2_CONTROL = """
+<ros2_control name="base" type="system">
+  <hardware><plugin>mock_components/GenericSystem</plugin></hardware>
+  <joint name="caster_joint">INTERFACES</joint>
+</ros2_control>
+"""
+
+
+def test_ros2_control_commanding_a_fixed_joint_is_flagged_publishing_its_state_is_not(tmp_path):
+    body = CASTER.split("<transmission")[0].replace("TYPE", "fixed")
+    commanded = ROS2_CONTROL.replace("INTERFACES", '<command_interface name="velocity"/><state_interface name="position"/>')
+    assert found(tmp_path, body + commanded) == [("D012", "warning", "ros2_control 'base' commands joint 'caster_joint', which is fixed")]
+    assert found(tmp_path, body + ROS2_CONTROL.replace("INTERFACES", '<state_interface name="position"/>')) == []
+
+
 def test_a_transmission_driving_a_moving_joint_draws_nothing(tmp_path):
     assert found(tmp_path, CASTER.replace("TYPE", "continuous").replace("JOINT", "caster_joint")) == []
 

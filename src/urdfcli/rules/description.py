@@ -594,15 +594,17 @@ def transmission_joint(loaded):
                 yield loaded.diagnostic("D007", f"transmission '{transmission.get('name', '')}' names joint '{name}', which does not exist", joint, f"did you mean '{close}'?" if close else None)
 
 
-@check("D012", "transmission-fixed-joint", WARNING, "A transmission driving a fixed joint.", in_check=False)
+@check("D012", "transmission-fixed-joint", WARNING, "A transmission or ros2_control command driving a fixed joint.", in_check=False)
 def transmission_fixed_joint(loaded):
     """## What it does
-    Flags a `<transmission>` whose `<joint name>` is a fixed joint.
+    Flags a `<transmission>` whose `<joint name>` is a fixed joint, and a
+    `<ros2_control>` joint with a command interface that is a fixed joint.
+    State interfaces alone (a fixed joint whose state is only published) pass.
 
     ## Why is this bad?
-    A fixed joint has no degree of freedom to drive: ros_control and
-    gazebo_ros_control refuse or skip the transmission, and the actuator it
-    describes moves nothing. Usually the joint was fixed on purpose (a
+    A fixed joint has no degree of freedom to drive: ros_control,
+    gazebo_ros_control and gz_ros2_control refuse or skip it, and the actuator
+    it describes moves nothing. Usually the joint was fixed on purpose (a
     simplified model) and the transmission left behind, or the joint should
     move and its type is wrong.
 
@@ -648,6 +650,16 @@ def transmission_fixed_joint(loaded):
                     f"transmission '{transmission.get('name', '')}' drives joint '{joint.name}', which is fixed",
                     element,
                     "remove the transmission if the joint is fixed on purpose, or give the joint the type it moves with",
+                )
+    for control in loaded.robot.element.iterfind("ros2_control"):
+        for element in control.iterfind("joint"):
+            joint = loaded.robot.joints.get(element.get("name"))
+            if joint is not None and joint.type == "fixed" and element.find("command_interface") is not None:
+                yield loaded.diagnostic(
+                    "D012",
+                    f"ros2_control '{control.get('name', '')}' commands joint '{joint.name}', which is fixed",
+                    element,
+                    "remove its command interfaces if the joint is fixed on purpose, or give the joint the type it moves with",
                 )
 
 
