@@ -182,3 +182,21 @@ def test_a_colcon_workspace_resolves_packages_across_repositories(tmp_path):
     # and a library of repo_b is checked through the model in repo_a
     done, report = check_json(str(repo_b / "wheels/urdf/wheel.xacro"), cwd=tmp_path)
     assert done.returncode == 0 and report["files"][0]["checked_through"] == [str(model.relative_to(tmp_path))]
+
+
+@pytest.mark.parametrize("output_format", ["text", "concise", "json", "sarif", "github", "check_urdf"])
+def test_every_format_shows_a_library(repository, output_format):
+    edit(repository / "common/urdf/wheel.xacro", '<parent link="${parent}"/>', '<parent link="${parent}_mount"/>')
+    done = run_cli("check", "--format", output_format, "common/urdf/wheel.xacro", "description/urdf/rover.urdf.xacro", cwd=repository)
+    out = done.stdout.decode() + done.stderr.decode()
+    assert done.returncode == 1 and "Traceback" not in out and "internal error" not in out
+    assert "base_link_mount" in out
+
+
+def test_a_model_whose_packages_are_missing_here_is_named_not_failed(repository):
+    edit(repository / "description/urdf/rover.urdf.xacro", '<link name="base_footprint"/>', '<link name="base_footprint"/>\n  <xacro:include filename="$(find acme_sensors)/urdf/lidar.xacro"/>')
+    (repository / "pyproject.toml").unlink()
+    done = run_cli("check", "common/urdf/wheel.xacro", cwd=repository)
+    err = done.stderr.decode()
+    assert done.returncode == 0, err
+    assert "not checked through description/urdf/rover.urdf.xacro: package 'acme_sensors' not found" in err

@@ -317,7 +317,8 @@ class LibraryResult:
     diagnostics: list[Diagnostic] = field(default_factory=list)
     checked_through: list[str] = field(default_factory=list)
     notes: list[str] = field(default_factory=list)  # why a model could not be used, or that none includes it
-    robot: None = None
+    robot: None = None  # not a robot: formats that print one print nothing for it
+    root: None = None
 
     @property
     def ok(self) -> bool:
@@ -348,7 +349,8 @@ def plan(paths: list[str], config_for, package_paths: tuple[str, ...] = ()) -> l
     index: Index | None = None
     for path in paths:
         config = config_for(path)
-        library = Path(path).resolve() if path != STDIN else None
+        # only a file named .xacro can be a library: a plain URDF is never read twice
+        library = Path(path).resolve() if path != STDIN and path.endswith(".xacro") else None
         if library is not None and read_source(library).kind == "library":  # else no look-up at all
             index = index or Index(config.package_paths + package_paths)
             if index.kind(library) == "model":
@@ -443,6 +445,10 @@ def _library_result(entry: Entry, outcome, includes_of, shown_keys: set, unreada
                 f"not checked through {target.label}: it needs xacro argument '{needs.group(1)}', which has no default; "
                 "list the argument sets it is checked with in [tool.urdfcli] models"
             )
+            continue
+        missing = next((d for d in loaded.diagnostics if d.code == "X004" and not _same(d.file, library)), None)
+        if missing is not None:  # a package this machine lacks: the model cannot be expanded here
+            result.notes.append(f"not checked through {target.label}: {missing.message}")
             continue
         reached = any(_same(f, library) for f in includes_of(loaded)) or any(_same(d.file, library) for d in loaded.diagnostics)
         if not reached:

@@ -38,7 +38,7 @@ def check(
     PATH:LINE:COL: CODE severity: message. Exit 0 when no file has errors,
     1 when one has (or warnings, with --strict), 2 when a file cannot be read.
 
-    Configuration ([tool.urdfcli] in the nearest pyproject.toml, or urdfcli.toml)
+    Configuration (the tool.urdfcli table of the nearest pyproject.toml, or urdfcli.toml)
     and noqa comments apply as they do for lint.
     """
     if output_format not in FORMATS:

@@ -84,10 +84,10 @@ ConfigOption = Annotated[
 ]
 IsolatedOption = Annotated[
     bool,
-    typer.Option("--isolated", help="Read no configuration file ([tool.urdfcli] in pyproject.toml, urdfcli.toml)."),
+    typer.Option("--isolated", help="Read no configuration file (neither the tool.urdfcli table of pyproject.toml nor urdfcli.toml)."),
 ]
 LIBRARIES_HELP = (
-    "A xacro file that only defines macros and properties (no link, joint or macro call outside its macros) "
+    "A xacro file (*.xacro) that only defines macros and properties (no link, joint or macro call outside its macros) "
     "is a library: it is checked through the models of its repository or workspace that include it, "
     "with the diagnostics located in it, or, when no model includes it, expanded on its own for its own xacro errors."
 )
