@@ -39,7 +39,7 @@ def test_concise_lint(models):
     done = run("lint", "concise", typo, broken)
     assert done.stdout.decode().splitlines() == [
         f"{typo}:5:7: M002 warning: material 'grey' is defined nowhere",
-        f"{typo}:5:29: D002 warning: <color> has no attribute 'rgb'; it is ignored",
+        f"{typo}:5:36: D002 warning: <color> has no attribute 'rgb'; it is ignored",
         f"{broken}:3:9: X001 error: Opening and ending tag mismatch: link line 2 and robot",
     ]
     assert done.stderr.decode() == "2 files checked: 1 error, 2 warnings\n"
@@ -64,10 +64,10 @@ def test_text_has_a_source_excerpt_and_a_summary(models):
         "    hint: define it at the top level, or give it a <color rgba>",
         '     5 |       <material name="grey"><color rgb="0.5 0.5 0.5 1"/></material>',
         "       |       ^",
-        f"{typo}:5:29: D002 warning: <color> has no attribute 'rgb'; it is ignored",
+        f"{typo}:5:36: D002 warning: <color> has no attribute 'rgb'; it is ignored",
         "    hint: did you mean 'rgba'?",
         '     5 |       <material name="grey"><color rgb="0.5 0.5 0.5 1"/></material>',
-        "       |                             ^",
+        "       |                                    ^",
         f"{broken}:3:9: X001 error: Opening and ending tag mismatch: link line 2 and robot",
         "     3 | </robot>",
         "       |         ^",
@@ -109,7 +109,7 @@ def test_github_annotations(models, command):
     assert lines[0] == f"::warning file={typo},line=5,col=7,title=M002::material 'grey' is defined nowhere"
     assert lines[-1] == f"::error file={broken},line=3,col=9,title=X001::Opening and ending tag mismatch: link line 2 and robot"
     if command == "lint":
-        assert lines[1] == f"::warning file={typo},line=5,col=29,title=D002::<color> has no attribute 'rgb'; it is ignored"
+        assert lines[1] == f"::warning file={typo},line=5,col=36,title=D002::<color> has no attribute 'rgb'; it is ignored"
 
 
 @pytest.mark.parametrize("command", ["check", "lint"])

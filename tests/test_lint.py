@@ -42,7 +42,7 @@ def test_the_documented_fixture_mistakes_are_found():
     _, lines = concise(str(TYPO))
     assert lines == [
         f"{TYPO}:9:13: M002 warning: material 'car_color' is defined nowhere",
-        f"{TYPO}:10:17: D002 warning: <color> has no attribute 'rgb'; it is ignored",
+        f"{TYPO}:10:24: D002 warning: <color> has no attribute 'rgb'; it is ignored",
     ]
     jtbot = FIXTURES / "seed003/jtbot.urdf"
     _, lines = concise("--select", "D", str(jtbot))

@@ -264,3 +264,22 @@ def test_positions_skip_markup_that_opens_no_element():
         ((3, 1), (3, 8), (5, 11)),
         ((4, 3), (5, 3), (5, 3)),
     ]
+
+
+def test_a_diagnostic_about_one_attribute_points_at_it(tmp_path, monkeypatch):
+    monkeypatch.chdir(tmp_path)
+    (tmp_path / "parts.xacro").write_text(
+        f"<robot {XACRO}>\n"
+        '  <xacro:macro name="part" params="n">\n'
+        '    <link name="${n}"\n'
+        '          colour="red"/>\n'
+        "  </xacro:macro>\n"
+        "</robot>\n"
+    )
+    (tmp_path / "r.urdf.xacro").write_text(
+        f'<robot name="r" {XACRO}>\n  <xacro:include filename="parts.xacro"/>\n  <xacro:part n="a"/>\n'
+        '  <link name="b" type="x" colour="blue"/>\n</robot>\n'
+    )
+    report = json.loads(run("lint", "r.urdf.xacro", "--select", "D010", "--format", "json", cwd=tmp_path).stdout)
+    found = sorted((d["path"], d["line"], d["column"]) for d in report["files"][0]["diagnostics"])
+    assert found == [("parts.xacro", 4, 11), ("r.urdf.xacro", 4, 27)]

@@ -45,11 +45,27 @@ class Document:
     def _index(self) -> dict[etree._Element, int]:
         return {element: i for i, element in enumerate(self.root.iter(etree.Element))} if self.root is not None else {}
 
-    def diagnostic(self, code: str, message: str, element: etree._Element | None, hint: str | None = None) -> Diagnostic:
-        """A diagnostic about ``element``, located where it was written."""
-        return Diagnostic.of(code, message, self.locate(element), self.element_path(element), hint)
+    def diagnostic(
+        self, code: str, message: str, element: etree._Element | None, hint: str | None = None, attribute: str | None = None
+    ) -> Diagnostic:
+        """A diagnostic about ``element`` (or one of its attributes), located where it was written."""
+        return Diagnostic.of(code, message, self.locate(element, attribute), self.element_path(element), hint)
 
-    def locate(self, element: etree._Element | None) -> Location:
+    def locate(self, element: etree._Element | None, attribute: str | None = None) -> Location:
+        """Where the ``<`` of ``element`` was written; with ``attribute``, where that
+        attribute's name was, when it is written there (else the element's place)."""
+        location = self._locate(element)
+        if attribute is None or not location.line or not location.column:
+            return location
+        text = source(location.file)
+        start = text.offset(location.line, location.column) if text is not None else None
+        found = text.attribute(start, attribute) if start is not None else None
+        if found is None:
+            return location
+        line, column = text.position(found)
+        return Location(location.file, line, column, location.expanded, location.trace)
+
+    def _locate(self, element: etree._Element | None) -> Location:
         if element is None:
             return Location(self.shown)
         if self.origins is not None:

@@ -39,8 +39,10 @@ class Loaded:
     def ok(self) -> bool:
         return not any(d.severity is Severity.ERROR for d in self.diagnostics)
 
-    def diagnostic(self, code: str, message: str, element: etree._Element | None, hint: str | None = None) -> Diagnostic:
-        return self.document.diagnostic(code, message, element, hint)
+    def diagnostic(
+        self, code: str, message: str, element: etree._Element | None, hint: str | None = None, attribute: str | None = None
+    ) -> Diagnostic:
+        return self.document.diagnostic(code, message, element, hint, attribute)
 
     @cached_property
     def _parent_joints(self) -> dict[str, Joint]:

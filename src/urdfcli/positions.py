@@ -27,6 +27,8 @@ _ELEMENT = re.compile(r"<(?![!?/])")
 _IGNORED = re.compile(r"<!--.*?-->|<!\[CDATA\[.*?\]\]>|<\?.*?\?>|<!DOCTYPE(?:[^\[>]|\[.*?\])*>", re.DOTALL)
 # A start tag (name, attributes with quoted values that may hold '>', then '/>' or '>') or an end tag.
 _TAG = re.compile(r"""<(?:/[^>]*>|[^\s/>!?](?:[^>"'/]|/(?!>)|"[^"]*"|'[^']*')*(/?)>)""")
+_NAME = re.compile(r"<[^\s/>]+")
+_ATTRIBUTE = re.compile(r"""\s+([^\s=/>]+)\s*=\s*(?:"[^"]*"|'[^']*')""")
 _DECLARED = re.compile(rb"""^<\?xml[^>]*?encoding\s*=\s*["']([A-Za-z0-9._-]+)["']""")
 _BOMS = ((codecs.BOM_UTF32_LE, "utf-32"), (codecs.BOM_UTF32_BE, "utf-32"), (codecs.BOM_UTF8, "utf-8-sig"),
          (codecs.BOM_UTF16_LE, "utf-16"), (codecs.BOM_UTF16_BE, "utf-16"))
@@ -147,6 +149,18 @@ class Source:
         if not 0 < line <= len(self._line_starts):
             return None
         return self._line_starts[line - 1] + (column or 1) - 1
+
+    def attribute(self, start: int, name: str) -> int | None:
+        """The offset of attribute ``name`` in the start tag whose ``<`` is at ``start``."""
+        tag = _NAME.match(self.text, start)
+        if tag is None:
+            return None
+        at = tag.end()
+        while (found := _ATTRIBUTE.match(self.text, at)) is not None:
+            if found.group(1) == name:
+                return found.start(1)
+            at = found.end()
+        return None
 
     def line(self, number: int) -> str | None:
         lines = self.lines

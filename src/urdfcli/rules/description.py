@@ -252,7 +252,7 @@ def unknown_attribute(loaded):
     """
     for unknown in _unknown_markup(loaded):
         if unknown.attribute and unknown.typo_of:
-            yield loaded.diagnostic("D002", f"<{unknown.parent}> has no attribute '{unknown.name}'; it is ignored", unknown.element, f"did you mean '{unknown.typo_of}'?")
+            yield loaded.diagnostic("D002", f"<{unknown.parent}> has no attribute '{unknown.name}'; it is ignored", unknown.element, f"did you mean '{unknown.typo_of}'?", attribute=unknown.name)
 
 
 def _belongs_in(tag: str) -> list[str]:
@@ -303,7 +303,7 @@ def unknown_markup(loaded):
         if unknown.attribute:
             attributes = sorted(SCHEMA[unknown.parent][0])
             hint = f"<{unknown.parent}> takes {', '.join(attributes)}" if attributes else f"<{unknown.parent}> takes no attributes"
-            yield loaded.diagnostic("D010", f"<{unknown.parent}> has no attribute '{unknown.name}'; URDF consumers ignore it", unknown.element, hint)
+            yield loaded.diagnostic("D010", f"<{unknown.parent}> has no attribute '{unknown.name}'; URDF consumers ignore it", unknown.element, hint, attribute=unknown.name)
             continue
         places = _belongs_in(unknown.name)
         if places:
