@@ -7,6 +7,7 @@ so a 20,000-link chain is as easy as a short one.
 
 from __future__ import annotations
 
+import difflib
 from collections import defaultdict
 from collections.abc import Iterator
 from typing import TYPE_CHECKING
@@ -93,6 +94,15 @@ def has_loop(robot: Robot) -> bool:
     return visited < len(waiting)
 
 
+def link_hint(missing: str, robot: Robot) -> str:
+    """What to do about a joint naming a missing link: the closest link names, if any."""
+    # difflib is quadratic in names: past a few thousand links the plain hint keeps a broken model fast
+    close = difflib.get_close_matches(missing, list(robot.links), n=3, cutoff=0.6) if len(robot.links) <= 5000 else []
+    if close:
+        return f"did you mean {' or '.join(repr(name) for name in close)}?"
+    return f'every link a joint names must be defined: add <link name="{missing}"/> or fix the name'
+
+
 def tree_diagnostics(robot: Robot, document: Document) -> list[Diagnostic]:
     out: list[Diagnostic] = []
 
@@ -106,7 +116,7 @@ def tree_diagnostics(robot: Robot, document: Document) -> list[Diagnostic]:
                     "J005",
                     f"{role} link '{link}' of joint '{joint.name}' does not exist",
                     joint.element.find(role),
-                    f'every link a joint names must be defined: add <link name="{link}"/> or fix the name',
+                    link_hint(link, robot),
                 )
     parents: dict[str, list[Joint]] = defaultdict(list)
     for joint in robot.joints.values():

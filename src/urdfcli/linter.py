@@ -90,7 +90,7 @@ def configured(
         return checks == "all" or spec.function is None or (checks == "check" and spec.in_check)
 
     rerun = diagnostics is None
-    diagnostics = [_explained(d) for d in (loaded.diagnostics if diagnostics is None else diagnostics)]
+    diagnostics = [_explained(d, path) for d in (loaded.diagnostics if diagnostics is None else diagnostics)]
     configured_options = {code: values for code, values in config.rule_options().items() if ran(code)}
     if rerun and configured_options and loaded.robot is not None and loaded.robot.element is not None:
         diagnostics = [d for d in diagnostics if d.code not in configured_options]
@@ -112,14 +112,16 @@ def configured(
     return kept
 
 
-def _explained(diagnostic: Diagnostic) -> Diagnostic:
-    """xacro's 'Undefined substitution argument X', said so that it names the fix."""
+def _explained(diagnostic: Diagnostic, path: str) -> Diagnostic:
+    """xacro's 'Undefined substitution argument X', said so that it names the fix for the input ``path``."""
     match = _UNDEFINED_ARGUMENT.search(diagnostic.message) if diagnostic.code == "X003" else None
     if match is None:
         return diagnostic
     name = match.group(1)
     message = f"needs xacro argument '{name}', which has no default: pass {name}:=VALUE, or list the model's argument sets in [tool.urdfcli] models"
-    return Diagnostic(diagnostic.code, diagnostic.severity, message, diagnostic.location, diagnostic.element, diagnostic.hint)
+    file = Path(path).name if path != STDIN else "FILE"
+    hint = f'give {name}:=VALUE after the file on the command line, or in pyproject.toml: [tool.urdfcli.xacro-args] "{file}" = {{ {name} = "VALUE" }}'
+    return Diagnostic(diagnostic.code, diagnostic.severity, message, diagnostic.location, diagnostic.element, diagnostic.hint or hint)
 
 
 def lint_file(

@@ -164,6 +164,8 @@ class PackageResolver:
         return self._answers[name]
 
     def _find(self, name: str) -> Path | None:
+        if not name:  # package:///file: no look-up may answer it (PREFIX/share/ would)
+            return None
         if name in self._explicit:
             return self._explicit[name]
         if name in self._found:
@@ -184,6 +186,17 @@ class PackageResolver:
                 if name in self._found:
                     break
         return self._found.get(name)
+
+    def misnamed(self, name: str) -> tuple[Path, str] | None:
+        """A folder called ``name``, among the packages looked at, whose package.xml
+        gives another name: (folder, that name). What a look-up by folder name missed."""
+        known = list(self._found.items())
+        if self._own is not None:
+            known.append((package_name(self._own / "package.xml") or "", self._own))
+        for package, folder in known:
+            if name and package and folder.name == name and package != name:
+                return folder, package
+        return None
 
     def resolve_uri(self, uri: str, base_dir: Path | None = None) -> Path | None:
         """The file on disk a mesh or texture URI names; never fetched from a network."""

@@ -501,6 +501,10 @@ def package_not_found(loaded):
         others = f" (and {len(uses) - 1} other {'files' if len(uses) > 2 else 'file'})" if len(uses) > 1 else ""
         if package:
             message, hint = f"{kind} '{uri}'{others}: package '{package}' not found {loaded.resolver.where()}", "name the package's folder with -P NAME=DIR, or fix its name"
+            misnamed = loaded.resolver.misnamed(package)
+            if misnamed is not None:  # a package is named by its package.xml, not its folder
+                folder, real = misnamed
+                hint = f"the folder {folder} holds the package named '{real}' (its package.xml): write package://{real}/, or give -P {package}={folder}"
         else:
             message, hint = f"{kind} '{uri}'{others}: the package name is empty", "a package URI is package://PACKAGE/PATH: two slashes, then the package's name"
         yield loaded.diagnostic("D005", message, element, hint)

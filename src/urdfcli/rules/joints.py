@@ -203,7 +203,9 @@ def axis_not_unit(loaded):
     for joint in loaded.robot.joints.values():
         norm = math.sqrt(sum(c * c for c in joint.axis))
         if joint.type in MOVING_AXIS_TYPES and norm > 0 and abs(norm - 1.0) > 1e-6:
-            yield loaded.diagnostic("J011", f"axis of joint '{joint.name}' has length {norm:.6g}, not 1", joint.element.find("axis"))
+            unit = " ".join(format_number(float(f"{c / norm:.6g}")) for c in joint.axis)
+            hint = f'normalised: <axis xyz="{unit}"/>'
+            yield loaded.diagnostic("J011", f"axis of joint '{joint.name}' has length {norm:.6g}, not 1", joint.element.find("axis"), hint)
 
 
 @check("J012", "continuous-with-limits", WARNING, "A continuous joint given lower/upper limits.", in_check=False)

@@ -1,0 +1,108 @@
+"""Hints that finish the job: each names the fix, and following it works."""
+
+from __future__ import annotations
+
+import re
+from pathlib import Path
+
+import pytest
+
+from conftest import run_cli
+
+ROBOTS = Path("/work/main/.venv/lib/python3.11/site-packages/cmeel.prefix/share/example-robot-data")
+
+
+def diagnostics(*args: str, cwd: Path | None = None, env: dict | None = None) -> list[dict]:
+    """Each diagnostic of the text output: its code, message and hint."""
+    done = run_cli(*args, cwd=cwd, env=env)
+    found = []
+    for line in done.stderr.decode().splitlines():
+        match = re.match(r"\S+:\d+:\d+: (\w+) \w+: (.*)$", line)
+        if match:
+            found.append({"code": match.group(1), "message": match.group(2), "hint": None})
+        elif line.startswith("    hint: "):
+            found[-1]["hint"] = line.removeprefix("    hint: ")
+    return found
+
+
+def test_non_unit_axis_hint_gives_the_normalised_axis(tmp_path):
+    path = tmp_path / "r.urdf"
+    path.write_text('<robot name="r"><link name="a"/><link name="b"/><joint name="j" type="continuous">'
+                    '<parent link="a"/><child link="b"/><axis xyz="1 1 0"/></joint></robot>')
+    [found] = diagnostics("lint", "--select", "J011", str(path))
+    assert found["hint"] == 'normalised: <axis xyz="0.707107 0.707107 0"/>'
+
+
+def test_missing_link_hint_names_the_closest_links(tmp_path):
+    path = tmp_path / "r.urdf"
+    path.write_text('<robot name="r"><link name="base_link"/><link name="left_wheel"/><link name="right_wheel"/>'
+                    '<joint name="j" type="fixed"><parent link="base_lnk"/><child link="left_wheel"/></joint>'
+                    '<joint name="k" type="fixed"><parent link="base_link"/><child link="rigth_wheel"/></joint>'
+                    '<joint name="m" type="fixed"><parent link="base_link"/><child link="zzz"/></joint></robot>')
+    hints = {d["message"].split("'")[1]: d["hint"] for d in diagnostics("check", str(path)) if d["code"] == "J005"}
+    assert hints["base_lnk"] == "did you mean 'base_link'?"
+    assert hints["rigth_wheel"].startswith("did you mean 'right_wheel'")
+    assert hints["zzz"] == 'every link a joint names must be defined: add <link name="zzz"/> or fix the name'
+
+
+def test_undefined_argument_hint_works_on_the_command_line_and_in_pyproject(tmp_path):
+    path = tmp_path / "arm.urdf.xacro"
+    path.write_text('<robot name="r" xmlns:xacro="http://www.ros.org/wiki/xacro">\n  <link name="$(arg prefix)base"/>\n</robot>\n')
+    [found] = diagnostics("check", str(path), cwd=tmp_path)
+    assert found["code"] == "X003" and "pass prefix:=VALUE" in found["message"]
+    snippet = '[tool.urdfcli.xacro-args] "arm.urdf.xacro" = { prefix = "VALUE" }'
+    assert snippet in found["hint"]
+    assert run_cli("check", str(path), "prefix:=left_", cwd=tmp_path).returncode == 0
+    table, entry = snippet.split("] ", 1)
+    (tmp_path / "pyproject.toml").write_text(f"{table}]\n{entry.replace('VALUE', 'left_')}\n")
+    done = run_cli("tree", str(path), cwd=tmp_path)
+    assert done.returncode == 0 and done.stdout.decode().startswith("left_base")
+
+
+def package(folder: Path, name: str) -> Path:
+    folder.mkdir(parents=True)
+    (folder / "package.xml").write_text(f"<package format='3'><name>{name}</name></package>")
+    (folder / "meshes").mkdir()
+    (folder / "meshes" / "a.stl").write_text("solid a\nendsolid a\n")
+    return folder
+
+
+def model(folder: Path, uri: str) -> Path:
+    folder.mkdir(parents=True, exist_ok=True)
+    path = folder / "r.urdf"
+    path.write_text(f'<robot name="r"><link name="a"><visual><geometry><mesh filename="{uri}"/></geometry></visual></link></robot>')
+    return path
+
+
+def test_package_named_by_its_folder_says_which_package_the_folder_holds(tmp_path):
+    folder = package(tmp_path / "share" / "my-robot-data", "my_robot_descriptions")
+    path = model(tmp_path / "elsewhere", "package://my-robot-data/meshes/a.stl")
+    [found] = diagnostics("lint", "--select", "D005", "-P", str(tmp_path / "share"), str(path))
+    assert f"the folder {folder} holds the package named 'my_robot_descriptions'" in found["hint"]
+    fixed = model(tmp_path / "fixed", "package://my_robot_descriptions/meshes/a.stl")
+    assert diagnostics("lint", "--select", "D004,D005", "-P", str(tmp_path / "share"), str(fixed)) == []
+
+
+@pytest.mark.skipif(not ROBOTS.is_dir(), reason="example-robot-data is not installed")
+def test_example_robot_data_folder_holds_example_robot_descriptions():
+    path = ROBOTS / "robots" / "ur_description" / "urdf" / "ur5_robot.urdf"
+    found = diagnostics("lint", "--select", "D005", str(path), env={"AMENT_PREFIX_PATH": "", "ROS_PACKAGE_PATH": ""})
+    assert len(found) == 1 and "package 'example-robot-data' not found" in found[0]["message"]
+    assert "holds the package named 'example_robot_descriptions'" in found[0]["hint"]
+
+
+@pytest.mark.parametrize("where", ["package-path", "ROS_PACKAGE_PATH", "AMENT_PREFIX_PATH", "next to the input"])
+def test_empty_package_name_is_one_diagnostic_in_every_look_up(tmp_path, where):
+    prefix = tmp_path / "prefix"
+    package(prefix / "share" / "meshes_pkg", "meshes_pkg")
+    args, env = [], {"AMENT_PREFIX_PATH": "", "ROS_PACKAGE_PATH": ""}
+    if where == "package-path":
+        args = ["-P", str(prefix / "share")]
+    elif where == "ROS_PACKAGE_PATH":
+        env["ROS_PACKAGE_PATH"] = str(prefix / "share")
+    elif where == "AMENT_PREFIX_PATH":
+        env["AMENT_PREFIX_PATH"] = str(prefix)  # PREFIX/share/ exists: it must not answer an empty name
+    folder = prefix / "share" / "meshes_pkg" / "urdf" if where == "next to the input" else tmp_path / "alone"
+    path = model(folder, "package:///meshes/a.stl")
+    found = diagnostics("lint", "--select", "D004,D005", *args, str(path), env=env)
+    assert [(d["code"], d["message"].split(": ")[-1]) for d in found] == [("D005", "the package name is empty")]
