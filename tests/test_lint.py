@@ -41,6 +41,7 @@ def test_exit_codes(tmp_path):
 def test_the_documented_fixture_mistakes_are_found():
     _, lines = concise(str(TYPO))
     assert lines == [
+        f"{TYPO}:1:1: D003 info: no link has a <collision>: the model can be displayed, not simulated or planned with",
         f"{TYPO}:9:13: M002 warning: material 'car_color' is defined nowhere",
         f"{TYPO}:10:24: D002 warning: <color> has no attribute 'rgb'; it is ignored",
     ]
@@ -80,7 +81,7 @@ def test_standard_input(tmp_path):
     text = TYPO.read_text()
     done = run_cli("lint", "--format", "concise", "-", input=text)
     assert done.returncode == 1
-    line = done.stdout.decode().splitlines()[1]
+    line = done.stdout.decode().splitlines()[2]
     assert line.startswith("<stdin>:10:") and line.endswith(": D002 warning: <color> has no attribute 'rgb'; it is ignored")
 
 

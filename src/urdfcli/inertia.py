@@ -14,6 +14,7 @@ from __future__ import annotations
 import contextlib
 import functools
 import logging
+import math
 import warnings
 from dataclasses import dataclass
 from pathlib import Path
@@ -129,7 +130,7 @@ def shape_part(loaded: Loaded, shape: Shape) -> tuple[float, Vector, Matrix]:
     """Volume, centre (link frame) and tensor per unit mass (link axes) of one shape."""
     geometry = shape.geometry
     if geometry.kind == "mesh":
-        volume, centre, unit = mesh_properties(geometry.filename, tuple(geometry.scale), MeshFiles.of(loaded))
+        volume, centre, unit, _ = mesh_properties(geometry.filename, tuple(geometry.scale), MeshFiles.of(loaded))
     else:
         volume, unit = primitive(geometry)
         centre = (0.0, 0.0, 0.0)
@@ -151,6 +152,42 @@ def primitive(geometry) -> tuple[float, Matrix]:
     if geometry.radius <= 0:
         raise GeometryUnknown("sphere radius is not positive")
     return massprops.sphere_volume(geometry.radius), massprops.sphere(1.0, geometry.radius)
+
+
+def shape_bounds(loaded: Loaded, shape: Shape) -> tuple[Vector, Vector]:
+    """Lowest and highest corner, in the link frame, of a box holding the shape
+    (its own bounding box, turned as the shape is)."""
+    geometry = shape.geometry
+    if geometry.kind == "mesh":
+        low, high = mesh_properties(geometry.filename, tuple(geometry.scale), MeshFiles.of(loaded))[3]
+    else:
+        primitive(geometry)  # raises on a shape without size
+        if geometry.kind == "box":
+            half = tuple(d / 2.0 for d in geometry.size)
+        elif geometry.kind == "cylinder":
+            half = (geometry.radius, geometry.radius, geometry.length / 2.0)
+        else:
+            half = (geometry.radius,) * 3
+        low, high = tuple(-h for h in half), half
+    pose = massprops.transform(shape.origin.xyz, shape.origin.rpy)
+    corners = [massprops.place(pose, (x, y, z)) for x in (low[0], high[0]) for y in (low[1], high[1]) for z in (low[2], high[2])]
+    return tuple(min(c[i] for c in corners) for i in range(3)), tuple(max(c[i] for c in corners) for i in range(3))  # type: ignore[return-value]
+
+
+def extent(loaded: Loaded, link: Link) -> tuple[Vector, Vector] | None:
+    """The box (lowest and highest corner, link frame) that holds every visual and
+    collision shape of the link; None when it has none, or one cannot be measured."""
+    shapes = [s for s in (*link.visuals, *link.collisions) if s.geometry is not None]
+    if not shapes:
+        return None
+    try:
+        boxes = [shape_bounds(loaded, shape) for shape in shapes]
+    except GeometryUnknown:
+        return None
+    return (
+        tuple(min(b[0][i] for b in boxes) for i in range(3)),  # type: ignore[return-value]
+        tuple(max(b[1][i] for b in boxes) for i in range(3)),
+    )
 
 
 @dataclass(frozen=True)
@@ -178,8 +215,8 @@ class MeshFiles:
         return str(path)
 
 
-def mesh_properties(filename: str, scale: Vector, files: MeshFiles) -> tuple[float, Vector, Matrix]:
-    """Volume, centre and tensor per unit mass of a mesh, ``scale`` applied.
+def mesh_properties(filename: str, scale: Vector, files: MeshFiles) -> tuple[float, Vector, Matrix, tuple[Vector, Vector]]:
+    """Volume, centre, tensor per unit mass and bounds (lowest and highest corner) of a mesh, ``scale`` applied.
 
     yourdfpy loads it (through ``files``, with trimesh) as the collision geometry of a
     one-link robot. A mesh that is not closed has no inside: its convex hull stands in."""
@@ -188,7 +225,7 @@ def mesh_properties(filename: str, scale: Vector, files: MeshFiles) -> tuple[flo
 
 
 @functools.lru_cache(maxsize=256)
-def _mesh_properties(filename: str, scale: Vector, files: MeshFiles) -> tuple[float, Vector, Matrix]:
+def _mesh_properties(filename: str, scale: Vector, files: MeshFiles) -> tuple[float, Vector, Matrix, tuple[Vector, Vector]]:
     import numpy
     import trimesh
     import yourdfpy
@@ -218,7 +255,8 @@ def _mesh_properties(filename: str, scale: Vector, files: MeshFiles) -> tuple[fl
     if volume <= 0:
         raise GeometryUnknown(f"mesh {name} has no volume")
     unit = tuple(tuple(float(v) / volume for v in row) for row in properties["inertia"])
-    return volume, tuple(float(c) for c in properties["center_mass"]), unit  # type: ignore[return-value]
+    bounds = tuple(tuple(float(v) for v in corner) for corner in mesh.bounds)
+    return volume, tuple(float(c) for c in properties["center_mass"]), unit, bounds  # type: ignore[return-value]
 
 
 @contextlib.contextmanager
@@ -279,6 +317,120 @@ def rotated_fit(assessment: Assessment) -> tuple[Vector, float] | None:
     in_link = massprops.rotate(assessment.declared, shared)
     moved = massprops.rotate(in_link, massprops.transpose(inertial))
     return shapes[0].origin.rpy, massprops.relative_difference(moved, assessment.expected)
+
+
+# -- what the geometry proves ---------------------------------------------------------
+OVERREACH = 1.1
+"""A moment is impossible when it exceeds the most its mass can reach by this factor
+(the margin absorbs meshes a little smaller than the part they draw)."""
+
+PLACEHOLDER_FACTOR = 100.0
+"""A tensor this many times below a uniform body of the same mass and geometry is a placeholder."""
+
+DENSEST = 22600.0
+"""kg/m³ (osmium): a mass denser than this in its geometry's bounding box is not drawn by that
+geometry (a millimetre sphere standing in for a finger), which then proves nothing."""
+
+AXES = ("ixx", "iyy", "izz")
+
+
+@dataclass(frozen=True)
+class Reach:
+    """The most each moment (link-frame axes, about the declared centre of mass) can be
+    for the declared mass held inside the geometry's bounding box."""
+
+    bounds: Vector
+    sides: Vector
+
+
+def reach(loaded: Loaded, link: Link) -> Reach | None:
+    """None when the link has no measurable geometry, or geometry too small to hold its mass.
+
+    Along each axis, a mass held in [lo, hi] with its mean at c has a variance of at most
+    (hi - c)(c - lo) (the Bhatia-Davis inequality); a moment is the mass times the sum of
+    two such variances. A centre outside the box gives (farthest extent)² instead."""
+    box = extent(loaded, link)
+    inertial = link.inertial
+    if box is None or inertial is None or not (inertial.mass or 0) > 0:
+        return None
+    low, high = box
+    sides = tuple(h - lo for lo, h in zip(low, high))
+    volume = sides[0] * sides[1] * sides[2]
+    if volume <= 0 or inertial.mass / volume > DENSEST:
+        return None
+    spread = []
+    for lo, h, c in zip(low, high, inertial.origin.xyz):
+        spread.append((h - c) * (c - lo) if lo <= c <= h else max(h - c, c - lo) ** 2)
+    x, y, z = spread
+    m = inertial.mass
+    return Reach((m * (y + z), m * (x + z), m * (x + y)), sides)  # type: ignore[arg-type]
+
+
+@dataclass(frozen=True)
+class Verdict:
+    """What the geometry proves wrong about a declared tensor: ``kind`` is ``impossible``,
+    ``rotated`` or ``placeholder``; ``factor`` says by how much."""
+
+    kind: str
+    factor: float
+    message: str
+    hint: str
+
+
+def verdict(loaded: Loaded, link: Link, tolerance: float = TOLERANCE, density: float | None = None) -> Verdict | None:
+    """The one thing the geometry proves wrong about the link's tensor, if any.
+
+    In order: a moment larger than any distribution of the mass in the geometry's bounding
+    box allows; principal moments that match the geometry's on axes that do not; with a
+    density, any difference beyond the tolerance from that uniform body; a tensor orders of
+    magnitude below a uniform body's. Anything else (a CAD tensor within a few times of the
+    uniform body's) is left alone."""
+    declared = declared_body(link)
+    if declared is None or massprops.is_negligible(declared.tensor):
+        return None
+    light = declared.mass < massprops.LIGHT  # only a rotation, which a formula got wrong, is worth saying
+    limits = reach(loaded, link) if not light else None
+    if limits is not None:
+        worst = max(range(3), key=lambda i: declared.tensor[i][i] / limits.bounds[i] if limits.bounds[i] > 0 else math.inf)
+        moment, most = declared.tensor[worst][worst], limits.bounds[worst]
+        if moment > OVERREACH * most:
+            factor = moment / most if most > 0 else math.inf
+            sides = " x ".join(f"{side:.3g}" for side in limits.sides)
+            times = f"{factor:.1f} times" if factor < math.inf else "infinitely more than"
+            return Verdict(
+                "impossible", factor,
+                f"{AXES[worst]}={moment:.3g} (link axes) is {times} the most {number(declared.mass)} kg can reach inside "
+                f"the {sides} m box its shapes fill, about the declared centre of mass ({most:.3g})",
+                "check the units and the mass: the tensor, or the centre of mass, cannot be right",
+            )
+    found = assess(loaded, link, density)
+    if found is None or found.expected is None or massprops.is_zero(found.expected):
+        return None
+    source = found.implied.source
+    if massprops.moments_difference(found.declared, found.expected) <= tolerance and found.difference > 2 * tolerance:
+        return Verdict(
+            "rotated", found.difference,
+            f"its principal moments match its {source}, but on other axes: declared {tensor_text(found.declared, found.expected)}, "
+            f"the {source} gives {tensor_text(found.expected, found.declared)}",
+            "the axes are swapped or rotated: `urdfcli inertia --suggest` prints the tensor on the geometry's axes",
+        )
+    if density is not None and found.off(tolerance):  # the link is said to be that uniform material
+        return Verdict(
+            "density", found.difference,
+            f"it is {found.difference:.0%} off what its {source} implies at density {number(density)}: "
+            f"declared {tensor_text(found.declared, found.expected)}, expected {tensor_text(found.expected, found.declared)}",
+            "`urdfcli inertia --suggest --density ...` prints the uniform body's <inertial>",
+        )
+    largest, expected_largest = massprops.principal_moments(found.declared)[2], massprops.principal_moments(found.expected)[2]
+    if not light and largest * PLACEHOLDER_FACTOR < expected_largest:
+        factor = expected_largest / largest
+        return Verdict(
+            "placeholder", factor,
+            f"its largest moment {largest:.3g} is {factor:.0f} times below the {expected_largest:.3g} of a uniform body of "
+            f"{number(declared.mass)} kg filling its {source}: a placeholder",
+            "`urdfcli inertia --suggest` prints the uniform body's tensor, a better start than the placeholder",
+        )
+    return None
 
 
 # -- the whole robot -------------------------------------------------------------------
@@ -395,6 +547,12 @@ def audit(loaded: Loaded, tolerance: float = TOLERANCE, density: float | None = 
         prefix = next((path[:cut] for cut in cuts if path[:cut] in by_link), None)
         if prefix is not None:
             by_link[prefix].append(diagnostic)
+    for diagnostic in found:
+        if diagnostic.code in GROUPED:  # a group's diagnostic points at its first link and names every one
+            for link in loaded.robot.links.values():
+                mine = by_link[Document.element_path(link.element)]
+                if f"'{link.name}'" in diagnostic.message and diagnostic not in mine:
+                    mine.append(diagnostic)
     links = []
     for link in loaded.robot.links.values():
         mine = tuple(by_link[Document.element_path(link.element)])
@@ -461,17 +619,19 @@ def report_json(report: Report) -> dict:
     }
 
 
+GROUPED = {"I005", "I006", "I007", "I008"}  # one diagnostic for the links sharing one tensor
 FIXABLE = {"I001", "I002", "I003", "I004", "I005", "I006", "I007", "I008", "I009", "I010"}
 
 
 def flagged(report: Report) -> list[LinkReport]:
-    """Links whose <inertial> a corrected block would fix."""
+    """Links with a mass-property problem, for which a uniform body's <inertial> is suggested."""
     return [entry for entry in report.links if any(d.code in FIXABLE for d in entry.problems)]
 
 
 def suggestion(loaded: Loaded, entry: LinkReport, density: float | None = None) -> str:
-    """A ready-to-paste ``<inertial>`` for a link, in the frame of its current one;
-    an XML comment saying why when the geometry cannot tell."""
+    """A ready-to-paste ``<inertial>`` for a link, in the frame of its current one: the
+    uniform body its geometry makes, said to be an estimate, never a correction; an XML
+    comment saying why when the geometry cannot tell."""
     link = entry.link
     found = implied(loaded, link, density)
     if found.body is None:
@@ -482,7 +642,7 @@ def suggestion(loaded: Loaded, entry: LinkReport, density: float | None = None) 
     values = massprops.as_dict(tensor)
     return "\n".join(
         [
-            f"<!-- link '{link.name}': from its {found.source} -->",
+            f"<!-- link '{link.name}': a uniform body filling its {found.source} (an estimate: the part's CAD values are better) -->",
             "<inertial>",
             f'  <origin xyz="{" ".join(map(number, found.body.com))}" rpy="{" ".join(map(number, rpy))}"/>',
             f'  <mass value="{number(found.body.mass)}"/>',

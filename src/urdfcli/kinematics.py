@@ -9,7 +9,8 @@ from __future__ import annotations
 
 import difflib
 from collections import defaultdict
-from collections.abc import Iterator
+from collections.abc import Callable, Iterator
+from dataclasses import dataclass
 from typing import TYPE_CHECKING
 
 from .diagnostics import Diagnostic
@@ -167,3 +168,77 @@ def depth_and_leaves(robot: Robot, root: str) -> tuple[int, list[str]]:
         if not children.get(link):
             leaves.append(link)
     return depth, leaves
+
+
+@dataclass(frozen=True)
+class RigidBody:
+    """Links joined by fixed joints: one rigid body, as simulators and Pinocchio lump them.
+
+    ``joint`` is the moving joint that carries the body (None for the root's body, or a
+    body whose top link has no parent); ``links`` starts with the top link."""
+
+    joint: Joint | None
+    links: tuple[str, ...]
+
+    @property
+    def top(self) -> str:
+        return self.links[0]
+
+    @property
+    def moving(self) -> bool:
+        return self.joint is not None
+
+
+def rigid_bodies(robot: Robot, parent_joint: Callable[[str], Joint | None]) -> dict[str, RigidBody]:
+    """Each link's rigid body. ``parent_joint`` gives a link's (first) parent joint."""
+    tops: dict[str, str] = {}
+    for name in robot.links:
+        path = []
+        link = name
+        while link not in tops and link not in path:
+            path.append(link)
+            joint = parent_joint(link)
+            if joint is None or joint.moving or joint.parent not in robot.links:
+                break
+            link = joint.parent
+        top = tops.get(link, link)
+        for visited in path:
+            tops[visited] = top
+    members: dict[str, list[str]] = defaultdict(list)
+    for name, top in tops.items():
+        members[top].append(name)
+    bodies: dict[str, RigidBody] = {}
+    for top, names in members.items():
+        joint = parent_joint(top)
+        names.sort(key=lambda n: n != top)  # the top link first, the rest in file order
+        body = RigidBody(joint if joint is not None and joint.moving else None, tuple(names))
+        for name in names:
+            bodies[name] = body
+    return bodies
+
+
+def subtree_masses(robot: Robot, mass: Callable[[str], float]) -> dict[str, float]:
+    """Each link's mass plus the mass of every link below it, for the links the roots reach."""
+    children = children_by_joint_name(robot)
+    total: dict[str, float] = {}
+    for root in roots(robot):
+        order = [link for _, _, link in walk(robot, root, children)]
+        for link in reversed(order):  # every link after the links below it
+            total[link] = mass(link) + sum(total.get(j.child, 0.0) for j in children.get(link, ()) if j.child != link)
+    return total
+
+
+def bodies(loaded) -> dict[str, RigidBody]:
+    """Each link's rigid body in a loaded model, worked out once."""
+    return loaded.remembered("rigid bodies", lambda: rigid_bodies(loaded.robot, loaded.parent_joint))
+
+
+def link_mass(robot: Robot, name: str) -> float:
+    """A link's declared mass when positive, else 0."""
+    inertial = robot.links[name].inertial
+    mass = inertial.mass if inertial is not None else None
+    return mass if mass is not None and mass > 0 else 0.0
+
+
+def body_mass(loaded, body: RigidBody) -> float:
+    return sum(link_mass(loaded.robot, name) for name in body.links)

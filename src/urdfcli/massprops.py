@@ -61,6 +61,26 @@ def principal_moments(m: Matrix) -> tuple[float, float, float]:
     return tuple(sorted((small, middle, big)))  # type: ignore[return-value]
 
 
+ZERO_FLOOR = 1e-12
+"""kg·m²: an element smaller than this is rounding noise (iCub writes 2.4e-35), not a moment.
+
+A gram spread over a millimetre already has moments near 1e-10: nothing physical is smaller."""
+
+LIGHT = 0.02
+"""kg: a link lighter than this (a sensor or tool frame, a dummy link) has mass properties too
+small to matter to its body's dynamics; the physics rules leave its tensor alone."""
+
+
+def floored(m: Matrix) -> Matrix:
+    """The tensor with the elements below ZERO_FLOOR set to zero."""
+    return tuple(tuple(0.0 if abs(v) < ZERO_FLOOR else v for v in row) for row in m)  # type: ignore[return-value]
+
+
+def is_negligible(m: Matrix) -> bool:
+    """All elements are zero or rounding noise: the body is a point mass."""
+    return scale_of(m) < ZERO_FLOOR
+
+
 def scale_of(m: Matrix) -> float:
     return max(map(abs, (*m[0], *m[1], *m[2])))
 

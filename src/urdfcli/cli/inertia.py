@@ -33,7 +33,7 @@ def inertia(
             "tensor's largest element. The default 0.1 catches swapped or unrotated axes and lets values rounded to two digits pass.",
         ),
     ] = audit_module.TOLERANCE,
-    suggest: Annotated[bool, typer.Option("--suggest", help="Print a corrected <inertial> block for each flagged link.")] = False,
+    suggest: Annotated[bool, typer.Option("--suggest", help="Print, for each flagged link, the <inertial> of a uniform body filling its geometry.")] = False,
     xacro: Annotated[bool, typer.Option("--xacro", help="Implies --suggest: name the xacro macro that wrote each flagged <inertial>, and print the call of it that gives the right values.")] = False,
     density: Annotated[float | None, typer.Option("--density", metavar="KG_PER_M3", help="Compute masses from the geometry's volume at this density instead of using the declared masses.")] = None,
     output_format: Annotated[str, typer.Option("--format", "-f", metavar="FORMAT", help="text, or json (one object per file; a list of them for several files).", case_sensitive=False)] = "text",

@@ -370,35 +370,76 @@ def gazebo_outside_gazebo(loaded):
         yield loaded.diagnostic("D011", message, unknowns[0].element, hint)
 
 
-@check("D003", "visual-without-collision", WARNING, "A link with inertia and a visual, but no collision.", in_check=False)
+@check("D003", "visual-without-collision", WARNING, "A moving body with visuals but no collision on any of its links.", in_check=False)
 def visual_without_collision(loaded):
     """## What it does
-    Flags a link that has an `<inertial>` and a `<visual>` but no `<collision>`.
+    Judges rigid bodies, not links: links joined by fixed joints form one body, as
+    simulators lump them. Flags a body carried by a moving joint that has a `<visual>`
+    but no `<collision>` on any of its links (a collision on a fixed child counts). The
+    root's body is left alone (it may be fixed to the world). A model with no collision
+    at all gets one note (info) instead of a warning per body: it is meant for display.
 
     ## Why is this bad?
-    A simulated body with mass but no collision shape falls through the floor
-    and passes through other bodies; the visual makes it look solid.
+    A simulated body with no collision shape passes through the floor and through
+    other bodies, and planners never see it; the visual makes it look solid.
 
     ## Example
     ```xml
-    <link name="body">
-      <inertial><mass value="1"/><inertia ixx="0.17" ixy="0" ixz="0" iyy="0.17" iyz="0" izz="0.17"/></inertial>
-      <visual><geometry><box size="1 1 1"/></geometry></visual>
+    <link name="base_link">
+      <collision><geometry><box size="1 1 0.2"/></geometry></collision>
     </link>
+    <link name="arm">
+      <visual><geometry><box size="0.1 0.1 1"/></geometry></visual>
+    </link>
+    <joint name="arm_joint" type="continuous">
+      <parent link="base_link"/>
+      <child link="arm"/>
+    </joint>
     ```
 
     ## Use instead
     ```xml
-    <link name="body">
-      <inertial><mass value="1"/><inertia ixx="0.17" ixy="0" ixz="0" iyy="0.17" iyz="0" izz="0.17"/></inertial>
-      <visual><geometry><box size="1 1 1"/></geometry></visual>
-      <collision><geometry><box size="1 1 1"/></geometry></collision>
+    <link name="base_link">
+      <collision><geometry><box size="1 1 0.2"/></geometry></collision>
     </link>
+    <link name="arm">
+      <visual><geometry><box size="0.1 0.1 1"/></geometry></visual>
+      <collision><geometry><box size="0.1 0.1 1"/></geometry></collision>
+    </link>
+    <joint name="arm_joint" type="continuous">
+      <parent link="base_link"/>
+      <child link="arm"/>
+    </joint>
     ```
     """
-    for link in loaded.robot.links.values():
-        if link.inertial is not None and link.visuals and not link.collisions:
-            yield loaded.diagnostic("D003", f"link '{link.name}' has inertia and a visual but no collision", link.element, "add a <collision> (often the visual's geometry, or a simpler one)")
+    from ..kinematics import bodies
+    from . import INFO
+
+    links = loaded.robot.links
+    bare = []  # (body, its first link with a visual) for each moving body without collision
+    seen = set()
+    for body in bodies(loaded).values():
+        if body.top in seen or not body.moving:
+            continue
+        seen.add(body.top)
+        members = [links[name] for name in body.links]
+        shown = next((link for link in members if link.visuals), None)
+        if shown is not None and not any(link.collisions for link in members):
+            bare.append((body, shown))
+    if bare and not any(link.collisions for link in links.values()):
+        note = loaded.diagnostic("D003", "no link has a <collision>: the model can be displayed, not simulated or planned with", loaded.robot.element,
+                                 "add collision shapes to the moving links if it is meant for simulation or planning")
+        yield note.with_severity(INFO)
+        return
+    for body, shown in bare:
+        members = [links[name] for name in body.links]
+        fixed = f" (nor on the links fixed to it: {', '.join(repr(m.name) for m in members[1:])})" if len(members) > 1 else ""
+        yield loaded.diagnostic(
+            "D003",
+            f"link '{body.top}', moved by joint '{body.joint.name}', has a visual but no collision{fixed}",
+            shown.element,
+            "add a <collision> (often the visual's geometry, or a simpler one)",
+        )
 
 
 def _resources(loaded):

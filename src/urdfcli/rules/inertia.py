@@ -10,14 +10,17 @@ from collections import defaultdict
 
 from .. import massprops
 from ..numbers import format_number
-from . import WARNING, Option, check
+from . import INFO, WARNING, Option, check
+from .physics import absorbed, has_invalid_tensor, names as _names, naming as _naming
 
+ROOT_MASS = 0.001  # kg: a lighter root is the usual answer to KDL's complaint
 SIZE_RATIO = 2.0  # links this many times apart in mass or size cannot share one honest tensor
 TOLERANCE = Option(
     "tolerance",
     massprops.TOLERANCE,
-    "Largest element difference between declared and expected tensors, relative to the larger's largest element. "
-    "0.1 catches swapped or unrotated axes and lets values rounded to two digits pass.",
+    "How close two tensors must be to match (largest element difference, relative to the larger's largest element): "
+    "a shared tensor that fits each link's geometry, principal moments that match the geometry's. "
+    "0.1 lets values rounded to two digits pass.",
 )
 DENSITY = Option("density", 0.0, "kg/m³: when positive, masses come from the geometry's volume instead of the declared mass.")
 
@@ -40,14 +43,6 @@ def _assess(loaded, link, options):
     return _inertia().assess(loaded, link, options.get("density") or None)
 
 
-def _off_geometry(loaded, options):
-    """(link, assessment, rotated fit) for each link whose tensor is off its geometry's."""
-    for link in _declaring(loaded):
-        found = _assess(loaded, link, options)
-        if found is not None and found.off(options["tolerance"]):
-            yield link, found, _inertia().rotated_fit(found)
-
-
 def _implies(found) -> str | None:
     return f"its {found.implied.source} implies {_inertia().tensor_text(found.expected)}" if found and found.expected else None
 
@@ -55,7 +50,10 @@ def _implies(found) -> str | None:
 @check("I007", "placeholder-identity", WARNING, "An inertia tensor that is the identity: a placeholder.", in_check=False, options=(TOLERANCE,))
 def placeholder_identity(loaded, options):
     """## What it does
-    Flags ``ixx=iyy=izz=1`` without products of inertia, unless the link's geometry really implies it.
+    Flags ``ixx=iyy=izz=1`` without products of inertia, unless the link's geometry really
+    implies it. All the links of a model with the identity are named in one diagnostic (one
+    placeholder pasted everywhere is one mistake); I008 and I009 leave them to it. Links
+    lighter than 20 g fixed to a heavier body are left alone.
 
     ## Why is this bad?
     The identity is what gets typed when the real value is unknown. On a 100 kg
@@ -85,19 +83,37 @@ def placeholder_identity(loaded, options):
     ```
     `urdfcli inertia --suggest` prints the values for each link.
     """
+    links = identity_links(loaded, options)
+    if links:
+        first = links[0]
+        yield loaded.diagnostic(
+            "I007",
+            f"inertia of {_naming(links)} is the identity, a placeholder",
+            first.inertial.element.find("inertia"),
+            _implies(_assess(loaded, first, options)) if len(links) == 1 else "`urdfcli inertia --suggest` prints the values each link's geometry implies",
+        )
+
+
+def identity_links(loaded, options) -> list:
+    """Links whose tensor is the identity, unless their geometry really implies it."""
+    found = []
     for link in _declaring(loaded):
-        if massprops.is_identity(_inertia().declared_tensor(link)):
-            found = _assess(loaded, link, options)
-            if found is not None and found.expected is not None and not found.off(options["tolerance"]):
+        if massprops.is_identity(_inertia().declared_tensor(link)) and not absorbed(loaded, link):
+            assessment = _assess(loaded, link, options)
+            if assessment is not None and assessment.expected is not None and not assessment.off(options["tolerance"]):
                 continue
-            yield loaded.diagnostic("I007", f"inertia of link '{link.name}' is the identity, a placeholder", link.inertial.element.find("inertia"), _implies(found))
+            found.append(link)
+    return found
 
 
 @check("I008", "placeholder-repeated", WARNING, "The same inertia tensor on links of very different sizes.", in_check=False, options=(TOLERANCE,))
 def placeholder_repeated(loaded, options):
     """## What it does
-    Flags a tensor repeated on links whose masses or geometries differ by more
-    than a factor of two, on each copy that does not fit its own geometry.
+    Flags a tensor repeated on links whose masses or geometries differ by more than a
+    factor of two: one diagnostic per tensor, naming every copy that does not fit its own
+    geometry (within ``tolerance``). Left alone: links lighter than 20 g (dummy and frame
+    links), zero tensors (I004), the identity (I007) and tensors no body can have (I005,
+    I006), which their own rules report.
 
     ## Why is this bad?
     One small value pasted on every sensor and caster is a placeholder: a 35 g
@@ -128,55 +144,95 @@ def placeholder_repeated(loaded, options):
     </link>
     ```
     """
+    for tensor, wrong, others in placeholder_groups(loaded, options):
+        masses = [link.inertial.mass for link in wrong + others]
+        if max(masses) > SIZE_RATIO * min(masses):
+            differ = f"though they weigh {format_number(min(masses))} to {format_number(max(masses))} kg"
+        else:
+            differ = "though their geometries differ in size"
+        if others:
+            said = f"{_naming(wrong)} {'has' if len(wrong) == 1 else 'have'} the inertia tensor ({_inertia().tensor_text(tensor)}) of {_names(others)}"
+        else:
+            said = f"{_naming(wrong)} share one inertia tensor ({_inertia().tensor_text(tensor)})"
+        yield loaded.diagnostic(
+            "I008",
+            f"{said}, {differ}: a placeholder",
+            wrong[0].inertial.element.find("inertia"),
+            "`urdfcli inertia --suggest` prints the values each link's geometry implies",
+        )
+
+
+def placeholder_groups(loaded, options) -> list:
+    """(tensor, links, others) for each tensor pasted on links of very different mass or size:
+    the links whose own geometry does not give it, and those it fits; worked out once."""
+    return loaded.remembered(("placeholder groups", options["tolerance"]), lambda: _placeholder_groups(loaded, options))
+
+
+def _placeholder_groups(loaded, options) -> list:
     groups = defaultdict(list)
     for link in _declaring(loaded):
         tensor = _inertia().declared_tensor(link)
-        if not massprops.is_zero(tensor):
+        # light frames and dummies draw nothing; the identity is I007's
+        if (
+            link.inertial.mass >= massprops.LIGHT and not massprops.is_negligible(tensor)
+            and not massprops.is_identity(tensor) and not has_invalid_tensor(loaded, link)  # I007, I005 and I006 say it
+        ):
             groups[tensor].append(link)
+    found = []
     for tensor, links in groups.items():
         if len(links) < 2:
             continue
-        found = {link.name: _assess(loaded, link, options) for link in links}
-        sizes = [massprops.scale_of(a.expected) for a in found.values() if a is not None and a.expected is not None]
+        assessed = {link.name: _assess(loaded, link, options) for link in links}
+        sizes = [massprops.scale_of(a.expected) for a in assessed.values() if a is not None and a.expected is not None]
         masses = [link.inertial.mass for link in links]
         if max(masses) <= SIZE_RATIO * min(masses) and (len(sizes) < 2 or max(sizes) <= SIZE_RATIO * min(sizes)):
             continue
-        for link in links:
-            assessment = found[link.name]
-            if assessment is not None and assessment.expected is not None and not assessment.off(options["tolerance"]):
-                continue
-            others = [f"'{other.name}'" for other in links[:4] if other is not link][:3]
-            shown = ", ".join(others) + (f" and {len(links) - 4} more" if len(links) > 4 else "")
-            yield loaded.diagnostic(
-                "I008",
-                f"link '{link.name}' has the same inertia ({_inertia().tensor_text(tensor)}) as {shown}, links of very different size: a placeholder",
-                link.inertial.element.find("inertia"),
-                _implies(assessment),
-            )
+        wrong = [
+            link for link in links
+            if not (assessed[link.name] is not None and assessed[link.name].expected is not None and not assessed[link.name].off(options["tolerance"]))
+        ]
+        if wrong:
+            found.append((tensor, wrong, [link for link in links if link not in wrong]))
+    return found
 
 
-@check("I009", "inertia-geometry-mismatch", WARNING, "A declared inertia tensor far from what the geometry and mass imply.", in_check=False, options=(TOLERANCE, DENSITY))
+@check("I009", "inertia-geometry-mismatch", WARNING, "A declared inertia tensor that the link's geometry proves wrong.", in_check=False, options=(TOLERANCE, DENSITY))
 def geometry_mismatch(loaded, options):
     """## What it does
-    Computes the tensor the link's collision shapes (else its visual shapes) imply
-    for its mass: uniform density, box, cylinder and sphere in closed form, meshes
-    loaded by yourdfpy and trimesh, several shapes composed with their origins. Flags a declared
-    tensor whose largest element difference exceeds ``tolerance`` (0.1) of the
-    larger tensor's largest element. When the tensor fits once rotated as the
-    shapes are, I010 is reported instead.
+    Flags a declared tensor only when the link's geometry proves it wrong, in one of three ways:
+
+    - **impossible**: a moment (about a link axis through the declared centre of mass) larger,
+      by more than 10 %, than any distribution of the link's mass inside the bounding box of
+      all its visual and collision shapes allows. Along each axis a mass in [lo, hi] centred
+      at c has a variance of at most (hi - c)(c - lo), and ixx = m (var y + var z); for a box
+      of sides Lx, Ly, Lz centred on the centre of mass, ixx <= m((Ly/2)² + (Lz/2)²).
+    - **rotated**: principal moments within ``tolerance`` (0.1) of those of a uniform body
+      filling the collision shapes (else the visual shapes), on axes at least 3 x ``tolerance``
+      away (swapped axes, a tensor not turned with its shape). When the shapes' own rotation
+      explains it, I010 says so instead.
+    - **placeholder**: a largest principal moment more than 100 times below the uniform
+      body's (0.3 kg declared with a 2e-8 tensor).
+
+    Left alone: a CAD tensor within a few times of the uniform body's (real parts are not
+    uniform: motors, shells, cables); links lighter than 20 g; geometry that cannot hold the
+    mass (denser than osmium in its bounding box: a millimetre sphere standing in for a
+    finger); links without measurable geometry; zero tensors (I004), the identity (I007),
+    tensors shared as placeholders (I008). ``density`` (kg/m³), when positive, gives the
+    uniform body its mass from the geometry's volume.
 
     ## Why is this bad?
-    A tensor with swapped axes, the wrong formula or a made-up value makes a
-    simulated body turn too easily about one axis and too hard about another: it
-    shakes, drifts or explodes.
+    A tensor that no body of that mass and size can have, turned the wrong way, or
+    orders of magnitude off makes a simulated body turn too easily about one axis and too
+    hard about another: it shakes, drifts or explodes, and model-based controllers
+    compute the wrong torques.
 
     ## Example
     ```xml
     <link name="camera">
       <collision><geometry><box size="0.02 0.05 0.05"/></geometry></collision>
       <inertial>
-        <mass value="0.01"/>
-        <inertia ixx="2.42e-06" ixy="0" ixz="0" iyy="2.42e-06" iyz="0" izz="4.17e-06"/>
+        <mass value="0.1"/>
+        <inertia ixx="2.42e-05" ixy="0" ixz="0" iyy="2.42e-05" iyz="0" izz="4.17e-05"/>
       </inertial>
     </link>
     ```
@@ -186,37 +242,46 @@ def geometry_mismatch(loaded, options):
     <link name="camera">
       <collision><geometry><box size="0.02 0.05 0.05"/></geometry></collision>
       <inertial>
-        <mass value="0.01"/>
-        <inertia ixx="4.17e-06" ixy="0" ixz="0" iyy="2.42e-06" iyz="0" izz="2.42e-06"/>
+        <mass value="0.1"/>
+        <inertia ixx="4.17e-05" ixy="0" ixz="0" iyy="2.42e-05" iyz="0" izz="2.42e-05"/>
       </inertial>
     </link>
     ```
     """
-    tolerance = options["tolerance"]
-    for link, found, rotated in _off_geometry(loaded, options):
-        if rotated is not None and rotated[1] <= tolerance:
-            continue  # I010 explains it
-        hints = ["`urdfcli inertia --suggest` prints the corrected <inertial>"]
-        if massprops.moments_difference(found.declared, found.expected) <= tolerance:
-            hints.insert(0, "the principal moments match: the axes are swapped or rotated")
-        centre = found.implied.body.com
-        if max(abs(c - x) for c, x in zip(centre, link.inertial.origin.xyz)) > 1e-6 * max(1.0, *map(abs, centre)):
-            hints.insert(0, f"the geometry's centre is at xyz=\"{' '.join(f'{c:.6g}' for c in centre)}\"")
-        basis = f"density {format_number(options['density'])}" if options.get("density") else f"mass {format_number(link.inertial.mass)}"
-        yield loaded.diagnostic(
-            "I009",
-            f"inertia of link '{link.name}' is {found.difference:.0%} off what its {found.implied.source} implies for {basis}: "
-            f"declared {_inertia().tensor_text(found.declared, found.expected)}, expected {_inertia().tensor_text(found.expected, found.declared)}",
-            link.inertial.element.find("inertia"),
-            "; ".join(hints),
-        )
+    for link in _declaring(loaded):
+        found = _verdict(loaded, link, options)
+        if found is not None:
+            yield loaded.diagnostic("I009", f"inertia of link '{link.name}': {found.message}", link.inertial.element.find("inertia"), found.hint)
+
+
+def _verdict(loaded, link, options):
+    """:func:`urdfcli.inertia.verdict`, unless another rule already reports the link's tensor."""
+    tensor = _inertia().declared_tensor(link)
+    if massprops.is_identity(tensor) or has_invalid_tensor(loaded, link) or any(link in wrong for _, wrong, _ in placeholder_groups(loaded, options)):
+        return None
+    if _rotated_with_shapes(loaded, link, options) is not None:
+        return None  # I010 explains it
+    return _inertia().verdict(loaded, link, options["tolerance"], options.get("density") or None)
+
+
+def _rotated_with_shapes(loaded, link, options):
+    """(assessment, (rpy, difference once rotated)) when I010 reports the link: rotated as
+    its shapes are, the tensor fits within the tolerance, or comes at least twice as close."""
+    found = _assess(loaded, link, options)
+    if found is None or not found.off(options["tolerance"]):
+        return None
+    rotated = _inertia().rotated_fit(found)
+    if rotated is None or (rotated[1] > options["tolerance"] and rotated[1] > found.difference / 2):
+        return None
+    return found, rotated
 
 
 @check("I010", "inertia-frame-rotated", WARNING, "An inertia tensor not rotated with the geometry it was computed for.", in_check=False, options=(TOLERANCE, DENSITY))
 def frame_rotated(loaded, options):
     """## What it does
-    Flags a tensor that is off its geometry's, but fits once rotated as the link's
-    shapes are (their shared ``<origin rpy>``), or comes at least twice as close that way.
+    Flags a tensor that is more than ``tolerance`` (0.1) off its geometry's, but fits
+    within it once rotated as the link's shapes are (their shared ``<origin rpy>``), or
+    comes at least twice as close that way.
 
     ## Why is this bad?
     A wheel's cylinder is turned 90° about x to stand upright. The cylinder formula
@@ -252,29 +317,32 @@ def frame_rotated(loaded, options):
     </link>
     ```
     """
-    tolerance = options["tolerance"]
-    for link, found, rotated in _off_geometry(loaded, options):
-        if rotated is None or (rotated[1] > tolerance and rotated[1] > found.difference / 2):
+    for link in _declaring(loaded):
+        match = _rotated_with_shapes(loaded, link, options)
+        if match is None:
             continue
-        rpy = " ".join(f"{a:.6g}" for a in rotated[0])
+        found, (rpy, left) = match
+        rpy = " ".join(f"{a:.6g}" for a in rpy)
         where = found.implied.source.split(" ")[0]
         yield loaded.diagnostic(
             "I010",
             f"inertia of link '{link.name}' is not rotated with its {where} geometry (rpy {rpy}): "
-            f"{found.difference:.0%} off as declared, {rotated[1]:.0%} once rotated",
+            f"{found.difference:.0%} off as declared, {left:.0%} once rotated",
             link.inertial.element.find("inertia"),
             f'give the <inertial> <origin rpy="{rpy}"/>, or use the rotated values `urdfcli inertia --suggest` prints',
         )
 
 
-@check("I011", "root-inertia", WARNING, "The root link carries mass, which KDL ignores.", in_check=False)
+@check("I011", "root-inertia", INFO, "The root link carries mass, which KDL ignores.", in_check=False)
 def root_inertia(loaded):
     """## What it does
-    Flags a root link with positive mass.
+    Notes (info) a root link with a mass of a gram or more. Lighter roots (the usual
+    workaround, a dummy root of 1e-6 kg) are left alone.
 
     ## Why is this bad?
-    KDL (robot_state_publisher, MoveIt) cannot give the root link inertia: it
-    warns and drops it, so the model's dynamics lose that body.
+    KDL (and so KDL-based dynamics such as `kdl_parser` users) cannot give the root
+    link inertia: it warns and drops it, so those dynamics lose that body. Pinocchio,
+    Drake and simulators use it: that is why this is only a note.
 
     ## Example
     ```xml
@@ -297,7 +365,7 @@ def root_inertia(loaded):
     """
     root = loaded.root
     link = loaded.robot.links.get(root) if root is not None else None
-    if link is not None and link.inertial is not None and (link.inertial.mass or 0) > 0:
+    if link is not None and link.inertial is not None and (link.inertial.mass or 0) >= ROOT_MASS:
         yield loaded.diagnostic(
             "I011",
             f"root link '{root}' has mass {format_number(link.inertial.mass)}, which KDL ignores",

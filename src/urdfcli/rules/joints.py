@@ -242,3 +242,99 @@ def continuous_with_limits(loaded):
     for joint in loaded.robot.joints.values():
         if joint.type == "continuous" and joint.limit and (joint.limit.has_lower or joint.limit.has_upper):
             yield loaded.diagnostic("J012", f"continuous joint '{joint.name}' has lower/upper limits, which are ignored", joint.element.find("limit"), hint="make it revolute, or drop lower and upper")
+
+
+@check("J013", "limit-without-range", WARNING, "A revolute or prismatic joint whose <limit> gives neither lower nor upper.", in_check=False)
+def limit_without_range(loaded):
+    """## What it does
+    Flags a revolute or prismatic joint whose `<limit>` has neither `lower` nor `upper`.
+    A limit giving one of the two is left alone (the other is 0, which can be meant).
+
+    ## Why is this bad?
+    urdfdom reads both as 0: the range is [0, 0], so every consumer that honours limits
+    (MoveIt, ros2_control, Gazebo, Pinocchio) holds the joint still. Wheels written as
+    revolute joints and knees copied without their range stop moving.
+
+    ## Example
+    ```xml
+    <link name="base_link"/>
+    <link name="wheel"/>
+    <joint name="wheel_joint" type="revolute">
+      <parent link="base_link"/>
+      <child link="wheel"/>
+      <axis xyz="0 1 0"/>
+      <limit effort="10" velocity="5"/>
+    </joint>
+    ```
+
+    ## Use instead
+    ```xml
+    <link name="base_link"/>
+    <link name="wheel"/>
+    <joint name="wheel_joint" type="continuous">
+      <parent link="base_link"/>
+      <child link="wheel"/>
+      <axis xyz="0 1 0"/>
+      <limit effort="10" velocity="5"/>
+    </joint>
+    ```
+    """
+    for joint in loaded.robot.joints.values():
+        limit = joint.limit
+        if joint.type in ("revolute", "prismatic") and limit is not None and not limit.has_lower and not limit.has_upper:
+            turn = "make it continuous, or " if joint.type == "revolute" else ""
+            yield loaded.diagnostic(
+                "J013",
+                f"{joint.type} joint '{joint.name}' has no lower or upper limit: urdfdom reads its range as [0, 0], so it cannot move",
+                joint.element.find("limit"),
+                hint=f'{turn}give the range: <limit lower="..." upper="..."/>',
+            )
+
+
+@check("J014", "limit-effort-velocity-zero", WARNING, "A moving joint whose effort or velocity limit is zero or negative.", in_check=False)
+def effort_velocity_zero(loaded):
+    """## What it does
+    Flags a revolute, continuous or prismatic joint, not a mimic, whose `<limit>` gives
+    `effort` or `velocity` as 0 or less. Mimic joints are left alone: they follow another
+    joint and are not driven.
+
+    ## Why is this bad?
+    The limits bound what a controller may command and what a simulator lets the joint do:
+    with a zero effort Gazebo's motor has no force, and with a zero velocity the joint may
+    not move at all; MoveIt plans no motion with a zero velocity limit. A negative limit is
+    meaningless.
+
+    ## Example
+    ```xml
+    <link name="base_link"/>
+    <link name="finger"/>
+    <joint name="finger_joint" type="revolute">
+      <parent link="base_link"/>
+      <child link="finger"/>
+      <limit lower="0" upper="1" effort="0" velocity="0"/>
+    </joint>
+    ```
+
+    ## Use instead
+    ```xml
+    <link name="base_link"/>
+    <link name="finger"/>
+    <joint name="finger_joint" type="revolute">
+      <parent link="base_link"/>
+      <child link="finger"/>
+      <limit lower="0" upper="1" effort="2" velocity="1.5"/>
+    </joint>
+    ```
+    """
+    for joint in loaded.robot.joints.values():
+        limit = joint.limit
+        if joint.type not in ("revolute", "continuous", "prismatic") or limit is None or joint.mimic is not None:
+            continue
+        bad = [f"{name}={format_number(value)}" for name, value in (("effort", limit.effort), ("velocity", limit.velocity)) if value is not None and value <= 0]
+        if bad:
+            yield loaded.diagnostic(
+                "J014",
+                f"joint '{joint.name}' has {' and '.join(bad)}: a controller or simulator that honours its limits cannot move it",
+                joint.element.find("limit"),
+                hint="give the actuator's real effort and velocity limits (the datasheet's peak torque or force, and speed)",
+            )

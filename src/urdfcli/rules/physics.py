@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 from .. import massprops
+from ..kinematics import bodies, body_mass, link_mass, subtree_masses
 from ..numbers import format_number
 from . import WARNING, check
 
@@ -17,6 +18,28 @@ def _inertials(loaded):
 def moved_by_joint(loaded, link_name: str) -> bool:
     joint = loaded.parent_joint(link_name)
     return joint is not None and joint.moving
+
+
+def absorbed(loaded, link) -> bool:
+    """A link lighter than massprops.LIGHT fixed to a body that weighs more without it
+    (a sensor frame, a dummy link): simulators lump it into that body, where its
+    tensor is lost in the noise, so its mass properties are left alone."""
+    own = link_mass(loaded.robot, link.name)
+    if own >= massprops.LIGHT:
+        return False
+    body = bodies(loaded)[link.name]
+    return body_mass(loaded, body) - own >= massprops.LIGHT
+
+
+def tensor_of(inertial):
+    """The declared tensor with rounding noise (elements below massprops.ZERO_FLOOR) zeroed."""
+    return massprops.floored(massprops.matrix(inertial.inertia))
+
+
+def moments_text(moments) -> str:
+    """Principal moments, with those that are noise next to the largest written as 0."""
+    largest = max(map(abs, moments))
+    return ", ".join("0" if abs(m) <= 1e-9 * largest else f"{m:.6g}" for m in moments)
 
 
 @check("I001", "negative-mass", WARNING, "A link with negative mass.")
@@ -46,16 +69,20 @@ def negative_mass(loaded):
             yield loaded.diagnostic("I001", f"link '{link.name}' has negative mass {format_number(inertial.mass)}", inertial.element.find("mass"))
 
 
-@check("I002", "massless-moving-link", WARNING, "A link with zero mass moved by a non-fixed joint.")
+@check("I002", "massless-moving-link", WARNING, "A joint that moves only massless links.")
 def massless_moving_link(loaded):
     """## What it does
-    Flags a link with no mass (no `<inertial>`, or mass 0) that a non-fixed joint moves,
-    in a model where some link declares inertia. Purely kinematic models
-    (no `<inertial>` anywhere) are not flagged.
+    Flags a moving joint when nothing it moves has mass: the link it carries and every
+    link below it are massless (no `<inertial>`, or mass 0). Reported once, at the
+    highest such joint, naming the links; the joints further down the same massless
+    branch are not reported again. A massless link between two joints is fine when the
+    links beyond it have mass (a ball joint written as three revolute joints), and so
+    are massless frames on fixed joints. Purely kinematic models (no `<inertial>`
+    anywhere) are not flagged.
 
     ## Why is this bad?
-    A massless body driven by a joint has no dynamics: Gazebo drops it, and
-    KDL's dynamic solvers cannot handle it.
+    A joint that moves no mass has no dynamics: the mass matrix is singular, so
+    forward dynamics (Pinocchio, KDL, Drake) fails, and Gazebo drops the links.
 
     ## Example
     ```xml
@@ -83,14 +110,35 @@ def massless_moving_link(loaded):
     </joint>
     ```
     """
-    if not any(link.inertial is not None for link in loaded.robot.links.values()):
+    robot = loaded.robot
+    if not any(link.inertial is not None for link in robot.links.values()):
         return
-    for link in loaded.robot.links.values():
-        inertial = link.inertial
-        massless = inertial is None or inertial.mass == 0
-        if massless and moved_by_joint(loaded, link.name):
-            element = inertial.element.find("mass") if inertial is not None else link.element
-            yield loaded.diagnostic("I002", f"link '{link.name}' has no mass but is moved by joint '{loaded.parent_joint(link.name).name}'", element, hint="give it a mass and inertia, or attach it with a fixed joint")
+    carried = subtree_masses(robot, lambda name: link_mass(robot, name))
+    found = bodies(loaded)
+    for joint in robot.joints.values():
+        if not joint.moving or joint.child not in carried or joint.parent not in found or carried[joint.child] > 0:
+            continue
+        above = found[joint.parent].joint
+        if above is not None and carried.get(above.child, 1.0) == 0:
+            continue  # reported at the joint above, which moves this branch too
+        branch = _branch(robot, joint.child)
+        link = robot.links[joint.child]
+        names = ", ".join(f"'{n}'" for n in branch[:4]) + (f" and {len(branch) - 4} more" if len(branch) > 4 else "")
+        what = f"link {names}" if len(branch) == 1 else f"links {names}"
+        element = link.inertial.element.find("mass") if link.inertial is not None else link.element
+        yield loaded.diagnostic(
+            "I002",
+            f"joint '{joint.name}' moves no mass: {what} {'has' if len(branch) == 1 else 'have'} none, so the mass matrix is singular",
+            element if element is not None else link.element,
+            hint="give the moving links their mass and inertia, or make the joint fixed",
+        )
+
+
+def _branch(robot, top: str) -> list[str]:
+    """The link and every link below it, depth first."""
+    from ..kinematics import walk
+
+    return [link for _, _, link in walk(robot, top)]
 
 
 @check("I003", "massless-with-inertia", WARNING, "A link with zero mass but a non-zero inertia tensor.")
@@ -124,7 +172,10 @@ def massless_with_inertia(loaded):
 @check("I004", "point-mass", WARNING, "A link with positive mass and an all-zero inertia tensor.")
 def point_mass(loaded):
     """## What it does
-    Flags a link with positive mass and an all-zero inertia tensor.
+    Flags a link with positive mass and an all-zero inertia tensor. Elements below
+    1e-12 kg·m² count as zero (rounding noise such as `2.4e-35`). A link lighter than
+    20 g fixed to a heavier body (a sensor or tool frame) is left alone: lumped into
+    that body, it changes nothing.
 
     ## Why is this bad?
     A real body has extent; with a zero tensor turning it costs nothing, and
@@ -145,15 +196,24 @@ def point_mass(loaded):
     ```
     """
     for link, inertial in _inertials(loaded):
-        if inertial.mass > 0 and inertial.inertia and massprops.is_zero(massprops.matrix(inertial.inertia)):
-            yield loaded.diagnostic("I004", f"link '{link.name}' has mass {format_number(inertial.mass)} but a zero inertia tensor", inertial.element.find("inertia"))
+        if inertial.mass > 0 and inertial.inertia and massprops.is_negligible(massprops.matrix(inertial.inertia)) and not absorbed(loaded, link):
+            zero = "a zero" if massprops.is_zero(massprops.matrix(inertial.inertia)) else "a near-zero"
+            yield loaded.diagnostic(
+                "I004",
+                f"link '{link.name}' has mass {format_number(inertial.mass)} but {zero} inertia tensor: a point mass",
+                inertial.element.find("inertia"),
+                "`urdfcli inertia --suggest` prints the tensor of a uniform body filling its geometry",
+            )
 
 
 @check("I005", "inertia-not-positive-semidefinite", WARNING, "An inertia tensor with a negative principal moment.")
 def not_positive_semidefinite(loaded):
     """## What it does
     Flags an inertia tensor with a negative principal moment (it is not positive
-    semi-definite), including ones made so by off-diagonal terms.
+    semi-definite), including ones made so by off-diagonal terms. Links sharing one
+    such tensor are reported together. Elements below
+    1e-12 kg·m² count as zero; a tensor made only of such noise is a point mass (I004).
+    A link lighter than 20 g fixed to a heavier body is left alone.
 
     ## Why is this bad?
     Principal moments of inertia are never negative; a simulator given such a
@@ -173,19 +233,22 @@ def not_positive_semidefinite(loaded):
     </link>
     ```
     """
-    for link, inertial in _inertials(loaded):
-        if inertial.inertia:
-            tensor = massprops.matrix(inertial.inertia)
-            if not massprops.is_positive_semidefinite(tensor):
-                moments = ", ".join(f"{m:.6g}" for m in massprops.principal_moments(tensor))
-                yield loaded.diagnostic("I005", f"inertia of link '{link.name}' is not positive semi-definite (principal moments {moments})", inertial.element.find("inertia"))
+    for tensor, links, moments in invalid_tensors(loaded)["I005"]:
+        yield loaded.diagnostic(
+            "I005",
+            f"inertia of {naming(links)} is not positive semi-definite (principal moments {moments_text(moments)})",
+            links[0].inertial.element.find("inertia"),
+        )
 
 
 @check("I006", "inertia-triangle-inequality", WARNING, "Principal moments that break the triangle inequality.")
 def triangle_inequality(loaded):
     """## What it does
     Flags a tensor whose principal moments break the triangle inequality
-    (A + B >= C for any ordering), with a small relative tolerance.
+    (A + B >= C for any ordering), with a small relative tolerance. Links sharing one
+    such tensor are reported together. Elements below
+    1e-12 kg·m² count as zero; a tensor made only of such noise is a point mass (I004).
+    A link lighter than 20 g fixed to a heavier body is left alone.
 
     ## Why is this bad?
     No rigid body has such moments; Gazebo and other engines reject or mishandle
@@ -205,11 +268,44 @@ def triangle_inequality(loaded):
     </link>
     ```
     """
+    for tensor, links, moments in invalid_tensors(loaded)["I006"]:
+        a, b, c = moments_text(moments).split(", ")
+        yield loaded.diagnostic("I006", f"inertia of {naming(links)} breaks the triangle inequality: {a} + {b} < {c}", links[0].inertial.element.find("inertia"))
+
+
+def invalid_tensors(loaded) -> dict[str, list]:
+    """For I005 and I006: (tensor, links, principal moments) for each tensor no body can
+    have, its links grouped (one tensor pasted on several links is one mistake); worked out once."""
+    return loaded.remembered("invalid tensors", lambda: _invalid_tensors(loaded))
+
+
+def _invalid_tensors(loaded) -> dict[str, list]:
+    groups: dict[str, dict] = {"I005": {}, "I006": {}}
     for link, inertial in _inertials(loaded):
-        if inertial.inertia:
-            tensor = massprops.matrix(inertial.inertia)
-            if massprops.is_positive_semidefinite(tensor):
-                broken = massprops.triangle_violation(tensor)
-                if broken:
-                    a, b, c = broken
-                    yield loaded.diagnostic("I006", f"inertia of link '{link.name}' breaks the triangle inequality: {a:.6g} + {b:.6g} < {c:.6g}", inertial.element.find("inertia"))
+        if not inertial.inertia or absorbed(loaded, link):
+            continue
+        tensor = tensor_of(inertial)
+        if massprops.is_negligible(tensor):
+            continue  # a point mass: I004
+        if not massprops.is_positive_semidefinite(tensor):
+            code, moments = "I005", massprops.principal_moments(tensor)
+        else:
+            code, moments = "I006", massprops.triangle_violation(tensor)
+            if moments is None:
+                continue
+        groups[code].setdefault(tensor, ([], moments))[0].append(link)
+    return {code: [(tensor, links, moments) for tensor, (links, moments) in found.items()] for code, found in groups.items()}
+
+
+def has_invalid_tensor(loaded, link) -> bool:
+    return any(link in links for found in invalid_tensors(loaded).values() for _, links, _ in found)
+
+
+def names(links) -> str:
+    """'a', 'b' and 'c': every name, so that each link is found in the message."""
+    quoted = [f"'{link.name}'" for link in links]
+    return quoted[0] if len(quoted) == 1 else f"{', '.join(quoted[:-1])} and {quoted[-1]}"
+
+
+def naming(links) -> str:
+    return f"{'link' if len(links) == 1 else 'links'} {names(links)}"

@@ -1,0 +1,246 @@
+"""Each kind of false alarm the physics rules used to raise on published robots draws
+nothing here, next to a small model with the real defect, which still draws its warning."""
+
+from __future__ import annotations
+
+import pytest
+
+from urdfcli.config import Config
+from urdfcli.diagnostics import Severity
+from urdfcli.linter import lint_file
+
+
+def lint(tmp_path, body: str, name: str = "robot.urdf"):
+    path = tmp_path / name
+    path.write_text(f'<robot name="r">\n{body}\n</robot>\n')
+    return lint_file(str(path), Config.everything()).diagnostics
+
+
+def found(tmp_path, body: str, *codes: str) -> list[tuple[str, str, str]]:
+    """(code, severity, message) of the diagnostics with these codes."""
+    return [(d.code, d.severity.value, d.message) for d in lint(tmp_path, body) if d.code in codes]
+
+
+def inertial(mass, ixx, iyy, izz, ixy=0, ixz=0, iyz=0, xyz="0 0 0") -> str:
+    return (f'<inertial><origin xyz="{xyz}"/><mass value="{mass}"/>'
+            f'<inertia ixx="{ixx}" ixy="{ixy}" ixz="{ixz}" iyy="{iyy}" iyz="{iyz}" izz="{izz}"/></inertial>')
+
+
+def box(size: str, xyz: str = "0 0 0") -> str:
+    return f'<collision><origin xyz="{xyz}"/><geometry><box size="{size}"/></geometry></collision>'
+
+
+def sphere(radius) -> str:
+    return f'<collision><geometry><sphere radius="{radius}"/></geometry></collision>'
+
+
+BASE = '<link name="base">' + box("0.4 0.4 0.1") + inertial(10, 0.14, 0.14, 0.27) + "</link>"
+
+
+def arm(name: str, inside: str, joint: str = "revolute", parent: str = "base", extra: str = "") -> str:
+    limit = '<limit lower="-1" upper="1" effort="10" velocity="1"/>' if joint in ("revolute", "prismatic") else ""
+    return (f'<link name="{name}">{inside}</link>'
+            f'<joint name="{name}_joint" type="{joint}"><parent link="{parent}"/><child link="{name}"/>'
+            f'<axis xyz="0 0 1"/>{limit}{extra}</joint>')
+
+
+# -- A.1: inertia against geometry -------------------------------------------------------
+# a 0.46 m link of 5 kg: uniform, a box 0.1 x 0.1 x 0.46 gives ixx = iyy = 0.092, izz = 0.0083
+LINK = box("0.1 0.1 0.46", "0 0 0.23")
+
+
+def test_a_cad_tensor_within_a_few_times_of_the_uniform_body_draws_nothing(tmp_path):
+    # motors at the ends: twice the uniform moments, still inside what 5 kg in that box can reach
+    cad = BASE + arm("link1", LINK + inertial(5, 0.18, 0.17, 0.005, ixz=0.004, xyz="0 0 0.23"))
+    assert found(tmp_path, cad, "I009", "I010") == []
+
+
+def test_a_moment_no_mass_inside_the_geometry_can_reach_is_flagged(tmp_path):
+    # Panda link1's mistake: ixx = 0.703 on a 0.46 m link of 5 kg (at most 5 (0.23² + 0.05²) = 0.277)
+    impossible = BASE + arm("link1", LINK + inertial(5, 0.70337, 0.70661, 0.009, xyz="0 0 0.23"))
+    (code, severity, message), = found(tmp_path, impossible, "I009")
+    assert severity == "warning" and "'link1'" in message and "iyy=0.707" in message and "2.6 times the most 5 kg can reach" in message
+
+
+def test_the_reach_is_measured_from_the_declared_centre_of_mass(tmp_path):
+    # the same tensor is possible about the box's centre, not about a centre near its end:
+    # there the mass spreads at most (0.43)(0.03) along z
+    tensor = inertial(5, 0.2, 0.2, 0.01, xyz="0 0 0.23")
+    assert found(tmp_path, BASE + arm("link1", LINK + tensor), "I009") == []
+    off_centre = inertial(5, 0.2, 0.2, 0.01, xyz="0 0 0.43")
+    assert [c for c, _, _ in found(tmp_path, BASE + arm("link1", LINK + off_centre), "I009")] == ["I009"]
+
+
+def test_proxy_shapes_and_links_of_a_few_grams_draw_nothing(tmp_path):
+    # tiago's fingers: a millimetre sphere standing in, a tensor "to stabilize simulation"
+    proxy = BASE + arm("finger", sphere(0.001) + inertial(0.05, 0.001, 0.001, 0.001))
+    assert found(tmp_path, proxy, "I009", "I008") == []
+    # 5 g with a tensor far beyond its 2 cm box
+    light = BASE + arm("tip", box("0.02 0.02 0.02") + inertial(0.005, 0.001, 0.001, 0.001))
+    assert found(tmp_path, light, "I009", "I008") == []
+    # the same 50 g with that tensor on geometry that draws the finger is impossible
+    real = BASE + arm("finger", box("0.02 0.02 0.08") + inertial(0.05, 0.001, 0.001, 0.001))
+    assert [c for c, _, _ in found(tmp_path, real, "I009")] == ["I009"]
+
+
+def test_an_orders_of_magnitude_placeholder_on_a_substantial_mass_is_flagged(tmp_path):
+    # Baxter's gripper base: 0.3 kg with a 2e-8 tensor
+    cylinder = '<collision><geometry><cylinder radius="0.04" length="0.05"/></geometry></collision>'
+    placeholder = BASE + arm("gripper_base", cylinder + inertial(0.3, 2e-8, 3e-8, 2e-8), joint="fixed")
+    (code, severity, message), = found(tmp_path, placeholder, "I009")
+    assert severity == "warning" and "times below" in message and "a placeholder" in message
+    # five times below the uniform body: mass near the axis, plausible
+    plausible = BASE + arm("gripper_base", cylinder + inertial(0.3, 3e-5, 3e-5, 5e-5), joint="fixed")
+    assert found(tmp_path, plausible, "I009") == []
+
+
+def test_swapped_axes_are_flagged_and_rounding_is_not(tmp_path):
+    camera = box("0.02 0.05 0.05")  # uniform: ixx = 4.17e-5, iyy = izz = 2.42e-5 for 0.1 kg
+    swapped = BASE + arm("camera", camera + inertial(0.1, 2.42e-5, 2.42e-5, 4.17e-5), joint="fixed")
+    (code, _, message), = found(tmp_path, swapped, "I009")
+    assert "principal moments match its collision box, but on other axes" in message
+    rounded = BASE + arm("camera", camera + inertial(0.1, 4.2e-5, 2.4e-5, 2.4e-5), joint="fixed")
+    assert found(tmp_path, rounded, "I009") == []
+
+
+def test_suggest_does_not_call_a_uniform_body_a_correction(tmp_path):
+    from conftest import run_cli
+
+    path = tmp_path / "robot.urdf"
+    path.write_text('<robot name="r">' + BASE + arm("link1", LINK + inertial(5, 0.70337, 0.70661, 0.009, xyz="0 0 0.23")) + "</robot>")
+    out = run_cli("inertia", "--suggest", str(path)).stdout.decode()
+    assert "<!-- link 'link1': a uniform body filling its collision box" in out and "corrected" not in out
+
+
+# -- A.2: near-zero numbers --------------------------------------------------------------
+def test_rounding_noise_is_zero_and_makes_a_point_mass_not_an_invalid_tensor(tmp_path):
+    # iCub's head: 1.3 kg, one product of inertia of 2.4e-35 and the rest 0
+    noise = BASE + arm("head", box("0.2 0.2 0.2") + inertial(1.33687, 0, 0, 0, ixz=2.40741e-35))
+    assert [(c, s) for c, s, _ in found(tmp_path, noise, "I004", "I005", "I006")] == [("I004", "warning")]
+    # a real product of inertia making it invalid is still I005
+    invalid = BASE + arm("head", box("0.2 0.2 0.2") + inertial(1.3, 0.001, 0.001, 0.001, ixz=0.005))
+    assert [c for c, _, _ in found(tmp_path, invalid, "I004", "I005", "I006")] == ["I005"]
+
+
+# -- A.3: bodies, not links --------------------------------------------------------------
+def test_a_collision_on_a_fixed_child_covers_the_moving_body(tmp_path):
+    visual = '<visual><geometry><box size="0.1 0.1 0.3"/></geometry></visual>'
+    torso = BASE + arm("torso", visual + inertial(5, 0.04, 0.04, 0.01), extra="")
+    shape = arm("torso_collision", box("0.1 0.1 0.3"), joint="fixed", parent="torso")
+    assert found(tmp_path, torso + shape, "D003") == []  # romeo's torso
+    (code, severity, message), = found(tmp_path, torso, "D003")
+    assert severity == "warning" and "'torso'" in message
+
+
+def test_a_model_without_any_collision_gets_one_note(tmp_path):
+    visual = '<visual><geometry><box size="0.1 0.1 0.3"/></geometry></visual>'
+    display = f'<link name="base">{visual}</link>' + arm("a", visual) + arm("b", visual, parent="a")
+    assert [(c, s) for c, s, _ in found(tmp_path, display, "D003")] == [("D003", "info")]
+
+
+def test_a_massless_link_between_joints_of_a_massive_link_is_clean(tmp_path):
+    # human.urdf's hips: three revolute joints through two massless *_virtual links
+    hip = BASE + arm("hip_virtual", "") + arm("hip_virtual_2", "", parent="hip_virtual")
+    hip += arm("upper_leg", box("0.1 0.1 0.4", "0 0 -0.2") + inertial(9, 0.13, 0.13, 0.015, xyz="0 0 -0.2"), parent="hip_virtual_2")
+    assert found(tmp_path, hip, "I002") == []
+
+
+def test_a_massless_moving_branch_is_one_warning_naming_its_links(tmp_path):
+    # romeo's fingers: three massless phalanges driven by one joint and its mimics
+    finger = BASE + arm("finger1", "") + arm("finger2", "", parent="finger1") + arm("finger3", "", parent="finger2")
+    (code, severity, message), = found(tmp_path, finger, "I002")
+    assert severity == "warning" and "'finger1', 'finger2', 'finger3'" in message and "joint 'finger1_joint'" in message
+
+
+def test_a_light_frame_on_a_fixed_joint_is_not_a_point_mass(tmp_path):
+    frame = BASE + arm("imu", inertial(0.005, 0, 0, 0), joint="fixed")
+    assert found(tmp_path, frame, "I004") == []
+    sensor = BASE + arm("ft_sensor", inertial(0.1, 0, 0, 0), joint="fixed")  # tiago's wrist_ft_link
+    assert [c for c, _, _ in found(tmp_path, sensor, "I004", "I009")] == ["I004"]  # one cause, one diagnostic
+
+
+def test_an_invalid_tensor_on_a_dummy_link_of_a_heavier_body_draws_nothing(tmp_path):
+    # ANYmal's root: 1e-6 kg with every element 1e-6, fixed to the real base
+    dummy = '<link name="root">' + inertial(1e-6, 1e-6, 1e-6, 1e-6, 1e-6, 1e-6, 1e-6) + "</link>"
+    dummy += arm("base", box("0.4 0.4 0.1") + inertial(10, 0.14, 0.14, 0.27), joint="fixed", parent="root")
+    assert found(tmp_path, dummy, "I005", "I006", "I011") == []
+
+
+# -- A.4: one cause, one diagnostic ------------------------------------------------------
+def test_identity_on_many_links_is_one_diagnostic(tmp_path):
+    # simple_humanoid: the identity on every link
+    body = '<link name="base">' + box("0.3 0.3 0.3") + inertial(27, 1, 1, 1) + "</link>"
+    body += arm("a", box("0.1 0.1 0.3") + inertial(2, 1, 1, 1)) + arm("b", box("0.1 0.1 0.3") + inertial(1, 1, 1, 1), parent="a")
+    diagnostics = found(tmp_path, body, "I007", "I008", "I009")
+    assert [c for c, _, _ in diagnostics] == ["I007"] and "'base', 'a' and 'b'" in diagnostics[0][2]
+
+
+def test_a_tensor_shared_by_links_of_different_size_is_one_diagnostic(tmp_path):
+    # PR2's casters: one tensor on the 3.5 kg caster body and its 0.44 kg wheels
+    tensor = inertial(3.5, 0.0124, 0.0152, 0.0118)
+    wheel = inertial(0.44, 0.0124, 0.0152, 0.0118)
+    casters = BASE + arm("caster", box("0.1 0.1 0.1") + tensor) + arm("wheel_l", box("0.08 0.02 0.08") + wheel, parent="caster")
+    casters += arm("wheel_r", box("0.08 0.02 0.08") + wheel, parent="caster")
+    diagnostics = found(tmp_path, casters, "I008", "I009")
+    assert [c for c, _, _ in diagnostics] == ["I008"]
+    assert "'caster', 'wheel_l' and 'wheel_r'" in diagnostics[0][2]
+
+
+def test_identical_links_sharing_a_tensor_and_light_dummies_are_not_placeholders(tmp_path):
+    wheel = box("0.08 0.02 0.08") + inertial(0.44, 0.000250, 0.000469, 0.000250)
+    twins = BASE + arm("wheel_l", wheel) + arm("wheel_r", wheel)
+    assert found(tmp_path, twins, "I008") == []
+    frames = BASE + arm("tool", inertial(0.001, 1e-5, 1e-5, 1e-5), joint="fixed") + arm("camera", inertial(0.01, 1e-5, 1e-5, 1e-5), joint="fixed")
+    assert found(tmp_path, frames, "I008") == []
+
+
+def test_links_sharing_an_invalid_tensor_are_one_diagnostic(tmp_path):
+    invalid = inertial(0.05, 0.001, 0.001, 0.01)
+    mounts = BASE + arm("mount", box("0.05 0.05 0.05") + invalid, joint="fixed") + arm("stereo", box("0.05 0.05 0.05") + invalid, joint="fixed")
+    diagnostics = found(tmp_path, mounts, "I006", "I008", "I009")
+    assert [c for c, _, _ in diagnostics] == ["I006"] and "links 'mount' and 'stereo'" in diagnostics[0][2]
+
+
+# -- A.5: root inertia ---------------------------------------------------------------------
+def test_root_inertia_is_a_note_and_a_dummy_root_is_silent(tmp_path):
+    assert [(c, s) for c, s, _ in found(tmp_path, BASE, "I011")] == [("I011", "info")]
+    dummy = '<link name="base">' + box("0.4 0.4 0.1") + inertial(1e-6, 1e-9, 1e-9, 1e-9) + "</link>"
+    assert found(tmp_path, dummy, "I011") == []
+
+
+# -- C.8, C.9: limits that stop a joint ---------------------------------------------------
+def limited(joint_type: str, limit: str, mimic: str = "") -> str:
+    return ('<link name="base"/><link name="wheel"/>'
+            f'<joint name="wheel_joint" type="{joint_type}"><parent link="base"/><child link="wheel"/>'
+            f'<axis xyz="0 1 0"/>{limit}{mimic}</joint>')
+
+
+@pytest.mark.parametrize("joint_type, limit, flagged", [
+    ("revolute", '<limit effort="10" velocity="5"/>', True),  # centauro's j_wheel_1: range [0, 0]
+    ("prismatic", '<limit effort="10" velocity="5"/>', True),
+    ("revolute", '<limit upper="1.5" effort="10" velocity="5"/>', False),  # [0, 1.5] is a range
+    ("continuous", '<limit effort="10" velocity="5"/>', False),
+])
+def test_a_revolute_joint_without_a_range(tmp_path, joint_type, limit, flagged):
+    diagnostics = found(tmp_path, limited(joint_type, limit), "J013")
+    assert [(c, s) for c, s, _ in diagnostics] == ([("J013", "warning")] if flagged else [])
+
+
+def test_zero_effort_or_velocity_on_a_driven_joint(tmp_path):
+    # romeo's LHand
+    (code, severity, message), = found(tmp_path, limited("revolute", '<limit lower="0" upper="1" effort="0" velocity="0"/>'), "J014")
+    assert severity == "warning" and "effort=0 and velocity=0" in message
+    assert [c for c, _, _ in found(tmp_path, limited("continuous", '<limit effort="10" velocity="-1"/>'), "J014")] == ["J014"]
+    # a mimic joint follows another and is not driven
+    mimic = limited("revolute", '<limit lower="0" upper="1" effort="0" velocity="0"/>', '<mimic joint="drive"/>')
+    mimic += '<link name="hub"/><joint name="drive" type="continuous"><parent link="base"/><child link="hub"/></joint>'
+    assert found(tmp_path, mimic, "J014") == []
+    assert found(tmp_path, limited("revolute", '<limit lower="0" upper="1" effort="5" velocity="2"/>'), "J014") == []
+
+
+def test_severities_are_as_documented():
+    from urdfcli.rules import rule
+
+    assert rule("I011").severity is Severity.INFO
+    for code in ("I002", "I004", "I008", "I009", "J013", "J014", "D003"):
+        assert rule(code).severity is Severity.WARNING
