@@ -413,7 +413,6 @@ def visual_without_collision(loaded):
     ```
     """
     from ..kinematics import bodies
-    from . import INFO
 
     links = loaded.robot.links
     bare = []  # (body, its first link with a visual) for each moving body without collision
