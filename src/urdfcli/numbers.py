@@ -8,6 +8,7 @@ spaces only (tabs and newlines are not separators), empty pieces skipped.
 
 from __future__ import annotations
 
+import functools
 import math
 import re
 
@@ -61,8 +62,12 @@ def _malformed(text: str):
     raise NumberError("V001", f"{shown(text)} is not a number")
 
 
+@functools.lru_cache(maxsize=4096)
 def parse_vector(text: str, length: int = 3) -> tuple[float, ...]:
-    """Raises NumberError, or VectorLengthError for a wrong count of components."""
+    """Raises NumberError, or VectorLengthError for a wrong count of components.
+
+    Remembered by text: models repeat a few vectors over and over (the 69
+    example-robot-data URDFs hold 16,445 vectors with 1,971 distinct texts)."""
     if not text.strip(_VECTOR_CHARACTERS):
         # The common case, whole: as in parse_double, float() then accepts exactly urdfdom's numbers.
         try:
