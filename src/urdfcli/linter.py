@@ -21,7 +21,7 @@ from .diagnostics import Diagnostic, Severity
 from .load import STDIN, InputError, LoadOptions, load, load_document, read_input
 from .loaded import Loaded
 from .packages import PackageError, PackageResolver
-from .rules import load_all
+from .rules import rule
 from . import positions, suppressions
 
 # xacro's words for $(arg NAME) when NAME has no value, and what urdfcli says instead
@@ -83,10 +83,8 @@ def configured(
     """A loaded file's diagnostics (or the ``diagnostics`` given, found on it)
     after configuration and suppression comments. A suppression naming a rule
     that did not run under ``checks`` is not reported as unused."""
-    registry = load_all()
-
     def ran(code: str) -> bool:
-        spec = registry[code]
+        spec = rule(code)  # loads every rule module only for a code not met yet
         return checks == "all" or spec.function is None or (checks == "check" and spec.in_check)
 
     rerun = diagnostics is None
@@ -95,10 +93,10 @@ def configured(
     if rerun and configured_options and loaded.robot is not None and loaded.robot.element is not None:
         diagnostics = [d for d in diagnostics if d.code not in configured_options]
         for code, values in configured_options.items():
-            diagnostics.extend(registry[code].run(loaded, values))
+            diagnostics.extend(rule(code).run(loaded, values))
 
     def enabled(code: str, file: str) -> bool:
-        return config.enabled(registry[code], path, file)
+        return config.enabled(rule(code), path, file)
 
     unreadable = loaded.document.root is None  # why nothing was checked is never selected away
     selected = [d for d in diagnostics if unreadable or enabled(d.code, d.file)]

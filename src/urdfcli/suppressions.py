@@ -134,7 +134,7 @@ def apply(diagnostics: list[Diagnostic], suppressions: list[Suppression], enable
                 silenced = True
         if not silenced:
             kept.append(diagnostic)
-    known = load_all()
+    known = load_all() if suppressions else {}
     for suppression in suppressions:
         where = Location(suppression.file, suppression.line, suppression.column)
         kind = suppression.kind
