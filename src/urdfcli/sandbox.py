@@ -25,6 +25,10 @@ expansion in a child process limited in time and memory.
 from __future__ import annotations
 
 import ast
+import atexit
+import contextlib
+import gc
+import io
 import os
 import pickle
 import selectors
@@ -191,14 +195,40 @@ def restrict(symbols: dict) -> None:
 
 # -- the time and memory bound ------------------------------------------------------
 def bounded(function, *args):
-    """``function(*args)`` in a forked child with at most TIMEOUT_SECONDS and MEMORY_MIB more memory.
+    """``function(*args)`` in a forked process with at most TIMEOUT_SECONDS and MEMORY_MIB more memory.
 
     Returns its result or raises its exception; raises LimitExceeded when the
-    child runs out of time or memory. Where fork is missing, runs in-process.
+    process runs out of time or memory (or dies). A job that can be pickled goes
+    to one worker forked for the whole run (see :class:`_Worker`); any other
+    runs in a child forked for it. Where fork is missing, runs in-process.
     """
-    seconds, memory_mib = TIMEOUT_SECONDS, MEMORY_MIB
     if not hasattr(os, "fork"):
         return function(*args)
+    try:
+        job = _dumps_job(function, args)
+    except (pickle.PicklingError, TypeError, AttributeError, OSError):  # a lambda, a lost working folder...
+        return _bounded_once(function, args)
+    seconds, memory_mib = TIMEOUT_SECONDS, MEMORY_MIB
+    data = _Worker.for_run(memory_mib).run(job, seconds)
+    if data is _RETIRED:  # it retired before taking the job: a new one takes it
+        data = _Worker.for_run(memory_mib).run(job, seconds)
+    if not data:
+        _ended(data, seconds, memory_mib)
+    ok, value = pickle.loads(data)
+    if ok:
+        return value
+    raise value
+
+
+def _ended(data: bytes | None, seconds: float, memory_mib: int):
+    if data is None:
+        raise LimitExceeded(f"it took longer than {seconds:g} s")
+    raise LimitExceeded(f"its process ended without a result (more than {memory_mib} MiB of memory?)")
+
+
+def _bounded_once(function, args):
+    """``bounded`` for a job that cannot be pickled: a child forked for it alone."""
+    seconds, memory_mib = TIMEOUT_SECONDS, MEMORY_MIB
     read_end, write_end = os.pipe()
     pid = os.fork()
     if pid == 0:  # the child: never returns
@@ -210,10 +240,8 @@ def bounded(function, *args):
     finally:
         os.close(read_end)
         _reap(pid)
-    if data is None:
-        raise LimitExceeded(f"it took longer than {seconds:g} s")
     if not data:
-        raise LimitExceeded(f"its process ended without a result (more than {memory_mib} MiB of memory?)")
+        _ended(data, seconds, memory_mib)
     ok, value = pickle.loads(data)
     if ok:
         return value
@@ -224,16 +252,7 @@ def _run_child(write_end: int, memory_mib: int, function, args) -> None:
     status = 0
     try:
         _limit_memory(memory_mib)
-        try:
-            outcome = (True, function(*args))
-        except MemoryError:
-            outcome = (False, LimitExceeded(f"it needed more than {memory_mib} MiB of memory"))
-        except BaseException as error:  # noqa: BLE001 - sent to the parent as it is
-            outcome = (False, error)
-        try:
-            payload = pickle.dumps(outcome)
-        except Exception as error:  # noqa: BLE001
-            payload = pickle.dumps((False, RuntimeError(f"{type(error).__name__}: {error}")))
+        payload = _dumps_outcome(_outcome(function, args, memory_mib))
         with os.fdopen(write_end, "wb") as stream:
             stream.write(payload)
     except BaseException:  # noqa: BLE001 - the parent reports an empty answer
@@ -242,12 +261,222 @@ def _run_child(write_end: int, memory_mib: int, function, args) -> None:
         os._exit(status)
 
 
+def _outcome(function, args, memory_mib: int) -> tuple:
+    try:
+        return (True, function(*args))
+    except MemoryError:
+        return (False, LimitExceeded(f"it needed more than {memory_mib} MiB of memory"))
+    except BaseException as error:  # noqa: BLE001 - sent to the parent as it is
+        return (False, error)
+
+
+def _dumps_outcome(outcome: tuple) -> bytes:
+    try:
+        return pickle.dumps(outcome)
+    except Exception as error:  # noqa: BLE001
+        return pickle.dumps((False, RuntimeError(f"{type(error).__name__}: {error}")))
+
+
+# -- one worker for the run ------------------------------------------------------------
+RETIRE_MIB = 64  # a worker that kept this much more memory after a job is replaced
+_RETIRING = b"retiring"  # the worker's last message (never a pickle: those start with 0x80)
+_RETIRED = object()
+
+
+class _Worker:
+    """A process forked once per run that takes jobs, each under the same bounds.
+
+    Forking a child per xacro file costs tens of milliseconds, and more the larger
+    the parent has grown (its whole memory is mapped into the child and torn down
+    after). The worker is forked at the first job, while the parent is small. A job
+    is ``(function, args)`` pickled, with the parent's environment and working
+    folder; the answer is pickled back. The worker has the same memory limit as a
+    child per job had; one that ran out of time is killed, one that died is
+    reported, and either is replaced at the next job. After answering, the worker
+    frees the job's cyclic garbage while the parent goes on; one that kept more
+    than RETIRE_MIB of memory retires (says so and ends), so that every job has its
+    whole allowance.
+    """
+
+    _current: _Worker | None = None
+
+    def __init__(self, memory_mib: int):
+        jobs_read, self.jobs = os.pipe()
+        self.answers, answers_write = os.pipe()
+        self.memory_mib = memory_mib
+        self.owner = os.getpid()
+        self.pid = os.fork()
+        if self.pid == 0:  # the worker: never returns
+            os.close(self.jobs)
+            os.close(self.answers)
+            _serve(jobs_read, answers_write, memory_mib)
+        os.close(jobs_read)
+        os.close(answers_write)
+
+    @classmethod
+    def for_run(cls, memory_mib: int) -> _Worker:
+        current = cls._current
+        if current is not None and current.owner != os.getpid():
+            current = cls._current = None  # inherited by a forked process: its parent's, not ours
+        if current is not None and current.memory_mib != memory_mib:
+            current.stop()
+            current = None
+        if current is None:
+            current = cls._current = cls(memory_mib)
+            atexit.register(current.stop)
+        return current
+
+    def run(self, job: bytes, seconds: float):
+        """The answer; None when the time ran out, b"" when the worker died, _RETIRED
+        when it retired without taking the job. The worker is stopped unless it answered."""
+        answer = None
+        with selectors.DefaultSelector() as selector:  # a notice or an end since the last job?
+            selector.register(self.answers, selectors.EVENT_READ)
+            pending = bool(selector.select(0))
+        if not pending:
+            try:
+                _write_message(self.jobs, job)
+                answer = _read_message(self.answers, time.monotonic() + seconds)
+            except OSError:  # BrokenPipeError: it ended before reading the job
+                pending = True
+        if pending:
+            answer = _read_message(self.answers, time.monotonic() + 1)
+            answer = _RETIRED if answer == _RETIRING else b""
+        if answer is None or answer is _RETIRED or not answer:
+            self.stop()
+        return answer
+
+    def stop(self) -> None:
+        if self.owner != os.getpid() or self.pid is None:
+            return
+        for fd in (self.jobs, self.answers):
+            with contextlib.suppress(OSError):
+                os.close(fd)
+        _reap(self.pid)
+        self.pid = None
+        if _Worker._current is self:
+            _Worker._current = None
+
+
+def _serve(jobs: int, answers: int, memory_mib: int) -> None:
+    status = 0
+    try:
+        gc.freeze()  # what the parent had: never scanned here, so never copied
+        _limit_memory(memory_mib)
+        baseline = _memory_used()
+        while True:
+            job = _read_message(jobs, None)
+            if not job:
+                break  # the parent is gone
+            try:
+                function, args, environ, cwd = pickle.loads(job)
+                os.environ.clear()
+                os.environ.update(environ)
+                with contextlib.suppress(OSError):
+                    os.chdir(cwd)
+            except BaseException as error:  # noqa: BLE001 - told to the parent
+                outcome = (False, error)
+            else:
+                outcome = _outcome(function, args, memory_mib)
+            job = function = args = None
+            _write_message(answers, _dumps_outcome(outcome))
+            outcome = None
+            gc.collect()  # xacro's DOM is cyclic: freed while the parent goes on
+            if _memory_used() > baseline + RETIRE_MIB * 1024 * 1024:
+                _write_message(answers, _RETIRING)
+                break
+    except BaseException:  # noqa: BLE001 - the parent reports an empty answer
+        status = 1
+    finally:
+        os._exit(status)
+
+
+def _dumps_job(function, args) -> bytes:
+    stream = io.BytesIO()
+    _JobPickler(stream, pickle.HIGHEST_PROTOCOL).dump((function, args, dict(os.environ), os.getcwd()))
+    return stream.getvalue()
+
+
+class _JobPickler(pickle.Pickler):
+    """Pickles an lxml element as its whole document and the source line of each node."""
+
+    def reducer_override(self, obj):
+        if type(obj).__module__ == "lxml.etree" and hasattr(obj, "getroottree"):
+            return _element, _element_state(obj)
+        return NotImplemented
+
+
+_MAX_LINE = 65_534  # libxml2 keeps a node's line in 16 bits: a set line beyond this would not hold
+
+
+def _element_state(element) -> tuple:
+    from lxml import etree
+
+    root = element.getroottree().getroot()
+    nodes = list(root.iter())
+    lines = [node.sourceline for node in nodes]
+    if max((line or 0 for line in lines), default=0) > _MAX_LINE:
+        raise pickle.PicklingError("a document of more lines than libxml2 sets")
+    return etree.tostring(element.getroottree(), encoding="utf-8"), lines, nodes.index(element)
+
+
+def _element(text: bytes, lines: list, index: int):
+    from .xmlsafe import parse_bytes
+
+    root = parse_bytes(text)
+    nodes = list(root.iter())
+    for node, line in zip(nodes, lines):
+        if line is not None:
+            node.sourceline = line
+    return nodes[index]
+
+
+def _write_message(fd: int, payload: bytes) -> None:
+    data = memoryview(len(payload).to_bytes(8, "little") + payload)
+    while data:
+        data = data[os.write(fd, data):]
+
+
+def _read_message(fd: int, deadline: float | None) -> bytes | None:
+    """One message from ``fd``: None at the deadline, b"" when the writer is gone."""
+    header = _read_exactly(fd, 8, deadline)
+    if not header:
+        return header
+    return _read_exactly(fd, int.from_bytes(header, "little"), deadline)
+
+
+def _read_exactly(fd: int, size: int, deadline: float | None) -> bytes | None:
+    chunks, left = [], size
+    with selectors.DefaultSelector() as selector:
+        selector.register(fd, selectors.EVENT_READ)
+        while left:
+            if deadline is not None:
+                wait = deadline - time.monotonic()
+                if wait <= 0 or not selector.select(wait):
+                    return None
+            chunk = os.read(fd, min(left, 1 << 20))
+            if not chunk:
+                return b""
+            chunks.append(chunk)
+            left -= len(chunk)
+    return b"".join(chunks)
+
+
+def _memory_used() -> int:
+    try:
+        with open("/proc/self/statm") as statm:
+            return int(statm.read().split()[0]) * os.sysconf("SC_PAGE_SIZE")
+    except (OSError, ValueError):
+        return 0
+
+
 def _limit_memory(memory_mib: int) -> None:
     try:
         import resource
 
-        with open("/proc/self/statm") as statm:
-            used = int(statm.read().split()[0]) * os.sysconf("SC_PAGE_SIZE")
+        used = _memory_used()
+        if not used:
+            return  # no /proc here: the time bound still holds
         limit = used + memory_mib * 1024 * 1024
         resource.setrlimit(resource.RLIMIT_AS, (limit, limit))
     except (ImportError, OSError, ValueError):
