@@ -15,8 +15,9 @@ demo: $(VENV)/.installed system-runtime
 	$(BIN)/urdfcli check $(DEMO)
 	$(BIN)/urdfcli tree $(DEMO)
 
+# Tests run in parallel, one worker per core; `--dist worksteal` evens out the slow files.
 test: $(VENV)/.installed system-test
-	$(BIN)/python -m pytest
+	$(BIN)/python -m pytest -n auto --dist worksteal
 
 bench: $(VENV)/.installed system-test
 	$(BIN)/python benchmarks/run.py
