@@ -68,3 +68,16 @@ def test_corpus_diagnostics_are_the_same_with_or_without_xacro(path, monkeypatch
     expanded = load(str(path))
     assert expanded.document.is_xacro
     assert expanded.diagnostics == plain.diagnostics
+
+
+@pytest.mark.parametrize(
+    "data, uses",
+    [
+        (b'<robot name="r"><!-- <origin xyz="${x}"/> $(arg a) --><link name="a"/></robot>', False),  # kept from the xacro source
+        (b'<robot name="r"><!-- ${x} --><link name="${x}"/></robot>', True),
+        (b'<robot name="r" xmlns:xacro="http://wiki.ros.org/xacro"><!-- http://wiki.ros.org/xacro --><link name="a"/></robot>', False),
+        (b'<robot name="r"><macro xmlns="http://www.ros.org/wiki/xacro" name="m"/></robot>', True),  # a default namespace
+    ],
+)
+def test_xacro_use_is_told_apart_from_comments_and_declarations(data, uses):
+    assert is_xacro(parse_bytes(data), data) is uses

@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import functools
 import gc
+import re
 import sys
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -64,6 +65,10 @@ _XACRO_ELEMENT = "//*[" + " or ".join(f"namespace-uri() = '{ns}'" for ns in sort
 _SUBSTITUTION = "//@*[contains(., '${') or contains(., '$(')] | //text()[contains(., '${') or contains(., '$(')]"
 _HAS_XACRO_ELEMENT = etree.XPath(f"boolean({_XACRO_ELEMENT})")
 _USES_XACRO = etree.XPath(f"boolean({_XACRO_ELEMENT} | {_SUBSTITUTION})")
+_COMMENT = re.compile(rb"<!--.*?-->", re.DOTALL)
+_XACRO_TAGS = tuple(f"{{{ns}}}*" for ns in sorted(XACRO_NAMESPACES))
+_XACRO_URI = re.compile(b"|".join(re.escape(ns.encode()) for ns in sorted(XACRO_NAMESPACES)))
+_XACRO_PREFIX_DECLARED = re.compile(rb"""xmlns:xacro\s*=\s*["'](?:""" + _XACRO_URI.pattern + rb""")["']""")
 
 
 def is_xacro(root: etree._Element, data: bytes) -> bool:
@@ -72,10 +77,25 @@ def is_xacro(root: etree._Element, data: bytes) -> bool:
     or in text outside comments. A namespace declaration alone is not use: xacro's
     output would read the same, at many times the cost."""
     encoding = (root.getroottree().docinfo.encoding or "").lower().replace("-", "")
-    if encoding in _ASCII_COMPATIBLE and b"${" not in data and b"$(" not in data:
-        # A byte search first: much faster than XPath on a large model.
-        return b"xacro" in data and bool(_HAS_XACRO_ELEMENT(root))
+    if encoding in _ASCII_COMPATIBLE and not _substitution_outside_comments(data):
+        # Byte searches first: much faster than XPath, which reads every element.
+        if b"<xacro:" in data:
+            return bool(_HAS_XACRO_ELEMENT(root))  # prefixed xacro: bound to any namespace
+        if b"xacro" not in data:
+            return False
+        if len(_XACRO_URI.findall(data)) == len(_XACRO_PREFIX_DECLARED.findall(data)):
+            return False  # each mention of xacro's namespace binds the prefix xacro, which no element uses
+        return next(root.iter(_XACRO_TAGS), None) is not None  # xacro's namespace under another prefix
     return bool(_USES_XACRO(root))
+
+
+def _substitution_outside_comments(data: bytes) -> bool:
+    """Whether ``${`` or ``$(`` may be read by xacro: outside comments (generated URDFs
+    often keep the xacro they came from in comments)."""
+    if b"${" not in data and b"$(" not in data:
+        return False
+    bare = _COMMENT.sub(b"", data)
+    return b"${" in bare or b"$(" in bare
 
 
 def _error(code: str, message: str, location: Location, hint: str | None = None) -> Diagnostic:
