@@ -1,25 +1,31 @@
-"""urdfcli against check_urdf and xacro, side by side, on generated models.
+"""urdfcli against check_urdf and xacro, side by side, on the work they both do.
 
 Run with ``make bench`` (or ``python benchmarks/run.py`` in the venv that has
-urdfcli). It writes its models under ``benchmarks/generated/``:
+urdfcli; ``--quick`` runs fewer repetitions and leaves out the 100k-link tree).
+It measures every target of "What must hold" in one run:
 
-- chains and trees (three children per link) of 1k, 10k and 100k links, each
-  link with an inertial, a visual and a collision, each joint revolute;
-- ``mixed/``: ~70 models of 4-200 KB made from the fixtures (xacro ones
-  expanded with ``urdfcli expand``), scaled by replicating their links and
-  joints under new names.
+1. ``check`` (and ``lint``) on the 69 URDFs of the installed
+   ``example-robot-data`` package in one call, against a ``check_urdf`` shell loop;
+2. ``check``, ``tree`` and ``expand`` on one small file, against
+   ``python -c 'import lxml.etree'``, the floor of any Python tool;
+3. the bundled xacro fixtures that the ``xacro`` tool expands on its own (no
+   ``$(find)``), ``check`` against ``xacro X | check_urdf`` and ``expand`` against
+   ``xacro``; the same on a generated model of 1,500 macro calls;
+4. ``check`` on a generated tree of 100,000 links (each with an inertial, a
+   visual and a collision) against ``check_urdf``, time and peak memory; and
+   ``check``, ``tree`` and ``lint`` on it against the 10,000-link tree.
 
-Every measurement is a separate process; wall time and peak memory (maximum
-resident set size, from ``wait4``) are medians of several runs. It prints a
-Markdown table with ratios and whether each target is met. Targets are
-reported, never asserted.
+Models are written under ``benchmarks/generated/``. Every measurement is a
+separate process with its output discarded; the two commands of a comparison
+run in turn, and a ratio is the median of urdfcli's runs over the median of the
+other's (wall time; memory is peak resident set size, from ``wait4``, which
+includes a command's children). Targets are reported, never asserted.
 """
 
 from __future__ import annotations
 
 import compileall
-import copy
-import math
+import importlib.metadata
 import os
 import platform
 import re
@@ -31,16 +37,13 @@ import time
 from dataclasses import dataclass
 from pathlib import Path
 
-from lxml import etree
-
 ROOT = Path(__file__).resolve().parent.parent
 FIXTURES = ROOT / "fixtures"
 GENERATED = ROOT / "benchmarks" / "generated"
 BIN = Path(sys.executable).parent
-SIZES = (1_000, 10_000, 100_000)
-RUNS = {1_000: 5, 10_000: 3, 100_000: 2}  # fewer repetitions where one run takes seconds
 SMALL = FIXTURES / "seed000" / "my_robot.urdf"
-MIXED_SIZES_KB = (5, 40, 100, 200)
+MACRO_CALLS = 1_500
+QUICK = "--quick" in sys.argv[1:]
 
 
 # -- running and measuring -----------------------------------------------------
@@ -58,18 +61,27 @@ def _seconds(value: float) -> str:
     return f"{value * 1000:.0f} ms" if value < 1 else f"{value:.2f} s"
 
 
-def measure(command: list[str], runs: int) -> Measure:
-    """Median wall time and median peak RSS of ``runs`` runs, output discarded."""
-    print("  " + " ".join(Path(part).name if os.sep in part else part for part in command[:3]) + (" ..." if len(command) > 3 else ""), flush=True)
-    times, peaks, status = [], [], 0
+def _once(command: list[str]) -> tuple[float, float, int]:
+    start = time.perf_counter()
+    process = subprocess.Popen(command, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+    _, wait_status, usage = os.wait4(process.pid, 0)
+    seconds = time.perf_counter() - start
+    process.returncode = os.waitstatus_to_exitcode(wait_status)
+    return seconds, usage.ru_maxrss / 1024, process.returncode  # ru_maxrss: KiB on Linux
+
+
+def measure(*commands: list[str], runs: int) -> list[Measure]:
+    """Median wall time and peak RSS of each command, the commands run in turn ``runs`` times."""
+    for command in commands:
+        print("  " + " ".join(Path(p).name if os.sep in p else p for p in command[:4]) + (" ..." if len(command) > 4 else ""), flush=True)
+    samples: list[list[tuple[float, float, int]]] = [[] for _ in commands]
     for _ in range(runs):
-        start = time.perf_counter()
-        process = subprocess.Popen(command, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
-        _, wait_status, usage = os.wait4(process.pid, 0)
-        times.append(time.perf_counter() - start)
-        peaks.append(usage.ru_maxrss / 1024)  # KiB on Linux
-        process.returncode = status = os.waitstatus_to_exitcode(wait_status)
-    return Measure(statistics.median(times), statistics.median(peaks), status)
+        for index, command in enumerate(commands):
+            samples[index].append(_once(command))
+    return [
+        Measure(statistics.median(s for s, _, _ in runs_of), statistics.median(m for _, m, _ in runs_of), max(c for _, _, c in runs_of))
+        for runs_of in samples
+    ]
 
 
 def tool(name: str) -> str | None:
@@ -83,7 +95,12 @@ def urdfcli(*args: str) -> list[str]:
     return [script, *args] if script else [sys.executable, "-m", "urdfcli", *args]
 
 
-# -- generated models ------------------------------------------------------------
+def shell(script: str, *args: str) -> list[str]:
+    """``bash -c script`` with ``args`` as $0, $1, ...: a loop or a pipe of programs."""
+    return ["bash", "-c", script, *args]
+
+
+# -- inputs ----------------------------------------------------------------------
 LINK = """  <link name="link_{i}">
     <inertial>
       <origin xyz="0 0 0.05" rpy="0 0 0"/>
@@ -111,79 +128,82 @@ JOINT = """  <joint name="joint_{i}" type="revolute">
 """
 
 
-def generate(kind: str, links: int) -> Path:
-    """A chain (each link under the previous) or a tree (three children per link)."""
-    path = GENERATED / f"{kind}_{links}.urdf"
+def generate_tree(links: int) -> Path:
+    """A tree of ``links`` links, three children per link."""
+    path = GENERATED / f"tree_{links}.urdf"
     with path.open("w", encoding="utf-8") as out:
-        out.write(f'<?xml version="1.0"?>\n<robot name="{kind}_{links}">\n')
+        out.write(f'<?xml version="1.0"?>\n<robot name="tree_{links}">\n')
         out.write('  <material name="grey"><color rgba="0.5 0.5 0.5 1"/></material>\n')
         for i in range(links):
             out.write(LINK.format(i=i))
         for i in range(1, links):
-            out.write(JOINT.format(i=i, parent=i - 1 if kind == "chain" else (i - 1) // 3))
+            out.write(JOINT.format(i=i, parent=(i - 1) // 3))
         out.write("</robot>\n")
     return path
 
 
-def fixture_bases() -> dict[str, bytes]:
-    """Every fixture that is (or expands to) a whole URDF, by name."""
-    bases = {}
-    for path in sorted(FIXTURES.rglob("*.urdf")):
-        bases[_base_name(path)] = path.read_bytes()
+MACRO = """<?xml version="1.0"?>
+<robot name="macros" xmlns:xacro="http://www.ros.org/wiki/xacro">
+  <xacro:property name="length" value="0.35"/>
+  <xacro:property name="mass" value="1.0"/>
+  <xacro:macro name="segment" params="name parent z:=0.1">
+    <link name="${{name}}">
+      <inertial>
+        <origin xyz="0 0 ${{length / 2}}" rpy="0 0 0"/>
+        <mass value="${{mass}}"/>
+        <inertia ixx="${{mass * (3 * 0.05**2 + length**2) / 12}}" ixy="0" ixz="0"
+                 iyy="${{mass * (3 * 0.05**2 + length**2) / 12}}" iyz="0" izz="${{mass * 0.05**2 / 2}}"/>
+      </inertial>
+      <visual>
+        <origin xyz="0 0 ${{length / 2}}" rpy="0 0 0"/>
+        <geometry><cylinder radius="0.05" length="${{length}}"/></geometry>
+      </visual>
+      <collision>
+        <origin xyz="0 0 ${{length / 2}}" rpy="0 0 0"/>
+        <geometry><cylinder radius="0.05" length="${{length}}"/></geometry>
+      </collision>
+    </link>
+    <joint name="${{name}}_joint" type="revolute">
+      <parent link="${{parent}}"/>
+      <child link="${{name}}"/>
+      <origin xyz="0 0 ${{z}}" rpy="0 0 0"/>
+      <axis xyz="0 0 1"/>
+      <limit lower="${{-pi / 2}}" upper="${{pi / 2}}" effort="10" velocity="1"/>
+    </joint>
+  </xacro:macro>
+  <link name="base"/>
+{calls}</robot>
+"""
+
+
+def generate_macro_model(calls: int) -> Path:
+    """A xacro model of ``calls`` calls of one macro (a link and a joint each), in a tree."""
+    path = GENERATED / f"macros_{calls}.urdf.xacro"
+    lines = []
+    for i in range(calls):
+        parent = "base" if i == 0 else f"s{(i - 1) // 3}"
+        lines.append(f'  <xacro:segment name="s{i}" parent="{parent}"/>\n')
+    path.write_text(MACRO.format(calls="".join(lines)), encoding="utf-8")
+    return path
+
+
+def corpus() -> list[Path]:
+    """The URDFs of the installed example-robot-data package (pip install -e '.[test]')."""
+    try:
+        distribution = importlib.metadata.distribution("example-robot-data")
+    except importlib.metadata.PackageNotFoundError:
+        return []
+    robots = Path(distribution.locate_file("cmeel.prefix/share/example-robot-data/robots"))
+    return sorted(robots.rglob("*.urdf"))
+
+
+def xacro_fixtures(xacro: str) -> list[Path]:
+    """The bundled .urdf.xacro fixtures the xacro tool expands without help (no $(find))."""
+    found = []
     for path in sorted(FIXTURES.rglob("*.urdf.xacro")):
-        result = subprocess.run(urdfcli("expand", str(path)), capture_output=True)
-        if result.returncode == 0 and b"<link" in result.stdout:
-            bases[_base_name(path)] = result.stdout
-    return bases
-
-
-def _base_name(path: Path) -> str:
-    relative = path.relative_to(FIXTURES)
-    return relative.parts[0] + "_" + relative.name.replace(".urdf", "").replace(".xacro", "_xacro")
-
-
-def replicate(data: bytes, copies: int) -> bytes:
-    """The model with its links, joints, gazebo and transmission elements repeated
-    ``copies`` times under new names, each copy fixed to the original root."""
-    root = etree.fromstring(data, etree.XMLParser(remove_blank_text=True, resolve_entities=False, no_network=True))
-    originals = [e for e in root if e.tag in ("link", "joint", "gazebo", "transmission")]
-    children = {c.get("link") for c in root.iterfind("joint/child")}
-    first_root = next((e.get("name") for e in root.iterfind("link") if e.get("name") not in children), None)
-    for n in range(1, copies):
-        suffix = f"_copy{n}"
-        for element in originals:
-            clone = copy.deepcopy(element)
-            for node in clone.iter(etree.Element):
-                for attribute in ("name", "reference", "link", "joint"):
-                    value = node.get(attribute)
-                    renamed = attribute != "name" or node is clone or node.tag in ("joint", "actuator")
-                    if value is not None and renamed:
-                        node.set(attribute, value + suffix)
-            root.append(clone)
-        if first_root is not None:
-            joint = etree.SubElement(root, "joint", name=f"fix{suffix}", type="fixed")
-            etree.SubElement(joint, "parent", link=first_root)
-            etree.SubElement(joint, "child", link=first_root + suffix)
-    return etree.tostring(root, xml_declaration=True, encoding="utf-8", pretty_print=True)
-
-
-def generate_mixed() -> list[Path]:
-    folder = GENERATED / "mixed"
-    shutil.rmtree(folder, ignore_errors=True)
-    folder.mkdir(parents=True)
-    written = []
-    for name, data in fixture_bases().items():
-        done = set()
-        size = len(replicate(data, 1))
-        for kilobytes in MIXED_SIZES_KB:
-            copies = max(1, math.ceil(kilobytes * 1024 / size))
-            if copies in done:
-                continue
-            done.add(copies)
-            path = folder / f"{name}_x{copies}.urdf"
-            path.write_bytes(replicate(data, copies))
-            written.append(path)
-    return written
+        if subprocess.run([xacro, str(path)], capture_output=True).returncode == 0:
+            found.append(path)
+    return found
 
 
 # -- the table -------------------------------------------------------------------
@@ -198,14 +218,31 @@ class Row:
     met: str = ""
 
 
-def ratio_text(value: float | None) -> str:
-    return "" if value is None else f"{value:.2f}"
+def verdict(ok: bool) -> str:
+    return "yes" if ok else "**no**"
+
+
+def failed(measured: Measure, allowed: tuple[int, ...] = (0, 1)) -> str:
+    return "" if measured.status in allowed else f" (exit {measured.status})"
+
+
+def compare(rows: list[Row], case: str, ours: Measure, other_name: str, theirs: Measure, limit: float | None, memory_limit: float | None = None) -> None:
+    time_ratio, memory_ratio = ours.seconds / theirs.seconds, ours.mib / theirs.mib
+    row = Row(case, f"{ours}{failed(ours)}", f"{other_name}: {theirs}{failed(theirs)}", time_ratio, memory_ratio)
+    if limit is not None:
+        row.target = f"time ≤ {limit:g}" + (f", memory ≤ {memory_limit:g}" if memory_limit is not None else "")
+        met = verdict(time_ratio <= limit)
+        if memory_limit is not None:
+            met = f"time {met}, memory {verdict(memory_ratio <= memory_limit)}"
+        row.met = met
+    rows.append(row)
 
 
 def print_table(rows: list[Row]) -> None:
     header = ("case", "urdfcli", "compared with", "time ratio", "memory ratio", "target", "met")
     cells = [header] + [
-        (r.case, r.ours, r.other, ratio_text(r.time_ratio), ratio_text(r.memory_ratio), r.target, r.met) for r in rows
+        (r.case, r.ours, r.other, "" if r.time_ratio is None else f"{r.time_ratio:.2f}", "" if r.memory_ratio is None else f"{r.memory_ratio:.2f}", r.target, r.met)
+        for r in rows
     ]
     widths = [max(len(row[i]) for row in cells) for i in range(len(header))]
     for index, row in enumerate(cells):
@@ -214,45 +251,60 @@ def print_table(rows: list[Row]) -> None:
             print("|" + "|".join("-" * (width + 2) for width in widths) + "|")
 
 
-def verdict(ok: bool) -> str:
-    return "yes" if ok else "**no**"
+# -- the cases ---------------------------------------------------------------------
+def corpus_cases(rows: list[Row], check_urdf: str) -> None:
+    files = [str(p) for p in corpus()]
+    if not files:
+        rows.append(Row("example-robot-data corpus", "not installed (pip install -e '.[test]')", ""))
+        return
+    loop = shell('for f in "$@"; do "$0" "$f"; done', check_urdf, *files)
+    runs = 3 if QUICK else 7
+    check, lint, theirs = measure(urdfcli("check", *files), urdfcli("lint", *files), loop, runs=runs)
+    compare(rows, f"check, the {len(files)} example-robot-data URDFs in one call", check, "check_urdf loop", theirs, 1.0)
+    compare(rows, f"lint, the same {len(files)} URDFs (meshes absent)", lint, "check_urdf loop", theirs, 2.0)
 
 
-def failed(measured: Measure, allowed: tuple[int, ...]) -> str:
-    return "" if measured.status in allowed else f" (exit {measured.status})"
+def small_file_cases(rows: list[Row]) -> None:
+    runs = 5 if QUICK else 11
+    floor_command = [sys.executable, "-c", "import lxml.etree"]
+    for command in ("check", "tree", "expand"):
+        ours, floor = measure(urdfcli(command, str(SMALL)), floor_command, runs=runs)
+        compare(rows, f"{command}, one small file ({SMALL.name}, {SMALL.stat().st_size:,} bytes)", ours, "python -c 'import lxml.etree'", floor, 3.0)
 
 
-# -- the measurements ----------------------------------------------------------
-def compare_check(rows: list[Row], kind: str, links: int, path: Path, check_urdf: str | None) -> Measure:
-    runs = RUNS[links]
-    case = f"check, {kind} of {links:,} links"
-    if kind == "chain" and links >= 100_000:
-        # Both tools print the tree indented by depth: ~20 GB of spaces on a 100k chain.
-        ours = measure(urdfcli("check", "--format", "concise", str(path)), runs)
-        rows.append(Row(case + " (--format concise)", str(ours) + failed(ours, (0,)), "check_urdf: not run (its tree output would be ~20 GB)"))
-        return ours
-    ours = measure(urdfcli("check", str(path)), runs)
-    if check_urdf is None:
-        rows.append(Row(case, str(ours) + failed(ours, (0,)), "check_urdf: not installed"))
-        return ours
-    theirs = measure([check_urdf, str(path)], runs)
-    row = Row(case, str(ours) + failed(ours, (0,)), f"check_urdf: {theirs}{failed(theirs, (0,))}", ours.seconds / theirs.seconds, ours.mib / theirs.mib)
-    if kind == "tree" and links == 100_000:
-        row.target = "time ≤ 0.5, memory ≤ 0.5"
-        row.met = f"time {verdict(row.time_ratio <= 0.5)}, memory {verdict(row.memory_ratio <= 0.5)}"
-    rows.append(row)
-    return ours
+def xacro_cases(rows: list[Row], check_urdf: str, xacro: str) -> None:
+    pipe = 'set -o pipefail; "$0" "$1" | "$2" /dev/stdin'
+    runs = 3 if QUICK else 7
+    fixtures = xacro_fixtures(xacro)
+    for path in fixtures:
+        name = str(path.relative_to(FIXTURES))
+        check, expand, piped, alone = measure(urdfcli("check", str(path)), urdfcli("expand", str(path)), shell(pipe, xacro, str(path), check_urdf), [xacro, str(path)], runs=runs)
+        compare(rows, f"check {name}", check, "xacro | check_urdf", piped, 1.5)
+        compare(rows, f"expand {name}", expand, "xacro", alone, 1.5)
+    model = generate_macro_model(MACRO_CALLS)
+    runs = 2 if QUICK else 3
+    check, expand, piped, alone = measure(urdfcli("check", str(model)), urdfcli("expand", str(model)), shell(pipe, xacro, str(model), check_urdf), [xacro, str(model)], runs=runs)
+    compare(rows, f"check, generated xacro model of {MACRO_CALLS:,} macro calls", check, "xacro | check_urdf", piped, 1.0)
+    compare(rows, f"expand, the same {MACRO_CALLS:,} macro calls", expand, "xacro", alone, 1.0)
 
 
-def scaling(rows: list[Row], command: str, trees: dict[int, Path], known: dict[int, Measure] | None = None) -> None:
-    case = f"{command}: 100k / 10k tree"
-    measured = known or {links: measure(urdfcli(command, str(trees[links])), RUNS[links]) for links in (10_000, 100_000)}
-    big, small = measured[100_000], measured[10_000]
-    time_ratio, memory_ratio = big.seconds / small.seconds, big.mib / small.mib
-    rows.append(
-        Row(case, f"100k: {big}{failed(big, (0, 1))}", f"10k: {small}{failed(small, (0, 1))}", time_ratio, memory_ratio, "< 12 (time and memory)",
-            verdict(time_ratio < 12 and memory_ratio < 12))
-    )
+def large_cases(rows: list[Row], check_urdf: str) -> None:
+    trees = {links: generate_tree(links) for links in (10_000, 100_000)}
+    small, big = trees[10_000], trees[100_000]
+    check_big, theirs = measure(urdfcli("check", str(big)), [check_urdf, str(big)], runs=3)
+    size = big.stat().st_size / 1e6
+    compare(rows, f"check, tree of 100,000 links ({size:.0f} MB)", check_big, "check_urdf", theirs, 1.0, 0.5)
+    for command in ("check", "tree", "lint"):
+        if command == "check":
+            (at_10k,) = measure(urdfcli(command, str(small)), runs=5)
+            at_100k = check_big
+        else:
+            at_10k, at_100k = measure(urdfcli(command, str(small)), urdfcli(command, str(big)), runs=2)
+        time_ratio, memory_ratio = at_100k.seconds / at_10k.seconds, at_100k.mib / at_10k.mib
+        rows.append(
+            Row(f"{command}: tree of 100k links / of 10k", f"100k: {at_100k}{failed(at_100k)}", f"10k: {at_10k}{failed(at_10k)}", time_ratio, memory_ratio,
+                "< 11 (time and memory)", verdict(time_ratio < 11 and memory_ratio < 11))
+        )
 
 
 def import_costs() -> str:
@@ -264,8 +316,9 @@ def import_costs() -> str:
         if match:
             name = match.group(3)
             cumulative[name] = max(cumulative.get(name, 0), int(match.group(1)))
-    shown = [f"{name} {cumulative[name] / 1000:.0f} ms" for name in ("urdfcli.cli", "typer", "pydantic", "rich.console", "networkx", "xacro", "lxml.etree") if name in cumulative]
-    absent = [name for name in ("pydantic", "networkx", "xacro") if name not in cumulative]
+    names = ("urdfcli.cli", "typer", "lxml.etree", "urdfcli.load", "rich.console", "pydantic", "networkx", "xacro", "urdfcli.inertia")
+    shown = [f"{name} {cumulative[name] / 1000:.0f} ms" for name in names if name in cumulative]
+    absent = [name for name in ("rich", "pydantic", "networkx", "xacro", "urdfcli.inertia", "numpy") if name not in cumulative]
     text = "imports of `urdfcli check` on a small file (python -X importtime, cumulative): " + ", ".join(shown)
     return text + (f"; not imported: {', '.join(absent)}" if absent else "")
 
@@ -292,64 +345,28 @@ def compile_urdfcli() -> None:
 
 def main() -> int:
     started = time.perf_counter()
-    check_urdf = shutil.which("check_urdf")
-    xacro = tool("xacro")
+    check_urdf, xacro = shutil.which("check_urdf"), tool("xacro")
+    if check_urdf is None or xacro is None:
+        print("benchmarks/run.py needs check_urdf (liburdfdom-tools) and xacro: run `make bench`", file=sys.stderr)
+        return 2
     GENERATED.mkdir(parents=True, exist_ok=True)
     print(f"machine: {machine()}", flush=True)
     compile_urdfcli()
-    print("generating models in benchmarks/generated ...", flush=True)
-    trees = {links: generate("tree", links) for links in SIZES}
-    chains = {links: generate("chain", links) for links in SIZES}
-    mixed = generate_mixed()
-    sizes = sorted(p.stat().st_size for p in mixed)
-    print(f"{len(mixed)} mixed models, {sizes[0] / 1024:.0f}-{sizes[-1] / 1024:.0f} KB", flush=True)
-
     rows: list[Row] = []
     print("measuring ...", flush=True)
-    check_trees = {}
-    for links in SIZES:
-        check_trees[links] = compare_check(rows, "tree", links, trees[links], check_urdf)
-    for links in SIZES:
-        compare_check(rows, "chain", links, chains[links], check_urdf)
-
-    files = [str(p) for p in mixed]
-    ours = measure(urdfcli("check", *files), 5)
-    case = f"{len(files)} mixed models: one `urdfcli check` vs a shell loop"
-    if check_urdf:
-        loop = ["bash", "-c", 'for f in "$@"; do "$0" "$f"; done', check_urdf, *files]
-        theirs = measure(loop, 5)
-        rows.append(Row(case, str(ours), f"check_urdf loop: {theirs}", ours.seconds / theirs.seconds, ours.mib / theirs.mib, "time < 1", verdict(ours.seconds < theirs.seconds)))
-    else:
-        rows.append(Row(case, str(ours), "check_urdf: not installed"))
-
-    largest = max(FIXTURES.rglob("*.urdf.xacro"), key=lambda p: p.stat().st_size)
-    ours = measure(urdfcli("expand", str(largest)), 7)
-    case = f"expand {largest.relative_to(FIXTURES)}"
-    if xacro:
-        theirs = measure([xacro, str(largest)], 7)
-        rows.append(Row(case, str(ours) + failed(ours, (0,)), f"xacro: {theirs}{failed(theirs, (0,))}", ours.seconds / theirs.seconds, ours.mib / theirs.mib, "time ≤ 1.10", verdict(ours.seconds <= 1.10 * theirs.seconds)))
-    else:
-        rows.append(Row(case, str(ours), "xacro: not installed"))
-
-    ours = measure(urdfcli("check", str(SMALL)), 11)
-    floor = measure([sys.executable, "-c", "import lxml.etree"], 11)
-    reference = f"python -c 'import lxml.etree': {floor}"
-    if check_urdf:
-        reference += f" (check_urdf: {measure([check_urdf, str(SMALL)], 11)})"
-    rows.append(Row(f"check, one small file ({SMALL.name})", str(ours) + failed(ours, (0,)), reference, ours.seconds / floor.seconds, ours.mib / floor.mib, "time ≤ 6", verdict(ours.seconds <= 6 * floor.seconds)))
-
-    scaling(rows, "check", trees, {links: check_trees[links] for links in (10_000, 100_000)})
-    scaling(rows, "tree", trees)
-    scaling(rows, "lint", trees)
-
+    corpus_cases(rows, check_urdf)
+    small_file_cases(rows)
+    xacro_cases(rows, check_urdf, xacro)
+    if not QUICK:
+        large_cases(rows, check_urdf)
+    load = os.getloadavg()[0] if hasattr(os, "getloadavg") else None
     print()
-    print(f"Measured on {machine()}; medians of {RUNS[1_000]} runs (1k), {RUNS[10_000]} (10k) and {RUNS[100_000]} (100k), 5 to 11 for the rest.")
-    print("Ratios are urdfcli / the other; memory is peak resident set size.")
+    print(f"Measured on {machine()}; ratios are urdfcli / the other (medians of runs taken in turn); memory is peak resident set size.")
     print()
     print_table(rows)
     print()
     print(import_costs())
-    print(f"\nbenchmark run time: {time.perf_counter() - started:.0f} s")
+    print(f"\nbenchmark run time: {time.perf_counter() - started:.0f} s" + (f"; load average at the end: {load:.1f}" if load is not None else ""))
     return 0
 
 
