@@ -332,6 +332,27 @@ DENSEST = 22600.0
 geometry (a millimetre sphere standing in for a finger), which then proves nothing."""
 
 AXES = ("ixx", "iyy", "izz")
+TURNED = 30.0  # degrees between principal axes that say the axes are swapped or rotated
+DISTINCT = 0.15  # a principal moment this far (relative to the largest) from the others has a well-defined axis
+
+
+def axes_apart(a: Matrix, b: Matrix) -> float:
+    """The largest angle (degrees) between matching principal axes of two tensors, over the
+    axes whose moment stands apart from the other two in both (others are not defined)."""
+    import numpy
+
+    worst = 0.0
+    eig_a, eig_b = numpy.linalg.eigh(numpy.array(a)), numpy.linalg.eigh(numpy.array(b))
+    for i in range(3):
+        if all(_distinct(moments, i) for moments in (eig_a[0], eig_b[0])):
+            cosine = abs(float(numpy.dot(eig_a[1][:, i], eig_b[1][:, i])))
+            worst = max(worst, math.degrees(math.acos(min(1.0, cosine))))
+    return worst
+
+
+def _distinct(moments, i: int) -> bool:
+    largest = max(abs(m) for m in moments)
+    return largest > 0 and all(abs(moments[i] - moments[j]) >= DISTINCT * largest for j in range(3) if j != i)
 
 
 @dataclass(frozen=True)
@@ -407,10 +428,11 @@ def verdict(loaded: Loaded, link: Link, tolerance: float = TOLERANCE, density: f
     if found is None or found.expected is None or massprops.is_zero(found.expected):
         return None
     source = found.implied.source
-    if massprops.moments_difference(found.declared, found.expected) <= tolerance and found.difference > 2 * tolerance:
+    turned = axes_apart(found.declared, found.expected) if massprops.moments_difference(found.declared, found.expected) <= tolerance else 0.0
+    if found.difference > 2 * tolerance and turned > TURNED:
         return Verdict(
-            "rotated", found.difference,
-            f"its principal moments match its {source}, but on other axes: declared {tensor_text(found.declared, found.expected)}, "
+            "rotated", turned,
+            f"its principal moments match its {source}, but on axes {turned:.0f}° away: declared {tensor_text(found.declared, found.expected)}, "
             f"the {source} gives {tensor_text(found.expected, found.declared)}",
             "the axes are swapped or rotated: `urdfcli inertia --suggest` prints the tensor on the geometry's axes",
         )
@@ -619,7 +641,7 @@ def report_json(report: Report) -> dict:
     }
 
 
-GROUPED = {"I005", "I006", "I007", "I008"}  # one diagnostic for the links sharing one tensor
+GROUPED = {"I008"}  # one diagnostic for the links sharing one tensor
 FIXABLE = {"I001", "I002", "I003", "I004", "I005", "I006", "I007", "I008", "I009", "I010"}
 
 

@@ -11,7 +11,7 @@ from collections import defaultdict
 from .. import massprops
 from ..numbers import format_number
 from . import INFO, WARNING, Option, check
-from .physics import absorbed, has_invalid_tensor, names as _names, naming as _naming
+from .physics import absorbed, has_invalid_tensor
 
 ROOT_MASS = 0.001  # kg: a lighter root is the usual answer to KDL's complaint
 SIZE_RATIO = 2.0  # links this many times apart in mass or size cannot share one honest tensor
@@ -30,6 +30,16 @@ def _inertia():
     from .. import inertia
 
     return inertia
+
+
+def _names(links) -> str:
+    """'a', 'b' and 'c': every name, so that each link is found in the message."""
+    quoted = [f"'{link.name}'" for link in links]
+    return quoted[0] if len(quoted) == 1 else f"{', '.join(quoted[:-1])} and {quoted[-1]}"
+
+
+def _naming(links) -> str:
+    return f"{'link' if len(links) == 1 else 'links'} {_names(links)}"
 
 
 def _declaring(loaded):
@@ -51,9 +61,8 @@ def _implies(found) -> str | None:
 def placeholder_identity(loaded, options):
     """## What it does
     Flags ``ixx=iyy=izz=1`` without products of inertia, unless the link's geometry really
-    implies it. All the links of a model with the identity are named in one diagnostic (one
-    placeholder pasted everywhere is one mistake); I008 and I009 leave them to it. Links
-    lighter than 20 g fixed to a heavier body are left alone.
+    implies it. I008 and I009 leave these links to it. Links lighter than 20 g fixed to a
+    heavier body are left alone.
 
     ## Why is this bad?
     The identity is what gets typed when the real value is unknown. On a 100 kg
@@ -83,14 +92,9 @@ def placeholder_identity(loaded, options):
     ```
     `urdfcli inertia --suggest` prints the values for each link.
     """
-    links = identity_links(loaded, options)
-    if links:
-        first = links[0]
+    for link in identity_links(loaded, options):
         yield loaded.diagnostic(
-            "I007",
-            f"inertia of {_naming(links)} is the identity, a placeholder",
-            first.inertial.element.find("inertia"),
-            _implies(_assess(loaded, first, options)) if len(links) == 1 else "`urdfcli inertia --suggest` prints the values each link's geometry implies",
+            "I007", f"inertia of link '{link.name}' is the identity, a placeholder", link.inertial.element.find("inertia"), _implies(_assess(loaded, link, options))
         )
 
 
@@ -207,8 +211,10 @@ def geometry_mismatch(loaded, options):
       at c has a variance of at most (hi - c)(c - lo), and ixx = m (var y + var z); for a box
       of sides Lx, Ly, Lz centred on the centre of mass, ixx <= m((Ly/2)² + (Lz/2)²).
     - **rotated**: principal moments within ``tolerance`` (0.1) of those of a uniform body
-      filling the collision shapes (else the visual shapes), on axes at least 3 x ``tolerance``
-      away (swapped axes, a tensor not turned with its shape). When the shapes' own rotation
+      filling the collision shapes (else the visual shapes), but a principal axis more than
+      30° from the body's (swapped axes, a mirrored or unturned tensor), the tensors differing
+      by more than 2 x ``tolerance``. Only axes whose moment stands 15 % apart from the other
+      two count: a nearly round body has no axis to get wrong. When the shapes' own rotation
       explains it, I010 says so instead.
     - **placeholder**: a largest principal moment more than 100 times below the uniform
       body's (0.3 kg declared with a 2e-8 tensor).

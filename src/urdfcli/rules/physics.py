@@ -210,8 +210,7 @@ def point_mass(loaded):
 def not_positive_semidefinite(loaded):
     """## What it does
     Flags an inertia tensor with a negative principal moment (it is not positive
-    semi-definite), including ones made so by off-diagonal terms. Links sharing one
-    such tensor are reported together. Elements below
+    semi-definite), including ones made so by off-diagonal terms. Elements below
     1e-12 kg·m² count as zero; a tensor made only of such noise is a point mass (I004).
     A link lighter than 20 g fixed to a heavier body is left alone.
 
@@ -233,11 +232,11 @@ def not_positive_semidefinite(loaded):
     </link>
     ```
     """
-    for tensor, links, moments in invalid_tensors(loaded)["I005"]:
+    for link, moments in invalid_tensors(loaded)["I005"]:
         yield loaded.diagnostic(
             "I005",
-            f"inertia of {naming(links)} is not positive semi-definite (principal moments {moments_text(moments)})",
-            links[0].inertial.element.find("inertia"),
+            f"inertia of link '{link.name}' is not positive semi-definite (principal moments {moments_text(moments)})",
+            link.inertial.element.find("inertia"),
         )
 
 
@@ -245,8 +244,7 @@ def not_positive_semidefinite(loaded):
 def triangle_inequality(loaded):
     """## What it does
     Flags a tensor whose principal moments break the triangle inequality
-    (A + B >= C for any ordering), with a small relative tolerance. Links sharing one
-    such tensor are reported together. Elements below
+    (A + B >= C for any ordering), with a small relative tolerance. Elements below
     1e-12 kg·m² count as zero; a tensor made only of such noise is a point mass (I004).
     A link lighter than 20 g fixed to a heavier body is left alone.
 
@@ -268,19 +266,19 @@ def triangle_inequality(loaded):
     </link>
     ```
     """
-    for tensor, links, moments in invalid_tensors(loaded)["I006"]:
+    for link, moments in invalid_tensors(loaded)["I006"]:
         a, b, c = moments_text(moments).split(", ")
-        yield loaded.diagnostic("I006", f"inertia of {naming(links)} breaks the triangle inequality: {a} + {b} < {c}", links[0].inertial.element.find("inertia"))
+        yield loaded.diagnostic("I006", f"inertia of link '{link.name}' breaks the triangle inequality: {a} + {b} < {c}", link.inertial.element.find("inertia"))
 
 
 def invalid_tensors(loaded) -> dict[str, list]:
-    """For I005 and I006: (tensor, links, principal moments) for each tensor no body can
-    have, its links grouped (one tensor pasted on several links is one mistake); worked out once."""
+    """For I005 and I006: (link, principal moments) for each tensor no body can have;
+    worked out once (the placeholder rules leave these links to them)."""
     return loaded.remembered("invalid tensors", lambda: _invalid_tensors(loaded))
 
 
 def _invalid_tensors(loaded) -> dict[str, list]:
-    groups: dict[str, dict] = {"I005": {}, "I006": {}}
+    found: dict[str, list] = {"I005": [], "I006": []}
     for link, inertial in _inertials(loaded):
         if not inertial.inertia or absorbed(loaded, link):
             continue
@@ -288,24 +286,13 @@ def _invalid_tensors(loaded) -> dict[str, list]:
         if massprops.is_negligible(tensor):
             continue  # a point mass: I004
         if not massprops.is_positive_semidefinite(tensor):
-            code, moments = "I005", massprops.principal_moments(tensor)
+            found["I005"].append((link, massprops.principal_moments(tensor)))
         else:
-            code, moments = "I006", massprops.triangle_violation(tensor)
-            if moments is None:
-                continue
-        groups[code].setdefault(tensor, ([], moments))[0].append(link)
-    return {code: [(tensor, links, moments) for tensor, (links, moments) in found.items()] for code, found in groups.items()}
+            broken = massprops.triangle_violation(tensor)
+            if broken is not None:
+                found["I006"].append((link, broken))
+    return found
 
 
 def has_invalid_tensor(loaded, link) -> bool:
-    return any(link in links for found in invalid_tensors(loaded).values() for _, links, _ in found)
-
-
-def names(links) -> str:
-    """'a', 'b' and 'c': every name, so that each link is found in the message."""
-    quoted = [f"'{link.name}'" for link in links]
-    return quoted[0] if len(quoted) == 1 else f"{', '.join(quoted[:-1])} and {quoted[-1]}"
-
-
-def naming(links) -> str:
-    return f"{'link' if len(links) == 1 else 'links'} {names(links)}"
+    return any(link is found for links in invalid_tensors(loaded).values() for found, _ in links)
