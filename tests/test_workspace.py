@@ -200,3 +200,16 @@ def test_a_model_whose_packages_are_missing_here_is_named_not_failed(repository)
     err = done.stderr.decode()
     assert done.returncode == 0, err
     assert "not checked through description/urdf/rover.urdf.xacro: package 'acme_sensors' not found" in err
+
+
+def test_a_repository_in_a_folder_named_src_is_searched_alone_unless_that_is_a_workspace(tmp_path):
+    from urdfcli.workspace import search_roots
+
+    src = tmp_path / "home" / "src"
+    library = write(src / "my_robot" / "description" / "urdf" / "wheel.xacro", WHEEL)
+    write(src / "my_robot" / "description" / "package.xml", package_xml("my_robot_description"))
+    (src / "my_robot" / ".git").mkdir()
+    (src / "website" / "pages").mkdir(parents=True)  # ~/src holds other projects
+    assert search_roots(library) == ([src / "my_robot"], True)
+    write(src / "other_robot" / "arm" / "package.xml", package_xml("arm"))  # a second repository of packages
+    assert search_roots(library) == ([src / "my_robot", src], True)

@@ -11,9 +11,8 @@ because a library is never reported as a broken robot.
 
 A library given to ``check`` or ``lint`` is checked through the top-level
 models that include it, directly or through other files: the models of its
-repository or workspace (the folders the package resolver searches, see
-:mod:`urdfcli.packages`) that no other file includes, plus those listed in
-``[tool.urdfcli] models``. Which models include it is decided by reading the
+repository or workspace ``src/`` (see :func:`search_roots`) that no other file
+includes, plus those listed in ``[tool.urdfcli] models``. Which models include it is decided by reading the
 ``xacro:include`` elements of every xacro file there, without expanding
 anything: ``$(find pkg)``, ``$(arg x)`` with a default, ``$(dirname)``,
 ``$(env X)`` and ``${name}`` of a plain property are resolved; an include
@@ -172,11 +171,31 @@ def search_roots(file: Path) -> tuple[list[Path], bool]:
     else its own folder alone."""
     package = enclosing_package(file.parent)
     if package is not None:
-        return local_roots(package), True
+        roots = local_roots(package)
+        # A repository in a folder named src (~/src/my_robot) is searched beyond only
+        # when that src is a ROS workspace's: the package look-up widens only when it
+        # must, a search for models would read every file there on every commit.
+        return [r for r in roots if r == roots[0] or _workspace_src(r)], True
     for folder in file.parents:
         if (folder / ".git").exists():
             return [folder], True
     return [file.parent], False
+
+
+_WORKSPACE_MARKS = ("build", "install", "log", "devel", ".catkin_workspace", ".catkin_tools", "colcon.meta")
+
+
+def _workspace_src(src: Path) -> bool:
+    """Whether a folder named src holds a ROS workspace: built or marked beside it, or
+    holding packages one or two levels down in more than one of its folders."""
+    if any((src.parent / mark).exists() for mark in _WORKSPACE_MARKS):
+        return True
+    try:
+        children = [c for c in src.iterdir() if c.is_dir() and not c.name.startswith(".")]
+    except OSError:
+        return False
+    holding = sum(1 for c in children if (c / "package.xml").is_file() or any(c.glob("*/package.xml")))
+    return holding > 1
 
 
 def source_files(root: Path, recursive: bool = True) -> Iterable[Path]:
@@ -476,4 +495,4 @@ def _library_result(entry: Entry, outcome, includes_of, shown_keys: set, unreada
     return result
 
 
-__all__ = ["Entry", "Index", "LibraryResult", "Source", "Target", "assemble", "is_library", "plan", "read_source", "resolve_include", "search_roots"]
+__all__ = ["Entry", "Index", "LibraryResult", "Source", "Target", "assemble", "plan", "read_source", "resolve_include", "search_roots"]
