@@ -481,7 +481,7 @@ def _library_result(entry: Entry, outcome, includes_of, shown_keys: set, unreada
             unreadable.append(alone)
         else:
             found += alone.diagnostics
-            if not entry.targets:
+            if not entry.targets and not alone.diagnostics:  # its own mistakes say enough
                 result.notes.append("a xacro library that no model includes: only its own xacro was checked")
     # One mistake written in a macro shows once, however many calls and models
     # made copies of it (the messages differ only by the names the calls gave).
