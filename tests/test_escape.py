@@ -94,6 +94,14 @@ def test_the_escapes_show_what_was_there(inputs):
     assert "arm\\u202etxt.exe\\x7f\\nx" in lint  # I002 names the massless moving link
 
 
+def test_graph_names_its_files_after_the_robot_without_control_characters(inputs):
+    done = run_cli("graph", "-f", "dot", str(inputs / "names.urdf"), cwd=inputs)  # the model draws
+    assert done.returncode == 0
+    written = run_cli("graph", str(inputs / "names.urdf"), cwd=inputs)
+    assert written.returncode in (0, 2)  # 2: dot refused the picture; the .gv is written either way
+    assert (inputs / "evil\\u202ebot.gv").exists()
+
+
 def test_json_keeps_the_data_and_escapes_it_as_json(inputs):
     import json
 

@@ -8,6 +8,7 @@ from typing import Annotated
 
 import typer
 
+from ..escape import escape
 from ..formatters.text import print_diagnostic
 from ..load import InputError, LoadOptions, load_document
 from ..output import OutputError, write_atomic
@@ -41,7 +42,7 @@ def expand(
         print_diagnostic(stderr, diagnostic)
     if errors:
         raise typer.Exit(Exit.PROBLEMS)
-    text = "".join(f"{name}\n" for name in document.includes) if deps else document.expanded_text
+    text = "".join(f"{escape(name)}\n" for name in document.includes) if deps else document.expanded_text
     if output is None:
         sys.stdout.write(text)
         return

@@ -84,7 +84,7 @@ def graph(
     elif output is not None:
         make_picture(dot, output, output_kind, timeout, inputs_read, None)
     else:
-        base = paths[1] if len(paths) == 2 else (robot.name or "robot").replace("/", "_")
+        base = paths[1] if len(paths) == 2 else escape(robot.name or "robot").replace("/", "_")  # no control character in a file name
         write(Path(f"{base}.gv"), dot, inputs_read)
         make_picture(dot, Path(f"{base}.pdf"), "pdf", timeout, inputs_read, Path(f"{base}.gv"))
     if has_errors:  # drawn with --force
