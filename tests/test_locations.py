@@ -157,17 +157,17 @@ def test_standard_input_xacro_is_located_like_a_file(tmp_path):
 def wheel_robot(tmp_path):
     (tmp_path / "wheel.xacro").write_text(
         f'<robot {XACRO}>\n'
-        '  <xacro:macro name="wheel" params="side">\n'
+        '  <xacro:macro name="wheel" params="side z">\n'
         '    <link name="${side}_wheel">\n'
         "      <inertial><mass value=\"1\"/>\n"
-        '        <inertia ixx="1" iyy="1" izz="5"\n'
+        '        <inertia ixx="1" iyy="1" izz="${z}"\n'
         '                 ixy="0" ixz="0" iyz="0"/>\n'
         "      </inertial>\n"
         "    </link>\n"
         '    <joint name="${side}_joint" type="continuous"><parent link="base"/><child link="${side}_wheel"/></joint>\n'
         "  </xacro:macro>\n"
         '  <xacro:macro name="axle">\n'
-        '    <xacro:wheel side="left"/>\n'
+        '    <xacro:wheel side="left" z="5"/>\n'
         "  </xacro:macro>\n"
         "</robot>\n"
     )
@@ -178,7 +178,7 @@ def wheel_robot(tmp_path):
         '  <link name="base"/>\n'
         "  <xacro:axle/>\n"
         '  <xacro:wheel\n'
-        '      side="right"/>\n'
+        '      side="right" z="6"/>\n'
         "</robot>\n"
     )
     return top
@@ -208,7 +208,7 @@ def test_a_macro_body_diagnostic_names_each_call_site_innermost_first(tmp_path):
     assert sorted(len(r) for r in related) == [1, 2]
     assert all(r[0]["message"]["text"].startswith("in macro 'wheel'") for r in related)
     github = run("lint", "robot.urdf.xacro", "--format", "github", cwd=tmp_path).stdout.decode()
-    assert "breaks the triangle inequality: 1 + 1 < 5%0Ain macro 'wheel' called at robot.urdf.xacro:5:3\n" in github
+    assert "breaks the triangle inequality: 1 + 1 < 6%0Ain macro 'wheel' called at robot.urdf.xacro:5:3\n" in github
 
 
 def test_a_deep_trace_is_cut_after_three_levels(tmp_path):

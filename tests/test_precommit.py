@@ -106,7 +106,7 @@ def test_pre_commit_try_repo_passes_a_clean_model_and_fails_a_flagged_one(tmp_pa
     out = flagged.stdout.decode()
     assert flagged.returncode == 1, out
     assert re.search(r"urdfcli lint\.+Failed", out)
-    assert "broken.urdf:5:29: D002 warning: <color> has no attribute 'rgb'; it is ignored" in out
+    assert "broken.urdf:5:36: D002 warning: <color> has no attribute 'rgb'; it is ignored" in out
 
     check = try_repo("urdfcli-check")  # warnings only: check passes
     assert check.returncode == 0, check.stdout.decode()

@@ -99,9 +99,9 @@ def test_a_comment_on_a_macro_call_silences_what_the_call_made(tmp_path, monkeyp
     monkeypatch.chdir(tmp_path)
     (tmp_path / "wheel.xacro").write_text(
         '<robot xmlns:xacro="http://www.ros.org/wiki/xacro">\n'
-        '  <xacro:macro name="wheel" params="side">\n'
+        '  <xacro:macro name="wheel" params="side z">\n'
         '    <link name="${side}"><inertial><mass value="1"/>\n'
-        '      <inertia ixx="1" iyy="1" izz="5" ixy="0" ixz="0" iyz="0"/></inertial></link>\n'
+        '      <inertia ixx="1" iyy="1" izz="${z}" ixy="0" ixz="0" iyz="0"/></inertial></link>\n'
         '    <joint name="${side}_j" type="fixed"><parent link="base"/><child link="${side}"/></joint>\n'
         "  </xacro:macro>\n"
         "</robot>\n"
@@ -111,8 +111,8 @@ def test_a_comment_on_a_macro_call_silences_what_the_call_made(tmp_path, monkeyp
       <xacro:include filename="wheel.xacro"/>
       <link name="base"/>
       <!-- urdfcli: noqa: I006 -->
-      <xacro:wheel side="left"/>
-      <xacro:wheel side="right"/>
+      <xacro:wheel side="left" z="5"/>
+      <xacro:wheel side="right" z="6"/>
     </robot>
     """
     (tmp_path / "robot.urdf.xacro").write_text(textwrap.dedent(text))
@@ -124,5 +124,9 @@ def test_select_never_hides_malformed_xml(tmp_path):
     path = tmp_path / "broken.urdf"
     path.write_text('<robot name="r">\n  <link name="a">\n</robot>\n')
     done = run_cli("lint", "--select", "I", "--format", "concise", str(path))
+    assert done.returncode == 1
+    assert ": X001 error: " in done.stdout.decode()
+    path.write_text('<robot name="r"> <!-- urdfcli: noqa-file -->\n  <link name="a">\n</robot>\n')
+    done = run_cli("lint", "--format", "concise", str(path))
     assert done.returncode == 1
     assert ": X001 error: " in done.stdout.decode()

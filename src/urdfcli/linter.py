@@ -102,7 +102,8 @@ def configured(
     selected = [d for d in diagnostics if unreadable or enabled(d.code, d.file)]
     files = {loaded.document.shown, *loaded.document.includes}
     files |= {place.file for d in selected for place in (d.location, *d.location.trace)}
-    found = [s for file in sorted(files) if (text := positions.text_of(file)) is not None for s in suppressions.parse(file, text)]
+    sources = [] if unreadable else sorted(files)  # nor silenced by a comment
+    found = [s for file in sources if (text := positions.text_of(file)) is not None for s in suppressions.parse(file, text)]
     kept = suppressions.apply(selected, found, lambda code: ran(code) and enabled(code, path))
     kept = [d for d in kept if d.code not in ("U001", "U002") or enabled(d.code, d.file)]
     kept = [_with_severity(d, config) for d in kept]
