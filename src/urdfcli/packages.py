@@ -64,8 +64,24 @@ def _read_package_name(manifest: Path) -> str | None:
     return name.strip() if name and name.strip() else None
 
 
-def scan(root: Path) -> Iterator[tuple[str, Path]]:
-    """Yield (name, dir) for every package below root, without entering a package."""
+def scan(root: Path) -> list[tuple[str, Path]]:
+    """(name, dir) for every package below root, without entering a package.
+
+    Each folder is scanned once per run (again only when the folder itself
+    changes): every input of a run looks in the same places."""
+    try:
+        key = (root, os.stat(root).st_mtime_ns)
+    except OSError:
+        return []
+    if key not in _SCANS:
+        _SCANS[key] = list(_walk(root))
+    return _SCANS[key]
+
+
+_SCANS: dict[tuple[Path, int], list[tuple[str, Path]]] = {}
+
+
+def _walk(root: Path) -> Iterator[tuple[str, Path]]:
     budget = MAX_SCAN_DIRS
     stack = [(root, 0)]
     while stack and budget > 0:
