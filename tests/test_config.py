@@ -314,3 +314,16 @@ def test_models_mistakes_are_one_line(tmp_path, text, message):
     model = write(tmp_path, "robot.urdf", MODEL)
     done = run_cli("check", str(model))
     assert done.returncode == 2 and message in done.stderr.decode() and len(done.stderr.decode().strip().splitlines()) == 1
+
+
+def test_tree_and_graph_honour_noqa_ignore_and_isolated(tmp_path):
+    quiet = write(tmp_path, "quiet/robot.urdf", ZERO_AXIS)
+    loud = write(tmp_path, "loud/robot.urdf", ZERO_AXIS.replace("  <!-- urdfcli: noqa: J007 -->", ""))
+    for command in (["tree", "--ascii"], ["graph", "--format", "dot"]):
+        assert run_cli(*command, str(quiet)).returncode == 0
+        done = run_cli(*command, str(loud))
+        assert done.returncode == 1 and "J007 error" in done.stderr.decode()
+        write(tmp_path, "loud/urdfcli.toml", 'ignore = ["J007"]\n')
+        assert run_cli(*command, str(loud)).returncode == 0
+        assert run_cli(*command, "--isolated", str(loud)).returncode == 1
+        (tmp_path / "loud/urdfcli.toml").unlink()

@@ -213,3 +213,19 @@ def test_a_repository_in_a_folder_named_src_is_searched_alone_unless_that_is_a_w
     assert search_roots(library) == ([src / "my_robot"], True)
     write(src / "other_robot" / "arm" / "package.xml", package_xml("arm"))  # a second repository of packages
     assert search_roots(library) == ([src / "my_robot", src], True)
+
+
+def test_only_the_models_that_include_the_library_are_expanded(repository):
+    # a broken model that includes only inertia.xacro: expanding it would fail
+    write(repository / "description/urdf/broken.urdf.xacro", f"""\
+        <robot name="broken" {XACRO}>
+          <xacro:include filename="$(find acme_common)/urdf/inertia.xacro"/>
+          <link name="${{undefined_name}}"/>
+        </robot>
+        """)
+    done, report = check_json("common/urdf/wheel.xacro", cwd=repository)
+    assert done.returncode == 0, done.stderr.decode()
+    assert "description/urdf/broken.urdf.xacro" not in report["files"][0]["checked_through"]
+    done, report = check_json("common/urdf/inertia.xacro", cwd=repository)
+    assert done.returncode == 1  # it does include inertia.xacro, and is broken
+    assert "description/urdf/broken.urdf.xacro" in report["files"][0]["checked_through"]
