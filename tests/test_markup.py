@@ -57,7 +57,18 @@ def test_colours_equal_to_print_precision_are_the_same_colour(tmp_path):
         + visual('<material name="silver"><color rgba="0.752941176470588 0.752941176470588 0.752941176470588 1"/></material>')
     )
     assert codes(tmp_path, body) == []
-    assert codes(tmp_path, body.replace("0.752941176470588", "0.76", 1)) == ["M003"]
+    assert codes(tmp_path, body.replace("0.752941176470588", "0.9", 1)) == ["M003"]
+
+
+def test_an_alpha_a_tenth_apart_is_the_same_colour(tmp_path):
+    # HyQ's 'black' is given alpha 1 and 0.9; seed 002's 'black' is given 0.5 and 0.8.
+    body = (
+        visual('<material name="black"><color rgba="0 0 0 1"/></material>', "a")
+        + visual('<material name="black"><color rgba="0 0 0 0.9"/></material>', "b")
+        + fixed("a", "b")
+    )
+    assert codes(tmp_path, body) == []
+    assert codes(tmp_path, body.replace("0 0 0 0.9", "0 0 0 0.5")) == ["M003"]
 
 
 def test_an_undefined_named_material_is_still_flagged(tmp_path):

@@ -244,6 +244,17 @@ def test_zero_effort_or_velocity_on_a_driven_joint(tmp_path):
     assert found(tmp_path, limited("revolute", '<limit lower="0" upper="1" effort="5" velocity="2"/>'), "J014") == []
 
 
+@pytest.mark.parametrize("limit, flagged", [
+    ('<limit lower="-1" upper="1" effort="10" velocity="5"/>', True),  # meant to be revolute
+    ('<limit lower="-6.2832" upper="6.2832" effort="10" velocity="5"/>', False),  # kinova: a leftover
+    ('<limit lower="-3.14159" upper="3.14159" effort="10" velocity="5"/>', False),  # a full turn
+    ('<limit upper="1" effort="10" velocity="5"/>', False),  # one bound: meaning unclear
+])
+def test_a_continuous_joint_with_a_range_narrower_than_a_turn(tmp_path, limit, flagged):
+    diagnostics = found(tmp_path, limited("continuous", limit), "J012")
+    assert [(c, s) for c, s, _ in diagnostics] == ([("J012", "warning")] if flagged else [])
+
+
 def test_severities_are_as_documented():
     from urdfcli.rules import rule
 

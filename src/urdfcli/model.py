@@ -439,8 +439,9 @@ class Reader:
                 )
 
 
-# Half of an 8-bit colour step: closer components render the same (0.75294 is 192/255 rounded).
-COLOUR_TOLERANCE = 0.5 / 255
+# Components closer than a tenth look alike in a viewer: 0.75294 is 192/255 rounded, and
+# an alpha of 0.9 against 1 is not a second colour; 0.5 against 0.8 is.
+COLOUR_TOLERANCE = 0.1 + 1e-9
 
 
 def same_colour(a: tuple[float, ...], b: tuple[float, ...]) -> bool:

@@ -8,6 +8,8 @@ from ..numbers import format_number
 from . import ERROR, WARNING, check
 from ..model import MOVING_AXIS_TYPES
 
+FULL_TURN = 2 * math.pi - 1e-3  # a range written as -3.1416..3.1416 is a full turn
+
 
 @check("J007", "zero-axis", ERROR, "A moving joint whose axis is the zero vector.")
 def zero_axis(loaded):
@@ -208,14 +210,17 @@ def axis_not_unit(loaded):
             yield loaded.diagnostic("J011", f"axis of joint '{joint.name}' has length {norm:.6g}, not 1", joint.element.find("axis"), hint)
 
 
-@check("J012", "continuous-with-limits", WARNING, "A continuous joint given lower/upper limits.", in_check=False)
+@check("J012", "continuous-with-limits", WARNING, "A continuous joint given a range narrower than a turn.", in_check=False)
 def continuous_with_limits(loaded):
     """## What it does
-    Flags a continuous joint whose `<limit>` gives `lower` or `upper`.
+    Flags a continuous joint whose `<limit>` gives both `lower` and `upper`, spanning
+    less than a full turn. Left alone: a range of a turn or more (`-3.14159` to
+    `3.14159`, a harmless leftover), an empty or reversed range (J010, J014), and a
+    limit giving only one bound.
 
     ## Why is this bad?
-    A continuous joint turns without end: its lower and upper are ignored, so
-    the range the author meant is not enforced.
+    A continuous joint turns without end: urdfdom ignores its lower and upper, so a
+    range narrower than a turn, which the author meant to hold, is not enforced.
 
     ## Example
     ```xml
@@ -240,8 +245,17 @@ def continuous_with_limits(loaded):
     ```
     """
     for joint in loaded.robot.joints.values():
-        if joint.type == "continuous" and joint.limit and (joint.limit.has_lower or joint.limit.has_upper):
-            yield loaded.diagnostic("J012", f"continuous joint '{joint.name}' has lower/upper limits, which are ignored", joint.element.find("limit"), hint="make it revolute, or drop lower and upper")
+        limit = joint.limit
+        if joint.type != "continuous" or limit is None or not (limit.has_lower and limit.has_upper):
+            continue
+        span = limit.upper - limit.lower
+        if 0 < span < FULL_TURN:
+            yield loaded.diagnostic(
+                "J012",
+                f"continuous joint '{joint.name}' has the range [{format_number(limit.lower)}, {format_number(limit.upper)}], which is ignored",
+                joint.element.find("limit"),
+                hint="make it revolute to keep the range, or drop lower and upper",
+            )
 
 
 @check("J013", "limit-without-range", WARNING, "A revolute or prismatic joint whose <limit> gives neither lower nor upper.", in_check=False)

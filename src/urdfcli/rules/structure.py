@@ -166,7 +166,8 @@ declare("M002", "material-undefined", WARNING, "A visual names a material define
     '<material name="grey"><color rgba="0.5 0.5 0.5 1"/></material>\n<link name="base_link">\n  <visual><geometry><box size="1 1 1"/></geometry><material name="grey"/></visual>\n</link>'))
 declare("M003", "material-redefined", WARNING, "One material name is given different colours.", explain(
     "Flags a material name given a colour different from the one it was given before (often in two xacro files). "
-    "Components closer than half an 8-bit step (`0.752941176470588` and `0.75294`) are the same colour; "
+    "Components within a tenth of each other are the same colour (`0.752941176470588` and `0.75294`, "
+    "an alpha of 0.9 and 1): a difference no viewer shows is left alone; "
     "a material with an empty name is never shared (urdfdom skips it), so it clashes with nothing.",
     "Consumers keep one colour per name: which one wins depends on the order the files were included.",
     '<link name="camera">\n  <visual><geometry><box size="1 1 1"/></geometry><material name="black"><color rgba="0 0 0 0.8"/></material></visual>\n</link>\n<link name="laser">\n  <visual><geometry><box size="1 1 1"/></geometry><material name="black"><color rgba="0 0 0 0.5"/></material></visual>\n</link>',
