@@ -174,10 +174,12 @@ def shape_bounds(loaded: Loaded, shape: Shape) -> tuple[Vector, Vector]:
     return tuple(min(c[i] for c in corners) for i in range(3)), tuple(max(c[i] for c in corners) for i in range(3))  # type: ignore[return-value]
 
 
-def extent(loaded: Loaded, link: Link) -> tuple[Vector, Vector] | None:
-    """The box (lowest and highest corner, link frame) that holds every visual and
-    collision shape of the link; None when it has none, or one cannot be measured."""
-    shapes = [s for s in (*link.visuals, *link.collisions) if s.geometry is not None]
+def extent(loaded: Loaded, link: Link, shapes=None) -> tuple[Vector, Vector] | None:
+    """The box (lowest and highest corner, link frame) that holds the shapes, by default every
+    visual and collision shape of the link; None when there are none, or one cannot be measured."""
+    if shapes is None:
+        shapes = (*link.visuals, *link.collisions)
+    shapes = [s for s in shapes if s.geometry is not None]
     if not shapes:
         return None
     try:
@@ -370,9 +372,23 @@ def reach(loaded: Loaded, link: Link) -> Reach | None:
     Along each axis, a mass held in [lo, hi] with its mean at c has a variance of at most
     (hi - c)(c - lo) (the Bhatia-Davis inequality); a moment is the mass times the sum of
     two such variances. A centre outside the box gives (farthest extent)² instead."""
-    box = extent(loaded, link)
     inertial = link.inertial
-    if box is None or inertial is None or not (inertial.mass or 0) > 0:
+    if inertial is None or not (inertial.mass or 0) > 0:
+        return None
+    declared = declared_body(link)
+    # the shapes already measured first: a box that holds the tensor proves nothing, and a
+    # larger one around the same centre would not either, so the other meshes are read only
+    # when it does not (or when the centre lies outside it, where the bound is not monotone)
+    box = extent(loaded, link, implied(loaded, link).shapes)
+    first = _reach(inertial, box)
+    inside = box is not None and all(lo <= c <= h for lo, h, c in zip(*box, inertial.origin.xyz))
+    if first is not None and inside and declared is not None and all(declared.tensor[i][i] <= OVERREACH * first.bounds[i] for i in range(3)):
+        return first
+    return _reach(inertial, extent(loaded, link))
+
+
+def _reach(inertial, box) -> Reach | None:
+    if box is None:
         return None
     low, high = box
     sides = tuple(h - lo for lo, h in zip(low, high))

@@ -219,12 +219,15 @@ def geometry_mismatch(loaded, options):
     - **placeholder**: a largest principal moment more than 100 times below the uniform
       body's (0.3 kg declared with a 2e-8 tensor).
 
+    With ``density`` (kg/m³) positive, the link is taken to be that uniform material: any
+    tensor more than ``tolerance`` off the one it gives is flagged.
+
     Left alone: a CAD tensor within a few times of the uniform body's (real parts are not
-    uniform: motors, shells, cables); links lighter than 20 g; geometry that cannot hold the
-    mass (denser than osmium in its bounding box: a millimetre sphere standing in for a
-    finger); links without measurable geometry; zero tensors (I004), the identity (I007),
-    tensors shared as placeholders (I008). ``density`` (kg/m³), when positive, gives the
-    uniform body its mass from the geometry's volume.
+    uniform: motors, shells, cables); links lighter than 20 g, but for turned axes;
+    geometry that cannot hold the mass (denser than osmium in its bounding box: a
+    millimetre sphere standing in for a finger); links without measurable geometry; zero
+    tensors (I004), tensors no body can have (I005, I006), the identity (I007) and tensors
+    shared as placeholders (I008), which their own rules report.
 
     ## Why is this bad?
     A tensor that no body of that mass and size can have, turned the wrong way, or
