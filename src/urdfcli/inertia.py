@@ -436,9 +436,10 @@ def verdict(loaded: Loaded, link: Link, tolerance: float = TOLERANCE, density: f
             times = f"{factor:.1f} times" if factor < math.inf else "infinitely more than"
             return Verdict(
                 "impossible", factor,
-                f"{AXES[worst]}={moment:.3g} (link axes) is {times} the most {number(declared.mass)} kg can reach inside "
-                f"the {sides} m box its shapes fill, about the declared centre of mass ({most:.3g})",
-                "check the units and the mass: the tensor, or the centre of mass, cannot be right",
+                f"{AXES[worst]}={moment:.3g} (link axes) is {times} the most {number(declared.mass)} kg can reach "
+                f"about the declared centre of mass inside the {sides} m box its shapes fill: {most:.3g}",
+                "the tensor, the centre of mass or the mass is wrong (units?); "
+                "`urdfcli inertia --suggest` prints a uniform body's values as a start",
             )
     found = assess(loaded, link, density)
     if found is None or found.expected is None or massprops.is_zero(found.expected):
