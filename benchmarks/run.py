@@ -241,7 +241,7 @@ def compare(rows: list[Row], case: str, ours: Measure, other_name: str, theirs: 
 def print_table(rows: list[Row]) -> None:
     header = ("case", "urdfcli", "compared with", "time ratio", "memory ratio", "target", "met")
     cells = [header] + [
-        (r.case, r.ours, r.other, "" if r.time_ratio is None else f"{r.time_ratio:.2f}", "" if r.memory_ratio is None else f"{r.memory_ratio:.2f}", r.target, r.met)
+        (r.case, r.ours, r.other.replace("|", "\\|"), "" if r.time_ratio is None else f"{r.time_ratio:.2f}", "" if r.memory_ratio is None else f"{r.memory_ratio:.2f}", r.target, r.met)
         for r in rows
     ]
     widths = [max(len(row[i]) for row in cells) for i in range(len(header))]
