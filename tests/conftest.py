@@ -7,6 +7,7 @@ installs them.
 
 from __future__ import annotations
 
+import importlib.metadata
 import os
 import shutil
 import subprocess
@@ -41,6 +42,21 @@ def run_cli(*args: str, input: str | bytes | None = None, cwd: Path | None = Non
         env={**os.environ, "NO_COLOR": "1", "COLUMNS": "200", **(env or {})},
         timeout=120,
     )
+
+
+def example_robot_data() -> Path:
+    """The installed example-robot-data folder (holding package.xml and robots/), a test
+    dependency; skip (locally) or fail (in CI) when it is missing."""
+    try:
+        distribution = importlib.metadata.distribution("example-robot-data")
+    except importlib.metadata.PackageNotFoundError:
+        distribution = None
+    for file in (distribution.files or ()) if distribution else ():
+        if file.name == "package.xml" and "example-robot-data" in file.parts:
+            return Path(distribution.locate_file(file)).parent
+    if IN_CI:
+        pytest.fail("example-robot-data is a test dependency: pip install -e '.[test]'")
+    pytest.skip("example-robot-data is not installed")
 
 
 @pytest.fixture

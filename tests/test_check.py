@@ -303,3 +303,14 @@ def test_xacro_found_by_content_expands_as_when_named_xacro(tmp_path):
 
     assert expanded("robot.urdf") == expanded("robot.urdf.xacro")
     assert expanded("robot.urdf")[-2:] == ['<robot name="r">', "</robot>"]  # as xacro writes it, white space kept
+
+
+def test_a_link_cut_off_by_a_missing_parent_is_not_a_second_root(tmp_path):
+    path = tmp_path / "cut.urdf"
+    path.write_text('<robot name="r"><link name="base_link"/><link name="upper_arm"/><link name="forearm"/><link name="spare"/>'
+                    '<joint name="shoulder" type="fixed"><parent link="base_link"/><child link="upper_arm"/></joint>'
+                    '<joint name="elbow" type="fixed"><parent link="upper_arms"/><child link="forearm"/></joint></robot>')
+    done = run_cli("check", "--format", "json", str(path))
+    found = [(d["code"], d["message"]) for d in json.loads(done.stdout)["files"][0]["diagnostics"]]
+    # the J005 alone explains 'forearm'; 'spare' is a second root of its own
+    assert sorted(found) == [("J005", "parent link 'upper_arms' of joint 'elbow' does not exist"), ("T001", "2 links have no parent: 'base_link', 'spare'")]

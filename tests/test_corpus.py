@@ -19,14 +19,13 @@ and in a stable order, so that the snapshot is the same on every machine.
 from __future__ import annotations
 
 import difflib
-import importlib.metadata
 import json
 import os
 from pathlib import Path
 
 import pytest
 
-from conftest import IN_CI, ROOT, run_cli
+from conftest import ROOT, example_robot_data, run_cli
 
 SNAPSHOT = ROOT / "tests" / "snapshots" / "example-robot-data.txt"
 UPDATE = os.environ.get("URDFCLI_UPDATE_SNAPSHOTS", "") not in ("", "0")
@@ -36,18 +35,6 @@ HEADER = """\
 # Regenerate after review: URDFCLI_UPDATE_SNAPSHOTS=1 pytest tests/test_corpus.py
 """
 SHOWN = ("error", "warning")
-
-
-def package_folder() -> Path | None:
-    """The installed example-robot-data folder (the one holding package.xml and robots/), or None."""
-    try:
-        distribution = importlib.metadata.distribution("example-robot-data")
-    except importlib.metadata.PackageNotFoundError:
-        return None
-    for file in distribution.files or ():
-        if file.name == "package.xml" and "example-robot-data" in file.parts:
-            return Path(distribution.locate_file(file)).parent
-    return None
 
 
 def lint_lines(package: Path, config: Path) -> list[str]:
@@ -72,11 +59,7 @@ def lint_lines(package: Path, config: Path) -> list[str]:
 
 
 def test_corpus_matches_the_reviewed_snapshot(tmp_path):
-    package = package_folder()
-    if package is None:
-        if IN_CI:
-            pytest.fail("example-robot-data is a test dependency: pip install -e '.[test]'")
-        pytest.skip("example-robot-data is not installed")
+    package = example_robot_data()
     config = tmp_path / "urdfcli.toml"
     config.write_text("")  # default rules, whatever configuration surrounds the installed package
     text = HEADER + "".join(line + "\n" for line in lint_lines(package, config))

@@ -7,9 +7,8 @@ from pathlib import Path
 
 import pytest
 
-from conftest import run_cli
+from conftest import example_robot_data, run_cli
 
-ROBOTS = Path("/work/main/.venv/lib/python3.11/site-packages/cmeel.prefix/share/example-robot-data")
 
 
 def diagnostics(*args: str, cwd: Path | None = None, env: dict | None = None) -> list[dict]:
@@ -43,6 +42,12 @@ def test_missing_link_hint_names_the_closest_links(tmp_path):
     assert hints["base_lnk"] == "did you mean 'base_link'?"
     assert hints["rigth_wheel"].startswith("did you mean 'right_wheel'")
     assert hints["zzz"] == 'every link a joint names must be defined: add <link name="zzz"/> or fix the name'
+    # never the joint's other end: a joint does not join a link to itself
+    path.write_text('<robot name="r"><link name="base"/><link name="wrist_1_link"/><link name="wrist_2_link"/>'
+                    '<joint name="j" type="fixed"><parent link="base"/><child link="wrist_2_link"/></joint>'
+                    '<joint name="k" type="fixed"><parent link="wrist_1_lnk"/><child link="wrist_2_link"/></joint></robot>')
+    hints = {d["message"].split("'")[1]: d["hint"] for d in diagnostics("check", str(path)) if d["code"] == "J005"}
+    assert hints["wrist_1_lnk"] == "did you mean 'wrist_1_link'?"
 
 
 def test_undefined_argument_hint_works_on_the_command_line_and_in_pyproject(tmp_path):
@@ -83,9 +88,8 @@ def test_package_named_by_its_folder_says_which_package_the_folder_holds(tmp_pat
     assert diagnostics("lint", "--select", "D004,D005", "-P", str(tmp_path / "share"), str(fixed)) == []
 
 
-@pytest.mark.skipif(not ROBOTS.is_dir(), reason="example-robot-data is not installed")
 def test_example_robot_data_folder_holds_example_robot_descriptions():
-    path = ROBOTS / "robots" / "ur_description" / "urdf" / "ur5_robot.urdf"
+    path = example_robot_data() / "robots" / "ur_description" / "urdf" / "ur5_robot.urdf"
     found = diagnostics("lint", "--select", "D005", str(path), env={"AMENT_PREFIX_PATH": "", "ROS_PACKAGE_PATH": ""})
     assert len(found) == 1 and "package 'example-robot-data' not found" in found[0]["message"]
     assert "holds the package named 'example_robot_descriptions'" in found[0]["hint"]

@@ -95,10 +95,12 @@ def has_loop(robot: Robot) -> bool:
     return visited < len(waiting)
 
 
-def link_hint(missing: str, robot: Robot) -> str:
-    """What to do about a joint naming a missing link: the closest link names, if any."""
+def link_hint(missing: str, robot: Robot, other_end: str | None = None) -> str:
+    """What to do about a joint naming a missing link: the closest link names, if any,
+    never the joint's other end (a joint does not join a link to itself)."""
     # difflib is quadratic in names: past a few thousand links the plain hint keeps a broken model fast
-    close = difflib.get_close_matches(missing, list(robot.links), n=3, cutoff=0.6) if len(robot.links) <= 5000 else []
+    candidates = [name for name in robot.links if name != other_end] if len(robot.links) <= 5000 else []
+    close = difflib.get_close_matches(missing, candidates, n=3, cutoff=0.6)
     if close:
         return f"did you mean {' or '.join(repr(name) for name in close)}?"
     return f'every link a joint names must be defined: add <link name="{missing}"/> or fix the name'
@@ -111,13 +113,13 @@ def tree_diagnostics(robot: Robot, document: Document) -> list[Diagnostic]:
         out.append(document.diagnostic(code, message, element, hint))
 
     for joint in robot.joints.values():
-        for role, link in (("parent", joint.parent), ("child", joint.child)):
+        for role, link, other_end in (("parent", joint.parent, joint.child), ("child", joint.child, joint.parent)):
             if link is not None and link not in robot.links:
                 report(
                     "J005",
                     f"{role} link '{link}' of joint '{joint.name}' does not exist",
                     joint.element.find(role),
-                    link_hint(link, robot),
+                    link_hint(link, robot, other_end),
                 )
     parents: dict[str, list[Joint]] = defaultdict(list)
     for joint in robot.joints.values():
@@ -145,7 +147,9 @@ def tree_diagnostics(robot: Robot, document: Document) -> list[Diagnostic]:
             path = " -> ".join([cycle[0][0], *(v for _, v in cycle)])
             report("T004", f"the joints form a loop: {path}", first_joint.element, "URDF describes trees: remove one joint of the loop")
     if robot.links:
-        found = roots(robot)
+        # A link whose joint names a missing parent is cut off by that J005 alone: not a second root.
+        cut_off = {j.child for j in robot.joints.values() if j.parent is not None and j.parent not in robot.links}
+        found = [root for root in roots(robot) if root not in cut_off] or roots(robot)
         if len(found) > 1:
             names = ", ".join(f"'{r}'" for r in found[:5]) + (" ..." if len(found) > 5 else "")
             report(
