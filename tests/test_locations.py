@@ -209,6 +209,10 @@ def test_a_macro_body_diagnostic_names_each_call_site_innermost_first(tmp_path):
     assert all(r[0]["message"]["text"].startswith("in macro 'wheel'") for r in related)
     github = run("lint", "robot.urdf.xacro", "--format", "github", cwd=tmp_path).stdout.decode()
     assert "breaks the triangle inequality: 1 + 1 < 6%0Ain macro 'wheel' called at robot.urdf.xacro:5:3\n" in github
+    concise = run("lint", "robot.urdf.xacro", "--format", "concise", cwd=tmp_path).stdout.decode()
+    # one line each, as a pre-commit hook prints them: the innermost call tells the copies apart
+    assert "1 + 1 < 5 (in macro 'wheel' called at wheel.xacro:12:5)\n" in concise
+    assert "1 + 1 < 6 (in macro 'wheel' called at robot.urdf.xacro:5:3)\n" in concise
 
 
 def test_a_deep_trace_is_cut_after_three_levels(tmp_path):

@@ -49,6 +49,18 @@ def plain_line(diagnostic: Diagnostic) -> str:
     return escape(f"{position(diagnostic)}: {diagnostic.code} {diagnostic.severity.value}: {diagnostic.message}{expanded}")
 
 
+def call_phrase(call) -> str:
+    """Where a macro call that made an element was written: ``in macro 'wheel' called at FILE:LINE:COL``."""
+    where = ":".join([call.file] + ([str(call.line), str(call.column or 1)] if call.line else []))
+    return f"in macro '{call.macro}' called at {where}"
+
+
+def concise_line(diagnostic: Diagnostic) -> str:
+    """``plain_line`` and, for an element a macro made, the call that made it: still one line."""
+    trace = diagnostic.location.trace
+    return plain_line(diagnostic) + (escape(f" ({call_phrase(trace[0])})") if trace else "")
+
+
 def summary_line(results: list[Loaded]) -> str:
     errors, warnings, infos = counts(results)
     files = len(results)

@@ -6,7 +6,7 @@ import sys
 from typing import TYPE_CHECKING
 
 from ..escape import escape
-from . import check_urdf, github, plain_line, summary_line
+from . import check_urdf, concise_line, github, summary_line
 from . import json as json_format
 from .text import print_diagnostic, print_tree
 
@@ -32,7 +32,7 @@ def emit(results, output_format: str, stdout: Console, stderr: Console, tree: bo
     elif output_format == "concise":
         for loaded in results:
             for diagnostic in loaded.diagnostics:
-                sys.stdout.write(plain_line(diagnostic) + "\n")
+                sys.stdout.write(concise_line(diagnostic) + "\n")
             sys.stderr.writelines(line + "\n" for line in library_lines(loaded))
         if results:  # nothing was read: the one-line reasons already said why
             sys.stderr.write(summary_line(results) + "\n")

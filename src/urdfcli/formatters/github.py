@@ -4,6 +4,7 @@ from __future__ import annotations
 
 from ..diagnostics import Diagnostic
 from ..escape import escape
+from . import call_phrase
 
 LEVELS = {"error": "error", "warning": "warning", "info": "notice"}
 
@@ -25,5 +26,5 @@ def line(diagnostic: Diagnostic) -> str:
         if location.column:
             props.append(f"col={location.column}")
     props.append(f"title={_escape_property(diagnostic.code)}")
-    calls = [f"in macro '{c.macro}' called at {c.file}:{c.line or 1}:{c.column or 1}" for c in location.trace]
+    calls = [call_phrase(call) for call in location.trace]
     return f"::{LEVELS[diagnostic.severity.value]} {','.join(props)}::" + "%0A".join(map(_escape_data, [diagnostic.message, *calls]))

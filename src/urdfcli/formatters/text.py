@@ -8,7 +8,7 @@ from ..diagnostics import Diagnostic
 from ..document import source_line
 from ..escape import escape
 from ..loaded import Loaded
-from . import plain_line, position
+from . import call_phrase, plain_line, position
 from .check_urdf import tree_lines
 
 if TYPE_CHECKING:
@@ -67,15 +67,10 @@ TRACE_LEVELS = 3
 def trace_notes(diagnostic: Diagnostic, levels: int = TRACE_LEVELS) -> list[str]:
     """One ``note:`` line per macro call that made the element, innermost first."""
     trace = diagnostic.location.trace
-    notes = [escape(f"    note: in macro '{call.macro}' called at {call_position(call)}") for call in trace[:levels]]
+    notes = [escape(f"    note: {call_phrase(call)}") for call in trace[:levels]]
     if len(trace) > levels:
         notes.append(f"    note: ... and {len(trace) - levels} more macro call{'s' if len(trace) - levels > 1 else ''}")
     return notes
-
-
-def call_position(call) -> str:
-    parts = [call.file] + ([str(call.line), str(call.column or 1)] if call.line else [])
-    return ":".join(parts)
 
 
 def excerpt_lines(diagnostic: Diagnostic, width: int = 160) -> list[str]:
