@@ -291,7 +291,7 @@ def test_models_are_checked_once_per_argument_set(tmp_path):
     [file] = json.loads(done.stdout)["files"]
     assert done.returncode == 1
     [diagnostic] = file["diagnostics"]
-    assert diagnostic["code"] == "X003" and diagnostic["message"].startswith("needs xacro argument 'arm_type', which has no default")
+    assert diagnostic["code"] == "X003" and diagnostic["message"].startswith("needs xacro argument 'arm_type': it has no value where it is used")
     assert "[tool.urdfcli] models" in diagnostic["message"]
     write(tmp_path, "pyproject.toml", '[tool.urdfcli]\nmodels = { "pkg/urdf/arm.urdf.xacro" = [["arm_type:=small"], ["arm_type:=large"]] }\n')
     done = run_cli("check", "--format", "json", str(model), cwd=model.parent)

@@ -214,6 +214,18 @@ def test_root_inertia_is_a_note_and_a_dummy_root_is_silent(tmp_path):
     assert found(tmp_path, dummy, "I011") == []
 
 
+def test_a_massless_foot_frame_with_a_tiny_tensor_draws_nothing(tmp_path):
+    # Bolt's FL_FOOT: mass 0 with 5e-7 kg m2, fixed to a lower leg of 0.2 kg
+    leg = BASE + arm("leg", box("0.03 0.03 0.2") + inertial(0.2, 0.0007, 0.0007, 0.00003))
+    foot = arm("foot", inertial(0, 5e-7, 5e-7, 5e-7), joint="fixed", parent="leg")
+    assert found(tmp_path, leg + foot, "I003") == []
+    # the same tensor on a link that moves on its own, or a real tensor without mass: flagged
+    moving = arm("foot", inertial(0, 5e-7, 5e-7, 5e-7), parent="leg")
+    assert [c for c, _, _ in found(tmp_path, leg + moving, "I003")] == ["I003"]
+    heavy = arm("foot", inertial(0, 0.1, 0.1, 0.1), joint="fixed", parent="leg")
+    assert [c for c, _, _ in found(tmp_path, leg + heavy, "I003")] == ["I003"]
+
+
 # -- C.8, C.9: limits that stop a joint ---------------------------------------------------
 def limited(joint_type: str, limit: str, mimic: str = "") -> str:
     return ('<link name="base"/><link name="wheel"/>'

@@ -154,8 +154,24 @@ def test_a_model_needing_an_argument_names_the_models_setting(repository):
     err = done.stderr.decode()
     assert done.returncode == 0, err  # the library itself is fine, and rover.urdf.xacro shows it
     assert "checked through description/urdf/rover.urdf.xacro" in err
-    assert ("not checked through description/urdf/arm.urdf.xacro: it needs xacro argument 'arm_type', which has no default; "
+    assert ("not checked through description/urdf/arm.urdf.xacro: it needs xacro argument 'arm_type'; "
             "list the argument sets it is checked with in [tool.urdfcli] models") in err
+
+
+def test_a_library_whose_models_all_need_arguments_is_a_gap_the_models_setting_closes(repository):
+    # X006's Example and Use instead: only arm.urdf.xacro includes the wheel now, and it needs arm_type
+    config = (repository / "pyproject.toml").read_text()
+    (repository / "pyproject.toml").unlink()
+    (repository / "description/urdf/rover.urdf.xacro").unlink()
+    done = run_cli("lint", "--format", "concise", "common/urdf/wheel.xacro", cwd=repository)
+    out = done.stdout.decode()
+    assert done.returncode == 1, done.stderr.decode()
+    assert out.startswith("common/urdf/wheel.xacro: X006 warning: xacro library checked on its own only: ")
+    assert "description/urdf/arm.urdf.xacro needs 'arm_type'" in out
+    assert run_cli("check", "common/urdf/wheel.xacro", cwd=repository).returncode == 0  # a warning: check passes
+    (repository / "pyproject.toml").write_text(config)
+    done = run_cli("lint", "--format", "concise", "common/urdf/wheel.xacro", cwd=repository)
+    assert "X006" not in done.stdout.decode() and "checked through description/urdf/arm.urdf.xacro" in done.stderr.decode()
 
 
 def test_a_colcon_workspace_resolves_packages_across_repositories(tmp_path):

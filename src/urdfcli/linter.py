@@ -17,7 +17,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 
 from .config import Config
-from .diagnostics import Diagnostic, Severity
+from .diagnostics import Diagnostic, Location, Severity
 from .load import STDIN, InputError, LoadOptions, load, load_document, read_input
 from .loaded import Loaded
 from .packages import PackageError, PackageResolver
@@ -26,7 +26,7 @@ from . import positions, suppressions
 
 # xacro's words for $(arg NAME) when NAME has no value, and what urdfcli says instead
 _UNDEFINED_ARGUMENT = re.compile(r"\bUndefined substitution argument (\w+)")
-NEEDS_ARGUMENT = re.compile(r"^needs xacro argument '([^']+)', which has no default")
+NEEDS_ARGUMENT = re.compile(r"^needs xacro argument '([^']+)'")
 
 
 @dataclass(frozen=True)
@@ -56,13 +56,15 @@ def load_configured(
     data: bytes | None = None,
     checks: str = "all",
     alone: bool = False,
+    unchecked: str = "",
 ) -> Loaded:
     """Load one input and keep the diagnostics its configuration and suppressions leave.
 
     ``checks`` names the rules that run ("check", "all" or "none"); ``alone``
     expands a xacro library on its own and keeps only what reading and
     expanding it reports (its macros are not called, so there is no robot to
-    judge). Raises InputError (unreadable) or PackageError (bad -P).
+    judge); ``unchecked`` says why the models that include it could not check it
+    (X006). Raises InputError (unreadable) or PackageError (bad -P).
     """
     if data is None and path == STDIN:
         data = read_input(path)
@@ -71,6 +73,13 @@ def load_configured(
         resolver = PackageResolver(options.package_paths, None if path == STDIN else Path(path))
         document, found = load_document(path, options, data, resolver=resolver)
         loaded = Loaded(document, diagnostics=found, resolver=resolver)
+        if unchecked:
+            loaded.diagnostics.append(Diagnostic.of(
+                "X006",
+                f"xacro library checked on its own only: the models that include it cannot be expanded ({unchecked})",
+                Location(document.shown),
+                hint='list their argument sets in [tool.urdfcli] models, e.g. models = { "urdf/robot.urdf.xacro" = [["name:=robot"]] }',
+            ))
     else:
         loaded = load(path, options, data)
     loaded.diagnostics = configured(loaded, path, config, data, checks)
@@ -117,7 +126,8 @@ def _explained(diagnostic: Diagnostic, path: str) -> Diagnostic:
     if match is None:
         return diagnostic
     name = match.group(1)
-    message = f"needs xacro argument '{name}', which has no default: pass {name}:=VALUE, or list the model's argument sets in [tool.urdfcli] models"
+    message = (f"needs xacro argument '{name}': it has no value where it is used (no default, or used before its "
+               f"<xacro:arg>); pass {name}:=VALUE, or list the model's argument sets in [tool.urdfcli] models")
     file = Path(path).name if path != STDIN else "FILE"
     hint = f'give {name}:=VALUE after the file on the command line, or in pyproject.toml: [tool.urdfcli.xacro-args] "{file}" = {{ {name} = "VALUE" }}'
     return Diagnostic(diagnostic.code, diagnostic.severity, message, diagnostic.location, diagnostic.element, diagnostic.hint or hint)
@@ -130,9 +140,10 @@ def lint_file(
     mappings: dict[str, str] | None = None,
     data: bytes | None = None,
     alone: bool = False,
+    unchecked: str = "",
 ) -> Linted:
     """Lint one input. Raises InputError (unreadable) or PackageError (bad -P)."""
-    loaded = load_configured(path, config, package_paths, mappings, data, "all", alone)
+    loaded = load_configured(path, config, package_paths, mappings, data, "all", alone, unchecked)
     robot = RobotName(loaded.robot.name) if loaded.robot is not None else None
     return Linted(loaded.path, robot, loaded.diagnostics, tuple(loaded.document.includes))
 
@@ -149,12 +160,13 @@ class Job:
     package_paths: tuple[str, ...] = ()
     mappings: tuple[tuple[str, str], ...] = ()
     alone: bool = False
+    unchecked: str = ""
 
 
 def run_job(job: Job) -> Linted | str:
     """Lint in a worker: the result, or the one-line reason the file could not be read."""
     try:
-        return lint_file(job.path, job.config, job.package_paths, dict(job.mappings), alone=job.alone)
+        return lint_file(job.path, job.config, job.package_paths, dict(job.mappings), alone=job.alone, unchecked=job.unchecked)
     except (InputError, PackageError) as error:
         return str(error)
 

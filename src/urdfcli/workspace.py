@@ -311,6 +311,7 @@ class Target:
     path: str
     arguments: tuple[tuple[str, str], ...] = ()  # from [tool.urdfcli] models
     alone: bool = False
+    unchecked: str = ""  # alone: why the models that include it could not check it
 
     @property
     def label(self) -> str:
@@ -453,6 +454,7 @@ def _library_result(entry: Entry, outcome, includes_of, shown_keys: set, unreada
     library = Path(entry.path).resolve()
     result = LibraryResult(entry.path)
     found: list[Diagnostic] = []
+    needing: list[str] = []  # models that include it but cannot be expanded without arguments
     for target in entry.targets:
         loaded = outcome(target)
         if isinstance(loaded, str):
@@ -460,8 +462,9 @@ def _library_result(entry: Entry, outcome, includes_of, shown_keys: set, unreada
             continue
         needs = next((m for d in loaded.diagnostics if d.code == "X003" and (m := NEEDS_ARGUMENT.match(d.message))), None)
         if needs is not None:  # the model cannot be expanded as it is: say how to make it, do not fail the library
+            needing.append(f"{target.label} needs '{needs.group(1)}'")
             result.notes.append(
-                f"not checked through {target.label}: it needs xacro argument '{needs.group(1)}', which has no default; "
+                f"not checked through {target.label}: it needs xacro argument '{needs.group(1)}'; "
                 "list the argument sets it is checked with in [tool.urdfcli] models"
             )
             continue
@@ -476,7 +479,8 @@ def _library_result(entry: Entry, outcome, includes_of, shown_keys: set, unreada
         # mistakes written in the library, and whatever breaks a model that uses it
         found += [d for d in loaded.diagnostics if _same(d.file, library) or d.severity is Severity.ERROR]
     if not result.checked_through:
-        alone = outcome(Target(entry.path, alone=True))
+        # Checked on its own; when models include it but all need arguments, that is a gap (X006) the config closes.
+        alone = outcome(Target(entry.path, alone=True, unchecked="; ".join(needing)))
         if isinstance(alone, str):
             unreadable.append(alone)
         else:

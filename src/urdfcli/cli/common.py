@@ -174,7 +174,7 @@ def load_all(
     def outcome(target):
         if target not in done:
             try:
-                done[target] = load_configured(target.path, config_for(target.path), extra, {**mappings, **dict(target.arguments)}, checks=checks, alone=target.alone)
+                done[target] = load_configured(target.path, config_for(target.path), extra, {**mappings, **dict(target.arguments)}, checks=checks, alone=target.alone, unchecked=target.unchecked)
             except InputError as error:
                 done[target] = str(error)
             except PackageError as error:

@@ -20,6 +20,9 @@ def moved_by_joint(loaded, link_name: str) -> bool:
     return joint is not None and joint.moving
 
 
+LUMPED_TENSOR = massprops.LIGHT * 0.1**2  # kg·m²: the most a 20 g part 10 cm across can have
+
+
 def absorbed(loaded, link) -> bool:
     """A link lighter than massprops.LIGHT fixed to a body that weighs more without it
     (a sensor frame, a dummy link): simulators lump it into that body, where its
@@ -144,7 +147,10 @@ def _branch(robot, top: str) -> list[str]:
 @check("I003", "massless-with-inertia", WARNING, "A link with zero mass but a non-zero inertia tensor.")
 def massless_with_inertia(loaded):
     """## What it does
-    Flags a link with mass 0 and an inertia tensor that is not all zero.
+    Flags a link with mass 0 and an inertia tensor that is not all zero. A massless
+    link fixed to a body with mass, whose tensor is no more than a 20 g part 10 cm
+    across could have (2e-4 kg·m²), is left alone: lumped into that body it changes
+    nothing (Bolt's feet: 5e-7 kg·m² on a lower leg).
 
     ## Why is this bad?
     A tensor without mass is contradictory: one of the two values is wrong.
@@ -165,7 +171,10 @@ def massless_with_inertia(loaded):
     ```
     """
     for link, inertial in _inertials(loaded):
-        if inertial.mass == 0 and inertial.inertia and not massprops.is_zero(massprops.matrix(inertial.inertia)):
+        if inertial.mass != 0 or not inertial.inertia:
+            continue
+        tensor = massprops.matrix(inertial.inertia)
+        if not massprops.is_zero(tensor) and not (absorbed(loaded, link) and massprops.scale_of(tensor) <= LUMPED_TENSOR):
             yield loaded.diagnostic("I003", f"link '{link.name}' has mass 0 but a non-zero inertia tensor", inertial.element.find("inertia"))
 
 
