@@ -61,7 +61,8 @@ def _implies(found) -> str | None:
 def placeholder_identity(loaded, options):
     """## What it does
     Flags ``ixx=iyy=izz=1`` without products of inertia, unless the link's geometry really
-    implies it. I008 and I009 leave these links to it. Links lighter than 20 g fixed to a
+    implies it; links sharing this placeholder are named in one diagnostic, at the first
+    of them. I008 and I009 leave these links to it. Links lighter than 20 g fixed to a
     heavier body are left alone.
 
     ## Why is this bad?
@@ -92,9 +93,17 @@ def placeholder_identity(loaded, options):
     ```
     `urdfcli inertia --suggest` prints the values for each link.
     """
-    for link in identity_links(loaded, options):
+    links = identity_links(loaded, options)
+    if len(links) == 1:
         yield loaded.diagnostic(
-            "I007", f"inertia of link '{link.name}' is the identity, a placeholder", link.inertial.element.find("inertia"), _implies(_assess(loaded, link, options))
+            "I007", f"inertia of link '{links[0].name}' is the identity, a placeholder", links[0].inertial.element.find("inertia"), _implies(_assess(loaded, links[0], options))
+        )
+    elif links:  # one cause: one diagnostic naming every link, at the first
+        yield loaded.diagnostic(
+            "I007",
+            f"inertia of {len(links)} links is the identity, a placeholder: {_names(links)}",
+            links[0].inertial.element.find("inertia"),
+            "`urdfcli inertia --suggest` prints the values each link's geometry implies",
         )
 
 
