@@ -210,8 +210,10 @@ def bounded(function, *args):
         return _bounded_once(function, args)
     seconds, memory_mib = TIMEOUT_SECONDS, MEMORY_MIB
     data = _Worker.for_run(memory_mib).run(job, seconds)
-    if data is _RETIRED:  # it retired before taking the job: a new one takes it
+    if data is _RETIRED:  # it ended before taking the job: a new one takes it
         data = _Worker.for_run(memory_mib).run(job, seconds)
+    if data is _RETIRED:
+        data = b""  # a new worker that ends at once
     if not data:
         _ended(data, seconds, memory_mib)
     ok, value = pickle.loads(data)
@@ -327,21 +329,20 @@ class _Worker:
         return current
 
     def run(self, job: bytes, seconds: float):
-        """The answer; None when the time ran out, b"" when the worker died, _RETIRED
-        when it retired without taking the job. The worker is stopped unless it answered."""
-        answer = None
+        """The answer; None when the time ran out, b"" when the worker died during the
+        job, _RETIRED when it ended (retired, or died) without taking the job. The
+        worker is stopped unless it answered."""
         with selectors.DefaultSelector() as selector:  # a notice or an end since the last job?
             selector.register(self.answers, selectors.EVENT_READ)
-            pending = bool(selector.select(0))
-        if not pending:
+            gone = bool(selector.select(0))
+        if not gone:
             try:
                 _write_message(self.jobs, job)
-                answer = _read_message(self.answers, time.monotonic() + seconds)
             except OSError:  # BrokenPipeError: it ended before reading the job
-                pending = True
-        if pending:
-            answer = _read_message(self.answers, time.monotonic() + 1)
-            answer = _RETIRED if answer == _RETIRING else b""
+                gone = True
+        answer = _RETIRED if gone else _read_message(self.answers, time.monotonic() + seconds)
+        if answer == _RETIRING:  # it retired after its last answer, before reading this job
+            answer = _RETIRED
         if answer is None or answer is _RETIRED or not answer:
             self.stop()
         return answer
