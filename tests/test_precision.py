@@ -101,6 +101,9 @@ def test_swapped_axes_are_flagged_and_rounding_is_not(tmp_path):
     assert "principal moments match its collision box, but on axes 90° away" in message
     rounded = BASE + arm("camera", camera + inertial(0.1, 4.2e-5, 2.4e-5, 2.4e-5), joint="fixed")
     assert found(tmp_path, rounded, "I009") == []
+    # the same swap on a 10 g sensor frame (talos rgbd_link) moves nothing anyone feels: info
+    light = BASE + arm("camera", camera + inertial(0.01, 2.42e-6, 2.42e-6, 4.17e-6), joint="fixed")
+    assert [(c, s) for c, s, _ in found(tmp_path, light, "I009")] == [("I009", "info")]
     # nearly round (no moment 15 % apart from the others): no axis to get wrong. The box
     # gives ixx=2.62e-5 iyy=3.16e-5 izz=3.62e-5; ixx and izz exchanged are 28 % off
     roundish = BASE + arm("waist", box("0.05 0.043 0.036") + inertial(0.1, 3.62e-5, 3.16e-5, 2.62e-5), joint="fixed")

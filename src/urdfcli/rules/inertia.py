@@ -232,8 +232,9 @@ def geometry_mismatch(loaded, options):
     tensor more than ``tolerance`` off the one it gives is flagged.
 
     Left alone: a CAD tensor within a few times of the uniform body's (real parts are not
-    uniform: motors, shells, cables); links lighter than 20 g, but for turned axes;
-    geometry that cannot hold the mass (denser than osmium in its bounding box: a
+    uniform: motors, shells, cables); links lighter than 20 g (sensor frames, whose
+    dynamics nothing feels), whose turned axes are only `info` (the macro that turned
+    them may serve heavier links too); geometry that cannot hold the mass (denser than osmium in its bounding box: a
     millimetre sphere standing in for a finger); links without measurable geometry; zero
     tensors (I004), tensors no body can have (I005, I006), the identity (I007) and tensors
     shared as placeholders (I008), which their own rules report.
@@ -269,7 +270,8 @@ def geometry_mismatch(loaded, options):
     for link in _declaring(loaded):
         found = _verdict(loaded, link, options)
         if found is not None:
-            yield loaded.diagnostic("I009", f"inertia of link '{link.name}': {found.message}", link.inertial.element.find("inertia"), found.hint)
+            diagnostic = loaded.diagnostic("I009", f"inertia of link '{link.name}': {found.message}", link.inertial.element.find("inertia"), found.hint)
+            yield diagnostic.with_severity(INFO) if link.inertial.mass < massprops.LIGHT else diagnostic
 
 
 def _verdict(loaded, link, options):
