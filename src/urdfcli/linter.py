@@ -82,12 +82,12 @@ def load_configured(
             ))
     else:
         loaded = load(path, options, data)
-    loaded.diagnostics = configured(loaded, path, config, data, checks)
+    loaded.diagnostics = configured(loaded, path, config, checks)
     return loaded
 
 
 def configured(
-    loaded: Loaded, path: str, config: Config, data: bytes | None = None, checks: str = "all", diagnostics: list[Diagnostic] | None = None
+    loaded: Loaded, path: str, config: Config, checks: str = "all", diagnostics: list[Diagnostic] | None = None
 ) -> list[Diagnostic]:
     """A loaded file's diagnostics (or the ``diagnostics`` given, found on it)
     after configuration and suppression comments. A suppression naming a rule
@@ -143,7 +143,10 @@ def lint_file(
     unchecked: str = "",
 ) -> Linted:
     """Lint one input. Raises InputError (unreadable) or PackageError (bad -P)."""
-    loaded = load_configured(path, config, package_paths, mappings, data, "all", alone, unchecked)
+    return _linted(load_configured(path, config, package_paths, mappings, data, "all", alone, unchecked))
+
+
+def _linted(loaded: Loaded) -> Linted:
     robot = RobotName(loaded.robot.name) if loaded.robot is not None else None
     return Linted(loaded.path, robot, loaded.diagnostics, tuple(loaded.document.includes))
 
@@ -162,11 +165,21 @@ class Job:
     alone: bool = False
     unchecked: str = ""
 
+    @classmethod
+    def of(cls, target, config: Config, package_paths: tuple[str, ...], mappings: dict[str, str]) -> "Job":
+        """The load of a urdfcli.workspace.Target: its argument set over the command line's."""
+        arguments = tuple({**mappings, **dict(target.arguments)}.items())
+        return cls(target.path, config, package_paths, arguments, target.alone, target.unchecked)
+
+    def load(self, checks: str) -> Loaded:
+        """The configured load; raises InputError or PackageError as load_configured does."""
+        return load_configured(self.path, self.config, self.package_paths, dict(self.mappings), None, checks, self.alone, self.unchecked)
+
 
 def run_job(job: Job) -> Linted | str:
     """Lint in a worker: the result, or the one-line reason the file could not be read."""
     try:
-        return lint_file(job.path, job.config, job.package_paths, dict(job.mappings), alone=job.alone, unchecked=job.unchecked)
+        return _linted(job.load("all"))
     except (InputError, PackageError) as error:
         return str(error)
 

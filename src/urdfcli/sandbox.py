@@ -214,6 +214,11 @@ def bounded(function, *args):
         data = _Worker.for_run(memory_mib).run(job, seconds)
     if data is _RETIRED:
         data = b""  # a new worker that ends at once
+    return _result(data, seconds, memory_mib)
+
+
+def _result(data: bytes | None, seconds: float, memory_mib: int):
+    """The job's value from a child's answer, or its exception raised here."""
     if not data:
         _ended(data, seconds, memory_mib)
     ok, value = pickle.loads(data)
@@ -242,12 +247,7 @@ def _bounded_once(function, args):
     finally:
         os.close(read_end)
         _reap(pid)
-    if not data:
-        _ended(data, seconds, memory_mib)
-    ok, value = pickle.loads(data)
-    if ok:
-        return value
-    raise value
+    return _result(data, seconds, memory_mib)
 
 
 def _run_child(write_end: int, memory_mib: int, function, args) -> None:

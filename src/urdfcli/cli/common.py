@@ -156,7 +156,7 @@ def load_all(
     models`` once per argument set. Returns the results and whether any input
     could not be read.
     """
-    from ..linter import load_configured
+    from ..linter import Job
     from ..workspace import Entry, assemble, model_targets, plan
 
     paths, mappings = split_inputs(arguments)
@@ -174,7 +174,7 @@ def load_all(
     def outcome(target):
         if target not in done:
             try:
-                done[target] = load_configured(target.path, config_for(target.path), extra, {**mappings, **dict(target.arguments)}, checks=checks, alone=target.alone, unchecked=target.unchecked)
+                done[target] = Job.of(target, config_for(target.path), extra, mappings).load(checks)
             except InputError as error:
                 done[target] = str(error)
             except PackageError as error:

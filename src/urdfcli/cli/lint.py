@@ -61,7 +61,7 @@ def lint(
         raise fail(str(error)) from None
 
     def job(target: Target) -> Job:
-        return Job(target.path, config_for(target.path), extra, tuple({**mappings, **dict(target.arguments)}.items()), target.alone, target.unchecked)
+        return Job.of(target, config_for(target.path), extra, mappings)
 
     targets = list(dict.fromkeys(t for entry in entries for t in entry.targets))
     done = dict(zip(targets, run([job(t) for t in targets], jobs)))
