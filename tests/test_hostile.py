@@ -16,6 +16,7 @@ import pytest
 from conftest import run_cli
 from urdfcli import sandbox
 from urdfcli.load import LoadOptions, load_document
+from urdfcli.xmlsafe import parse_bytes
 
 XACRO = 'xmlns:xacro="http://www.ros.org/wiki/xacro"'
 SECRET = "TOPSECRET-7f3a9c"
@@ -197,7 +198,7 @@ def test_ordinary_xacro_expressions_still_work(tmp_path, expression):
     path = write(tmp_path, "ok.urdf.xacro", xacro_robot(expression))
     document, diagnostics = load_document(str(path), LoadOptions())
     assert diagnostics == []
-    assert document.root is not None and document.root.find("link").get("name")
+    assert document.readable and parse_bytes(document.data).find("link").get("name")
 
 
 @pytest.mark.parametrize(

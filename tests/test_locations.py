@@ -8,9 +8,11 @@ import subprocess
 import sys
 
 import pytest
+from lxml import etree
 
 from urdfcli.load import LoadOptions, load
 from urdfcli.positions import Source
+from urdfcli.xmlsafe import parse_bytes
 
 XACRO = 'xmlns:xacro="http://www.ros.org/wiki/xacro"'
 
@@ -56,11 +58,11 @@ def body(writer: Writer, prefix: str, indent: int) -> None:
 
 def positions_of(path, ids: set[str]) -> dict[str, tuple[str, int, int]]:
     loaded = load(str(path), LoadOptions(checks="none"))
-    assert loaded.document.root is not None, loaded.diagnostics
+    assert loaded.document.readable, loaded.diagnostics
     found = {}
-    for element in loaded.document.root.iter():
+    for at, element in enumerate(parse_bytes(loaded.document.data).iter(etree.Element)):
         if element.get("id") in ids:
-            where = loaded.document.locate(element)
+            where = loaded.document.locate(at)
             found[element.get("id")] = (where.file, where.line, where.column)
     return found
 

@@ -1,4 +1,9 @@
-"""A parsed description: its XML tree and where each element was written."""
+"""A read description: the bytes of its model, and where each element was written.
+
+Elements are named by their index in document order (the root is 0); their
+places are found from the source text when a diagnostic needs one, so reading
+keeps nothing per element.
+"""
 
 from __future__ import annotations
 
@@ -21,8 +26,8 @@ NAMED = {"link", "joint", "material", "transmission", "gazebo"}
 def tag_name(element: etree._Element) -> str:
     """The tag as tinyxml2 (urdfdom) sees it: the prefix kept, a default namespace ignored."""
     tag = element.tag
-    if isinstance(tag, str) and "{" not in tag and ":" not in tag:
-        return tag  # no namespace and no prefix: the common case, and much faster
+    if isinstance(tag, str) and "{" not in tag:
+        return tag  # no namespace (a prefix lxml could not bind stays in the name): the common case, and faster
     qname = etree.QName(element)
     return f"{element.prefix}:{qname.localname}" if element.prefix else qname.localname
 
@@ -30,7 +35,7 @@ def tag_name(element: etree._Element) -> str:
 @dataclass
 class Document:
     path: str  # as the user gave it ("-" for stdin)
-    root: etree._Element | None
+    data: bytes | None  # the model's XML (xacro's output for xacro inputs); None when unreadable
     file: Path | None = None  # the file on disk, None for stdin
     is_xacro: bool = False
     expanded_text: str | None = None  # xacro output, for xacro inputs
@@ -41,20 +46,18 @@ class Document:
     def shown(self) -> str:
         return "<stdin>" if self.path == "-" else self.path
 
-    @cached_property
-    def _index(self) -> dict[etree._Element, int]:
-        return {element: i for i, element in enumerate(self.root.iter(etree.Element))} if self.root is not None else {}
+    @property
+    def readable(self) -> bool:
+        return self.data is not None
 
-    def diagnostic(
-        self, code: str, message: str, element: etree._Element | None, hint: str | None = None, attribute: str | None = None
-    ) -> Diagnostic:
-        """A diagnostic about ``element`` (or one of its attributes), located where it was written."""
-        return Diagnostic.of(code, message, self.locate(element, attribute), self.element_path(element), hint)
+    def diagnostic(self, code: str, message: str, at: int | None, hint: str | None = None, attribute: str | None = None) -> Diagnostic:
+        """A diagnostic about the element ``at`` (or one of its attributes), located where it was written."""
+        return Diagnostic.of(code, message, self.locate(at, attribute), self.element_path(at), hint)
 
-    def locate(self, element: etree._Element | None, attribute: str | None = None) -> Location:
-        """Where the ``<`` of ``element`` was written; with ``attribute``, where that
+    def locate(self, at: int | None, attribute: str | None = None) -> Location:
+        """Where the ``<`` of element ``at`` was written; with ``attribute``, where that
         attribute's name was, when it is written there (else the element's place)."""
-        location = self._locate(element)
+        location = self._locate(at)
         if attribute is None or not location.line or not location.column:
             return location
         text = source(location.file)
@@ -65,47 +68,49 @@ class Document:
         line, column = text.position(found)
         return Location(location.file, line, column, location.expanded, location.trace)
 
-    def _locate(self, element: etree._Element | None) -> Location:
-        if element is None:
+    def _locate(self, at: int | None) -> Location:
+        if at is None:
             return Location(self.shown)
         if self.origins is not None:
-            index = self._index.get(element)
-            origin = self.origins[index] if index is not None and index < len(self.origins) else None
+            origin = self.origins[at] if at < len(self.origins) else None
             if origin is not None:
                 return Location(origin.file, origin.line or None, origin.column, trace=origin.trace)
-            return Location(self.shown, element.sourceline, None, expanded=True)
-        text, index = self._source, self._index.get(element)
-        start = text.start(index, tag_name(element)) if text is not None and index is not None else None
+        text = self._source
+        start = text.start(at) if text is not None else None
         if start is None:
-            return Location(self.shown, element.sourceline)
+            return Location(self.shown, expanded=self.is_xacro)
         line, column = text.position(start)
-        return Location(self.shown, line, column)
+        return Location(self.shown, line, None, expanded=True) if self.is_xacro else Location(self.shown, line, column)
 
     @cached_property
     def _source(self) -> Source | None:
-        return source(self.shown)
+        """The text the model was read from: the file, or xacro's output."""
+        return Source(self.expanded_text) if self.expanded_text is not None else source(self.shown)
 
-    @staticmethod
-    def element_path(element: etree._Element | None) -> str | None:
+    def element_path(self, at: int | None) -> str | None:
         """An XPath-like name such as ``link[@name='arm']/visual[2]/geometry``."""
-        if element is None:
+        text = self._source
+        if at is None or text is None or text.start(at) is None:
+            return None
+        parents = text.parents
+        if at >= len(parents):
             return None
         parts = []
-        node = element
-        while node is not None and node.getparent() is not None:
-            tag = tag_name(node)
-            name = node.get("name")
-            if tag in NAMED and name is not None and node.getparent().getparent() is None:
+        node = at
+        while parents[node] >= 0:
+            parent = parents[node]
+            tag, name = text.tag(node), text.value(node, "name")
+            if tag in NAMED and name is not None and parents[parent] < 0:
                 parts.append(f"{tag}[@name='{name}']")
-            elif tag == "gazebo" and node.get("reference") is not None:
-                parts.append(f"gazebo[@reference='{node.get('reference')}']")
+            elif tag == "gazebo" and (reference := text.value(node, "reference")) is not None:
+                parts.append(f"gazebo[@reference='{reference}']")
             else:
-                same = [s for s in node.getparent() if s.tag == node.tag]
+                same = [child for child in text.children(parent) if text.tag(child) == tag]
                 parts.append(f"{tag}[{same.index(node) + 1}]" if len(same) > 1 else tag)
-            node = node.getparent()
+            node = parent
         if not parts:
-            name = element.get("name")
-            return f"robot[@name='{name}']" if name is not None else tag_name(element)
+            name = text.value(at, "name")
+            return f"robot[@name='{name}']" if name is not None else text.tag(at)
         return "/".join(reversed(parts))
 
 

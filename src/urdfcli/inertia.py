@@ -576,10 +576,9 @@ def problems(loaded: Loaded, tolerance: float = TOLERANCE, density: float | None
 
 def audit(loaded: Loaded, tolerance: float = TOLERANCE, density: float | None = None) -> Report:
     """The per-link table, the problems and the whole-robot total of one loaded model."""
-    from .document import Document
-
     found = problems(loaded, tolerance, density)
-    by_link: dict[str, list] = {Document.element_path(link.element): [] for link in loaded.robot.links.values()}
+    paths = {link.name: loaded.document.element_path(link.at) for link in loaded.robot.links.values()}
+    by_link: dict[str, list] = {path: [] for path in paths.values()}
     for diagnostic in found:
         path = diagnostic.element or ""
         cuts = [i for i, c in enumerate(path) if c == "/"] + [len(path)]
@@ -589,12 +588,12 @@ def audit(loaded: Loaded, tolerance: float = TOLERANCE, density: float | None = 
     for diagnostic in found:
         if diagnostic.code in GROUPED:  # a group's diagnostic points at its first link and names every one
             for link in loaded.robot.links.values():
-                mine = by_link[Document.element_path(link.element)]
+                mine = by_link[paths[link.name]]
                 if f"'{link.name}'" in diagnostic.message and diagnostic not in mine:
                     mine.append(diagnostic)
     links = []
     for link in loaded.robot.links.values():
-        mine = tuple(by_link[Document.element_path(link.element)])
+        mine = tuple(by_link[paths[link.name]])
         used = used_body(loaded, link, density)
         from_density = density is not None and implied(loaded, link, density).body is not None
         links.append(LinkReport(link, is_frame(link), assess(loaded, link, density), mine, used.mass if used else None, from_density))
@@ -744,14 +743,14 @@ def macro_use(loaded: Loaded, link: Link) -> MacroUse | None:
     """Which xacro macro produced the link's <inertial> (None when it was written in place)."""
     if link.inertial is None or loaded.document.origins is None:
         return None
-    where = loaded.document.locate(link.inertial.element)
+    where = loaded.document.locate(link.inertial.at)
     written = _written(where.file, where.line, "inertial") if where.line and not where.expanded else None
     macro = next((a for a in written.iterancestors() if _is_xacro(a, "macro")), None) if written is not None else None
     if macro is None:
         return None
     name = macro.get("name", "")
     call, called_at = None, None
-    link_where = loaded.document.locate(link.element)
+    link_where = loaded.document.locate(link.at)
     source_link = _written(link_where.file, link_where.line, "link") if link_where.line and not link_where.expanded else None
     if source_link is not None:
         found = next((e for e in source_link.iter(etree.Element) if _is_xacro(e, name)), None)

@@ -118,7 +118,7 @@ def tree_diagnostics(robot: Robot, document: Document) -> list[Diagnostic]:
                 report(
                     "J005",
                     f"{role} link '{link}' of joint '{joint.name}' does not exist",
-                    joint.element.find(role),
+                    joint.part(role),
                     link_hint(link, robot, other_end),
                 )
     parents: dict[str, list[Joint]] = defaultdict(list)
@@ -130,7 +130,7 @@ def tree_diagnostics(robot: Robot, document: Document) -> list[Diagnostic]:
             report(
                 "T003",
                 f"link '{child}' is the child of joint '{extra.name}' and also of joint '{joints[0].name}'",
-                extra.element,
+                extra.at,
                 "a link has exactly one parent joint; for a closed chain, use a mimic joint or split the link",
             )
     if has_loop(robot):  # rare: only then is networkx worth importing
@@ -145,7 +145,7 @@ def tree_diagnostics(robot: Robot, document: Document) -> list[Diagnostic]:
             cycle = nx.find_cycle(graph.subgraph(component))
             first_joint = graph.edges[cycle[0][0], cycle[0][1]]["joint"]
             path = " -> ".join([cycle[0][0], *(v for _, v in cycle)])
-            report("T004", f"the joints form a loop: {path}", first_joint.element, "URDF describes trees: remove one joint of the loop")
+            report("T004", f"the joints form a loop: {path}", first_joint.at, "URDF describes trees: remove one joint of the loop")
     if robot.links:
         # A link whose joint names a missing parent is cut off by that J005 alone: not a second root.
         cut_off = {j.child for j in robot.joints.values() if j.parent is not None and j.parent not in robot.links}
@@ -155,11 +155,11 @@ def tree_diagnostics(robot: Robot, document: Document) -> list[Diagnostic]:
             report(
                 "T001",
                 f"{len(found)} links have no parent: {names}",
-                robot.links[found[1]].element,
+                robot.links[found[1]].at,
                 "connect every link to the tree with a joint, or remove the unused ones",
             )
         elif not found:
-            report("T002", "every link has a parent, so there is no root link", robot.element, "the joints form a loop")
+            report("T002", "every link has a parent, so there is no root link", robot.at, "the joints form a loop")
     return out
 
 

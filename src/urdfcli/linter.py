@@ -99,7 +99,7 @@ def configured(
     rerun = diagnostics is None
     diagnostics = [_explained(d, path) for d in (loaded.diagnostics if diagnostics is None else diagnostics)]
     configured_options = {code: values for code, values in config.rule_options().items() if ran(code)}
-    if rerun and configured_options and loaded.robot is not None and loaded.robot.element is not None:
+    if rerun and configured_options and loaded.robot is not None and loaded.robot.at is not None:
         diagnostics = [d for d in diagnostics if d.code not in configured_options]
         for code, values in configured_options.items():
             diagnostics.extend(rule(code).run(loaded, values))
@@ -107,7 +107,7 @@ def configured(
     def enabled(code: str, file: str) -> bool:
         return config.enabled(rule(code), path, file)
 
-    unreadable = loaded.document.root is None  # why nothing was checked is never selected away
+    unreadable = not loaded.document.readable  # why nothing was checked is never selected away
     selected = [d for d in diagnostics if unreadable or enabled(d.code, d.file)]
     files = {loaded.document.shown, *loaded.document.includes}
     files |= {place.file for d in selected for place in (d.location, *d.location.trace)}

@@ -1,8 +1,9 @@
 """The loading core: one pipeline from a path to a checked model.
 
-read bytes -> parse (lxml, lines kept, nothing external) -> expand xacro
-in-process (origins kept) -> read the model tolerantly -> build the
-kinematic graph -> run the checks. Nothing here exits the process.
+read bytes -> expand xacro where it is used (in a bounded worker, origins
+kept) -> stream the model's elements (lxml, nothing external), reading the
+model tolerantly and keeping no tree -> build the kinematic graph -> run the
+checks. Nothing here exits the process.
 """
 
 from __future__ import annotations
@@ -66,27 +67,39 @@ _SUBSTITUTION = "//@*[contains(., '${') or contains(., '$(')] | //text()[contain
 _HAS_XACRO_ELEMENT = etree.XPath(f"boolean({_XACRO_ELEMENT})")
 _USES_XACRO = etree.XPath(f"boolean({_XACRO_ELEMENT} | {_SUBSTITUTION})")
 _COMMENT = re.compile(rb"<!--.*?-->", re.DOTALL)
+_DECLARED_ENCODING = re.compile(rb"""\A(?:\xef\xbb\xbf)?\s*<\?xml[^>]*?\sencoding\s*=\s*["']([A-Za-z0-9._:-]{1,64})["']""")
 _XACRO_TAGS = tuple(f"{{{ns}}}*" for ns in sorted(XACRO_NAMESPACES))
 _XACRO_URI = re.compile(b"|".join(re.escape(ns.encode()) for ns in sorted(XACRO_NAMESPACES)))
 _XACRO_PREFIX_DECLARED = re.compile(rb"""xmlns:xacro\s*=\s*["'](?:""" + _XACRO_URI.pattern + rb""")["']""")
 
 
-def is_xacro(root: etree._Element, data: bytes) -> bool:
+def is_xacro(data: bytes) -> bool:
     """Whether a document not named .xacro uses xacro: a xacro element (in xacro's
     namespace, or any element prefixed ``xacro:``), or ``${`` / ``$(`` in an attribute
     or in text outside comments. A namespace declaration alone is not use: xacro's
-    output would read the same, at many times the cost."""
-    encoding = (root.getroottree().docinfo.encoding or "").lower().replace("-", "")
-    if encoding in _ASCII_COMPATIBLE and not _substitution_outside_comments(data):
-        # Byte searches first: much faster than XPath, which reads every element.
-        if b"<xacro:" in data:
-            return bool(_HAS_XACRO_ELEMENT(root))  # prefixed xacro: bound to any namespace
-        if b"xacro" not in data:
-            return False
-        if len(_XACRO_URI.findall(data)) == len(_XACRO_PREFIX_DECLARED.findall(data)):
-            return False  # each mention of xacro's namespace binds the prefix xacro, which no element uses
-        return next(root.iter(_XACRO_TAGS), None) is not None  # xacro's namespace under another prefix
-    return bool(_USES_XACRO(root))
+    output would read the same, at many times the cost. The bytes are searched
+    first; the document is parsed only when they cannot tell. A document that is
+    not well-formed is not xacro: reading it says what is wrong."""
+    try:
+        if _ascii_compatible(data) and not _substitution_outside_comments(data):
+            if b"<xacro:" in data:
+                return bool(_HAS_XACRO_ELEMENT(parse_bytes(data)))  # prefixed xacro: bound to any namespace
+            if b"xacro" not in data:
+                return False
+            if len(_XACRO_URI.findall(data)) == len(_XACRO_PREFIX_DECLARED.findall(data)):
+                return False  # each mention of xacro's namespace binds the prefix xacro, which no element uses
+            return next(parse_bytes(data).iter(_XACRO_TAGS), None) is not None  # xacro's namespace under another prefix
+        return bool(_USES_XACRO(parse_bytes(data)))
+    except XmlError:
+        return False
+
+
+def _ascii_compatible(data: bytes) -> bool:
+    """Whether the bytes of markup are ASCII, so that they can be searched as bytes."""
+    if data[:2] in (b"\xff\xfe", b"\xfe\xff") or data[:4] in (b"\x00\x00\xfe\xff", b"\xff\xfe\x00\x00"):
+        return False
+    declared = _DECLARED_ENCODING.match(data)
+    return declared is None or declared.group(1).decode("ascii").lower().replace("-", "").replace("_", "") in _ASCII_COMPATIBLE
 
 
 def _substitution_outside_comments(data: bytes) -> bool:
@@ -116,14 +129,12 @@ def load_document(
     if file is None:
         positions.register(shown, data)  # excerpts and columns, as for a file
     named_xacro = force_xacro or path.endswith(".xacro")
+    if not named_xacro and not is_xacro(data):
+        return Document(path, data, file), []  # read as it streams: see model.read
     try:
-        root = parse_bytes(data, keep_blank_text=named_xacro)
+        root = parse_bytes(data)  # with the white space xacro lays out
     except XmlError as error:
         return Document(path, None, file), [_error(error.code, error.message, Location(shown, error.line, error.column))]
-    if not named_xacro:
-        if not is_xacro(root, data):
-            return Document(path, root, file), []
-        root = parse_bytes(data)  # xacro found by content: read again with the white space it lays out
     from . import expansion  # xacro and its dependencies, only for xacro inputs
 
     resolver = resolver or PackageResolver(options.package_paths, file)
@@ -132,10 +143,18 @@ def load_document(
     except expansion.ExpansionError as error:
         location = expansion.located(error.origin, error.file or shown)
         return Document(path, None, file, is_xacro=True, includes=list(error.includes)), [_error(error.code, error.message, location)]
-    expanded_root = parse_bytes(result.text.encode("utf-8"), keep_blank_text=False)
-    document = Document(path, expanded_root, file, True, result.text, result.includes, result.origins)
+    document = Document(path, result.text.encode("utf-8"), file, True, result.text, result.includes, result.origins)
     warnings = [_error("X005", text, expansion.located(origin, shown)) for text, origin in result.warnings]
     return document, warnings
+
+
+def _not_well_formed(data: bytes) -> XmlError | None:
+    """Why ``data`` is not a well-formed document, or None when it is."""
+    try:
+        parse_bytes(data)
+    except XmlError as error:
+        return error
+    return None
 
 
 def _collector_paused(function):
@@ -161,12 +180,20 @@ def load(path: str, options: LoadOptions = LoadOptions(), data: bytes | None = N
     resolver = PackageResolver(options.package_paths, None if path == STDIN else Path(path))
     document, diagnostics = load_document(path, options, data, resolver=resolver)
     loaded = Loaded(document, diagnostics=diagnostics, resolver=resolver)
-    if document.root is None:
+    if not document.readable:
         return loaded
-    robot, found = read(document)
+    try:
+        robot, found = read(document, vocabulary=options.checks == "all")
+    except Exception as failure:  # noqa: BLE001  (a stream may reach odd markup before the error after it)
+        error = failure if isinstance(failure, XmlError) else _not_well_formed(document.data)
+        if error is None:
+            raise
+        document.data = None
+        loaded.diagnostics.append(_error(error.code, error.message, Location(document.shown, error.line, error.column)))
+        return loaded
     loaded.diagnostics += found
     loaded.robot = robot
-    if robot.element is None:
+    if robot.at is None:
         return loaded
     loaded.diagnostics += tree_diagnostics(robot, document)
     if options.checks != "none":

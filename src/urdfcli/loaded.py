@@ -6,8 +6,6 @@ from dataclasses import dataclass, field
 from functools import cached_property
 from typing import TYPE_CHECKING
 
-from lxml import etree
-
 from .diagnostics import Diagnostic, Severity
 from .document import Document
 from .model import Joint, Robot
@@ -39,10 +37,9 @@ class Loaded:
     def ok(self) -> bool:
         return not any(d.severity is Severity.ERROR for d in self.diagnostics)
 
-    def diagnostic(
-        self, code: str, message: str, element: etree._Element | None, hint: str | None = None, attribute: str | None = None
-    ) -> Diagnostic:
-        return self.document.diagnostic(code, message, element, hint, attribute)
+    def diagnostic(self, code: str, message: str, at: int | None, hint: str | None = None, attribute: str | None = None) -> Diagnostic:
+        """A diagnostic about the element ``at`` (see :class:`Document`)."""
+        return self.document.diagnostic(code, message, at, hint, attribute)
 
     @cached_property
     def _parent_joints(self) -> dict[str, Joint]:
@@ -60,7 +57,7 @@ class Loaded:
     def graph(self) -> nx.DiGraph | None:
         """The kinematic tree as a networkx DiGraph (links as nodes, joints on the
         edges), built on first use: most runs never need networkx."""
-        if self.robot is None or self.robot.element is None:
+        if self.robot is None or self.robot.at is None:
             return None
         from .kinematics import build_graph
 
@@ -68,7 +65,7 @@ class Loaded:
 
     @cached_property
     def root(self) -> str | None:
-        if self.robot is None or self.robot.element is None:
+        if self.robot is None or self.robot.at is None:
             return None
         from .kinematics import roots
 

@@ -9,11 +9,15 @@ leaves the field empty, and reads on.
 from __future__ import annotations
 
 from dataclasses import dataclass, field
+from itertools import count
+from typing import NamedTuple
 
 from lxml import etree
 
+from . import markup
 from .diagnostics import Diagnostic
 from .document import Document, tag_name
+from .xmlsafe import elements
 from .numbers import NumberError, VectorLengthError, format_number, parse_double, parse_vector
 
 Vec3 = tuple[float, float, float]
@@ -23,16 +27,17 @@ INERTIA_KEYS = ("ixx", "ixy", "ixz", "iyy", "iyz", "izz")
 ZERO_HINT = "a placeholder shape is better left out; give a real shape a positive size"
 
 
-@dataclass(frozen=True, slots=True)
-class Pose:
+# Model parts are named tuples: built by the million on large models, where a
+# frozen dataclass costs several times more. ``at`` is an element's index in
+# document order (see document.py), which locates it.
+class Pose(NamedTuple):
     xyz: Vec3 = (0.0, 0.0, 0.0)
     rpy: Vec3 = (0.0, 0.0, 0.0)
 
 
-@dataclass(frozen=True, slots=True)
-class Geometry:
+class Geometry(NamedTuple):
     kind: str  # box, cylinder, sphere, mesh
-    element: etree._Element
+    at: int
     size: Vec3 | None = None
     radius: float | None = None
     length: float | None = None
@@ -40,35 +45,33 @@ class Geometry:
     scale: Vec3 = (1.0, 1.0, 1.0)
 
 
-@dataclass(frozen=True, slots=True)
-class Shape:
+class Shape(NamedTuple):
     """A ``<visual>`` or ``<collision>``."""
 
-    element: etree._Element
+    at: int
     origin: Pose
     geometry: Geometry | None
     material: str | None = None
 
 
-@dataclass(frozen=True, slots=True)
-class Inertial:
-    element: etree._Element
+class Inertial(NamedTuple):
+    at: int
     origin: Pose
     mass: float | None
     inertia: dict[str, float] | None  # ixx ixy ixz iyy iyz izz
+    mass_at: int | None = None
+    inertia_at: int | None = None
 
 
-@dataclass(frozen=True, slots=True)
-class Link:
+class Link(NamedTuple):
     name: str
-    element: etree._Element
+    at: int
     inertial: Inertial | None
     visuals: tuple[Shape, ...]
     collisions: tuple[Shape, ...]
 
 
-@dataclass(frozen=True, slots=True)
-class Limit:
+class Limit(NamedTuple):
     lower: float = 0.0
     upper: float = 0.0
     effort: float | None = None
@@ -77,17 +80,15 @@ class Limit:
     has_upper: bool = False
 
 
-@dataclass(frozen=True, slots=True)
-class Mimic:
+class Mimic(NamedTuple):
     joint: str
     multiplier: float = 1.0
     offset: float = 0.0
 
 
-@dataclass(frozen=True, slots=True)
-class Joint:
+class Joint(NamedTuple):
     name: str
-    element: etree._Element
+    at: int
     type: str | None
     parent: str | None
     child: str | None
@@ -95,39 +96,71 @@ class Joint:
     axis: Vec3
     limit: Limit | None
     mimic: Mimic | None
+    parts: tuple[tuple[str, int], ...] = ()  # where its first <parent>, <child>, <axis>, <limit>, <mimic> are
+
+    def part(self, tag: str) -> int | None:
+        """Where the joint's first ``<tag>`` is (None when it has none)."""
+        return next((at for name, at in self.parts if name == tag), None)
 
     @property
     def moving(self) -> bool:
         return self.type not in (None, "fixed")
 
 
-@dataclass(frozen=True, slots=True)
-class Material:
+class Material(NamedTuple):
     name: str
-    element: etree._Element
+    at: int
     rgba: tuple[float, ...] | None
     texture: str | None
+    rgba_text: str | None = None  # as written
+
+
+class Resource(NamedTuple):
+    """A file the model names: a ``<mesh>`` or ``<texture>``."""
+
+    at: int
+    kind: str  # mesh, texture
+    uri: str
 
 
 @dataclass
 class Robot:
     name: str | None
-    element: etree._Element | None
+    at: int | None  # None when the root element is not <robot>
     links: dict[str, Link] = field(default_factory=dict)
     joints: dict[str, Joint] = field(default_factory=dict)
     materials: dict[str, Material] = field(default_factory=dict)
+    resources: list[Resource] = field(default_factory=list)
+    unknown: list[markup.Unknown] = field(default_factory=list)  # read only when asked for
+    extensions: list[etree._Element] = field(default_factory=list)  # top-level blocks of other formats
+    _placed: dict[etree._Element, int] = field(default_factory=dict, repr=False)
+
+    def blocks(self, tag: str | None = None) -> list[etree._Element]:
+        """The top-level elements other than links, joints and materials (``<gazebo>``,
+        ``<transmission>``, ``<ros2_control>``...), kept whole; with ``tag``, those of that tag."""
+        return [block for block in self.extensions if tag is None or block.tag == tag]
+
+    def place(self, element: etree._Element) -> int | None:
+        """Where an element of one of :meth:`blocks` is."""
+        return self._placed.get(element)
 
 
 class Reader:
-    """Builds a Robot from a Document, collecting diagnostics."""
+    """Builds a Robot from a Document, collecting diagnostics. The document is
+    streamed: each element written at the top level is read whole, then dropped."""
 
-    def __init__(self, document: Document):
+    def __init__(self, document: Document, vocabulary: bool = False):
         self.document = document
+        self.vocabulary = vocabulary  # classify markup against URDF's vocabulary too
         self.diagnostics: list[Diagnostic] = []
+        self._index: dict[etree._Element, int] = {}  # the elements being read -> their index
+
+    def at(self, element: etree._Element | None) -> int | None:
+        return self._index[element] if element is not None else None
 
     # -- reporting -------------------------------------------------------------
     def report(self, code: str, message: str, element: etree._Element | None, hint: str | None = None) -> None:
-        self.diagnostics.append(self.document.diagnostic(code, message, element, hint))
+        self.diagnostics.append(self.document.diagnostic(code, message, self.at(element), hint))
 
     # -- values ----------------------------------------------------------------
     def number(self, element: etree._Element, attribute: str, required: bool = False, what: str = "") -> float | None:
@@ -199,7 +232,7 @@ class Reader:
         if top_level and rgba is None and texture_file is None:
             hint = "did you mean rgba=?" if color is not None and color.get("rgb") is not None else None
             self.report("M001", f"material '{name}' has neither <color rgba> nor <texture filename>", element, hint)
-        return Material(name, element, rgba, texture_file)
+        return Material(name, self.at(element), rgba, texture_file, color.get("rgba") if color is not None else None)
 
     def geometry(self, parent: etree._Element, element: etree._Element | None) -> Geometry | None:
         if element is None:
@@ -216,7 +249,7 @@ class Reader:
         if kind == "sphere":
             radius = self.number(shape, "radius", required=True)
             self.positive(shape, "radius", radius)
-            return Geometry(kind, shape, radius=radius) if radius is not None else None
+            return Geometry(kind, self.at(shape), radius=radius) if radius is not None else None
         if kind == "box":
             if shape.get("size") is None:
                 self.report("V004", "<box> has no 'size' attribute", shape)
@@ -228,7 +261,7 @@ class Reader:
                 self.report("V006", f"box size '{shape.get('size')}' has a negative component", shape)
             elif min(size) == 0:
                 self.report("V008", f"box size '{shape.get('size')}' has a zero component: the box has no volume", shape, ZERO_HINT)
-            return Geometry(kind, shape, size=size)
+            return Geometry(kind, self.at(shape), size=size)
         if kind == "cylinder":
             if shape.get("radius") is None or shape.get("length") is None:
                 missing = " and ".join(a for a in ("radius", "length") if shape.get(a) is None)
@@ -238,14 +271,14 @@ class Reader:
             radius = self.number(shape, "radius")
             self.positive(shape, "length", length)
             self.positive(shape, "radius", radius)
-            return Geometry(kind, shape, radius=radius, length=length) if None not in (length, radius) else None
+            return Geometry(kind, self.at(shape), radius=radius, length=length) if None not in (length, radius) else None
         if kind == "mesh":
             filename = shape.get("filename")
             if filename is None:
                 self.report("V004", "<mesh> has no 'filename' attribute", shape)
                 return None
             scale = self.vector(shape, "scale", (1.0, 1.0, 1.0))
-            return Geometry(kind, shape, filename=filename, scale=scale) if scale is not None else None
+            return Geometry(kind, self.at(shape), filename=filename, scale=scale) if scale is not None else None
         self.report("G002", f"unknown shape <{kind}> in <geometry>", shape, "URDF shapes are box, cylinder, sphere and mesh")
         return None
 
@@ -261,7 +294,7 @@ class Reader:
                 material_name = parsed.name if parsed else None
                 if parsed is not None:
                     self._inline_materials.append(parsed)
-        return Shape(element, origin, geometry, material_name)
+        return Shape(self.at(element), origin, geometry, material_name)
 
     def inertial(self, element: etree._Element) -> Inertial:
         found = first_children(element)
@@ -279,7 +312,7 @@ class Reader:
         else:
             values = {key: self.number(inertia_element, key, required=True) for key in INERTIA_KEYS}
             inertia = values if None not in values.values() else None
-        return Inertial(element, origin, mass, inertia)  # type: ignore[arg-type]
+        return Inertial(self.at(element), origin, mass, inertia, self.at(mass_element), self.at(inertia_element))  # type: ignore[arg-type]
 
     def link(self, element: etree._Element) -> Link:
         name = element.get("name")
@@ -290,7 +323,7 @@ class Reader:
         inertial = self.inertial(inertial_element) if inertial_element is not None else None
         visuals = tuple([self.shape(v, visual=True) for v in element.iterchildren("visual")])
         collisions = tuple([self.shape(c, visual=False) for c in element.iterchildren("collision")])
-        return Link(name, element, inertial, visuals, collisions)
+        return Link(name, self.at(element), inertial, visuals, collisions)
 
     def joint_limit(self, joint_name: str, element: etree._Element) -> Limit:
         what = f" (joint '{joint_name}')"
@@ -359,7 +392,8 @@ class Reader:
         if parent is None or child is None:
             missing = " and ".join(t for t, v in (("<parent link>", parent), ("<child link>", child)) if v is None)
             self.report("J004", f"joint '{shown}' has no {missing}", element)
-        return Joint(name if name is not None else "", element, joint_type, parent, child, origin, axis, limit, mimic)
+        parts = tuple((tag, self._index[found[tag]]) for tag in ("parent", "child", "axis", "limit", "mimic") if tag in found)
+        return Joint(name if name is not None else "", self.at(element), joint_type, parent, child, origin, axis, limit, mimic, parts)
 
     @staticmethod
     def _link_ref(element: etree._Element | None) -> str | None:
@@ -368,43 +402,65 @@ class Reader:
 
     # -- robot -----------------------------------------------------------------
     def robot(self) -> Robot:
-        root = self.document.root
+        """The robot, read from the document's elements as they stream by; raises
+        XmlError when the document turns out not to be well-formed."""
+        stream = elements(self.document.data)
+        root = next(stream)
+        self._index = {root: 0}
         self._inline_materials: list[Material] = []
         if tag_name(root) != "robot":
             self.report("R001", f"the root element is <{tag_name(root)}>, not <robot>", root)
+            for _ in stream:  # the rest must still be well-formed
+                pass
             return Robot(None, None)
         name = root.get("name")
         if name is None:
             self.report("R002", "<robot> has no 'name' attribute", root)
         self.version(root)
-        robot = Robot(name, root)
-        for element in root.iterfind("material"):
-            material = self.material(element, top_level=True)
-            if material is None:
-                continue
-            if material.name in robot.materials:
-                self.report("N006", f"material '{material.name}' is defined twice", element)
-            else:
-                robot.materials[material.name] = material
-        links = root.findall("link")
-        if not links:
+        robot = Robot(name, 0)
+        if self.vocabulary:
+            robot.unknown.extend(markup.unknown_attributes(root, 0))
+        numbers = count(1)
+        for element in stream:
+            self._index = index = dict(zip(element.iter(), numbers))
+            index[root] = 0
+            self.top_level(robot, element)
+            robot.resources.extend(Resource(index[found], found.tag, uri) for found in element.iter("mesh", "texture") if (uri := found.get("filename")))
+            if self.vocabulary:
+                robot.unknown.extend(markup.unknown_markup(element, index.__getitem__))
+        if not robot.links:
             self.report("R004", "the robot has no <link>", root)
-        for element in links:
+        self.check_materials(robot)
+        return robot
+
+    def top_level(self, robot: Robot, element: etree._Element) -> None:
+        """Read one element written directly in ``<robot>``."""
+        tag = element.tag
+        if tag == "link":
             link = self.link(element)
             if link.name in robot.links:
-                self.report("N004", f"link '{link.name}' is defined twice", element, f"first defined at {_where(self.document, robot.links[link.name].element)}")
+                self.report("N004", f"link '{link.name}' is defined twice", element, f"first defined at {_where(self.document, robot.links[link.name].at)}")
             else:
                 robot.links[link.name] = link
-        for element in root.iterfind("joint"):
+        elif tag == "joint":
             joint = self.joint(element)
             if element.get("name") is None:
-                continue
+                return
             if joint.name in robot.joints:
                 self.report("N005", f"joint '{joint.name}' is defined twice", element)
             else:
                 robot.joints[joint.name] = joint
-        self.check_materials(robot)
-        return robot
+        elif tag == "material":
+            material = self.material(element, top_level=True)
+            if material is None:
+                return
+            if material.name in robot.materials:
+                self.report("N006", f"material '{material.name}' is defined twice", element)
+            else:
+                robot.materials[material.name] = material
+        else:
+            robot.extensions.append(element)
+            robot._placed.update(self._index)
 
     def version(self, root: etree._Element) -> None:
         version = root.get("version")
@@ -426,17 +482,16 @@ class Reader:
                 continue
             if material.rgba is None and material.texture is None:
                 if material.name not in robot.materials and material.name not in seen:
-                    self.report("M002", f"material '{material.name}' is defined nowhere", material.element, "define it at the top level, or give it a <color rgba>")
+                    self.diagnostics.append(self.document.diagnostic("M002", f"material '{material.name}' is defined nowhere", material.at, "define it at the top level, or give it a <color rgba>"))
                 continue
             first = seen.setdefault(material.name, material)
             if first.rgba is not None and material.rgba is not None and not same_colour(first.rgba, material.rgba):
-                self.report(
+                self.diagnostics.append(self.document.diagnostic(
                     "M003",
-                    f"material '{material.name}' has rgba '{material.element.find('color').get('rgba')}' here "
-                    f"but '{first.element.find('color').get('rgba')}' at {_where(self.document, first.element)}",
-                    material.element,
+                    f"material '{material.name}' has rgba '{material.rgba_text}' here but '{first.rgba_text}' at {_where(self.document, first.at)}",
+                    material.at,
                     "consumers keep one colour per name: give each colour its own name",
-                )
+                ))
 
 
 # Components closer than a tenth look alike in a viewer: 0.75294 is 192/255 rounded, and
@@ -457,12 +512,14 @@ def first_children(element: etree._Element) -> dict[str, etree._Element]:
     return found
 
 
-def _where(document: Document, element: etree._Element) -> str:
-    location = document.locate(element)
+def _where(document: Document, at: int) -> str:
+    location = document.locate(at)
     return f"{location.file}:{location.line}"
 
 
-def read(document: Document) -> tuple[Robot, list[Diagnostic]]:
-    reader = Reader(document)
+def read(document: Document, vocabulary: bool = False) -> tuple[Robot, list[Diagnostic]]:
+    """The robot and what reading it found; with ``vocabulary``, markup URDF does not
+    define is classified too (``Robot.unknown``). Raises XmlError."""
+    reader = Reader(document, vocabulary)
     robot = reader.robot()
     return robot, reader.diagnostics

@@ -28,10 +28,19 @@ _IGNORED = re.compile(r"<!--.*?-->|<!\[CDATA\[.*?\]\]>|<\?.*?\?>|<!DOCTYPE(?:[^\
 # A start tag (name, attributes with quoted values that may hold '>', then '/>' or '>') or an end tag.
 _TAG = re.compile(r"""<(?:/[^>]*>|[^\s/>!?](?:[^>"'/]|/(?!>)|"[^"]*"|'[^']*')*(/?)>)""")
 _NAME = re.compile(r"<[^\s/>]+")
+_ENTITY = re.compile(r"&(#x[0-9a-fA-F]+|#[0-9]+|lt|gt|amp|quot|apos);")
+_ENTITIES = {"lt": "<", "gt": ">", "amp": "&", "quot": '"', "apos": "'"}
 _ATTRIBUTE = re.compile(r"""\s+([^\s=/>]+)\s*=\s*(?:"[^"]*"|'[^']*')""")
 _DECLARED = re.compile(rb"""^<\?xml[^>]*?encoding\s*=\s*["']([A-Za-z0-9._-]+)["']""")
 _BOMS = ((codecs.BOM_UTF32_LE, "utf-32"), (codecs.BOM_UTF32_BE, "utf-32"), (codecs.BOM_UTF8, "utf-8-sig"),
          (codecs.BOM_UTF16_LE, "utf-16"), (codecs.BOM_UTF16_BE, "utf-16"))
+
+
+def _entity(match: re.Match) -> str:
+    name = match.group(1)
+    if name.startswith("#"):
+        return chr(int(name[2:], 16) if name[1] == "x" else int(name[1:]))
+    return _ENTITIES[name]
 
 
 def decode(data: bytes) -> str:
@@ -86,10 +95,10 @@ class Source:
         """The offset of every element's ``<``, in document order."""
         return self._outside([m.start() for m in _ELEMENT.finditer(self.text)])
 
-    def start(self, index: int, tag: str) -> int | None:
+    def start(self, index: int, tag: str | None = None) -> int | None:
         """The offset of the ``<`` of the element ``index`` (in document order), checked
-        against its tag. Found by scanning no further than needed: a diagnostic near
-        the top of a large model costs nearly nothing."""
+        against its tag when one is given. Found by scanning no further than needed:
+        a diagnostic near the top of a large model costs nearly nothing."""
         found = self._found
         while len(found) <= index:
             batch = [m.start() for m in itertools.islice(self._scan, max(1024, index + 1 - len(found)))]
@@ -97,10 +106,54 @@ class Source:
                 return None
             found.extend(self._outside(batch))
         start = found[index]
+        if tag is None:
+            return start
         if not self.text.startswith(tag, start + 1):
             return None  # not the text of this tree
         end = start + 1 + len(tag)
         return start if end == len(self.text) or self.text[end] in _AFTER_NAME else None
+
+    @cached_property
+    def parents(self) -> list[int]:
+        """Per element in document order, the index of its parent (-1 for the root);
+        empty when the text is not a well-formed document."""
+        found: list[int] = []
+        open_: list[int] = []  # the elements that hold the next one
+        ends: list[int] = []
+        for index, (start, _, end) in enumerate(self.spans):
+            while ends and ends[-1] <= start:
+                ends.pop()
+                open_.pop()
+            found.append(open_[-1] if open_ else -1)
+            open_.append(index)
+            ends.append(end)
+        return found
+
+    def children(self, parent: int) -> list[int]:
+        """The elements whose parent is ``parent``: they follow it, up to the end of its span."""
+        parents, found = self.parents, []
+        for index in range(parent + 1, len(parents)):
+            if parents[index] < parent:
+                break
+            if parents[index] == parent:
+                found.append(index)
+        return found
+
+    def tag(self, index: int) -> str | None:
+        """The name written in the start tag of element ``index``."""
+        start = self.start(index)
+        name = _NAME.match(self.text, start) if start is not None else None
+        return name.group()[1:] if name else None
+
+    def value(self, index: int, attribute: str) -> str | None:
+        """The value of ``attribute`` on element ``index``, entities replaced."""
+        start = self.start(index)
+        at = self.attribute(start, attribute) if start is not None else None
+        found = _ATTRIBUTE.match(self.text, at - 1) if at is not None else None
+        if found is None:
+            return None
+        written = found.group(0).split("=", 1)[1].strip()[1:-1]
+        return _ENTITY.sub(_entity, written) if "&" in written else written
 
     @cached_property
     def _found(self) -> list[int]:

@@ -7,7 +7,9 @@ entities is refused outright, which also disarms entity-expansion bombs.
 from __future__ import annotations
 
 import codecs
+import io
 import re
+from collections.abc import Iterator
 
 from lxml import etree
 
@@ -66,6 +68,50 @@ def parse_bytes(data: bytes, keep_blank_text: bool = True) -> etree._Element:
     for node in root.iter(etree.Entity):
         raise XmlError(f"undefined entity reference {node.text}", node.sourceline, None)
     return root
+
+
+def elements(data: bytes) -> Iterator[etree._Element]:
+    """The document streamed: first its root element (attributes read, children
+    not yet), then each element written at the top level, whole, in document
+    order. Each is taken out of the tree once the next one is asked for, so no
+    more than one top-level element is held at a time; blank text, comments and
+    processing instructions are dropped. Raises XmlError as :func:`parse_bytes`
+    would, when the problem is met."""
+    if not data.strip():
+        raise XmlError("the document is empty", 1, 1)
+    if b"<!DOCTYPE" in data or b"<!ENTITY" in data:
+        parse_bytes(data)  # entity declarations are refused there, with their own message
+    given = 0
+    try:
+        for element in _streamed(data):
+            given += 1
+            yield element
+    except (etree.XMLSyntaxError, ValueError) as error:
+        parse_bytes(data)  # the message and position parse_bytes gives, as for any reading
+        if given:  # cannot happen for a document parse_bytes reads: say so rather than lose the error
+            raise XmlError(str(error), getattr(error, "lineno", None) or 1, None) from None
+        yield from _streamed(recoded(data), encoding="utf-8")  # an encoding only Python knows
+
+
+def _streamed(data: bytes, encoding: str | None = None) -> Iterator[etree._Element]:
+    events = etree.iterparse(
+        io.BytesIO(data), events=("end",), remove_blank_text=True, remove_comments=True, remove_pis=True,
+        resolve_entities=False, no_network=True, load_dtd=False, dtd_validation=False, huge_tree=False, encoding=encoding,
+    )
+    root = None
+    for _, element in events:
+        parent = element.getparent()
+        if parent is None:  # the root's end: what follows it must still be read, to be checked
+            if root is None:
+                yield element  # a root without children
+            continue
+        if parent is not root:
+            if root is not None or parent.getparent() is not None:
+                continue  # inside a top-level element: it comes whole, at its end
+            root = parent
+            yield root
+        yield element
+        del root[0]  # the element just given: everything before it is gone already
 
 
 def recoded(data: bytes) -> bytes:

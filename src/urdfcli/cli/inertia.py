@@ -60,7 +60,7 @@ def inertia(
     results, unreadable = load_all(inputs, package_path, "none", config_for)
     if not results:
         raise typer.Exit(Exit.CANNOT_RUN)
-    reports = [audit_module.audit(loaded, tolerance, density) if loaded.robot is not None and loaded.robot.element is not None else None for loaded in results]
+    reports = [audit_module.audit(loaded, tolerance, density) if loaded.robot is not None and loaded.robot.at is not None else None for loaded in results]
     reports = [configured_report(r, config_for(r.loaded.path)) if r is not None else None for r in reports]
     for loaded in results:
         for diagnostic in loaded.diagnostics:

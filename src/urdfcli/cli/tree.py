@@ -84,14 +84,14 @@ def report_errors(loaded: Loaded) -> bool:
     errors = [d for d in loaded.diagnostics if d.severity is Severity.ERROR]
     for diagnostic in errors:
         print_diagnostic(stderr, diagnostic, excerpt=True)
-    return bool(errors) or loaded.robot is None or loaded.robot.element is None
+    return bool(errors) or loaded.robot is None or loaded.robot.at is None
 
 
 def start_link(loaded: Loaded, from_link: str | None) -> str | None:
     """The link to draw from: ``--from``, else the root. None (after saying
     why) when the model has no single root; an unknown ``--from`` exits 2."""
     robot = loaded.robot
-    if robot is None or robot.element is None or not robot.links:
+    if robot is None or robot.at is None or not robot.links:
         return None
     if from_link is not None:
         if from_link not in robot.links:

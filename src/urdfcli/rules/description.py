@@ -6,83 +6,8 @@ import difflib
 import re
 from dataclasses import dataclass
 
-from lxml import etree
-
-from ..document import tag_name
+from ..markup import SCHEMA
 from . import INFO, WARNING, check
-
-# What the URDF format allows: element -> (attributes, child elements). Elements
-# whose contents belong to another format (gazebo, transmission, ros2_control)
-# are not looked into; <geometry> shapes are G002's business. Newer urdfdom
-# releases read `quat_xyzw` (URDF 1.1) and acceleration limits (URDF 1.2).
-ORIGIN = ({"xyz", "rpy", "quat_xyzw"}, set())
-SCHEMA: dict[str, tuple[set[str], set[str]]] = {
-    "robot": ({"name", "version"}, {"link", "joint", "material", "transmission", "gazebo", "ros2_control"}),
-    "link": ({"name", "type"}, {"inertial", "visual", "collision"}),
-    "inertial": (set(), {"origin", "mass", "inertia"}),
-    "origin": ORIGIN,
-    "mass": ({"value"}, set()),
-    "inertia": ({"ixx", "ixy", "ixz", "iyy", "iyz", "izz"}, set()),
-    "visual": ({"name"}, {"origin", "geometry", "material"}),
-    "collision": ({"name"}, {"origin", "geometry"}),
-    "geometry": (set(), None),  # shapes: checked by G001/G002
-    "box": ({"size"}, set()),
-    "cylinder": ({"radius", "length"}, set()),
-    "sphere": ({"radius"}, set()),
-    "mesh": ({"filename", "scale"}, set()),
-    "material": ({"name"}, {"color", "texture"}),
-    "color": ({"rgba"}, set()),
-    "texture": ({"filename"}, set()),
-    "joint": ({"name", "type"}, {"origin", "parent", "child", "axis", "calibration", "dynamics", "limit", "mimic", "safety_controller"}),
-    "parent": ({"link"}, set()),
-    "child": ({"link"}, set()),
-    "axis": ({"xyz"}, set()),
-    "calibration": ({"rising", "falling", "reference_position"}, set()),
-    "dynamics": ({"damping", "friction"}, set()),
-    "limit": ({"lower", "upper", "effort", "velocity", "acceleration", "deceleration", "jerk"}, set()),
-    "mimic": ({"joint", "multiplier", "offset"}, set()),
-    "safety_controller": ({"soft_lower_limit", "soft_upper_limit", "k_position", "k_velocity"}, set()),
-}
-OPAQUE = {"gazebo", "transmission", "ros2_control"}
-# Elements a URDF holds more than once: a typo of one is a typo even when another is there.
-REPEATED = {"link", "joint", "material", "transmission", "gazebo", "ros2_control", "visual", "collision"}
-
-# Documented extensions other consumers read: never typos, never reported.
-# element -> (attributes, child elements), each with who reads it.
-EXTENSIONS: dict[str, tuple[dict[str, str], dict[str, str]]] = {
-    "robot": ({}, {
-        "sensor": "urdfdom's and iDynTree's sensor extension",
-        "mujoco": "MuJoCo's compiler options",
-        "deformable": "PyBullet's soft bodies",
-        "klampt": "Klampt's robot settings",
-    }),
-    "link": ({}, {
-        "contact": "PyBullet's contact parameters",
-        "audio_source": "PyBullet's audio source",
-    }),
-    "collision": ({"group": "PyBullet's collision filter", "mask": "PyBullet's collision filter", "concave": "PyBullet's concave meshes"}, {
-        "material": "exporters that write one material for visual and collision; harmless",
-        "contact_coefficients": "the ROS URDF tutorial's contact coefficients (mu, kp, kd)",
-    }),
-    "material": ({}, {"specular": "PyBullet's specular colour"}),
-    "joint": ({"dont_collapse": "Isaac Sim's URDF importer (keeps a fixed joint)"}, {}),
-    "dynamics": ({"K": "Franka's joint friction model", "D": "Franka's joint friction model",
-                  "mu_coulomb": "Franka's joint friction model", "mu_viscous": "Franka's joint friction model"}, {}),
-    "limit": ({"command_effort": "ANYmal's actuator limits", "current": "ANYmal's actuator limits",
-               "gear_velocity": "ANYmal's actuator limits"}, {}),
-}
-
-# Gazebo's URDF extension keys and the SDFormat elements Gazebo reads in a
-# <gazebo reference> block (sdformat's URDF to SDF conversion): written anywhere
-# else, Gazebo never sees them.
-GAZEBO_TAGS = {
-    "gazebo", "plugin", "static", "turnGravityOff", "dampingFactor", "maxVel", "minDepth", "mu1", "mu2", "fdir1",
-    "kp", "kd", "selfCollide", "maxContacts", "laserRetro", "springReference", "springStiffness", "stopCfm",
-    "stopErp", "fudgeFactor", "provideFeedback", "canonicalBody", "cfmDamping", "implicitSpringDamper",
-    "disableFixedJointLumping", "preserveFixedJoint",
-    "gravity", "kinematic", "self_collide", "enable_wind", "velocity_decay", "must_be_base_link", "sensor",
-    "surface", "laser_retro", "max_contacts", "cast_shadows", "transparency", "physics",
-}
 
 # Gazebo plugin parameters that name a joint or a link (ROS 1 and ROS 2 spellings).
 PLUGIN_JOINT_TAGS = {
@@ -97,90 +22,6 @@ WORLD_FRAMES = {"world", "map", "odom", ""}
 def _suggestion(word: str, known) -> str | None:
     close = difflib.get_close_matches(word, sorted(known), n=1, cutoff=0.6)
     return close[0] if close else None
-
-
-def _edits(a: str, b: str) -> int:
-    """Edits (insertion, deletion, substitution, swap of neighbours) from a to b."""
-    previous, current = None, list(range(len(b) + 1))
-    for i in range(1, len(a) + 1):
-        before, previous, current = previous, current, [i] + [0] * len(b)
-        for j in range(1, len(b) + 1):
-            cost = a[i - 1] != b[j - 1]
-            current[j] = min(previous[j] + 1, current[j - 1] + 1, previous[j - 1] + cost)
-            if before is not None and j > 1 and a[i - 1] == b[j - 2] and a[i - 2] == b[j - 1]:
-                current[j] = min(current[j], before[j - 2] + 1)
-    return current[len(b)]
-
-
-def _typo_of(word: str, candidates) -> str | None:
-    """The candidate ``word`` is a misspelling of: one edit away (two for longer words), case aside."""
-    allowed = 1 if len(word) <= 4 else 2
-    scored = sorted((_edits(word.lower(), c.lower()), c) for c in candidates)
-    return scored[0][1] if scored and scored[0][0] <= allowed else None
-
-
-@dataclass(frozen=True)
-class Unknown:
-    """Markup that neither URDF nor a known extension defines where it is written."""
-
-    element: etree._Element  # the unknown child, or the element carrying the unknown attribute
-    parent: str  # the tag of the element it is written in (or on)
-    name: str
-    attribute: bool
-    typo_of: str | None = None  # a name missing there that it is one or two edits from
-    gazebo: bool = False  # Gazebo markup outside <gazebo>
-
-
-def _is_foreign(name: str) -> bool:
-    """Namespaced names (``xacro:``, ``drake:``, ``{uri}``) belong to other formats."""
-    return ":" in name or name.startswith("{")
-
-
-def _gazebo_material(element) -> bool:
-    """Gazebo's ``<material>Gazebo/Grey</material>``: a script name as text, no name attribute."""
-    return tag_name(element) == "material" and element.get("name") is None and bool((element.text or "").strip())
-
-
-def _unknown_markup(loaded) -> list[Unknown]:
-    """Every unknown element and attribute, classified once for D001, D002, D010 and D011."""
-    return loaded.remembered("unknown-markup", lambda: list(_classify(loaded)))
-
-
-# What each element may carry: URDF's own names and the documented extensions', computed once.
-KNOWN_ATTRIBUTES = {tag: frozenset(attributes | set(EXTENSIONS.get(tag, ({}, {}))[0])) for tag, (attributes, _) in SCHEMA.items()}
-KNOWN_CHILDREN = {tag: frozenset(children | set(EXTENSIONS.get(tag, ({}, {}))[1])) for tag, (_, children) in SCHEMA.items() if children is not None}
-
-
-def _classify(loaded):
-    """One walk over the URDF elements (not into other formats' blocks), yielding what is unknown."""
-    root = loaded.robot.element
-    stack = [root]
-    while stack:
-        element = stack.pop()
-        tag = tag_name(element)
-        known = KNOWN_ATTRIBUTES[tag]
-        for name in element.attrib:
-            if name not in known and not _is_foreign(name):
-                yield Unknown(element, tag, name, True, _typo_of(name, known - set(element.attrib)))
-        children = KNOWN_CHILDREN.get(tag)
-        if children is None:
-            continue
-        inside = []
-        for child in element:
-            if not isinstance(child.tag, str):
-                continue
-            name = tag_name(child)
-            if name in children:
-                if name in SCHEMA and name not in OPAQUE:
-                    inside.append(child)
-            elif not _is_foreign(name):
-                if (name in GAZEBO_TAGS and not (tag == "robot" and name == "gazebo")) or _gazebo_material(child):
-                    yield Unknown(child, tag, name, False, gazebo=True)
-                else:
-                    present = {tag_name(c) for c in element if isinstance(c.tag, str)}
-                    missing = {c for c in children if c in REPEATED or c not in present}
-                    yield Unknown(child, tag, name, False, _typo_of(name, missing))
-        stack.extend(reversed(inside))
 
 
 @check("D001", "unknown-element", WARNING, "A misspelt element: close to a URDF element missing where it is written.", in_check=False)
@@ -216,9 +57,9 @@ def unknown_element(loaded):
     </link>
     ```
     """
-    for unknown in _unknown_markup(loaded):
+    for unknown in loaded.robot.unknown:
         if not unknown.attribute and unknown.typo_of:
-            yield loaded.diagnostic("D001", f"<{unknown.name}> is not a URDF element inside <{unknown.parent}>; it is ignored", unknown.element, f"did you mean <{unknown.typo_of}>?")
+            yield loaded.diagnostic("D001", f"<{unknown.name}> is not a URDF element inside <{unknown.parent}>; it is ignored", unknown.at, f"did you mean <{unknown.typo_of}>?")
 
 
 @check("D002", "unknown-attribute", WARNING, "A misspelt attribute: close to a URDF attribute missing on its element.", in_check=False)
@@ -250,9 +91,9 @@ def unknown_attribute(loaded):
     </material>
     ```
     """
-    for unknown in _unknown_markup(loaded):
+    for unknown in loaded.robot.unknown:
         if unknown.attribute and unknown.typo_of:
-            yield loaded.diagnostic("D002", f"<{unknown.parent}> has no attribute '{unknown.name}'; it is ignored", unknown.element, f"did you mean '{unknown.typo_of}'?", attribute=unknown.name)
+            yield loaded.diagnostic("D002", f"<{unknown.parent}> has no attribute '{unknown.name}'; it is ignored", unknown.at, f"did you mean '{unknown.typo_of}'?", attribute=unknown.name)
 
 
 def _belongs_in(tag: str) -> list[str]:
@@ -297,28 +138,20 @@ def unknown_markup(loaded):
     </link>
     ```
     """
-    for unknown in _unknown_markup(loaded):
+    for unknown in loaded.robot.unknown:
         if unknown.typo_of or unknown.gazebo:
             continue
         if unknown.attribute:
             attributes = sorted(SCHEMA[unknown.parent][0])
             hint = f"<{unknown.parent}> takes {', '.join(attributes)}" if attributes else f"<{unknown.parent}> takes no attributes"
-            yield loaded.diagnostic("D010", f"<{unknown.parent}> has no attribute '{unknown.name}'; URDF consumers ignore it", unknown.element, hint, attribute=unknown.name)
+            yield loaded.diagnostic("D010", f"<{unknown.parent}> has no attribute '{unknown.name}'; URDF consumers ignore it", unknown.at, hint, attribute=unknown.name)
             continue
         places = _belongs_in(unknown.name)
         if places:
             hint = f"<{unknown.name}> belongs in " + ", ".join(f"<{p}>" for p in places)
         else:
             hint = f"<{unknown.parent}> may hold " + ", ".join(f"<{c}>" for c in sorted(SCHEMA[unknown.parent][1]))
-        yield loaded.diagnostic("D010", f"<{unknown.name}> is not URDF markup inside <{unknown.parent}>; URDF consumers ignore it", unknown.element, hint)
-
-
-def _owner_name(element) -> str | None:
-    """The link or joint an element is written in, for a <gazebo reference>."""
-    for ancestor in (element, *element.iterancestors()):
-        if tag_name(ancestor) in ("link", "joint"):
-            return ancestor.get("name")
-    return None
+        yield loaded.diagnostic("D010", f"<{unknown.name}> is not URDF markup inside <{unknown.parent}>; URDF consumers ignore it", unknown.at, hint)
 
 
 @check("D011", "gazebo-tag-outside-gazebo", WARNING, "Gazebo markup written outside `<gazebo>`, where Gazebo never reads it.", in_check=False)
@@ -354,12 +187,12 @@ def gazebo_outside_gazebo(loaded):
     ```
     """
     found: dict = {}
-    for unknown in _unknown_markup(loaded):
+    for unknown in loaded.robot.unknown:
         if unknown.gazebo:
-            found.setdefault(unknown.element.getparent(), []).append(unknown)
-    for parent, unknowns in found.items():
+            found.setdefault(unknown.holder, []).append(unknown)
+    for unknowns in found.values():
         tags = ", ".join(f"<{u.name}>" for u in unknowns)
-        owner = _owner_name(parent)
+        owner = unknowns[0].owner
         where = f"<{unknowns[0].parent}>" + (f" of '{owner}'" if owner else "")
         hint = f'move it into <gazebo reference="{owner}">' if owner else "move it into a <gazebo> block"
         if any(u.name == "gazebo" for u in unknowns):
@@ -367,7 +200,7 @@ def gazebo_outside_gazebo(loaded):
             message = f"Gazebo markup {tags} in {where}: Gazebo reads <gazebo> blocks only at the top level of <robot>"
         else:
             message = f"Gazebo markup {tags} in {where} is outside <gazebo>: Gazebo never reads it"
-        yield loaded.diagnostic("D011", message, unknowns[0].element, hint)
+        yield loaded.diagnostic("D011", message, unknowns[0].at, hint)
 
 
 @check("D003", "visual-without-collision", WARNING, "A moving body with visuals but no collision on any of its links.", in_check=False)
@@ -426,7 +259,7 @@ def visual_without_collision(loaded):
         if shown is not None and not any(link.collisions for link in members):
             bare.append((body, shown))
     if bare and not any(link.collisions for link in links.values()):
-        note = loaded.diagnostic("D003", "no link has a <collision>: the model can be displayed, not simulated or planned with", loaded.robot.element,
+        note = loaded.diagnostic("D003", "no link has a <collision>: the model can be displayed, not simulated or planned with", loaded.robot.at,
                                  "add collision shapes to the moving links if it is meant for simulation or planning")
         yield note.with_severity(INFO)
         return
@@ -436,17 +269,9 @@ def visual_without_collision(loaded):
         yield loaded.diagnostic(
             "D003",
             f"link '{body.top}', moved by joint '{body.joint.name}', has a visual but no collision{fixed}",
-            shown.element,
+            shown.at,
             "add a <collision> (often the visual's geometry, or a simpler one)",
         )
-
-
-def _resources(loaded):
-    """(element, kind, uri) for every mesh and texture file the model names."""
-    for element in loaded.robot.element.iter("mesh", "texture"):
-        uri = element.get("filename")
-        if uri:
-            yield element, tag_name(element), uri
 
 
 def _package_of(uri: str) -> str | None:
@@ -485,7 +310,7 @@ def file_not_found(loaded):
         return
     base = loaded.document.file.parent if loaded.document.file else None
     missing_folders: dict = {}
-    for element, kind, uri in _resources(loaded):
+    for at, kind, uri in loaded.robot.resources:
         package = _package_of(uri)
         if package is not None and loaded.resolver.find(package) is None:
             continue  # D005
@@ -493,13 +318,13 @@ def file_not_found(loaded):
         if path is not None and not path.exists():
             if path.parent.is_dir():
                 looked = f" (looked for {path})" if str(path) != uri else ""
-                yield loaded.diagnostic("D004", f"{kind} '{uri}' not found{looked}", element, "file names are case-sensitive")
+                yield loaded.diagnostic("D004", f"{kind} '{uri}' not found{looked}", at, "file names are case-sensitive")
             else:
-                missing_folders.setdefault(path.parent, []).append((element, kind, uri))
+                missing_folders.setdefault(path.parent, []).append((at, kind, uri))
     for folder, uses in missing_folders.items():  # a missing folder is one cause: one diagnostic
-        element, kind, uri = uses[0]
+        at, kind, uri = uses[0]
         others = f" and {len(uses) - 1} other {'files' if len(uses) > 2 else 'file'} there" if len(uses) > 1 else ""
-        yield loaded.diagnostic("D004", f"{kind} '{uri}'{others}: folder {folder} does not exist", element, None)
+        yield loaded.diagnostic("D004", f"{kind} '{uri}'{others}: folder {folder} does not exist", at, None)
 
 
 @check("D005", "package-uri-not-found", WARNING, "A `package://` URI names a package that cannot be found.", in_check=False)
@@ -532,12 +357,12 @@ def package_not_found(loaded):
     if loaded.resolver is None:
         return
     missing: dict[str, list] = {}
-    for element, kind, uri in _resources(loaded):
+    for at, kind, uri in loaded.robot.resources:
         package = _package_of(uri)
         if package is not None and loaded.resolver.find(package) is None:
-            missing.setdefault(package, []).append((element, kind, uri))
+            missing.setdefault(package, []).append((at, kind, uri))
     for package, uses in missing.items():  # one cause: one diagnostic, at the first use
-        element, kind, uri = uses[0]
+        at, kind, uri = uses[0]
         others = f" (and {len(uses) - 1} other {'files' if len(uses) > 2 else 'file'})" if len(uses) > 1 else ""
         if package:
             message, hint = f"{kind} '{uri}'{others}: package '{package}' not found {loaded.resolver.where()}", "name the package's folder with -P NAME=DIR, or fix its name"
@@ -547,7 +372,7 @@ def package_not_found(loaded):
                 hint = f"the folder {folder} holds the package named '{real}' (its package.xml): write package://{real}/, or give -P {package}={folder}"
         else:
             message, hint = f"{kind} '{uri}'{others}: the package name is empty", "a package URI is package://PACKAGE/PATH: two slashes, then the package's name"
-        yield loaded.diagnostic("D005", message, element, hint)
+        yield loaded.diagnostic("D005", message, at, hint)
 
 
 def _known_names(loaded) -> set[str]:
@@ -581,11 +406,11 @@ def gazebo_reference(loaded):
     ```
     """
     known = _known_names(loaded)
-    for element in loaded.robot.element.iterfind("gazebo"):
+    for element in loaded.robot.blocks("gazebo"):
         reference = element.get("reference")
         if reference is not None and reference not in known:
             close = _suggestion(reference, known)
-            yield loaded.diagnostic("D006", f"<gazebo reference='{reference}'> names no link or joint", element, f"did you mean '{close}'?" if close else None)
+            yield loaded.diagnostic("D006", f"<gazebo reference='{reference}'> names no link or joint", loaded.robot.place(element), f"did you mean '{close}'?" if close else None)
 
 
 @check("D007", "transmission-joint-not-found", WARNING, "A transmission naming a joint that does not exist.", in_check=False)
@@ -630,12 +455,12 @@ def transmission_joint(loaded):
     ```
     """
     joints = set(loaded.robot.joints)
-    for transmission in loaded.robot.element.iterfind("transmission"):
+    for transmission in loaded.robot.blocks("transmission"):
         for joint in transmission.iterfind("joint"):
             name = joint.get("name")
             if name is not None and name not in joints:
                 close = _suggestion(name, joints)
-                yield loaded.diagnostic("D007", f"transmission '{transmission.get('name', '')}' names joint '{name}', which does not exist", joint, f"did you mean '{close}'?" if close else None)
+                yield loaded.diagnostic("D007", f"transmission '{transmission.get('name', '')}' names joint '{name}', which does not exist", loaded.robot.place(joint), f"did you mean '{close}'?" if close else None)
 
 
 @check("D012", "transmission-fixed-joint", WARNING, "A transmission or ros2_control command driving a fixed joint.", in_check=False)
@@ -685,32 +510,32 @@ def transmission_fixed_joint(loaded):
     </transmission>
     ```
     """
-    for transmission in loaded.robot.element.iterfind("transmission"):
+    for transmission in loaded.robot.blocks("transmission"):
         for element in transmission.iterfind("joint"):
             joint = loaded.robot.joints.get(element.get("name"))
             if joint is not None and joint.type == "fixed":
                 yield loaded.diagnostic(
                     "D012",
                     f"transmission '{transmission.get('name', '')}' drives joint '{joint.name}', which is fixed",
-                    element,
+                    loaded.robot.place(element),
                     "remove the transmission if the joint is fixed on purpose, or give the joint the type it moves with",
                 )
-    for control in loaded.robot.element.iterfind("ros2_control"):
+    for control in loaded.robot.blocks("ros2_control"):
         for element in control.iterfind("joint"):
             joint = loaded.robot.joints.get(element.get("name"))
             if joint is not None and joint.type == "fixed" and element.find("command_interface") is not None:
                 yield loaded.diagnostic(
                     "D012",
                     f"ros2_control '{control.get('name', '')}' commands joint '{joint.name}', which is fixed",
-                    element,
+                    loaded.robot.place(element),
                     "remove its command interfaces if the joint is fixed on purpose, or give the joint the type it moves with",
                 )
 
 
 def _plugin_references(loaded, tags: set[str]):
     """(element, name) for each plugin parameter among ``tags``; lists split on commas."""
-    for plugin in loaded.robot.element.iter("plugin"):
-        for element in plugin.iter(etree.Element):
+    for plugin in (found for block in loaded.robot.blocks() for found in block.iter("plugin")):
+        for element in plugin.iter():
             if element.tag in tags and element.text:
                 for name in re.split(r"[,\s]+", element.text.strip()):
                     yield element, name.lstrip("/")
@@ -760,7 +585,7 @@ def plugin_joint(loaded):
     for element, name in _plugin_references(loaded, PLUGIN_JOINT_TAGS):
         if name and name not in joints:
             close = _suggestion(name, joints)
-            yield loaded.diagnostic("D008", f"plugin parameter <{element.tag}> names joint '{name}', which does not exist", element, f"did you mean '{close}'?" if close else None)
+            yield loaded.diagnostic("D008", f"plugin parameter <{element.tag}> names joint '{name}', which does not exist", loaded.robot.place(element), f"did you mean '{close}'?" if close else None)
 
 
 @check("D009", "plugin-link-not-found", WARNING, "A Gazebo plugin parameter naming a link that does not exist.", in_check=False)
@@ -798,4 +623,4 @@ def plugin_link(loaded):
     for element, name in _plugin_references(loaded, PLUGIN_LINK_TAGS):
         if name not in links and name not in WORLD_FRAMES:
             close = _suggestion(name, links)
-            yield loaded.diagnostic("D009", f"plugin parameter <{element.tag}> names link '{name}', which does not exist", element, f"did you mean '{close}'?" if close else None)
+            yield loaded.diagnostic("D009", f"plugin parameter <{element.tag}> names link '{name}', which does not exist", loaded.robot.place(element), f"did you mean '{close}'?" if close else None)

@@ -96,13 +96,13 @@ def placeholder_identity(loaded, options):
     links = identity_links(loaded, options)
     if len(links) == 1:
         yield loaded.diagnostic(
-            "I007", f"inertia of link '{links[0].name}' is the identity, a placeholder", links[0].inertial.element.find("inertia"), _implies(_assess(loaded, links[0], options))
+            "I007", f"inertia of link '{links[0].name}' is the identity, a placeholder", links[0].inertial.inertia_at, _implies(_assess(loaded, links[0], options))
         )
     elif links:  # one cause: one diagnostic naming every link, at the first
         yield loaded.diagnostic(
             "I007",
             f"inertia of {len(links)} links is the identity, a placeholder: {_names(links)}",
-            links[0].inertial.element.find("inertia"),
+            links[0].inertial.inertia_at,
             "`urdfcli inertia --suggest` prints the values each link's geometry implies",
         )
 
@@ -170,7 +170,7 @@ def placeholder_repeated(loaded, options):
         yield loaded.diagnostic(
             "I008",
             f"{said}, {differ}: a placeholder",
-            wrong[0].inertial.element.find("inertia"),
+            wrong[0].inertial.inertia_at,
             "`urdfcli inertia --suggest` prints the values each link's geometry implies",
         )
 
@@ -270,7 +270,7 @@ def geometry_mismatch(loaded, options):
     for link in _declaring(loaded):
         found = _verdict(loaded, link, options)
         if found is not None:
-            diagnostic = loaded.diagnostic("I009", f"inertia of link '{link.name}': {found.message}", link.inertial.element.find("inertia"), found.hint)
+            diagnostic = loaded.diagnostic("I009", f"inertia of link '{link.name}': {found.message}", link.inertial.inertia_at, found.hint)
             yield diagnostic.with_severity(INFO) if link.inertial.mass < massprops.LIGHT else diagnostic
 
 
@@ -348,7 +348,7 @@ def frame_rotated(loaded, options):
             "I010",
             f"inertia of link '{link.name}' is not rotated with its {where} geometry (rpy {rpy}): "
             f"{found.difference:.0%} off as declared, {left:.0%} once rotated",
-            link.inertial.element.find("inertia"),
+            link.inertial.inertia_at,
             f'give the <inertial> <origin rpy="{rpy}"/>, or use the rotated values `urdfcli inertia --suggest` prints',
         )
 
@@ -389,6 +389,6 @@ def root_inertia(loaded):
         yield loaded.diagnostic(
             "I011",
             f"root link '{root}' has mass {format_number(link.inertial.mass)}, which KDL ignores",
-            link.inertial.element,
+            link.inertial.at,
             f"add a massless root link and a fixed joint from it to '{root}'",
         )

@@ -46,7 +46,7 @@ def zero_axis(loaded):
     """
     for joint in loaded.robot.joints.values():
         if joint.type in MOVING_AXIS_TYPES and not any(joint.axis):
-            yield loaded.diagnostic("J007", f"{joint.type} joint '{joint.name}' has a zero axis", joint.element.find("axis"))
+            yield loaded.diagnostic("J007", f"{joint.type} joint '{joint.name}' has a zero axis", joint.part("axis"))
 
 
 @check("J008", "mimic-joint-not-found", ERROR, "A `<mimic joint>` naming no joint.")
@@ -90,7 +90,7 @@ def mimic_not_found(loaded):
     """
     for joint in loaded.robot.joints.values():
         if joint.mimic and joint.mimic.joint != joint.name and joint.mimic.joint not in loaded.robot.joints:
-            yield loaded.diagnostic("J008", f"joint '{joint.name}' mimics '{joint.mimic.joint}', which does not exist", joint.element.find("mimic"))
+            yield loaded.diagnostic("J008", f"joint '{joint.name}' mimics '{joint.mimic.joint}', which does not exist", joint.part("mimic"))
 
 
 @check("J009", "mimic-self", ERROR, "A joint that mimics itself.")
@@ -126,7 +126,7 @@ def mimic_self(loaded):
     """
     for joint in loaded.robot.joints.values():
         if joint.mimic and joint.mimic.joint == joint.name:
-            yield loaded.diagnostic("J009", f"joint '{joint.name}' mimics itself", joint.element.find("mimic"))
+            yield loaded.diagnostic("J009", f"joint '{joint.name}' mimics itself", joint.part("mimic"))
 
 
 @check("J010", "limit-lower-above-upper", WARNING, "A joint limit whose lower bound is above its upper bound.")
@@ -166,7 +166,7 @@ def lower_above_upper(loaded):
             yield loaded.diagnostic(
                 "J010",
                 f"joint '{joint.name}' has lower {format_number(limit.lower)} > upper {format_number(limit.upper)}",
-                joint.element.find("limit"),
+                joint.part("limit"),
                 hint="swap lower and upper",
             )
 
@@ -207,7 +207,7 @@ def axis_not_unit(loaded):
         if joint.type in MOVING_AXIS_TYPES and norm > 0 and abs(norm - 1.0) > 1e-6:
             unit = " ".join(format_number(float(f"{c / norm:.6g}")) for c in joint.axis)
             hint = f'normalised: <axis xyz="{unit}"/>'
-            yield loaded.diagnostic("J011", f"axis of joint '{joint.name}' has length {norm:.6g}, not 1", joint.element.find("axis"), hint)
+            yield loaded.diagnostic("J011", f"axis of joint '{joint.name}' has length {norm:.6g}, not 1", joint.part("axis"), hint)
 
 
 @check("J012", "continuous-with-limits", WARNING, "A continuous joint given a range narrower than a turn.", in_check=False)
@@ -253,7 +253,7 @@ def continuous_with_limits(loaded):
             yield loaded.diagnostic(
                 "J012",
                 f"continuous joint '{joint.name}' has the range [{format_number(limit.lower)}, {format_number(limit.upper)}], which is ignored",
-                joint.element.find("limit"),
+                joint.part("limit"),
                 hint="make it revolute to keep the range, or drop lower and upper",
             )
 
@@ -300,7 +300,7 @@ def limit_without_range(loaded):
             yield loaded.diagnostic(
                 "J013",
                 f"{joint.type} joint '{joint.name}' has no lower or upper limit: urdfdom reads its range as [0, 0], so it cannot move",
-                joint.element.find("limit"),
+                joint.part("limit"),
                 hint=f'{turn}give the range: <limit lower="..." upper="..."/>',
             )
 
@@ -349,6 +349,6 @@ def effort_velocity_zero(loaded):
             yield loaded.diagnostic(
                 "J014",
                 f"joint '{joint.name}' has {' and '.join(bad)}: a controller or simulator that honours its limits cannot move it",
-                joint.element.find("limit"),
+                joint.part("limit"),
                 hint="give the actuator's real effort and velocity limits (the datasheet's peak torque or force, and speed)",
             )

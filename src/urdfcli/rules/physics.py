@@ -69,7 +69,7 @@ def negative_mass(loaded):
     """
     for link, inertial in _inertials(loaded):
         if inertial.mass < 0:
-            yield loaded.diagnostic("I001", f"link '{link.name}' has negative mass {format_number(inertial.mass)}", inertial.element.find("mass"))
+            yield loaded.diagnostic("I001", f"link '{link.name}' has negative mass {format_number(inertial.mass)}", inertial.mass_at)
 
 
 @check("I002", "massless-moving-link", WARNING, "A joint that moves only massless links.")
@@ -128,11 +128,11 @@ def massless_moving_link(loaded):
         link = robot.links[joint.child]
         names = ", ".join(f"'{n}'" for n in branch[:4]) + (f" and {len(branch) - 4} more" if len(branch) > 4 else "")
         what = f"link {names}" if len(branch) == 1 else f"links {names}"
-        element = link.inertial.element.find("mass") if link.inertial is not None else link.element
+        at = link.inertial.mass_at if link.inertial is not None else None
         yield loaded.diagnostic(
             "I002",
             f"joint '{joint.name}' moves no mass: {what} {'has' if len(branch) == 1 else 'have'} none, so the mass matrix is singular",
-            element if element is not None else link.element,
+            at if at is not None else link.at,
             hint="give the moving links their mass and inertia, or make the joint fixed",
         )
 
@@ -175,7 +175,7 @@ def massless_with_inertia(loaded):
             continue
         tensor = massprops.matrix(inertial.inertia)
         if not massprops.is_zero(tensor) and not (absorbed(loaded, link) and massprops.scale_of(tensor) <= LUMPED_TENSOR):
-            yield loaded.diagnostic("I003", f"link '{link.name}' has mass 0 but a non-zero inertia tensor", inertial.element.find("inertia"))
+            yield loaded.diagnostic("I003", f"link '{link.name}' has mass 0 but a non-zero inertia tensor", inertial.inertia_at)
 
 
 @check("I004", "point-mass", WARNING, "A link with positive mass and an all-zero inertia tensor.")
@@ -210,7 +210,7 @@ def point_mass(loaded):
             yield loaded.diagnostic(
                 "I004",
                 f"link '{link.name}' has mass {format_number(inertial.mass)} but {zero} inertia tensor: a point mass",
-                inertial.element.find("inertia"),
+                inertial.inertia_at,
                 "`urdfcli inertia --suggest` prints the tensor of a uniform body filling its geometry",
             )
 
@@ -245,7 +245,7 @@ def not_positive_semidefinite(loaded):
         yield loaded.diagnostic(
             "I005",
             f"inertia of link '{link.name}' is not positive semi-definite (principal moments {moments_text(moments)})",
-            link.inertial.element.find("inertia"),
+            link.inertial.inertia_at,
         )
 
 
@@ -277,7 +277,7 @@ def triangle_inequality(loaded):
     """
     for link, moments in invalid_tensors(loaded)["I006"]:
         a, b, c = moments_text(moments).split(", ")
-        yield loaded.diagnostic("I006", f"inertia of link '{link.name}' breaks the triangle inequality: {a} + {b} < {c}", link.inertial.element.find("inertia"))
+        yield loaded.diagnostic("I006", f"inertia of link '{link.name}' breaks the triangle inequality: {a} + {b} < {c}", link.inertial.inertia_at)
 
 
 def invalid_tensors(loaded) -> dict[str, list]:

@@ -19,7 +19,7 @@ def _suffix_rule(loaded, code: str, kind: str, names: dict, options: dict):
     suffix = options["suffix"]
     for name, item in names.items():
         if name and not name.endswith(suffix) and not _exempt(name, options["exempt"]):
-            yield loaded.diagnostic(code, f"{kind} name '{name}' does not end in '{suffix}'", item.element, f"rename it '{name}{suffix}', or add it to the rule's 'exempt' option")
+            yield loaded.diagnostic(code, f"{kind} name '{name}' does not end in '{suffix}'", item.at, f"rename it '{name}{suffix}', or add it to the rule's 'exempt' option")
 
 
 @check(
@@ -122,4 +122,4 @@ def name_not_snake_case(loaded, options):
     for kind, names in (("link", robot.links), ("joint", robot.joints), ("material", robot.materials)):
         for name, item in names.items():
             if name and not SNAKE_CASE.fullmatch(name) and not _exempt(name, options["exempt"]):
-                yield loaded.diagnostic("S003", f"{kind} name '{name}' is not snake_case", item.element)
+                yield loaded.diagnostic("S003", f"{kind} name '{name}' is not snake_case", item.at)
