@@ -34,17 +34,27 @@ def build_graph(robot: Robot) -> nx.DiGraph:
 
 def children_by_joint_name(robot: Robot) -> dict[str, list[Joint]]:
     """Each link's child joints in check_urdf's order: sorted by joint name."""
+    return robot.remembered("children", lambda: _children_by_joint_name(robot))
+
+
+def _children_by_joint_name(robot: Robot) -> dict[str, list[Joint]]:
     children: dict[str, list[Joint]] = defaultdict(list)
+    links = robot.links
     for name in sorted(robot.joints):
         joint = robot.joints[name]
-        if joint.parent in robot.links and joint.child in robot.links:
+        if joint.parent in links and joint.child in links:
             children[joint.parent].append(joint)
     return children
 
 
 def roots(robot: Robot) -> list[str]:
-    has_parent = {j.child for j in robot.joints.values() if j.parent in robot.links and j.child in robot.links}
-    return [name for name in robot.links if name not in has_parent]
+    return robot.remembered("roots", lambda: _roots(robot))
+
+
+def _roots(robot: Robot) -> list[str]:
+    links = robot.links
+    has_parent = {j.child for j in robot.joints.values() if j.parent in links and j.child in links}
+    return [name for name in links if name not in has_parent]
 
 
 def walk(robot: Robot, start: str, children: dict[str, list[Joint]] | None = None) -> Iterator[tuple[int, Joint | None, str]]:

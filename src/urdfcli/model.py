@@ -134,6 +134,13 @@ class Robot:
     unknown: list[markup.Unknown] = field(default_factory=list)  # read only when asked for
     extensions: list[etree._Element] = field(default_factory=list)  # top-level blocks of other formats
     _placed: dict[etree._Element, int] = field(default_factory=dict, repr=False)
+    derived: dict = field(default_factory=dict, repr=False, compare=False)  # worked out from the rest, once
+
+    def remembered(self, key: str, compute):
+        """``compute()``, once for this robot: for structures several steps share."""
+        if key not in self.derived:
+            self.derived[key] = compute()
+        return self.derived[key]
 
     def blocks(self, tag: str | None = None) -> list[etree._Element]:
         """The top-level elements other than links, joints and materials (``<gazebo>``,
@@ -153,6 +160,7 @@ class Reader:
         self.document = document
         self.vocabulary = vocabulary  # classify markup against URDF's vocabulary too
         self.diagnostics: list[Diagnostic] = []
+        self.resources: list[Resource] = []
         self._index: dict[etree._Element, int] = {}  # the elements being read -> their index
 
     def at(self, element: etree._Element | None) -> int | None:
@@ -165,15 +173,19 @@ class Reader:
     # -- values ----------------------------------------------------------------
     def number(self, element: etree._Element, attribute: str, required: bool = False, what: str = "") -> float | None:
         text = element.get(attribute)
+        value = _NUMBERS.get(text)
+        if value is not None:
+            return value
         if text is None:
             if required:
                 self.report("V004", f"<{tag_name(element)}> has no '{attribute}' attribute{what}", element)
             return None
         try:
-            return parse_double(text)
+            value = parse_double(text)
         except NumberError as error:
             self.report(error.code, f"{tag_name(element)} {attribute}: {error.reason}{what}", element)
             return None
+        return _remember(_NUMBERS, text, value)
 
     def vector(self, element: etree._Element, attribute: str, default: Vec3 | None = None) -> Vec3 | None:
         text = element.get(attribute)
@@ -190,8 +202,15 @@ class Reader:
 
     def pose(self, origin: etree._Element | None) -> Pose:
         if origin is None:
-            return Pose()
-        return Pose(self.vector(origin, "xyz", (0.0, 0.0, 0.0)) or (0.0, 0.0, 0.0), self.vector(origin, "rpy", (0.0, 0.0, 0.0)) or (0.0, 0.0, 0.0))
+            return IDENTITY
+        key = (origin.get("xyz"), origin.get("rpy"))
+        pose = _POSES.get(key)
+        if pose is None:
+            reported = len(self.diagnostics)
+            pose = Pose(self.vector(origin, "xyz", (0.0, 0.0, 0.0)) or (0.0, 0.0, 0.0), self.vector(origin, "rpy", (0.0, 0.0, 0.0)) or (0.0, 0.0, 0.0))
+            if len(self.diagnostics) == reported:
+                _remember(_POSES, key, pose)
+        return pose
 
     def positive(self, element: etree._Element, attribute: str, value: float | None) -> None:
         """A negative dimension is an error (V006); zero is a warning (V008): ROS loads it, physics engines do not."""
@@ -227,6 +246,8 @@ class Reader:
         found = first_children(element)
         texture = found.get("texture")
         texture_file = texture.get("filename") if texture is not None else None
+        if texture_file:
+            self.resources.append(Resource(self._index[texture], "texture", texture_file))
         color = found.get("color")
         rgba = self.rgba(element, color) if color is not None and color.get("rgba") is not None else None
         if top_level and rgba is None and texture_file is None:
@@ -238,7 +259,7 @@ class Reader:
         if element is None:
             self.report("V005", f"<{tag_name(parent)}> has no <geometry>", parent)
             return None
-        shapes = [child for child in element if isinstance(child.tag, str)]
+        shapes = list(element)  # comments are not read
         if not shapes:
             self.report("G001", "<geometry> holds no shape (box, cylinder, sphere or mesh)", element)
             return None
@@ -251,16 +272,18 @@ class Reader:
             self.positive(shape, "radius", radius)
             return Geometry(kind, self.at(shape), radius=radius) if radius is not None else None
         if kind == "box":
-            if shape.get("size") is None:
+            text = shape.get("size")
+            if text is None:
                 self.report("V004", "<box> has no 'size' attribute", shape)
                 return None
             size = self.vector(shape, "size")
             if size is None:
                 return None
-            if min(size) < 0:
-                self.report("V006", f"box size '{shape.get('size')}' has a negative component", shape)
-            elif min(size) == 0:
-                self.report("V008", f"box size '{shape.get('size')}' has a zero component: the box has no volume", shape, ZERO_HINT)
+            smallest = min(size)
+            if smallest < 0:
+                self.report("V006", f"box size '{text}' has a negative component", shape)
+            elif smallest == 0:
+                self.report("V008", f"box size '{text}' has a zero component: the box has no volume", shape, ZERO_HINT)
             return Geometry(kind, self.at(shape), size=size)
         if kind == "cylinder":
             if shape.get("radius") is None or shape.get("length") is None:
@@ -278,6 +301,8 @@ class Reader:
                 self.report("V004", "<mesh> has no 'filename' attribute", shape)
                 return None
             scale = self.vector(shape, "scale", (1.0, 1.0, 1.0))
+            if filename:
+                self.resources.append(Resource(self._index[shape], "mesh", filename))
             return Geometry(kind, self.at(shape), filename=filename, scale=scale) if scale is not None else None
         self.report("G002", f"unknown shape <{kind}> in <geometry>", shape, "URDF shapes are box, cylinder, sphere and mesh")
         return None
@@ -310,8 +335,11 @@ class Reader:
         if inertia_element is None:
             self.report("V005", "<inertial> has no <inertia>", element)
         else:
-            values = {key: self.number(inertia_element, key, required=True) for key in INERTIA_KEYS}
-            inertia = values if None not in values.values() else None
+            texts = tuple(map(inertia_element.get, INERTIA_KEYS))
+            inertia = _TENSORS.get(texts)
+            if inertia is None:
+                values = {key: self.number(inertia_element, key, required=True) for key in INERTIA_KEYS}
+                inertia = _remember(_TENSORS, texts, values) if None not in values.values() else None
         return Inertial(self.at(element), origin, mass, inertia, self.at(mass_element), self.at(inertia_element))  # type: ignore[arg-type]
 
     def link(self, element: etree._Element) -> Link:
@@ -417,7 +445,7 @@ class Reader:
         if name is None:
             self.report("R002", "<robot> has no 'name' attribute", root)
         self.version(root)
-        robot = Robot(name, 0)
+        robot = Robot(name, 0, resources=self.resources)
         if self.vocabulary:
             robot.unknown.extend(markup.unknown_attributes(root, 0))
         numbers = count(1)
@@ -425,7 +453,6 @@ class Reader:
             self._index = index = dict(zip(element.iter(), numbers))
             index[root] = 0
             self.top_level(robot, element)
-            robot.resources.extend(Resource(index[found], found.tag, uri) for found in element.iter("mesh", "texture") if (uri := found.get("filename")))
             if self.vocabulary:
                 robot.unknown.extend(markup.unknown_markup(element, index.__getitem__))
         if not robot.links:
@@ -461,6 +488,8 @@ class Reader:
         else:
             robot.extensions.append(element)
             robot._placed.update(self._index)
+            found = element.iter("mesh", "texture")
+            self.resources.extend(Resource(self._index[e], e.tag, uri) for e in found if (uri := e.get("filename")))
 
     def version(self, root: etree._Element) -> None:
         version = root.get("version")
@@ -503,13 +532,26 @@ def same_colour(a: tuple[float, ...], b: tuple[float, ...]) -> bool:
     return len(a) == len(b) and all(abs(x - y) <= COLOUR_TOLERANCE for x, y in zip(a, b))
 
 
+# Values read from texts seen before: models repeat a few texts over and over. Only
+# texts read without a diagnostic are kept, and values are never changed (an
+# inertia dict is shared by the links that write the same text).
+_NUMBERS: dict[str, float] = {}
+_POSES: dict[tuple[str | None, str | None], Pose] = {}
+_TENSORS: dict[tuple[str | None, ...], dict[str, float]] = {}
+_REMEMBERED = 1 << 16  # distinct texts kept of each kind
+IDENTITY = Pose()
+
+
+def _remember(cache: dict, key, value):
+    if len(cache) < _REMEMBERED:
+        cache[key] = value
+    return value
+
+
 def first_children(element: etree._Element) -> dict[str, etree._Element]:
     """The first child of each tag, as ``element.find(tag)`` gives it, in one pass
     over the children (a model has millions of these lookups)."""
-    found: dict[str, etree._Element] = {}
-    for child in element:
-        found.setdefault(child.tag, child)
-    return found
+    return {child.tag: child for child in reversed(element)}  # the first of a tag written last, and kept
 
 
 def _where(document: Document, at: int) -> str:

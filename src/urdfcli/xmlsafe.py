@@ -93,25 +93,42 @@ def elements(data: bytes) -> Iterator[etree._Element]:
         yield from _streamed(recoded(data), encoding="utf-8")  # an encoding only Python knows
 
 
+# The elements URDF writes at the top level: lxml reports only the ends of elements
+# of these names (in C), and the reader takes each top-level element at the first
+# such end after it, so that Python sees a few events per link instead of one per element.
+_MARKERS = ("link", "joint", "material", "gazebo", "transmission", "ros2_control")
+
+
 def _streamed(data: bytes, encoding: str | None = None) -> Iterator[etree._Element]:
     events = etree.iterparse(
-        io.BytesIO(data), events=("end",), remove_blank_text=True, remove_comments=True, remove_pis=True,
+        io.BytesIO(data), events=("end",), tag=_MARKERS, remove_blank_text=True, remove_comments=True, remove_pis=True,
         resolve_entities=False, no_network=True, load_dtd=False, dtd_validation=False, huge_tree=False, encoding=encoding,
     )
     root = None
     for _, element in events:
         parent = element.getparent()
-        if parent is None:  # the root's end: what follows it must still be read, to be checked
-            if root is None:
-                yield element  # a root without children
-            continue
         if parent is not root:
-            if root is not None or parent.getparent() is not None:
-                continue  # inside a top-level element: it comes whole, at its end
+            if root is not None or parent is None or parent.getparent() is not None:
+                continue  # the root itself, or inside a top-level element: it comes whole, at its end
             root = parent
             yield root
+        yield from _finished(root, element)
+    # The end of the document: the root, if no marker was met, and what follows the last marker.
+    if root is None:
+        root = events.root
+        yield root
+    yield from _finished(root, None)
+
+
+def _finished(root: etree._Element, last: etree._Element | None) -> Iterator[etree._Element]:
+    """The top-level elements up to ``last`` (to the end with None), each taken out
+    of the tree once the next one is asked for."""
+    while len(root):
+        element = root[0]
         yield element
-        del root[0]  # the element just given: everything before it is gone already
+        del root[0]
+        if element is last:
+            return
 
 
 def recoded(data: bytes) -> bytes:
