@@ -3,17 +3,11 @@
 from __future__ import annotations
 
 from dataclasses import dataclass, replace
-from enum import Enum
 
+from .rules import rule
+from .severity import Severity
 
-class Severity(str, Enum):
-    ERROR = "error"
-    WARNING = "warning"
-    INFO = "info"
-
-    @property
-    def rank(self) -> int:
-        return {"error": 2, "warning": 1, "info": 0}[self.value]
+__all__ = ["Call", "Diagnostic", "Location", "Severity"]
 
 
 @dataclass(frozen=True, slots=True)
@@ -62,8 +56,6 @@ class Diagnostic:
     @classmethod
     def of(cls, code: str, message: str, location: Location, element: str | None = None, hint: str | None = None) -> "Diagnostic":
         """A diagnostic with its rule's default severity."""
-        from .rules import rule
-
         return cls(code, rule(code).severity, message, location, element, hint)
 
     def with_severity(self, severity: Severity) -> "Diagnostic":

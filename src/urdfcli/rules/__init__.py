@@ -21,7 +21,7 @@ from collections.abc import Callable, Iterator
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
 
-from ..diagnostics import Severity
+from ..severity import Severity
 
 if TYPE_CHECKING:
     from ..loaded import Loaded
