@@ -10,6 +10,7 @@ import sys
 import pytest
 from lxml import etree
 
+from urdfcli.document import tag_name
 from urdfcli.load import LoadOptions, load
 from urdfcli.positions import Source
 from urdfcli.xmlsafe import parse_bytes
@@ -289,3 +290,40 @@ def test_a_diagnostic_about_one_attribute_points_at_it(tmp_path, monkeypatch):
     report = json.loads(run("lint", "r.urdf.xacro", "--select", "D010", "--format", "json", cwd=tmp_path).stdout)
     found = sorted((d["path"], d["line"], d["column"]) for d in report["files"][0]["diagnostics"])
     assert found == [("parts.xacro", 4, 11), ("r.urdf.xacro", 4, 27)]
+
+
+def tree_path(element) -> str:
+    """The element path as read off a parsed tree: what Document.element_path works out from the text."""
+    parts = []
+    node = element
+    while node.getparent() is not None:
+        parent = node.getparent()
+        tag, name = tag_name(node), node.get("name")
+        if tag in ("link", "joint", "material", "transmission", "gazebo") and name is not None and parent.getparent() is None:
+            parts.append(f"{tag}[@name='{name}']")
+        elif tag == "gazebo" and node.get("reference") is not None:
+            parts.append(f"gazebo[@reference='{node.get('reference')}']")
+        else:
+            same = [s for s in parent if s.tag == node.tag]
+            parts.append(f"{tag}[{same.index(node) + 1}]" if len(same) > 1 else tag)
+        node = parent
+    if not parts:
+        return f"robot[@name='{element.get('name')}']" if element.get("name") is not None else tag_name(element)
+    return "/".join(reversed(parts))
+
+
+PATH_SAMPLES = ["pr2.urdf", "tiago_dual.urdf", "anymal-kinova.urdf", "icub.urdf", "alex_psyonic_hands.urdf"]
+
+
+@pytest.mark.parametrize("name", PATH_SAMPLES)
+def test_element_paths_from_the_text_match_the_tree(name):
+    """Every element of published models, comments and all: the path worked out from the
+    source text, one top-level element at a time, is the one the parsed tree gives."""
+    from conftest import example_robot_data
+
+    paths = sorted((example_robot_data() / "robots").rglob(name))
+    loaded = load(str(paths[0]), LoadOptions(checks="none"))
+    elements = list(parse_bytes(paths[0].read_bytes()).iter(etree.Element))
+    assert len(loaded.document.tops) > 10
+    for at, element in enumerate(elements):
+        assert loaded.document.element_path(at) == tree_path(element), at

@@ -7,6 +7,8 @@ keeps nothing per element.
 
 from __future__ import annotations
 
+import bisect
+from array import array
 from dataclasses import dataclass, field
 from functools import cached_property
 from pathlib import Path
@@ -41,6 +43,7 @@ class Document:
     expanded_text: str | None = None  # xacro output, for xacro inputs
     includes: list[str] = field(default_factory=list)
     origins: list[Origin | None] | None = None  # xacro inputs: one per element
+    tops: array = field(default_factory=lambda: array("l"))  # the index of each top-level element, as read
 
     @property
     def shown(self) -> str:
@@ -88,29 +91,33 @@ class Document:
         return Source(self.expanded_text) if self.expanded_text is not None else source(self.shown)
 
     def element_path(self, at: int | None) -> str | None:
-        """An XPath-like name such as ``link[@name='arm']/visual[2]/geometry``."""
+        """An XPath-like name such as ``link[@name='arm']/visual[2]/geometry``, worked
+        out from the text of the top-level element that holds ``at``."""
         text = self._source
         if at is None or text is None or text.start(at) is None:
             return None
-        parents = text.parents
-        if at >= len(parents):
-            return None
-        parts = []
-        node = at
-        while parents[node] >= 0:
-            parent = parents[node]
-            tag, name = text.tag(node), text.value(node, "name")
-            if tag in NAMED and name is not None and parents[parent] < 0:
-                parts.append(f"{tag}[@name='{name}']")
-            elif tag == "gazebo" and (reference := text.value(node, "reference")) is not None:
-                parts.append(f"gazebo[@reference='{reference}']")
-            else:
-                same = [child for child in text.children(parent) if text.tag(child) == tag]
-                parts.append(f"{tag}[{same.index(node) + 1}]" if len(same) > 1 else tag)
-            node = parent
-        if not parts:
+        if at == 0 or not self.tops or at < self.tops[0]:
             name = text.value(at, "name")
             return f"robot[@name='{name}']" if name is not None else text.tag(at)
+        which = bisect.bisect_right(self.tops, at) - 1
+        top = self.tops[which]
+        parents = text.parents_within(top, self.tops[which + 1] if which + 1 < len(self.tops) else None)
+        parts = []
+        node = at
+        while node != top:
+            parent = parents[node - top] + top
+            tag = text.tag(node)
+            same = [i for i in range(parent + 1, top + len(parents)) if parents[i - top] + top == parent and text.tag(i) == tag]
+            parts.append(f"{tag}[{same.index(node) + 1}]" if len(same) > 1 else tag)
+            node = parent
+        tag, name = text.tag(top), text.value(top, "name")
+        if tag in NAMED and name is not None:
+            parts.append(f"{tag}[@name='{name}']")
+        elif tag == "gazebo" and (reference := text.value(top, "reference")) is not None:
+            parts.append(f"gazebo[@reference='{reference}']")
+        else:
+            same = [i for i in self.tops if text.tag(i) == tag]
+            parts.append(f"{tag}[{same.index(top) + 1}]" if len(same) > 1 else tag)
         return "/".join(reversed(parts))
 
 

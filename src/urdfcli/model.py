@@ -449,8 +449,10 @@ class Reader:
         if self.vocabulary:
             robot.unknown.extend(markup.unknown_attributes(root, 0))
         numbers = count(1)
+        tops = self.document.tops
         for element in stream:
             self._index = index = dict(zip(element.iter(), numbers))
+            tops.append(index[element])
             index[root] = 0
             self.top_level(robot, element)
             if self.vocabulary:

@@ -113,30 +113,28 @@ class Source:
         end = start + 1 + len(tag)
         return start if end == len(self.text) or self.text[end] in _AFTER_NAME else None
 
-    @cached_property
-    def parents(self) -> list[int]:
-        """Per element in document order, the index of its parent (-1 for the root);
-        empty when the text is not a well-formed document."""
+    def parents_within(self, first: int, end: int | None) -> list[int]:
+        """For the elements ``first`` to ``end`` (excluded; None: to the end of the text),
+        which must hold no element of the text before ``first``, the index of each
+        one's parent counted from ``first`` (-1 for ``first`` itself)."""
+        begin = self.start(first)
+        stop = self.start(end) if end is not None else None
+        holes = self._holes
+        hole_ends = [e for _, e in holes]
         found: list[int] = []
-        open_: list[int] = []  # the elements that hold the next one
-        ends: list[int] = []
-        for index, (start, _, end) in enumerate(self.spans):
-            while ends and ends[-1] <= start:
-                ends.pop()
-                open_.pop()
+        open_: list[int] = []
+        for match in _TAG.finditer(self.text, begin, len(self.text) if stop is None else stop):
+            start = match.start()
+            i = bisect.bisect_right(hole_ends, start)
+            if i < len(holes) and holes[i][0] <= start:
+                continue
+            if self.text[start + 1] == "/":
+                if open_:
+                    open_.pop()
+                continue
             found.append(open_[-1] if open_ else -1)
-            open_.append(index)
-            ends.append(end)
-        return found
-
-    def children(self, parent: int) -> list[int]:
-        """The elements whose parent is ``parent``: they follow it, up to the end of its span."""
-        parents, found = self.parents, []
-        for index in range(parent + 1, len(parents)):
-            if parents[index] < parent:
-                break
-            if parents[index] == parent:
-                found.append(index)
+            if not match.group(1):
+                open_.append(len(found) - 1)
         return found
 
     def tag(self, index: int) -> str | None:
