@@ -13,6 +13,7 @@ import contextlib
 import io
 import os
 import re
+import xml.dom.minicompat
 import xml.dom.minidom
 import xml.parsers.expat
 from collections.abc import Callable
@@ -35,6 +36,35 @@ if TYPE_CHECKING:
 ORIGIN = "urdfcli-origin"
 TRACE = "urdfcli-trace"  # the macro calls whose output starts at this element, innermost first
 XACRO_PREFIX = "xacro:"
+
+
+class _NearbyNodeList(xml.dom.minicompat.NodeList):
+    """minidom's list of child nodes, looking for a child first where the last one
+    was found. xacro replaces each macro call by its output with ``insertBefore``
+    and ``removeChild``, which search the siblings from the first: on a model of
+    a thousand top-level calls, a fifth of its time. The lists change exactly as
+    before, so the output is byte for byte the same."""
+
+    __slots__ = ("_last",)
+
+    def _near(self, node) -> int:
+        last = getattr(self, "_last", 0)
+        for at in (last, last + 1, last - 1, last + 2):
+            if 0 <= at < len(self) and self[at] is node:
+                break
+        else:
+            at = list.index(self, node)
+        self._last = at
+        return at
+
+    def index(self, node, *bounds) -> int:
+        return list.index(self, node, *bounds) if bounds else self._near(node)
+
+    def remove(self, node) -> None:
+        del self[self._near(node)]
+
+
+xml.dom.minidom.NodeList = _NearbyNodeList  # the children of every node minidom makes from here on
 
 
 @dataclass(frozen=True, slots=True)

@@ -115,16 +115,18 @@ def split_inputs(arguments: list[str]) -> tuple[list[str], dict[str, str]]:
 
 
 def configurations(explicit: Path | None = None, isolated: bool = False, overrides: dict | None = None) -> Callable[[str], Config]:
-    """The configuration of each input (read once per file); a mistake in one exits 2."""
+    """The configuration of each input (found once per folder: the files of a folder
+    share it); a mistake in one exits 2."""
     cache: dict[str, Config] = {}
 
     def config_for(path: str) -> Config:
-        if path not in cache:
+        folder = path if path == "-" else os.path.dirname(os.path.abspath(path))
+        if folder not in cache:
             try:
-                cache[path] = for_input(path, explicit, isolated).overridden(**(overrides or {}))
+                cache[folder] = for_input(path, explicit, isolated).overridden(**(overrides or {}))
             except ConfigError as error:
                 raise fail(str(error)) from None
-        return cache[path]
+        return cache[folder]
 
     return config_for
 
