@@ -13,6 +13,7 @@ from lxml import etree
 
 from conftest import FIXTURES, run_cli
 from urdfcli import inertia, massprops
+from urdfcli.poses import link_poses
 from urdfcli.load import LoadOptions, load
 
 CAR = FIXTURES / "urdf02_gazebo/urdf/broken_rotated_box_inertia_car.urdf.xacro"
@@ -263,7 +264,7 @@ def test_link_poses_match_yourdfpy_reading_the_file_itself(path):
 
     reference = yourdfpy.URDF.load(str(path), build_scene_graph=True, load_meshes=False)
     loaded = load(str(path), LoadOptions(checks="none"))
-    poses = inertia.link_poses(loaded)
+    poses = link_poses(loaded)
     assert set(poses) == set(loaded.robot.links)
     for name, (rotation, translation) in poses.items():
         matrix = reference.get_transform(name, loaded.root)
@@ -281,7 +282,7 @@ def test_a_mimic_joint_sits_at_its_offset_at_zero_positions(tmp_path):
         '<limit lower="-3" upper="3" effort="1" velocity="1"/><mimic joint="j1" multiplier="2" offset="1.5707963267948966"/></joint>'
         '<joint name="j3" type="fixed"><parent link="b"/><child link="c"/><origin xyz="1 0 0"/></joint></robot>'
     )
-    poses = inertia.link_poses(load(str(path), LoadOptions(checks="none")))
+    poses = link_poses(load(str(path), LoadOptions(checks="none")))
     close(poses["b"][1], (1, 0, 0), abs_=1e-12)
     close(poses["c"][1], (1, 1, 0), abs_=1e-12)  # b is turned a quarter about z by the offset
 

@@ -1,9 +1,8 @@
-"""Mass properties of each link and of the whole robot: declared, and implied by geometry.
+"""The mass-property audit: each link's declared mass properties against those its geometry
+implies, what the geometry proves wrong, and the whole robot's total.
 
-The closed-form maths is :mod:`urdfcli.massprops`. Meshes are loaded by yourdfpy and
-trimesh, with urdfcli's package resolver as the filename handler (never from a network);
-the robot's pose at zero joint positions comes from yourdfpy's scene graph. Both are
-imported only when this work needs them.
+The closed-form maths is :mod:`urdfcli.massprops`, meshes are read by :mod:`urdfcli.meshes`,
+the links' poses come from :mod:`urdfcli.poses`, and :mod:`urdfcli.fixes` suggests the fixes.
 
 Frames: a declared tensor is given in the frame of its ``<inertial><origin>``;
 the *expected* tensor is expressed in that same frame, so the two compare one to one.
@@ -11,28 +10,17 @@ the *expected* tensor is expressed in that same frame, so the two compare one to
 
 from __future__ import annotations
 
-import contextlib
-import functools
-import logging
 import math
-import warnings
 from dataclasses import dataclass
-from pathlib import Path
-
-from lxml import etree
 
 from . import massprops
-from .kinematics import walk
 from .loaded import Loaded
-from .massprops import Matrix, Transform, Vector
-from .model import Joint, Link, Shape
-from .packages import PackageResolver
+from .massprops import Matrix, Vector
+from .meshes import GeometryUnknown, MeshFiles, mesh_properties
+from .model import Link, Shape
+from .poses import link_poses
 
 TOLERANCE = massprops.TOLERANCE
-
-
-class GeometryUnknown(Exception):
-    """The geometry cannot give mass properties (unreadable mesh, bad size...)."""
 
 
 @dataclass(frozen=True)
@@ -97,10 +85,6 @@ def is_frame(link: Link) -> bool:
 
 
 # -- implied by geometry ---------------------------------------------------------------
-def resolver_of(loaded: Loaded) -> PackageResolver:
-    return loaded.resolver or PackageResolver((), loaded.document.file)
-
-
 def implied(loaded: Loaded, link: Link, density: float | None = None) -> Implied:
     """The body the link's collision shapes (else its visual shapes) make, with the
     declared mass spread by volume, or ``density`` times the volume when given."""
@@ -190,92 +174,6 @@ def extent(loaded: Loaded, link: Link, shapes=None) -> tuple[Vector, Vector] | N
         tuple(min(b[0][i] for b in boxes) for i in range(3)),  # type: ignore[return-value]
         tuple(max(b[1][i] for b in boxes) for i in range(3)),
     )
-
-
-@dataclass(frozen=True)
-class MeshFiles:
-    """yourdfpy's filename handler: a mesh's URI to a file, through urdfcli's package resolver.
-
-    Raises GeometryUnknown, which passes through yourdfpy, when there is no such file.
-    Equal for one input's shapes, so each of its meshes is read once."""
-
-    resolver: PackageResolver
-    base: Path | None
-
-    @classmethod
-    def of(cls, loaded: Loaded) -> MeshFiles:
-        return loaded.remembered(
-            "mesh files", lambda: cls(resolver_of(loaded), loaded.document.file.resolve().parent if loaded.document.file else None)
-        )
-
-    def __call__(self, fname: str) -> str:
-        path = self.resolver.resolve_uri(fname, self.base)
-        if path is None:
-            raise GeometryUnknown(f"mesh {fname} cannot be resolved")
-        if not path.is_file():
-            raise GeometryUnknown(f"mesh {fname} not found ({path})")
-        return str(path)
-
-
-def mesh_properties(filename: str, scale: Vector, files: MeshFiles) -> tuple[float, Vector, Matrix, tuple[Vector, Vector]]:
-    """Volume, centre, tensor per unit mass and bounds (lowest and highest corner) of a mesh, ``scale`` applied.
-
-    yourdfpy loads it (through ``files``, with trimesh) as the collision geometry of a
-    one-link robot. A mesh that is not closed has no inside: its convex hull stands in."""
-    files(filename)  # a mesh that does not resolve is told before numpy, trimesh and yourdfpy load (1-2 s)
-    return _mesh_properties(filename, scale, files)
-
-
-@functools.lru_cache(maxsize=256)
-def _mesh_properties(filename: str, scale: Vector, files: MeshFiles) -> tuple[float, Vector, Matrix, tuple[Vector, Vector]]:
-    import numpy
-    import trimesh
-    import yourdfpy
-
-    name = Path(filename).name
-    geometry = yourdfpy.Geometry(mesh=yourdfpy.Mesh(filename=filename, scale=numpy.array(scale)))
-    robot = yourdfpy.Robot(name="mesh", links=[yourdfpy.Link(name="mesh", collisions=[yourdfpy.Collision(name="mesh", geometry=geometry)])])
-    try:
-        with quiet_libraries():
-            scene = yourdfpy.URDF(
-                robot, build_scene_graph=False, build_collision_scene_graph=True, load_collision_meshes=True, filename_handler=files
-            ).collision_scene
-    except GeometryUnknown:
-        raise
-    except Exception as error:  # noqa: BLE001  (trimesh raises many kinds)
-        raise GeometryUnknown(f"mesh {name} cannot be read: {error}") from None
-    meshes = [m for m in scene.geometry.values() if isinstance(m, trimesh.Trimesh) and not m.is_empty]
-    if not meshes:
-        raise GeometryUnknown(f"mesh {name} has no triangles")
-    mesh = meshes[0]
-    if not mesh.is_watertight:
-        mesh = mesh.convex_hull
-    if mesh.volume < 0:
-        mesh.invert()
-    properties = mesh.mass_properties  # density 1: mass equals volume
-    volume = float(properties["volume"])
-    if volume <= 0:
-        raise GeometryUnknown(f"mesh {name} has no volume")
-    unit = tuple(tuple(float(v) / volume for v in row) for row in properties["inertia"])
-    bounds = tuple(tuple(float(v) for v in corner) for corner in mesh.bounds)
-    return volume, tuple(float(c) for c in properties["center_mass"]), unit, bounds  # type: ignore[return-value]
-
-
-@contextlib.contextmanager
-def quiet_libraries():
-    """yourdfpy and trimesh log warnings to stderr (and yourdfpy calls a deprecated trimesh
-    function); urdfcli reports the problems itself."""
-    loggers = [logging.getLogger(name) for name in ("yourdfpy", "trimesh")]
-    levels = [logger.level for logger in loggers]
-    for logger in loggers:
-        logger.setLevel(logging.CRITICAL)
-    try:
-        with warnings.catch_warnings():
-            warnings.simplefilter("ignore", DeprecationWarning)
-            yield
-    finally:
-        for logger, level in zip(loggers, levels):
-            logger.setLevel(level)
 
 
 # -- comparison ------------------------------------------------------------------------
@@ -473,54 +371,6 @@ def verdict(loaded: Loaded, link: Link, tolerance: float = TOLERANCE, density: f
 
 
 # -- the whole robot -------------------------------------------------------------------
-def link_poses(loaded: Loaded) -> dict[str, Transform]:
-    """Each link's pose in the root frame at zero joint positions (a mimic joint at its offset).
-
-    yourdfpy's scene graph gives each joint's transform; urdfcli chains them down the tree,
-    because a root-to-link query multiplies the whole path each time (trimesh orders that
-    product at a cost that grows with the path's length cubed: 20 s on a 200-link chain).
-    Only the tree's joints are given to yourdfpy; the structure rules report the others."""
-    root = loaded.root
-    if root is None:
-        return {}
-    joints = [joint for _, joint, _ in walk(loaded.robot, root) if joint is not None]
-    poses = {root: massprops.ORIGIN}
-    if not joints:
-        return poses
-    scene = kinematic_scene(loaded.robot.name or "robot", root, joints)
-    for joint in joints:
-        matrix = scene.get_transform(joint.child, joint.parent)
-        step = (tuple(tuple(float(v) for v in row[:3]) for row in matrix[:3]), tuple(float(v) for v in matrix[:3, 3]))
-        poses[joint.child] = massprops.compose(poses[joint.parent], step)
-    return poses
-
-
-def kinematic_scene(name: str, root: str, joints: list[Joint]):
-    """A yourdfpy model of the kinematic tree alone (no geometry), at zero joint positions.
-
-    At zero positions only a mimic joint's offset moves a joint, so the others are given
-    as fixed: yourdfpy looks each moving joint up in a list, which would make setting up
-    a large robot quadratic in its joints."""
-    import numpy
-    import trimesh.transformations as tra
-    import yourdfpy
-
-    def joint_of(joint: Joint) -> yourdfpy.Joint:
-        matrix = tra.euler_matrix(*joint.origin.rpy, axes="sxyz")
-        matrix[:3, 3] = joint.origin.xyz
-        # a zero axis (reported by J007) gives no direction to move along
-        moves = joint.mimic is not None and joint.type in ("revolute", "continuous", "prismatic") and any(joint.axis)
-        return yourdfpy.Joint(
-            name=joint.name, type=joint.type if moves else "fixed", parent=joint.parent, child=joint.child, origin=matrix,
-            axis=numpy.array(joint.axis) if moves else None,
-            mimic=yourdfpy.Mimic(joint.mimic.joint, joint.mimic.multiplier, joint.mimic.offset) if moves else None,
-        )
-
-    links = [yourdfpy.Link(name=root)] + [yourdfpy.Link(name=joint.child) for joint in joints]
-    with quiet_libraries():
-        return yourdfpy.URDF(yourdfpy.Robot(name=name, links=links, joints=[joint_of(j) for j in joints]), load_meshes=False)
-
-
 def used_body(loaded: Loaded, link: Link, density: float | None = None) -> Body | None:
     """The body the total counts for a link: with ``density`` the one its geometry fills
     (a link without geometry keeps its declared one), else the declared one."""
@@ -664,163 +514,3 @@ FIXABLE = {"I001", "I002", "I003", "I004", "I005", "I006", "I007", "I008", "I009
 def flagged(report: Report) -> list[LinkReport]:
     """Links with a mass-property problem, for which a uniform body's <inertial> is suggested."""
     return [entry for entry in report.links if any(d.code in FIXABLE for d in entry.problems)]
-
-
-def suggestion(loaded: Loaded, entry: LinkReport, density: float | None = None) -> str:
-    """A ready-to-paste ``<inertial>`` for a link, in the frame of its current one: the
-    uniform body its geometry makes, said to be an estimate, never a correction; an XML
-    comment saying why when the geometry cannot tell."""
-    link = entry.link
-    found = implied(loaded, link, density)
-    if found.body is None:
-        why = found.source if link.inertial is not None or density else "it declares no mass (give --density)"
-        return f"<!-- link '{link.name}': no suggestion: {why} -->"
-    rpy = link.inertial.origin.rpy if link.inertial is not None else (0.0, 0.0, 0.0)
-    tensor = massprops.tidy(massprops.rotate(found.body.tensor, massprops.transpose(massprops.rotation(rpy))))
-    values = massprops.as_dict(tensor)
-    return "\n".join(
-        [
-            f"<!-- link '{link.name}': a uniform body filling its {found.source} (an estimate: the part's CAD values are better) -->",
-            "<inertial>",
-            f'  <origin xyz="{" ".join(map(number, found.body.com))}" rpy="{" ".join(map(number, rpy))}"/>',
-            f'  <mass value="{number(found.body.mass)}"/>',
-            "  <inertia " + " ".join(f'{k}="{number(values[k])}"' for k in massprops.KEYS) + "/>",
-            "</inertial>",
-        ]
-    )
-
-
-# -- xacro macros ----------------------------------------------------------------------
-@dataclass(frozen=True)
-class MacroUse:
-    """The xacro macro whose body wrote a link's <inertial>, and the call that used it."""
-
-    name: str
-    params: str
-    defined_at: str  # FILE:LINE
-    call: str | None  # the call as written, e.g. <xacro:box_inertia m="${mass}" .../>
-    called_at: str | None
-
-
-@functools.lru_cache(maxsize=64)
-def _source_tree(file: str):
-    from .xmlsafe import XmlError, parse_bytes
-
-    try:
-        return parse_bytes(Path(file).read_bytes())
-    except (OSError, XmlError):
-        return None
-
-
-@functools.lru_cache(maxsize=64)
-def _start_lines(file: str) -> dict:
-    """The line of each source element's ``<`` (where diagnostics point)."""
-    from .positions import source
-
-    root, text = _source_tree(file), source(file)
-    if root is None:
-        return {}
-    elements = list(root.iter(etree.Element))
-    starts = text.element_starts(len(elements)) if text is not None else None
-    if starts is None:
-        return {e: e.sourceline for e in elements}
-    return {e: text.position(start)[0] for e, start in zip(elements, starts)}
-
-
-def _written(file: str, line: int, tag: str):
-    """The element of that tag written at file:line, in the xacro source."""
-    return next((e for e, at in _start_lines(file).items() if at == line and etree.QName(e).localname == tag), None)
-
-
-def _is_xacro(element, name: str) -> bool:
-    from .load import XACRO_NAMESPACES
-
-    qname = etree.QName(element)
-    return qname.namespace in XACRO_NAMESPACES and qname.localname == name
-
-
-def macro_use(loaded: Loaded, link: Link) -> MacroUse | None:
-    """Which xacro macro produced the link's <inertial> (None when it was written in place)."""
-    if link.inertial is None or loaded.document.origins is None:
-        return None
-    where = loaded.document.locate(link.inertial.at)
-    written = _written(where.file, where.line, "inertial") if where.line and not where.expanded else None
-    macro = next((a for a in written.iterancestors() if _is_xacro(a, "macro")), None) if written is not None else None
-    if macro is None:
-        return None
-    name = macro.get("name", "")
-    call, called_at = None, None
-    link_where = loaded.document.locate(link.at)
-    source_link = _written(link_where.file, link_where.line, "link") if link_where.line and not link_where.expanded else None
-    if source_link is not None:
-        found = next((e for e in source_link.iter(etree.Element) if _is_xacro(e, name)), None)
-        if found is not None:
-            attributes = " ".join(f'{k}="{v}"' for k, v in found.attrib.items())
-            call, called_at = f"<xacro:{name} {attributes}/>", f"{link_where.file}:{_start_lines(link_where.file)[found]}"
-    return MacroUse(name, macro.get("params", ""), f"{where.file}:{_start_lines(where.file)[macro]}", call, called_at)
-
-
-def _macro_element(use: MacroUse):
-    file, _, line = use.defined_at.rpartition(":")
-    return _written(file, int(line), "macro")
-
-
-def _dimensions(geometry) -> tuple[float, ...]:
-    if geometry.kind == "box":
-        return tuple(geometry.size)
-    if geometry.kind == "cylinder":
-        return geometry.radius, geometry.length
-    return (geometry.radius,)
-
-
-def matching_call(loaded: Loaded, link: Link, use: MacroUse) -> str | None:
-    """A call of the macro that writes the tensor the link's geometry implies, found by
-    expanding the macro with the mass and each ordering of the shape's dimensions;
-    None when no call does (e.g. the macro cannot rotate its tensor with the shape)."""
-    import itertools
-
-    from . import expansion
-    from .xmlsafe import parse_bytes
-
-    found = implied(loaded, link)
-    macro = _macro_element(use)
-    if found.body is None or len(found.shapes) != 1 or found.shapes[0].geometry.kind == "mesh" or macro is None:
-        return None
-    required = [p.lstrip("^") for p in use.params.split() if not p.startswith("*") and ":=" not in p and "=" not in p]
-    masses = [p for p in required if p.lower() in ("m", "mass") or "mass" in p.lower()]
-    others = [p for p in required if p not in masses]
-    dimensions = _dimensions(found.shapes[0].geometry)
-    if len(masses) != 1 or len(others) != len(dimensions):
-        return None
-    calls = []
-    for order in dict.fromkeys(itertools.permutations(dimensions)):
-        values = {masses[0]: found.body.mass, **dict(zip(others, order))}
-        calls.append(f"<xacro:{use.name} " + " ".join(f'{k}="{number(v)}"' for k, v in values.items()) + "/>")
-    namespace = etree.QName(macro).namespace
-    probe = f'<robot name="probe" xmlns:xacro="{namespace}">{etree.tostring(macro, encoding="unicode", with_tail=False)}'
-    probe += "".join(f'<link name="c{i}">{call}</link>' for i, call in enumerate(calls)) + "</robot>"
-    try:
-        text = expansion.expand(parse_bytes(probe.encode()), None, {}, resolver_of(loaded)).text
-        links = parse_bytes(text.encode()).findall("link")
-    except Exception:  # noqa: BLE001  (a macro that needs more than its parameters)
-        return None
-    for call, probe_link in zip(calls, links):
-        tensor = _probe_tensor(probe_link)
-        if tensor is not None and massprops.relative_difference(tensor, found.body.tensor) <= 1e-3:
-            return call
-    return None
-
-
-def _probe_tensor(link) -> Matrix | None:
-    """The link-frame tensor of an expanded probe link's <inertial>."""
-    from .model import INERTIA_KEYS
-    from .numbers import NumberError, parse_double, parse_vector
-
-    try:
-        inertia = link.find("inertial/inertia")
-        values = {k: parse_double(inertia.get(k)) for k in INERTIA_KEYS}
-        origin = link.find("inertial/origin")
-        rpy = parse_vector(origin.get("rpy", "0 0 0")) if origin is not None else (0.0, 0.0, 0.0)
-    except (AttributeError, TypeError, NumberError, ValueError):
-        return None
-    return massprops.rotate(massprops.matrix(values), massprops.rotation(rpy))

@@ -10,8 +10,8 @@ from typing import Annotated
 import typer
 from rich.text import Text
 
+from .. import fixes, massprops
 from .. import inertia as audit_module
-from .. import massprops
 from ..diagnostics import Severity
 from ..escape import escape
 from ..formatters.text import print_diagnostic
@@ -159,13 +159,13 @@ def print_suggestions(report: audit_module.Report, density: float | None, xacro:
     stdout.print()
     for entry in flagged:
         loaded = report.loaded
-        use = audit_module.macro_use(loaded, entry.link) if xacro else None
+        use = fixes.macro_use(loaded, entry.link) if xacro else None
         if use is not None:
             called = f", called at {use.called_at} as {use.call}" if use.call else ""
             stdout.print(f"<!-- link '{escape(entry.link.name)}': its <inertial> comes from xacro macro '{use.name}' ({use.defined_at}){called} -->", markup=False, soft_wrap=True)
-            call = audit_module.matching_call(loaded, entry.link, use) if density is None else None
+            call = fixes.matching_call(loaded, entry.link, use) if density is None else None
             if call is not None:
                 stdout.print(f"<!-- the call that gives the geometry's values: -->\n{call}", markup=False, soft_wrap=True)
                 continue
             stdout.print(f"<!-- no call of '{use.name}' gives the geometry's values: replace the call with -->", markup=False, soft_wrap=True)
-        stdout.print(audit_module.suggestion(loaded, entry, density), markup=False, soft_wrap=True)
+        stdout.print(fixes.suggestion(loaded, entry, density), markup=False, soft_wrap=True)
