@@ -20,9 +20,7 @@ from lxml import etree
 from .diagnostics import Diagnostic, Location
 from . import positions
 from .document import Document
-from .kinematics import tree_diagnostics
 from .loaded import Loaded
-from .model import read
 from .packages import PackageResolver
 from .rules import load_all, load_check
 from .xmlsafe import XmlError, parse_bytes
@@ -181,6 +179,9 @@ def _collector_paused(function):
 
 @_collector_paused
 def load(path: str, options: LoadOptions = LoadOptions(), data: bytes | None = None) -> Loaded:
+    from .kinematics import tree_diagnostics  # the model's modules: `expand` reads no model
+    from .model import read
+
     resolver = PackageResolver(options.package_paths, None if path == STDIN else Path(path))
     document, diagnostics = load_document(path, options, data, resolver=resolver)
     loaded = Loaded(document, diagnostics=diagnostics, resolver=resolver)

@@ -8,11 +8,12 @@ from typing import TYPE_CHECKING
 
 from .diagnostics import Diagnostic, Severity
 from .document import Document
-from .model import Joint, Robot
-from .packages import PackageResolver
 
 if TYPE_CHECKING:
     import networkx as nx
+
+    from .model import Joint, Robot
+    from .packages import PackageResolver
 
 
 @dataclass

@@ -7,10 +7,13 @@ written plain (never through rich).
 from __future__ import annotations
 
 import os
+from typing import TYPE_CHECKING
 
 from ..diagnostics import Diagnostic, Severity
 from ..escape import escape
-from ..loaded import Loaded
+
+if TYPE_CHECKING:
+    from ..loaded import Loaded
 
 FORMATS = ("auto", "text", "concise", "json", "sarif", "github", "check_urdf")
 

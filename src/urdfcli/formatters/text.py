@@ -7,11 +7,10 @@ from typing import TYPE_CHECKING
 from ..diagnostics import Diagnostic
 from ..document import source_line
 from ..escape import escape
-from ..loaded import Loaded
 from . import call_phrase, plain_line, position
-from .check_urdf import tree_lines
 
 if TYPE_CHECKING:
+    from ..loaded import Loaded
     from rich.console import Console
 
 STYLES = {"error": "bold red", "warning": "yellow", "info": "cyan"}
@@ -23,6 +22,8 @@ def plain(console: Console) -> bool:
 
 
 def print_tree(console: Console, loaded: Loaded) -> None:
+    from .check_urdf import tree_lines  # the kinematic tree's modules: `expand` prints none
+
     lines = tree_lines(loaded)
     if plain(console):
         console.file.writelines(line + "\n" for line in lines)  # line by line: a deep tree's text is large
