@@ -224,7 +224,8 @@ def rigid_bodies(robot: Robot, parent_joint: Callable[[str], Joint | None]) -> d
     bodies: dict[str, RigidBody] = {}
     for top, names in members.items():
         joint = parent_joint(top)
-        names.sort(key=lambda n: n != top)  # the top link first, the rest in file order
+        if len(names) > 1:
+            names.sort(key=lambda n: n != top)  # the top link first, the rest in file order
         body = RigidBody(joint if joint is not None and joint.moving else None, tuple(names))
         for name in names:
             bodies[name] = body
@@ -238,7 +239,11 @@ def subtree_masses(robot: Robot, mass: Callable[[str], float]) -> dict[str, floa
     for root in roots(robot):
         order = [link for _, _, link in walk(robot, root, children)]
         for link in reversed(order):  # every link after the links below it
-            total[link] = mass(link) + sum(total.get(j.child, 0.0) for j in children.get(link, ()) if j.child != link)
+            carried = mass(link)
+            for joint in children.get(link, ()):
+                if joint.child != link:
+                    carried += total.get(joint.child, 0.0)
+            total[link] = carried
     return total
 
 

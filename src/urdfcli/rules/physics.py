@@ -288,19 +288,27 @@ def invalid_tensors(loaded) -> dict[str, list]:
 
 def _invalid_tensors(loaded) -> dict[str, list]:
     found: dict[str, list] = {"I005": [], "I006": []}
+    judged: dict[int, tuple] = {}  # links that write the same text share its tensor: judged once
     for link, inertial in _inertials(loaded):
         if not inertial.inertia or absorbed(loaded, link):
             continue
-        tensor = tensor_of(inertial)
-        if massprops.is_negligible(tensor):
-            continue  # a point mass: I004
-        if not massprops.is_positive_semidefinite(tensor):
-            found["I005"].append((link, massprops.principal_moments(tensor)))
-        else:
-            broken = massprops.triangle_violation(tensor)
-            if broken is not None:
-                found["I006"].append((link, broken))
+        verdict = judged.get(id(inertial.inertia))
+        if verdict is None:
+            verdict = judged[id(inertial.inertia)] = _tensor_verdict(tensor_of(inertial))
+        code, detail = verdict
+        if code is not None:
+            found[code].append((link, detail))
     return found
+
+
+def _tensor_verdict(tensor) -> tuple[str | None, tuple | None]:
+    """("I005", principal moments), ("I006", the moments breaking the triangle), or (None, None)."""
+    if massprops.is_negligible(tensor):
+        return None, None  # a point mass: I004
+    if not massprops.is_positive_semidefinite(tensor):
+        return "I005", massprops.principal_moments(tensor)
+    broken = massprops.triangle_violation(tensor)
+    return ("I006", broken) if broken is not None else (None, None)
 
 
 def has_invalid_tensor(loaded, link) -> bool:
