@@ -6,6 +6,7 @@ from __future__ import annotations
 import json
 import subprocess
 import sys
+from pathlib import Path
 
 import pytest
 from lxml import etree
@@ -61,7 +62,8 @@ def positions_of(path, ids: set[str]) -> dict[str, tuple[str, int, int]]:
     loaded = load(str(path), LoadOptions(checks="none"))
     assert loaded.document.readable, loaded.diagnostics
     found = {}
-    for at, element in enumerate(parse_bytes(loaded.document.data).iter(etree.Element)):
+    text = loaded.document.expanded_text.encode() if loaded.document.is_xacro else Path(path).read_bytes()
+    for at, element in enumerate(parse_bytes(text).iter(etree.Element)):
         if element.get("id") in ids:
             where = loaded.document.locate(at)
             found[element.get("id")] = (where.file, where.line, where.column)

@@ -321,12 +321,12 @@ def run_main(monkeypatch, capsys, *args: str) -> tuple[int, str]:
 
 
 def test_an_internal_error_is_one_line_asking_for_a_bug_report(monkeypatch, capsys, tmp_path):
-    import urdfcli.load
+    import urdfcli.model
 
     def broken(*args, **kwargs):
         raise ZeroDivisionError("division by zero\nwith a second line")
 
-    monkeypatch.setattr(urdfcli.load, "read", broken)
+    monkeypatch.setattr(urdfcli.model, "read", broken)
     monkeypatch.delenv("URDFCLI_DEBUG", raising=False)
     path = write(tmp_path, "ok.urdf", ONE_LINK)
     code, err = run_main(monkeypatch, capsys, "check", str(path))
@@ -341,9 +341,9 @@ def test_urdfcli_debug_shows_the_traceback(monkeypatch, tmp_path):
     """With URDFCLI_DEBUG=1, the real process prints the traceback of an internal error."""
     path = write(tmp_path, "ok.urdf", ONE_LINK)
     program = (
-        "import sys, urdfcli.load\n"
+        "import sys, urdfcli.model\n"
         "def broken(*a, **k): raise ZeroDivisionError('boom')\n"
-        "urdfcli.load.read = broken\n"
+        "urdfcli.model.read = broken\n"
         "from urdfcli.cli import main\n"
         f"sys.argv = ['urdfcli', 'check', {str(path)!r}]\n"
         "main()\n"

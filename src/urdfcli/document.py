@@ -37,7 +37,10 @@ def tag_name(element: etree._Element) -> str:
 @dataclass
 class Document:
     path: str  # as the user gave it ("-" for stdin)
-    data: bytes | None  # the model's XML (xacro's output for xacro inputs); None when unreadable
+    # The model's XML (xacro's output for xacro inputs), let go of once the model is
+    # read: a large model's text is not kept beside it (diagnostics read their lines
+    # from the file, or from expanded_text). None when unreadable.
+    data: bytes | None
     file: Path | None = None  # the file on disk, None for stdin
     is_xacro: bool = False
     expanded_text: str | None = None  # xacro output, for xacro inputs
@@ -49,9 +52,10 @@ class Document:
     def shown(self) -> str:
         return "<stdin>" if self.path == "-" else self.path
 
-    @property
-    def readable(self) -> bool:
-        return self.data is not None
+    readable: bool = field(init=False)
+
+    def __post_init__(self) -> None:
+        self.readable = self.data is not None
 
     def diagnostic(self, code: str, message: str, at: int | None, hint: str | None = None, attribute: str | None = None) -> Diagnostic:
         """A diagnostic about the element ``at`` (or one of its attributes), located where it was written."""

@@ -193,9 +193,10 @@ def load(path: str, options: LoadOptions = LoadOptions(), data: bytes | None = N
         error = failure if isinstance(failure, XmlError) else _not_well_formed(document.data)
         if error is None:
             raise
-        document.data = None
+        document.data, document.readable = None, False
         loaded.diagnostics.append(_error(error.code, error.message, Location(document.shown, error.line, error.column)))
         return loaded
+    document.data = None
     loaded.diagnostics += found
     loaded.robot = robot
     if robot.at is None:
