@@ -156,3 +156,20 @@ def test_tidy_removes_rounding_noise_only():
     noisy = mp.rotate(mp.cylinder(0.5, 0.05, 0.02), mp.rotation((1.5708, 0, 0)))
     assert noisy[1][2] != 0 and mp.tidy(noisy)[1][2] == 0
     assert mp.tidy(mp.diagonal(1.0, 1e-3, 1e-4)) == mp.diagonal(1.0, 1e-3, 1e-4)
+
+
+@settings(max_examples=300, deadline=None)
+@given(
+    st.tuples(angles, angles, angles),
+    st.tuples(*[st.floats(1e-6, 1e3) for _ in range(3)]),
+)
+def test_principal_axes_are_numpys_where_a_moment_stands_apart(rpy, moments):
+    """The closed-form axis of a simple principal moment is numpy's eigenvector, up to sign."""
+    tensor = mp.rotate(mp.diagonal(*moments), mp.rotation(rpy))
+    values, vectors = numpy.linalg.eigh(numpy.array(tensor))
+    largest = max(abs(v) for v in values)
+    for i in range(3):
+        if all(abs(values[i] - values[j]) >= 0.15 * largest for j in range(3) if j != i):
+            axis = mp.principal_axis(tensor, mp.principal_moments(tensor)[i])
+            assert axis is not None
+            assert abs(abs(float(numpy.dot(axis, vectors[:, i]))) - 1.0) < 1e-6

@@ -48,6 +48,27 @@ def test_lint_loads_no_mesh_library_when_no_mesh_resolves(tmp_path):
     assert not {"numpy", "trimesh", "yourdfpy", "scipy"} & set(modules)
 
 
+TURNED = """<robot name="r">
+  <link name="base"/>
+  <link name="plate">
+    <inertial><mass value="1"/><inertia ixx="0.01417" ixy="0" ixz="0" iyy="0.02667" iyz="0" izz="0.01417"/></inertial>
+    <collision><geometry><box size="0.4 0.4 0.1"/></geometry></collision>
+  </link>
+  <joint name="j" type="continuous"><parent link="base"/><child link="plate"/><axis xyz="0 0 1"/></joint>
+</robot>
+"""
+
+
+def test_principal_axes_are_compared_without_numpy(tmp_path):
+    """I009's turned-axes check works out eigenvectors in plain Python: lint on a model
+    without meshes imports no numpy, even where the check runs and fires."""
+    path = tmp_path / "robot.urdf"
+    path.write_text(TURNED)
+    done = subprocess.run([sys.executable, "-c", IMPORTED, "lint", "--format", "concise", str(path)], capture_output=True, text=True)
+    assert "I009" in done.stdout and "on axes 90° away" in done.stdout
+    assert "numpy" not in eval(done.stdout.strip().splitlines()[-1])
+
+
 def test_each_package_is_looked_up_once_found_or_not(tmp_path, monkeypatch):
     own = tmp_path / "ws" / "src" / "own"
     (own / "urdf").mkdir(parents=True)

@@ -239,14 +239,14 @@ DISTINCT = 0.15  # a principal moment this far (relative to the largest) from th
 def axes_apart(a: Matrix, b: Matrix) -> float:
     """The largest angle (degrees) between matching principal axes of two tensors, over the
     axes whose moment stands apart from the other two in both (others are not defined)."""
-    import numpy
-
     worst = 0.0
-    eig_a, eig_b = numpy.linalg.eigh(numpy.array(a)), numpy.linalg.eigh(numpy.array(b))
+    moments_a, moments_b = massprops.principal_moments(a), massprops.principal_moments(b)
     for i in range(3):
-        if all(_distinct(moments, i) for moments in (eig_a[0], eig_b[0])):
-            cosine = abs(float(numpy.dot(eig_a[1][:, i], eig_b[1][:, i])))
-            worst = max(worst, math.degrees(math.acos(min(1.0, cosine))))
+        if _distinct(moments_a, i) and _distinct(moments_b, i):
+            axis_a, axis_b = massprops.principal_axis(a, moments_a[i]), massprops.principal_axis(b, moments_b[i])
+            if axis_a is not None and axis_b is not None:
+                cosine = abs(sum(x * y for x, y in zip(axis_a, axis_b)))
+                worst = max(worst, math.degrees(math.acos(min(1.0, cosine))))
     return worst
 
 

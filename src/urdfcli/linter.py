@@ -68,7 +68,8 @@ def load_configured(
     """
     if data is None and path == STDIN:
         data = read_input(path)
-    options = LoadOptions(config.package_paths + tuple(package_paths), {**config.mappings_for(path), **(mappings or {})}, checks=checks)
+    # A rule the configuration turns off everywhere does not run (per-file ignores are applied to what runs).
+    options = LoadOptions(config.package_paths + tuple(package_paths), {**config.mappings_for(path), **(mappings or {})}, checks, config.enabled)
     if alone:
         resolver = PackageResolver(options.package_paths, None if path == STDIN else Path(path))
         document, found = load_document(path, options, data, resolver=resolver)

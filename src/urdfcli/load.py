@@ -12,6 +12,7 @@ import functools
 import gc
 import re
 import sys
+from collections.abc import Callable
 from dataclasses import dataclass, field
 from pathlib import Path
 
@@ -22,7 +23,7 @@ from . import positions
 from .document import Document
 from .loaded import Loaded
 from .packages import PackageResolver
-from .rules import load_all, load_check
+from .rules import Rule, load_all, load_check
 from .xmlsafe import XmlError, parse_bytes
 
 XACRO_NAMESPACES = {"http://www.ros.org/wiki/xacro", "http://ros.org/wiki/xacro", "http://wiki.ros.org/xacro"}
@@ -38,6 +39,7 @@ class LoadOptions:
     package_paths: tuple[str, ...] = ()
     mappings: dict[str, str] = field(default_factory=dict)
     checks: str = "check"  # which rules run: "check", "all", or "none"
+    runs: Callable[[Rule], bool] | None = None  # of those, the ones the configuration has on (None: all)
 
 
 def read_input(path: str) -> bytes:
@@ -204,7 +206,7 @@ def load(path: str, options: LoadOptions = LoadOptions(), data: bytes | None = N
     loaded.diagnostics += tree_diagnostics(robot, document)
     if options.checks != "none":
         for spec in (load_check() if options.checks == "check" else load_all()).values():
-            if spec.function is not None and (options.checks == "all" or spec.in_check):
+            if spec.function is not None and (options.checks == "all" or spec.in_check) and (options.runs is None or options.runs(spec)):
                 loaded.diagnostics.extend(spec.function(loaded))
     loaded.diagnostics.sort(key=Diagnostic.sort_key)
     return loaded

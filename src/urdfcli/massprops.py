@@ -232,6 +232,25 @@ def normalised(m: Matrix) -> Matrix:
     return tuple(tuple(v / size for v in row) for row in m)  # type: ignore[return-value]
 
 
+def principal_axis(m: Matrix, moment: float) -> Vector | None:
+    """The unit axis of a principal moment that stands apart from the other two (its
+    sign is arbitrary): the cross product of two rows of ``m - moment * I``, the
+    pair that gives the longest. None when the moment is not a simple one of ``m``."""
+    size = scale_of(m)
+    if size == 0:
+        return None
+    m, moment = normalised(m), moment / size
+    rows = [tuple(m[i][j] - (moment if i == j else 0.0) for j in range(3)) for i in range(3)]
+    candidates = [_cross(rows[0], rows[1]), _cross(rows[0], rows[2]), _cross(rows[1], rows[2])]
+    best = max(candidates, key=lambda v: v[0] * v[0] + v[1] * v[1] + v[2] * v[2])
+    length = math.sqrt(best[0] * best[0] + best[1] * best[1] + best[2] * best[2])
+    return (best[0] / length, best[1] / length, best[2] / length) if length > 1e-12 else None
+
+
+def _cross(a: Vector, b: Vector) -> Vector:
+    return (a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0])
+
+
 def scaled(m: Matrix, factor: float) -> Matrix:
     return tuple(tuple(v * factor for v in row) for row in m)  # type: ignore[return-value]
 
