@@ -137,13 +137,16 @@ def _gazebo_material(element) -> bool:
     return tag_name(element) == "material" and element.get("name") is None and bool((element.text or "").strip())
 
 
-def unknown_attributes(element: etree._Element, at: int) -> Iterator[Unknown]:
-    """The attributes of ``element`` (at ``at``) that its tag does not take."""
-    tag = tag_name(element)
+def unknown_attributes(element: etree._Element, at: int, tag: str | None = None) -> Iterator[Unknown]:
+    """The attributes of ``element`` (at ``at``, of ``tag``) that its tag does not take."""
+    tag = tag or tag_name(element)
     known = KNOWN_ATTRIBUTES[tag]
-    for name in element.attrib:
+    names = element.keys()
+    if known.issuperset(names):
+        return  # the common case, decided in one step
+    for name in names:
         if name not in known and not _is_foreign(name):
-            yield Unknown(at, tag, name, True, _typo_of(name, known - set(element.attrib)))
+            yield Unknown(at, tag, name, True, _typo_of(name, known - set(names)))
 
 
 def unknown_markup(top: etree._Element, index: Callable[[etree._Element], int]) -> Iterator[Unknown]:
@@ -159,12 +162,11 @@ def unknown_markup(top: etree._Element, index: Callable[[etree._Element], int]) 
     if name not in SCHEMA or name in OPAQUE:
         return
     owner = top.get("name") if name in ("link", "joint") else None
-    stack = [top]
+    stack = [(top, name)]
     while stack:
-        element = stack.pop()
+        element, tag = stack.pop()
         at = index(element)
-        tag = tag_name(element)
-        yield from unknown_attributes(element, at)
+        yield from unknown_attributes(element, at, tag)
         children = KNOWN_CHILDREN.get(tag)
         if children is None:
             continue
@@ -173,7 +175,7 @@ def unknown_markup(top: etree._Element, index: Callable[[etree._Element], int]) 
             name = tag_name(child)
             if name in children:
                 if name in SCHEMA and name not in OPAQUE:
-                    inside.append(child)
+                    inside.append((child, name))
             elif not _is_foreign(name):
                 if name in GAZEBO_TAGS or _gazebo_material(child):
                     yield Unknown(index(child), tag, name, False, gazebo=True, holder=at, owner=owner)

@@ -428,7 +428,8 @@ def assemble(entries: list[Entry], outcome: Callable[[Target], object], includes
                     unreadable.append(result)
                     continue
                 own = Path(entry.path).resolve() if entry.path != STDIN else None
-                result.diagnostics = [d for d in result.diagnostics if _fresh(d, own, shown_keys)]
+                resolved: dict[str, bool] = {}  # per file named: is it this input?
+                result.diagnostics = [d for d in result.diagnostics if _fresh(d, own, shown_keys, resolved)]
                 if target.arguments:  # shown with the model's name and in JSON
                     result.label, result.arguments = target.label, dict(target.arguments)
                 results.append(result)
@@ -437,11 +438,15 @@ def assemble(entries: list[Entry], outcome: Callable[[Target], object], includes
     return results, unreadable
 
 
-def _fresh(diagnostic: Diagnostic, own: Path | None, shown_keys: set) -> bool:
+def _fresh(diagnostic: Diagnostic, own: Path | None, shown_keys: set, resolved: dict[str, bool] | None = None) -> bool:
     key = _key(diagnostic)
-    if own is not None and _same(diagnostic.file, own):
-        shown_keys.add(key)
-        return True
+    if own is not None:
+        resolved = {} if resolved is None else resolved
+        if diagnostic.file not in resolved:
+            resolved[diagnostic.file] = _same(diagnostic.file, own)
+        if resolved[diagnostic.file]:
+            shown_keys.add(key)
+            return True
     if key in shown_keys:
         return False
     shown_keys.add(key)
