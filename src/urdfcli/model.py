@@ -284,7 +284,7 @@ class Reader:
                 self.report("V006", f"box size '{text}' has a negative component", shape)
             elif smallest == 0:
                 self.report("V008", f"box size '{text}' has a zero component: the box has no volume", shape, ZERO_HINT)
-            return Geometry(kind, self.at(shape), size=size)
+            return Geometry(kind, self._index[shape], size)
         if kind == "cylinder":
             if shape.get("radius") is None or shape.get("length") is None:
                 missing = " and ".join(a for a in ("radius", "length") if shape.get(a) is None)
@@ -319,7 +319,7 @@ class Reader:
                 material_name = parsed.name if parsed else None
                 if parsed is not None:
                     self._inline_materials.append(parsed)
-        return Shape(self.at(element), origin, geometry, material_name)
+        return Shape(self._index[element], origin, geometry, material_name)
 
     def inertial(self, element: etree._Element) -> Inertial:
         found = first_children(element)
@@ -340,7 +340,7 @@ class Reader:
             if inertia is None:
                 values = {key: self.number(inertia_element, key, required=True) for key in INERTIA_KEYS}
                 inertia = _remember(_TENSORS, texts, values) if None not in values.values() else None
-        return Inertial(self.at(element), origin, mass, inertia, self.at(mass_element), self.at(inertia_element))  # type: ignore[arg-type]
+        return Inertial(self._index[element], origin, mass, inertia, self.at(mass_element), self.at(inertia_element))  # type: ignore[arg-type]
 
     def link(self, element: etree._Element) -> Link:
         name = element.get("name")
@@ -351,22 +351,28 @@ class Reader:
         inertial = self.inertial(inertial_element) if inertial_element is not None else None
         visuals = tuple([self.shape(v, visual=True) for v in element.iterchildren("visual")])
         collisions = tuple([self.shape(c, visual=False) for c in element.iterchildren("collision")])
-        return Link(name, self.at(element), inertial, visuals, collisions)
+        return Link(name, self._index[element], inertial, visuals, collisions)
 
     def joint_limit(self, joint_name: str, element: etree._Element) -> Limit:
+        key = (element.get("lower"), element.get("upper"), element.get("effort"), element.get("velocity"))
+        limit = _LIMITS.get(key)
+        if limit is not None:
+            return limit
+        reported = len(self.diagnostics)
         what = f" (joint '{joint_name}')"
         lower = self.number(element, "lower", what=what)
         upper = self.number(element, "upper", what=what)
         effort = self.number(element, "effort", required=True, what=what)
         velocity = self.number(element, "velocity", required=True, what=what)
-        return Limit(
+        limit = Limit(
             lower if lower is not None else 0.0,
             upper if upper is not None else 0.0,
             effort,
             velocity,
-            element.get("lower") is not None,
-            element.get("upper") is not None,
+            key[0] is not None,
+            key[1] is not None,
         )
+        return _remember(_LIMITS, key, limit) if len(self.diagnostics) == reported else limit
 
     def joint(self, element: etree._Element) -> Joint:
         name = element.get("name")
@@ -421,7 +427,7 @@ class Reader:
             missing = " and ".join(t for t, v in (("<parent link>", parent), ("<child link>", child)) if v is None)
             self.report("J004", f"joint '{shown}' has no {missing}", element)
         parts = tuple((tag, self._index[found[tag]]) for tag in ("parent", "child", "axis", "limit", "mimic") if tag in found)
-        return Joint(name if name is not None else "", self.at(element), joint_type, parent, child, origin, axis, limit, mimic, parts)
+        return Joint(name if name is not None else "", self._index[element], joint_type, parent, child, origin, axis, limit, mimic, parts)
 
     @staticmethod
     def _link_ref(element: etree._Element | None) -> str | None:
@@ -540,6 +546,7 @@ def same_colour(a: tuple[float, ...], b: tuple[float, ...]) -> bool:
 _NUMBERS: dict[str, float] = {}
 _POSES: dict[tuple[str | None, str | None], Pose] = {}
 _TENSORS: dict[tuple[str | None, ...], dict[str, float]] = {}
+_LIMITS: dict[tuple[str | None, ...], Limit] = {}
 _REMEMBERED = 1 << 16  # distinct texts kept of each kind
 IDENTITY = Pose()
 
