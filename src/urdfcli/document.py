@@ -47,15 +47,14 @@ class Document:
     includes: list[str] = field(default_factory=list)
     origins: list[Origin | None] | None = None  # xacro inputs: one per element
     tops: array = field(default_factory=lambda: array("l"))  # the index of each top-level element, as read
+    readable: bool = field(init=False)  # whether a model could be read (stays true once data is let go of)
+
+    def __post_init__(self) -> None:
+        self.readable = self.data is not None
 
     @property
     def shown(self) -> str:
         return "<stdin>" if self.path == "-" else self.path
-
-    readable: bool = field(init=False)
-
-    def __post_init__(self) -> None:
-        self.readable = self.data is not None
 
     def diagnostic(self, code: str, message: str, at: int | None, hint: str | None = None, attribute: str | None = None) -> Diagnostic:
         """A diagnostic about the element ``at`` (or one of its attributes), located where it was written."""

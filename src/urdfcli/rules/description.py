@@ -4,7 +4,6 @@ from __future__ import annotations
 
 import difflib
 import re
-from dataclasses import dataclass
 
 from ..markup import SCHEMA
 from . import INFO, WARNING, check
