@@ -161,3 +161,25 @@ def test_output_file_is_written_and_input_is_never_overwritten(tmp_path):
     assert run_cli("expand", str(target), "-o", str(out)).returncode == 0
     assert canonical(out.read_text()) == canonical(real_xacro(source).stdout)
     assert [p.name for p in tmp_path.iterdir() if p.name.startswith(".")] == []  # no temporary file left
+
+
+def test_yaml_loaded_by_xacro_matches_the_xacro_tool(tmp_path):
+    """xacro.load_yaml: yaml is imported only when a model uses it, and the output is
+    the xacro tool's, byte for byte."""
+    (tmp_path / "params.yaml").write_text("arm:\n  name: upper_arm\n  length: 0.35\n  offsets: [0.1, 0.2]\n")
+    path = tmp_path / "arm.urdf.xacro"
+    path.write_text(
+        '<robot name="r" xmlns:xacro="http://www.ros.org/wiki/xacro">\n'
+        "  <xacro:property name=\"p\" value=\"${xacro.load_yaml('params.yaml')}\"/>\n"
+        "  <link name=\"${p['arm']['name']}\">\n"
+        "    <visual><geometry><cylinder radius=\"${p['arm']['offsets'][0]}\" length=\"${p['arm']['length']}\"/></geometry></visual>\n"
+        "  </link>\n"
+        "  <link name=\"second\"/>\n"
+        '</robot>\n'
+    )
+    real = real_xacro(path, cwd=tmp_path)
+    mine = run_cli("expand", str(path), cwd=tmp_path)
+    assert real.returncode == 0, real.stderr
+    assert mine.returncode == 0, mine.stderr
+    assert 'name="upper_arm"' in real.stdout and 'length="0.35"' in real.stdout
+    assert mine.stdout.decode() == real.stdout

@@ -10,9 +10,13 @@ the output is exactly what the ``xacro`` tool prints.
 from __future__ import annotations
 
 import contextlib
+import importlib
+import importlib.util
 import io
 import os
 import re
+import sys
+import types
 import xml.dom.minicompat
 import xml.dom.minidom
 import xml.parsers.expat
@@ -21,9 +25,37 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import TYPE_CHECKING
 
-import xacro
-import xacro.substitution_args
 from lxml import etree
+
+
+class _ImportedOnUse(types.ModuleType):
+    """A module that stands in ``sys.modules`` for one not imported yet, and imports
+    it when a name of it is first used; names already bound to it go on working."""
+
+    def __getattr__(self, name: str):
+        real = sys.modules.get(self.__name__)
+        if real is self or real is None:
+            del sys.modules[self.__name__]
+            real = importlib.import_module(self.__name__)
+            self.__dict__.update(real.__dict__)
+        return getattr(real, name)
+
+
+def _import_on_use(name: str) -> None:
+    spec = importlib.util.find_spec(name) if name not in sys.modules else None
+    if spec is not None:
+        stand_in = _ImportedOnUse(name)
+        stand_in.__spec__ = spec  # what the import system reads of a module it finds: no import yet
+        sys.modules[name] = stand_in
+
+
+# xacro's argument resolution imports yaml at its start (a sixth of urdfcli's start
+# on a small xacro file) for `$(arg)` values of type yaml, which almost no model has;
+# xacro.load_yaml imports it when called.
+_import_on_use("yaml")
+
+import xacro  # noqa: E402  (after yaml's stand-in)
+import xacro.substitution_args  # noqa: E402
 
 from . import sandbox
 from .diagnostics import Call, Location

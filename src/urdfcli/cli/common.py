@@ -6,16 +6,18 @@ import os
 from collections.abc import Callable
 from enum import IntEnum
 from pathlib import Path
-from typing import Annotated
+from typing import TYPE_CHECKING, Annotated
 
 import typer
 
-from ..config import Config, ConfigError, for_input
 from ..escape import escape
 from ..load import InputError
-from ..loaded import Loaded
 from ..packages import PackageError
 from .streams import Stream
+
+if TYPE_CHECKING:
+    from ..config import Config
+    from ..loaded import Loaded
 
 
 class Exit(IntEnum):
@@ -117,6 +119,8 @@ def split_inputs(arguments: list[str]) -> tuple[list[str], dict[str, str]]:
 def configurations(explicit: Path | None = None, isolated: bool = False, overrides: dict | None = None) -> Callable[[str], Config]:
     """The configuration of each input (found once per folder: the files of a folder
     share it); a mistake in one exits 2."""
+    from ..config import ConfigError, for_input  # `expand` reads no configuration
+
     cache: dict[str, Config] = {}
 
     def config_for(path: str) -> Config:
