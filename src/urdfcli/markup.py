@@ -165,8 +165,8 @@ def unknown_markup(top: etree._Element, index: Callable[[etree._Element], int]) 
     stack = [(top, name)]
     while stack:
         element, tag = stack.pop()
-        at = index(element)
-        yield from unknown_attributes(element, at, tag)
+        if not KNOWN_ATTRIBUTES[tag].issuperset(element.keys()):  # most elements: decided here
+            yield from unknown_attributes(element, index(element), tag)
         children = KNOWN_CHILDREN.get(tag)
         if children is None:
             continue
@@ -178,9 +178,9 @@ def unknown_markup(top: etree._Element, index: Callable[[etree._Element], int]) 
                     inside.append((child, name))
             elif not _is_foreign(name):
                 if name in GAZEBO_TAGS or _gazebo_material(child):
-                    yield Unknown(index(child), tag, name, False, gazebo=True, holder=at, owner=owner)
+                    yield Unknown(index(child), tag, name, False, gazebo=True, holder=index(element), owner=owner)
                 else:
                     present = {tag_name(c) for c in element}
                     missing = {c for c in children if c in REPEATED or c not in present}
-                    yield Unknown(index(child), tag, name, False, _typo_of(name, missing), holder=at, owner=owner)
+                    yield Unknown(index(child), tag, name, False, _typo_of(name, missing), holder=index(element), owner=owner)
         stack.extend(reversed(inside))
