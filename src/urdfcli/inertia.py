@@ -87,7 +87,12 @@ def is_frame(link: Link) -> bool:
 # -- implied by geometry ---------------------------------------------------------------
 def implied(loaded: Loaded, link: Link, density: float | None = None) -> Implied:
     """The body the link's collision shapes (else its visual shapes) make, with the
-    declared mass spread by volume, or ``density`` times the volume when given."""
+    declared mass spread by volume, or ``density`` times the volume when given;
+    worked out once per link (several rules and the audit ask)."""
+    return loaded.remembered(("implied", link.name, density), lambda: _implied(loaded, link, density))
+
+
+def _implied(loaded: Loaded, link: Link, density: float | None) -> Implied:
     collisions = tuple(s for s in link.collisions if s.geometry is not None)
     kind, shapes = ("collision", collisions) if collisions else ("visual", tuple(s for s in link.visuals if s.geometry is not None))
     if not shapes:
