@@ -10,8 +10,7 @@ from __future__ import annotations
 import difflib
 from collections import defaultdict
 from collections.abc import Callable, Iterator
-from dataclasses import dataclass
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, NamedTuple
 
 from .diagnostics import Diagnostic
 from .document import Document
@@ -87,21 +86,20 @@ def walk_all(
 
 def has_loop(robot: Robot) -> bool:
     """Whether the joints form a directed loop (Kahn's algorithm, without networkx)."""
+    children = children_by_joint_name(robot)  # shared with the walks that follow
     waiting = dict.fromkeys(robot.links, 0)  # parent joints not yet visited, per link
-    children: dict[str, list[str]] = defaultdict(list)
-    for joint in robot.joints.values():
-        if joint.parent in waiting and joint.child in waiting:
+    for joints in children.values():
+        for joint in joints:
             waiting[joint.child] += 1
-            children[joint.parent].append(joint.child)
     ready = [link for link, count in waiting.items() if count == 0]
     visited = 0
     while ready:
         link = ready.pop()
         visited += 1
-        for child in children.get(link, ()):
-            waiting[child] -= 1
-            if waiting[child] == 0:
-                ready.append(child)
+        for joint in children.get(link, ()):
+            waiting[joint.child] -= 1
+            if waiting[joint.child] == 0:
+                ready.append(joint.child)
     return visited < len(waiting)
 
 
@@ -184,8 +182,7 @@ def depth_and_leaves(robot: Robot, root: str) -> tuple[int, list[str]]:
     return depth, leaves
 
 
-@dataclass(frozen=True)
-class RigidBody:
+class RigidBody(NamedTuple):
     """Links joined by fixed joints: one rigid body, as simulators and Pinocchio lump them.
 
     ``joint`` is the moving joint that carries the body (None for the root's body, or a
