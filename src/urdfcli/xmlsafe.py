@@ -42,7 +42,7 @@ def parse_bytes(data: bytes, keep_blank_text: bool = True) -> etree._Element:
 
     Without ``keep_blank_text`` the white space between elements is dropped: a fifth
     of the memory of a large model. xacro needs it, to lay out its output as xacro does."""
-    if not data.strip():
+    if not data or data.isspace():  # (strip() would copy a large document)
         raise XmlError("the document is empty", 1, 1)
     parser = etree.XMLParser(**_PARSER_OPTIONS, remove_blank_text=not keep_blank_text)
     try:
@@ -77,7 +77,7 @@ def elements(data: bytes) -> Iterator[etree._Element]:
     more than one top-level element is held at a time; blank text, comments and
     processing instructions are dropped. Raises XmlError as :func:`parse_bytes`
     would, when the problem is met."""
-    if not data.strip():
+    if not data or data.isspace():  # (strip() would copy a large document)
         raise XmlError("the document is empty", 1, 1)
     if b"<!DOCTYPE" in data or b"<!ENTITY" in data:
         parse_bytes(data)  # entity declarations are refused there, with their own message
