@@ -24,7 +24,7 @@ from .document import Document
 from .loaded import Loaded
 from .packages import PackageResolver
 from .rules import Rule, load_all, load_check
-from .xmlsafe import XmlError, parse_bytes
+from .xmlsafe import XmlError, declared_encoding, parse_bytes
 
 XACRO_NAMESPACES = {"http://www.ros.org/wiki/xacro", "http://ros.org/wiki/xacro", "http://wiki.ros.org/xacro"}
 STDIN = "-"
@@ -67,8 +67,6 @@ _SUBSTITUTION = "//@*[contains(., '${') or contains(., '$(')] | //text()[contain
 _HAS_XACRO_ELEMENT = etree.XPath(f"boolean({_XACRO_ELEMENT})")
 _USES_XACRO = etree.XPath(f"boolean({_XACRO_ELEMENT} | {_SUBSTITUTION})")
 _COMMENT = re.compile(rb"<!--.*?-->", re.DOTALL)
-_DECLARED_ENCODING = re.compile(rb"""\A(?:\xef\xbb\xbf)?\s*<\?xml[^>]*?\sencoding\s*=\s*["']([A-Za-z0-9._:-]{1,64})["']""")
-_XACRO_TAGS = tuple(f"{{{ns}}}*" for ns in sorted(XACRO_NAMESPACES))
 _XACRO_URI = re.compile(b"|".join(re.escape(ns.encode()) for ns in sorted(XACRO_NAMESPACES)))
 _XACRO_PREFIX_DECLARED = re.compile(rb"""xmlns:xacro\s*=\s*["'](?:""" + _XACRO_URI.pattern + rb""")["']""")
 
@@ -77,29 +75,36 @@ def is_xacro(data: bytes) -> bool:
     """Whether a document not named .xacro uses xacro: a xacro element (in xacro's
     namespace, or any element prefixed ``xacro:``), or ``${`` / ``$(`` in an attribute
     or in text outside comments. A namespace declaration alone is not use: xacro's
-    output would read the same, at many times the cost. The bytes are searched
-    first; the document is parsed only when they cannot tell. A document that is
-    not well-formed is not xacro: reading it says what is wrong."""
+    output would read the same, at many times the cost. A document that is not
+    well-formed is not xacro: reading it says what is wrong."""
+    return xacro_document(data) is not None
+
+
+def xacro_document(data: bytes) -> etree._Element | None:
+    """The parsed document when it uses xacro (see :func:`is_xacro`), else None. The
+    bytes are searched first; the document is parsed only when they cannot tell,
+    and the parse is the one xacro then expands."""
     try:
         if _ascii_compatible(data) and not _substitution_outside_comments(data):
-            if b"<xacro:" in data:
-                return bool(_HAS_XACRO_ELEMENT(parse_bytes(data)))  # prefixed xacro: bound to any namespace
             if b"xacro" not in data:
-                return False
-            if len(_XACRO_URI.findall(data)) == len(_XACRO_PREFIX_DECLARED.findall(data)):
-                return False  # each mention of xacro's namespace binds the prefix xacro, which no element uses
-            return next(parse_bytes(data).iter(_XACRO_TAGS), None) is not None  # xacro's namespace under another prefix
-        return bool(_USES_XACRO(parse_bytes(data)))
+                return None
+            if b"<xacro:" not in data and len(_XACRO_URI.findall(data)) == len(_XACRO_PREFIX_DECLARED.findall(data)):
+                return None  # each mention of xacro's namespace binds the prefix xacro, which no element uses
+            root = parse_bytes(data)
+            # prefixed xacro: (bound to any namespace), or xacro's namespace under another prefix
+            return root if _HAS_XACRO_ELEMENT(root) else None
+        root = parse_bytes(data)
+        return root if _USES_XACRO(root) else None
     except XmlError:
-        return False
+        return None
 
 
 def _ascii_compatible(data: bytes) -> bool:
     """Whether the bytes of markup are ASCII, so that they can be searched as bytes."""
-    if data[:2] in (b"\xff\xfe", b"\xfe\xff") or data[:4] in (b"\x00\x00\xfe\xff", b"\xff\xfe\x00\x00"):
-        return False
-    declared = _DECLARED_ENCODING.match(data)
-    return declared is None or declared.group(1).decode("ascii").lower().replace("-", "").replace("_", "") in _ASCII_COMPATIBLE
+    if positions.bom_encoding(data) not in (None, "utf-8-sig"):
+        return False  # UTF-16 or UTF-32
+    declared = declared_encoding(data)
+    return declared is None or declared.lower().replace("-", "").replace("_", "") in _ASCII_COMPATIBLE
 
 
 def _substitution_outside_comments(data: bytes) -> bool:
@@ -129,10 +134,11 @@ def load_document(
     if file is None:
         positions.register(shown, data)  # excerpts and columns, as for a file
     named_xacro = force_xacro or path.endswith(".xacro")
-    if not named_xacro and not is_xacro(data):
+    root = None if named_xacro else xacro_document(data)
+    if root is None and not named_xacro:
         return Document(path, data, file), []  # read as it streams: see model.read
     try:
-        root = parse_bytes(data)  # with the white space xacro lays out
+        root = root if root is not None else parse_bytes(data)  # with the white space xacro lays out
     except XmlError as error:
         return Document(path, None, file), [_error(error.code, error.message, Location(shown, error.line, error.column))]
     from . import expansion  # xacro and its dependencies, only for xacro inputs

@@ -22,13 +22,10 @@ class Loaded:
     robot: Robot | None = None
     diagnostics: list[Diagnostic] = field(default_factory=list)
     resolver: PackageResolver | None = None  # finds package:// files (meshes) with the run's -P options
-    _remembered: dict = field(default_factory=dict, repr=False, compare=False)
 
     def remembered(self, key, compute):
-        """``compute()``, once for this model: for a costly step several rules share."""
-        if key not in self._remembered:
-            self._remembered[key] = compute()
-        return self._remembered[key]
+        """``compute()``, once for this model (see :meth:`Robot.remembered`)."""
+        return self.robot.remembered(key, compute)
 
     @property
     def path(self) -> str:

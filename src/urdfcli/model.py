@@ -10,15 +10,17 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 from itertools import count
-from typing import NamedTuple
+from typing import TYPE_CHECKING, NamedTuple
 
 from lxml import etree
 
-from . import markup
 from .diagnostics import Diagnostic
 from .document import Document, tag_name
-from .xmlsafe import elements
 from .numbers import NumberError, VectorLengthError, format_number, parse_double, parse_vector
+from .xmlsafe import elements
+
+if TYPE_CHECKING:
+    from .markup import Unknown
 
 Vec3 = tuple[float, float, float]
 JOINT_TYPES = ("fixed", "revolute", "continuous", "prismatic", "floating", "planar")
@@ -131,13 +133,13 @@ class Robot:
     joints: dict[str, Joint] = field(default_factory=dict)
     materials: dict[str, Material] = field(default_factory=dict)
     resources: list[Resource] = field(default_factory=list)
-    unknown: list[markup.Unknown] = field(default_factory=list)  # read only when asked for
+    unknown: list[Unknown] = field(default_factory=list)  # read only when asked for
     extensions: list[etree._Element] = field(default_factory=list)  # top-level blocks of other formats
     _placed: dict[etree._Element, int] = field(default_factory=dict, repr=False)
     derived: dict = field(default_factory=dict, repr=False, compare=False)  # worked out from the rest, once
 
-    def remembered(self, key: str, compute):
-        """``compute()``, once for this robot: for structures several steps share."""
+    def remembered(self, key, compute):
+        """``compute()``, once for this robot: for a costly step several rules share."""
         if key not in self.derived:
             self.derived[key] = compute()
         return self.derived[key]
@@ -453,6 +455,8 @@ class Reader:
         self.version(root)
         robot = Robot(name, 0, resources=self.resources)
         if self.vocabulary:
+            from . import markup  # the vocabulary: only lint's rules read what it finds
+
             robot.unknown.extend(markup.unknown_attributes(root, 0))
         numbers = count(1)
         tops = self.document.tops

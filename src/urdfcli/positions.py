@@ -43,9 +43,14 @@ def _entity(match: re.Match) -> str:
     return _ENTITIES[name]
 
 
+def bom_encoding(data: bytes) -> str | None:
+    """The encoding a document's byte-order mark names, if it starts with one."""
+    return next((name for bom, name in _BOMS if data.startswith(bom)), None)
+
+
 def decode(data: bytes) -> str:
     """The text of an XML document: its byte-order mark, else its declared encoding, else UTF-8."""
-    encoding = next((name for bom, name in _BOMS if data.startswith(bom)), None)
+    encoding = bom_encoding(data)
     if encoding is None:
         declared = _DECLARED.match(data[:200])
         encoding = declared.group(1).decode("ascii") if declared else "utf-8"
@@ -117,18 +122,11 @@ class Source:
         """For the elements ``first`` to ``end`` (excluded; None: to the end of the text),
         which must hold no element of the text before ``first``, the index of each
         one's parent counted from ``first`` (-1 for ``first`` itself)."""
-        begin = self.start(first)
         stop = self.start(end) if end is not None else None
-        holes = self._holes
-        hole_ends = [e for _, e in holes]
         found: list[int] = []
         open_: list[int] = []
-        for match in _TAG.finditer(self.text, begin, len(self.text) if stop is None else stop):
-            start = match.start()
-            i = bisect.bisect_right(hole_ends, start)
-            if i < len(holes) and holes[i][0] <= start:
-                continue
-            if self.text[start + 1] == "/":
+        for match in self._tags(self.start(first), len(self.text) if stop is None else stop):
+            if self.text[match.start() + 1] == "/":
                 if open_:
                     open_.pop()
                 continue
@@ -136,6 +134,15 @@ class Source:
             if not match.group(1):
                 open_.append(len(found) - 1)
         return found
+
+    def _tags(self, begin: int = 0, end: int | None = None):
+        """The start and end tags between two offsets, outside comments and the like."""
+        holes = self._holes
+        hole_ends = [e for _, e in holes]
+        for match in _TAG.finditer(self.text, begin, len(self.text) if end is None else end):
+            i = bisect.bisect_right(hole_ends, match.start())
+            if i == len(holes) or match.start() < holes[i][0]:
+                yield match
 
     def tag(self, index: int) -> str | None:
         """The name written in the start tag of element ``index``."""
@@ -166,15 +173,10 @@ class Source:
         """Per element in document order: offsets of its ``<``, of the end of its start
         tag, and of the end of the element (after its end tag). Empty when the text is
         not the well-formed document it should be."""
-        holes = self._holes
-        ends = [end for _, end in holes]
         found: list[list[int]] = []
         open_: list[int] = []
-        for match in _TAG.finditer(self.text):
+        for match in self._tags():
             start = match.start()
-            i = bisect.bisect_right(ends, start)
-            if i < len(holes) and holes[i][0] <= start:
-                continue
             if self.text[start + 1] == "/":
                 if not open_:
                     return []

@@ -22,6 +22,7 @@ computed, taken to include anything. Only the models found are expanded.
 
 from __future__ import annotations
 
+import functools
 import os
 import re
 from collections.abc import Callable, Iterable
@@ -428,8 +429,8 @@ def assemble(entries: list[Entry], outcome: Callable[[Target], object], includes
                     unreadable.append(result)
                     continue
                 own = Path(entry.path).resolve() if entry.path != STDIN else None
-                resolved: dict[str, bool] = {}  # per file named: is it this input?
-                result.diagnostics = [d for d in result.diagnostics if _fresh(d, own, shown_keys, resolved)]
+                is_own = functools.cache(lambda file, own=own: own is not None and _same(file, own))  # a path resolved once
+                result.diagnostics = [d for d in result.diagnostics if _fresh(d, is_own(d.file), shown_keys)]
                 if target.arguments:  # shown with the model's name and in JSON
                     result.label, result.arguments = target.label, dict(target.arguments)
                 results.append(result)
@@ -438,16 +439,10 @@ def assemble(entries: list[Entry], outcome: Callable[[Target], object], includes
     return results, unreadable
 
 
-def _fresh(diagnostic: Diagnostic, own: Path | None, shown_keys: set, resolved: dict[str, bool] | None = None) -> bool:
+def _fresh(diagnostic: Diagnostic, in_own_file: bool, shown_keys: set) -> bool:
+    """Whether to show a diagnostic: always in its input's own file, elsewhere the first time."""
     key = _key(diagnostic)
-    if own is not None:
-        resolved = {} if resolved is None else resolved
-        if diagnostic.file not in resolved:
-            resolved[diagnostic.file] = _same(diagnostic.file, own)
-        if resolved[diagnostic.file]:
-            shown_keys.add(key)
-            return True
-    if key in shown_keys:
+    if not in_own_file and key in shown_keys:
         return False
     shown_keys.add(key)
     return True
@@ -499,7 +494,7 @@ def _library_result(entry: Entry, outcome, includes_of, shown_keys: set, unreada
         place = _key(diagnostic)[:4]
         if place not in places:
             places.add(place)
-            if _fresh(diagnostic, None, shown_keys):
+            if _fresh(diagnostic, False, shown_keys):
                 result.diagnostics.append(diagnostic)
     return result
 

@@ -131,12 +131,17 @@ def _finished(root: etree._Element, last: etree._Element | None) -> Iterator[etr
             return
 
 
+def declared_encoding(data: bytes) -> str | None:
+    """The encoding the XML declaration names, if it names one."""
+    found = _DECLARED_ENCODING.match(data)
+    return found.group(1).decode("ascii") if found else None
+
+
 def recoded(data: bytes) -> bytes:
     """``data`` as UTF-8, read in the encoding its XML declaration names (a name
     libxml2 does not know); lines stay where they were. Raises XmlError when
     Python does not know the encoding either, or the bytes are not in it."""
-    found = _DECLARED_ENCODING.match(data)
-    name = found.group(1).decode("ascii") if found else "?"
+    name = declared_encoding(data) or "?"
     try:
         codec = codecs.lookup(name)
     except LookupError:
