@@ -80,7 +80,24 @@ def test_corpus_diagnostics_are_the_same_with_or_without_xacro(path, monkeypatch
         (b'<robot name="r"><!-- ${x} --><link name="${x}"/></robot>', True),
         (b'<robot name="r" xmlns:xacro="http://wiki.ros.org/xacro"><!-- http://wiki.ros.org/xacro --><link name="a"/></robot>', False),
         (b'<robot name="r"><macro xmlns="http://www.ros.org/wiki/xacro" name="m"/></robot>', True),  # a default namespace
+        (b'<robot name="r"><!-- <xacro:property name="n" value="1"/> --><link name="a"/></robot>', False),
+        (b'<robot name="r" xmlns:xacro="http://wiki.ros.org/xacro"><![CDATA[ <!-- ]]><xacro:property name="n" value="1"/><!-- --></robot>', True),
     ],
 )
 def test_xacro_use_is_told_apart_from_comments_and_declarations(data, uses):
     assert is_xacro(data) is uses
+
+
+@pytest.mark.parametrize(
+    "data",
+    [
+        b'<robot name="r" xmlns:xacro="http://wiki.ros.org/xacro"><!-- made from robot.urdf.xacro --><link name="a"/></robot>',
+        b'<robot name="r"><!-- <xacro:macro name="m"/> ${x} http://www.ros.org/wiki/xacro --><link name="a"/></robot>',
+    ],
+)
+def test_xacro_only_in_comments_is_told_without_parsing(data, monkeypatch):
+    def refuse(data):
+        raise AssertionError("parsed")
+
+    monkeypatch.setattr(load_module, "parse_bytes", refuse)
+    assert not is_xacro(data)

@@ -85,14 +85,16 @@ def xacro_document(data: bytes) -> etree._Element | None:
     bytes are searched first; the document is parsed only when they cannot tell,
     and the parse is the one xacro then expands."""
     try:
-        if _ascii_compatible(data) and not _substitution_outside_comments(data):
-            if b"xacro" not in data:
+        if _ascii_compatible(data) and b"<![CDATA[" not in data:  # comments can be told apart by bytes
+            if b"xacro" not in data and b"${" not in data and b"$(" not in data:
                 return None
-            if b"<xacro:" not in data and len(_XACRO_URI.findall(data)) == len(_XACRO_PREFIX_DECLARED.findall(data)):
-                return None  # each mention of xacro's namespace binds the prefix xacro, which no element uses
-            root = parse_bytes(data)
-            # prefixed xacro: (bound to any namespace), or xacro's namespace under another prefix
-            return root if _HAS_XACRO_ELEMENT(root) else None
+            bare = _COMMENT.sub(b"", data) if b"<!--" in data else data  # generated URDFs keep their xacro in comments
+            if b"${" not in bare and b"$(" not in bare:
+                if b"<xacro:" not in bare and len(_XACRO_URI.findall(bare)) == len(_XACRO_PREFIX_DECLARED.findall(bare)):
+                    return None  # each mention of xacro's namespace binds the prefix xacro, which no element uses
+                root = parse_bytes(data)
+                # prefixed xacro: (bound to any namespace), or xacro's namespace under another prefix
+                return root if _HAS_XACRO_ELEMENT(root) else None
         root = parse_bytes(data)
         return root if _USES_XACRO(root) else None
     except XmlError:
@@ -105,15 +107,6 @@ def _ascii_compatible(data: bytes) -> bool:
         return False  # UTF-16 or UTF-32
     declared = declared_encoding(data)
     return declared is None or declared.lower().replace("-", "").replace("_", "") in _ASCII_COMPATIBLE
-
-
-def _substitution_outside_comments(data: bytes) -> bool:
-    """Whether ``${`` or ``$(`` may be read by xacro: outside comments (generated URDFs
-    often keep the xacro they came from in comments)."""
-    if b"${" not in data and b"$(" not in data:
-        return False
-    bare = _COMMENT.sub(b"", data)
-    return b"${" in bare or b"$(" in bare
 
 
 def _error(code: str, message: str, location: Location, hint: str | None = None) -> Diagnostic:
