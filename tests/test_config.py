@@ -60,6 +60,27 @@ def test_nearest_pyproject_with_a_urdfcli_table_wins(tmp_path):
     assert "D002" not in codes(model) and "S001" not in codes(model)
 
 
+def test_a_run_looks_at_each_folder_once(tmp_path, monkeypatch):
+    """Inputs of one repository share their ancestors: a run asks each folder once
+    for its configuration, and outside a run every question is asked anew."""
+    from urdfcli import config
+    from urdfcli.folders import one_run
+
+    write(tmp_path, "pyproject.toml", '[tool.urdfcli]\nextend-select = ["S"]\n')
+    models = [write(tmp_path, f"robots/{name}/urdf/robot.urdf", MODEL) for name in ("a", "b")]
+    asked = []
+    own_config = config._own_config
+    monkeypatch.setattr(config, "_own_config", lambda folder: asked.append(folder) or own_config(folder))
+    with one_run():
+        found = {config.find(model.parent) for model in models}
+    assert found == {tmp_path / "pyproject.toml"}
+    assert len(asked) == len(set(asked)) == 6  # a/urdf, a, robots, the root; then b/urdf and b only
+    asked.clear()
+    config.find(models[0].parent)
+    config.find(models[0].parent)
+    assert len(asked) == 2 * 4
+
+
 def test_select_ignore_and_prefix_specificity(tmp_path):
     model = write(tmp_path, "robot.urdf", MODEL)
     root = tmp_path

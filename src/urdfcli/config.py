@@ -38,6 +38,7 @@ from pathlib import Path
 from typing import Any
 
 from .diagnostics import Severity
+from .folders import remembered
 from .rules import Rule, UnknownRule, load_all, lookup
 
 CONFIG_NAMES = ("urdfcli.toml", ".urdfcli.toml")
@@ -310,13 +311,23 @@ def read(path: Path) -> Config:
 
 def find(start: Path) -> Path | None:
     """The nearest configuration file at or above a folder."""
-    for folder in (start, *start.parents):
-        for name in CONFIG_NAMES:
-            if (folder / name).is_file():
-                return folder / name
-        pyproject = folder / "pyproject.toml"
-        if pyproject.is_file() and _table(pyproject) is not None:
-            return pyproject
+
+    def look() -> Path | None:
+        own = _own_config(start)
+        if own is None and start.parent != start:
+            return find(start.parent)
+        return own
+
+    return remembered(("config", start), look)
+
+
+def _own_config(folder: Path) -> Path | None:
+    for name in CONFIG_NAMES:
+        if (folder / name).is_file():
+            return folder / name
+    pyproject = folder / "pyproject.toml"
+    if pyproject.is_file() and _table(pyproject) is not None:
+        return pyproject
     return None
 
 

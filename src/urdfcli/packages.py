@@ -26,6 +26,8 @@ from urllib.parse import unquote, urlparse
 
 from lxml import etree
 
+from .folders import remembered
+
 SKIP_DIRS = {"build", "install", "log", "devel", "node_modules", "__pycache__", "site-packages"}
 MAX_SCAN_DEPTH = 8
 MAX_SCAN_DIRS = 20_000
@@ -106,16 +108,24 @@ def _walk(root: Path) -> Iterator[tuple[str, Path]]:
 
 
 def enclosing_package(start: Path) -> Path | None:
-    for folder in [start, *start.parents]:
-        if (folder / "package.xml").is_file():
-            return folder
-    return None
+    """The nearest folder at or above ``start`` that holds a package.xml."""
+
+    def look() -> Path | None:
+        if (start / "package.xml").is_file():
+            return start
+        return enclosing_package(start.parent) if start.parent != start else None
+
+    return remembered(("package", start), look)
 
 
 def local_roots(package_dir: Path) -> list[Path]:
     """The folders whose packages are siblings of package_dir, nearest first: the
     repository root or workspace ``src`` (whichever comes first), then a workspace
     ``src`` above that repository; else the package's parent folder."""
+    return list(remembered(("roots", package_dir), lambda: _local_roots(package_dir)))
+
+
+def _local_roots(package_dir: Path) -> list[Path]:
     roots: list[Path] = []
     for folder in package_dir.parents:
         if folder.name == "src":

@@ -12,6 +12,7 @@ from typing import Annotated
 import typer
 
 from .. import __version__
+from ..folders import one_run
 
 # Each subcommand: the module defining it and its function. A run imports only the
 # module of the command it runs (help lists them all), so no command pays for the others.
@@ -103,7 +104,8 @@ def main() -> None:
 
         rich_utils.COLOR_SYSTEM = None
     try:
-        code = _app_for(sys.argv[1:])(prog_name="urdfcli", standalone_mode=False)
+        with one_run():
+            code = _app_for(sys.argv[1:])(prog_name="urdfcli", standalone_mode=False)
     except NoArgsIsHelpError as error:  # the help is printed already (rich prints it, the message is empty)
         if error.format_message().strip():
             sys.stderr.write(error.format_message().rstrip("\n") + "\n")
