@@ -30,7 +30,6 @@ the working directory; a glob without a ``/`` also matches a file's name alone.
 
 from __future__ import annotations
 
-import difflib
 import tomllib
 from dataclasses import dataclass, field, replace
 from fnmatch import fnmatchcase
@@ -40,6 +39,7 @@ from typing import Any
 from .diagnostics import Severity
 from .folders import remembered
 from .rules import Rule, UnknownRule, load_all, lookup
+from .suggestions import close_matches
 
 CONFIG_NAMES = ("urdfcli.toml", ".urdfcli.toml")
 KEYS = ("select", "ignore", "extend-select", "per-file-ignores", "severity", "options", "package-paths", "xacro-args", "models")
@@ -174,7 +174,7 @@ def _selectors(values: Any, where: str) -> tuple[str, ...]:
     for value in values:
         found = selector(value)
         if found is None:
-            close = difflib.get_close_matches(value.strip().upper(), codes, n=1)
+            close = close_matches(value.strip().upper(), codes)
             raise ConfigError(f"{where}: unknown rule code or prefix '{value}'" + (f" (did you mean '{close[0]}'?)" if close else "") + "; `urdfcli rules` lists them")
         out.append(found)
     return tuple(out)
@@ -185,7 +185,7 @@ def parse(table: dict[str, Any], source: str, root: Path) -> Config:
     """A Config from the urdfcli table of a TOML file; every mistake is a ConfigError."""
     for key in table:
         if key not in KEYS:
-            close = difflib.get_close_matches(key, KEYS, n=1)
+            close = close_matches(key, KEYS)
             raise ConfigError(f"{source}: unknown key '{key}'" + (f" (did you mean '{close[0]}'?)" if close else "") + f"; the keys are {', '.join(KEYS)}")
 
     def where(key: str) -> str:

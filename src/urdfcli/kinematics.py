@@ -7,7 +7,6 @@ so a 20,000-link chain is as easy as a short one.
 
 from __future__ import annotations
 
-import difflib
 from collections import defaultdict
 from collections.abc import Callable, Iterator
 from typing import TYPE_CHECKING, NamedTuple
@@ -15,6 +14,7 @@ from typing import TYPE_CHECKING, NamedTuple
 from .diagnostics import Diagnostic
 from .document import Document
 from .model import Joint, Robot
+from .suggestions import close_matches
 
 if TYPE_CHECKING:
     import networkx as nx
@@ -108,7 +108,7 @@ def link_hint(missing: str, robot: Robot, other_end: str | None = None) -> str:
     never the joint's other end (a joint does not join a link to itself)."""
     # difflib is quadratic in names: past a few thousand links the plain hint keeps a broken model fast
     candidates = [name for name in robot.links if name != other_end] if len(robot.links) <= 5000 else []
-    close = difflib.get_close_matches(missing, candidates, n=3, cutoff=0.6)
+    close = close_matches(missing, candidates, n=3)
     if close:
         return f"did you mean {' or '.join(repr(name) for name in close)}?"
     return f'every link a joint names must be defined: add <link name="{missing}"/> or fix the name'

@@ -2,7 +2,6 @@
 
 from __future__ import annotations
 
-import difflib
 import sys
 from pathlib import Path
 from typing import Annotated
@@ -14,6 +13,7 @@ from ..formatters.text import plain, print_diagnostic
 from ..formatters.tree import cut, summarise, text_lines, tree_json, tree_rows
 from ..kinematics import roots
 from ..loaded import Loaded
+from ..suggestions import close_matches
 from .common import ConfigOption, Exit, FileArgument, IsolatedOption, PackagePathOption, configurations, fail, load_one, split_inputs, stderr, stdout
 
 
@@ -95,7 +95,7 @@ def start_link(loaded: Loaded, from_link: str | None) -> str | None:
         return None
     if from_link is not None:
         if from_link not in robot.links:
-            close = difflib.get_close_matches(from_link, list(robot.links), n=3)
+            close = close_matches(from_link, robot.links, n=3)
             suggestion = f"; did you mean {' or '.join(repr(c) for c in close)}?" if close else ""
             raise fail(f"no link named {from_link!r} in robot {robot.name!r}{suggestion}")
         return from_link

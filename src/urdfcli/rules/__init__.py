@@ -12,7 +12,6 @@ Every rule's documentation has the same four sections (see :data:`SECTIONS`);
 
 from __future__ import annotations
 
-import difflib
 import functools
 import importlib
 import inspect
@@ -22,6 +21,7 @@ from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
 
 from ..severity import Severity
+from ..suggestions import close_matches
 
 if TYPE_CHECKING:
     from ..loaded import Loaded
@@ -167,7 +167,7 @@ class UnknownRule(KeyError):
 
 
 def _did_you_mean(word: str, known) -> str:
-    close = difflib.get_close_matches(word, list(known), n=1, cutoff=0.6)
+    close = close_matches(word, known)
     return f" (did you mean '{close[0]}'?)" if close else ""
 
 

@@ -2,10 +2,10 @@
 
 from __future__ import annotations
 
-import difflib
 import re
 
 from ..markup import SCHEMA
+from ..suggestions import close_matches
 from . import INFO, WARNING, check
 
 # Gazebo plugin parameters that name a joint or a link (ROS 1 and ROS 2 spellings).
@@ -19,7 +19,7 @@ WORLD_FRAMES = {"world", "map", "odom", ""}
 
 
 def _suggestion(word: str, known) -> str | None:
-    close = difflib.get_close_matches(word, sorted(known), n=1, cutoff=0.6)
+    close = close_matches(word, sorted(known))
     return close[0] if close else None
 
 

@@ -1,0 +1,37 @@
+"""The "did you mean" hints: the names closest to a misspelt one, as :mod:`difflib` ranks them."""
+
+from __future__ import annotations
+
+import heapq
+from collections.abc import Iterable
+from difflib import SequenceMatcher
+
+
+def close_matches(word: str, candidates: Iterable[str], n: int = 1, cutoff: float = 0.6) -> list[str]:
+    """``difflib.get_close_matches(word, candidates, n, cutoff)``: the same list, found
+    sooner among many names. difflib scores every candidate that its two cheap
+    upper bounds let through; here candidates are scored in the order of the
+    tighter bound, and the scoring stops when that bound falls below the n-th best
+    score (a robot's names share most of their letters, so many pass the bounds)."""
+    matcher = SequenceMatcher()
+    matcher.set_seq2(word)
+    bounded = []
+    for candidate in candidates:
+        matcher.set_seq1(candidate)
+        if matcher.real_quick_ratio() >= cutoff:
+            bound = matcher.quick_ratio()
+            if bound >= cutoff:
+                bounded.append((bound, candidate))
+    bounded.sort(key=lambda pair: pair[0], reverse=True)
+    best: list[tuple[float, str]] = []  # a heap of the n best (score, name) so far
+    for bound, candidate in bounded:
+        if len(best) == n and bound < best[0][0]:
+            break  # no candidate left can score above the n-th best (an equal score may still win on the name)
+        matcher.set_seq1(candidate)
+        score = matcher.ratio()
+        if score >= cutoff:
+            if len(best) < n:
+                heapq.heappush(best, (score, candidate))
+            elif (score, candidate) > best[0]:
+                heapq.heapreplace(best, (score, candidate))
+    return [candidate for _, candidate in sorted(best, reverse=True)]
