@@ -91,6 +91,8 @@ GAZEBO_TAGS = {
 # What each element may carry: URDF's own names and the documented extensions', computed once.
 KNOWN_ATTRIBUTES = {tag: frozenset(attributes | set(EXTENSIONS.get(tag, ({}, {}))[0])) for tag, (attributes, _) in SCHEMA.items()}
 KNOWN_CHILDREN = {tag: frozenset(children | set(EXTENSIONS.get(tag, ({}, {}))[1])) for tag, (_, children) in SCHEMA.items() if children is not None}
+# The children read as URDF (walked into): those of the schema, other formats' blocks aside.
+WALKED = {tag: frozenset(c for c in children if c in SCHEMA and c not in OPAQUE) for tag, children in KNOWN_CHILDREN.items()}
 
 
 def _edits(a: str, b: str) -> int:
@@ -170,13 +172,15 @@ def unknown_markup(top: etree._Element, index: Callable[[etree._Element], int]) 
         children = KNOWN_CHILDREN.get(tag)
         if children is None:
             continue
+        walked = WALKED[tag]
         inside = []
         for child in element:
-            name = tag_name(child)
-            if name in children:
-                if name in SCHEMA and name not in OPAQUE:
-                    inside.append((child, name))
-            elif not _is_foreign(name):
+            name = child.tag
+            if "{" in name:
+                name = tag_name(child)
+            if name in walked:
+                inside.append((child, name))
+            elif name not in children and not _is_foreign(name):
                 if name in GAZEBO_TAGS or _gazebo_material(child):
                     yield Unknown(index(child), tag, name, False, gazebo=True, holder=index(element), owner=owner)
                 else:

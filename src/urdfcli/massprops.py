@@ -22,7 +22,7 @@ rotating the axes of any body whose moments differ by more than 10 % of the
 largest moves it by more. 0.1 separates the two.
 """
 def matrix(inertia: dict[str, float]) -> Matrix:
-    xx, xy, xz, yy, yz, zz = (inertia[k] for k in KEYS)
+    xx, xy, xz, yy, yz, zz = inertia["ixx"], inertia["ixy"], inertia["ixz"], inertia["iyy"], inertia["iyz"], inertia["izz"]
     return ((xx, xy, xz), (xy, yy, yz), (xz, yz, zz))
 
 
@@ -148,6 +148,7 @@ def diagonal(x: float, y: float, z: float) -> Matrix:
 
 
 # -- frames ----------------------------------------------------------------------
+@functools.lru_cache(maxsize=4096)  # a model repeats a few orientations
 def rotation(rpy: Vector) -> Matrix:
     """URDF fixed-axis roll-pitch-yaw: R = Rz(yaw) Ry(pitch) Rx(roll)."""
     r, p, y = rpy
@@ -159,20 +160,28 @@ def rotation(rpy: Vector) -> Matrix:
     )
 
 
+# Written out, not looped: these are the inner loops of frame composition and of the inertia rules.
 def multiply(a: Matrix, b: Matrix) -> Matrix:
-    """a b, written out: this is the inner loop of every frame composition."""
+    """a b."""
+    (a00, a01, a02), (a10, a11, a12), (a20, a21, a22) = a
     (b00, b01, b02), (b10, b11, b12), (b20, b21, b22) = b
-    return tuple(
-        (r0 * b00 + r1 * b10 + r2 * b20, r0 * b01 + r1 * b11 + r2 * b21, r0 * b02 + r1 * b12 + r2 * b22) for r0, r1, r2 in a
-    )  # type: ignore[return-value]
+    return (
+        (a00 * b00 + a01 * b10 + a02 * b20, a00 * b01 + a01 * b11 + a02 * b21, a00 * b02 + a01 * b12 + a02 * b22),
+        (a10 * b00 + a11 * b10 + a12 * b20, a10 * b01 + a11 * b11 + a12 * b21, a10 * b02 + a11 * b12 + a12 * b22),
+        (a20 * b00 + a21 * b10 + a22 * b20, a20 * b01 + a21 * b11 + a22 * b21, a20 * b02 + a21 * b12 + a22 * b22),
+    )
 
 
 def transpose(a: Matrix) -> Matrix:
-    return tuple(tuple(a[j][i] for j in range(3)) for i in range(3))  # type: ignore[return-value]
+    (a00, a01, a02), (a10, a11, a12), (a20, a21, a22) = a
+    return ((a00, a10, a20), (a01, a11, a21), (a02, a12, a22))
 
 
 def apply(a: Matrix, v: Vector) -> Vector:
-    return tuple(sum(a[i][k] * v[k] for k in range(3)) for i in range(3))  # type: ignore[return-value]
+    x, y, z = v
+    (a00, a01, a02), (a10, a11, a12), (a20, a21, a22) = a
+    # from 0.0, as sum() counts: a sum of negative zeros is +0.0 either way
+    return (0.0 + a00 * x + a01 * y + a02 * z, 0.0 + a10 * x + a11 * y + a12 * z, 0.0 + a20 * x + a21 * y + a22 * z)
 
 
 def rotate(tensor: Matrix, r: Matrix) -> Matrix:

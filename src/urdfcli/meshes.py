@@ -11,7 +11,7 @@ import contextlib
 import functools
 import logging
 import warnings
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from pathlib import Path
 
 from .loaded import Loaded
@@ -36,6 +36,7 @@ class MeshFiles:
 
     resolver: PackageResolver
     base: Path | None
+    _found: dict[str, tuple[str | None, str]] = field(default_factory=dict, compare=False, repr=False)  # each URI looked up once
 
     @classmethod
     def of(cls, loaded: Loaded) -> MeshFiles:
@@ -44,12 +45,21 @@ class MeshFiles:
         )
 
     def __call__(self, fname: str) -> str:
+        if fname not in self._found:
+            self._found[fname] = self._look_up(fname)
+        path, why = self._found[fname]
+        if path is None:
+            raise GeometryUnknown(why)
+        return path
+
+    def _look_up(self, fname: str) -> tuple[str | None, str]:
+        """(the file, "") or (None, why not)."""
         path = self.resolver.resolve_uri(fname, self.base)
         if path is None:
-            raise GeometryUnknown(f"mesh {fname} cannot be resolved")
+            return None, f"mesh {fname} cannot be resolved"
         if not path.is_file():
-            raise GeometryUnknown(f"mesh {fname} not found ({path})")
-        return str(path)
+            return None, f"mesh {fname} not found ({path})"
+        return str(path), ""
 
 
 def mesh_properties(filename: str, scale: Vector, files: MeshFiles) -> tuple[float, Vector, Matrix, tuple[Vector, Vector]]:
