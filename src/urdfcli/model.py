@@ -349,11 +349,18 @@ class Reader:
         if name is None:
             self.report("N001", "<link> has no 'name' attribute", element)
             name = ""
-        inertial_element = next(element.iterchildren("inertial"), None)
-        inertial = self.inertial(inertial_element) if inertial_element is not None else None
-        visuals = tuple([self.shape(v, visual=True) for v in element.iterchildren("visual")])
-        collisions = tuple([self.shape(c, visual=False) for c in element.iterchildren("collision")])
-        return Link(name, self._index[element], inertial, visuals, collisions)
+        inertial = None
+        visuals: list[Shape] = []
+        collisions: list[Shape] = []
+        for child in element:  # one pass, in the order written
+            tag = child.tag
+            if tag == "visual":
+                visuals.append(self.shape(child, visual=True))
+            elif tag == "collision":
+                collisions.append(self.shape(child, visual=False))
+            elif tag == "inertial" and inertial is None:  # the first, as urdfdom reads it
+                inertial = self.inertial(child)
+        return Link(name, self._index[element], inertial, tuple(visuals), tuple(collisions))
 
     def joint_limit(self, joint_name: str, element: etree._Element) -> Limit:
         key = (element.get("lower"), element.get("upper"), element.get("effort"), element.get("velocity"))
