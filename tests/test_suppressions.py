@@ -42,6 +42,15 @@ def test_a_comment_above_an_element_silences_what_points_inside_it(tmp_path):
         assert codes(tmp_path, SENSOR.format(comment=comment)) == [], comment
 
 
+def test_a_comment_in_a_utf16_file_silences_too(tmp_path):
+    """The comments are looked for in the text, whatever the bytes: a file in UTF-16
+    cannot be ruled out by searching its bytes for the word urdfcli."""
+    path = tmp_path / "robot.urdf"
+    text = '<?xml version="1.0" encoding="UTF-16"?>\n' + SENSOR.format(comment="<!-- urdfcli: noqa: I006 -->")
+    path.write_bytes(text.encode("utf-16"))
+    assert [d.code for d in lint_file(str(path), Config(select=("I006", "U"))).diagnostics] == []
+
+
 def test_the_rule_name_is_the_registered_one():
     from urdfcli.rules import load_all
 

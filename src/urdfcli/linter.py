@@ -113,7 +113,7 @@ def configured(
     files = {loaded.document.shown, *loaded.document.includes}
     files |= {place.file for d in selected for place in (d.location, *d.location.trace)}
     sources = [] if unreadable else sorted(files)  # nor silenced by a comment
-    found = [s for file in sources if (text := positions.text_of(file)) is not None for s in suppressions.parse(file, text)]
+    found = [s for file in sources if (text := positions.text_of(file, containing="urdfcli")) is not None for s in suppressions.parse(file, text)]
     kept = suppressions.apply(selected, found, lambda code: ran(code) and enabled(code, path))
     kept = [d for d in kept if d.code not in ("U001", "U002") or enabled(d.code, d.file)]
     kept = [_with_severity(d, config) for d in kept]

@@ -24,7 +24,7 @@ from .document import Document
 from .loaded import Loaded
 from .packages import PackageResolver
 from .rules import Rule, load_all, load_check
-from .xmlsafe import XmlError, declared_encoding, parse_bytes
+from .xmlsafe import XmlError, parse_bytes
 
 XACRO_NAMESPACES = {"http://www.ros.org/wiki/xacro", "http://ros.org/wiki/xacro", "http://wiki.ros.org/xacro"}
 STDIN = "-"
@@ -60,7 +60,6 @@ def read_input(path: str) -> bytes:
         raise InputError(f"{path}: cannot read: {error.strerror}") from None
 
 
-_ASCII_COMPATIBLE = ("utf8", "ascii", "usascii", "iso88591", "latin1")
 _XACRO_ELEMENT = "//*[" + " or ".join(f"namespace-uri() = '{ns}'" for ns in sorted(XACRO_NAMESPACES)) + " or (namespace-uri() != '' and starts-with(name(), 'xacro:'))]"
 # ${...} and $(...) where xacro evaluates them: attribute values and text (comments are not text here).
 _SUBSTITUTION = "//@*[contains(., '${') or contains(., '$(')] | //text()[contains(., '${') or contains(., '$(')]"
@@ -85,7 +84,7 @@ def xacro_document(data: bytes) -> etree._Element | None:
     bytes are searched first; the document is parsed only when they cannot tell,
     and the parse is the one xacro then expands."""
     try:
-        if _ascii_compatible(data) and b"<![CDATA[" not in data:  # comments can be told apart by bytes
+        if positions.ascii_compatible(data) and b"<![CDATA[" not in data:  # comments can be told apart by bytes
             if b"xacro" not in data and b"${" not in data and b"$(" not in data:
                 return None
             bare = _COMMENT.sub(b"", data) if b"<!--" in data else data  # generated URDFs keep their xacro in comments
@@ -99,14 +98,6 @@ def xacro_document(data: bytes) -> etree._Element | None:
         return root if _USES_XACRO(root) else None
     except XmlError:
         return None
-
-
-def _ascii_compatible(data: bytes) -> bool:
-    """Whether the bytes of markup are ASCII, so that they can be searched as bytes."""
-    if positions.bom_encoding(data) not in (None, "utf-8-sig"):
-        return False  # UTF-16 or UTF-32
-    declared = declared_encoding(data)
-    return declared is None or declared.lower().replace("-", "").replace("_", "") in _ASCII_COMPATIBLE
 
 
 def _error(code: str, message: str, location: Location, hint: str | None = None) -> Diagnostic:

@@ -31,7 +31,8 @@ _NAME = re.compile(r"<[^\s/>]+")
 _ENTITY = re.compile(r"&(#x[0-9a-fA-F]+|#[0-9]+|lt|gt|amp|quot|apos);")
 _ENTITIES = {"lt": "<", "gt": ">", "amp": "&", "quot": '"', "apos": "'"}
 _ATTRIBUTE = re.compile(r"""\s+([^\s=/>]+)\s*=\s*(?:"[^"]*"|'[^']*')""")
-_DECLARED = re.compile(rb"""^<\?xml[^>]*?encoding\s*=\s*["']([A-Za-z0-9._-]+)["']""")
+_DECLARED = re.compile(rb"""\A(?:\xef\xbb\xbf)?\s*<\?xml[^>]*?\sencoding\s*=\s*["']([A-Za-z0-9._:-]{1,64})["']""")
+_ASCII_COMPATIBLE = ("utf8", "ascii", "usascii", "iso88591", "latin1")
 _BOMS = ((codecs.BOM_UTF32_LE, "utf-32"), (codecs.BOM_UTF32_BE, "utf-32"), (codecs.BOM_UTF8, "utf-8-sig"),
          (codecs.BOM_UTF16_LE, "utf-16"), (codecs.BOM_UTF16_BE, "utf-16"))
 
@@ -48,12 +49,23 @@ def bom_encoding(data: bytes) -> str | None:
     return next((name for bom, name in _BOMS if data.startswith(bom)), None)
 
 
+def declared_encoding(data: bytes) -> str | None:
+    """The encoding the XML declaration names, if it names one."""
+    found = _DECLARED.match(data)
+    return found.group(1).decode("ascii") if found else None
+
+
+def ascii_compatible(data: bytes) -> bool:
+    """Whether the bytes of markup are ASCII, so that they can be searched as bytes."""
+    if bom_encoding(data) not in (None, "utf-8-sig"):
+        return False  # UTF-16 or UTF-32
+    declared = declared_encoding(data)
+    return declared is None or declared.lower().replace("-", "").replace("_", "") in _ASCII_COMPATIBLE
+
+
 def decode(data: bytes) -> str:
     """The text of an XML document: its byte-order mark, else its declared encoding, else UTF-8."""
-    encoding = bom_encoding(data)
-    if encoding is None:
-        declared = _DECLARED.match(data[:200])
-        encoding = declared.group(1).decode("ascii") if declared else "utf-8"
+    encoding = bom_encoding(data) or declared_encoding(data) or "utf-8"
     try:
         return data.decode(encoding, errors="replace")
     except LookupError:
@@ -236,16 +248,21 @@ def register(name: str, data: bytes) -> Source:
     return text
 
 
-def text_of(name: str) -> str | None:
+def text_of(name: str, containing: str | None = None) -> str | None:
     """The text of a source, without keeping it when it was not kept already: a
-    large model read only to look for comments stays out of memory."""
+    large model read only to look for comments stays out of memory. With
+    ``containing`` (ASCII), None also when the text cannot contain it, told from
+    the bytes when they can tell (most files need no decoding then)."""
     known = _SOURCES.get(name)
     if known is not None and known[0] is None:
         return known[1].text  # registered (standard input)
     try:
-        return decode(Path(name).read_bytes())
+        data = Path(name).read_bytes()
     except OSError:
         return None
+    if containing is not None and containing.encode() not in data and ascii_compatible(data):
+        return None
+    return decode(data)
 
 
 def source(name: str) -> Source | None:

@@ -8,10 +8,11 @@ from __future__ import annotations
 
 import codecs
 import io
-import re
 from collections.abc import Iterator
 
 from lxml import etree
+
+from .positions import declared_encoding
 
 _PARSER_OPTIONS = dict(
     resolve_entities=False,
@@ -23,7 +24,6 @@ _PARSER_OPTIONS = dict(
 )
 
 
-_DECLARED_ENCODING = re.compile(rb"""\A(?:\xef\xbb\xbf)?\s*<\?xml[^>]*?\sencoding\s*=\s*["']([A-Za-z0-9._:-]{1,64})["']""")
 
 
 class XmlError(ValueError):
@@ -129,12 +129,6 @@ def _finished(root: etree._Element, last: etree._Element | None) -> Iterator[etr
         del root[0]
         if element is last:
             return
-
-
-def declared_encoding(data: bytes) -> str | None:
-    """The encoding the XML declaration names, if it names one."""
-    found = _DECLARED_ENCODING.match(data)
-    return found.group(1).decode("ascii") if found else None
 
 
 def recoded(data: bytes) -> bytes:
