@@ -6,6 +6,7 @@ link's geometry implies comes from :mod:`urdfcli.inertia`.
 
 from __future__ import annotations
 
+import functools
 from collections import defaultdict
 
 from .. import massprops
@@ -25,6 +26,7 @@ TOLERANCE = Option(
 DENSITY = Option("density", 0.0, "kg/m³: when positive, masses come from the geometry's volume instead of the declared mass.")
 
 
+@functools.cache  # asked for thousands of times a run
 def _inertia():
     """:mod:`urdfcli.inertia`, imported when one of these rules first runs (`check` runs none)."""
     from .. import inertia
