@@ -21,6 +21,8 @@ Rounding a tensor to two significant digits moves it by under 5 %; swapping or
 rotating the axes of any body whose moments differ by more than 10 % of the
 largest moves it by more. 0.1 separates the two.
 """
+
+
 def matrix(inertia: dict[str, float]) -> Matrix:
     xx, xy, xz, yy, yz, zz = inertia["ixx"], inertia["ixy"], inertia["ixz"], inertia["iyy"], inertia["iyz"], inertia["izz"]
     return ((xx, xy, xz), (xy, yy, yz), (xz, yz, zz))
@@ -306,4 +308,3 @@ def place(pose: Transform, point: Vector) -> Vector:
     """A point of the child frame, in the parent frame."""
     moved = apply(pose[0], point)
     return (moved[0] + pose[1][0], moved[1] + pose[1][1], moved[2] + pose[1][2])
-

@@ -24,8 +24,6 @@ _PARSER_OPTIONS = dict(
 )
 
 
-
-
 class XmlError(ValueError):
     """``code`` is the rule: X001 (not well-formed) or X002 (entity declarations)."""
 
