@@ -100,6 +100,7 @@ def test_plain_output_of_a_small_file_imports_neither_rich_nor_rules_that_do_not
 
     modules = set(imported(command, str(FIXTURES / "seed000" / "my_robot.urdf")))
     assert "rich" not in modules
+    assert "typer" not in modules  # a plain command line is read without it (urdfcli.cli.fast)
     assert not {"urdfcli.inertia", "urdfcli.meshes", "urdfcli.poses", "urdfcli.fixes", "numpy", "networkx"} & modules
     assert ("xacro" in modules) == (command == "expand")  # expand always runs xacro, as the xacro tool does
     loaded_rules = {m.rpartition(".")[2] for m in modules if m.startswith("urdfcli.rules.")}

@@ -1,4 +1,10 @@
-"""The command line: one small module per subcommand, joined here."""
+"""The command line: one small module per subcommand, joined here.
+
+A plain command line (a subcommand, its options and its inputs) is read by
+:mod:`.fast` without importing typer; help, --version and anything unusual go
+through the typer application, which reads the same declarations and says what
+is wrong with a command line.
+"""
 
 from __future__ import annotations
 
@@ -7,12 +13,12 @@ import importlib
 import inspect
 import os
 import sys
+import typing
 from typing import Annotated
-
-import typer
 
 from .. import __version__
 from ..folders import one_run
+from .options import BadValue, Option
 
 # Each subcommand: the module defining it and its function. A run imports only the
 # module of the command it runs (help lists them all), so no command pays for the others.
@@ -30,12 +36,16 @@ COMMANDS = {
 
 def _version(value: bool) -> None:
     if value:
+        import typer
+
         print(f"urdfcli {__version__}")
         raise typer.Exit()
 
 
-def build_app(names=COMMANDS) -> typer.Typer:
-    """The application with the named subcommands registered."""
+def build_app(names=COMMANDS):
+    """The typer application with the named subcommands registered."""
+    import typer
+
     app = typer.Typer(
         name="urdfcli",
         help="Check, expand, draw and lint URDF and xacro robot descriptions, without ROS.\n\n"
@@ -46,17 +56,23 @@ def build_app(names=COMMANDS) -> typer.Typer:
         context_settings={"help_option_names": ["-h", "--help"]},
     )
 
-    @app.callback()
-    def _main(
-        version: Annotated[bool, typer.Option("--version", callback=_version, is_eager=True, help="Show the version and exit.")] = False,
-    ) -> None:
+    def _main(version: bool = False) -> None:
         pass
 
+    # set as an object: the module's annotations are text, and typer is not one of its names
+    _main.__annotations__["version"] = Annotated[bool, typer.Option("--version", callback=_version, is_eager=True, help="Show the version and exit.")]
+    app.callback()(_main)
+
     for name in names:
-        module, function = COMMANDS[name]
-        command = getattr(importlib.import_module(f".{module}", __name__), function)
-        app.command(name=name, help=reflow(command.__doc__ or ""))(with_color_option(command))
+        command = command_function(name)
+        app.command(name=name, help=reflow(command.__doc__ or ""))(for_typer(command))
     return app
+
+
+def command_function(name: str):
+    """The function of the subcommand ``name`` (its module imported now)."""
+    module, function = COMMANDS[name]
+    return getattr(importlib.import_module(f".{module}", __name__), function)
 
 
 def reflow(doc: str) -> str:
@@ -65,19 +81,35 @@ def reflow(doc: str) -> str:
     return "\n\n".join(" ".join(paragraph.split()) for paragraph in inspect.cleandoc(doc).split("\n\n"))
 
 
-def with_color_option(command):
-    """``command`` with the ``--color`` option every command has (it only sets up the consoles)."""
+def for_typer(command):
+    """``command`` as typer takes it: its options declared with typer's, the ``--color``
+    option every command has (it only sets up the consoles) added, and a value the
+    command refuses reported as typer reports a bad parameter."""
+    import typer
+
     from .common import ColorOption
 
     @functools.wraps(command)
     def run(*args, color: str = "auto", **kwargs):
-        return command(*args, **kwargs)
+        try:
+            return command(*args, **kwargs)
+        except BadValue as error:
+            raise typer.BadParameter(str(error), param_hint=error.option) from None
 
     signature = inspect.signature(command, eval_str=True)
     extra = inspect.Parameter("color", inspect.Parameter.KEYWORD_ONLY, default="auto", annotation=ColorOption)
-    run.__signature__ = signature.replace(parameters=[*signature.parameters.values(), extra])
-    run.__annotations__ = {**getattr(command, "__annotations__", {}), "color": ColorOption}
+    parameters = [p.replace(annotation=_typer_annotation(p.annotation)) for p in (*signature.parameters.values(), extra)]
+    run.__signature__ = signature.replace(parameters=parameters)
+    run.__annotations__ = {p.name: p.annotation for p in parameters}
     return run
+
+
+def _typer_annotation(annotation):
+    """``Annotated[T, Option(...)]`` as ``Annotated[T, typer.Option(...)]``."""
+    base, *extras = typing.get_args(annotation) if typing.get_origin(annotation) is Annotated else (annotation,)
+    if not extras:
+        return annotation
+    return Annotated[(base, *(e.to_typer() if isinstance(e, Option) else e for e in extras))]
 
 
 def __getattr__(name: str):
@@ -86,26 +118,58 @@ def __getattr__(name: str):
     raise AttributeError(name)
 
 
-def _app_for(argv: list[str]) -> typer.Typer:
+def _app_for(argv: list[str]):
     """Only the subcommand named first on the command line, when one is (else all, for help)."""
     first = next((a for a in argv if not a.startswith("-")), None)
     return build_app([first] if first in COMMANDS else COMMANDS)
 
 
 def main() -> None:
-    """Run the app; a usage error or an internal error is one line, never a bare traceback."""
+    """Run a command line; a usage error or an internal error is one line, never a bare traceback."""
+    from .fast import parsed
+
+    argv = sys.argv[1:]
+    try:
+        with one_run():
+            found = parsed(argv)
+            code = found.run() if found is not None else _typer_main(argv)
+    except BadValue as error:  # as typer says it, for a command line read without typer
+        hint = f"Invalid value for {error.option}: " if error.option else "Invalid value: "
+        sys.stderr.write(f"urdfcli: {_one_line(hint + str(error))} (see 'urdfcli {argv[0]} -h')\n")
+        sys.exit(2)
+    except KeyboardInterrupt:
+        sys.stderr.write("urdfcli: interrupted\n")
+        sys.exit(130)
+    except BrokenPipeError:
+        sys.stderr.close()
+        sys.exit(1)
+    except Exception as error:  # noqa: BLE001
+        if os.environ.get("URDFCLI_DEBUG"):
+            raise
+        name = " ".join(a for a in argv if not a.startswith("-"))
+        sys.stderr.write(
+            f"urdfcli: internal error ({type(error).__name__}: {_one_line(str(error))}) on {name or 'the input'}; "
+            "please report this bug with the input file (URDFCLI_DEBUG=1 shows the traceback)\n"
+        )
+        sys.exit(2)
+    sys.exit(code if isinstance(code, int) else 0)
+
+
+def _typer_main(argv: list[str]):
+    """The command line read by typer: help, --version, and what :mod:`.fast` leaves to it."""
+    import typer
+
     try:  # typer vendors click from 0.2x on
         from typer._click.exceptions import ClickException, NoArgsIsHelpError, UsageError
     except ImportError:
         from click.exceptions import ClickException, NoArgsIsHelpError, UsageError
 
-    if os.environ.get("NO_COLOR") and (len(sys.argv) == 1 or {"-h", "--help"} & set(sys.argv)):
+    if os.environ.get("NO_COLOR") and (not argv or {"-h", "--help"} & set(argv)):
         from typer import rich_utils  # the help screen: no bold or dim either
 
         rich_utils.COLOR_SYSTEM = None
     try:
-        with one_run():
-            code = _app_for(sys.argv[1:])(prog_name="urdfcli", standalone_mode=False)
+        return _app_for(argv)(args=argv, prog_name="urdfcli", standalone_mode=False)
     except NoArgsIsHelpError as error:  # the help is printed already (rich prints it, the message is empty)
         if error.format_message().strip():
             sys.stderr.write(error.format_message().rstrip("\n") + "\n")
@@ -117,22 +181,8 @@ def main() -> None:
     except ClickException as error:
         sys.stderr.write(f"urdfcli: {_one_line(error.format_message())}\n")
         sys.exit(error.exit_code)
-    except (KeyboardInterrupt, typer.Abort):
-        sys.stderr.write("urdfcli: interrupted\n")
-        sys.exit(130)
-    except BrokenPipeError:
-        sys.stderr.close()
-        sys.exit(1)
-    except Exception as error:  # noqa: BLE001
-        if os.environ.get("URDFCLI_DEBUG"):
-            raise
-        name = " ".join(a for a in sys.argv[1:] if not a.startswith("-"))
-        sys.stderr.write(
-            f"urdfcli: internal error ({type(error).__name__}: {_one_line(str(error))}) on {name or 'the input'}; "
-            "please report this bug with the input file (URDFCLI_DEBUG=1 shows the traceback)\n"
-        )
-        sys.exit(2)
-    sys.exit(code if isinstance(code, int) else 0)
+    except typer.Abort:
+        raise KeyboardInterrupt from None
 
 
 def _one_line(text: str) -> str:

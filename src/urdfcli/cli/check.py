@@ -4,16 +4,15 @@ from __future__ import annotations
 
 from typing import Annotated
 
-import typer
-
 from ..diagnostics import Severity
 from ..formatters import FORMATS, resolve
 from ..formatters.emit import emit
 from .common import LIBRARIES_HELP, ConfigOption, Exit, InputsArgument, IsolatedOption, PackagePathOption, configurations, load_all, stderr, stdout
+from .options import BadValue, Option
 
 FormatOption = Annotated[
     str,
-    typer.Option(
+    Option(
         "--format",
         "-f",
         metavar="FORMAT",
@@ -27,7 +26,7 @@ FormatOption = Annotated[
 def check(
     inputs: InputsArgument,
     output_format: FormatOption = "auto",
-    strict: Annotated[bool, typer.Option("--strict", help="Fail (exit 1) on warnings too.")] = False,
+    strict: Annotated[bool, Option("--strict", help="Fail (exit 1) on warnings too.")] = False,
     package_path: PackagePathOption = None,
     config: ConfigOption = None,
     isolated: IsolatedOption = False,
@@ -42,14 +41,14 @@ def check(
     and noqa comments apply as they do for lint.
     """
     if output_format not in FORMATS:
-        raise typer.BadParameter(f"unknown format {output_format!r}; choose from {', '.join(FORMATS)}", param_hint="--format")
+        raise BadValue(f"unknown format {output_format!r}; choose from {', '.join(FORMATS)}", "--format")
     results, unreadable = load_all(inputs, package_path, "check", configurations(config, isolated), libraries=True)
     emit(results, resolve(output_format), stdout, stderr)
     failing = Severity.WARNING.rank if strict else Severity.ERROR.rank
     if unreadable:
-        raise typer.Exit(Exit.CANNOT_RUN)
+        raise SystemExit(Exit.CANNOT_RUN)
     if any(d.severity.rank >= failing for loaded in results for d in loaded.diagnostics):
-        raise typer.Exit(Exit.PROBLEMS)
+        raise SystemExit(Exit.PROBLEMS)
 
 
 check.__doc__ += "\n\n    " + LIBRARIES_HELP

@@ -8,11 +8,10 @@ from enum import IntEnum
 from pathlib import Path
 from typing import TYPE_CHECKING, Annotated
 
-import typer
-
 from ..escape import escape
 from ..load import InputError
 from ..packages import PackageError
+from .options import Argument, BadValue, Option
 from .streams import Stream
 
 if TYPE_CHECKING:
@@ -43,7 +42,7 @@ stderr = Stream(**console_options("auto", True))
 def set_color(mode: str) -> str:
     """The --color option: set the two consoles up again for this mode."""
     if mode not in COLOR_MODES:
-        raise typer.BadParameter(f"{mode!r} is not one of {', '.join(COLOR_MODES)}")
+        raise BadValue(f"{mode!r} is not one of {', '.join(COLOR_MODES)}")
     for console, to_stderr in ((stdout, False), (stderr, True)):
         console.configure(**console_options(mode, to_stderr))
     return mode
@@ -51,13 +50,13 @@ def set_color(mode: str) -> str:
 
 ColorOption = Annotated[
     str,
-    typer.Option("--color", metavar="WHEN", callback=set_color, is_eager=True,
+    Option("--color", metavar="WHEN", callback=set_color, is_eager=True,
                  help="Colour and bold text: auto (on a terminal, unless NO_COLOR is set), always, or never."),
 ]
 
 InputsArgument = Annotated[
     list[str],
-    typer.Argument(
+    Argument(
         metavar="FILE... [NAME:=VALUE]...",
         help="URDF or xacro files ('-' reads standard input); NAME:=VALUE sets a xacro argument.",
         show_default=False,
@@ -65,7 +64,7 @@ InputsArgument = Annotated[
 ]
 FileArgument = Annotated[
     list[str],
-    typer.Argument(
+    Argument(
         metavar="FILE [NAME:=VALUE]...",
         help="URDF or xacro file ('-' reads standard input); NAME:=VALUE sets a xacro argument.",
         show_default=False,
@@ -73,7 +72,7 @@ FileArgument = Annotated[
 ]
 PackagePathOption = Annotated[
     list[str] | None,
-    typer.Option(
+    Option(
         "--package-path",
         "-P",
         metavar="NAME=DIR|DIR",
@@ -82,11 +81,11 @@ PackagePathOption = Annotated[
 ]
 ConfigOption = Annotated[
     Path | None,
-    typer.Option("--config", metavar="FILE", help="Use this urdfcli.toml or pyproject.toml instead of the nearest one above each input.", show_default=False),
+    Option("--config", metavar="FILE", help="Use this urdfcli.toml or pyproject.toml instead of the nearest one above each input.", show_default=False),
 ]
 IsolatedOption = Annotated[
     bool,
-    typer.Option("--isolated", help="Read no configuration file (neither the tool.urdfcli table of pyproject.toml nor urdfcli.toml)."),
+    Option("--isolated", help="Read no configuration file (neither the tool.urdfcli table of pyproject.toml nor urdfcli.toml)."),
 ]
 LIBRARIES_HELP = (
     "A xacro file (*.xacro) that only defines macros and properties (no link, joint or macro call outside its macros) "
@@ -95,10 +94,10 @@ LIBRARIES_HELP = (
 )
 
 
-def fail(message: str) -> typer.Exit:
+def fail(message: str) -> SystemExit:
     """Print one line and give the exit code for 'could not run'."""
     stderr.print(f"urdfcli: {escape(message)}", markup=False)
-    return typer.Exit(Exit.CANNOT_RUN)
+    return SystemExit(Exit.CANNOT_RUN)
 
 
 def split_inputs(arguments: list[str]) -> tuple[list[str], dict[str, str]]:

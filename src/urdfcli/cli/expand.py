@@ -6,20 +6,19 @@ import sys
 from pathlib import Path
 from typing import Annotated
 
-import typer
-
 from ..escape import escape
 from ..formatters.text import print_diagnostic
 from ..load import InputError, LoadOptions, load_document
 from ..output import OutputError, write_atomic
 from ..packages import PackageError
 from .common import Exit, FileArgument, PackagePathOption, fail, split_inputs, stderr
+from .options import Option
 
 
 def expand(
     inputs: FileArgument,
-    output: Annotated[Path | None, typer.Option("--output", "-o", metavar="PATH", help="Write to this file (atomically) instead of standard output.")] = None,
-    deps: Annotated[bool, typer.Option("--deps", help="List the files the input includes, one per line, instead of expanding.")] = False,
+    output: Annotated[Path | None, Option("--output", "-o", metavar="PATH", help="Write to this file (atomically) instead of standard output.")] = None,
+    deps: Annotated[bool, Option("--deps", help="List the files the input includes, one per line, instead of expanding.")] = False,
     package_path: PackagePathOption = None,
 ) -> None:
     """Expand a xacro file to URDF, exactly as the xacro tool does.
@@ -41,7 +40,7 @@ def expand(
     for diagnostic in diagnostics:
         print_diagnostic(stderr, diagnostic)
     if errors:
-        raise typer.Exit(Exit.PROBLEMS)
+        raise SystemExit(Exit.PROBLEMS)
     text = "".join(f"{escape(name)}\n" for name in document.includes) if deps else document.expanded_text
     if output is None:
         sys.stdout.write(text)

@@ -7,7 +7,6 @@ import sys
 from dataclasses import replace
 from typing import Annotated
 
-import typer
 from rich.text import Text
 
 from .. import fixes, massprops
@@ -18,6 +17,7 @@ from ..formatters.text import print_diagnostic
 from ..linter import configured
 from ..rules import rule
 from .common import ConfigOption, Exit, InputsArgument, IsolatedOption, PackagePathOption, configurations, fail, load_all, stderr, stdout
+from .options import BadValue, Option
 
 FORMATS = ("text", "json")
 
@@ -26,17 +26,17 @@ def inertia(
     inputs: InputsArgument,
     tolerance: Annotated[
         float,
-        typer.Option(
+        Option(
             "--tolerance",
             metavar="FRACTION",
             help="Flag a tensor whose largest element difference from the geometry's exceeds this fraction of the larger "
             "tensor's largest element. The default 0.1 catches swapped or unrotated axes and lets values rounded to two digits pass.",
         ),
     ] = audit_module.TOLERANCE,
-    suggest: Annotated[bool, typer.Option("--suggest", help="Print, for each flagged link, the <inertial> of a uniform body filling its geometry.")] = False,
-    xacro: Annotated[bool, typer.Option("--xacro", help="Implies --suggest: name the xacro macro that wrote each flagged <inertial>, and print the call of it that gives the right values.")] = False,
-    density: Annotated[float | None, typer.Option("--density", metavar="KG_PER_M3", help="Compute masses from the geometry's volume at this density instead of using the declared masses.")] = None,
-    output_format: Annotated[str, typer.Option("--format", "-f", metavar="FORMAT", help="text, or json (one object per file; a list of them for several files).", case_sensitive=False)] = "text",
+    suggest: Annotated[bool, Option("--suggest", help="Print, for each flagged link, the <inertial> of a uniform body filling its geometry.")] = False,
+    xacro: Annotated[bool, Option("--xacro", help="Implies --suggest: name the xacro macro that wrote each flagged <inertial>, and print the call of it that gives the right values.")] = False,
+    density: Annotated[float | None, Option("--density", metavar="KG_PER_M3", help="Compute masses from the geometry's volume at this density instead of using the declared masses.")] = None,
+    output_format: Annotated[str, Option("--format", "-f", metavar="FORMAT", help="text, or json (one object per file; a list of them for several files).", case_sensitive=False)] = "text",
     package_path: PackagePathOption = None,
     config: ConfigOption = None,
     isolated: IsolatedOption = False,
@@ -49,7 +49,7 @@ def inertia(
     """
     output_format = output_format.lower()
     if output_format not in FORMATS:
-        raise typer.BadParameter(f"unknown format {output_format!r}; choose from {', '.join(FORMATS)}", param_hint="--format")
+        raise BadValue(f"unknown format {output_format!r}; choose from {', '.join(FORMATS)}", "--format")
     if not tolerance > 0:
         raise fail("--tolerance must be a positive fraction, such as 0.1")
     if density is not None and not density > 0:
@@ -59,7 +59,7 @@ def inertia(
     config_for = configurations(config, isolated)
     results, unreadable = load_all(inputs, package_path, "none", config_for)
     if not results:
-        raise typer.Exit(Exit.CANNOT_RUN)
+        raise SystemExit(Exit.CANNOT_RUN)
     reports = [audit_module.audit(loaded, tolerance, density) if loaded.robot is not None and loaded.robot.at is not None else None for loaded in results]
     reports = [configured_report(r, config_for(r.loaded.path)) if r is not None else None for r in reports]
     for loaded in results:
@@ -79,9 +79,9 @@ def inertia(
     if output_format == "text":
         stderr.print(f"{len(results)} file{'s' if len(results) != 1 else ''} audited: {problems} problem{'s' if problems != 1 else ''}", markup=False, style="bold")
     if unreadable:
-        raise typer.Exit(Exit.CANNOT_RUN)
+        raise SystemExit(Exit.CANNOT_RUN)
     if problems:
-        raise typer.Exit(Exit.PROBLEMS)
+        raise SystemExit(Exit.PROBLEMS)
 
 
 def configured_report(report: audit_module.Report, config) -> audit_module.Report:

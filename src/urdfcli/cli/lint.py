@@ -7,8 +7,6 @@ import time
 from pathlib import Path
 from typing import Annotated
 
-import typer
-
 from ..diagnostics import Severity
 from ..formatters import resolve
 from ..linter import Job, Linted, run_job
@@ -17,6 +15,7 @@ from ..packages import SKIP_DIRS, PackageError
 from ..workspace import Target, assemble, plan
 from ..formatters.emit import emit
 from .common import LIBRARIES_HELP, ConfigOption, Exit, IsolatedOption, PackagePathOption, configurations, fail, split_inputs, stderr, stdout
+from .options import Argument, Option
 
 LINT_FORMATS = ("auto", "text", "concise", "json", "sarif", "github")
 MODEL_SUFFIXES = (".urdf", ".urdf.xacro")
@@ -27,20 +26,20 @@ PROGRESS_AFTER = 1.0  # seconds: a run this long shows a progress bar on a termi
 def lint(
     inputs: Annotated[
         list[str],
-        typer.Argument(
+        Argument(
             metavar="PATH... [NAME:=VALUE]...",
             help="Files, or folders to search for *.urdf and *.urdf.xacro ('-' reads standard input); NAME:=VALUE sets a xacro argument.",
             show_default=False,
         ),
     ],
-    output_format: Annotated[str, typer.Option("--format", "-f", metavar="FORMAT", help="auto (text, or github under GitHub Actions), text, concise, json, sarif or github.", case_sensitive=False)] = "auto",
-    select: Annotated[list[str] | None, typer.Option("--select", metavar="CODES", help="Only these rule codes or prefixes (comma-separated; replaces the configuration's select). ALL selects every rule.", show_default=False)] = None,
-    ignore: Annotated[list[str] | None, typer.Option("--ignore", metavar="CODES", help="Also ignore these codes or prefixes.", show_default=False)] = None,
-    extend_select: Annotated[list[str] | None, typer.Option("--extend-select", metavar="CODES", help="Also select these codes or prefixes (e.g. S for the style rules).", show_default=False)] = None,
+    output_format: Annotated[str, Option("--format", "-f", metavar="FORMAT", help="auto (text, or github under GitHub Actions), text, concise, json, sarif or github.", case_sensitive=False)] = "auto",
+    select: Annotated[list[str] | None, Option("--select", metavar="CODES", help="Only these rule codes or prefixes (comma-separated; replaces the configuration's select). ALL selects every rule.", show_default=False)] = None,
+    ignore: Annotated[list[str] | None, Option("--ignore", metavar="CODES", help="Also ignore these codes or prefixes.", show_default=False)] = None,
+    extend_select: Annotated[list[str] | None, Option("--extend-select", metavar="CODES", help="Also select these codes or prefixes (e.g. S for the style rules).", show_default=False)] = None,
     config: ConfigOption = None,
     isolated: IsolatedOption = False,
-    exit_zero: Annotated[bool, typer.Option("--exit-zero", help="Exit 0 even when problems remain (2 still means it could not run).")] = False,
-    jobs: Annotated[int, typer.Option("--jobs", "-j", min=0, metavar="N", help="Lint files in N processes (0: one per CPU); the output order does not change.")] = 1,
+    exit_zero: Annotated[bool, Option("--exit-zero", help="Exit 0 even when problems remain (2 still means it could not run).")] = False,
+    jobs: Annotated[int, Option("--jobs", "-j", min=0, metavar="N", help="Lint files in N processes (0: one per CPU); the output order does not change.")] = 1,
     package_path: PackagePathOption = None,
 ) -> None:
     """Lint URDF/xacro files against documented, configurable rules.
@@ -76,9 +75,9 @@ def lint(
         stderr.print(f"urdfcli: {reason}", markup=False)
     emit(results, resolve(output_format), stdout, stderr, tree=False)
     if unreadable:
-        raise typer.Exit(Exit.CANNOT_RUN)
+        raise SystemExit(Exit.CANNOT_RUN)
     if not exit_zero and any(d.severity.rank >= Severity.WARNING.rank for r in results for d in r.diagnostics):
-        raise typer.Exit(Exit.PROBLEMS)
+        raise SystemExit(Exit.PROBLEMS)
 
 
 def expand_paths(paths: list[str]) -> list[str]:

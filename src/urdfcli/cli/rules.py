@@ -5,19 +5,19 @@ from __future__ import annotations
 import sys
 from typing import Annotated
 
-import typer
 from rich.table import Table
 from rich.text import Text
 
 from ..formatters import rules as rules_format
 from ..rules import UnknownRule, load_all, lookup
 from .common import fail, stdout
+from .options import Argument, Option
 
 RULE_FORMATS = ("table", "json", "markdown")
 
 
 def rules(
-    output_format: Annotated[str, typer.Option("--format", "-f", metavar="FORMAT", help="table, json, or markdown (the text of docs/rules.md).", case_sensitive=False)] = "table",
+    output_format: Annotated[str, Option("--format", "-f", metavar="FORMAT", help="table, json, or markdown (the text of docs/rules.md).", case_sensitive=False)] = "table",
 ) -> None:
     """List every rule: code, name, default severity, on or off by default, summary."""
     registry = rules_format.ordered(load_all().values())
@@ -35,7 +35,7 @@ def rules(
         raise fail(f"unknown format {output_format!r}; choose from {', '.join(RULE_FORMATS)}")
 
 
-def rule(code: Annotated[str, typer.Argument(metavar="CODE", help="A rule code (D002) or name (unknown-attribute).", show_default=False)]) -> None:
+def rule(code: Annotated[str, Argument(metavar="CODE", help="A rule code (D002) or name (unknown-attribute).", show_default=False)]) -> None:
     """Print one rule's documentation (Markdown)."""
     try:
         found = lookup(code)

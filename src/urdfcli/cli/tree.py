@@ -6,8 +6,6 @@ import sys
 from pathlib import Path
 from typing import Annotated
 
-import typer
-
 from ..diagnostics import Severity
 from ..formatters.text import plain, print_diagnostic
 from ..formatters.tree import cut, summarise, text_lines, tree_json, tree_rows
@@ -15,15 +13,16 @@ from ..kinematics import roots
 from ..loaded import Loaded
 from ..suggestions import close_matches
 from .common import ConfigOption, Exit, FileArgument, IsolatedOption, PackagePathOption, configurations, fail, load_one, split_inputs, stderr, stdout
+from .options import BadValue, Option
 
 
 def tree(
     inputs: FileArgument,
-    max_depth: Annotated[int | None, typer.Option("--max-depth", min=0, metavar="N", help="Show links down to depth N (the start link is depth 0).")] = None,
-    from_link: Annotated[str | None, typer.Option("--from", metavar="LINK", help="Show the subtree below LINK instead of the whole tree.")] = None,
-    no_joints: Annotated[bool, typer.Option("--no-joints", help="Show link names only.")] = False,
-    ascii_only: Annotated[bool, typer.Option("--ascii", help="Plain ASCII characters (for logs).")] = False,
-    output_format: Annotated[str, typer.Option("--format", "-f", metavar="FORMAT", help="text, or json (nested: each link with its children as {joint, link}).", case_sensitive=False)] = "text",
+    max_depth: Annotated[int | None, Option("--max-depth", min=0, metavar="N", help="Show links down to depth N (the start link is depth 0).")] = None,
+    from_link: Annotated[str | None, Option("--from", metavar="LINK", help="Show the subtree below LINK instead of the whole tree.")] = None,
+    no_joints: Annotated[bool, Option("--no-joints", help="Show link names only.")] = False,
+    ascii_only: Annotated[bool, Option("--ascii", help="Plain ASCII characters (for logs).")] = False,
+    output_format: Annotated[str, Option("--format", "-f", metavar="FORMAT", help="text, or json (nested: each link with its children as {joint, link}).", case_sensitive=False)] = "text",
     package_path: PackagePathOption = None,
     config: ConfigOption = None,
     isolated: IsolatedOption = False,
@@ -44,7 +43,7 @@ def tree(
     cannot be read.
     """
     if output_format.lower() not in ("text", "json"):
-        raise typer.BadParameter(f"unknown format {output_format!r}; choose text or json", param_hint="--format")
+        raise BadValue(f"unknown format {output_format!r}; choose text or json", "--format")
     paths, mappings = split_inputs(inputs)
     if len(paths) != 1:
         raise fail(f"tree takes one input file, got {len(paths)}")
@@ -52,7 +51,7 @@ def tree(
     has_errors = report_errors(loaded)
     start = start_link(loaded, from_link)
     if start is None:
-        raise typer.Exit(Exit.PROBLEMS)
+        raise SystemExit(Exit.PROBLEMS)
     robot = loaded.robot
     rows = tree_rows(robot, start)
     summary = summarise(robot, rows)
@@ -70,7 +69,7 @@ def tree(
                 stdout.print(Text.assemble(*line), soft_wrap=True, highlight=False)
         stdout.print(summary.text(), style="bold", markup=False, highlight=False)
     if has_errors:
-        raise typer.Exit(Exit.PROBLEMS)
+        raise SystemExit(Exit.PROBLEMS)
 
 
 def load_model(path: str, mappings: dict[str, str], package_path: list[str] | None, config: Path | None = None, isolated: bool = False) -> Loaded:
