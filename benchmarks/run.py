@@ -318,7 +318,7 @@ def import_costs() -> str:
             cumulative[name] = max(cumulative.get(name, 0), int(match.group(1)))
     names = ("urdfcli.cli", "typer", "lxml.etree", "urdfcli.load", "rich.console", "pydantic", "networkx", "xacro", "urdfcli.inertia")
     shown = [f"{name} {cumulative[name] / 1000:.0f} ms" for name in names if name in cumulative]
-    absent = [name for name in ("rich", "pydantic", "networkx", "xacro", "urdfcli.inertia", "numpy") if name not in cumulative]
+    absent = [name for name in ("typer", "rich", "pydantic", "networkx", "xacro", "urdfcli.inertia", "numpy") if name not in cumulative]
     text = "imports of `urdfcli check` on a small file (python -X importtime, cumulative): " + ", ".join(shown)
     return text + (f"; not imported: {', '.join(absent)}" if absent else "")
 

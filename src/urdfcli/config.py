@@ -30,7 +30,6 @@ the working directory; a glob without a ``/`` also matches a file's name alone.
 
 from __future__ import annotations
 
-import tomllib
 from dataclasses import dataclass, field, replace
 from fnmatch import fnmatchcase
 from pathlib import Path
@@ -274,6 +273,8 @@ def _absolute_package_path(entry: str, root: Path) -> str:
 
 
 def _read_toml(path: Path) -> dict[str, Any]:
+    import tomllib  # only where there is a file to read
+
     try:
         with path.open("rb") as handle:
             return tomllib.load(handle)

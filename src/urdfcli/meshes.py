@@ -9,7 +9,6 @@ from __future__ import annotations
 
 import contextlib
 import functools
-import logging
 import warnings
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -110,6 +109,8 @@ def _mesh_properties(filename: str, scale: Vector, files: MeshFiles) -> tuple[fl
 def quiet_libraries():
     """yourdfpy and trimesh log warnings to stderr (and yourdfpy calls a deprecated trimesh
     function); urdfcli reports the problems itself."""
+    import logging  # only where a mesh is read
+
     loggers = [logging.getLogger(name) for name in ("yourdfpy", "trimesh")]
     levels = [logger.level for logger in loggers]
     for logger in loggers:
