@@ -51,7 +51,7 @@ def set_color(mode: str) -> str:
 ColorOption = Annotated[
     str,
     Option("--color", metavar="WHEN", callback=set_color, is_eager=True,
-                 help="Colour and bold text: auto (on a terminal, unless NO_COLOR is set), always, or never."),
+           help="Colour and bold text: auto (on a terminal, unless NO_COLOR is set), always, or never."),
 ]
 
 InputsArgument = Annotated[
