@@ -36,7 +36,7 @@ from pathlib import Path
 from typing import Any
 
 from .diagnostics import Severity
-from .folders import remembered
+from .folders import nearest
 from .rules import Rule, UnknownRule, load_all, lookup
 from .suggestions import close_matches
 
@@ -312,14 +312,7 @@ def read(path: Path) -> Config:
 
 def find(start: Path) -> Path | None:
     """The nearest configuration file at or above a folder."""
-
-    def look() -> Path | None:
-        own = _own_config(start)
-        if own is None and start.parent != start:
-            return find(start.parent)
-        return own
-
-    return remembered(("config", start), look)
+    return nearest(start, "config", _own_config)
 
 
 def _own_config(folder: Path) -> Path | None:

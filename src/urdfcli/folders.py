@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import contextlib
 from collections.abc import Callable, Hashable, Iterator
+from pathlib import Path
 from typing import TypeVar
 
 T = TypeVar("T")
@@ -33,3 +34,16 @@ def remembered(key: Hashable, compute: Callable[[], T]) -> T:
     if key not in _answers:
         _answers[key] = compute()
     return _answers[key]  # type: ignore[return-value]
+
+
+def nearest(start: Path, kind: str, found_in: Callable[[Path], T | None]) -> T | None:
+    """``found_in(folder)`` for the nearest folder at or above ``start`` where it is
+    not None (None when there is none); each folder asked once per run and ``kind``."""
+
+    def look() -> T | None:
+        own = found_in(start)
+        if own is None and start.parent != start:
+            return nearest(start.parent, kind, found_in)
+        return own
+
+    return remembered((kind, start), look)

@@ -26,7 +26,7 @@ from urllib.parse import unquote, urlparse
 
 from lxml import etree
 
-from .folders import remembered
+from .folders import nearest, remembered
 
 SKIP_DIRS = {"build", "install", "log", "devel", "node_modules", "__pycache__", "site-packages"}
 MAX_SCAN_DEPTH = 8
@@ -109,13 +109,7 @@ def _walk(root: Path) -> Iterator[tuple[str, Path]]:
 
 def enclosing_package(start: Path) -> Path | None:
     """The nearest folder at or above ``start`` that holds a package.xml."""
-
-    def look() -> Path | None:
-        if (start / "package.xml").is_file():
-            return start
-        return enclosing_package(start.parent) if start.parent != start else None
-
-    return remembered(("package", start), look)
+    return nearest(start, "package", lambda folder: folder if (folder / "package.xml").is_file() else None)
 
 
 def local_roots(package_dir: Path) -> list[Path]:

@@ -56,12 +56,10 @@ def build_app(names=COMMANDS):
         context_settings={"help_option_names": ["-h", "--help"]},
     )
 
-    def _main(version: bool = False) -> None:
+    def _main(version: Annotated[bool, Option("--version", callback=_version, is_eager=True, help="Show the version and exit.")] = False) -> None:
         pass
 
-    # set as an object: the module's annotations are text, and typer is not one of its names
-    _main.__annotations__["version"] = Annotated[bool, typer.Option("--version", callback=_version, is_eager=True, help="Show the version and exit.")]
-    app.callback()(_main)
+    app.callback()(_typed(_main, inspect.signature(_main, eval_str=True)))
 
     for name in names:
         command = command_function(name)
@@ -98,10 +96,15 @@ def for_typer(command):
 
     signature = inspect.signature(command, eval_str=True)
     extra = inspect.Parameter("color", inspect.Parameter.KEYWORD_ONLY, default="auto", annotation=ColorOption)
-    parameters = [p.replace(annotation=_typer_annotation(p.annotation)) for p in (*signature.parameters.values(), extra)]
-    run.__signature__ = signature.replace(parameters=parameters)
-    run.__annotations__ = {p.name: p.annotation for p in parameters}
-    return run
+    return _typed(run, signature.replace(parameters=[*signature.parameters.values(), extra]))
+
+
+def _typed(function, signature: inspect.Signature):
+    """``function`` with ``signature``, its options declared with typer's."""
+    parameters = [p.replace(annotation=_typer_annotation(p.annotation)) for p in signature.parameters.values()]
+    function.__signature__ = signature.replace(parameters=parameters)
+    function.__annotations__ = {p.name: p.annotation for p in parameters}
+    return function
 
 
 def _typer_annotation(annotation):
@@ -134,8 +137,7 @@ def main() -> None:
             found = parsed(argv)
             code = found.run() if found is not None else _typer_main(argv)
     except BadValue as error:  # as typer says it, for a command line read without typer
-        hint = f"Invalid value for {error.option}: " if error.option else "Invalid value: "
-        sys.stderr.write(f"urdfcli: {_one_line(hint + str(error))} (see 'urdfcli {argv[0]} -h')\n")
+        sys.stderr.write(f"urdfcli: Invalid value for {error.option}: {_one_line(str(error))} (see 'urdfcli {argv[0]} -h')\n")
         sys.exit(2)
     except KeyboardInterrupt:
         sys.stderr.write("urdfcli: interrupted\n")

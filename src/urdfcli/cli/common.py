@@ -42,7 +42,7 @@ stderr = Stream(**console_options("auto", True))
 def set_color(mode: str) -> str:
     """The --color option: set the two consoles up again for this mode."""
     if mode not in COLOR_MODES:
-        raise BadValue(f"{mode!r} is not one of {', '.join(COLOR_MODES)}")
+        raise BadValue(f"{mode!r} is not one of {', '.join(COLOR_MODES)}", "--color")
     for console, to_stderr in ((stdout, False), (stderr, True)):
         console.configure(**console_options(mode, to_stderr))
     return mode

@@ -62,12 +62,13 @@ def parsed(argv: list[str]) -> Parsed | None:
     parameters = _parameters(command)
     if parameters is None:
         return None
-    parameters.append(_parameter("color", ColorOption, "auto"))  # every command's; Parsed.run sets it
-    read = _read(argv[1:], parameters)
+    options = [p for p in parameters if not isinstance(p.spec, Argument)]
+    options.append(_parameter("color", ColorOption, "auto"))  # every command's; Parsed.run sets it
+    read = _read(argv[1:], options)
     if read is None:
         return None
     given, positional = read
-    values = _values([p for p in parameters if not isinstance(p.spec, Argument)], given)
+    values = _values(options, given)
     if values is None:
         return None
     mode = values.pop("color")
@@ -76,9 +77,9 @@ def parsed(argv: list[str]) -> Parsed | None:
     return Parsed(command, values, mode)
 
 
-def _read(tokens: list[str], parameters: list[_Parameter]) -> tuple[dict[str, list[str]], list[str]] | None:
+def _read(tokens: list[str], options: list[_Parameter]) -> tuple[dict[str, list[str]], list[str]] | None:
     """The texts given for each option, and the positional inputs."""
-    options = {name: p for p in parameters if not isinstance(p.spec, Argument) for name in p.spec.names}
+    named = {name: p for p in options for name in p.spec.names}
     given: dict[str, list[str]] = {}
     positional: list[str] = []
     rest = iter(tokens)
@@ -87,7 +88,7 @@ def _read(tokens: list[str], parameters: list[_Parameter]) -> tuple[dict[str, li
             positional.append(token)
             continue
         name, equals, value = token.partition("=") if token.startswith("--") else (token, "", "")
-        parameter = options.get(name)
+        parameter = named.get(name)
         if parameter is None:
             return None  # unknown: typer says so
         if parameter.kind is bool:
@@ -144,7 +145,7 @@ def _parameter(name: str, annotation, default) -> _Parameter | None:
         base = kinds[0]
     many = typing.get_origin(base) is list
     kind = typing.get_args(base)[0] if many else base
-    if not (kind in _CONVERTERS or kind is bool or isinstance(kind, type) and issubclass(kind, Enum)):
+    if not (kind in _CONVERTERS or kind is bool or _is_enum(kind)):
         return None
     if default is inspect.Parameter.empty:
         default = None
@@ -157,11 +158,10 @@ def _parameter(name: str, annotation, default) -> _Parameter | None:
 def _converted(parameter: _Parameter, text: str):
     """The value typer would give for ``text``; None when typer would refuse it."""
     kind = parameter.kind
-    if isinstance(kind, type) and issubclass(kind, Enum):
-        folded = {member.value.casefold(): member for member in kind}
+    if _is_enum(kind):
         if parameter.spec.settings.get("case_sensitive", True):
             return next((m for m in kind if m.value == text), None)
-        return folded.get(text.casefold())
+        return next((m for m in kind if m.value.casefold() == text.casefold()), None)
     try:
         value = _CONVERTERS[kind](text)
     except ValueError:
@@ -170,6 +170,10 @@ def _converted(parameter: _Parameter, text: str):
     if low is not None and value < low:
         return None
     return value
+
+
+def _is_enum(kind) -> bool:
+    return isinstance(kind, type) and issubclass(kind, Enum)
 
 
 def _assign(arguments: list[_Parameter], positional: list[str], values: dict[str, Any]) -> bool:

@@ -16,7 +16,7 @@ from typing import Any
 class BadValue(Exception):
     """An option's value the command refuses: typer's BadParameter, without typer."""
 
-    def __init__(self, message: str, option: str | None = None):
+    def __init__(self, message: str, option: str):
         super().__init__(message)
         self.option = option
 
