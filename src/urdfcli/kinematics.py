@@ -8,7 +8,7 @@ so a 20,000-link chain is as easy as a short one.
 from __future__ import annotations
 
 from collections import defaultdict
-from collections.abc import Callable, Iterator
+from collections.abc import Callable, Iterator, Mapping
 from typing import TYPE_CHECKING, NamedTuple
 
 from .diagnostics import Diagnostic
@@ -84,6 +84,23 @@ def walk_all(
             seen.add(child_joint.child)
 
 
+def reached(children: dict[str, list[Joint]], start: str) -> list[str]:
+    """The links of ``walk`` from ``start``, in its order, without its tuples: the
+    walk the checks of a large model take once per link."""
+    seen = {start}
+    order: list[str] = []
+    stack = [start]
+    while stack:
+        link = stack.pop()
+        order.append(link)
+        for joint in reversed(children.get(link, ())):
+            child = joint.child
+            if child not in seen:
+                seen.add(child)
+                stack.append(child)
+    return order
+
+
 def has_loop(robot: Robot) -> bool:
     """Whether the joints form a directed loop (Kahn's algorithm, without networkx)."""
     children = children_by_joint_name(robot)  # shared with the walks that follow
@@ -120,27 +137,30 @@ def tree_diagnostics(robot: Robot, document: Document) -> list[Diagnostic]:
     def report(code: str, message: str, element, hint: str | None = None) -> None:
         out.append(document.diagnostic(code, message, element, hint))
 
+    links = robot.links
     for joint in robot.joints.values():
-        for role, link, other_end in (("parent", joint.parent, joint.child), ("child", joint.child, joint.parent)):
-            if link is not None and link not in robot.links:
+        parent, child = joint.parent, joint.child
+        if (parent is None or parent in links) and (child is None or child in links):
+            continue
+        for role, link, other_end in (("parent", parent, child), ("child", child, parent)):
+            if link is not None and link not in links:
                 report(
                     "J005",
                     f"{role} link '{link}' of joint '{joint.name}' does not exist",
                     joint.part(role),
                     link_hint(link, robot, other_end),
                 )
-    parents: dict[str, list[Joint]] = defaultdict(list)
+    first_parent: dict[str, Joint] = {}
     for joint in robot.joints.values():
-        if joint.child in robot.links and joint.parent in robot.links:
-            parents[joint.child].append(joint)
-    for child, joints in parents.items():
-        for extra in joints[1:]:
-            report(
-                "T003",
-                f"link '{child}' is the child of joint '{extra.name}' and also of joint '{joints[0].name}'",
-                extra.at,
-                "a link has exactly one parent joint; for a closed chain, use a mimic joint or split the link",
-            )
+        if joint.child in links and joint.parent in links:
+            first = first_parent.setdefault(joint.child, joint)
+            if first is not joint:
+                report(
+                    "T003",
+                    f"link '{joint.child}' is the child of joint '{joint.name}' and also of joint '{first.name}'",
+                    joint.at,
+                    "a link has exactly one parent joint; for a closed chain, use a mimic joint or split the link",
+                )
     if has_loop(robot):  # rare: only then is networkx worth importing
         import networkx as nx
 
@@ -200,18 +220,24 @@ class RigidBody(NamedTuple):
         return self.joint is not None
 
 
-def rigid_bodies(robot: Robot, parent_joint: Callable[[str], Joint | None]) -> dict[str, RigidBody]:
-    """Each link's rigid body. ``parent_joint`` gives a link's (first) parent joint."""
+def rigid_bodies(robot: Robot, parent_joints: Mapping[str, Joint]) -> dict[str, RigidBody]:
+    """Each link's rigid body. ``parent_joints`` gives each link's (first) parent joint."""
+    links = robot.links
+    # The link above each link across a joint that does not move: a body hangs from its top by these.
+    above = {name: joint.parent for name, joint in parent_joints.items() if not joint.moving and joint.parent in links and name in links}
     tops: dict[str, str] = {}
-    for name in robot.links:
-        path = []
+    for name in links:
+        if name not in above:
+            if name not in tops:
+                tops[name] = name
+            continue
+        path: list[str] = []
         link = name
         while link not in tops and link not in path:
             path.append(link)
-            joint = parent_joint(link)
-            if joint is None or joint.moving or joint.parent not in robot.links:
+            if link not in above:
                 break
-            link = joint.parent
+            link = above[link]
         top = tops.get(link, link)
         for visited in path:
             tops[visited] = top
@@ -220,7 +246,7 @@ def rigid_bodies(robot: Robot, parent_joint: Callable[[str], Joint | None]) -> d
         members[top].append(name)
     bodies: dict[str, RigidBody] = {}
     for top, names in members.items():
-        joint = parent_joint(top)
+        joint = parent_joints.get(top)
         if len(names) > 1:
             names.sort(key=lambda n: n != top)  # the top link first, the rest in file order
         body = RigidBody(joint if joint is not None and joint.moving else None, tuple(names))
@@ -234,8 +260,7 @@ def subtree_masses(robot: Robot, mass: Callable[[str], float]) -> dict[str, floa
     children = children_by_joint_name(robot)
     total: dict[str, float] = {}
     for root in roots(robot):
-        order = [link for _, _, link in walk(robot, root, children)]
-        for link in reversed(order):  # every link after the links below it
+        for link in reversed(reached(children, root)):  # every link after the links below it
             carried = mass(link)
             for joint in children.get(link, ()):
                 if joint.child != link:
@@ -246,7 +271,7 @@ def subtree_masses(robot: Robot, mass: Callable[[str], float]) -> dict[str, floa
 
 def bodies(loaded) -> dict[str, RigidBody]:
     """Each link's rigid body in a loaded model, worked out once."""
-    return loaded.remembered("rigid bodies", lambda: rigid_bodies(loaded.robot, loaded.parent_joint))
+    return loaded.remembered("rigid bodies", lambda: rigid_bodies(loaded.robot, loaded.parent_joints))
 
 
 def link_mass(robot: Robot, name: str) -> float:

@@ -40,7 +40,8 @@ class Loaded:
         return self.document.diagnostic(code, message, at, hint, attribute)
 
     @cached_property
-    def _parent_joints(self) -> dict[str, Joint]:
+    def parent_joints(self) -> dict[str, Joint]:
+        """Each link's parent joint: the first written, when a link has several."""
         found: dict[str, Joint] = {}
         if self.robot is not None:
             for joint in self.robot.joints.values():
@@ -49,7 +50,7 @@ class Loaded:
         return found
 
     def parent_joint(self, link: str) -> Joint | None:
-        return self._parent_joints.get(link)
+        return self.parent_joints.get(link)
 
     @cached_property
     def graph(self) -> nx.DiGraph | None:
