@@ -116,6 +116,8 @@ class Config:
 
     def argument_sets(self, file: str) -> list[dict[str, str]] | None:
         """The argument sets ``models`` lists for a model, None when it is not listed."""
+        if not self.models:
+            return None
         try:
             resolved = Path(file).resolve()
         except OSError:

@@ -21,6 +21,7 @@ from __future__ import annotations
 
 import os
 from collections.abc import Iterable, Iterator
+from functools import cached_property
 from pathlib import Path
 from urllib.parse import unquote, urlparse
 
@@ -153,12 +154,19 @@ class PackageResolver:
                 self._scan_roots.append(folder.resolve())
         self._scan_roots += [Path(p) for p in env.get("ROS_PACKAGE_PATH", "").split(os.pathsep) if p]
         self._ament = [Path(p) for p in env.get("AMENT_PREFIX_PATH", "").split(os.pathsep) if p]
-        own = enclosing_package(input_file.resolve().parent) if input_file else None
-        self._own = own
-        self._local_roots = local_roots(own) if own else []
+        self._input_file = input_file
         self._found: dict[str, Path] = {}
         self._scanned: set[Path] = set()
         self._answers: dict[str, Path | None] = {}  # every look-up, found or not
+
+    @cached_property
+    def _own(self) -> Path | None:
+        """The package the input is in: looked for only when a look-up needs it."""
+        return enclosing_package(self._input_file.resolve().parent) if self._input_file else None
+
+    @cached_property
+    def _local_roots(self) -> list[Path]:
+        return local_roots(self._own) if self._own else []
 
     def where(self) -> str:
         """Where packages were looked for, as ``(looked in ...)`` for error messages."""

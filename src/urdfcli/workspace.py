@@ -405,6 +405,13 @@ def _same(file: str, library: Path) -> bool:
         return False
 
 
+def _same_input(file: str, path: str) -> bool:
+    """Whether a diagnostic's file is the input ``path``: by name, else resolved."""
+    if path == STDIN:
+        return False
+    return file == path or _same(file, Path(path).resolve())
+
+
 def _key(diagnostic: Diagnostic) -> tuple:
     location = diagnostic.location
     return (diagnostic.code, location.file, location.line, location.column, diagnostic.message)
@@ -428,8 +435,7 @@ def assemble(entries: list[Entry], outcome: Callable[[Target], object], includes
                 if isinstance(result, str):
                     unreadable.append(result)
                     continue
-                own = Path(entry.path).resolve() if entry.path != STDIN else None
-                is_own = functools.cache(lambda file, own=own: own is not None and _same(file, own))  # a path resolved once
+                is_own = functools.cache(lambda file, path=entry.path: _same_input(file, path))
                 result.diagnostics = [d for d in result.diagnostics if _fresh(d, is_own(d.file), shown_keys)]
                 if target.arguments:  # shown with the model's name and in JSON
                     result.label, result.arguments = target.label, dict(target.arguments)
