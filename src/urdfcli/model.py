@@ -88,6 +88,9 @@ class Mimic(NamedTuple):
     offset: float = 0.0
 
 
+_PARTS = ("parent", "child", "axis", "limit", "mimic")  # the children of a joint its diagnostics point at
+
+
 class Joint(NamedTuple):
     name: str
     at: int
@@ -310,29 +313,41 @@ class Reader:
         return None
 
     def shape(self, element: etree._Element, visual: bool) -> Shape:
-        found = first_children(element)
-        origin = self.pose(found.get("origin"))
-        geometry = self.geometry(element, found.get("geometry"))
+        origin = geometry = material = None
+        for child in element:  # the first of each tag, as urdfdom reads it
+            tag = child.tag
+            if tag == "geometry":
+                geometry = child if geometry is None else geometry
+            elif tag == "origin":
+                origin = child if origin is None else origin
+            elif tag == "material" and visual:
+                material = child if material is None else material
+        pose = self.pose(origin)
+        shape = self.geometry(element, geometry)
         material_name = None
-        if visual:
-            material = found.get("material")
-            if material is not None:
-                parsed = self.material(material, top_level=False)
-                material_name = parsed.name if parsed else None
-                if parsed is not None:
-                    self._inline_materials.append(parsed)
-        return Shape(self._index[element], origin, geometry, material_name)
+        if material is not None:
+            parsed = self.material(material, top_level=False)
+            if parsed is not None:
+                material_name = parsed.name
+                self._inline_materials.append(parsed)
+        return Shape(self._index[element], pose, shape, material_name)
 
     def inertial(self, element: etree._Element) -> Inertial:
-        found = first_children(element)
-        origin = self.pose(found.get("origin"))
-        mass_element = found.get("mass")
+        origin = mass_element = inertia_element = None
+        for child in element:  # the first of each tag, as urdfdom reads it
+            tag = child.tag
+            if tag == "inertia":
+                inertia_element = child if inertia_element is None else inertia_element
+            elif tag == "mass":
+                mass_element = child if mass_element is None else mass_element
+            elif tag == "origin":
+                origin = child if origin is None else origin
+        pose = self.pose(origin)
         mass = None
         if mass_element is None:
             self.report("V005", "<inertial> has no <mass>", element)
         else:
             mass = self.number(mass_element, "value", required=True)
-        inertia_element = found.get("inertia")
         inertia = None
         if inertia_element is None:
             self.report("V005", "<inertial> has no <inertia>", element)
@@ -342,7 +357,11 @@ class Reader:
             if inertia is None:
                 values = {key: self.number(inertia_element, key, required=True) for key in INERTIA_KEYS}
                 inertia = _remember(_TENSORS, texts, values) if None not in values.values() else None
-        return Inertial(self._index[element], origin, mass, inertia, self.at(mass_element), self.at(inertia_element))  # type: ignore[arg-type]
+        index = self._index
+        return Inertial(
+            index[element], pose, mass, inertia,  # type: ignore[arg-type]
+            index[mass_element] if mass_element is not None else None, index[inertia_element] if inertia_element is not None else None,
+        )
 
     def link(self, element: etree._Element) -> Link:
         name = element.get("name")
@@ -435,7 +454,7 @@ class Reader:
         if parent is None or child is None:
             missing = " and ".join(t for t, v in (("<parent link>", parent), ("<child link>", child)) if v is None)
             self.report("J004", f"joint '{shown}' has no {missing}", element)
-        parts = tuple((tag, self._index[found[tag]]) for tag in ("parent", "child", "axis", "limit", "mimic") if tag in found)
+        parts = tuple([(tag, self._index[found[tag]]) for tag in _PARTS if tag in found])
         return Joint(name if name is not None else "", self._index[element], joint_type, parent, child, origin, axis, limit, mimic, parts)
 
     @staticmethod
