@@ -7,10 +7,12 @@ import importlib.metadata
 from pathlib import Path
 
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
 from urdfcli import load as load_module
 from urdfcli.load import XACRO_NAMESPACES, is_xacro, load
-from urdfcli.xmlsafe import parse_bytes
+from urdfcli.xmlsafe import XmlError, parse_bytes
 
 XACRO_NS = "http://www.ros.org/wiki/xacro"
 
@@ -101,3 +103,25 @@ def test_xacro_only_in_comments_is_told_without_parsing(data, monkeypatch):
 
     monkeypatch.setattr(load_module, "parse_bytes", refuse)
     assert not is_xacro(data)
+
+
+_PIECES = [
+    "<!-- ", " -->", " ${a} ", "$(b)", "$", '<xacro:if value="1"/>', "xacro", '<link name="a"/>', "<!-- c -->",
+    "http://wiki.ros.org/xacro", "http://ros.org/wiki/xacro", '<x:y xmlns:x="http://www.ros.org/wiki/xacro"/>',
+    "<![CDATA[${q}]]>", '<a b="${c}"/>', '<a b="$(c)"/>',
+]
+_DECLARATIONS = ['xmlns:xacro="http://wiki.ros.org/xacro"', "xmlns:xacro = 'http://ros.org/wiki/xacro'", "", 'xmlns:xacro="http://example.com"']
+
+
+@settings(max_examples=1000, deadline=None)
+@given(st.sampled_from(_DECLARATIONS), st.lists(st.sampled_from(_PIECES), max_size=8))
+def test_the_bytes_tell_what_the_parsed_document_says(declaration, pieces):
+    """The byte tests stand in for the definition: a xacro element, or a substitution
+    in an attribute or in text, in the parsed document."""
+    data = f"<robot {declaration}>{''.join(pieces)}</robot>".encode()
+    try:
+        root = parse_bytes(data)
+    except XmlError:
+        assert not is_xacro(data)
+        return
+    assert is_xacro(data) is load_module._USES_XACRO(root)
