@@ -18,13 +18,13 @@ import itertools
 import os
 import codecs
 import re
+from collections.abc import Iterator
 from functools import cached_property
 from pathlib import Path
 
 _AFTER_NAME = frozenset(" \t\n/>")
 _ELEMENT = re.compile(r"<(?![!?/])")
-# Markup in which a '<' opens no element. DOCTYPE: its internal subset in brackets.
-_IGNORED = re.compile(r"<!--.*?-->|<!\[CDATA\[.*?\]\]>|<\?.*?\?>|<!DOCTYPE(?:[^\[>]|\[.*?\])*>", re.DOTALL)
+_DOCTYPE = re.compile(r"<!DOCTYPE(?:[^\[>]|\[.*?\])*>", re.DOTALL)  # its internal subset in brackets
 # A start tag (name, attributes with quoted values that may hold '>', then '/>' or '>') or an end tag.
 _TAG = re.compile(r"""<(?:/[^>]*>|[^\s/>!?](?:[^>"'/]|/(?!>)|"[^"]*"|'[^']*')*(/?)>)""")
 _NAME = re.compile(r"<[^\s/>]+")
@@ -72,6 +72,16 @@ def decode(data: bytes) -> str:
         return data.decode("utf-8", errors="replace")
 
 
+def _markup_end(text: str, at: int) -> int | None:
+    """The end of the comment, CDATA section, processing instruction or DOCTYPE at ``at``."""
+    for opening, closing in (("<!--", "-->"), ("<![CDATA[", "]]>"), ("<?", "?>")):
+        if text.startswith(opening, at):
+            close = text.find(closing, at + len(opening))
+            return close + len(closing) if close >= 0 else None
+    doctype = _DOCTYPE.match(text, at)
+    return doctype.end() if doctype else None
+
+
 class Source:
     """One source text, its line ends normalised as XML does (CR LF and CR read as LF)."""
 
@@ -93,24 +103,41 @@ class Source:
     def _holes(self) -> list[tuple[int, int]]:
         """Comments, CDATA, processing instructions and DOCTYPE that hold a '<' of their own."""
         text = self.text
-        return [(m.start(), m.end()) for m in _IGNORED.finditer(text) if text.find("<", m.start() + 1, m.end()) >= 0]
+        holes = []
+        # the next '<!' and '<?', each searched again only once passed (-1: none left)
+        marks = {"<!": text.find("<!"), "<?": text.find("<?")}
+        at = 0
+        while True:
+            for mark, found in marks.items():
+                if 0 <= found < at:
+                    marks[mark] = text.find(mark, at)
+            pending = [found for found in marks.values() if found >= 0]
+            if not pending:
+                return holes
+            at = min(pending)
+            end = _markup_end(text, at)
+            if end is None:  # not closed: no markup to step over
+                at += 2
+                continue
+            if text.find("<", at + 1, end) >= 0:
+                holes.append((at, end))
+            at = end
 
-    def _outside(self, offsets: list[int]) -> list[int]:
-        holes = self._holes
-        if not holes:
-            return offsets
-        ends = [end for _, end in holes]
-        kept = []
-        for offset in offsets:
-            i = bisect.bisect_right(ends, offset)
-            if i == len(holes) or offset < holes[i][0]:
-                kept.append(offset)
-        return kept
+    def _between_holes(self, pattern: re.Pattern, begin: int = 0, end: int | None = None) -> Iterator[re.Match]:
+        """The matches of ``pattern`` between ``begin`` and ``end``, outside the holes."""
+        end = len(self.text) if end is None else end
+        for hole_start, hole_end in self._holes:
+            if hole_start >= end:
+                break
+            if hole_end > begin:
+                yield from pattern.finditer(self.text, begin, hole_start)
+                begin = hole_end
+        yield from pattern.finditer(self.text, begin, end)
 
     @cached_property
     def starts(self) -> list[int]:
         """The offset of every element's ``<``, in document order."""
-        return self._outside([m.start() for m in _ELEMENT.finditer(self.text)])
+        return [match.start() for match in self._between_holes(_ELEMENT)]
 
     def start(self, index: int, tag: str | None = None) -> int | None:
         """The offset of the ``<`` of the element ``index`` (in document order), checked
@@ -121,7 +148,7 @@ class Source:
             batch = [m.start() for m in itertools.islice(self._scan, max(1024, index + 1 - len(found)))]
             if not batch:
                 return None
-            found.extend(self._outside(batch))
+            found.extend(batch)
         start = found[index]
         if tag is None:
             return start
@@ -147,14 +174,9 @@ class Source:
                 open_.append(len(found) - 1)
         return found
 
-    def _tags(self, begin: int = 0, end: int | None = None):
+    def _tags(self, begin: int = 0, end: int | None = None) -> Iterator[re.Match]:
         """The start and end tags between two offsets, outside comments and the like."""
-        holes = self._holes
-        hole_ends = [e for _, e in holes]
-        for match in _TAG.finditer(self.text, begin, len(self.text) if end is None else end):
-            i = bisect.bisect_right(hole_ends, match.start())
-            if i == len(holes) or match.start() < holes[i][0]:
-                yield match
+        return self._between_holes(_TAG, begin, end)
 
     def tag(self, index: int) -> str | None:
         """The name written in the start tag of element ``index``."""
@@ -177,8 +199,8 @@ class Source:
         return []
 
     @cached_property
-    def _scan(self):
-        return _ELEMENT.finditer(self.text)
+    def _scan(self) -> Iterator[re.Match]:
+        return self._between_holes(_ELEMENT)
 
     @cached_property
     def spans(self) -> list[tuple[int, int, int]]:
