@@ -9,6 +9,8 @@ import sys
 from pathlib import Path
 
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
 from lxml import etree
 
 from urdfcli.document import tag_name
@@ -273,6 +275,28 @@ def test_positions_skip_markup_that_opens_no_element():
         ((3, 1), (3, 8), (5, 11)),
         ((4, 3), (5, 3), (5, 3)),
     ]
+
+
+_MARKUP = [
+    "<!-- <link> -->", "<!---->", "<![CDATA[ <joint> ]]>", "<?pi <x> ?>", "<?pi?>", "text ?> ]] -->",
+    "<a>", "</a>", "<b/>", "<c d='>'\n/>", "\n", "<!-- <!-- ",
+]
+
+
+@settings(max_examples=1000, deadline=None)
+@given(st.lists(st.sampled_from(_MARKUP), max_size=12))
+def test_element_starts_are_those_of_the_parsed_tree(pieces):
+    """On any well-formed mix of elements and markup that opens none (which may hold
+    a '<'), the starts found in the text are one per element, with its tag and line."""
+    text = '<?xml version="1.0"?>\n<!DOCTYPE r [ <!ELEMENT r ANY> ]>\n<r>' + "".join(pieces) + "</r>"
+    try:
+        root = etree.fromstring(text.encode(), etree.XMLParser(resolve_entities=False, load_dtd=False))
+    except etree.XMLSyntaxError:
+        return
+    elements = list(root.iter(etree.Element))
+    source = Source(text)
+    assert [source.tag(index) for index in range(len(elements))] == [element.tag for element in elements]
+    assert len(source.starts) == len(elements)
 
 
 def test_a_diagnostic_about_one_attribute_points_at_it(tmp_path, monkeypatch):
