@@ -60,6 +60,33 @@ def test_nearest_pyproject_with_a_urdfcli_table_wins(tmp_path):
     assert "D002" not in codes(model) and "S001" not in codes(model)
 
 
+@pytest.mark.parametrize(
+    "toml",
+    [
+        '[tool.urdfcli]\nextend-select = ["S"]\n',
+        '[ tool . "urdfcli" ]\nextend-select = ["S"]\n',
+        "['tool'.'urdfcli']\nextend-select = ['S']\n",
+        '[tool]\nurdfcli = { extend-select = ["S"] }\n',
+        'tool.urdfcli.extend-select = ["S"]\n[project]\nname = "x"\n',
+        'tool = { urdfcli = { extend-select = ["S"] } }\n',
+    ],
+)
+def test_every_toml_spelling_of_the_table_is_found(tmp_path, toml):
+    write(tmp_path, "pyproject.toml", toml)
+    model = write(tmp_path, "urdf/robot.urdf", MODEL)
+    assert {"S001", "S002"} <= set(codes(model))
+
+
+def test_a_pyproject_without_the_table_is_not_parsed(tmp_path, monkeypatch):
+    """Most pyproject.toml files are another tool's: naming urdfcli elsewhere does not make one ours."""
+    from urdfcli import config
+
+    write(tmp_path, "pyproject.toml", '[project]\nname = "urdfcli"\n[project.scripts]\nurdfcli = "x:y"\n[tool.ruff]\nline-length = 1\n')
+    model = write(tmp_path, "urdf/robot.urdf", MODEL)
+    monkeypatch.setattr(config, "_read_toml", lambda path: pytest.fail(f"{path} parsed"))
+    assert config.find(model.parent) is None
+
+
 def test_a_run_looks_at_each_folder_once(tmp_path, monkeypatch):
     """Inputs of one repository share their ancestors: a run asks each folder once
     for its configuration, and outside a run every question is asked anew."""

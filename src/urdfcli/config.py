@@ -30,13 +30,14 @@ the working directory; a glob without a ``/`` also matches a file's name alone.
 
 from __future__ import annotations
 
+import re
 from dataclasses import dataclass, field, replace
 from fnmatch import fnmatchcase
 from pathlib import Path
 from typing import Any
 
 from .diagnostics import Severity
-from .folders import nearest
+from .folders import nearest, remembered
 from .rules import Rule, UnknownRule, load_all, lookup
 from .suggestions import close_matches
 
@@ -287,6 +288,17 @@ def _read_toml(path: Path) -> dict[str, Any]:
 
 
 _TABLES: dict[tuple[Path, int, int], dict[str, Any] | None] = {}
+# Where TOML can open tool.urdfcli: a header or dotted key tool.urdfcli (spaces and quotes
+# allowed), or a [tool] table or tool = {...} that may hold it.
+_MAY_HOLD_TABLE = re.compile(r"""tool['"]?\s*\.\s*['"]?urdfcli|^\s*\[\s*['"]?tool['"]?\s*\]|^\s*['"]?tool['"]?\s*=""", re.MULTILINE)
+
+
+def _may_hold_table(path: Path) -> bool:
+    """Whether a pyproject.toml may define tool.urdfcli (when it cannot be read, reading it says why)."""
+    try:
+        return _MAY_HOLD_TABLE.search(path.read_bytes().decode("utf-8", "replace")) is not None
+    except OSError:
+        return True
 
 
 def _table(path: Path) -> dict[str, Any] | None:
@@ -294,6 +306,8 @@ def _table(path: Path) -> dict[str, Any] | None:
     Cached while the file is unchanged."""
     stat = path.stat()
     key = (path.resolve(), stat.st_mtime_ns, stat.st_size)
+    if key not in _TABLES and path.name == "pyproject.toml" and not _may_hold_table(path):
+        _TABLES[key] = None  # most pyproject.toml files are not ours: not parsed (nor tomllib imported)
     if key not in _TABLES:
         document = _read_toml(path)
         table = document.get("tool", {}).get("urdfcli") if path.name == "pyproject.toml" else document
@@ -331,7 +345,7 @@ def discover(file: str) -> Config:
     """The configuration that applies to a file: the nearest one above it, else the defaults."""
     start = Path.cwd() if file == "-" else Path(file).resolve().parent
     found = find(start)
-    return read(found) if found is not None else Config()
+    return remembered(("configuration", found), lambda: read(found)) if found is not None else Config()
 
 
 def for_input(file: str, explicit: Path | None = None, isolated: bool = False) -> Config:

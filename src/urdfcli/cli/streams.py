@@ -12,6 +12,9 @@ import os
 import sys
 
 
+_RICH_VARIABLES = ("FORCE_COLOR", "TTY_COMPATIBLE", "TTY_INTERACTIVE")  # each may make rich style a stream that is no terminal
+
+
 class Stream:
     """What the commands use of a rich ``Console``: ``print``, ``file``, ``is_terminal``,
     ``color_system``; anything else goes to the console (made on first use)."""
@@ -44,7 +47,7 @@ class Stream:
         A forced terminal, or any variable rich reads to decide, leaves the decision to rich."""
         if self._console is not None or self._options.get("force_terminal") is not None:
             return False
-        if {"FORCE_COLOR", "TTY_COMPATIBLE", "TTY_INTERACTIVE"} & os.environ.keys():
+        if any(name in os.environ for name in _RICH_VARIABLES):
             return False
         isatty = getattr(self.file, "isatty", None)
         try:
