@@ -275,7 +275,7 @@ class Reader:
         if kind == "sphere":
             radius = self.number(shape, "radius", required=True)
             self.positive(shape, "radius", radius)
-            return Geometry(kind, self.at(shape), radius=radius) if radius is not None else None
+            return Geometry(kind, self._index[shape], None, radius) if radius is not None else None
         if kind == "box":
             text = shape.get("size")
             if text is None:
@@ -299,7 +299,7 @@ class Reader:
             radius = self.number(shape, "radius")
             self.positive(shape, "length", length)
             self.positive(shape, "radius", radius)
-            return Geometry(kind, self.at(shape), radius=radius, length=length) if None not in (length, radius) else None
+            return Geometry(kind, self._index[shape], None, radius, length) if None not in (length, radius) else None
         if kind == "mesh":
             filename = shape.get("filename")
             if filename is None:
@@ -308,7 +308,7 @@ class Reader:
             scale = self.vector(shape, "scale", (1.0, 1.0, 1.0))
             if filename:
                 self.resources.append(Resource(self._index[shape], "mesh", filename))
-            return Geometry(kind, self.at(shape), filename=filename, scale=scale) if scale is not None else None
+            return Geometry(kind, self._index[shape], None, None, None, filename, scale) if scale is not None else None
         self.report("G002", f"unknown shape <{kind}> in <geometry>", shape, "URDF shapes are box, cylinder, sphere and mesh")
         return None
 
