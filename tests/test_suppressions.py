@@ -51,6 +51,19 @@ def test_a_comment_in_a_utf16_file_silences_too(tmp_path):
     assert [d.code for d in lint_file(str(path), Config(select=("I006", "U"))).diagnostics] == []
 
 
+def test_a_file_whose_bytes_hold_no_comment_is_not_read_again(tmp_path, monkeypatch):
+    """The input's bytes tell, while they are read, that no suppression comment is in them."""
+    from urdfcli import positions
+
+    asked = []
+    text_of = positions.text_of
+    monkeypatch.setattr(positions, "text_of", lambda name, containing=None: asked.append(name) or text_of(name, containing))
+    assert codes(tmp_path, SENSOR.format(comment="")) == [(7, "I006")]
+    assert asked == []
+    assert codes(tmp_path, SENSOR.format(comment="<!-- urdfcli: noqa: I006 -->")) == []
+    assert asked == [str(tmp_path / "robot.urdf")]
+
+
 def test_the_rule_name_is_the_registered_one():
     from urdfcli.rules import load_all
 

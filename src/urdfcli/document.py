@@ -23,6 +23,7 @@ if TYPE_CHECKING:
     from .expansion import Origin
 
 NAMED = {"link", "joint", "material", "transmission", "gazebo"}
+SUPPRESSION_MARK = "urdfcli"  # every suppression comment (``<!-- urdfcli: noqa -->``) names it
 
 
 def tag_name(element: etree._Element) -> str:
@@ -47,6 +48,9 @@ class Document:
     includes: list[str] = field(default_factory=list)
     origins: list[Origin | None] | None = None  # xacro inputs: one per element
     tops: array = field(default_factory=lambda: array("l"))  # the index of each top-level element, as read
+    # Whether the file's own text may hold a suppression comment (SUPPRESSION_MARK), told
+    # from its bytes while they are at hand (None: not told; look in the file).
+    may_suppress: bool | None = None
     readable: bool = field(init=False)  # whether a model could be read (stays true once data is let go of)
 
     def __post_init__(self) -> None:

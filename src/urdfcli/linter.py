@@ -18,6 +18,7 @@ from pathlib import Path
 
 from .config import Config
 from .diagnostics import Diagnostic, Location, Severity
+from .document import SUPPRESSION_MARK
 from .load import STDIN, InputError, LoadOptions, load, load_document, read_input
 from .loaded import Loaded
 from .packages import PackageError, PackageResolver
@@ -112,8 +113,10 @@ def configured(
     selected = [d for d in diagnostics if unreadable or enabled(d.code, d.file)]
     files = {loaded.document.shown, *loaded.document.includes}
     files |= {place.file for d in selected for place in (d.location, *d.location.trace)}
+    if loaded.document.may_suppress is False:  # told while its bytes were read
+        files.discard(loaded.document.shown)
     sources = [] if unreadable else sorted(files)  # nor silenced by a comment
-    found = [s for file in sources if (text := positions.text_of(file, containing="urdfcli")) is not None for s in suppressions.parse(file, text)]
+    found = [s for file in sources if (text := positions.text_of(file, containing=SUPPRESSION_MARK)) is not None for s in suppressions.parse(file, text)]
     kept = suppressions.apply(selected, found, lambda code: ran(code) and enabled(code, path))
     kept = [d for d in kept if d.code not in ("U001", "U002") or enabled(d.code, d.file)]
     kept = [_with_severity(d, config) for d in kept]

@@ -20,7 +20,7 @@ from lxml import etree
 
 from .diagnostics import Diagnostic, Location
 from . import positions
-from .document import Document
+from .document import SUPPRESSION_MARK, Document
 from .loaded import Loaded
 from .packages import PackageResolver
 from .rules import Rule, load_all, load_check
@@ -216,6 +216,8 @@ def load(path: str, options: LoadOptions = LoadOptions(), data: bytes | None = N
         document.data, document.readable = None, False
         loaded.diagnostics.append(_error(error.code, error.message, Location(document.shown, error.line, error.column)))
         return loaded
+    if not document.is_xacro and document.file is not None:
+        document.may_suppress = positions.may_contain(document.data, SUPPRESSION_MARK)
     document.data = None
     loaded.diagnostics += found
     loaded.robot = robot

@@ -282,9 +282,15 @@ def text_of(name: str, containing: str | None = None) -> str | None:
         data = Path(name).read_bytes()
     except OSError:
         return None
-    if containing is not None and containing.encode() not in data and ascii_compatible(data):
+    if containing is not None and not may_contain(data, containing):
         return None
     return decode(data)
+
+
+def may_contain(data: bytes, text: str) -> bool:
+    """Whether the document ``data`` may contain ``text`` (ASCII): told from the bytes
+    when they can tell, true otherwise."""
+    return text.encode() in data or not ascii_compatible(data)
 
 
 def source(name: str) -> Source | None:

@@ -24,6 +24,7 @@ from dataclasses import dataclass, field
 
 from .config import matches, selector
 from .diagnostics import Diagnostic, Location
+from .document import SUPPRESSION_MARK
 from .positions import Source
 from .rules import load_all
 
@@ -70,7 +71,7 @@ class Suppression:
 
 def parse(file: str, text: str) -> list[Suppression]:
     """Every urdfcli suppression comment in one source text."""
-    if "urdfcli" not in text:
+    if SUPPRESSION_MARK not in text:
         return []
     source = Source(text)
     text = source.text
