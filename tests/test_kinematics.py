@@ -3,10 +3,11 @@ two parents, loops (of fixed joints too) and joints naming missing links."""
 
 from __future__ import annotations
 
+import networkx as nx
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from urdfcli.kinematics import children_by_joint_name, reached, rigid_bodies, roots, subtree_masses, walk
+from urdfcli.kinematics import build_graph, children_by_joint_name, has_loop, reached, rigid_bodies, roots, subtree_masses, walk
 from urdfcli.model import IDENTITY, Joint, Link, Robot
 
 LINKS = [f"l{i}" for i in range(8)]
@@ -77,3 +78,9 @@ def test_subtree_mass_of_a_tree_root_is_the_mass_of_what_it_reaches(robot, masse
         assert set(below) <= set(totals)
         if not has_two_parents:  # in a tree each link's mass is carried once
             assert abs(totals[root] - sum(mass(link) for link in below)) < 1e-6 * (1 + totals[root])
+
+
+@settings(max_examples=300, deadline=None)
+@given(GRAPHS)
+def test_a_loop_is_found_as_networkx_finds_one(robot):
+    assert has_loop(robot) is not nx.is_directed_acyclic_graph(build_graph(robot))

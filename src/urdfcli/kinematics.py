@@ -101,9 +101,18 @@ def reached(children: dict[str, list[Joint]], start: str) -> list[str]:
     return order
 
 
+def walks(robot: Robot) -> dict[str, list[str]]:
+    """Each root's links in the order of ``walk``, worked out once."""
+    return robot.remembered("walks", lambda: {root: reached(children_by_joint_name(robot), root) for root in roots(robot)})
+
+
 def has_loop(robot: Robot) -> bool:
-    """Whether the joints form a directed loop (Kahn's algorithm, without networkx)."""
+    """Whether the joints form a directed loop (without networkx). When no link has
+    two parents, a loop is exactly what the roots do not reach; else Kahn's algorithm."""
     children = children_by_joint_name(robot)  # shared with the walks that follow
+    joined = sum(len(joints) for joints in children.values())
+    if joined == len(robot.links) - len(roots(robot)):  # one parent joint per link that has one
+        return sum(len(order) for order in walks(robot).values()) < len(robot.links)
     waiting = dict.fromkeys(robot.links, 0)  # parent joints not yet visited, per link
     for joints in children.values():
         for joint in joints:
@@ -259,8 +268,8 @@ def subtree_masses(robot: Robot, mass: Callable[[str], float]) -> dict[str, floa
     """Each link's mass plus the mass of every link below it, for the links the roots reach."""
     children = children_by_joint_name(robot)
     total: dict[str, float] = {}
-    for root in roots(robot):
-        for link in reversed(reached(children, root)):  # every link after the links below it
+    for order in walks(robot).values():
+        for link in reversed(order):  # every link after the links below it
             carried = mass(link)
             for joint in children.get(link, ()):
                 if joint.child != link:
