@@ -1,9 +1,9 @@
 """The loading core: one pipeline from a path to a checked model.
 
 read bytes -> expand xacro where it is used (in a bounded worker, origins
-kept) -> stream the model's elements (lxml, nothing external), reading the
-model tolerantly and keeping no tree -> build the kinematic graph -> run the
-checks. Nothing here exits the process.
+kept) -> read the model's elements one top-level element at a time (lxml,
+nothing external; a large document streamed), tolerantly, keeping no tree ->
+build the kinematic graph -> run the checks. Nothing here exits the process.
 """
 
 from __future__ import annotations
@@ -150,7 +150,7 @@ def load_document(
     named_xacro = force_xacro or path.endswith(".xacro")
     root = None if named_xacro else xacro_document(data)
     if root is None and not named_xacro:
-        return Document(path, data, file), []  # read as it streams: see model.read
+        return Document(path, data, file), []  # read by model.read
     try:
         root = root if root is not None else parse_bytes(data)  # with the white space xacro lays out
     except XmlError as error:

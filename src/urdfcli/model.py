@@ -158,8 +158,9 @@ class Robot:
 
 
 class Reader:
-    """Builds a Robot from a Document, collecting diagnostics. The document is
-    streamed: each element written at the top level is read whole, then dropped."""
+    """Builds a Robot from a Document, collecting diagnostics. Each element written
+    at the top level is read whole, in document order, and no tree is kept once the
+    robot is read (a large document is streamed: see xmlsafe.elements)."""
 
     def __init__(self, document: Document, vocabulary: bool = False):
         self.document = document
@@ -464,7 +465,7 @@ class Reader:
 
     # -- robot -----------------------------------------------------------------
     def robot(self) -> Robot:
-        """The robot, read from the document's elements as they stream by; raises
+        """The robot, read from the document's elements as they come; raises
         XmlError when the document turns out not to be well-formed."""
         stream = elements(self.document.data)
         root = next(stream)

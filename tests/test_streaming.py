@@ -1,0 +1,42 @@
+"""A small document is parsed whole, a large one streamed: both read the same model
+and report the same problems, where they are."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import pytest
+
+from conftest import example_robot_data
+from test_malformed import MALFORMED
+from urdfcli import xmlsafe
+from urdfcli.load import LoadOptions, load
+
+
+def readings(path: Path, monkeypatch) -> list:
+    """What a load reports on ``path``, and the links and joints it read, read whole and streamed."""
+    found = []
+    for whole_up_to in (xmlsafe.WHOLE_UP_TO, 0):
+        monkeypatch.setattr(xmlsafe, "WHOLE_UP_TO", whole_up_to)
+        loaded = load(str(path), LoadOptions(checks="all"))
+        robot = loaded.robot
+        model = (robot.links, robot.joints, robot.materials, robot.resources, list(loaded.document.tops)) if robot else None
+        found.append(([(d.code, d.line, d.location.column, d.message, d.element) for d in loaded.diagnostics], model))
+    return found
+
+
+@pytest.mark.parametrize("name", sorted(MALFORMED))
+def test_malformed_documents_read_alike(tmp_path, monkeypatch, name):
+    path = tmp_path / "robot.urdf"
+    path.write_bytes(MALFORMED[name][0])
+    whole, streamed = readings(path, monkeypatch)
+    assert whole == streamed
+
+
+def test_published_models_read_alike(monkeypatch):
+    paths = sorted((example_robot_data() / "robots").rglob("*.urdf"))
+    assert len(paths) > 60
+    assert all(path.stat().st_size <= xmlsafe.WHOLE_UP_TO for path in paths)  # read whole by default
+    for path in paths:
+        whole, streamed = readings(path, monkeypatch)
+        assert whole == streamed, path.name
