@@ -4,7 +4,6 @@ from __future__ import annotations
 
 import heapq
 from collections.abc import Iterable
-from difflib import SequenceMatcher
 
 
 def close_matches(word: str, candidates: Iterable[str], n: int = 1, cutoff: float = 0.6) -> list[str]:
@@ -13,6 +12,8 @@ def close_matches(word: str, candidates: Iterable[str], n: int = 1, cutoff: floa
     upper bounds let through; here candidates are scored in the order of the
     tighter bound, and the scoring stops when that bound falls below the n-th best
     score (a robot's names share most of their letters, so many pass the bounds)."""
+    from difflib import SequenceMatcher  # only when a name is misspelt
+
     matcher = SequenceMatcher()
     matcher.set_seq2(word)
     bounded = []

@@ -7,7 +7,6 @@ from typing import TYPE_CHECKING
 
 from ..escape import escape
 from . import check_urdf, concise_line, github, summary_line
-from . import json as json_format
 from .text import print_diagnostic, print_tree
 
 if TYPE_CHECKING:
@@ -20,6 +19,8 @@ def emit(results, output_format: str, stdout: Console, stderr: Console, tree: bo
     Machine formats go to the standard streams as plain text; the text format
     goes through the given rich consoles (results on stdout, diagnostics on stderr)."""
     if output_format == "json":
+        from . import json as json_format  # (json: only for this format)
+
         sys.stdout.write(json_format.render(results) + "\n")
     elif output_format == "sarif":
         from ..formatters import sarif

@@ -8,7 +8,6 @@ parent, or a loop closing) is shown once more, marked, and not followed.
 
 from __future__ import annotations
 
-import json
 import math
 from collections import Counter
 from collections.abc import Callable, Iterator
@@ -242,6 +241,8 @@ def tree_json(robot: Robot, rows: list[Row], summary: Summary) -> str:
 
     Written without recursion, so a chain of any depth serialises.
     """
+    import json  # only for this format
+
     dump = json.dumps
     out = [f'{{"version": 1, "robot": {dump(robot.name)}, "root": ']
     open_depths: list[int] = []  # depths of the links whose children list is open
