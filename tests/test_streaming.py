@@ -40,3 +40,14 @@ def test_published_models_read_alike(monkeypatch):
     for path in paths:
         whole, streamed = readings(path, monkeypatch)
         assert whole == streamed, path.name
+
+
+def test_a_kept_block_holds_only_itself(tmp_path, monkeypatch):
+    """The blocks the model keeps (<gazebo>...) are out of the document's tree: with
+    many files checked at once, each keeps its block, not its whole document."""
+    path = tmp_path / "robot.urdf"
+    path.write_text('<robot name="r"><link name="a"/><gazebo reference="a"><mu1>1</mu1></gazebo><link name="b"/></robot>')
+    for whole_up_to in (xmlsafe.WHOLE_UP_TO, 0):
+        monkeypatch.setattr(xmlsafe, "WHOLE_UP_TO", whole_up_to)
+        (block,) = load(str(path), LoadOptions(checks="none")).robot.extensions
+        assert block.tag == "gazebo" and block.getparent() is None

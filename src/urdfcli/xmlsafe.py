@@ -78,16 +78,16 @@ WHOLE_UP_TO = 1 << 20
 def elements(data: bytes) -> Iterator[etree._Element]:
     """The document's root element (read its attributes only), then each element
     written at the top level, whole, in document order; blank text, comments and
-    processing instructions dropped. A document larger than WHOLE_UP_TO is streamed:
-    each top-level element is taken out of the tree once the next one is asked for,
-    so no more than one is held at a time. Raises XmlError as :func:`parse_bytes`
-    would, when the problem is met."""
+    processing instructions dropped. Each top-level element is taken out of the tree
+    once the next one is asked for, and a document larger than WHOLE_UP_TO is
+    streamed, so that no more than one is held at a time. Raises XmlError as
+    :func:`parse_bytes` would, when the problem is met."""
     if not data or data.isspace():  # (strip() would copy a large document)
         raise XmlError("the document is empty", 1, 1)
     if len(data) <= WHOLE_UP_TO:
         root = parse_bytes(data, keep_blank_text=False, elements_only=True)
         yield root
-        yield from list(root)
+        yield from _finished(root, None)  # taken out as they are read: a block the model keeps holds no more
         return
     if b"<!DOCTYPE" in data or b"<!ENTITY" in data:
         parse_bytes(data)  # entity declarations are refused there, with their own message
