@@ -290,13 +290,14 @@ def _read_toml(path: Path) -> dict[str, Any]:
 _TABLES: dict[tuple[Path, int, int], dict[str, Any] | None] = {}
 # Where TOML can open tool.urdfcli: a header or dotted key tool.urdfcli (spaces and quotes
 # allowed), or a [tool] table or tool = {...} that may hold it.
-_MAY_HOLD_TABLE = re.compile(r"""tool['"]?\s*\.\s*['"]?urdfcli|^\s*\[\s*['"]?tool['"]?\s*\]|^\s*['"]?tool['"]?\s*=""", re.MULTILINE)
+# (a pattern, compiled by re when a pyproject.toml is first met, not at every start)
+_MAY_HOLD_TABLE = r"""(?m)tool['"]?\s*\.\s*['"]?urdfcli|^\s*\[\s*['"]?tool['"]?\s*\]|^\s*['"]?tool['"]?\s*="""
 
 
 def _may_hold_table(path: Path) -> bool:
     """Whether a pyproject.toml may define tool.urdfcli (when it cannot be read, reading it says why)."""
     try:
-        return _MAY_HOLD_TABLE.search(path.read_bytes().decode("utf-8", "replace")) is not None
+        return re.search(_MAY_HOLD_TABLE, path.read_bytes().decode("utf-8", "replace")) is not None
     except OSError:
         return True
 

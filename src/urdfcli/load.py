@@ -65,7 +65,7 @@ _XACRO_ELEMENT = "//*[" + " or ".join(f"namespace-uri() = '{ns}'" for ns in sort
 _SUBSTITUTION = "//@*[contains(., '${') or contains(., '$(')] | //text()[contains(., '${') or contains(., '$(')]"
 _HAS_XACRO_ELEMENT = etree.XPath(f"boolean({_XACRO_ELEMENT})")
 _USES_XACRO = etree.XPath(f"boolean({_XACRO_ELEMENT} | {_SUBSTITUTION})")
-_DECLARES_PREFIX = re.compile(rb"""xmlns:xacro\s*=\s*["']\Z""")  # just before a namespace
+_DECLARES_PREFIX = rb"""xmlns:xacro\s*=\s*["']\Z"""  # just before a namespace (compiled when first met)
 
 
 def is_xacro(data: bytes) -> bool:
@@ -124,7 +124,7 @@ def _namespace_mentions(data: bytes) -> Iterator[int]:
 
 def _binds_prefix(data: bytes, at: int) -> bool:
     """Whether the mention of xacro's namespace at ``at`` is the value of ``xmlns:xacro``."""
-    if _DECLARES_PREFIX.search(data, max(0, at - 64), at) is None:
+    if re.search(_DECLARES_PREFIX, data[max(0, at - 64) : at]) is None:
         return False
     end = data.find(data[at - 1 : at], at)  # the closing quote
     return data[at:end].decode("ascii", "replace") in XACRO_NAMESPACES
