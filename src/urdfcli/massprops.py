@@ -49,12 +49,13 @@ def principal_moments(m: Matrix) -> tuple[float, float, float]:
     p2 = (a - q) ** 2 + (b - q) ** 2 + (c - q) ** 2 + 2.0 * off
     p = math.sqrt(p2 / 6.0)
     inv = 1.0 / p
-    B = [[(m[i][j] - (q if i == j else 0.0)) * inv for j in range(3)] for i in range(3)]
-    det_b = (
-        B[0][0] * (B[1][1] * B[2][2] - B[1][2] * B[2][1])
-        - B[0][1] * (B[1][0] * B[2][2] - B[1][2] * B[2][0])
-        + B[0][2] * (B[1][0] * B[2][1] - B[1][1] * B[2][0])
+    # B = (m - q I) / p, written out (a closed form called for every tensor of a model)
+    (b00, b01, b02), (b10, b11, b12), (b20, b21, b22) = (
+        ((m[0][0] - q) * inv, m[0][1] * inv, m[0][2] * inv),
+        (m[1][0] * inv, (m[1][1] - q) * inv, m[1][2] * inv),
+        (m[2][0] * inv, m[2][1] * inv, (m[2][2] - q) * inv),
     )
+    det_b = b00 * (b11 * b22 - b12 * b21) - b01 * (b10 * b22 - b12 * b20) + b02 * (b10 * b21 - b11 * b20)
     r = max(-1.0, min(1.0, det_b / 2.0))
     phi = math.acos(r) / 3.0
     big = q + 2.0 * p * math.cos(phi)
