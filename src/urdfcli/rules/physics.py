@@ -116,12 +116,13 @@ def massless_moving_link(loaded):
     robot = loaded.robot
     if not any(link.inertial is not None for link in robot.links.values()):
         return
+    if all(link_mass(robot, name) > 0 for name in robot.links):
+        return  # every joint moves some mass (the common case, told without walking the tree)
     carried = subtree_masses(robot, lambda name: link_mass(robot, name))
-    found = bodies(loaded)
     for joint in robot.joints.values():
-        if not joint.moving or joint.child not in carried or joint.parent not in found or carried[joint.child] > 0:
+        if not joint.moving or joint.child not in carried or joint.parent not in robot.links or carried[joint.child] > 0:
             continue
-        above = found[joint.parent].joint
+        above = bodies(loaded)[joint.parent].joint
         if above is not None and carried.get(above.child, 1.0) == 0:
             continue  # reported at the joint above, which moves this branch too
         branch = _branch(robot, joint.child)
