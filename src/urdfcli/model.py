@@ -324,14 +324,14 @@ class Reader:
             elif tag == "material" and visual:
                 material = child if material is None else material
         pose = self.pose(origin)
-        shape = self.geometry(element, geometry)
+        read_geometry = self.geometry(element, geometry)
         material_name = None
         if material is not None:
             parsed = self.material(material, top_level=False)
             if parsed is not None:
                 material_name = parsed.name
                 self._inline_materials.append(parsed)
-        return Shape(self._index[element], pose, shape, material_name)
+        return Shape(self._index[element], pose, read_geometry, material_name)
 
     def inertial(self, element: etree._Element) -> Inertial:
         origin = mass_element = inertia_element = None

@@ -69,9 +69,9 @@ def parse_bytes(data: bytes, keep_blank_text: bool = True, elements_only: bool =
     return root
 
 
-# A document up to this size is parsed whole: lxml then reports no event per
-# element, which reads the published models in two thirds of the time. A larger one
-# is streamed, so that its tree (about twelve times its size) is never whole in memory.
+# A document up to this size is parsed whole, which is faster: streaming makes lxml
+# call back into Python at the start and end of every element. A larger one is
+# streamed, so that its tree (about twelve times its size) is never whole in memory.
 WHOLE_UP_TO = 1 << 20
 
 
