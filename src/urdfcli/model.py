@@ -314,36 +314,23 @@ class Reader:
         return None
 
     def shape(self, element: etree._Element, visual: bool) -> Shape:
-        origin = geometry = material = None
-        for child in element:  # the first of each tag, as urdfdom reads it
-            tag = child.tag
-            if tag == "geometry":
-                geometry = child if geometry is None else geometry
-            elif tag == "origin":
-                origin = child if origin is None else origin
-            elif tag == "material" and visual:
-                material = child if material is None else material
-        pose = self.pose(origin)
-        read_geometry = self.geometry(element, geometry)
+        found = first_children(element)
+        pose = self.pose(found.get("origin"))
+        geometry = self.geometry(element, found.get("geometry"))
+        material = found.get("material") if visual else None
         material_name = None
         if material is not None:
             parsed = self.material(material, top_level=False)
             if parsed is not None:
                 material_name = parsed.name
                 self._inline_materials.append(parsed)
-        return Shape(self._index[element], pose, read_geometry, material_name)
+        return Shape(self._index[element], pose, geometry, material_name)
 
     def inertial(self, element: etree._Element) -> Inertial:
-        origin = mass_element = inertia_element = None
-        for child in element:  # the first of each tag, as urdfdom reads it
-            tag = child.tag
-            if tag == "inertia":
-                inertia_element = child if inertia_element is None else inertia_element
-            elif tag == "mass":
-                mass_element = child if mass_element is None else mass_element
-            elif tag == "origin":
-                origin = child if origin is None else origin
-        pose = self.pose(origin)
+        found = first_children(element)
+        pose = self.pose(found.get("origin"))
+        mass_element = found.get("mass")
+        inertia_element = found.get("inertia")
         mass = None
         if mass_element is None:
             self.report("V005", "<inertial> has no <mass>", element)
@@ -358,11 +345,7 @@ class Reader:
             if inertia is None:
                 values = {key: self.number(inertia_element, key, required=True) for key in INERTIA_KEYS}
                 inertia = _remember(_TENSORS, texts, values) if None not in values.values() else None
-        index = self._index
-        return Inertial(
-            index[element], pose, mass, inertia,  # type: ignore[arg-type]
-            index[mass_element] if mass_element is not None else None, index[inertia_element] if inertia_element is not None else None,
-        )
+        return Inertial(self._index[element], pose, mass, inertia, self.at(mass_element), self.at(inertia_element))  # type: ignore[arg-type]
 
     def link(self, element: etree._Element) -> Link:
         name = element.get("name")
