@@ -289,8 +289,8 @@ def _read_toml(path: Path) -> dict[str, Any]:
 
 _TABLES: dict[tuple[Path, int, int], dict[str, Any] | None] = {}
 # Where TOML can open tool.urdfcli: a header or dotted key tool.urdfcli (spaces and quotes
-# allowed), or a [tool] table or tool = {...} that may hold it.
-# (a pattern, compiled by re when a pyproject.toml is first met, not at every start)
+# allowed), or a [tool] table or tool = {...} that may hold it. (Compiled by re when a
+# pyproject.toml is first met, not at every start.)
 _MAY_HOLD_TABLE = r"""(?m)tool['"]?\s*\.\s*['"]?urdfcli|^\s*\[\s*['"]?tool['"]?\s*\]|^\s*['"]?tool['"]?\s*="""
 
 

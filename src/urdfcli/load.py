@@ -82,10 +82,10 @@ def xacro_document(data: bytes) -> etree._Element | None:
     bytes are searched first; the document is parsed only when they cannot tell,
     and the parse is the one xacro then expands."""
     try:
-        ascii = positions.ascii_compatible(data)
-        if ascii and b"$" not in data and b"xacro" not in data:  # ('$' first: a search for one byte is the fastest)
+        searchable = positions.ascii_compatible(data)  # its markup can be searched as bytes
+        if searchable and b"$" not in data and b"xacro" not in data:  # ('$' first: a search for one byte is the fastest)
             return None
-        if ascii and b"[CDATA[" not in data:  # comments can be told apart by bytes
+        if searchable and b"[CDATA[" not in data:  # comments can be told apart by bytes
             if b"$" not in data or not (_written(data, b"${") or _written(data, b"$(")):
                 if not _written(data, b"<xacro:") and all(_binds_prefix(data, at) for at in _namespace_mentions(data)):
                     return None  # each mention of xacro's namespace binds the prefix xacro, which no element uses
