@@ -83,7 +83,7 @@ def test_a_pyproject_without_the_table_is_not_parsed(tmp_path, monkeypatch):
 
     write(tmp_path, "pyproject.toml", '[project]\nname = "urdfcli"\n[project.scripts]\nurdfcli = "x:y"\n[tool.ruff]\nline-length = 1\n')
     model = write(tmp_path, "urdf/robot.urdf", MODEL)
-    monkeypatch.setattr(config, "_read_toml", lambda path: pytest.fail(f"{path} parsed"))
+    monkeypatch.setattr(config, "_read_toml", lambda path, data: pytest.fail(f"{path} parsed"))
     assert config.find(model.parent) is None
 
 

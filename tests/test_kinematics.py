@@ -8,6 +8,8 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from urdfcli.kinematics import build_graph, children_by_joint_name, has_loop, reached, rigid_bodies, roots, subtree_masses, walk
+from urdfcli.document import Document
+from urdfcli.loaded import Loaded
 from urdfcli.model import IDENTITY, Joint, Link, Robot
 
 LINKS = [f"l{i}" for i in range(8)]
@@ -33,11 +35,7 @@ GRAPHS = st.builds(
 
 
 def _parent_joints(robot: Robot) -> dict[str, Joint]:
-    found: dict[str, Joint] = {}
-    for joint in robot.joints.values():
-        if joint.child is not None:
-            found.setdefault(joint.child, joint)
-    return found
+    return Loaded(Document("robot.urdf", None), robot=robot).parent_joints
 
 
 @settings(max_examples=300, deadline=None)

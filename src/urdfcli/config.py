@@ -275,31 +275,20 @@ def _absolute_package_path(entry: str, root: Path) -> str:
     return f"{name}={absolute}" if equals else absolute
 
 
-def _read_toml(path: Path) -> dict[str, Any]:
+def _read_toml(path: Path, data: bytes) -> dict[str, Any]:
     import tomllib  # only where there is a file to read
 
     try:
-        with path.open("rb") as handle:
-            return tomllib.load(handle)
+        return tomllib.loads(data.decode())
     except tomllib.TOMLDecodeError as error:
         raise ConfigError(f"{path}: not valid TOML: {error}") from None
-    except OSError as error:
-        raise ConfigError(f"{path}: cannot read: {error.strerror}") from None
 
 
 _TABLES: dict[tuple[Path, int, int], dict[str, Any] | None] = {}
 # Where TOML can open tool.urdfcli: a header or dotted key tool.urdfcli (spaces and quotes
 # allowed), or a [tool] table or tool = {...} that may hold it. (Compiled by re when a
 # pyproject.toml is first met, not at every start.)
-_MAY_HOLD_TABLE = r"""(?m)tool['"]?\s*\.\s*['"]?urdfcli|^\s*\[\s*['"]?tool['"]?\s*\]|^\s*['"]?tool['"]?\s*="""
-
-
-def _may_hold_table(path: Path) -> bool:
-    """Whether a pyproject.toml may define tool.urdfcli (when it cannot be read, reading it says why)."""
-    try:
-        return re.search(_MAY_HOLD_TABLE, path.read_bytes().decode("utf-8", "replace")) is not None
-    except OSError:
-        return True
+_MAY_HOLD_TABLE = rb"""(?m)tool['"]?\s*\.\s*['"]?urdfcli|^\s*\[\s*['"]?tool['"]?\s*\]|^\s*['"]?tool['"]?\s*="""
 
 
 def _table(path: Path) -> dict[str, Any] | None:
@@ -307,11 +296,17 @@ def _table(path: Path) -> dict[str, Any] | None:
     Cached while the file is unchanged."""
     stat = path.stat()
     key = (path.resolve(), stat.st_mtime_ns, stat.st_size)
-    if key not in _TABLES and path.name == "pyproject.toml" and not _may_hold_table(path):
-        _TABLES[key] = None  # most pyproject.toml files are not ours: not parsed (nor tomllib imported)
     if key not in _TABLES:
-        document = _read_toml(path)
-        table = document.get("tool", {}).get("urdfcli") if path.name == "pyproject.toml" else document
+        try:
+            data = path.read_bytes()
+        except OSError as error:
+            raise ConfigError(f"{path}: cannot read: {error.strerror}") from None
+        if path.name != "pyproject.toml":
+            table = _read_toml(path, data)
+        elif re.search(_MAY_HOLD_TABLE, data) is None:
+            table = None  # most pyproject.toml files are not ours: not parsed (nor tomllib imported)
+        else:
+            table = _read_toml(path, data).get("tool", {}).get("urdfcli")
         if table is not None and not isinstance(table, dict):
             raise ConfigError(f"{path}: [tool.urdfcli] must be a table")
         _TABLES[key] = table

@@ -236,10 +236,6 @@ def rigid_bodies(robot: Robot, parent_joints: Mapping[str, Joint]) -> dict[str, 
     above = {name: joint.parent for name, joint in parent_joints.items() if not joint.moving and joint.parent in links and name in links}
     tops: dict[str, str] = {}
     for name in links:
-        if name not in above:
-            if name not in tops:
-                tops[name] = name
-            continue
         path: list[str] = []
         link = name
         while link not in tops and link not in path:

@@ -88,9 +88,6 @@ class Mimic(NamedTuple):
     offset: float = 0.0
 
 
-_PARTS = ("parent", "child", "axis", "limit", "mimic")  # the children of a joint its diagnostics point at
-
-
 class Joint(NamedTuple):
     name: str
     at: int
@@ -276,7 +273,7 @@ class Reader:
         if kind == "sphere":
             radius = self.number(shape, "radius", required=True)
             self.positive(shape, "radius", radius)
-            return Geometry(kind, self._index[shape], None, radius) if radius is not None else None
+            return Geometry(kind, self.at(shape), radius=radius) if radius is not None else None
         if kind == "box":
             text = shape.get("size")
             if text is None:
@@ -300,7 +297,7 @@ class Reader:
             radius = self.number(shape, "radius")
             self.positive(shape, "length", length)
             self.positive(shape, "radius", radius)
-            return Geometry(kind, self._index[shape], None, radius, length) if None not in (length, radius) else None
+            return Geometry(kind, self.at(shape), radius=radius, length=length) if None not in (length, radius) else None
         if kind == "mesh":
             filename = shape.get("filename")
             if filename is None:
@@ -309,33 +306,34 @@ class Reader:
             scale = self.vector(shape, "scale", (1.0, 1.0, 1.0))
             if filename:
                 self.resources.append(Resource(self._index[shape], "mesh", filename))
-            return Geometry(kind, self._index[shape], None, None, None, filename, scale) if scale is not None else None
+            return Geometry(kind, self.at(shape), filename=filename, scale=scale) if scale is not None else None
         self.report("G002", f"unknown shape <{kind}> in <geometry>", shape, "URDF shapes are box, cylinder, sphere and mesh")
         return None
 
     def shape(self, element: etree._Element, visual: bool) -> Shape:
         found = first_children(element)
-        pose = self.pose(found.get("origin"))
+        origin = self.pose(found.get("origin"))
         geometry = self.geometry(element, found.get("geometry"))
-        material = found.get("material") if visual else None
         material_name = None
-        if material is not None:
-            parsed = self.material(material, top_level=False)
-            if parsed is not None:
-                material_name = parsed.name
-                self._inline_materials.append(parsed)
-        return Shape(self._index[element], pose, geometry, material_name)
+        if visual:
+            material = found.get("material")
+            if material is not None:
+                parsed = self.material(material, top_level=False)
+                material_name = parsed.name if parsed else None
+                if parsed is not None:
+                    self._inline_materials.append(parsed)
+        return Shape(self._index[element], origin, geometry, material_name)
 
     def inertial(self, element: etree._Element) -> Inertial:
         found = first_children(element)
-        pose = self.pose(found.get("origin"))
+        origin = self.pose(found.get("origin"))
         mass_element = found.get("mass")
-        inertia_element = found.get("inertia")
         mass = None
         if mass_element is None:
             self.report("V005", "<inertial> has no <mass>", element)
         else:
             mass = self.number(mass_element, "value", required=True)
+        inertia_element = found.get("inertia")
         inertia = None
         if inertia_element is None:
             self.report("V005", "<inertial> has no <inertia>", element)
@@ -345,7 +343,7 @@ class Reader:
             if inertia is None:
                 values = {key: self.number(inertia_element, key, required=True) for key in INERTIA_KEYS}
                 inertia = _remember(_TENSORS, texts, values) if None not in values.values() else None
-        return Inertial(self._index[element], pose, mass, inertia, self.at(mass_element), self.at(inertia_element))  # type: ignore[arg-type]
+        return Inertial(self._index[element], origin, mass, inertia, self.at(mass_element), self.at(inertia_element))  # type: ignore[arg-type]
 
     def link(self, element: etree._Element) -> Link:
         name = element.get("name")
@@ -438,7 +436,7 @@ class Reader:
         if parent is None or child is None:
             missing = " and ".join(t for t, v in (("<parent link>", parent), ("<child link>", child)) if v is None)
             self.report("J004", f"joint '{shown}' has no {missing}", element)
-        parts = tuple([(tag, self._index[found[tag]]) for tag in _PARTS if tag in found])
+        parts = tuple((tag, self._index[found[tag]]) for tag in ("parent", "child", "axis", "limit", "mimic") if tag in found)
         return Joint(name if name is not None else "", self._index[element], joint_type, parent, child, origin, axis, limit, mimic, parts)
 
     @staticmethod
