@@ -82,3 +82,15 @@ def test_subtree_mass_of_a_tree_root_is_the_mass_of_what_it_reaches(robot, masse
 @given(GRAPHS)
 def test_a_loop_is_found_as_networkx_finds_one(robot):
     assert has_loop(robot) is not nx.is_directed_acyclic_graph(build_graph(robot))
+
+
+@settings(max_examples=300, deadline=None)
+@given(GRAPHS)
+def test_children_and_roots_are_those_of_the_joints_naming_two_links(robot):
+    links = robot.links
+    edges = [robot.joints[name] for name in sorted(robot.joints) if robot.joints[name].parent in links and robot.joints[name].child in links]
+    children = children_by_joint_name(robot)
+    for link in links:
+        assert children.get(link, []) == [joint for joint in edges if joint.parent == link]
+    assert set(children) <= set(links)
+    assert roots(robot) == [link for link in links if not any(joint.child == link for joint in edges)]

@@ -9,6 +9,7 @@ from __future__ import annotations
 
 from collections import defaultdict
 from collections.abc import Callable, Iterator, Mapping
+from operator import attrgetter
 from typing import TYPE_CHECKING, NamedTuple
 
 from .diagnostics import Diagnostic
@@ -25,10 +26,24 @@ def build_graph(robot: Robot) -> nx.DiGraph:
 
     graph = nx.DiGraph()
     graph.add_nodes_from(robot.links)
-    for joint in robot.joints.values():
-        if joint.parent in robot.links and joint.child in robot.links:
-            graph.add_edge(joint.parent, joint.child, joint=joint)
+    for joint in joined(robot):
+        graph.add_edge(joint.parent, joint.child, joint=joint)
     return graph
+
+
+def joined(robot: Robot) -> list[Joint]:
+    """The joints whose parent and child links both exist, in document order: the
+    edges of the tree (a joint naming a missing link is J005's). Every tree check
+    starts from these, so the links are looked up once per joint, not once per check."""
+    return robot.remembered("joined", lambda: _joined(robot))
+
+
+def _joined(robot: Robot) -> list[Joint]:
+    links = robot.links
+    return [joint for joint in robot.joints.values() if joint.parent in links and joint.child in links]
+
+
+_name = attrgetter("name")
 
 
 def children_by_joint_name(robot: Robot) -> dict[str, list[Joint]]:
@@ -38,11 +53,8 @@ def children_by_joint_name(robot: Robot) -> dict[str, list[Joint]]:
 
 def _children_by_joint_name(robot: Robot) -> dict[str, list[Joint]]:
     children: dict[str, list[Joint]] = defaultdict(list)
-    links = robot.links
-    for name in sorted(robot.joints):
-        joint = robot.joints[name]
-        if joint.parent in links and joint.child in links:
-            children[joint.parent].append(joint)
+    for joint in sorted(joined(robot), key=_name):  # joint names are unique: the order of sorted(robot.joints)
+        children[joint.parent].append(joint)
     return children
 
 
@@ -51,9 +63,8 @@ def roots(robot: Robot) -> list[str]:
 
 
 def _roots(robot: Robot) -> list[str]:
-    links = robot.links
-    has_parent = {j.child for j in robot.joints.values() if j.parent in links and j.child in links}
-    return [name for name in links if name not in has_parent]
+    has_parent = {joint.child for joint in joined(robot)}
+    return [name for name in robot.links if name not in has_parent]
 
 
 def walk(robot: Robot, start: str, children: dict[str, list[Joint]] | None = None) -> Iterator[tuple[int, Joint | None, str]]:
@@ -147,7 +158,10 @@ def tree_diagnostics(robot: Robot, document: Document) -> list[Diagnostic]:
         out.append(document.diagnostic(code, message, element, hint))
 
     links = robot.links
-    for joint in robot.joints.values():
+    edges = joined(robot)
+    # The joints naming a missing link, or none: looked for only when there are some.
+    dangling = [] if len(edges) == len(robot.joints) else [j for j in robot.joints.values() if j.parent not in links or j.child not in links]
+    for joint in dangling:
         parent, child = joint.parent, joint.child
         if (parent is None or parent in links) and (child is None or child in links):
             continue
@@ -160,16 +174,15 @@ def tree_diagnostics(robot: Robot, document: Document) -> list[Diagnostic]:
                     link_hint(link, robot, other_end),
                 )
     first_parent: dict[str, Joint] = {}
-    for joint in robot.joints.values():
-        if joint.child in links and joint.parent in links:
-            first = first_parent.setdefault(joint.child, joint)
-            if first is not joint:
-                report(
-                    "T003",
-                    f"link '{joint.child}' is the child of joint '{joint.name}' and also of joint '{first.name}'",
-                    joint.at,
-                    "a link has exactly one parent joint; for a closed chain, use a mimic joint or split the link",
-                )
+    for joint in edges:
+        first = first_parent.setdefault(joint.child, joint)
+        if first is not joint:
+            report(
+                "T003",
+                f"link '{joint.child}' is the child of joint '{joint.name}' and also of joint '{first.name}'",
+                joint.at,
+                "a link has exactly one parent joint; for a closed chain, use a mimic joint or split the link",
+            )
     if has_loop(robot):  # rare: only then is networkx worth importing
         import networkx as nx
 
@@ -185,7 +198,7 @@ def tree_diagnostics(robot: Robot, document: Document) -> list[Diagnostic]:
             report("T004", f"the joints form a loop: {path}", first_joint.at, "URDF describes trees: remove one joint of the loop")
     if robot.links:
         # A link whose joint names a missing parent is cut off by that J005 alone: not a second root.
-        cut_off = {j.child for j in robot.joints.values() if j.parent is not None and j.parent not in robot.links}
+        cut_off = {j.child for j in dangling if j.parent is not None and j.parent not in links}
         found = [root for root in roots(robot) if root not in cut_off] or roots(robot)
         if len(found) > 1:
             names = ", ".join(f"'{r}'" for r in found[:5]) + (" ..." if len(found) > 5 else "")
