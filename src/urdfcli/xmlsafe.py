@@ -69,9 +69,10 @@ def parse_bytes(data: bytes, keep_blank_text: bool = True, elements_only: bool =
     return root
 
 
-# A document up to this size is parsed whole, which is faster: streaming makes lxml
-# call back into Python at the start and end of every element. A larger one is
-# streamed, so that its tree (about twelve times its size) is never whole in memory.
+# A document up to this size is parsed whole, which is faster on small documents
+# (streaming sets up a parser per document and hands each link and joint to Python
+# as it ends). A larger one is streamed, so that its tree (about twelve times its
+# size) is never whole in memory; the two take about as long there.
 WHOLE_UP_TO = 1 << 20
 
 
@@ -133,8 +134,7 @@ def _streamed(data: bytes, encoding: str | None = None) -> Iterator[etree._Eleme
 def _finished(root: etree._Element, last: etree._Element | None) -> Iterator[etree._Element]:
     """The top-level elements up to ``last`` (to the end with None), each taken out
     of the tree once the next one is asked for."""
-    while len(root):
-        element = root[0]
+    while (element := next(iter(root), None)) is not None:  # (len() would count the children each time)
         yield element
         del root[0]
         if element is last:
