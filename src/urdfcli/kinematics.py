@@ -43,9 +43,6 @@ def _joined(robot: Robot) -> list[Joint]:
     return [joint for joint in robot.joints.values() if joint.parent in links and joint.child in links]
 
 
-_name = attrgetter("name")
-
-
 def children_by_joint_name(robot: Robot) -> dict[str, list[Joint]]:
     """Each link's child joints in check_urdf's order: sorted by joint name."""
     return robot.remembered("children", lambda: _children_by_joint_name(robot))
@@ -53,7 +50,7 @@ def children_by_joint_name(robot: Robot) -> dict[str, list[Joint]]:
 
 def _children_by_joint_name(robot: Robot) -> dict[str, list[Joint]]:
     children: dict[str, list[Joint]] = defaultdict(list)
-    for joint in sorted(joined(robot), key=_name):  # joint names are unique: the order of sorted(robot.joints)
+    for joint in sorted(joined(robot), key=attrgetter("name")):  # joint names are unique: the order of sorted(robot.joints)
         children[joint.parent].append(joint)
     return children
 
@@ -163,8 +160,6 @@ def tree_diagnostics(robot: Robot, document: Document) -> list[Diagnostic]:
     dangling = [] if len(edges) == len(robot.joints) else [j for j in robot.joints.values() if j.parent not in links or j.child not in links]
     for joint in dangling:
         parent, child = joint.parent, joint.child
-        if (parent is None or parent in links) and (child is None or child in links):
-            continue
         for role, link, other_end in (("parent", parent, child), ("child", child, parent)):
             if link is not None and link not in links:
                 report(
