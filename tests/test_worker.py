@@ -94,6 +94,6 @@ def test_expansion_in_the_worker_is_the_expansion_in_process(path: Path):
             result = expand(parse_bytes(data), str(path), {}, PackageResolver((), path), data)
         except expansion.ExpansionError as error:
             return ("error", error.message, error.origin, error.file, error.code)
-        return (result.text, result.origins, result.includes, result.warnings)
+        return (result.text, list(result.origins), result.includes, result.warnings)
 
     assert run(expansion.expand) == run(expansion._expand)

@@ -20,7 +20,7 @@ from .diagnostics import Diagnostic, Location
 from .positions import Source, source
 
 if TYPE_CHECKING:
-    from .expansion import Origin
+    from .expansion import Origins
 
 NAMED = {"link", "joint", "material", "transmission", "gazebo"}
 SUPPRESSION_MARK = "urdfcli"  # every suppression comment (``<!-- urdfcli: noqa -->``) names it
@@ -46,7 +46,7 @@ class Document:
     is_xacro: bool = False
     expanded_text: str | None = None  # xacro output, for xacro inputs
     includes: list[str] = field(default_factory=list)
-    origins: list[Origin | None] | None = None  # xacro inputs: one per element
+    origins: Origins | None = None  # xacro inputs: one per element
     tops: array = field(default_factory=lambda: array("l"))  # the index of each top-level element, as read
     # Whether the file's own text may hold a suppression comment (SUPPRESSION_MARK), told
     # from its bytes while they are at hand (None: not told; look in the file).

@@ -20,7 +20,8 @@ import types
 import xml.dom.minicompat
 import xml.dom.minidom
 import xml.parsers.expat
-from collections.abc import Callable
+from array import array
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import TYPE_CHECKING
@@ -129,10 +130,36 @@ class PackageNotFound(LookupError):
     pass
 
 
+class Origins(Sequence):
+    """Where each element of an expansion was written, one per element in document
+    order, kept as a few lists and one array of integers: the expansion's process
+    sends them whole, and as one object per element they took a fifth of `check`
+    on a model of 1,500 macro calls to pickle and unpickle. An element's Origin is
+    made when it is asked for."""
+
+    __slots__ = ("files", "calls", "traces", "places")
+
+    def __init__(self, files: list[str], calls: list[tuple], traces: list[tuple[int, ...]], places: array):
+        self.files = files
+        self.calls = calls  # each macro call site as Call's fields
+        self.traces = traces  # the calls around an element (indices in `calls`), innermost first
+        self.places = places  # per element: file index (-1: unknown), line, column (0: none), trace index
+
+    def __len__(self) -> int:
+        return len(self.places) // 4
+
+    def __getitem__(self, index: int) -> Origin | None:
+        at = range(len(self))[index] * 4  # (raises IndexError as a list does)
+        file, line, column, trace = self.places[at : at + 4]
+        if file < 0:
+            return None
+        return Origin(self.files[file], line, column or None, tuple(Call(*self.calls[i]) for i in self.traces[trace]))
+
+
 @dataclass
 class Expansion:
     text: str  # the expanded document, as `xacro` prints it
-    origins: list[Origin | None]  # one per element of `text`, in document order
+    origins: Origins  # one per element of `text`, in document order
     includes: list[str]
     warnings: list[tuple[str, Origin | None]] = field(default_factory=list)
 
@@ -152,9 +179,15 @@ def tag_origins(root: etree._Element, file: str, data: bytes | None) -> None:
 
 
 def parse_origin(value: str) -> Origin | None:
+    place = _place(value)
+    return Origin(place[2], place[0], place[1] or None) if place is not None else None
+
+
+def _place(value: str) -> tuple[int, int, str] | None:
+    """Line, column (0: none) and file of an origin attribute's ``LINE:COLUMN:FILE``."""
     try:
         line, column, file = value.split(":", 2)
-        return Origin(file, int(line), int(column) or None)
+        return int(line), int(column), file
     except ValueError:
         return None
 
@@ -365,35 +398,31 @@ def display_path(path: str) -> str:
     return path if relative.startswith("..") else relative
 
 
-def _collect_origins(doc: xml.dom.minidom.Document, calls: list[Call]) -> list[Origin | None]:
+def _collect_origins(doc: xml.dom.minidom.Document, calls: list[Call]) -> Origins:
     """Strip the origin and trace attributes, in document order, iteratively.
 
-    An element's trace is its own stamps (innermost first) then its parent's.
-    Files, traces and origins are shared, not repeated: the list is sent from
-    the expansion's process whole."""
-    origins: list[Origin | None] = []
-    files: dict[str, str] = {}
-    traces: dict[tuple[Call, ...], tuple[Call, ...]] = {}
-    stack: list[tuple[object, tuple[Call, ...]]] = [(doc.documentElement, ())]
+    An element's trace is its own stamps (innermost first) then its parent's."""
+    files: dict[str, int] = {}
+    traces: dict[tuple[int, ...], int] = {(): 0}
+    places = array("i")
+    stack: list[tuple[object, tuple[int, ...]]] = [(doc.documentElement, ())]
     while stack:
         node, trace = stack.pop()
         if node.hasAttribute(TRACE):
-            own = tuple(calls[int(i)] for i in node.getAttribute(TRACE).split())
+            trace = tuple(int(i) for i in node.getAttribute(TRACE).split()) + trace
             node.removeAttribute(TRACE)
-            trace = own + trace
-            trace = traces.setdefault(trace, trace)
+        place = None
         if node.hasAttribute(ORIGIN):
-            origin = parse_origin(node.getAttribute(ORIGIN))
+            place = _place(node.getAttribute(ORIGIN))
             node.removeAttribute(ORIGIN)
-            if origin is not None:
-                file = files.setdefault(origin.file, origin.file)
-                origin = Origin(file, origin.line, origin.column, trace)
-            origins.append(origin)
+        if place is None:
+            places.extend((-1, 0, 0, 0))
         else:
-            origins.append(None)
+            line, column, file = place
+            places.extend((files.setdefault(file, len(files)), line, column, traces.setdefault(trace, len(traces))))
         children = [(c, trace) for c in node.childNodes if c.nodeType == xml.dom.Node.ELEMENT_NODE]
         stack.extend(reversed(children))
-    return origins
+    return Origins(list(files), [(c.file, c.line, c.column, c.macro) for c in calls], list(traces), places)
 
 
 def _short(error: BaseException) -> str:
