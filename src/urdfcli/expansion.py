@@ -401,27 +401,30 @@ def display_path(path: str) -> str:
 def _collect_origins(doc: xml.dom.minidom.Document, calls: list[Call]) -> Origins:
     """Strip the origin and trace attributes, in document order, iteratively.
 
-    An element's trace is its own stamps (innermost first) then its parent's."""
+    An element's trace is its own stamps (innermost first) then its parent's. The
+    elements of one macro body share their origin texts, read once each."""
     files: dict[str, int] = {}
     traces: dict[tuple[int, ...], int] = {(): 0}
+    read: dict[str, tuple[int, int, int]] = {}  # origin text -> file index, line, column
     places = array("i")
+    element = xml.dom.Node.ELEMENT_NODE
     stack: list[tuple[object, tuple[int, ...]]] = [(doc.documentElement, ())]
     while stack:
         node, trace = stack.pop()
-        if node.hasAttribute(TRACE):
-            trace = tuple(int(i) for i in node.getAttribute(TRACE).split()) + trace
-            node.removeAttribute(TRACE)
+        stamps = node.getAttributeNode(TRACE)
+        if stamps is not None:
+            trace = tuple(int(i) for i in stamps.value.split()) + trace
+            node.removeAttributeNode(stamps)
+        origin = node.getAttributeNode(ORIGIN)
         place = None
-        if node.hasAttribute(ORIGIN):
-            place = _place(node.getAttribute(ORIGIN))
-            node.removeAttribute(ORIGIN)
-        if place is None:
-            places.extend((-1, 0, 0, 0))
-        else:
-            line, column, file = place
-            places.extend((files.setdefault(file, len(files)), line, column, traces.setdefault(trace, len(traces))))
-        children = [(c, trace) for c in node.childNodes if c.nodeType == xml.dom.Node.ELEMENT_NODE]
-        stack.extend(reversed(children))
+        if origin is not None:
+            place = read.get(origin.value)
+            if place is None and (found := _place(origin.value)) is not None:
+                line, column, file = found
+                place = read[origin.value] = (files.setdefault(file, len(files)), line, column)
+            node.removeAttributeNode(origin)
+        places.extend((*place, traces.setdefault(trace, len(traces))) if place is not None else (-1, 0, 0, 0))
+        stack.extend(reversed([(c, trace) for c in node.childNodes if c.nodeType == element]))
     return Origins(list(files), [(c.file, c.line, c.column, c.macro) for c in calls], list(traces), places)
 
 
