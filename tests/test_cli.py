@@ -82,3 +82,32 @@ def test_no_color_removes_bold_and_dim_too_and_color_option_decides(tmp_path):
     assert b"\x1b[" not in run_cli("check", str(path)).stderr
     bad = run_cli("tree", "--color", "sometimes", str(path))
     assert bad.returncode == 2 and b"sometimes" in bad.stderr
+
+
+# -- the end of a run: no finalization, nothing lost ------------------------------------------
+WIDE = '<robot name="wide"><link name="l0"/>' + "".join(
+    f'<link name="l{i}"/><joint name="j{i}" type="fixed"><parent link="l0"/><child link="l{i}"/></joint>' for i in range(1, 5000)
+) + "</robot>"
+IN_PROCESS = "import sys; from urdfcli.cli import main\nsys.argv = ['urdfcli', *sys.argv[1:]]\nmain()\n"
+BUFFERED = {k: v for k, v in os.environ.items() if k != "PYTHONUNBUFFERED"} | {"NO_COLOR": "1", "COLUMNS": "200"}
+
+
+def test_the_program_prints_all_a_run_that_ends_as_python_does_prints(tmp_path):
+    """The program ends without Python's finalization: its buffered output, larger than
+    a pipe holds, and its exit code are those of main() ending the usual way."""
+    path = tmp_path / "wide.urdf"
+    path.write_text(WIDE)
+    for args in (["tree", str(path)], ["check", str(path)], ["check", "--format", "json", str(path), str(tmp_path / "missing.urdf")]):
+        ours, usual = (subprocess.run([sys.executable, *how, *args], capture_output=True, env=BUFFERED) for how in (["-m", "urdfcli"], ["-c", IN_PROCESS]))
+        assert len(ours.stdout) > 65_536 or args[1] == "--format"
+        assert (ours.returncode, ours.stdout, ours.stderr) == (usual.returncode, usual.stdout, usual.stderr)
+
+
+def test_a_reader_that_stops_early_ends_the_run_with_exit_1_and_no_message(tmp_path):
+    path = tmp_path / "wide.urdf"
+    path.write_text(WIDE)
+    program = subprocess.Popen([sys.executable, "-m", "urdfcli", "tree", str(path)], stdout=subprocess.PIPE, stderr=subprocess.PIPE, env=BUFFERED)
+    assert program.stdout.readline().startswith(b"l0")
+    program.stdout.close()
+    assert program.wait(timeout=60) == 1
+    assert program.stderr.read() == b""

@@ -1,3 +1,3 @@
-from urdfcli.cli import main
+from urdfcli.cli import run
 
-main()
+run()

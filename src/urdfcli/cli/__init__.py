@@ -8,6 +8,8 @@ is wrong with a command line.
 
 from __future__ import annotations
 
+import atexit
+import contextlib
 import functools
 import importlib
 import inspect
@@ -155,6 +157,35 @@ def main() -> None:
         )
         sys.exit(2)
     sys.exit(code if isinstance(code, int) else 0)
+
+
+def run() -> None:
+    """The ``urdfcli`` program: :func:`main`, then an end without Python's finalization.
+
+    Freeing every module and object at exit took 2 to 5 ms of a 55 to 90 ms run on
+    a small file. Standard output and error are flushed and the exit handlers (the
+    xacro worker's stop) run first; nothing else urdfcli opens outlives its ``with``.
+    """
+    try:
+        main()
+        code = 0
+    except SystemExit as done:
+        code = done.code
+    if not isinstance(code, int):  # as Python ends on SystemExit(text)
+        if code is not None:
+            sys.stderr.write(f"{code}\n")
+        code = 0 if code is None else 1
+    try:
+        sys.stdout.flush()
+    except (BrokenPipeError, ValueError):  # a reader that stopped early, as main() reports it
+        code = code or 1
+    with contextlib.suppress(OSError, ValueError):  # main() closes it after a broken pipe
+        sys.stderr.flush()
+    run_exit_handlers = getattr(atexit, "_run_exitfuncs", None)
+    if run_exit_handlers is None:  # not CPython: let the interpreter end as usual
+        sys.exit(code)
+    run_exit_handlers()
+    os._exit(code)
 
 
 def _typer_main(argv: list[str]):
