@@ -133,9 +133,9 @@ class PackageNotFound(LookupError):
 class Origins(Sequence):
     """Where each element of an expansion was written, one per element in document
     order, kept as a few lists and one array of integers: the expansion's process
-    sends them whole, and as one object per element they took a fifth of `check`
-    on a model of 1,500 macro calls to pickle and unpickle. An element's Origin is
-    made when it is asked for."""
+    sends them whole, and as one object per element they took about a tenth of
+    `check` on a model of 1,500 macro calls to pickle and unpickle. An element's
+    Origin is made when it is asked for."""
 
     __slots__ = ("files", "calls", "traces", "places")
 
