@@ -170,11 +170,9 @@ def run() -> None:
         main()
         code = 0
     except SystemExit as done:
-        code = done.code
-    if not isinstance(code, int):  # as Python ends on SystemExit(text)
-        if code is not None:
-            sys.stderr.write(f"{code}\n")
-        code = 0 if code is None else 1
+        if done.code is not None and not isinstance(done.code, int):
+            raise  # a message for Python to print as it ends
+        code = done.code or 0
     try:
         sys.stdout.flush()
     except (BrokenPipeError, ValueError):  # a reader that stopped early, as main() reports it
