@@ -172,6 +172,10 @@ def _did_you_mean(word: str, known) -> str:
 
 
 def rule(code: str) -> Rule:
+    """The rule ``code``. The model reports while it is read, before any rule module
+    is loaded: `check`'s own modules are tried first, so that it imports no other."""
+    if code not in REGISTRY:
+        load_check()
     return REGISTRY[code] if code in REGISTRY else load_all()[code]
 
 
