@@ -11,7 +11,6 @@ from __future__ import annotations
 import atexit
 import contextlib
 import functools
-import importlib
 import inspect
 import os
 import sys
@@ -20,20 +19,8 @@ from typing import Annotated
 
 from .. import __version__
 from ..folders import one_run
+from .commands import COMMANDS, command_function
 from .options import BadValue, Option
-
-# Each subcommand: the module defining it and its function. A run imports only the
-# module of the command it runs (help lists them all), so no command pays for the others.
-COMMANDS = {
-    "expand": ("expand", "expand"),
-    "check": ("check", "check"),
-    "tree": ("tree", "tree"),
-    "graph": ("graph", "graph"),
-    "inertia": ("inertia", "inertia"),
-    "lint": ("lint", "lint"),
-    "rules": ("rules", "rules"),
-    "rule": ("rules", "rule"),
-}
 
 
 def _version(value: bool) -> None:
@@ -67,12 +54,6 @@ def build_app(names=COMMANDS):
         command = command_function(name)
         app.command(name=name, help=reflow(command.__doc__ or ""))(for_typer(command))
     return app
-
-
-def command_function(name: str):
-    """The function of the subcommand ``name`` (its module imported now)."""
-    module, function = COMMANDS[name]
-    return getattr(importlib.import_module(f".{module}", __name__), function)
 
 
 def reflow(doc: str) -> str:

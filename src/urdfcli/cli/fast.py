@@ -21,6 +21,7 @@ from pathlib import Path
 from types import NoneType, UnionType
 from typing import Annotated, Any
 
+from .commands import COMMANDS, command_function
 from .options import Argument, Option
 
 _CONVERTERS: dict[type, Callable[[str], Any]] = {str: str, int: int, float: float, Path: Path}
@@ -53,7 +54,6 @@ class _Parameter:
 def parsed(argv: list[str]) -> Parsed | None:
     """The command and the values typer would give it, for a plain command line;
     None for any other, which typer reads instead."""
-    from . import COMMANDS, command_function
     from .common import COLOR_MODES, ColorOption
 
     if not argv or argv[0] not in COMMANDS:
