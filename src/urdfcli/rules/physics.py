@@ -206,7 +206,7 @@ def point_mass(loaded):
     ```
     """
     for link, inertial in _inertials(loaded):
-        if inertial.mass > 0 and inertial.inertia and massprops.is_negligible(massprops.matrix(inertial.inertia)) and not absorbed(loaded, link):
+        if inertial.mass > 0 and inertial.inertia and verdict(loaded, inertial)[0] == "I004" and not absorbed(loaded, link):
             zero = "a zero" if massprops.is_zero(massprops.matrix(inertial.inertia)) else "a near-zero"
             yield loaded.diagnostic(
                 "I004",
@@ -289,23 +289,30 @@ def invalid_tensors(loaded) -> dict[str, list]:
 
 def _invalid_tensors(loaded) -> dict[str, list]:
     found: dict[str, list] = {"I005": [], "I006": []}
-    judged: dict[int, tuple] = {}  # links that write the same text share its tensor: judged once
     for link, inertial in _inertials(loaded):
         if not inertial.inertia or absorbed(loaded, link):
             continue
-        verdict = judged.get(id(inertial.inertia))
-        if verdict is None:
-            verdict = judged[id(inertial.inertia)] = _tensor_verdict(tensor_of(inertial))
-        code, detail = verdict
-        if code is not None:
+        code, detail = verdict(loaded, inertial)
+        if code in found:
             found[code].append((link, detail))
     return found
 
 
+def verdict(loaded, inertial) -> tuple[str | None, tuple | None]:
+    """What I004, I005 and I006 find in a declared tensor (see :func:`_tensor_verdict`).
+    Links that write the same text share its tensor: it is judged once."""
+    judged = loaded.remembered("tensor verdicts", dict)
+    key = id(inertial.inertia)
+    if key not in judged:
+        judged[key] = _tensor_verdict(tensor_of(inertial))
+    return judged[key]
+
+
 def _tensor_verdict(tensor) -> tuple[str | None, tuple | None]:
-    """("I005", principal moments), ("I006", the moments breaking the triangle), or (None, None)."""
+    """("I004", None) for a point mass, ("I005", principal moments), ("I006", the moments
+    breaking the triangle), or (None, None) for a tensor a body can have."""
     if massprops.is_negligible(tensor):
-        return None, None  # a point mass: I004
+        return "I004", None
     if not massprops.is_positive_semidefinite(tensor):
         return "I005", massprops.principal_moments(tensor)
     broken = massprops.triangle_violation(tensor)
