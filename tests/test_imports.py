@@ -4,6 +4,7 @@ made inside functions too (those under ``if TYPE_CHECKING:`` are for annotations
 from __future__ import annotations
 
 import ast
+import importlib.util
 from pathlib import Path
 
 import networkx as nx
@@ -45,11 +46,7 @@ def _imported(path: Path) -> set[str]:
         if isinstance(node, ast.Import):
             found |= {alias.name for alias in node.names if alias.name.startswith("urdfcli")}
         elif isinstance(node, ast.ImportFrom):
-            if node.level:
-                base = package.split(".")[: len(package.split(".")) - node.level + 1]
-                target = ".".join(base + ([node.module] if node.module else []))
-            else:
-                target = node.module or ""
+            target = importlib.util.resolve_name("." * node.level + (node.module or ""), package)
             if target.startswith("urdfcli"):
                 found |= {f"{target}.{a.name}" if _is_module(f"{target}.{a.name}") else target for a in node.names}
     return found - {name}
