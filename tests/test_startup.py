@@ -103,6 +103,7 @@ def test_plain_output_of_a_small_file_imports_neither_rich_nor_rules_that_do_not
     assert "typer" not in modules  # a plain command line is read without it (urdfcli.cli.fast)
     assert not {"urdfcli.inertia", "urdfcli.meshes", "urdfcli.poses", "urdfcli.fixes", "numpy", "networkx"} & modules
     assert not {"json", "difflib", "tomllib"} & modules  # for JSON output, a misspelt name, a configuration file
+    assert "tempfile" not in modules  # for writing a file atomically (--output), not standard output
     assert ("xacro" in modules) == (command == "expand")  # expand always runs xacro, as the xacro tool does
     loaded_rules = {m.rpartition(".")[2] for m in modules if m.startswith("urdfcli.rules.")}
     assert loaded_rules <= set(rules.CHECK_MODULES)

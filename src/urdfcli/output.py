@@ -3,7 +3,6 @@
 from __future__ import annotations
 
 import os
-import tempfile
 from collections.abc import Iterable
 from pathlib import Path
 
@@ -30,6 +29,8 @@ def write_atomic(out: Path, data: bytes | str, inputs: Iterable[str | Path] = ()
         raise OutputError(f"{out}: is a directory")
     payload = data.encode("utf-8") if isinstance(data, str) else data
     folder = out.parent if str(out.parent) else Path(".")
+    import tempfile  # (with shutil and random) only when a file is written: most runs write none
+
     try:
         handle, temporary = tempfile.mkstemp(prefix=f".{out.name}.", suffix=".tmp", dir=folder)
     except OSError as error:
