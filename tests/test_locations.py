@@ -264,6 +264,31 @@ def test_xacro_warnings_name_the_element_that_caused_them(tmp_path):
     assert warning["trace"] == [{"path": "top.urdf.xacro", "line": 3, "column": 3, "macro": "m"}]
 
 
+def test_what_a_lazy_property_reports_is_located_at_its_definition(tmp_path):
+    """xacro evaluates a property where it is first used, but a warning or an error from
+    its value belongs to the line that defines it (ur_description loads its yaml files
+    so, in properties of a macro)."""
+    model = (
+        f'<robot name="r" {XACRO}>\n'
+        '  <xacro:property name="n" value="${len(range(3))}"/>\n'
+        '  <xacro:macro name="m" params="k">\n'
+        '    <xacro:property name="p" value="${k * VALUE}"/>\n'
+        '    <link name="a${n}_${p}"/>\n'
+        "  </xacro:macro>\n"
+        '  <xacro:m k="2"/>\n'
+        "</robot>\n"
+    )
+    (tmp_path / "warns.urdf.xacro").write_text(model.replace("VALUE", "2"))
+    (tmp_path / "fails.urdf.xacro").write_text(model.replace("VALUE", "missing"))
+    report = json.loads(run("check", "warns.urdf.xacro", "fails.urdf.xacro", "--format", "json", cwd=tmp_path).stdout)
+    (warning,), (error,) = (file["diagnostics"] for file in report["files"])
+    assert (warning["code"], warning["path"], warning["line"], warning["column"], warning["trace"]) == ("X005", "warns.urdf.xacro", 2, 3, [])
+    assert "range() directly is deprecated" in warning["message"]
+    assert (error["code"], error["path"], error["line"], error["column"]) == ("X003", "fails.urdf.xacro", 4, 5)
+    assert "name 'missing' is not defined" in error["message"]
+    assert error["trace"] == [{"path": "fails.urdf.xacro", "line": 7, "column": 3, "macro": "m"}]
+
+
 def test_positions_skip_markup_that_opens_no_element():
     text = (
         '<?xml version="1.0"?>\n<!DOCTYPE robot [ <!ELEMENT robot ANY> ]>\n'

@@ -67,6 +67,7 @@ if TYPE_CHECKING:
     from .packages import PackageResolver
 
 ORIGIN = "urdfcli-origin"
+DEFINED = "urdfcli_defined"  # a xacro symbol table's attribute: where each lazy property was defined
 TRACE = "urdfcli-trace"  # the macro calls whose output starts at this element, innermost first
 XACRO_PREFIX = "xacro:"
 
@@ -212,7 +213,8 @@ class _Session:
         self.xacro_origins: dict[int, tuple[object, Origin]] = {}
         self.stack: list[object] = []
         self.touched: object | None = None
-        self.saved: dict[str, object] = {}
+        self.saved: dict[tuple[object, str], object] = {}  # (module or class, name) -> the original
+        self.resolving: list[tuple] = []  # the places of the lazy properties being evaluated, innermost last
         self.calling: list[object] = []  # the macro calls being expanded, outermost first
         self.calls: list[Call] = []  # each macro call site once, by its index in TRACE attributes
         self.call_index: dict[Call, int] = {}
@@ -229,16 +231,30 @@ class _Session:
             node = node.parentNode
         return None
 
+    def locate(self, error: BaseException) -> None:
+        """Mark an error with where xacro is, unless a deeper frame already did."""
+        if not hasattr(error, "urdfcli_origin"):
+            error.urdfcli_origin = self.current_origin()
+
+    def place(self) -> tuple:
+        """What tells where xacro is now: the node it is at, the tag whose attributes
+        it reads, and the macro calls it is inside (worked out into an Origin only when
+        one is asked for)."""
+        return (self.stack[-1] if self.stack else None, self.touched, tuple(self.calling))
+
     def current_origin(self) -> Origin | None:
-        """Where xacro is now, with the macro calls it is inside, innermost first."""
-        top = self.stack[-1] if self.stack else None
-        if self.touched is not None and top is not None and getattr(self.touched, "parentNode", None) is top:
-            origin = self.origin_of(self.touched)
+        """Where xacro is now, with the macro calls it is inside, innermost first.
+        While it evaluates a lazy property, that is where the property was defined:
+        xacro evaluates it where it is first used, but what goes wrong or warns
+        there is written in the definition."""
+        top, touched, calling = self.resolving[-1] if self.resolving else self.place()
+        if touched is not None and top is not None and getattr(touched, "parentNode", None) is top:
+            origin = self.origin_of(touched)
         else:
             origin = self.origin_of(top)
         if origin is None:
             return None
-        trace = tuple(self.calls[i] for i in reversed([self.call_of(node) for node in self.calling]) if i is not None)
+        trace = tuple(self.calls[i] for i in reversed([self.call_of(node) for node in calling]) if i is not None)
         if trace and (trace[0].file, trace[0].line, trace[0].column) == (origin.file, origin.line, origin.column):
             trace = trace[1:]  # xacro is at the call itself (its parameters)
         return Origin(origin.file, origin.line, origin.column, trace) if trace else origin
@@ -293,8 +309,7 @@ class _Session:
             try:
                 return original(node, *args, **kwargs)
             except Exception as error:
-                if not hasattr(error, "urdfcli_origin"):
-                    error.urdfcli_origin = self.current_origin()
+                self.locate(error)
                 raise
             finally:
                 self.stack.pop()
@@ -303,11 +318,38 @@ class _Session:
 
         return tracked
 
+    def define(self, original):
+        """Keep the place of each property xacro will evaluate lazily, in its table."""
+
+        def _setitem(table, key, value, unevaluated):
+            original(table, key, value, unevaluated)
+            if key in table.unevaluated:
+                table.__dict__.setdefault(DEFINED, {})[key] = self.place()
+
+        return _setitem
+
+    def resolve(self, original):
+        """While xacro evaluates a lazy property, it is at the property's definition."""
+
+        def _resolve_(table, key):
+            if key not in table.unevaluated:
+                return original(table, key)
+            self.resolving.append(table.__dict__.get(DEFINED, {}).get(key) or self.place())
+            try:
+                return original(table, key)
+            except Exception as error:
+                self.locate(error)
+                raise
+            finally:
+                self.resolving.pop()
+
+        return _resolve_
+
     def replace_node(self, node, by, content_only=False):
         """xacro puts a macro's output in place of its call here: stamp it first."""
         if content_only and by is not None and self.calling and node is self.calling[-1]:
             self.stamp(node, by)
-        return self.saved["replace_node"](node, by, content_only)
+        return self.saved[xacro, "replace_node"](node, by, content_only)
 
     def touch(self, original):
         def touched(tag, *args, **kwargs):
@@ -318,7 +360,7 @@ class _Session:
 
     def parse(self, inp, filename=None):
         if inp is not None:
-            return self.saved["parse"](inp, filename)
+            return self.saved[xacro, "parse"](inp, filename)
         path = os.path.join(xacro.root_dir, filename)
         if os.path.abspath(path) in {os.path.abspath(f) for f in xacro.filestack[:-1] if f}:
             chain = " -> ".join(display_path(f) for f in [*xacro.filestack[:-1], filename] if f)
@@ -350,29 +392,28 @@ class _Session:
             raise PackageNotFound(package)
         return str(folder)
 
+    def patch(self, owner: object, name: str, replacement) -> None:
+        self.saved[owner, name] = getattr(owner, name)
+        setattr(owner, name, replacement)
+
     def __enter__(self):
         for name in self.TRACKED:
-            self.saved[name] = getattr(xacro, name)
-            setattr(xacro, name, self.track(name, self.saved[name]))
+            self.patch(xacro, name, self.track(name, getattr(xacro, name)))
         for name in self.TOUCHED:
-            self.saved[name] = getattr(xacro, name)
-            setattr(xacro, name, self.touch(self.saved[name]))
-        self.saved["parse"] = xacro.parse
-        xacro.parse = self.parse
-        self.saved["replace_node"] = xacro.replace_node
-        xacro.replace_node = self.replace_node
-        self.saved["safe_eval"] = xacro.safe_eval
-        xacro.safe_eval = sandbox.safe_eval
+            self.patch(xacro, name, self.touch(getattr(xacro, name)))
+        self.patch(xacro, "parse", self.parse)
+        self.patch(xacro, "replace_node", self.replace_node)
+        self.patch(xacro, "safe_eval", sandbox.safe_eval)
+        self.patch(xacro.Table, "_setitem", self.define(xacro.Table._setitem))
+        self.patch(xacro.Table, "_resolve_", self.resolve(xacro.Table._resolve_))
         sandbox.restrict(xacro._global_symbols)
-        self.saved["_eval_find"] = xacro.substitution_args._eval_find
-        xacro.substitution_args._eval_find = self.find
+        self.patch(xacro.substitution_args, "_eval_find", self.find)
         xacro.all_includes = []
         return self
 
     def __exit__(self, *exc):
-        for name, original in self.saved.items():
-            module = xacro.substitution_args if name == "_eval_find" else xacro
-            setattr(module, name, original)
+        for (owner, name), original in self.saved.items():
+            setattr(owner, name, original)
         xacro.filestack = None
         xacro.macrostack = None
         return False
@@ -426,6 +467,16 @@ def _collect_origins(doc: xml.dom.minidom.Document, calls: list[Call]) -> Origin
         places.extend((*place, traces.setdefault(trace, len(traces))) if place is not None else (-1, 0, 0, 0))
         stack.extend(reversed([(c, trace) for c in node.childNodes if c.nodeType == element]))
     return Origins(list(files), [(c.file, c.line, c.column, c.macro) for c in calls], list(traces), places)
+
+
+def _where_raised(error: BaseException) -> Origin | None:
+    """Where an error was raised: the innermost place marked on it or on the errors
+    it wraps (xacro wraps an error in each expression it evaluates, ``.exc``)."""
+    origin = None
+    while error is not None:
+        origin = getattr(error, "urdfcli_origin", origin)
+        error = getattr(error, "exc", None)
+    return origin
 
 
 def _short(error: BaseException) -> str:
@@ -506,7 +557,7 @@ def _expand(root: etree._Element, file: str | None, mappings: dict[str, str], re
             message = _short(error)
             if code == "X004":
                 message += f" {resolver.where()}"
-            origin = getattr(error, "urdfcli_origin", None)
+            origin = _where_raised(error)
             current_file = xacro.filestack[-1] if xacro.filestack else file
             raise ExpansionError(message, origin, display_path(current_file) if current_file else shown, code, tuple(dict.fromkeys(xacro.all_includes))) from None
         finally:
