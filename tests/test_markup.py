@@ -217,6 +217,33 @@ def test_ros2_control_commanding_a_fixed_joint_is_flagged_publishing_its_state_i
     assert found(tmp_path, body + ROS2_CONTROL.replace("INTERFACES", '<state_interface name="position"/>')) == []
 
 
+FRANKA_MODEL = """
+<transmission name="panda_franka_model">
+  <type>franka_hw/FrankaModelInterface</type>
+  <joint name="base_joint"><role>root</role><hardwareInterface>franka_hw/FrankaModelInterface</hardwareInterface></joint>
+  <joint name="caster_joint"><role>tip</role><hardwareInterface>franka_hw/FrankaModelInterface</hardwareInterface></joint>
+  <actuator name="base_motor_root"><hardwareInterface>franka_hw/FrankaModelInterface</hardwareInterface></actuator>
+</transmission>
+"""
+
+
+def test_a_transmission_that_only_reads_a_fixed_joint_draws_nothing(tmp_path):
+    """franka_description names its fixed flange as the tip of a model interface; a joint
+    state interface only publishes. In the older layout the actuator holds the interface."""
+    body = CASTER.split("<transmission")[0].replace("TYPE", "fixed")
+    assert found(tmp_path, body + FRANKA_MODEL) == []
+    state = CASTER.replace("TYPE", "fixed").replace("JOINT", "caster_joint").replace("EffortJointInterface", "JointStateInterface")
+    assert found(tmp_path, state) == []
+    older = CASTER.replace("TYPE", "fixed").replace("JOINT", "caster_joint").replace("<hardwareInterface>hardware_interface/EffortJointInterface</hardwareInterface>", "")
+    assert found(tmp_path, older) == [("D012", "warning", "transmission 'caster_trans' drives joint 'caster_joint', which is fixed")]
+    older_state = older.replace("<mechanicalReduction>", "<hardwareInterface>hardware_interface/JointStateInterface</hardwareInterface><mechanicalReduction>")
+    assert found(tmp_path, older_state) == []
+    mixed = state.replace("</joint></transmission>", "").replace(
+        "JointStateInterface</hardwareInterface>", "JointStateInterface</hardwareInterface><hardwareInterface>hardware_interface/PositionJointInterface</hardwareInterface>"
+    )
+    assert found(tmp_path, mixed) == [("D012", "warning", "transmission 'caster_trans' drives joint 'caster_joint', which is fixed")]
+
+
 def test_a_transmission_driving_a_moving_joint_draws_nothing(tmp_path):
     assert found(tmp_path, CASTER.replace("TYPE", "continuous").replace("JOINT", "caster_joint")) == []
 

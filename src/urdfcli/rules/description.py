@@ -467,7 +467,12 @@ def transmission_fixed_joint(loaded):
     """## What it does
     Flags a `<transmission>` whose `<joint name>` is a fixed joint, and a
     `<ros2_control>` joint with a command interface that is a fixed joint.
-    State interfaces alone (a fixed joint whose state is only published) pass.
+    Interfaces that only read pass: a ros2_control joint with state interfaces
+    alone, and a transmission whose hardware interfaces for the joint (or, in
+    the older layout, for its actuators) are all state, model or sensor
+    interfaces (`hardware_interface/JointStateInterface`, Franka's
+    `franka_hw/FrankaModelInterface`, which names the chain's fixed flange as
+    its tip).
 
     ## Why is this bad?
     A fixed joint has no degree of freedom to drive: ros_control,
@@ -512,7 +517,7 @@ def transmission_fixed_joint(loaded):
     for transmission in loaded.robot.blocks("transmission"):
         for element in transmission.iterfind("joint"):
             joint = loaded.robot.joints.get(element.get("name"))
-            if joint is not None and joint.type == "fixed":
+            if joint is not None and joint.type == "fixed" and _commands(transmission, element):
                 yield loaded.diagnostic(
                     "D012",
                     f"transmission '{transmission.get('name', '')}' drives joint '{joint.name}', which is fixed",
@@ -529,6 +534,18 @@ def transmission_fixed_joint(loaded):
                     loaded.robot.place(element),
                     "remove its command interfaces if the joint is fixed on purpose, or give the joint the type it moves with",
                 )
+
+
+_READING_INTERFACES = ("StateInterface", "ModelInterface", "SensorInterface")
+
+
+def _commands(transmission, joint) -> bool:
+    """Whether a transmission commands its joint: some hardware interface of the joint
+    (or else of the transmission's actuators) is not one that only reads. A joint
+    given no interface at all is taken as commanded."""
+    interfaces = [e.text.strip() for e in joint.iterfind("hardwareInterface") if e.text and e.text.strip()]
+    interfaces = interfaces or [e.text.strip() for e in transmission.iterfind("actuator/hardwareInterface") if e.text and e.text.strip()]
+    return not interfaces or not all(name.endswith(_READING_INTERFACES) for name in interfaces)
 
 
 def _plugin_references(loaded, tags: set[str]):
