@@ -174,6 +174,45 @@ def test_a_library_whose_models_all_need_arguments_is_a_gap_the_models_setting_c
     assert "X006" not in done.stdout.decode() and "checked through description/urdf/arm.urdf.xacro" in done.stderr.decode()
 
 
+def test_a_library_its_models_include_only_with_an_argument_is_a_gap_the_models_setting_closes(tmp_path):
+    """franka_description includes its hand only with hand:=true: with the default
+    arguments no model reads the hand's macros, and a broken hand would pass."""
+    (tmp_path / ".git").mkdir()
+    write(tmp_path / "urdf" / "hand.xacro", f"""\
+        <robot {XACRO}>
+          <xacro:macro name="hand" params="parent">
+            <joint name="hand_joint" type="fixed"><parent link="${{parent}}"/><child link="hand"/></joint>
+            <link name="hand"/>
+          </xacro:macro>
+        </robot>
+        """)
+    write(tmp_path / "urdf" / "arm.urdf.xacro", f"""\
+        <robot name="arm" {XACRO}>
+          <xacro:arg name="hand" default="false"/>
+          <link name="base_link"/>
+          <xacro:if value="$(arg hand)">
+            <xacro:include filename="hand.xacro"/>
+            <xacro:hand parent="base_link"/>
+          </xacro:if>
+        </robot>
+        """)
+    done = run_cli("check", "--format", "concise", "urdf/hand.xacro", cwd=tmp_path)
+    assert done.returncode == 0  # a warning
+    assert done.stdout.decode().startswith(
+        "urdf/hand.xacro: X006 warning: xacro library checked on its own only: no model that includes it could check it "
+        "(urdf/arm.urdf.xacro does not read it with its default arguments)"
+    )
+    assert ("not checked through urdf/arm.urdf.xacro: it does not read this file with its default arguments; "
+            "list argument sets under which it does in [tool.urdfcli] models") in done.stderr.decode()
+    (tmp_path / "pyproject.toml").write_text('[tool.urdfcli]\nmodels = { "urdf/arm.urdf.xacro" = [[], ["hand:=true"]] }\n')
+    done, report = check_json("urdf/hand.xacro", cwd=tmp_path)
+    assert done.returncode == 0 and report["files"][0]["diagnostics"] == []
+    assert report["files"][0]["checked_through"] == ["urdf/arm.urdf.xacro [hand:=true]"]
+    edit(tmp_path / "urdf" / "hand.xacro", '<link name="hand"/>', '<link name="palm"/>')
+    done, report = check_json("urdf/hand.xacro", cwd=tmp_path)
+    assert done.returncode == 1 and "J005" in [d["code"] for d in report["files"][0]["diagnostics"]]  # its joint names no link "hand"
+
+
 def test_a_colcon_workspace_resolves_packages_across_repositories(tmp_path):
     src = tmp_path / "ws" / "src"
     repo_a, repo_b = src / "repo_a", src / "repo_b"

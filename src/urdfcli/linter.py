@@ -78,7 +78,7 @@ def load_configured(
         if unchecked:
             loaded.diagnostics.append(Diagnostic.of(
                 "X006",
-                f"xacro library checked on its own only: the models that include it cannot be expanded ({unchecked})",
+                f"xacro library checked on its own only: no model that includes it could check it ({unchecked})",
                 Location(document.shown),
                 hint='list their argument sets in [tool.urdfcli] models, e.g. models = { "urdf/robot.urdf.xacro" = [["name:=robot"]] }',
             ))

@@ -461,6 +461,7 @@ def _library_result(entry: Entry, outcome, includes_of, shown_keys: set, unreada
     result = LibraryResult(entry.path)
     found: list[Diagnostic] = []
     needing: list[str] = []  # models that include it but cannot be expanded without arguments
+    unread: list[tuple[str, str]] = []  # models that expand but do not read it: (label, with which arguments)
     for target in entry.targets:
         loaded = outcome(target)
         if isinstance(loaded, str):
@@ -479,14 +480,21 @@ def _library_result(entry: Entry, outcome, includes_of, shown_keys: set, unreada
             result.notes.append(f"not checked through {target.label}: {missing.message}")
             continue
         reached = any(_same(f, library) for f in includes_of(loaded)) or any(_same(d.file, library) for d in loaded.diagnostics)
-        if not reached:
+        if not reached:  # an include under xacro:if, or a file name made from an argument
+            unread.append((target.label, "the arguments it is checked with" if target.arguments else "its default arguments"))
             continue
         result.checked_through.append(target.label)
         # mistakes written in the library, and whatever breaks a model that uses it
         found += [d for d in loaded.diagnostics if _same(d.file, library) or d.severity is Severity.ERROR]
     if not result.checked_through:
-        # Checked on its own; when models include it but all need arguments, that is a gap (X006) the config closes.
-        alone = outcome(Target(entry.path, alone=True, unchecked="; ".join(needing)))
+        # Checked on its own; when models include it but none could check it, that is a gap (X006) the config closes.
+        result.notes += [
+            f"not checked through {label}: it does not read this file with {arguments}; "
+            "list argument sets under which it does in [tool.urdfcli] models"
+            for label, arguments in unread
+        ]
+        reasons = needing + [f"{label} does not read it with {arguments}" for label, arguments in unread]
+        alone = outcome(Target(entry.path, alone=True, unchecked="; ".join(reasons)))
         if isinstance(alone, str):
             unreadable.append(alone)
         else:

@@ -40,10 +40,12 @@ declare("X005", "xacro-warning", WARNING, "xacro warned while expanding the file
     '<robot name="r" xmlns:xacro="http://www.ros.org/wiki/xacro">\n  <xacro:property name="pi" value="3"/>\n  <link name="base_link"/>\n</robot>',
     '<robot name="r" xmlns:xacro="http://www.ros.org/wiki/xacro">\n  <xacro:property name="half_turn" value="${pi}"/>\n  <link name="base_link"/>\n</robot>'))
 
-declare("X006", "library-unchecked", WARNING, "A xacro library whose including models all need arguments.", explain(
-    "Flags a xacro library (macros and properties only) given to urdfcli when every model of its repository that "
-    "includes it fails to expand for want of a xacro argument, so the library could be checked on its own only: its "
-    "xacro syntax, not the links and joints its macros make. A library that no model includes is not flagged.",
+declare("X006", "library-unchecked", WARNING, "A xacro library that no model including it could check, for want of xacro arguments.", explain(
+    "Flags a xacro library (macros and properties only) given to urdfcli when no model of its repository that "
+    "includes it could check it: each fails to expand for want of a xacro argument, or does not read the library "
+    "with the arguments it is checked with (an include under `xacro:if`, such as a gripper included only with "
+    "`hand:=true`). The library could then be checked on its own only: its xacro syntax, not the links and joints "
+    "its macros make. A library that no model includes is not flagged.",
     "A mistake in a macro (a joint naming a link that does not exist) shows only when a model calls it. Without "
     "the arguments the models need, a pre-commit hook passes a broken library.",
     '# pyproject.toml, for a model urdf/robot.urdf.xacro that reads $(arg name) and has no default\n[tool.urdfcli]',
