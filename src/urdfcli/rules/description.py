@@ -543,9 +543,13 @@ def _commands(transmission, joint) -> bool:
     """Whether a transmission commands its joint: some hardware interface of the joint
     (or else of the transmission's actuators) is not one that only reads. A joint
     given no interface at all is taken as commanded."""
-    interfaces = [e.text.strip() for e in joint.iterfind("hardwareInterface") if e.text and e.text.strip()]
-    interfaces = interfaces or [e.text.strip() for e in transmission.iterfind("actuator/hardwareInterface") if e.text and e.text.strip()]
+    interfaces = _texts(joint, "hardwareInterface") or _texts(transmission, "actuator/hardwareInterface")
     return not interfaces or not all(name.endswith(_READING_INTERFACES) for name in interfaces)
+
+
+def _texts(element, path: str) -> list[str]:
+    """The non-blank texts of the elements at ``path`` under ``element``, stripped."""
+    return [text for found in element.iterfind(path) if (text := (found.text or "").strip())]
 
 
 def _plugin_references(loaded, tags: set[str]):
