@@ -63,7 +63,7 @@ def import_graph() -> nx.DiGraph:
 def test_the_graph_sees_the_imports_it_should():
     graph = import_graph()
     assert graph.has_edge("urdfcli.cli.fast", "urdfcli.cli.commands")  # at the top
-    assert graph.has_edge("urdfcli.load", "urdfcli.expansion")  # inside a function
+    assert graph.has_edge("urdfcli.load", "urdfcli.expanded")  # inside a function
     assert not graph.has_edge("urdfcli.rules", "urdfcli.diagnostics")  # for annotations only
 
 

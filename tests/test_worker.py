@@ -10,7 +10,7 @@ from pathlib import Path
 import pytest
 from conftest import FIXTURES
 
-from urdfcli import expansion, sandbox
+from urdfcli import expanded, expansion, sandbox
 from urdfcli.packages import PackageResolver
 from urdfcli.xmlsafe import parse_bytes
 
@@ -22,6 +22,23 @@ def lines_of(element) -> list:
 def test_jobs_share_one_worker_that_is_not_this_process():
     first, second = sandbox.bounded(os.getpid), sandbox.bounded(os.getpid)
     assert first == second != os.getpid()
+
+
+def imported_here(module: str) -> bool:
+    import sys
+
+    return module in sys.modules
+
+
+def test_a_worker_started_early_has_imported_what_it_was_given_when_the_first_job_comes(tmp_path, monkeypatch):
+    (tmp_path / "urdfcli_early_probe.py").write_text("")
+    monkeypatch.syspath_prepend(str(tmp_path))
+    with pytest.raises(sandbox.LimitExceeded):
+        sandbox.bounded(os._exit, 0)  # no worker runs now: the next is started afresh
+    sandbox.start("urdfcli_early_probe")
+    assert sandbox.bounded(imported_here, "urdfcli_early_probe")
+    assert not imported_here("urdfcli_early_probe")  # the worker imported it, not this process
+    assert sandbox.bounded(sandbox.call, "os", "getpid") == sandbox.bounded(os.getpid)  # one worker takes every job
 
 
 def test_a_worker_that_dies_is_reported_and_replaced():
@@ -92,8 +109,8 @@ def test_expansion_in_the_worker_is_the_expansion_in_process(path: Path):
         data = path.read_bytes()
         try:
             result = expand(parse_bytes(data), str(path), {}, PackageResolver((), path), data)
-        except expansion.ExpansionError as error:
+        except expanded.ExpansionError as error:
             return ("error", error.message, error.origin, error.file, error.code)
         return (result.text, list(result.origins), result.includes, result.warnings)
 
-    assert run(expansion.expand) == run(expansion._expand)
+    assert run(expanded.expand) == run(expansion.expand_here)

@@ -20,7 +20,7 @@ from .diagnostics import Diagnostic, Location
 from .positions import Source, source
 
 if TYPE_CHECKING:
-    from .expansion import Origins
+    from .expanded import Origins
 
 NAMED = {"link", "joint", "material", "transmission", "gazebo"}
 SUPPRESSION_MARK = "urdfcli"  # every suppression comment (``<!-- urdfcli: noqa -->``) names it

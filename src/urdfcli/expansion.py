@@ -5,6 +5,9 @@ element gets an origin attribute (file, line, occurrence on that line); xacro
 copies attributes through includes and macro bodies, so after expansion each
 element still says where it was written. The attributes are then stripped, so
 the output is exactly what the ``xacro`` tool prints.
+
+This module runs in the bounded worker (:func:`expand_here`, asked for by
+:func:`urdfcli.expanded.expand`): only the worker imports xacro.
 """
 
 from __future__ import annotations
@@ -21,8 +24,7 @@ import xml.dom.minicompat
 import xml.dom.minidom
 import xml.parsers.expat
 from array import array
-from collections.abc import Callable, Sequence
-from dataclasses import dataclass, field
+from collections.abc import Callable
 from pathlib import Path
 from typing import TYPE_CHECKING
 
@@ -59,7 +61,8 @@ import xacro  # noqa: E402  (after yaml's stand-in)
 import xacro.substitution_args  # noqa: E402
 
 from . import sandbox
-from .diagnostics import Call, Location
+from .diagnostics import Call
+from .expanded import Expansion, ExpansionError, Origin, Origins, PackageNotFound, display_path
 from .positions import Source, decode
 from .xmlsafe import XmlError, parse_bytes
 
@@ -99,70 +102,6 @@ class _NearbyNodeList(xml.dom.minicompat.NodeList):
 
 
 xml.dom.minidom.NodeList = _NearbyNodeList  # the children of every node minidom makes from here on
-
-
-@dataclass(frozen=True, slots=True)
-class Origin:
-    """Where an element was written (line and column of its ``<``), and the macro
-    calls that made it, innermost first."""
-
-    file: str
-    line: int
-    column: int | None = None
-    trace: tuple[Call, ...] = ()
-
-
-class ExpansionError(Exception):
-    """A xacro error, with where it happened as far as it can be told."""
-
-    def __init__(self, message: str, origin: Origin | None, file: str | None, code: str = "X003", includes: tuple[str, ...] = ()):
-        super().__init__(message)
-        self.message = message
-        self.origin = origin
-        self.file = file
-        self.code = code
-        self.includes = includes  # the files read before it stopped: a library it reached is affected
-
-    def __reduce__(self):
-        return (ExpansionError, (self.message, self.origin, self.file, self.code, self.includes))
-
-
-class PackageNotFound(LookupError):
-    pass
-
-
-class Origins(Sequence):
-    """Where each element of an expansion was written, one per element in document
-    order, kept as a few lists and one array of integers: the expansion's process
-    sends them whole, and as one object per element they took about a tenth of
-    `check` on a model of 1,500 macro calls to pickle and unpickle. An element's
-    Origin is made when it is asked for."""
-
-    __slots__ = ("files", "calls", "traces", "places")
-
-    def __init__(self, files: list[str], calls: list[tuple], traces: list[tuple[int, ...]], places: array):
-        self.files = files
-        self.calls = calls  # each macro call site as Call's fields
-        self.traces = traces  # the calls around an element (indices in `calls`), innermost first
-        self.places = places  # per element: file index (-1: unknown), line, column (0: none), trace index
-
-    def __len__(self) -> int:
-        return len(self.places) // 4
-
-    def __getitem__(self, index: int) -> Origin | None:
-        at = range(len(self))[index] * 4  # (raises IndexError as a list does)
-        file, line, column, trace = self.places[at : at + 4]
-        if file < 0:
-            return None
-        return Origin(self.files[file], line, column or None, tuple(Call(*self.calls[i]) for i in self.traces[trace]))
-
-
-@dataclass
-class Expansion:
-    text: str  # the expanded document, as `xacro` prints it
-    origins: Origins  # one per element of `text`, in document order
-    includes: list[str]
-    warnings: list[tuple[str, Origin | None]] = field(default_factory=list)
 
 
 def tag_origins(root: etree._Element, file: str, data: bytes | None) -> None:
@@ -424,20 +363,6 @@ def _untraced(origin: Origin | None) -> Origin | None:
     return Origin(origin.file, origin.line, origin.column) if origin is not None else None
 
 
-def located(origin: Origin | None, file: str) -> Location:
-    """The location of an origin; just ``file`` when there is none."""
-    if origin is None:
-        return Location(file)
-    return Location(origin.file, origin.line or None, origin.column, trace=origin.trace)
-
-
-def display_path(path: str) -> str:
-    try:
-        relative = os.path.relpath(path)
-    except ValueError:
-        return path
-    return path if relative.startswith("..") else relative
-
 
 def _collect_origins(doc: xml.dom.minidom.Document, calls: list[Call]) -> Origins:
     """Strip the origin and trace attributes, in document order, iteratively.
@@ -515,25 +440,8 @@ class _Stderr(io.StringIO):
         return len(text)
 
 
-def expand(
-    root: etree._Element,
-    file: str | None,
-    mappings: dict[str, str],
-    resolver: "PackageResolver",
-    data: bytes | None = None,
-) -> Expansion:
-    """Expand the parsed xacro document ``root`` read from ``file`` (None: stdin) as ``data``.
-
-    The expansion runs under sandbox.bounded: limited in time and memory.
-    """
-    try:
-        return sandbox.bounded(_expand, root, file, mappings, resolver, data)
-    except sandbox.LimitExceeded as error:
-        shown = display_path(file) if file else "<stdin>"
-        raise ExpansionError(f"xacro expansion stopped: {error} (the limit for one file)", None, shown) from None
-
-
-def _expand(root: etree._Element, file: str | None, mappings: dict[str, str], resolver: "PackageResolver", data: bytes | None) -> Expansion:
+def expand_here(root: etree._Element, file: str | None, mappings: dict[str, str], resolver: "PackageResolver", data: bytes | None) -> Expansion:
+    """:func:`urdfcli.expanded.expand`, here in this process and unbounded."""
     shown = display_path(file) if file else "<stdin>"
     doc = tagged_dom(root, shown, data)
     session = _Session(resolver.find)

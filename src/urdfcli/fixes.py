@@ -131,7 +131,7 @@ def matching_call(loaded: Loaded, link: Link, use: MacroUse) -> str | None:
     None when no call does (e.g. the macro cannot rotate its tensor with the shape)."""
     import itertools
 
-    from . import expansion
+    from . import expanded
     from .xmlsafe import parse_bytes
 
     found = implied(loaded, link)
@@ -152,7 +152,7 @@ def matching_call(loaded: Loaded, link: Link, use: MacroUse) -> str | None:
     probe = f'<robot name="probe" xmlns:xacro="{namespace}">{etree.tostring(macro, encoding="unicode", with_tail=False)}'
     probe += "".join(f'<link name="c{i}">{call}</link>' for i, call in enumerate(calls)) + "</robot>"
     try:
-        text = expansion.expand(parse_bytes(probe.encode()), None, {}, resolver_of(loaded)).text
+        text = expanded.expand(parse_bytes(probe.encode()), None, {}, resolver_of(loaded)).text
         links = parse_bytes(text.encode()).findall("link")
     except Exception:  # noqa: BLE001  (a macro that needs more than its parameters)
         return None

@@ -155,16 +155,16 @@ def load_document(
         root = root if root is not None else parse_bytes(data)  # with the white space xacro lays out
     except XmlError as error:
         return Document(path, None, file), [_error(error.code, error.message, Location(shown, error.line, error.column))]
-    from . import expansion  # xacro and its dependencies, only for xacro inputs
+    from . import expanded  # xacro itself is imported where it runs: the bounded worker
 
     resolver = resolver or PackageResolver(options.package_paths, file)
     try:
-        result = expansion.expand(root, str(file) if file else None, options.mappings, resolver, data)
-    except expansion.ExpansionError as error:
-        location = expansion.located(error.origin, error.file or shown)
+        result = expanded.expand(root, str(file) if file else None, options.mappings, resolver, data)
+    except expanded.ExpansionError as error:
+        location = expanded.located(error.origin, error.file or shown)
         return Document(path, None, file, is_xacro=True, includes=list(error.includes)), [_error(error.code, error.message, location)]
     document = Document(path, result.text.encode("utf-8"), file, True, result.text, result.includes, result.origins)
-    warnings = [_error("X005", text, expansion.located(origin, shown)) for text, origin in result.warnings]
+    warnings = [_error("X005", text, expanded.located(origin, shown)) for text, origin in result.warnings]
     return document, warnings
 
 

@@ -194,6 +194,22 @@ def restrict(symbols: dict) -> None:
 
 
 # -- the time and memory bound ------------------------------------------------------
+def call(module: str, name: str, *args):
+    """``module.name(*args)``, the module imported here: given to :func:`bounded`,
+    only the process that runs the job imports it."""
+    import importlib
+
+    return getattr(importlib.import_module(module), name)(*args)
+
+
+def start(*modules: str) -> None:
+    """Fork the run's worker now (see :class:`_Worker`), and have it import ``modules``
+    while this process goes on. Does nothing where fork is missing or a worker runs."""
+    if hasattr(os, "fork"):
+        with contextlib.suppress(OSError):  # no process to spare now: the first job forks it, or says why not
+            _Worker.for_run(MEMORY_MIB, modules)
+
+
 def bounded(function, *args):
     """``function(*args)`` in a forked process with at most TIMEOUT_SECONDS and MEMORY_MIB more memory.
 
@@ -290,7 +306,8 @@ class _Worker:
 
     Forking a child per xacro file costs tens of milliseconds, and more the larger
     the parent has grown (its whole memory is mapped into the child and torn down
-    after). The worker is forked at the first job, while the parent is small. A job
+    after). The worker is forked at the first job, while the parent is small, or
+    earlier by :func:`start`, which has it import what the jobs will need. A job
     is ``(function, args)`` pickled, with the parent's environment and working
     folder; the answer is pickled back. The worker has the same memory limit as a
     child per job had; one that ran out of time is killed, one that died is
@@ -302,7 +319,7 @@ class _Worker:
 
     _current: _Worker | None = None
 
-    def __init__(self, memory_mib: int):
+    def __init__(self, memory_mib: int, modules: tuple[str, ...] = ()):
         jobs_read, self.jobs = os.pipe()
         self.answers, answers_write = os.pipe()
         self.memory_mib = memory_mib
@@ -311,12 +328,12 @@ class _Worker:
         if self.pid == 0:  # the worker: never returns
             os.close(self.jobs)
             os.close(self.answers)
-            _serve(jobs_read, answers_write, memory_mib)
+            _serve(jobs_read, answers_write, memory_mib, modules)
         os.close(jobs_read)
         os.close(answers_write)
 
     @classmethod
-    def for_run(cls, memory_mib: int) -> _Worker:
+    def for_run(cls, memory_mib: int, modules: tuple[str, ...] = ()) -> _Worker:
         current = cls._current
         if current is not None and current.owner != os.getpid():
             current = cls._current = None  # inherited by a forked process: its parent's, not ours
@@ -324,7 +341,7 @@ class _Worker:
             current.stop()
             current = None
         if current is None:
-            current = cls._current = cls(memory_mib)
+            current = cls._current = cls(memory_mib, modules)
             atexit.register(current.stop)
         return current
 
@@ -359,9 +376,12 @@ class _Worker:
             _Worker._current = None
 
 
-def _serve(jobs: int, answers: int, memory_mib: int) -> None:
+def _serve(jobs: int, answers: int, memory_mib: int, modules: tuple[str, ...]) -> None:
     status = 0
     try:
+        for module in modules:  # what its jobs will need, imported before the first one comes
+            with contextlib.suppress(Exception):  # a job that needs it raises the error itself
+                __import__(module)
         gc.freeze()  # what the parent had: never scanned here, so never copied
         # A job's cyclic garbage is freed after it (below), not while it runs: collecting
         # during an expansion took a quarter of xacro's time on 1,500 macro calls, and

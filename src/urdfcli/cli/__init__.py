@@ -115,6 +115,10 @@ def main() -> None:
     from .fast import parsed
 
     argv = sys.argv[1:]
+    if argv[:1] != ["rules"] and any(argument.endswith(".xacro") for argument in argv[1:]):
+        from ..expanded import start
+
+        start()  # xacro's worker imports xacro while this process imports the rest
     try:
         with one_run():
             found = parsed(argv)
