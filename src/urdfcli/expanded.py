@@ -89,7 +89,6 @@ class Expansion:
     warnings: list[tuple[str, Origin | None]] = field(default_factory=list)
 
 
-
 def located(origin: Origin | None, file: str) -> Location:
     """The location of an origin; just ``file`` when there is none."""
     if origin is None:
