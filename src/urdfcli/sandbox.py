@@ -28,6 +28,7 @@ import ast
 import atexit
 import contextlib
 import gc
+import importlib
 import io
 import os
 import pickle
@@ -197,8 +198,6 @@ def restrict(symbols: dict) -> None:
 def call(module: str, name: str, *args):
     """``module.name(*args)``, the module imported here: given to :func:`bounded`,
     only the process that runs the job imports it."""
-    import importlib
-
     return getattr(importlib.import_module(module), name)(*args)
 
 
@@ -381,7 +380,7 @@ def _serve(jobs: int, answers: int, memory_mib: int, modules: tuple[str, ...]) -
     try:
         for module in modules:  # what its jobs will need, imported before the first one comes
             with contextlib.suppress(Exception):  # a job that needs it raises the error itself
-                __import__(module)
+                importlib.import_module(module)
         gc.freeze()  # what the parent had: never scanned here, so never copied
         # A job's cyclic garbage is freed after it (below), not while it runs: collecting
         # during an expansion took a quarter of xacro's time on 1,500 macro calls, and
