@@ -99,6 +99,22 @@ def test_xacro_is_imported_only_by_the_worker_that_runs_it(command):
     assert expected in done.stdout
 
 
+@pytest.mark.parametrize(
+    "arguments, ahead",
+    [
+        (["--format", "json", "arm.urdf", "robot.urdf.xacro", "prefix:=left_", "other.xacro"], ("robot.urdf.xacro", {"prefix": "left_"})),
+        (["robot.urdf.xacro", "-P", "src"], (None, {})),
+        (["robot.urdf.xacro", "-Psrc"], (None, {})),
+        (["--package-path=src", "robot.urdf.xacro"], (None, {})),
+    ],
+)
+def test_the_worker_expands_ahead_the_first_xacro_input_with_the_arguments_of_the_command_line(arguments, ahead):
+    """Package paths are read with the options, and from configuration: none is guessed."""
+    from urdfcli.cli import _first_expansion
+
+    assert _first_expansion(arguments) == ahead
+
+
 def test_check_modules_hold_every_rule_check_runs():
     from urdfcli import rules
 

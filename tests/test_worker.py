@@ -12,11 +12,6 @@ from conftest import FIXTURES
 
 from urdfcli import expanded, expansion, sandbox
 from urdfcli.packages import PackageResolver
-from urdfcli.xmlsafe import parse_bytes
-
-
-def lines_of(element) -> list:
-    return [(node.tag if isinstance(node.tag, str) else "comment", node.sourceline) for node in element.iter()]
 
 
 def test_jobs_share_one_worker_that_is_not_this_process():
@@ -90,12 +85,6 @@ def test_the_worker_sees_the_environment_and_folder_of_each_job(monkeypatch, tmp
     assert sandbox.bounded(os.getcwd) == str(tmp_path)
 
 
-def test_an_element_reaches_the_worker_with_its_source_lines():
-    root = parse_bytes(b'<robot name="r">\n  <!-- note -->\n  <link\n     name="a"/>\n\n  <joint name="j"/>\n</robot>')
-    assert sandbox.bounded(lines_of, root) == lines_of(root)
-    assert sandbox.bounded(lines_of, root[2]) == lines_of(root[2])
-
-
 def test_a_job_that_cannot_be_pickled_runs_in_a_child_of_its_own():
     assert sandbox.bounded(lambda: os.getpid()) != os.getpid()
 
@@ -108,9 +97,78 @@ def test_expansion_in_the_worker_is_the_expansion_in_process(path: Path):
     def run(expand):
         data = path.read_bytes()
         try:
-            result = expand(parse_bytes(data), str(path), {}, PackageResolver((), path), data)
+            result = expand(data, str(path), {}, PackageResolver((), path))
         except expanded.ExpansionError as error:
             return ("error", error.message, error.origin, error.file, error.code)
         return (result.text, list(result.origins), result.includes, result.warnings)
 
     assert run(expanded.expand) == run(expansion.expand_here)
+
+
+def test_a_job_sent_now_is_answered_when_asked_for():
+    sent = sandbox.Sent(os.getpid)
+    assert sent.result() == sandbox.bounded(os.getpid) != os.getpid()
+
+
+def answered(sent: sandbox.Sent) -> bool:
+    deadline = time.monotonic() + 10
+    while not sent.worker.answered():
+        assert time.monotonic() < deadline, "the worker did not answer"
+        time.sleep(0.01)
+    return True
+
+
+def test_a_job_given_up_after_its_answer_leaves_the_worker_to_the_next_job():
+    worker = sandbox.bounded(os.getpid)
+    sent = sandbox.Sent(sum, [1, 2])
+    assert answered(sent)
+    sent.drop()
+    assert sandbox.bounded(os.getpid) == worker
+
+
+def test_a_job_given_up_before_its_answer_stops_the_worker_and_the_next_job_starts_another():
+    worker = sandbox.bounded(os.getpid)
+    sent = sandbox.Sent(time.sleep, 30)
+    started = time.monotonic()
+    sent.drop()
+    assert sandbox.bounded(os.getpid) != worker
+    assert time.monotonic() - started < 5
+
+
+CAR = FIXTURES / "urdf01_rviz" / "urdf" / "xacro" / "car.urdf.xacro"
+
+
+def expansion_of(expand, path: Path, mappings: dict[str, str]):
+    try:
+        result = expand(path.read_bytes(), str(path), mappings, PackageResolver((), path))
+    except expanded.ExpansionError as error:
+        return ("error", error.message, error.origin, error.file, error.code)
+    return (result.text, list(result.origins), result.includes, result.warnings)
+
+
+@pytest.fixture
+def two_cpus(monkeypatch):
+    monkeypatch.setattr(os, "sched_getaffinity", lambda pid: {0, 1}, raising=False)
+
+
+def test_the_first_expansion_of_a_run_takes_the_answer_sent_ahead_for_it(two_cpus, monkeypatch):
+    with expanded.started(str(CAR), {"unused": "1"}):
+        monkeypatch.setattr(sandbox, "bounded", None)  # no job is sent again
+        assert expanded._ahead is not None
+        assert expansion_of(expanded.expand, CAR, {"unused": "1"}) == expansion_of(expansion.expand_here, CAR, {"unused": "1"})
+        assert expanded._ahead is None
+
+
+@pytest.mark.parametrize("first", [CAR.with_name("demo05_car_base.urdf.xacro"), CAR], ids=["another file", "other arguments"])
+def test_another_first_expansion_drops_the_one_sent_ahead(two_cpus, first):
+    with expanded.started(str(CAR), {"unused": "1"}):
+        assert expansion_of(expanded.expand, first, {}) == expansion_of(expansion.expand_here, first, {})
+        assert expanded._ahead is None
+        assert expansion_of(expanded.expand, CAR, {"unused": "1"}) == expansion_of(expansion.expand_here, CAR, {"unused": "1"})
+
+
+def test_an_expansion_sent_ahead_and_not_asked_for_is_dropped_at_the_end_of_the_run(two_cpus):
+    with expanded.started(str(CAR), {}):
+        assert expanded._ahead is not None
+    assert expanded._ahead is None
+    assert expansion_of(expanded.expand, CAR, {}) == expansion_of(expansion.expand_here, CAR, {})

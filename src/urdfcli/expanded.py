@@ -3,14 +3,15 @@ of its elements was written, and the errors.
 
 xacro itself runs in :mod:`.expansion`, inside the bounded worker of
 :mod:`.sandbox`: this module asks for it by name, so that only the worker imports
-xacro (a sixth of the start-up of a run on a small xacro file). See :func:`start`.
+xacro (a sixth of the start-up of a run on a small xacro file). See :func:`started`.
 """
 
 from __future__ import annotations
 
+import contextlib
 import os
 from array import array
-from collections.abc import Sequence
+from collections.abc import Iterator, Sequence
 from dataclasses import dataclass, field
 from typing import TYPE_CHECKING
 
@@ -20,8 +21,6 @@ from .diagnostics import Call, Location
 _EXPANSION = "urdfcli.expansion"  # where xacro runs; imported by the worker only
 
 if TYPE_CHECKING:
-    from lxml import etree
-
     from .packages import PackageResolver
 
 
@@ -104,28 +103,73 @@ def display_path(path: str) -> str:
     return path if relative.startswith("..") else relative
 
 
-def start() -> None:
-    """Start the xacro worker now, importing xacro, when a second CPU can do that
-    while this process goes on importing the model and its rules (on one CPU the
-    worker starts at the first expansion, as it would)."""
+@contextlib.contextmanager
+def started(path: str | None = None, mappings: dict[str, str] | None = None) -> Iterator[None]:
+    """Start the xacro worker now, importing xacro, for the run in the block, when a
+    second CPU can do that while this process goes on importing the model and its
+    rules (on one CPU the worker starts at the first expansion, as it would).
+
+    Given the run's first xacro input (``path``) and the xacro arguments of its
+    command line, the worker expands it with them right away: when the run asks
+    for that very expansion (the same text, arguments, package paths,
+    environment and folder), the answer is there or on its way. Any other first
+    expansion (a library checked through the models that include it, arguments
+    from a configuration file) drops it: read and left when done, else stopped
+    with the worker. So is one not asked for by the end of the block.
+    """
+    global _ahead
     cpus = len(os.sched_getaffinity(0)) if hasattr(os, "sched_getaffinity") else os.cpu_count() or 1
     if cpus > 1:
         sandbox.start(_EXPANSION)
-
-
-def expand(
-    root: etree._Element,
-    file: str | None,
-    mappings: dict[str, str],
-    resolver: "PackageResolver",
-    data: bytes | None = None,
-) -> Expansion:
-    """Expand the parsed xacro document ``root`` read from ``file`` (None: stdin) as ``data``.
-
-    The expansion runs under sandbox.bounded: limited in time and memory.
-    """
+        if path is not None:
+            _ahead = _sent_ahead(path, mappings or {})
     try:
-        return sandbox.bounded(sandbox.call, _EXPANSION, "expand_here", root, file, mappings, resolver, data)
+        yield
+    finally:
+        ahead, _ahead = _ahead, None
+        if ahead is not None:
+            ahead[1].drop()
+
+
+def _sent_ahead(path: str, mappings: dict[str, str]) -> tuple[tuple, sandbox.Sent] | None:
+    from pathlib import Path
+
+    from .packages import PackageResolver
+
+    try:
+        file = Path(path)
+        job = (file.read_bytes(), str(file), dict(mappings), PackageResolver((), file))
+        return _same_job(*job), sandbox.Sent(sandbox.call, _EXPANSION, "expand_here", *job)
+    except Exception:  # noqa: BLE001 - not readable, or no process to spare: the run says what is wrong when it gets there
+        return None
+
+
+_ahead: tuple[tuple, sandbox.Sent] | None = None  # the expansion :func:`started` sent, until the first one asked for
+
+
+def _same_job(data: bytes | None, file: str | None, mappings: dict[str, str], resolver: "PackageResolver") -> tuple:
+    """What an expansion depends on: equal for two jobs, the same answer."""
+    try:
+        folder = os.getcwd()
+    except OSError:  # a working folder removed: no job sent ahead was sent from it
+        folder = None
+    return (data, file, sorted(mappings.items()), resolver.settings(), sorted(os.environ.items()), folder)
+
+
+def expand(data: bytes, file: str | None, mappings: dict[str, str], resolver: "PackageResolver") -> Expansion:
+    """Expand the xacro document ``data`` read from ``file`` (None: stdin).
+
+    The expansion runs under sandbox.bounded: limited in time and memory. The first
+    one takes the answer to the same job sent ahead by :func:`started`, if any.
+    """
+    global _ahead
+    ahead, _ahead = _ahead, None
+    try:
+        if ahead is not None and ahead[0] == _same_job(data, file, mappings, resolver):
+            return ahead[1].result()
+        if ahead is not None:
+            ahead[1].drop()
+        return sandbox.bounded(sandbox.call, _EXPANSION, "expand_here", data, file, mappings, resolver)
     except sandbox.LimitExceeded as error:
         shown = display_path(file) if file else "<stdin>"
         raise ExpansionError(f"xacro expansion stopped: {error} (the limit for one file)", None, shown) from None

@@ -440,9 +440,13 @@ class _Stderr(io.StringIO):
         return len(text)
 
 
-def expand_here(root: etree._Element, file: str | None, mappings: dict[str, str], resolver: "PackageResolver", data: bytes | None) -> Expansion:
+def expand_here(data: bytes, file: str | None, mappings: dict[str, str], resolver: "PackageResolver") -> Expansion:
     """:func:`urdfcli.expanded.expand`, here in this process and unbounded."""
     shown = display_path(file) if file else "<stdin>"
+    try:
+        root = parse_bytes(data)
+    except XmlError as error:
+        raise ExpansionError(error.message, Origin(shown, error.line, error.column), shown, code=error.code) from None
     doc = tagged_dom(root, shown, data)
     session = _Session(resolver.find)
     with session, contextlib.redirect_stderr(_Stderr(session)):

@@ -152,7 +152,7 @@ def matching_call(loaded: Loaded, link: Link, use: MacroUse) -> str | None:
     probe = f'<robot name="probe" xmlns:xacro="{namespace}">{etree.tostring(macro, encoding="unicode", with_tail=False)}'
     probe += "".join(f'<link name="c{i}">{call}</link>' for i, call in enumerate(calls)) + "</robot>"
     try:
-        text = expanded.expand(parse_bytes(probe.encode()), None, {}, resolver_of(loaded)).text
+        text = expanded.expand(probe.encode(), None, {}, resolver_of(loaded)).text
         links = parse_bytes(text.encode()).findall("link")
     except Exception:  # noqa: BLE001  (a macro that needs more than its parameters)
         return None

@@ -73,29 +73,21 @@ def is_xacro(data: bytes) -> bool:
     namespace, or any element prefixed ``xacro:``), or ``${`` / ``$(`` in an attribute
     or in text outside comments. A namespace declaration alone is not use: xacro's
     output would read the same, at many times the cost. A document that is not
-    well-formed is not xacro: reading it says what is wrong."""
-    return xacro_document(data) is not None
-
-
-def xacro_document(data: bytes) -> etree._Element | None:
-    """The parsed document when it uses xacro (see :func:`is_xacro`), else None. The
-    bytes are searched first; the document is parsed only when they cannot tell,
-    and the parse is the one xacro then expands."""
+    well-formed is not xacro: reading it says what is wrong. The bytes are searched
+    first; the document is parsed only when they cannot tell."""
     try:
         searchable = positions.ascii_compatible(data)  # its markup can be searched as bytes
         if searchable and b"$" not in data and b"xacro" not in data:  # ('$' first: a search for one byte is the fastest)
-            return None
+            return False
         if searchable and b"[CDATA[" not in data:  # comments can be told apart by bytes
             if b"$" not in data or not (_written(data, b"${") or _written(data, b"$(")):
                 if not _written(data, b"<xacro:") and all(_binds_prefix(data, at) for at in _namespace_mentions(data)):
-                    return None  # each mention of xacro's namespace binds the prefix xacro, which no element uses
-                root = parse_bytes(data)
+                    return False  # each mention of xacro's namespace binds the prefix xacro, which no element uses
                 # prefixed xacro: (bound to any namespace), or xacro's namespace under another prefix
-                return root if _HAS_XACRO_ELEMENT(root) else None
-        root = parse_bytes(data)
-        return root if _USES_XACRO(root) else None
+                return _HAS_XACRO_ELEMENT(parse_bytes(data))
+        return _USES_XACRO(parse_bytes(data))
     except XmlError:
-        return None
+        return False
 
 
 def _written(data: bytes, needle: bytes) -> bool:
@@ -147,19 +139,16 @@ def load_document(
     shown = "<stdin>" if file is None else path
     if file is None:
         positions.register(shown, data)  # excerpts and columns, as for a file
-    named_xacro = force_xacro or path.endswith(".xacro")
-    root = None if named_xacro else xacro_document(data)
-    if root is None and not named_xacro:
+    if not (force_xacro or path.endswith(".xacro") or is_xacro(data)):
         return Document(path, data, file), []  # read by model.read
-    try:
-        root = root if root is not None else parse_bytes(data)  # with the white space xacro lays out
-    except XmlError as error:
+    error = _not_well_formed(data)
+    if error is not None:
         return Document(path, None, file), [_error(error.code, error.message, Location(shown, error.line, error.column))]
     from . import expanded  # xacro itself is imported where it runs: the bounded worker
 
     resolver = resolver or PackageResolver(options.package_paths, file)
     try:
-        result = expanded.expand(root, str(file) if file else None, options.mappings, resolver, data)
+        result = expanded.expand(data, str(file) if file else None, options.mappings, resolver)
     except expanded.ExpansionError as error:
         location = expanded.located(error.origin, error.file or shown)
         return Document(path, None, file, is_xacro=True, includes=list(error.includes)), [_error(error.code, error.message, location)]

@@ -159,6 +159,10 @@ class PackageResolver:
         self._scanned: set[Path] = set()
         self._answers: dict[str, Path | None] = {}  # every look-up, found or not
 
+    def settings(self) -> tuple:
+        """Where it looks, as given: two resolvers of equal settings find the same packages."""
+        return (tuple(self._explicit.items()), tuple(self._scan_roots), tuple(self._ament), self._input_file)
+
     @cached_property
     def _own(self) -> Path | None:
         """The package the input is in: looked for only when a look-up needs it."""

@@ -29,7 +29,6 @@ import atexit
 import contextlib
 import gc
 import importlib
-import io
 import os
 import pickle
 import selectors
@@ -220,16 +219,39 @@ def bounded(function, *args):
     if not hasattr(os, "fork"):
         return function(*args)
     try:
-        job = _dumps_job(function, args)
+        sent = Sent(function, *args)
     except (pickle.PicklingError, TypeError, AttributeError, OSError):  # a lambda, a lost working folder...
         return _bounded_once(function, args)
-    seconds, memory_mib = TIMEOUT_SECONDS, MEMORY_MIB
-    data = _Worker.for_run(memory_mib).run(job, seconds)
-    if data is _RETIRED:  # it ended before taking the job: a new one takes it
-        data = _Worker.for_run(memory_mib).run(job, seconds)
-    if data is _RETIRED:
-        data = b""  # a new worker that ends at once
-    return _result(data, seconds, memory_mib)
+    return sent.result()
+
+
+class Sent:
+    """A job given to the run's worker now, under the bounds of :func:`bounded`
+    (its time counted from now); its answer is read when asked for, so that this
+    process goes on meanwhile. Raises what pickling the job raises."""
+
+    def __init__(self, function, *args):
+        self.job = _dumps_job(function, args)
+        self.seconds, self.memory_mib = TIMEOUT_SECONDS, MEMORY_MIB
+        self.deadline = time.monotonic() + self.seconds
+        self.worker = _Worker.for_run(self.memory_mib)
+        self.taken = self.worker.send(self.job)
+
+    def result(self):
+        """The job's value, or its exception raised here (see :func:`bounded`)."""
+        data = self.worker.receive(self.deadline) if self.taken else _RETIRED
+        if data is _RETIRED:  # it ended before taking the job: a new one takes it
+            worker = _Worker.for_run(self.memory_mib)
+            data = worker.receive(time.monotonic() + self.seconds) if worker.send(self.job) else _RETIRED
+        return _result(b"" if data is _RETIRED else data, self.seconds, self.memory_mib)
+
+    def drop(self) -> None:
+        """Give up the job: its answer is read and left when it is there already,
+        else the worker is stopped (the next job starts another)."""
+        if self.taken and self.worker.answered():
+            self.worker.receive(self.deadline)
+        else:
+            self.worker.stop()
 
 
 def _result(data: bytes | None, seconds: float, memory_mib: int):
@@ -344,24 +366,34 @@ class _Worker:
             atexit.register(current.stop)
         return current
 
-    def run(self, job: bytes, seconds: float):
-        """The answer; None when the time ran out, b"" when the worker died during the
-        job, _RETIRED when it ended (retired, or died) without taking the job. The
-        worker is stopped unless it answered."""
-        with selectors.DefaultSelector() as selector:  # a notice or an end since the last job?
-            selector.register(self.answers, selectors.EVENT_READ)
-            gone = bool(selector.select(0))
-        if not gone:
-            try:
-                _write_message(self.jobs, job)
-            except OSError:  # BrokenPipeError: it ended before reading the job
-                gone = True
-        answer = _RETIRED if gone else _read_message(self.answers, time.monotonic() + seconds)
+    def send(self, job: bytes) -> bool:
+        """Give it a job; False when it has ended (retired, or died) since its last answer."""
+        if self.answered():  # its notice of retiring, or its end, since the last answer
+            self.stop()
+            return False
+        try:
+            _write_message(self.jobs, job)
+        except OSError:  # BrokenPipeError: it ended before reading the job
+            self.stop()
+            return False
+        return True
+
+    def receive(self, deadline: float):
+        """The answer to the job it took: None when the time ran out, b"" when it died
+        during the job, _RETIRED when it ended without taking the job. The worker
+        is stopped unless it answered."""
+        answer = _read_message(self.answers, deadline)
         if answer == _RETIRING:  # it retired after its last answer, before reading this job
             answer = _RETIRED
         if answer is None or answer is _RETIRED or not answer:
             self.stop()
         return answer
+
+    def answered(self) -> bool:
+        """Whether it has written something not read yet (or ended)."""
+        with selectors.DefaultSelector() as selector:
+            selector.register(self.answers, selectors.EVENT_READ)
+            return bool(selector.select(0))
 
     def stop(self) -> None:
         if self.owner != os.getpid() or self.pid is None:
@@ -416,43 +448,7 @@ def _serve(jobs: int, answers: int, memory_mib: int, modules: tuple[str, ...]) -
 
 
 def _dumps_job(function, args) -> bytes:
-    stream = io.BytesIO()
-    _JobPickler(stream, pickle.HIGHEST_PROTOCOL).dump((function, args, dict(os.environ), os.getcwd()))
-    return stream.getvalue()
-
-
-class _JobPickler(pickle.Pickler):
-    """Pickles an lxml element as its whole document and the source line of each node."""
-
-    def reducer_override(self, obj):
-        if type(obj).__module__ == "lxml.etree" and hasattr(obj, "getroottree"):
-            return _element, _element_state(obj)
-        return NotImplemented
-
-
-_MAX_LINE = 65_534  # libxml2 keeps a node's line in 16 bits: a set line beyond this would not hold
-
-
-def _element_state(element) -> tuple:
-    from lxml import etree
-
-    root = element.getroottree().getroot()
-    nodes = list(root.iter())
-    lines = [node.sourceline for node in nodes]
-    if max((line or 0 for line in lines), default=0) > _MAX_LINE:
-        raise pickle.PicklingError("a document of more lines than libxml2 sets")
-    return etree.tostring(element.getroottree(), encoding="utf-8"), lines, nodes.index(element)
-
-
-def _element(text: bytes, lines: list, index: int):
-    from .xmlsafe import parse_bytes
-
-    root = parse_bytes(text)
-    nodes = list(root.iter())
-    for node, line in zip(nodes, lines):
-        if line is not None:
-            node.sourceline = line
-    return nodes[index]
+    return pickle.dumps((function, args, dict(os.environ), os.getcwd()), pickle.HIGHEST_PROTOCOL)
 
 
 def _write_message(fd: int, payload: bytes) -> None:

@@ -115,12 +115,13 @@ def main() -> None:
     from .fast import parsed
 
     argv = sys.argv[1:]
+    xacro = contextlib.nullcontext()
     if argv[:1] != ["rules"] and any(argument.endswith(".xacro") for argument in argv[1:]):
-        from ..expanded import start
+        from ..expanded import started
 
-        start()  # xacro's worker imports xacro while this process imports the rest
+        xacro = started(*_first_expansion(argv[1:]))  # xacro's worker expands while this process imports the rest
     try:
-        with one_run():
+        with one_run(), xacro:
             found = parsed(argv)
             code = found.run() if found is not None else _typer_main(argv)
     except BadValue as error:  # as typer says it, for a command line read without typer
@@ -142,6 +143,16 @@ def main() -> None:
         )
         sys.exit(2)
     sys.exit(code if isinstance(code, int) else 0)
+
+
+def _first_expansion(arguments: list[str]) -> tuple[str | None, dict[str, str]]:
+    """The first xacro input of a command line and its NAME:=VALUE arguments, for the
+    worker to expand ahead; no input when package paths are given (they are read
+    with the options)."""
+    if any(a in ("-P", "--package-path") or a.startswith(("-P", "--package-path=")) for a in arguments):
+        return None, {}
+    mappings = dict(a.partition(":=")[::2] for a in arguments if ":=" in a)
+    return next(a for a in arguments if a.endswith(".xacro")), mappings
 
 
 def run() -> None:
