@@ -183,3 +183,23 @@ def test_yaml_loaded_by_xacro_matches_the_xacro_tool(tmp_path):
     assert mine.returncode == 0, mine.stderr
     assert 'name="upper_arm"' in real.stdout and 'length="0.35"' in real.stdout
     assert mine.stdout.decode() == real.stdout
+
+
+def test_cdata_sections_are_printed_as_the_xacro_tool_prints_them(tmp_path):
+    """Gazebo plugins and ros2_control blocks sometimes carry CDATA: xacro prints each
+    section as written (not as escaped text), in the file given and in the files it includes."""
+    (tmp_path / "part.xacro").write_text(
+        '<robot xmlns:xacro="http://www.ros.org/wiki/xacro"><gazebo reference="a"><![CDATA[ <sdf> & ]]></gazebo></robot>\n'
+    )
+    path = tmp_path / "cdata.urdf.xacro"
+    path.write_text(
+        '<?xml version="1.0"?>\n<robot name="r" xmlns:xacro="http://www.ros.org/wiki/xacro">\n'
+        '  <xacro:property name="w" value="1"/>\n  <xacro:include filename="part.xacro"/>\n'
+        '  <link name="a"/>\n'
+        '  <gazebo><plugin name="p"><![CDATA[ a < b ${w} ]]></plugin><x>t <![CDATA[<c>]]> u</x></gazebo>\n</robot>\n'
+    )
+    real = real_xacro(path, cwd=tmp_path)
+    mine = run_cli("expand", str(path), cwd=tmp_path)
+    assert real.returncode == 0, real.stderr
+    assert "<![CDATA[ a < b ${w} ]]>" in real.stdout and "<![CDATA[ <sdf> & ]]>" in real.stdout
+    assert mine.stdout.decode() == real.stdout

@@ -21,6 +21,7 @@ _PARSER_OPTIONS = dict(
     dtd_validation=False,
     huge_tree=False,
     collect_ids=False,
+    strip_cdata=False,  # kept as written: xacro prints a CDATA section as one
 )
 
 
