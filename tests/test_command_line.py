@@ -8,7 +8,7 @@ import inspect
 
 import pytest
 
-from urdfcli import cli
+from urdfcli.cli import application
 from urdfcli.cli.fast import parsed
 
 ROBOT = "robot.urdf"
@@ -70,7 +70,7 @@ def _options(argv: list[str]) -> set[str]:
 def typer_reading(argv: list[str], monkeypatch) -> dict:
     """The keyword arguments typer's application gives the command for ``argv``."""
     name = argv[0]
-    command = cli.command_function(name)
+    command = application.command_function(name)
     given: dict = {}
 
     def spy(**kwargs):
@@ -78,8 +78,8 @@ def typer_reading(argv: list[str], monkeypatch) -> dict:
 
     spy.__signature__ = inspect.signature(command, eval_str=True)
     spy.__doc__ = command.__doc__
-    monkeypatch.setattr(cli, "command_function", lambda _: spy)
-    for_typer = cli.for_typer
+    monkeypatch.setattr(application, "command_function", lambda _: spy)
+    for_typer = application.for_typer
 
     def recording(function):
         run = for_typer(function)
@@ -91,8 +91,8 @@ def typer_reading(argv: list[str], monkeypatch) -> dict:
 
         return recorder
 
-    monkeypatch.setattr(cli, "for_typer", recording)
-    cli.build_app([name])(args=argv, prog_name="urdfcli", standalone_mode=False)
+    monkeypatch.setattr(application, "for_typer", recording)
+    application.build_app([name])(args=argv, prog_name="urdfcli", standalone_mode=False)
     return given
 
 
@@ -113,7 +113,7 @@ def test_an_unusual_command_line_is_left_to_typer(argv):
 def test_every_option_is_read_by_some_plain_command_line():
     """The plain command lines above name every option of every command."""
     named = set().union(*(_options(argv) for argv in PLAIN))
-    for name in cli.COMMANDS:
-        for parameter in inspect.signature(cli.command_function(name), eval_str=True).parameters.values():
+    for name in application.COMMANDS:
+        for parameter in inspect.signature(application.command_function(name), eval_str=True).parameters.values():
             spec = parameter.annotation.__metadata__[0]
             assert not spec.names or set(spec.names) & named, f"{name} {parameter.name}"

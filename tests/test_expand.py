@@ -163,43 +163,50 @@ def test_output_file_is_written_and_input_is_never_overwritten(tmp_path):
     assert [p.name for p in tmp_path.iterdir() if p.name.startswith(".")] == []  # no temporary file left
 
 
-def test_yaml_loaded_by_xacro_matches_the_xacro_tool(tmp_path):
-    """xacro.load_yaml: yaml is imported only when a model uses it, and the output is
-    the xacro tool's, byte for byte."""
-    (tmp_path / "params.yaml").write_text("arm:\n  name: upper_arm\n  length: 0.35\n  offsets: [0.1, 0.2]\n")
-    path = tmp_path / "arm.urdf.xacro"
-    path.write_text(
-        '<robot name="r" xmlns:xacro="http://www.ros.org/wiki/xacro">\n'
-        "  <xacro:property name=\"p\" value=\"${xacro.load_yaml('params.yaml')}\"/>\n"
-        "  <link name=\"${p['arm']['name']}\">\n"
-        "    <visual><geometry><cylinder radius=\"${p['arm']['offsets'][0]}\" length=\"${p['arm']['length']}\"/></geometry></visual>\n"
-        "  </link>\n"
-        "  <link name=\"second\"/>\n"
-        '</robot>\n'
-    )
+YAML_MODEL = (
+    '<robot name="r" xmlns:xacro="http://www.ros.org/wiki/xacro">\n'
+    "  <xacro:property name=\"p\" value=\"${xacro.load_yaml('params.yaml')}\"/>\n"
+    "  <link name=\"${p['arm']['name']}\">\n"
+    "    <visual><geometry><cylinder radius=\"${p['arm']['offsets'][0]}\" length=\"${p['arm']['length']}\"/></geometry></visual>\n"
+    "  </link>\n"
+    "  <link name=\"second\"/>\n"
+    "</robot>\n"
+)
+CDATA_MODEL = (
+    '<?xml version="1.0"?>\n<robot name="r" xmlns:xacro="http://www.ros.org/wiki/xacro">\n'
+    '  <xacro:property name="w" value="1"/>\n  <xacro:include filename="part.xacro"/>\n'
+    '  <link name="a"/>\n'
+    '  <gazebo><plugin name="p"><![CDATA[ a < b ${w} ]]></plugin><x>t <![CDATA[<c>]]> u</x></gazebo>\n</robot>\n'
+)
+
+
+@pytest.mark.parametrize(
+    "files, printed",
+    [
+        (
+            {"params.yaml": "arm:\n  name: upper_arm\n  length: 0.35\n  offsets: [0.1, 0.2]\n", "model.urdf.xacro": YAML_MODEL},
+            ['name="upper_arm"', 'length="0.35"'],
+        ),
+        (
+            {
+                "part.xacro": '<robot xmlns:xacro="http://www.ros.org/wiki/xacro"><gazebo reference="a"><![CDATA[ <sdf> & ]]></gazebo></robot>\n',
+                "model.urdf.xacro": CDATA_MODEL,
+            },
+            ["<![CDATA[ a < b ${w} ]]>", "<![CDATA[ <sdf> & ]]>"],
+        ),
+    ],
+    ids=["yaml loaded by xacro.load_yaml", "CDATA sections"],
+)
+def test_what_xacro_prints_is_printed_byte_for_byte(tmp_path, files, printed):
+    """xacro.load_yaml (yaml is imported only when a model uses it); CDATA sections,
+    which gazebo plugins and ros2_control blocks sometimes carry, printed as written
+    (not as escaped text) in the file given and in the files it includes."""
+    for name, text in files.items():
+        (tmp_path / name).write_text(text)
+    path = tmp_path / "model.urdf.xacro"
     real = real_xacro(path, cwd=tmp_path)
     mine = run_cli("expand", str(path), cwd=tmp_path)
     assert real.returncode == 0, real.stderr
     assert mine.returncode == 0, mine.stderr
-    assert 'name="upper_arm"' in real.stdout and 'length="0.35"' in real.stdout
-    assert mine.stdout.decode() == real.stdout
-
-
-def test_cdata_sections_are_printed_as_the_xacro_tool_prints_them(tmp_path):
-    """Gazebo plugins and ros2_control blocks sometimes carry CDATA: xacro prints each
-    section as written (not as escaped text), in the file given and in the files it includes."""
-    (tmp_path / "part.xacro").write_text(
-        '<robot xmlns:xacro="http://www.ros.org/wiki/xacro"><gazebo reference="a"><![CDATA[ <sdf> & ]]></gazebo></robot>\n'
-    )
-    path = tmp_path / "cdata.urdf.xacro"
-    path.write_text(
-        '<?xml version="1.0"?>\n<robot name="r" xmlns:xacro="http://www.ros.org/wiki/xacro">\n'
-        '  <xacro:property name="w" value="1"/>\n  <xacro:include filename="part.xacro"/>\n'
-        '  <link name="a"/>\n'
-        '  <gazebo><plugin name="p"><![CDATA[ a < b ${w} ]]></plugin><x>t <![CDATA[<c>]]> u</x></gazebo>\n</robot>\n'
-    )
-    real = real_xacro(path, cwd=tmp_path)
-    mine = run_cli("expand", str(path), cwd=tmp_path)
-    assert real.returncode == 0, real.stderr
-    assert "<![CDATA[ a < b ${w} ]]>" in real.stdout and "<![CDATA[ <sdf> & ]]>" in real.stdout
+    assert all(text in real.stdout for text in printed)
     assert mine.stdout.decode() == real.stdout

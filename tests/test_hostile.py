@@ -120,6 +120,24 @@ def test_external_entities_and_dtds_are_never_read(cli, tmp_path, secret, docume
     assert str(path) in (result.stderr if command[-1] != "json" else result.stdout)
 
 
+@pytest.mark.parametrize(
+    "included",
+    [BILLION_LAUGHS, '<!DOCTYPE r [<!ENTITY s SYSTEM "file://{secret}">]><robot name="&s;"><link name="a"/></robot>', '<robot name="&s;"/>'],
+    ids=["billion-laughs", "external-entity", "undefined-entity"],
+)
+def test_an_included_file_declaring_or_using_entities_is_refused(cli, tmp_path, secret, included):
+    """xacro's worker reads an included file with minidom only when it has no DOCTYPE
+    and minidom reads it; anything else goes through urdfcli's reader, which refuses."""
+    write(tmp_path, "part.xacro", included.format(secret=secret))
+    path = write(tmp_path, "main.urdf.xacro", f'<robot {XACRO} name="r"><xacro:include filename="part.xacro"/><link name="b"/></robot>')
+    started = time.monotonic()
+    result = cli("check", str(path))
+    assert time.monotonic() - started < 5
+    assert result.exit_code == 1
+    assert "X001 error: XML syntax error in included file" in result.stderr
+    assert_clean(result)
+
+
 def test_xacro_include_of_a_non_xml_file_does_not_show_its_content(cli, tmp_path, secret):
     path = write(tmp_path, "inc.urdf.xacro", f'<robot {XACRO} name="r"><xacro:include filename="{secret}"/><link name="a"/></robot>')
     result = cli("check", str(path))

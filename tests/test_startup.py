@@ -99,6 +99,28 @@ def test_xacro_is_imported_only_by_the_worker_that_runs_it(command):
     assert expected in done.stdout
 
 
+WORKER_IMPORTS = (
+    "import sys\nfrom pathlib import Path\nimport urdfcli.expanded\n"  # what the run has when it forks the worker
+    "before = set(sys.modules)\n"
+    "from urdfcli import expansion\nfrom urdfcli.packages import PackageResolver\n"
+    "path = Path(sys.argv[1])\n"
+    "result = expansion.expand_here(path.read_bytes(), str(path), {}, PackageResolver((), path))\n"
+    "print(len(result.origins), sorted(set(sys.modules) - before))"
+)
+
+
+def test_the_xacro_worker_imports_neither_lxml_nor_the_model():
+    """What a worker imports is on the way to every xacro answer: xacro and minidom,
+    not lxml (nor typing or dataclasses, which it brings) or the model's modules, even
+    to find a package by its package.xml."""
+    model = FIXTURES / "urdf01_rviz" / "urdf" / "xacro" / "car_find.urdf.xacro"  # $(find urdf01_rviz)
+    done = subprocess.run([sys.executable, "-c", WORKER_IMPORTS, str(model)], capture_output=True, text=True)
+    elements, modules = done.stdout.split(" ", 1)
+    assert int(elements) > 20, done.stderr
+    assert "xacro" in modules and "xml.dom.minidom" in modules
+    assert not {"lxml", "lxml.etree", "typing", "dataclasses", "inspect", "urdfcli.diagnostics", "urdfcli.rules", "urdfcli.model"} & set(eval(modules))
+
+
 @pytest.mark.parametrize(
     "arguments, ahead",
     [

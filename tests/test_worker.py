@@ -172,3 +172,28 @@ def test_an_expansion_sent_ahead_and_not_asked_for_is_dropped_at_the_end_of_the_
         assert expanded._ahead is not None
     assert expanded._ahead is None
     assert expansion_of(expanded.expand, CAR, {}) == expansion_of(expansion.expand_here, CAR, {})
+
+
+ODD_DOCUMENTS = [
+    '<?xml version="1.0" encoding="UTF-8"?>\r\n<!-- a <link> in a comment -->\r\n<robot name="r" xmlns:xacro="http://www.ros.org/wiki/xacro">'
+    '<?pi <x>?><link\n   name="é&amp;&#x41;" a="1&#10;2"><![CDATA[ <joint> ]]></link>\t<xacro:if value="1"><link name="b"/></xacro:if></robot>',
+    '<?xml version="1.0" encoding="ISO-8859-1"?><robot name="r"><link name="\xe9"/></robot>',
+]
+
+
+def readings(data: bytes) -> tuple[str, str]:
+    """The document xacro is given, read by minidom alone and through urdfcli's reader."""
+    from urdfcli.positions import Source, decode
+
+    return (expansion.tagged_dom(data, "f").toxml(), expansion._tagged_by_reader(data, "f", Source(decode(data))).toxml())
+
+
+@pytest.mark.parametrize(
+    "data",
+    [*(p.read_bytes() for p in XACRO_FIXTURES), *(d.encode("latin-1" if "8859" in d else "utf-8") for d in ODD_DOCUMENTS)],
+    ids=[*(str(p.relative_to(FIXTURES)) for p in XACRO_FIXTURES), "odd-markup", "latin-1"],
+)
+def test_minidom_alone_reads_and_marks_a_document_as_urdfcli_s_reader_does(data):
+    alone, through_reader = readings(data)
+    assert alone == through_reader
+    assert expansion.ORIGIN in alone

@@ -4,20 +4,11 @@ from __future__ import annotations
 
 from dataclasses import dataclass, replace
 
+from .places import Call
 from .rules import rule
 from .severity import Severity
 
 __all__ = ["Call", "Diagnostic", "Location", "Severity"]
-
-
-@dataclass(frozen=True, slots=True)
-class Call:
-    """A xacro macro call: where it was written, and the macro it called."""
-
-    file: str
-    line: int | None
-    column: int | None
-    macro: str
 
 
 @dataclass(frozen=True, slots=True)

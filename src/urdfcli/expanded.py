@@ -12,27 +12,16 @@ import contextlib
 import os
 from array import array
 from collections.abc import Iterator, Sequence
-from dataclasses import dataclass, field
-from typing import TYPE_CHECKING
 
 from . import sandbox
-from .diagnostics import Call, Location
+from .places import Call, Origin
 
 _EXPANSION = "urdfcli.expansion"  # where xacro runs; imported by the worker only
 
+TYPE_CHECKING = False  # typing's flag, without typing: the worker imports this module
 if TYPE_CHECKING:
+    from .diagnostics import Location
     from .packages import PackageResolver
-
-
-@dataclass(frozen=True, slots=True)
-class Origin:
-    """Where an element was written (line and column of its ``<``), and the macro
-    calls that made it, innermost first."""
-
-    file: str
-    line: int
-    column: int | None = None
-    trace: tuple[Call, ...] = ()
 
 
 class ExpansionError(Exception):
@@ -80,16 +69,24 @@ class Origins(Sequence):
         return Origin(self.files[file], line, column or None, tuple(Call(*self.calls[i]) for i in self.traces[trace]))
 
 
-@dataclass
 class Expansion:
-    text: str  # the expanded document, as `xacro` prints it
-    origins: Origins  # one per element of `text`, in document order
-    includes: list[str]
-    warnings: list[tuple[str, Origin | None]] = field(default_factory=list)
+    """A xacro document expanded: its text as the ``xacro`` tool prints it, where each
+    of its elements was written (one origin per element, in document order), the
+    files it read, and xacro's warnings."""
+
+    __slots__ = ("text", "origins", "includes", "warnings")
+
+    def __init__(self, text: str, origins: Origins, includes: list[str], warnings: list[tuple[str, Origin | None]]):
+        self.text = text
+        self.origins = origins
+        self.includes = includes
+        self.warnings = warnings
 
 
 def located(origin: Origin | None, file: str) -> Location:
     """The location of an origin; just ``file`` when there is none."""
+    from .diagnostics import Location
+
     if origin is None:
         return Location(file)
     return Location(origin.file, origin.line or None, origin.column, trace=origin.trace)

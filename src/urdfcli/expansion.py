@@ -26,9 +26,6 @@ import xml.parsers.expat
 from array import array
 from collections.abc import Callable
 from pathlib import Path
-from typing import TYPE_CHECKING
-
-from lxml import etree
 
 
 class _ImportedOnUse(types.ModuleType):
@@ -61,11 +58,12 @@ import xacro  # noqa: E402  (after yaml's stand-in)
 import xacro.substitution_args  # noqa: E402
 
 from . import sandbox
-from .diagnostics import Call
-from .expanded import Expansion, ExpansionError, Origin, Origins, PackageNotFound, display_path
-from .positions import Source, decode
-from .xmlsafe import XmlError, parse_bytes
+from .expanded import Expansion, ExpansionError, Origins, PackageNotFound, display_path
+from .places import Call, Origin
+from .positions import Source, ascii_compatible, decode
+from .xmlsafe import XmlError
 
+TYPE_CHECKING = False  # typing's flag, without typing: this module starts xacro's worker
 if TYPE_CHECKING:
     from .packages import PackageResolver
 
@@ -104,20 +102,6 @@ class _NearbyNodeList(xml.dom.minicompat.NodeList):
 xml.dom.minidom.NodeList = _NearbyNodeList  # the children of every node minidom makes from here on
 
 
-def tag_origins(root: etree._Element, file: str, data: bytes | None) -> None:
-    """Mark every element with where its ``<`` was written (``LINE:COLUMN:FILE``)."""
-    elements = list(root.iter(etree.Element))
-    text = Source(decode(data)) if data is not None else None
-    starts = text.element_starts(len(elements)) if text is not None else None
-    if starts is None:  # not the text of this tree: the line libxml2 gives, no column
-        for element in elements:
-            element.set(ORIGIN, f"{element.sourceline or 0}:0:{file}")
-        return
-    for element, start in zip(elements, starts):
-        line, column = text.position(start)
-        element.set(ORIGIN, f"{line}:{column}:{file}")
-
-
 def parse_origin(value: str) -> Origin | None:
     place = _place(value)
     return Origin(place[2], place[0], place[1] or None) if place is not None else None
@@ -132,8 +116,55 @@ def _place(value: str) -> tuple[int, int, str] | None:
         return None
 
 
-def tagged_dom(root: etree._Element, file: str, data: bytes | None) -> xml.dom.minidom.Document:
-    tag_origins(root, file, data)
+def tagged_dom(data: bytes, file: str) -> xml.dom.minidom.Document:
+    """``data`` parsed as xacro parses it (minidom), every element marked with where its
+    ``<`` was written (``LINE:COLUMN:FILE``). Raises XmlError when urdfcli's reader
+    refuses the document, ExpansionError when only xacro's parser does.
+
+    minidom reads it alone when it can, and the text shows where each of its elements
+    starts. Anything else (a DOCTYPE, which may declare entities; an encoding expat
+    lacks; a mistake) goes through urdfcli's reader, lxml, which says what is wrong
+    where: only the worker of such a document imports lxml."""
+    text = Source(decode(data))
+    if b"<!DOCTYPE" not in data and ascii_compatible(data):
+        try:
+            doc = xml.dom.minidom.parseString(data)
+        except xml.parsers.expat.ExpatError:
+            pass
+        else:
+            elements = _elements(doc)
+            starts = text.element_starts(len(elements))
+            if starts is not None:
+                for element, start in zip(elements, starts):
+                    line, column = text.position(start)
+                    element.setAttribute(ORIGIN, f"{line}:{column}:{file}")
+                return doc
+    return _tagged_by_reader(data, file, text)
+
+
+def _elements(doc: xml.dom.minidom.Document) -> list:
+    """The elements of ``doc`` in document order (without recursion: a document may nest deeper than Python)."""
+    found, pending = [], [doc.documentElement]
+    while pending:
+        element = pending.pop()
+        found.append(element)
+        pending.extend(reversed([child for child in element.childNodes if child.nodeType == child.ELEMENT_NODE]))
+    return found
+
+
+def _tagged_by_reader(data: bytes, file: str, text: Source) -> xml.dom.minidom.Document:
+    """:func:`tagged_dom` through urdfcli's reader: the document is parsed by lxml,
+    marked, and given to minidom as lxml writes it."""
+    from lxml import etree
+
+    from .xmlsafe import parse_bytes
+
+    root = parse_bytes(data)
+    elements = list(root.iter(etree.Element))
+    starts = text.element_starts(len(elements))
+    for at, element in enumerate(elements):
+        line, column = text.position(starts[at]) if starts is not None else (element.sourceline or 0, 0)  # no column then
+        element.set(ORIGIN, f"{line}:{column}:{file}")
     try:
         return xml.dom.minidom.parseString(etree.tostring(root.getroottree(), encoding="utf-8"))
     except xml.parsers.expat.ExpatError as error:  # XML 1.0 5th-edition names that xacro's expat refuses
@@ -314,7 +345,7 @@ class _Session:
             xacro.filestack.pop()
             raise xacro.XacroException(f"cannot include {display_path(path)}: it is not an XML file")
         try:
-            root = parse_bytes(data)
+            return tagged_dom(data, display_path(path))
         except XmlError as error:
             xacro.filestack.pop()
             raise ExpansionError(
@@ -323,7 +354,6 @@ class _Session:
                 display_path(path),
                 code="X001",
             ) from None
-        return tagged_dom(root, display_path(path), data)
 
     def find(self, package: str) -> str:
         folder = self.find_package(package)
@@ -444,10 +474,9 @@ def expand_here(data: bytes, file: str | None, mappings: dict[str, str], resolve
     """:func:`urdfcli.expanded.expand`, here in this process and unbounded."""
     shown = display_path(file) if file else "<stdin>"
     try:
-        root = parse_bytes(data)
+        doc = tagged_dom(data, shown)
     except XmlError as error:
         raise ExpansionError(error.message, Origin(shown, error.line, error.column), shown, code=error.code) from None
-    doc = tagged_dom(root, shown, data)
     session = _Session(resolver.find)
     with session, contextlib.redirect_stderr(_Stderr(session)):
         xacro.init_stacks(file)

@@ -23,18 +23,12 @@ import os
 from collections.abc import Iterable, Iterator
 from functools import cached_property
 from pathlib import Path
-from urllib.parse import unquote, urlparse
-
-from lxml import etree
 
 from .folders import nearest, remembered
 
 SKIP_DIRS = {"build", "install", "log", "devel", "node_modules", "__pycache__", "site-packages"}
 MAX_SCAN_DEPTH = 8
 MAX_SCAN_DIRS = 20_000
-
-_SAFE_PARSER = etree.XMLParser(resolve_entities=False, no_network=True, load_dtd=False)
-
 
 class PackageError(ValueError):
     """A ``-P`` option that is not ``NAME=DIR`` or an existing directory."""
@@ -59,9 +53,20 @@ _NAMES: dict[tuple[str, int, int], str | None] = {}
 
 
 def _read_package_name(manifest: Path) -> str | None:
+    """Read by the standard library's parser, so that xacro's worker finds packages
+    without importing lxml; one with a DOCTYPE (which may declare entities, that
+    parser would expand them) by lxml, which expands none."""
     try:
-        root = etree.parse(str(manifest), _SAFE_PARSER).getroot()
-    except (OSError, etree.XMLSyntaxError):
+        data = manifest.read_bytes()
+        if b"<!DOCTYPE" in data:
+            from lxml import etree
+
+            root = etree.fromstring(data, etree.XMLParser(resolve_entities=False, no_network=True, load_dtd=False))
+        else:
+            from xml.etree import ElementTree
+
+            root = ElementTree.fromstring(data)
+    except (OSError, SyntaxError, ValueError):  # (both parsers' errors are SyntaxErrors)
         return None
     name = root.findtext("name")
     return name.strip() if name and name.strip() else None
@@ -232,6 +237,8 @@ class PackageResolver:
 
     def resolve_uri(self, uri: str, base_dir: Path | None = None) -> Path | None:
         """The file on disk a mesh or texture URI names; never fetched from a network."""
+        from urllib.parse import unquote, urlparse  # (here: xacro's worker looks up packages, not URIs)
+
         parsed = urlparse(uri)
         if parsed.scheme == "package":
             folder = self.find(parsed.netloc)

@@ -31,9 +31,7 @@ import gc
 import importlib
 import os
 import pickle
-import selectors
-import signal
-import string
+import select
 import time
 import types
 from functools import lru_cache
@@ -94,6 +92,8 @@ def _checked_format(method):
 
 
 def _check_fields(template: str) -> None:
+    import string
+
     for _, field, spec, _ in string.Formatter().parse(template):
         if field is not None and ("." in field or "[" in field):
             raise Refused(f"format field '{{{field}}}' is not allowed in xacro expressions")
@@ -391,9 +391,7 @@ class _Worker:
 
     def answered(self) -> bool:
         """Whether it has written something not read yet (or ended)."""
-        with selectors.DefaultSelector() as selector:
-            selector.register(self.answers, selectors.EVENT_READ)
-            return bool(selector.select(0))
+        return _readable(self.answers, 0)
 
     def stop(self) -> None:
         if self.owner != os.getpid() or self.pid is None:
@@ -467,19 +465,24 @@ def _read_message(fd: int, deadline: float | None) -> bytes | None:
 
 def _read_exactly(fd: int, size: int, deadline: float | None) -> bytes | None:
     chunks, left = [], size
-    with selectors.DefaultSelector() as selector:
-        selector.register(fd, selectors.EVENT_READ)
-        while left:
-            if deadline is not None:
-                wait = deadline - time.monotonic()
-                if wait <= 0 or not selector.select(wait):
-                    return None
-            chunk = os.read(fd, min(left, 1 << 20))
-            if not chunk:
-                return b""
-            chunks.append(chunk)
-            left -= len(chunk)
+    while left:
+        if deadline is not None:
+            wait = deadline - time.monotonic()
+            if wait <= 0 or not _readable(fd, wait):
+                return None
+        chunk = os.read(fd, min(left, 1 << 20))
+        if not chunk:
+            return b""
+        chunks.append(chunk)
+        left -= len(chunk)
     return b"".join(chunks)
+
+
+def _readable(fd: int, seconds: float) -> bool:
+    """Whether ``fd`` has something to read, or its writer is gone, within ``seconds``."""
+    poll = select.poll()  # (select.select refuses descriptors above 1023)
+    poll.register(fd, select.POLLIN)
+    return bool(poll.poll(max(seconds, 0) * 1000))
 
 
 def _memory_used() -> int:
@@ -506,20 +509,20 @@ def _limit_memory(memory_mib: int) -> None:
 def _read_until(fd: int, deadline: float) -> bytes | None:
     """Everything written to ``fd`` until it closes, or None at the deadline."""
     chunks = []
-    with selectors.DefaultSelector() as selector:
-        selector.register(fd, selectors.EVENT_READ)
-        while True:
-            left = deadline - time.monotonic()
-            if left <= 0 or not selector.select(left):
-                return None
-            chunk = os.read(fd, 1 << 20)
-            if not chunk:
-                return b"".join(chunks)
-            chunks.append(chunk)
+    while True:
+        left = deadline - time.monotonic()
+        if left <= 0 or not _readable(fd, left):
+            return None
+        chunk = os.read(fd, 1 << 20)
+        if not chunk:
+            return b"".join(chunks)
+        chunks.append(chunk)
 
 
 def _reap(pid: int) -> None:
     """Stop the child if it still runs, and collect it."""
+    import signal  # (here: at the end of a run, not on the way to its first answer)
+
     try:
         os.kill(pid, signal.SIGKILL)
     except ProcessLookupError:

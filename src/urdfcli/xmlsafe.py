@@ -10,9 +10,13 @@ import codecs
 import io
 from collections.abc import Iterator
 
-from lxml import etree
-
 from .positions import declared_encoding
+
+# lxml is imported by the functions that read: xacro's worker imports this module for
+# XmlError, and reads with lxml only what minidom cannot read (see urdfcli.expansion).
+TYPE_CHECKING = False  # typing's flag, without typing, for the same worker
+if TYPE_CHECKING:
+    from lxml import etree
 
 _PARSER_OPTIONS = dict(
     resolve_entities=False,
@@ -42,6 +46,8 @@ def parse_bytes(data: bytes, keep_blank_text: bool = True, elements_only: bool =
     Without ``keep_blank_text`` the white space between elements is dropped: a fifth
     of the memory of a large model. xacro needs it, to lay out its output as xacro does.
     With ``elements_only``, comments and processing instructions are dropped too."""
+    from lxml import etree
+
     if not data or data.isspace():  # (strip() would copy a large document)
         raise XmlError("the document is empty", 1, 1)
     options = dict(_PARSER_OPTIONS, remove_blank_text=not keep_blank_text, remove_comments=elements_only, remove_pis=elements_only)
@@ -93,6 +99,8 @@ def elements(data: bytes) -> Iterator[etree._Element]:
         return
     if b"<!DOCTYPE" in data or b"<!ENTITY" in data:
         parse_bytes(data)  # entity declarations are refused there, with their own message
+    from lxml import etree
+
     given = 0
     try:
         for element in _streamed(data):
@@ -112,6 +120,8 @@ _MARKERS = ("link", "joint", "material", "gazebo", "transmission", "ros2_control
 
 
 def _streamed(data: bytes, encoding: str | None = None) -> Iterator[etree._Element]:
+    from lxml import etree
+
     events = etree.iterparse(
         io.BytesIO(data), events=("end",), tag=_MARKERS, remove_blank_text=True, remove_comments=True, remove_pis=True,
         resolve_entities=False, no_network=True, load_dtd=False, dtd_validation=False, huge_tree=False, encoding=encoding,

@@ -2,118 +2,32 @@
 
 A plain command line (a subcommand, its options and its inputs) is read by
 :mod:`.fast` without importing typer; help, --version and anything unusual go
-through the typer application, which reads the same declarations and says what
-is wrong with a command line.
+through the typer application (:mod:`.application`), which reads the same declarations
+and says what is wrong with a command line. This module imports little: a run
+with a xacro input starts xacro's worker before anything else (see :func:`main`).
 """
 
 from __future__ import annotations
 
 import atexit
 import contextlib
-import functools
-import inspect
 import os
 import sys
-import typing
-from typing import Annotated
 
-from .. import __version__
 from ..folders import one_run
-from .commands import COMMANDS, command_function
-from .options import BadValue, Option
-
-
-def _version(value: bool) -> None:
-    if value:
-        import typer
-
-        print(f"urdfcli {__version__}")
-        raise typer.Exit()
-
-
-def build_app(names=COMMANDS):
-    """The typer application with the named subcommands registered."""
-    import typer
-
-    app = typer.Typer(
-        name="urdfcli",
-        help="Check, expand, draw and lint URDF and xacro robot descriptions, without ROS.\n\n"
-        "Exit codes: 0 no errors, 1 problems found, 2 could not run.",
-        no_args_is_help=True,
-        add_completion=False,
-        pretty_exceptions_enable=False,
-        context_settings={"help_option_names": ["-h", "--help"]},
-    )
-
-    def _main(version: Annotated[bool, Option("--version", callback=_version, is_eager=True, help="Show the version and exit.")] = False) -> None:
-        pass
-
-    app.callback()(_typed(_main, inspect.signature(_main, eval_str=True)))
-
-    for name in names:
-        command = command_function(name)
-        app.command(name=name, help=reflow(command.__doc__ or ""))(for_typer(command))
-    return app
-
-
-def reflow(doc: str) -> str:
-    """The help text with each paragraph on one line, for the help screen to wrap
-    (it would keep the docstring's line breaks, and wrap the long lines again)."""
-    return "\n\n".join(" ".join(paragraph.split()) for paragraph in inspect.cleandoc(doc).split("\n\n"))
-
-
-def for_typer(command):
-    """``command`` as typer takes it: its options declared with typer's, the ``--color``
-    option every command has (it only sets up the consoles) added, and a value the
-    command refuses reported as typer reports a bad parameter."""
-    import typer
-
-    from .common import ColorOption
-
-    @functools.wraps(command)
-    def run(*args, color: str = "auto", **kwargs):
-        try:
-            return command(*args, **kwargs)
-        except BadValue as error:
-            raise typer.BadParameter(str(error), param_hint=error.option) from None
-
-    signature = inspect.signature(command, eval_str=True)
-    extra = inspect.Parameter("color", inspect.Parameter.KEYWORD_ONLY, default="auto", annotation=ColorOption)
-    return _typed(run, signature.replace(parameters=[*signature.parameters.values(), extra]))
-
-
-def _typed(function, signature: inspect.Signature):
-    """``function`` with ``signature``, its options declared with typer's."""
-    parameters = [p.replace(annotation=_typer_annotation(p.annotation)) for p in signature.parameters.values()]
-    function.__signature__ = signature.replace(parameters=parameters)
-    function.__annotations__ = {p.name: p.annotation for p in parameters}
-    return function
-
-
-def _typer_annotation(annotation):
-    """``Annotated[T, Option(...)]`` as ``Annotated[T, typer.Option(...)]``."""
-    base, *extras = typing.get_args(annotation) if typing.get_origin(annotation) is Annotated else (annotation,)
-    if not extras:
-        return annotation
-    return Annotated[(base, *(e.to_typer() if isinstance(e, Option) else e for e in extras))]
+from .options import BadValue
 
 
 def __getattr__(name: str):
     if name == "app":  # the whole application, for those who import it
+        from .application import build_app
+
         return build_app()
     raise AttributeError(name)
 
 
-def _app_for(argv: list[str]):
-    """Only the subcommand named first on the command line, when one is (else all, for help)."""
-    first = next((a for a in argv if not a.startswith("-")), None)
-    return build_app([first] if first in COMMANDS else COMMANDS)
-
-
 def main() -> None:
     """Run a command line; a usage error or an internal error is one line, never a bare traceback."""
-    from .fast import parsed
-
     argv = sys.argv[1:]
     xacro = contextlib.nullcontext()
     if argv[:1] != ["rules"] and any(argument.endswith(".xacro") for argument in argv[1:]):
@@ -122,6 +36,8 @@ def main() -> None:
         xacro = started(*_first_expansion(argv[1:]))  # xacro's worker expands while this process imports the rest
     try:
         with one_run(), xacro:
+            from .fast import parsed  # (after the worker's start: it needs none of it)
+
             found = parsed(argv)
             code = found.run() if found is not None else _typer_main(argv)
     except BadValue as error:  # as typer says it, for a command line read without typer
@@ -186,6 +102,8 @@ def _typer_main(argv: list[str]):
     """The command line read by typer: help, --version, and what :mod:`.fast` leaves to it."""
     import typer
 
+    from .application import app_for
+
     try:  # typer vendors click from 0.2x on
         from typer._click.exceptions import ClickException, NoArgsIsHelpError, UsageError
     except ImportError:
@@ -196,7 +114,7 @@ def _typer_main(argv: list[str]):
 
         rich_utils.COLOR_SYSTEM = None
     try:
-        return _app_for(argv)(args=argv, prog_name="urdfcli", standalone_mode=False)
+        return app_for(argv)(args=argv, prog_name="urdfcli", standalone_mode=False)
     except NoArgsIsHelpError as error:  # the help is printed already (rich prints it, the message is empty)
         if error.format_message().strip():
             sys.stderr.write(error.format_message().rstrip("\n") + "\n")

@@ -1,7 +1,7 @@
 """The options and arguments of the commands, declared without importing typer.
 
 A command names them in its signature (``Annotated[str, Option("--format", ...)]``).
-:func:`urdfcli.cli.build_app` turns them into typer's for the help screens and
+:func:`urdfcli.cli.application.build_app` turns them into typer's for the help screens and
 for unusual command lines; :mod:`urdfcli.cli.fast` reads a plain command line
 with the same declarations, so that most runs never import typer (a third of
 urdfcli's start-up).
@@ -10,7 +10,10 @@ urdfcli's start-up).
 from __future__ import annotations
 
 from collections.abc import Callable
-from typing import Any
+
+TYPE_CHECKING = False  # typing's flag, without typing: a run with a xacro input imports this first
+if TYPE_CHECKING:
+    from typing import Any
 
 
 class BadValue(Exception):
