@@ -10,6 +10,8 @@ import pytest
 from conftest import FIXTURES, run_cli
 from differential import canonical, real_xacro
 
+from urdfcli import packages
+
 XACRO_FIXTURES = sorted(p for p in FIXTURES.rglob("*.xacro"))
 
 
@@ -64,6 +66,21 @@ def test_find_uses_package_name_not_folder_name(tmp_path):
     assert '<link name="arm"/>' in mine.stdout.decode()
     check = run_cli("check", str(top), cwd=tmp_path)
     assert check.returncode == 0, check.stderr
+
+
+@pytest.mark.parametrize(
+    "manifest, name",
+    [
+        ("<?xml version='1.0'?>\n<?xml-model href='http://download.ros.org/schema/package_format3.xsd'?>\n"
+         "<package format='3'>\n  <name> robot_parts </name>\n  <version>1.0.0</version>\n</package>\n", "robot_parts"),
+        ("<!DOCTYPE package [<!ENTITY n 'robot_parts'>]><package format='2'><name>&n;</name></package>", None),
+        ("<package format='2'><name>robot_parts</name>", None),
+    ],
+    ids=["format 3", "an entity, never expanded", "not well-formed"],
+)
+def test_a_package_is_known_by_the_name_its_manifest_gives(tmp_path, manifest, name):
+    (tmp_path / "package.xml").write_text(manifest)
+    assert packages.package_name(tmp_path / "package.xml") == name
 
 
 def test_package_path_option_and_environment(tmp_path):

@@ -30,6 +30,7 @@ SKIP_DIRS = {"build", "install", "log", "devel", "node_modules", "__pycache__", 
 MAX_SCAN_DEPTH = 8
 MAX_SCAN_DIRS = 20_000
 
+
 class PackageError(ValueError):
     """A ``-P`` option that is not ``NAME=DIR`` or an existing directory."""
 
