@@ -92,17 +92,17 @@ def test_a_job_that_cannot_be_pickled_runs_in_a_child_of_its_own():
 XACRO_FIXTURES = sorted(FIXTURES.rglob("*.xacro"))
 
 
+def expansion_of(expand, path: Path, mappings: dict[str, str]):
+    try:
+        result = expand(path.read_bytes(), str(path), mappings, PackageResolver((), path))
+    except expanded.ExpansionError as error:
+        return ("error", error.message, error.origin, error.file, error.code)
+    return (result.text, list(result.origins), result.includes, result.warnings)
+
+
 @pytest.mark.parametrize("path", XACRO_FIXTURES, ids=lambda p: str(p.relative_to(FIXTURES)))
 def test_expansion_in_the_worker_is_the_expansion_in_process(path: Path):
-    def run(expand):
-        data = path.read_bytes()
-        try:
-            result = expand(data, str(path), {}, PackageResolver((), path))
-        except expanded.ExpansionError as error:
-            return ("error", error.message, error.origin, error.file, error.code)
-        return (result.text, list(result.origins), result.includes, result.warnings)
-
-    assert run(expanded.expand) == run(expansion.expand_here)
+    assert expansion_of(expanded.expand, path, {}) == expansion_of(expansion.expand_here, path, {})
 
 
 def test_a_job_sent_now_is_answered_when_asked_for():
@@ -136,14 +136,6 @@ def test_a_job_given_up_before_its_answer_stops_the_worker_and_the_next_job_star
 
 
 CAR = FIXTURES / "urdf01_rviz" / "urdf" / "xacro" / "car.urdf.xacro"
-
-
-def expansion_of(expand, path: Path, mappings: dict[str, str]):
-    try:
-        result = expand(path.read_bytes(), str(path), mappings, PackageResolver((), path))
-    except expanded.ExpansionError as error:
-        return ("error", error.message, error.origin, error.file, error.code)
-    return (result.text, list(result.origins), result.includes, result.warnings)
 
 
 @pytest.fixture

@@ -139,9 +139,10 @@ def load_document(
     shown = "<stdin>" if file is None else path
     if file is None:
         positions.register(shown, data)  # excerpts and columns, as for a file
-    if not (force_xacro or path.endswith(".xacro") or is_xacro(data)):
+    named_xacro = force_xacro or path.endswith(".xacro")
+    if not (named_xacro or is_xacro(data)):
         return Document(path, data, file), []  # read by model.read
-    error = _not_well_formed(data)
+    error = _not_well_formed(data) if named_xacro else None  # (is_xacro parsed the others)
     if error is not None:
         return Document(path, None, file), [_error(error.code, error.message, Location(shown, error.line, error.column))]
     from . import expanded  # xacro itself is imported where it runs: the bounded worker

@@ -25,6 +25,7 @@ from functools import cached_property
 from pathlib import Path
 
 from .folders import nearest, remembered
+from .xmlsafe import parse_bytes
 
 SKIP_DIRS = {"build", "install", "log", "devel", "node_modules", "__pycache__", "site-packages"}
 MAX_SCAN_DEPTH = 8
@@ -56,18 +57,16 @@ _NAMES: dict[tuple[str, int, int], str | None] = {}
 def _read_package_name(manifest: Path) -> str | None:
     """Read by the standard library's parser, so that xacro's worker finds packages
     without importing lxml; one with a DOCTYPE (which may declare entities, that
-    parser would expand them) by lxml, which expands none."""
+    parser would expand them) by urdfcli's reader, which refuses them."""
     try:
         data = manifest.read_bytes()
         if b"<!DOCTYPE" in data:
-            from lxml import etree
-
-            root = etree.fromstring(data, etree.XMLParser(resolve_entities=False, no_network=True, load_dtd=False))
+            root = parse_bytes(data)
         else:
             from xml.etree import ElementTree
 
             root = ElementTree.fromstring(data)
-    except (OSError, SyntaxError, ValueError):  # (both parsers' errors are SyntaxErrors)
+    except (OSError, SyntaxError, ValueError):  # (ElementTree's errors are SyntaxErrors, XmlError a ValueError)
         return None
     name = root.findtext("name")
     return name.strip() if name and name.strip() else None
