@@ -47,7 +47,9 @@ def test_a_kept_block_holds_only_itself(tmp_path, monkeypatch):
     many files checked at once, each keeps its block, not its whole document."""
     path = tmp_path / "robot.urdf"
     path.write_text('<robot name="r"><link name="a"/><gazebo reference="a"><mu1>1</mu1></gazebo><link name="b"/></robot>')
-    for whole_up_to in (xmlsafe.WHOLE_UP_TO, 0):
+    for expat_up_to, whole_up_to in ((xmlsafe.EXPAT_UP_TO, xmlsafe.WHOLE_UP_TO), (0, xmlsafe.WHOLE_UP_TO), (0, 0)):
+        monkeypatch.setattr(xmlsafe, "EXPAT_UP_TO", expat_up_to)
         monkeypatch.setattr(xmlsafe, "WHOLE_UP_TO", whole_up_to)
         (block,) = load(str(path), LoadOptions(checks="none")).robot.extensions
-        assert block.tag == "gazebo" and block.getparent() is None
+        assert block.tag == "gazebo"
+        assert expat_up_to or block.getparent() is None  # (an element read by expat knows no parent)

@@ -14,25 +14,35 @@ from functools import cached_property
 from pathlib import Path
 from typing import TYPE_CHECKING
 
-from lxml import etree
-
 from .diagnostics import Diagnostic, Location
 from .positions import Source, source
 
 if TYPE_CHECKING:
+    from lxml.etree import _Element as Element  # or the same, read by expat (urdfcli.lightxml)
+
     from .expanded import Origins
 
 NAMED = {"link", "joint", "material", "transmission", "gazebo"}
 SUPPRESSION_MARK = "urdfcli"  # every suppression comment (``<!-- urdfcli: noqa -->``) names it
 
 
-def tag_name(element: etree._Element) -> str:
+def tag_name(element: Element) -> str:
     """The tag as tinyxml2 (urdfdom) sees it: the prefix kept, a default namespace ignored."""
     tag = element.tag
-    if isinstance(tag, str) and "{" not in tag:
-        return tag  # no namespace (a prefix lxml could not bind stays in the name): the common case, and faster
-    qname = etree.QName(element)
-    return f"{element.prefix}:{qname.localname}" if element.prefix else qname.localname
+    if "{" not in tag:
+        return tag  # no namespace: the common case, and faster
+    local = local_name(tag)
+    return f"{element.prefix}:{local}" if element.prefix else local
+
+
+def local_name(tag: str) -> str:
+    """The name of a tag (or attribute) in lxml's ``{namespace}name`` notation, without its namespace."""
+    return tag.rpartition("}")[2]
+
+
+def namespace_of(tag: str) -> str | None:
+    """The namespace of a tag in lxml's ``{namespace}name`` notation (None when it has none)."""
+    return tag[1:].partition("}")[0] if tag.startswith("{") else None
 
 
 @dataclass

@@ -16,15 +16,13 @@ from collections.abc import Callable, Iterator
 from dataclasses import dataclass, field
 from pathlib import Path
 
-from lxml import etree
-
 from .diagnostics import Diagnostic, Location
 from . import positions
 from .document import SUPPRESSION_MARK, Document
 from .loaded import Loaded
 from .packages import PackageResolver
 from .rules import Rule, load_all, load_check
-from .xmlsafe import XmlError, parse_bytes
+from .xmlsafe import XmlError, parse_bytes, read_small
 
 XACRO_NAMESPACES = {"http://www.ros.org/wiki/xacro", "http://ros.org/wiki/xacro", "http://wiki.ros.org/xacro"}
 STDIN = "-"
@@ -63,8 +61,8 @@ def read_input(path: str) -> bytes:
 _XACRO_ELEMENT = "//*[" + " or ".join(f"namespace-uri() = '{ns}'" for ns in sorted(XACRO_NAMESPACES)) + " or (namespace-uri() != '' and starts-with(name(), 'xacro:'))]"
 # ${...} and $(...) where xacro evaluates them: attribute values and text (comments are not text here).
 _SUBSTITUTION = "//@*[contains(., '${') or contains(., '$(')] | //text()[contains(., '${') or contains(., '$(')]"
-_HAS_XACRO_ELEMENT = etree.XPath(f"boolean({_XACRO_ELEMENT})")
-_USES_XACRO = etree.XPath(f"boolean({_XACRO_ELEMENT} | {_SUBSTITUTION})")
+_HAS_XACRO_ELEMENT = f"boolean({_XACRO_ELEMENT})"
+_USES_XACRO = f"boolean({_XACRO_ELEMENT} | {_SUBSTITUTION})"
 _DECLARES_PREFIX = rb"""xmlns:xacro\s*=\s*["']\Z"""  # just before a namespace (compiled when first met)
 
 
@@ -84,10 +82,16 @@ def is_xacro(data: bytes) -> bool:
                 if not _written(data, b"<xacro:") and all(_binds_prefix(data, at) for at in _namespace_mentions(data)):
                     return False  # each mention of xacro's namespace binds the prefix xacro, which no element uses
                 # prefixed xacro: (bound to any namespace), or xacro's namespace under another prefix
-                return _HAS_XACRO_ELEMENT(parse_bytes(data))
-        return _USES_XACRO(parse_bytes(data))
+                return _search(parse_bytes(data), _HAS_XACRO_ELEMENT)
+        return _search(parse_bytes(data), _USES_XACRO)
     except XmlError:
         return False
+
+
+def _search(root, xpath: str) -> bool:
+    from lxml import etree  # (only here: most documents are told by their bytes)
+
+    return etree.XPath(xpath)(root)
 
 
 def _written(data: bytes, needle: bytes) -> bool:
@@ -160,6 +164,8 @@ def load_document(
 
 def _not_well_formed(data: bytes) -> XmlError | None:
     """Why ``data`` is not a well-formed document, or None when it is."""
+    if read_small(data) is not None:
+        return None
     try:
         parse_bytes(data)
     except XmlError as error:
@@ -191,14 +197,14 @@ def _collector_paused(function):
 
 @_collector_paused
 def load(path: str, options: LoadOptions = LoadOptions(), data: bytes | None = None) -> Loaded:
-    from .kinematics import tree_diagnostics  # the model's modules: `expand` reads no model
-    from .model import read
-
     resolver = PackageResolver(options.package_paths, None if path == STDIN else Path(path))
     document, diagnostics = load_document(path, options, data, resolver=resolver)
     loaded = Loaded(document, diagnostics=diagnostics, resolver=resolver)
     if not document.readable:
         return loaded
+    from .kinematics import tree_diagnostics  # the model's modules: only for a document to read
+    from .model import read
+
     try:
         robot, found = read(document, vocabulary=options.checks == "all")
     except Exception as failure:  # noqa: BLE001  (a stream may reach odd markup before the error after it)

@@ -10,10 +10,12 @@ from __future__ import annotations
 
 from collections.abc import Callable, Iterator
 from dataclasses import dataclass
-
-from lxml import etree
+from typing import TYPE_CHECKING
 
 from .document import tag_name
+
+if TYPE_CHECKING:
+    from lxml.etree import _Element as Element  # or the same, read by expat (urdfcli.lightxml)
 
 # What the URDF format allows: element -> (attributes, child elements). Elements
 # whose contents belong to another format (gazebo, transmission, ros2_control)
@@ -139,7 +141,7 @@ def _gazebo_material(element) -> bool:
     return tag_name(element) == "material" and element.get("name") is None and bool((element.text or "").strip())
 
 
-def unknown_attributes(element: etree._Element, at: int, tag: str | None = None) -> Iterator[Unknown]:
+def unknown_attributes(element: Element, at: int, tag: str | None = None) -> Iterator[Unknown]:
     """The attributes of ``element`` (at ``at``, of ``tag``) that its tag does not take."""
     tag = tag or tag_name(element)
     known = KNOWN_ATTRIBUTES[tag]
@@ -151,7 +153,7 @@ def unknown_attributes(element: etree._Element, at: int, tag: str | None = None)
             yield Unknown(at, tag, name, True, _typo_of(name, known - set(names)))
 
 
-def unknown_markup(top: etree._Element, index: Callable[[etree._Element], int]) -> Iterator[Unknown]:
+def unknown_markup(top: Element, index: Callable[[Element], int]) -> Iterator[Unknown]:
     """What is unknown in one element written at the top level of ``<robot>``: the
     element itself as a child of ``<robot>``, and inside it, one walk over the URDF
     elements (not into other formats' blocks)."""

@@ -12,14 +12,14 @@ from dataclasses import dataclass, field
 from itertools import count
 from typing import TYPE_CHECKING, NamedTuple
 
-from lxml import etree
-
 from .diagnostics import Diagnostic
 from .document import Document, tag_name
 from .numbers import NumberError, VectorLengthError, format_number, parse_double, parse_vector
 from .xmlsafe import elements
 
 if TYPE_CHECKING:
+    from lxml.etree import _Element as Element  # or the same, read by expat (urdfcli.lightxml)
+
     from .markup import Unknown
 
 Vec3 = tuple[float, float, float]
@@ -134,8 +134,8 @@ class Robot:
     materials: dict[str, Material] = field(default_factory=dict)
     resources: list[Resource] = field(default_factory=list)
     unknown: "list[Unknown]" = field(default_factory=list)  # read only when asked for
-    extensions: list[etree._Element] = field(default_factory=list)  # top-level blocks of other formats
-    _placed: dict[etree._Element, int] = field(default_factory=dict, repr=False)
+    extensions: "list[Element]" = field(default_factory=list)  # top-level blocks of other formats
+    _placed: "dict[Element, int]" = field(default_factory=dict, repr=False)
     derived: dict = field(default_factory=dict, repr=False, compare=False)  # worked out from the rest, once
 
     def remembered(self, key, compute):
@@ -144,12 +144,12 @@ class Robot:
             self.derived[key] = compute()
         return self.derived[key]
 
-    def blocks(self, tag: str | None = None) -> list[etree._Element]:
+    def blocks(self, tag: str | None = None) -> "list[Element]":
         """The top-level elements other than links, joints and materials (``<gazebo>``,
         ``<transmission>``, ``<ros2_control>``...), kept whole; with ``tag``, those of that tag."""
         return [block for block in self.extensions if tag is None or block.tag == tag]
 
-    def place(self, element: etree._Element) -> int | None:
+    def place(self, element: "Element") -> int | None:
         """Where an element of one of :meth:`blocks` is."""
         return self._placed.get(element)
 
@@ -164,17 +164,17 @@ class Reader:
         self.vocabulary = vocabulary  # classify markup against URDF's vocabulary too
         self.diagnostics: list[Diagnostic] = []
         self.resources: list[Resource] = []
-        self._index: dict[etree._Element, int] = {}  # the elements being read -> their index
+        self._index: "dict[Element, int]" = {}  # the elements being read -> their index
 
-    def at(self, element: etree._Element | None) -> int | None:
+    def at(self, element: "Element | None") -> int | None:
         return self._index[element] if element is not None else None
 
     # -- reporting -------------------------------------------------------------
-    def report(self, code: str, message: str, element: etree._Element | None, hint: str | None = None) -> None:
+    def report(self, code: str, message: str, element: "Element | None", hint: str | None = None) -> None:
         self.diagnostics.append(self.document.diagnostic(code, message, self.at(element), hint))
 
     # -- values ----------------------------------------------------------------
-    def number(self, element: etree._Element, attribute: str, required: bool = False, what: str = "") -> float | None:
+    def number(self, element: "Element", attribute: str, required: bool = False, what: str = "") -> float | None:
         text = element.get(attribute)
         value = _NUMBERS.get(text)
         if value is not None:
@@ -190,7 +190,7 @@ class Reader:
             return None
         return _remember(_NUMBERS, text, value)
 
-    def vector(self, element: etree._Element, attribute: str, default: Vec3 | None = None) -> Vec3 | None:
+    def vector(self, element: "Element", attribute: str, default: Vec3 | None = None) -> Vec3 | None:
         text = element.get(attribute)
         if text is None:
             return default
@@ -203,7 +203,7 @@ class Reader:
             self.report("V003", f"{tag_name(element)} {attribute}: {error.reason}", element, hint)
         return None
 
-    def pose(self, origin: etree._Element | None) -> Pose:
+    def pose(self, origin: "Element | None") -> Pose:
         if origin is None:
             return IDENTITY
         key = (origin.get("xyz"), origin.get("rpy"))
@@ -215,7 +215,7 @@ class Reader:
                 _remember(_POSES, key, pose)
         return pose
 
-    def positive(self, element: etree._Element, attribute: str, value: float | None) -> None:
+    def positive(self, element: "Element", attribute: str, value: float | None) -> None:
         """A negative dimension is an error (V006); zero is a warning (V008): ROS loads it, physics engines do not."""
         if value is not None and value < 0:
             self.report("V006", f"{tag_name(element)} {attribute} is {format_number(value)}; it must be positive", element)
@@ -223,7 +223,7 @@ class Reader:
             self.report("V008", f"{tag_name(element)} {attribute} is 0: the shape has no volume", element, ZERO_HINT)
 
     # -- elements --------------------------------------------------------------
-    def rgba(self, material: etree._Element, color: etree._Element) -> tuple[float, ...] | None:
+    def rgba(self, material: "Element", color: "Element") -> tuple[float, ...] | None:
         text = color.get("rgba")
         name = material.get("name", "")
         values = []
@@ -241,7 +241,7 @@ class Reader:
             self.report("M004", f"material '{name}' rgba '{text}' has {len(values)} components, 4 expected", color)
         return tuple(values)
 
-    def material(self, element: etree._Element, top_level: bool) -> Material | None:
+    def material(self, element: "Element", top_level: bool) -> Material | None:
         name = element.get("name")
         if name is None:
             self.report("N003", "<material> has no 'name' attribute", element)
@@ -258,7 +258,7 @@ class Reader:
             self.report("M001", f"material '{name}' has neither <color rgba> nor <texture filename>", element, hint)
         return Material(name, self.at(element), rgba, texture_file, color.get("rgba") if color is not None else None)
 
-    def geometry(self, parent: etree._Element, element: etree._Element | None) -> Geometry | None:
+    def geometry(self, parent: "Element", element: "Element | None") -> Geometry | None:
         if element is None:
             self.report("V005", f"<{tag_name(parent)}> has no <geometry>", parent)
             return None
@@ -310,7 +310,7 @@ class Reader:
         self.report("G002", f"unknown shape <{kind}> in <geometry>", shape, "URDF shapes are box, cylinder, sphere and mesh")
         return None
 
-    def shape(self, element: etree._Element, visual: bool) -> Shape:
+    def shape(self, element: "Element", visual: bool) -> Shape:
         found = first_children(element)
         origin = self.pose(found.get("origin"))
         geometry = self.geometry(element, found.get("geometry"))
@@ -324,7 +324,7 @@ class Reader:
                     self._inline_materials.append(parsed)
         return Shape(self._index[element], origin, geometry, material_name)
 
-    def inertial(self, element: etree._Element) -> Inertial:
+    def inertial(self, element: "Element") -> Inertial:
         found = first_children(element)
         origin = self.pose(found.get("origin"))
         mass_element = found.get("mass")
@@ -345,7 +345,7 @@ class Reader:
                 inertia = _remember(_TENSORS, texts, values) if None not in values.values() else None
         return Inertial(self._index[element], origin, mass, inertia, self.at(mass_element), self.at(inertia_element))  # type: ignore[arg-type]
 
-    def link(self, element: etree._Element) -> Link:
+    def link(self, element: "Element") -> Link:
         name = element.get("name")
         if name is None:
             self.report("N001", "<link> has no 'name' attribute", element)
@@ -363,7 +363,7 @@ class Reader:
                 inertial = self.inertial(child)
         return Link(name, self._index[element], inertial, tuple(visuals), tuple(collisions))
 
-    def joint_limit(self, joint_name: str, element: etree._Element) -> Limit:
+    def joint_limit(self, joint_name: str, element: "Element") -> Limit:
         key = (element.get("lower"), element.get("upper"), element.get("effort"), element.get("velocity"))
         limit = _LIMITS.get(key)
         if limit is not None:
@@ -384,7 +384,7 @@ class Reader:
         )
         return _remember(_LIMITS, key, limit) if len(self.diagnostics) == reported else limit
 
-    def joint(self, element: etree._Element) -> Joint:
+    def joint(self, element: "Element") -> Joint:
         name = element.get("name")
         if name is None:
             self.report("N002", "<joint> has no 'name' attribute", element)
@@ -440,7 +440,7 @@ class Reader:
         return Joint(name if name is not None else "", self._index[element], joint_type, parent, child, origin, axis, limit, mimic, parts)
 
     @staticmethod
-    def _link_ref(element: etree._Element | None) -> str | None:
+    def _link_ref(element: "Element | None") -> str | None:
         value = element.get("link") if element is not None else None
         return value or None  # urdfdom treats an empty name as missing
 
@@ -480,7 +480,7 @@ class Reader:
         self.check_materials(robot)
         return robot
 
-    def top_level(self, robot: Robot, element: etree._Element) -> None:
+    def top_level(self, robot: Robot, element: "Element") -> None:
         """Read one element written directly in ``<robot>``."""
         tag = element.tag
         if tag == "link":
@@ -508,10 +508,10 @@ class Reader:
         else:
             robot.extensions.append(element)
             robot._placed.update(self._index)
-            found = element.iter("mesh", "texture")
+            found = (e for e in element.iter() if e.tag in ("mesh", "texture"))  # (ElementTree's iter takes one tag)
             self.resources.extend(Resource(self._index[e], e.tag, uri) for e in found if (uri := e.get("filename")))
 
-    def version(self, root: etree._Element) -> None:
+    def version(self, root: "Element") -> None:
         version = root.get("version")
         if version is None:
             return
@@ -569,7 +569,7 @@ def _remember(cache: dict, key, value):
     return value
 
 
-def first_children(element: etree._Element) -> dict[str, etree._Element]:
+def first_children(element: "Element") -> "dict[str, Element]":
     """The first child of each tag, as ``element.find(tag)`` gives it, in one pass
     over the children (a model has millions of these lookups)."""
     return {child.tag: child for child in reversed(element)}  # the first of a tag written last, and kept

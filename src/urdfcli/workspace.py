@@ -30,11 +30,11 @@ from dataclasses import dataclass, field
 from fnmatch import fnmatchcase
 from pathlib import Path
 
-from lxml import etree
-
 from .diagnostics import Diagnostic, Severity
+from .document import local_name, namespace_of
 from .load import STDIN, XACRO_NAMESPACES
 from .packages import MAX_SCAN_DIRS, SKIP_DIRS, PackageResolver, enclosing_package, local_roots
+from .xmlsafe import read_small
 
 XACRO_SUFFIXES = (".xacro", ".urdf")
 # xacro elements that make nothing by themselves; any other one (a macro call,
@@ -42,7 +42,6 @@ XACRO_SUFFIXES = (".xacro", ".urdf")
 _DECLARATIONS = {"include", "property", "arg", "macro"}
 _BLOCKS = {"if", "unless"}
 _SUBSTITUTION = re.compile(r"\$\(\s*(\w+)\s*([^()]*?)\s*\)|\$\{\s*([A-Za-z_]\w*)\s*\}")
-_PARSER = etree.XMLParser(resolve_entities=False, no_network=True, load_dtd=False, huge_tree=True)
 
 
 @dataclass(frozen=True)
@@ -56,8 +55,21 @@ class Source:
     properties: tuple[tuple[str, str], ...] = ()  # xacro:property values written as attributes
 
 
-def _is_xacro(element: etree._Element) -> bool:
-    return element.prefix == "xacro" or etree.QName(element).namespace in XACRO_NAMESPACES
+def _is_xacro(element) -> bool:
+    return element.prefix == "xacro" or namespace_of(element.tag) in XACRO_NAMESPACES
+
+
+def _parsed(data: bytes):
+    """The root element of ``data`` (with or without its comments), or None when it is not well-formed."""
+    root = read_small(data)
+    if root is not None:
+        return root
+    from lxml import etree  # (only here: a small document is read by expat)
+
+    try:
+        return etree.fromstring(data, etree.XMLParser(resolve_entities=False, no_network=True, load_dtd=False, huge_tree=True))
+    except (etree.XMLSyntaxError, ValueError):
+        return None
 
 
 def read_source(path: Path, data: bytes | None = None) -> Source:
@@ -69,11 +81,11 @@ def read_source(path: Path, data: bytes | None = None) -> Source:
     named_xacro = path.name.endswith(".xacro")
     if not named_xacro and b"xacro" not in data:
         return Source(path, "model")  # plain URDF
-    try:
-        root = etree.fromstring(data, _PARSER)
-    except (etree.XMLSyntaxError, ValueError):
+    root = _parsed(data)
+    if root is None:
         return Source(path, "model")  # loading it reports the syntax error
-    if not named_xacro and not any(_is_xacro(e) for e in root.iter(etree.Element)) and not set(root.nsmap.values()) & XACRO_NAMESPACES:
+    elements = [e for e in root.iter() if isinstance(e.tag, str)]  # (not comments or processing instructions)
+    if not named_xacro and not any(_is_xacro(e) for e in elements) and not set(root.nsmap.values()) & XACRO_NAMESPACES:
         return Source(path, "model")
     makes = False
     stack = list(root)
@@ -81,7 +93,7 @@ def read_source(path: Path, data: bytes | None = None) -> Source:
         element = stack.pop()
         if not isinstance(element.tag, str):
             continue  # comment or processing instruction
-        local = etree.QName(element).localname
+        local = local_name(element.tag)
         if _is_xacro(element):
             if local in _BLOCKS:
                 stack.extend(element)
@@ -90,10 +102,10 @@ def read_source(path: Path, data: bytes | None = None) -> Source:
         elif local in ("link", "joint"):
             makes = True
     includes, arguments, properties = [], [], []
-    for element in root.iter(etree.Element):
+    for element in elements:
         if not _is_xacro(element):
             continue
-        local = etree.QName(element).localname
+        local = local_name(element.tag)
         name = element.get("name")
         if local == "include" and element.get("filename"):
             includes.append(element.get("filename"))

@@ -76,6 +76,22 @@ def parse_bytes(data: bytes, keep_blank_text: bool = True, elements_only: bool =
     return root
 
 
+# A document up to this size is read by expat where it can be (see urdfcli.lightxml):
+# importing lxml takes longer than reading it.
+EXPAT_UP_TO = 1 << 16
+
+
+def read_small(data: bytes) -> etree._Element | None:
+    """The root element of a small well-formed document, read by expat, comments and
+    processing instructions left out; None when lxml is to read it (a larger one,
+    or one expat leaves to lxml)."""
+    if len(data) > EXPAT_UP_TO:
+        return None
+    from . import lightxml
+
+    return lightxml.read(data)
+
+
 # A document up to this size is parsed whole, which is faster on small documents
 # (streaming sets up a parser per document and hands each link and joint to Python
 # as it ends). A larger one is streamed, so that its tree (about twelve times its
@@ -93,7 +109,9 @@ def elements(data: bytes) -> Iterator[etree._Element]:
     if not data or data.isspace():  # (strip() would copy a large document)
         raise XmlError("the document is empty", 1, 1)
     if len(data) <= WHOLE_UP_TO:
-        root = parse_bytes(data, keep_blank_text=False, elements_only=True)
+        root = read_small(data)
+        if root is None:
+            root = parse_bytes(data, keep_blank_text=False, elements_only=True)
         yield root
         yield from _finished(root, None)  # taken out as they are read: a block the model keeps holds no more
         return

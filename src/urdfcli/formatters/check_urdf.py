@@ -3,7 +3,6 @@
 from __future__ import annotations
 
 from ..escape import escape
-from ..kinematics import children_by_joint_name
 from ..loaded import Loaded
 
 
@@ -15,6 +14,8 @@ def tree_lines(loaded: Loaded) -> list[str]:
     root = loaded.root
     if robot is None or root is None:
         return []
+    from ..kinematics import children_by_joint_name  # (a model was read: its modules are loaded)
+
     children = children_by_joint_name(robot)
     lines = [
         f"robot name is: {escape(robot.name or '')}",

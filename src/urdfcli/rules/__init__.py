@@ -173,9 +173,11 @@ def _did_you_mean(word: str, known) -> str:
 
 def rule(code: str) -> Rule:
     """The rule ``code``. The model reports while it is read, before any rule module
-    is loaded: `check`'s own modules are tried first, so that it imports no other."""
-    if code not in REGISTRY:
-        load_check()
+    is loaded: the structural rules are tried first (a xacro error imports no model),
+    then `check`'s own modules, so that it imports no other."""
+    for modules in (STRUCTURAL_MODULES, CHECK_MODULES):
+        if code not in REGISTRY:
+            _load(modules)
     return REGISTRY[code] if code in REGISTRY else load_all()[code]
 
 
@@ -196,6 +198,7 @@ def lookup(code_or_name: str) -> Rule:
 # (a test keeps the two in step): `check` imports no other rule module.
 MODULES = ("structure", "joints", "physics", "description", "style", "inertia", "suppression")
 CHECK_MODULES = ("structure", "joints", "physics")
+STRUCTURAL_MODULES = ("structure",)  # every rule reported while a model is read or expanded
 
 
 def load_all() -> dict[str, Rule]:
