@@ -157,3 +157,41 @@ def test_plain_output_of_a_small_file_imports_neither_rich_nor_rules_that_do_not
     assert "xacro" not in modules  # expand runs it always, as the xacro tool does, but in the worker
     loaded_rules = {m.rpartition(".")[2] for m in modules if m.startswith("urdfcli.rules.")}
     assert loaded_rules <= set(rules.CHECK_MODULES)
+
+
+@pytest.mark.parametrize("command", ["check", "lint", "tree", "expand"])
+@pytest.mark.parametrize("model", ["seed000/my_robot.urdf", "urdf02_gazebo/urdf/car.urdf.xacro"])
+def test_small_documents_are_read_without_lxml(command, model):
+    """Importing lxml takes longer than reading a small document: expat reads it
+    (urdfcli.lightxml), and lxml is never imported. A larger one is read by lxml."""
+    assert "lxml" not in imported(command, str(FIXTURES / model))
+
+
+def test_a_large_document_is_read_by_lxml(tmp_path):
+    from urdfcli import xmlsafe
+
+    links = "".join(f'<link name="l{i}"/><joint name="j{i}" type="fixed"><parent link="l{i}"/><child link="l{i + 1}"/></joint>' for i in range(700))
+    path = tmp_path / "large.urdf"
+    path.write_text(f'<robot name="r">{links}<link name="l700"/></robot>')
+    assert path.stat().st_size > xmlsafe.EXPAT_UP_TO
+    assert "lxml" in imported("check", str(path))
+
+
+ANSWERED_FIRST = (
+    "import sys, time\nfrom urdfcli import expanded\n"
+    "with expanded.started(sys.argv[1], {}):\n"
+    "    deadline = time.monotonic() + 60\n"
+    "    while not expanded.answered_ahead() and time.monotonic() < deadline:\n"
+    "        time.sleep(0.01)\n"
+    "    from urdfcli.load import load\n"
+    "    codes = [d.code for d in load(sys.argv[1]).diagnostics]\n"
+    "print(codes, sorted({'urdfcli.model', 'urdfcli.kinematics'} & set(sys.modules)))"
+)
+
+
+def test_a_xacro_error_answered_before_it_is_asked_for_is_reported_without_the_model():
+    """The model's modules are imported while the worker expands; when its answer is
+    in first and is an error, they are not needed, and not imported."""
+    model = FIXTURES / "urdf02_gazebo" / "urdf" / "demo05_car_base.urdf.xacro"  # calls a macro defined elsewhere
+    done = subprocess.run([sys.executable, "-c", ANSWERED_FIRST, str(model)], capture_output=True, text=True)
+    assert done.stdout.split() == ["['X003']", "[]"], done.stderr

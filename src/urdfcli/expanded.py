@@ -128,6 +128,11 @@ def started(path: str | None = None, mappings: dict[str, str] | None = None) -> 
             ahead[1].drop()
 
 
+def answered_ahead() -> bool:
+    """Whether the expansion :func:`started` sent is done, its answer waiting."""
+    return _ahead is not None and _ahead[1].answered()
+
+
 def _sent_ahead(path: str, mappings: dict[str, str]) -> tuple[tuple, sandbox.Sent] | None:
     from pathlib import Path
 

@@ -162,6 +162,14 @@ def load_document(
     return document, warnings
 
 
+def _answered_ahead() -> bool:
+    """Whether xacro's worker has answered the expansion sent ahead already. The
+    model's modules are imported while it works, else once a document is there
+    to read: an expansion that failed is reported without them."""
+    expanded = sys.modules.get(f"{__package__}.expanded")  # (imported by a run with a xacro input)
+    return expanded is not None and expanded.answered_ahead()
+
+
 def _not_well_formed(data: bytes) -> XmlError | None:
     """Why ``data`` is not a well-formed document, or None when it is."""
     if read_small(data) is not None:
@@ -197,6 +205,8 @@ def _collector_paused(function):
 
 @_collector_paused
 def load(path: str, options: LoadOptions = LoadOptions(), data: bytes | None = None) -> Loaded:
+    if not _answered_ahead():
+        from . import kinematics, model  # noqa: F401  (while xacro's worker works; see _answered_ahead)
     resolver = PackageResolver(options.package_paths, None if path == STDIN else Path(path))
     document, diagnostics = load_document(path, options, data, resolver=resolver)
     loaded = Loaded(document, diagnostics=diagnostics, resolver=resolver)

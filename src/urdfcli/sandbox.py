@@ -245,10 +245,14 @@ class Sent:
             data = worker.receive(time.monotonic() + self.seconds) if worker.send(self.job) else _RETIRED
         return _result(b"" if data is _RETIRED else data, self.seconds, self.memory_mib)
 
+    def answered(self) -> bool:
+        """Whether the answer is in: :meth:`result` would not wait."""
+        return self.taken and self.worker.answered()
+
     def drop(self) -> None:
         """Give up the job: its answer is read and left when it is there already,
         else the worker is stopped (the next job starts another)."""
-        if self.taken and self.worker.answered():
+        if self.answered():
             self.worker.receive(self.deadline)
         else:
             self.worker.stop()
