@@ -89,3 +89,12 @@ PARTIAL = {
 
 def is_complete(path: Path) -> bool:
     return path.relative_to(FIXTURES).as_posix() not in PARTIAL
+
+
+def read_by_expat(monkeypatch, expat: bool = True) -> None:
+    """Have documents read by expat (urdfcli.lightxml) where it can, or always by lxml,
+    whatever this process has loaded and read before."""
+    from urdfcli import xmlsafe
+
+    monkeypatch.setattr(xmlsafe, "_expat_left", 1 << 40 if expat else 0)
+    monkeypatch.setattr(xmlsafe, "lxml_loaded", lambda: False)

@@ -7,16 +7,18 @@ from pathlib import Path
 
 import pytest
 
-from conftest import example_robot_data
+from conftest import all_fixture_models, example_robot_data, read_by_expat
 from test_malformed import MALFORMED
 from urdfcli import xmlsafe
 from urdfcli.load import LoadOptions, load
 
 
 def readings(path: Path, monkeypatch) -> list:
-    """What a load reports on ``path``, and the links and joints it read, read whole and streamed."""
+    """What a load reports on ``path``, and the links and joints it read: read by
+    expat (urdfcli.lightxml), read whole by lxml, and streamed by lxml."""
     found = []
-    for whole_up_to in (xmlsafe.WHOLE_UP_TO, 0):
+    for expat, whole_up_to in ((True, xmlsafe.WHOLE_UP_TO), (False, xmlsafe.WHOLE_UP_TO), (False, 0)):
+        read_by_expat(monkeypatch, expat)
         monkeypatch.setattr(xmlsafe, "WHOLE_UP_TO", whole_up_to)
         loaded = load(str(path), LoadOptions(checks="all"))
         robot = loaded.robot
@@ -29,8 +31,15 @@ def readings(path: Path, monkeypatch) -> list:
 def test_malformed_documents_read_alike(tmp_path, monkeypatch, name):
     path = tmp_path / "robot.urdf"
     path.write_bytes(MALFORMED[name][0])
-    whole, streamed = readings(path, monkeypatch)
-    assert whole == streamed
+    by_expat, whole, streamed = readings(path, monkeypatch)
+    assert by_expat == whole == streamed
+
+
+def test_fixture_models_read_alike(monkeypatch):
+    """Plain and xacro (their expansion is read): every fixture model."""
+    for path in all_fixture_models():
+        by_expat, whole, streamed = readings(path, monkeypatch)
+        assert by_expat == whole == streamed, path.name
 
 
 def test_published_models_read_alike(monkeypatch):
@@ -38,8 +47,8 @@ def test_published_models_read_alike(monkeypatch):
     assert len(paths) > 60
     assert all(path.stat().st_size <= xmlsafe.WHOLE_UP_TO for path in paths)  # read whole by default
     for path in paths:
-        whole, streamed = readings(path, monkeypatch)
-        assert whole == streamed, path.name
+        by_expat, whole, streamed = readings(path, monkeypatch)
+        assert by_expat == whole == streamed, path.name
 
 
 def test_a_kept_block_holds_only_itself(tmp_path, monkeypatch):
@@ -47,9 +56,9 @@ def test_a_kept_block_holds_only_itself(tmp_path, monkeypatch):
     many files checked at once, each keeps its block, not its whole document."""
     path = tmp_path / "robot.urdf"
     path.write_text('<robot name="r"><link name="a"/><gazebo reference="a"><mu1>1</mu1></gazebo><link name="b"/></robot>')
-    for expat_up_to, whole_up_to in ((xmlsafe.EXPAT_UP_TO, xmlsafe.WHOLE_UP_TO), (0, xmlsafe.WHOLE_UP_TO), (0, 0)):
-        monkeypatch.setattr(xmlsafe, "EXPAT_UP_TO", expat_up_to)
+    for expat, whole_up_to in ((True, xmlsafe.WHOLE_UP_TO), (False, xmlsafe.WHOLE_UP_TO), (False, 0)):
+        read_by_expat(monkeypatch, expat)
         monkeypatch.setattr(xmlsafe, "WHOLE_UP_TO", whole_up_to)
         (block,) = load(str(path), LoadOptions(checks="none")).robot.extensions
         assert block.tag == "gazebo"
-        assert expat_up_to or block.getparent() is None  # (an element read by expat knows no parent)
+        assert expat or block.getparent() is None  # (an element read by expat knows no parent)
