@@ -12,10 +12,10 @@ stripped could tell.
 It gives None wherever the two readings could differ, and lxml then reads the
 document and says what is wrong with it: a DOCTYPE (which may declare
 entities), an encoding whose markup is not ASCII, an XML declaration of a
-version other than 1.x, anything expat refuses
-(among them an unbound prefix, which lxml refuses too), a namespace URI of
-an unusual form (libxml2 refuses those RFC 3986 does not allow), and nesting
-deeper than libxml2 reads without its huge-tree option.
+version other than 1.x, anything expat refuses (among them an unbound
+prefix, which lxml refuses too), a namespace URI of an unusual form (libxml2
+refuses those RFC 3986 does not allow), and nesting deeper than libxml2 reads
+without its huge-tree option.
 """
 
 from __future__ import annotations
