@@ -91,7 +91,7 @@ def is_complete(path: Path) -> bool:
     return path.relative_to(FIXTURES).as_posix() not in PARTIAL
 
 
-def read_by_expat(monkeypatch, expat: bool = True) -> None:
+def use_expat(monkeypatch, expat: bool = True) -> None:
     """Have documents read by expat (urdfcli.lightxml) where it can, or always by lxml,
     whatever this process has loaded and read before."""
     from urdfcli import xmlsafe

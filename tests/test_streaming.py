@@ -7,7 +7,7 @@ from pathlib import Path
 
 import pytest
 
-from conftest import all_fixture_models, example_robot_data, read_by_expat
+from conftest import all_fixture_models, example_robot_data, use_expat
 from test_malformed import MALFORMED
 from urdfcli import xmlsafe
 from urdfcli.load import LoadOptions, load
@@ -18,7 +18,7 @@ def readings(path: Path, monkeypatch) -> list:
     expat (urdfcli.lightxml), read whole by lxml, and streamed by lxml."""
     found = []
     for expat, whole_up_to in ((True, xmlsafe.WHOLE_UP_TO), (False, xmlsafe.WHOLE_UP_TO), (False, 0)):
-        read_by_expat(monkeypatch, expat)
+        use_expat(monkeypatch, expat)
         monkeypatch.setattr(xmlsafe, "WHOLE_UP_TO", whole_up_to)
         loaded = load(str(path), LoadOptions(checks="all"))
         robot = loaded.robot
@@ -57,7 +57,7 @@ def test_a_kept_block_holds_only_itself(tmp_path, monkeypatch):
     path = tmp_path / "robot.urdf"
     path.write_text('<robot name="r"><link name="a"/><gazebo reference="a"><mu1>1</mu1></gazebo><link name="b"/></robot>')
     for expat, whole_up_to in ((True, xmlsafe.WHOLE_UP_TO), (False, xmlsafe.WHOLE_UP_TO), (False, 0)):
-        read_by_expat(monkeypatch, expat)
+        use_expat(monkeypatch, expat)
         monkeypatch.setattr(xmlsafe, "WHOLE_UP_TO", whole_up_to)
         (block,) = load(str(path), LoadOptions(checks="none")).robot.extensions
         assert block.tag == "gazebo"

@@ -22,7 +22,7 @@ from .document import SUPPRESSION_MARK, Document
 from .loaded import Loaded
 from .packages import PackageResolver
 from .rules import Rule, load_all, load_check
-from .xmlsafe import XmlError, parse_bytes, read_small
+from .xmlsafe import XmlError, parse_bytes, read_by_expat
 
 XACRO_NAMESPACES = {"http://www.ros.org/wiki/xacro", "http://ros.org/wiki/xacro", "http://wiki.ros.org/xacro"}
 STDIN = "-"
@@ -172,7 +172,7 @@ def _answered_ahead() -> bool:
 
 def _not_well_formed(data: bytes) -> XmlError | None:
     """Why ``data`` is not a well-formed document, or None when it is."""
-    if read_small(data) is not None:
+    if read_by_expat(data) is not None:
         return None
     try:
         parse_bytes(data)

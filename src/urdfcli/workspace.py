@@ -34,7 +34,7 @@ from .diagnostics import Diagnostic, Severity
 from .document import local_name, namespace_of
 from .load import STDIN, XACRO_NAMESPACES
 from .packages import MAX_SCAN_DIRS, SKIP_DIRS, PackageResolver, enclosing_package, local_roots
-from .xmlsafe import read_small
+from .xmlsafe import read_by_expat
 
 XACRO_SUFFIXES = (".xacro", ".urdf")
 # xacro elements that make nothing by themselves; any other one (a macro call,
@@ -61,7 +61,7 @@ def _is_xacro(element) -> bool:
 
 def _parsed(data: bytes):
     """The root element of ``data`` (with or without its comments), or None when it is not well-formed."""
-    root = read_small(data)
+    root = read_by_expat(data)
     if root is not None:
         return root
     from lxml import etree  # (only here: a small document is read by expat)

@@ -84,7 +84,7 @@ EXPAT_BUDGET = 1 << 17
 _expat_left = EXPAT_BUDGET
 
 
-def read_small(data: bytes) -> etree._Element | None:
+def read_by_expat(data: bytes) -> etree._Element | None:
     """The root element of a well-formed document, read by expat, comments and
     processing instructions left out; None when lxml is to read it: one beyond
     the run's budget for expat, one expat leaves to lxml, and any once lxml is
@@ -119,7 +119,7 @@ def elements(data: bytes) -> Iterator[etree._Element]:
     if not data or data.isspace():  # (strip() would copy a large document)
         raise XmlError("the document is empty", 1, 1)
     if len(data) <= WHOLE_UP_TO:
-        root = read_small(data)
+        root = read_by_expat(data)
         if root is None:
             root = parse_bytes(data, keep_blank_text=False, elements_only=True)
         yield root
