@@ -82,16 +82,10 @@ def is_xacro(data: bytes) -> bool:
                 if not _written(data, b"<xacro:") and all(_binds_prefix(data, at) for at in _namespace_mentions(data)):
                     return False  # each mention of xacro's namespace binds the prefix xacro, which no element uses
                 # prefixed xacro: (bound to any namespace), or xacro's namespace under another prefix
-                return _search(parse_bytes(data), _HAS_XACRO_ELEMENT)
-        return _search(parse_bytes(data), _USES_XACRO)
+                return parse_bytes(data).xpath(_HAS_XACRO_ELEMENT)
+        return parse_bytes(data).xpath(_USES_XACRO)
     except XmlError:
         return False
-
-
-def _search(root, xpath: str) -> bool:
-    from lxml import etree  # (only here: most documents are told by their bytes)
-
-    return etree.XPath(xpath)(root)
 
 
 def _written(data: bytes, needle: bytes) -> bool:
