@@ -95,6 +95,7 @@ def test_xacro_is_imported_only_by_the_worker_that_runs_it(command):
     done = subprocess.run([sys.executable, "-c", IMPORTED, command, str(car)], capture_output=True, text=True)
     modules = eval(done.stdout.strip().splitlines()[-1])
     assert not {"xacro", "urdfcli.expansion", "xml.dom.minidom"} & set(modules)
+    assert not {"inspect", "dataclasses"} & set(modules)
     expected = "root Link: base_footprint has 1 child(ren)" if command == "check" else '<joint name="laser2support" type="fixed">'
     assert expected in done.stdout
 
@@ -154,6 +155,7 @@ def test_plain_output_of_a_small_file_imports_neither_rich_nor_rules_that_do_not
     assert not {"urdfcli.inertia", "urdfcli.meshes", "urdfcli.poses", "urdfcli.fixes", "numpy", "networkx"} & modules
     assert not {"json", "difflib", "tomllib"} & modules  # for JSON output, a misspelt name, a configuration file
     assert "tempfile" not in modules  # for writing a file atomically (--output), not standard output
+    assert not {"inspect", "dataclasses"} & modules  # a tenth of a start: records are named tuples
     assert "xacro" not in modules  # expand runs it always, as the xacro tool does, but in the worker
     loaded_rules = {m.rpartition(".")[2] for m in modules if m.startswith("urdfcli.rules.")}
     assert loaded_rules <= set(rules.CHECK_MODULES)

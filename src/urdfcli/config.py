@@ -31,10 +31,9 @@ the working directory; a glob without a ``/`` also matches a file's name alone.
 from __future__ import annotations
 
 import re
-from dataclasses import dataclass, field, replace
 from fnmatch import fnmatchcase
 from pathlib import Path
-from typing import Any
+from typing import Any, NamedTuple
 
 from .diagnostics import Severity
 from .folders import nearest, remembered
@@ -50,12 +49,11 @@ class ConfigError(ValueError):
     """The configuration cannot be used; the message names the file and the key."""
 
 
-@dataclass(frozen=True)
-class Config:
+class Config(NamedTuple):
     """Which rules run where, how severe they are, and how files are loaded."""
 
     source: str | None = None  # the file it was read from, for messages
-    root: Path = field(default_factory=Path.cwd)  # relative paths and globs start here
+    root: Path | None = None  # relative paths and globs start here (None: the current directory)
     select: tuple[str, ...] | None = None  # None: the rules that are on by default
     ignore: tuple[str, ...] = ()
     extend_select: tuple[str, ...] = ()
@@ -81,7 +79,7 @@ class Config:
             changes["ignore"] = self.ignore + _selectors(",".join(ignore), where)
         if extend_select:
             changes["extend_select"] = self.extend_select + _selectors(",".join(extend_select), where)
-        return replace(self, **changes)
+        return self._replace(**changes)
 
     # -- questions asked while linting -----------------------------------------
     def enabled(self, rule: Rule, *files: str) -> bool:
@@ -135,7 +133,7 @@ class Config:
         if "/" not in pattern and fnmatchcase(path.name, pattern):
             return True
         try:
-            relative = path.resolve().relative_to(self.root.resolve()).as_posix()
+            relative = path.resolve().relative_to((self.root or Path.cwd()).resolve()).as_posix()
         except (ValueError, OSError):
             return False
         return fnmatchcase(relative, pattern)

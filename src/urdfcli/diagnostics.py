@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from dataclasses import dataclass, replace
+from typing import NamedTuple
 
 from .places import Call
 from .rules import rule
@@ -11,8 +11,7 @@ from .severity import Severity
 __all__ = ["Call", "Diagnostic", "Location", "Severity"]
 
 
-@dataclass(frozen=True, slots=True)
-class Location:
+class Location(NamedTuple):
     """Where an element was written.
 
     ``expanded`` is true when the line is in the xacro-expanded document
@@ -27,8 +26,7 @@ class Location:
     trace: tuple[Call, ...] = ()
 
 
-@dataclass(frozen=True, slots=True)
-class Diagnostic:
+class Diagnostic(NamedTuple):
     code: str
     severity: Severity
     message: str
@@ -50,7 +48,7 @@ class Diagnostic:
         return cls(code, rule(code).severity, message, location, element, hint)
 
     def with_severity(self, severity: Severity) -> "Diagnostic":
-        return replace(self, severity=severity)
+        return self._replace(severity=severity)
 
     def sort_key(self) -> tuple:
         trace = tuple((c.file, c.line or 0, c.column or 0) for c in self.location.trace)

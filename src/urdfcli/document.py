@@ -9,7 +9,6 @@ from __future__ import annotations
 
 import bisect
 from array import array
-from dataclasses import dataclass, field
 from functools import cached_property
 from pathlib import Path
 from typing import TYPE_CHECKING
@@ -45,26 +44,34 @@ def namespace_of(tag: str) -> str | None:
     return tag[1:].partition("}")[0] if tag.startswith("{") else None
 
 
-@dataclass
 class Document:
-    path: str  # as the user gave it ("-" for stdin)
-    # The model's XML (xacro's output for xacro inputs), let go of once the model is
-    # read: a large model's text is not kept beside it (diagnostics read their lines
-    # from the file, or from expanded_text). None when unreadable.
-    data: bytes | None
-    file: Path | None = None  # the file on disk, None for stdin
-    is_xacro: bool = False
-    expanded_text: str | None = None  # xacro output, for xacro inputs
-    includes: list[str] = field(default_factory=list)
-    origins: Origins | None = None  # xacro inputs: one per element
-    tops: array = field(default_factory=lambda: array("l"))  # the index of each top-level element, as read
-    # Whether the file's own text may hold a suppression comment (SUPPRESSION_MARK), told
-    # from its bytes while they are at hand (None: not told; look in the file).
-    may_suppress: bool | None = None
-    readable: bool = field(init=False)  # whether a model could be read (stays true once data is let go of)
+    """A description as read. ``data`` is the model's XML (xacro's output for xacro
+    inputs), let go of once the model is read: a large model's text is not kept
+    beside it (diagnostics read their lines from the file, or from ``expanded_text``).
+    None when unreadable; ``readable`` stays true once the data is let go of."""
 
-    def __post_init__(self) -> None:
-        self.readable = self.data is not None
+    def __init__(
+        self,
+        path: str,  # as the user gave it ("-" for stdin)
+        data: bytes | None,
+        file: Path | None = None,  # the file on disk, None for stdin
+        is_xacro: bool = False,
+        expanded_text: str | None = None,  # xacro output, for xacro inputs
+        includes: list[str] | None = None,
+        origins: Origins | None = None,  # xacro inputs: one per element
+    ) -> None:
+        self.path = path
+        self.data = data
+        self.file = file
+        self.is_xacro = is_xacro
+        self.expanded_text = expanded_text
+        self.includes = includes if includes is not None else []
+        self.origins = origins
+        self.tops = array("l")  # the index of each top-level element, as read
+        # Whether the file's own text may hold a suppression comment (SUPPRESSION_MARK),
+        # told from its bytes while they are at hand (None: not told; look in the file).
+        self.may_suppress: bool | None = None
+        self.readable = data is not None  # whether a model could be read
 
     @property
     def shown(self) -> str:

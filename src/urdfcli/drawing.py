@@ -14,7 +14,7 @@ from __future__ import annotations
 import math
 from collections import defaultdict
 from collections.abc import Iterable
-from dataclasses import dataclass
+from typing import NamedTuple
 
 from .escape import escape
 from .formatters.tree import axis_text, limit_text, short
@@ -99,8 +99,7 @@ def compat_dot(robot: Robot, root: str) -> str:
 # -- the styled graph -------------------------------------------------------------
 
 
-@dataclass(frozen=True)
-class Style:
+class Style(NamedTuple):
     """What the styled graph shows."""
 
     limits: bool = False

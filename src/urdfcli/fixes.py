@@ -5,8 +5,8 @@ that gives the tensor the link's geometry implies (read from the xacro sources).
 from __future__ import annotations
 
 import functools
-from dataclasses import dataclass
 from pathlib import Path
+from typing import NamedTuple
 
 from lxml import etree
 
@@ -43,8 +43,7 @@ def suggestion(loaded: Loaded, entry: LinkReport, density: float | None = None) 
 
 
 # -- xacro macros ----------------------------------------------------------------------
-@dataclass(frozen=True)
-class MacroUse:
+class MacroUse(NamedTuple):
     """The xacro macro whose body wrote a link's <inertial>, and the call that used it."""
 
     name: str

@@ -11,7 +11,7 @@ the *expected* tensor is expressed in that same frame, so the two compare one to
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from typing import NamedTuple
 
 from . import massprops
 from .loaded import Loaded
@@ -23,15 +23,13 @@ from .poses import link_poses
 TOLERANCE = massprops.TOLERANCE
 
 
-@dataclass(frozen=True)
-class Body:
+class Body(NamedTuple):
     mass: float
     com: Vector  # centre of mass
     tensor: Matrix  # about the centre of mass
 
 
-@dataclass(frozen=True)
-class Implied:
+class Implied(NamedTuple):
     """What a link's geometry implies; ``body`` is None when it cannot tell, and ``source`` says why."""
 
     body: Body | None
@@ -40,8 +38,7 @@ class Implied:
     shapes: tuple[Shape, ...] = ()
 
 
-@dataclass(frozen=True)
-class Assessment:
+class Assessment(NamedTuple):
     """A link's declared tensor next to the one its geometry implies, both in the inertial frame."""
 
     link: Link
@@ -260,8 +257,7 @@ def _distinct(moments, i: int) -> bool:
     return largest > 0 and all(abs(moments[i] - moments[j]) >= DISTINCT * largest for j in range(3) if j != i)
 
 
-@dataclass(frozen=True)
-class Reach:
+class Reach(NamedTuple):
     """The most each moment (link-frame axes, about the declared centre of mass) can be
     for the declared mass held inside the geometry's bounding box."""
 
@@ -306,8 +302,7 @@ def _reach(inertial, box) -> Reach | None:
     return Reach((m * (y + z), m * (x + z), m * (x + y)), sides)  # type: ignore[arg-type]
 
 
-@dataclass(frozen=True)
-class Verdict:
+class Verdict(NamedTuple):
     """What the geometry proves wrong about a declared tensor: ``kind`` is ``impossible``,
     ``rotated`` or ``placeholder``; ``factor`` says by how much."""
 
@@ -398,8 +393,7 @@ def total(loaded: Loaded, density: float | None = None) -> Body | None:
 
 
 # -- the audit -------------------------------------------------------------------------
-@dataclass(frozen=True)
-class LinkReport:
+class LinkReport(NamedTuple):
     link: Link
     frame: bool  # a massless frame link: listed quietly
     assessment: Assessment | None
@@ -408,8 +402,7 @@ class LinkReport:
     from_density: bool = False
 
 
-@dataclass(frozen=True)
-class Report:
+class Report(NamedTuple):
     loaded: Loaded
     links: tuple[LinkReport, ...]
     total: Body | None

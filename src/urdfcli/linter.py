@@ -13,8 +13,8 @@ linted in other processes.
 from __future__ import annotations
 
 import re
-from dataclasses import dataclass, field
 from pathlib import Path
+from typing import NamedTuple
 
 from .config import Config
 from .diagnostics import Diagnostic, Location, Severity
@@ -30,19 +30,18 @@ _UNDEFINED_ARGUMENT = re.compile(r"\bUndefined substitution argument (\w+)")
 NEEDS_ARGUMENT = re.compile(r"^needs xacro argument '([^']+)'")
 
 
-@dataclass(frozen=True)
-class RobotName:
+class RobotName(NamedTuple):
     name: str | None
 
 
-@dataclass
 class Linted:
     """What the formatters need of a linted file (the shape of a Loaded)."""
 
-    path: str
-    robot: RobotName | None
-    diagnostics: list[Diagnostic] = field(default_factory=list)
-    includes: tuple[str, ...] = ()  # every file the xacro expansion read
+    def __init__(self, path: str, robot: RobotName | None, diagnostics: list[Diagnostic], includes: tuple[str, ...]) -> None:
+        self.path = path
+        self.robot = robot
+        self.diagnostics = diagnostics
+        self.includes = includes  # every file the xacro expansion read
 
     @property
     def ok(self) -> bool:
@@ -160,8 +159,7 @@ def _with_severity(diagnostic: Diagnostic, config: Config) -> Diagnostic:
     return diagnostic if severity is diagnostic.severity else diagnostic.with_severity(severity)
 
 
-@dataclass(frozen=True)
-class Job:
+class Job(NamedTuple):
     path: str
     config: Config
     package_paths: tuple[str, ...] = ()

@@ -13,8 +13,8 @@ import gc
 import re
 import sys
 from collections.abc import Callable, Iterator
-from dataclasses import dataclass, field
 from pathlib import Path
+from typing import NamedTuple
 
 from .diagnostics import Diagnostic, Location
 from . import positions
@@ -32,10 +32,9 @@ class InputError(Exception):
     """The input cannot be read at all (exit 2)."""
 
 
-@dataclass(frozen=True)
-class LoadOptions:
+class LoadOptions(NamedTuple):
     package_paths: tuple[str, ...] = ()
-    mappings: dict[str, str] = field(default_factory=dict)
+    mappings: dict[str, str] | None = None  # xacro arguments (name:=value)
     checks: str = "check"  # which rules run: "check", "all", or "none"
     runs: Callable[[Rule], bool] | None = None  # of those, the ones the configuration has on (None: all)
 
@@ -147,7 +146,7 @@ def load_document(
 
     resolver = resolver or PackageResolver(options.package_paths, file)
     try:
-        result = expanded.expand(data, str(file) if file else None, options.mappings, resolver)
+        result = expanded.expand(data, str(file) if file else None, options.mappings or {}, resolver)
     except expanded.ExpansionError as error:
         location = expanded.located(error.origin, error.file or shown)
         return Document(path, None, file, is_xacro=True, includes=list(error.includes)), [_error(error.code, error.message, location)]

@@ -2,7 +2,6 @@
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
 from functools import cached_property
 from typing import TYPE_CHECKING
 
@@ -16,12 +15,18 @@ if TYPE_CHECKING:
     from .packages import PackageResolver
 
 
-@dataclass
 class Loaded:
-    document: Document
-    robot: Robot | None = None
-    diagnostics: list[Diagnostic] = field(default_factory=list)
-    resolver: PackageResolver | None = None  # finds package:// files (meshes) with the run's -P options
+    def __init__(
+        self,
+        document: Document,
+        robot: Robot | None = None,
+        diagnostics: list[Diagnostic] | None = None,
+        resolver: PackageResolver | None = None,  # finds package:// files (meshes) with the run's -P options
+    ) -> None:
+        self.document = document
+        self.robot = robot
+        self.diagnostics = diagnostics if diagnostics is not None else []
+        self.resolver = resolver
 
     def remembered(self, key, compute):
         """``compute()``, once for this model (see :meth:`Robot.remembered`)."""

@@ -9,8 +9,7 @@ report.
 from __future__ import annotations
 
 from collections.abc import Callable, Iterator
-from dataclasses import dataclass
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, NamedTuple
 
 from .document import tag_name
 
@@ -117,8 +116,7 @@ def _typo_of(word: str, candidates) -> str | None:
     return scored[0][1] if scored and scored[0][0] <= allowed else None
 
 
-@dataclass(frozen=True, slots=True)
-class Unknown:
+class Unknown(NamedTuple):
     """Markup that neither URDF nor a known extension defines where it is written."""
 
     at: int  # the unknown child, or the element carrying the unknown attribute

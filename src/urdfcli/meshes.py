@@ -10,7 +10,6 @@ from __future__ import annotations
 import contextlib
 import functools
 import warnings
-from dataclasses import dataclass, field
 from pathlib import Path
 
 from .loaded import Loaded
@@ -26,16 +25,22 @@ def resolver_of(loaded: Loaded) -> PackageResolver:
     return loaded.resolver or PackageResolver((), loaded.document.file)
 
 
-@dataclass(frozen=True)
 class MeshFiles:
     """yourdfpy's filename handler: a mesh's URI to a file, through urdfcli's package resolver.
 
     Raises GeometryUnknown, which passes through yourdfpy, when there is no such file.
     Equal for one input's shapes, so each of its meshes is read once."""
 
-    resolver: PackageResolver
-    base: Path | None
-    _found: dict[str, tuple[str | None, str]] = field(default_factory=dict, compare=False, repr=False)  # each URI looked up once
+    def __init__(self, resolver: PackageResolver, base: Path | None) -> None:
+        self.resolver = resolver
+        self.base = base
+        self._found: dict[str, tuple[str | None, str]] = {}  # each URI looked up once
+
+    def __eq__(self, other: object) -> bool:
+        return isinstance(other, MeshFiles) and (self.resolver, self.base) == (other.resolver, other.base)
+
+    def __hash__(self) -> int:
+        return hash((self.resolver, self.base))
 
     @classmethod
     def of(cls, loaded: Loaded) -> MeshFiles:

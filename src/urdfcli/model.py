@@ -8,7 +8,6 @@ leaves the field empty, and reads on.
 
 # No ``from __future__ import annotations`` here: typing.NamedTuple compiles each field's
 # annotation written as a string, which cost 6 ms of every start.
-from dataclasses import dataclass, field
 from itertools import count
 from typing import TYPE_CHECKING, NamedTuple
 
@@ -125,18 +124,18 @@ class Resource(NamedTuple):
     uri: str
 
 
-@dataclass
 class Robot:
-    name: str | None
-    at: int | None  # None when the root element is not <robot>
-    links: dict[str, Link] = field(default_factory=dict)
-    joints: dict[str, Joint] = field(default_factory=dict)
-    materials: dict[str, Material] = field(default_factory=dict)
-    resources: list[Resource] = field(default_factory=list)
-    unknown: "list[Unknown]" = field(default_factory=list)  # read only when asked for
-    extensions: "list[Element]" = field(default_factory=list)  # top-level blocks of other formats
-    _placed: "dict[Element, int]" = field(default_factory=dict, repr=False)
-    derived: dict = field(default_factory=dict, repr=False, compare=False)  # worked out from the rest, once
+    def __init__(self, name: str | None, at: int | None, resources: list[Resource] | None = None) -> None:
+        self.name = name
+        self.at = at  # None when the root element is not <robot>
+        self.links: dict[str, Link] = {}
+        self.joints: dict[str, Joint] = {}
+        self.materials: dict[str, Material] = {}
+        self.resources: list[Resource] = resources if resources is not None else []
+        self.unknown: "list[Unknown]" = []  # read only when asked for
+        self.extensions: "list[Element]" = []  # top-level blocks of other formats
+        self._placed: "dict[Element, int]" = {}
+        self.derived: dict = {}  # worked out from the rest, once
 
     def remembered(self, key, compute):
         """``compute()``, once for this robot: for a costly step several rules share."""

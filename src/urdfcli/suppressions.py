@@ -20,7 +20,7 @@ from __future__ import annotations
 
 import bisect
 import re
-from dataclasses import dataclass, field
+from typing import NamedTuple
 
 from .config import matches, selector
 from .diagnostics import Diagnostic, Location
@@ -33,17 +33,16 @@ COMMENT = re.compile(r"<!--\s*urdfcli\s*:\s*(noqa-file|noqa)(?![\w-])\s*(?::\s*(
 Position = tuple[int, int]  # line, column (1-based)
 
 
-@dataclass
-class Suppression:
+class Suppression(NamedTuple):
     file: str  # as diagnostics name it
     line: int  # where the comment is
     column: int
     selectors: tuple[str, ...]  # codes or prefixes
     regions: tuple[tuple[Position, Position], ...] | None  # the elements it covers, [start, end); None: the whole file
-    target: int | None = None  # the line of the (first) element it silences
-    unknown: tuple[str, ...] = ()  # words that name no rule
-    bare: bool = False  # no codes: every rule
-    used: set[str] = field(default_factory=set)  # the selectors that silenced something ("" for a bare noqa)
+    target: int | None  # the line of the (first) element it silences
+    unknown: tuple[str, ...]  # words that name no rule
+    bare: bool  # no codes: every rule
+    used: set[str]  # the selectors that silenced something ("" for a bare noqa), filled in by apply
 
     @property
     def kind(self) -> str:
@@ -84,13 +83,13 @@ def parse(file: str, text: str) -> list[Suppression]:
         unknown = tuple(w for w, s in resolved if s is None)
         bare = not words
         if match.group(1) == "noqa-file":
-            found.append(Suppression(file, line, column, selectors, None, None, unknown, bare))
+            found.append(Suppression(file, line, column, selectors, None, None, unknown, bare, set()))
             continue
         regions = _targets(source, match.start(), match.end())
         target = regions[0][0][0] if regions else line + 1
         if not regions:  # not well-formed here: the line below, as a fallback
             regions = [((line + 1, 1), (line + 2, 1))]
-        found.append(Suppression(file, line, column, selectors, tuple(regions), target, unknown, bare))
+        found.append(Suppression(file, line, column, selectors, tuple(regions), target, unknown, bare, set()))
     return found
 
 

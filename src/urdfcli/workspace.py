@@ -26,9 +26,9 @@ import functools
 import os
 import re
 from collections.abc import Callable, Iterable
-from dataclasses import dataclass, field
 from fnmatch import fnmatchcase
 from pathlib import Path
+from typing import NamedTuple
 
 from .diagnostics import Diagnostic, Severity
 from .document import local_name, namespace_of
@@ -44,8 +44,7 @@ _BLOCKS = {"if", "unless"}
 _SUBSTITUTION = re.compile(r"\$\(\s*(\w+)\s*([^()]*?)\s*\)|\$\{\s*([A-Za-z_]\w*)\s*\}")
 
 
-@dataclass(frozen=True)
-class Source:
+class Source(NamedTuple):
     """What reading a file (not expanding it) tells about it."""
 
     path: Path  # resolved
@@ -116,8 +115,7 @@ def read_source(path: Path, data: bytes | None = None) -> Source:
     return Source(path, "model" if makes else "library", tuple(includes), tuple(arguments), tuple(properties))
 
 
-@dataclass(frozen=True)
-class Include:
+class Include(NamedTuple):
     """Where an include leads, as far as it can be told without expanding: a file,
     a glob, only a file name, or (``kind == "any"``) nothing known."""
 
@@ -317,8 +315,7 @@ class Index:
         return False
 
 
-@dataclass(frozen=True)
-class Target:
+class Target(NamedTuple):
     """One expansion to run: a model with an argument set, or a library on its own."""
 
     path: str
@@ -333,8 +330,7 @@ class Target:
         return f"{self.path} [{' '.join(f'{k}:={v}' for k, v in self.arguments)}]"
 
 
-@dataclass
-class Entry:
+class Entry(NamedTuple):
     """A given file: a model and its runs, or a library and the models it is checked through."""
 
     path: str
@@ -342,16 +338,16 @@ class Entry:
     library: bool = False
 
 
-@dataclass
 class LibraryResult:
     """A library's diagnostics gathered from the models it was checked through (the shape of a Loaded)."""
 
-    path: str
-    diagnostics: list[Diagnostic] = field(default_factory=list)
-    checked_through: list[str] = field(default_factory=list)
-    notes: list[str] = field(default_factory=list)  # why a model could not be used, or that none includes it
-    robot: None = None  # not a robot: formats that print one print nothing for it
-    root: None = None
+    robot = root = None  # not a robot: formats that print one print nothing for it
+
+    def __init__(self, path: str) -> None:
+        self.path = path
+        self.diagnostics: list[Diagnostic] = []
+        self.checked_through: list[str] = []
+        self.notes: list[str] = []  # why a model could not be used, or that none includes it
 
     @property
     def ok(self) -> bool:

@@ -12,14 +12,12 @@ same way or says what is wrong; a test compares the two readings.
 
 from __future__ import annotations
 
-import inspect
 import typing
 from collections.abc import Callable
-from dataclasses import dataclass
 from enum import Enum
 from pathlib import Path
 from types import NoneType, UnionType
-from typing import Annotated, Any
+from typing import Annotated, Any, NamedTuple
 
 from .commands import COMMANDS, command_function
 from .options import Argument, Option
@@ -27,8 +25,7 @@ from .options import Argument, Option
 _CONVERTERS: dict[type, Callable[[str], Any]] = {str: str, int: int, float: float, Path: Path}
 
 
-@dataclass
-class Parsed:
+class Parsed(NamedTuple):
     """A command line read: the command's function and its keyword arguments."""
 
     command: Callable[..., Any]
@@ -42,8 +39,7 @@ class Parsed:
         return self.command(**self.arguments)
 
 
-@dataclass
-class _Parameter:
+class _Parameter(NamedTuple):
     name: str
     spec: Option
     kind: type  # the value's type: str, int, float, Path, bool or an Enum
@@ -121,9 +117,16 @@ def _values(options: list[_Parameter], given: dict[str, list[str]]) -> dict[str,
 
 
 def _parameters(command) -> list[_Parameter] | None:
+    """The command's parameters, read from its code and annotations (inspect.signature's
+    reading, without importing inspect: a tenth of a start)."""
+    code = command.__code__
+    names = code.co_varnames[: code.co_argcount + code.co_kwonlyargcount]
+    given = command.__defaults__ or ()  # those of the last positional parameters
+    defaults = {**dict(zip(names[code.co_argcount - len(given) : code.co_argcount], given)), **(command.__kwdefaults__ or {})}
+    annotations = typing.get_type_hints(command, include_extras=True)
     found = []
-    for parameter in inspect.signature(command, eval_str=True).parameters.values():
-        made = _parameter(parameter.name, parameter.annotation, parameter.default)
+    for name in names:
+        made = _parameter(name, annotations.get(name), defaults.get(name))
         if made is None or made.spec.callback is not None:
             return None  # a callback is typer's to run
         found.append(made)
@@ -147,11 +150,9 @@ def _parameter(name: str, annotation, default) -> _Parameter | None:
     kind = typing.get_args(base)[0] if many else base
     if not (kind in _CONVERTERS or kind is bool or _is_enum(kind)):
         return None
-    if default is inspect.Parameter.empty:
-        default = None
     parameter = _Parameter(name, spec, kind, many, default)
     if default is not None and not many and kind is not bool:  # typer converts a default as it converts a value
-        parameter.default = _converted(parameter, default.value if isinstance(default, Enum) else str(default))
+        parameter = parameter._replace(default=_converted(parameter, default.value if isinstance(default, Enum) else str(default)))
     return parameter
 
 

@@ -4,7 +4,6 @@ from __future__ import annotations
 
 import json
 import sys
-from dataclasses import replace
 from typing import Annotated
 
 from rich.text import Text
@@ -93,8 +92,8 @@ def configured_report(report: audit_module.Report, config) -> audit_module.Repor
     def keep(found) -> tuple:
         return tuple(by_key[key] for d in found if (key := (d.code, d.location, d.message)) in by_key)
 
-    links = tuple(replace(entry, problems=keep(entry.problems)) for entry in report.links)
-    return replace(report, links=links, problems=keep(report.problems))
+    links = tuple(entry._replace(problems=keep(entry.problems)) for entry in report.links)
+    return report._replace(links=links, problems=keep(report.problems))
 
 
 def _row(label: str, value: str, style: str = "") -> Text:

@@ -11,7 +11,7 @@ from __future__ import annotations
 import math
 from collections import Counter
 from collections.abc import Callable, Iterator
-from dataclasses import dataclass
+from typing import NamedTuple
 
 from ..escape import escape
 from ..kinematics import depth_and_leaves, walk_all
@@ -32,18 +32,19 @@ UNICODE_GUIDES = ("├── ", "└── ", "│   ", "    ", "←", "…", "�
 ASCII_GUIDES = ("|-- ", "`-- ", "|   ", "    ", "<-", "..", " deg", "(already shown above)")
 
 
-@dataclass
 class Row:
-    depth: int
-    joint: Joint | None
-    link: str
-    repeat: bool = False
-    hidden: int = 0  # links below this one that --max-depth leaves out
-    last: bool = True  # the last child of its parent
+    __slots__ = ("depth", "joint", "link", "repeat", "hidden", "last")
+
+    def __init__(self, depth: int, joint: Joint | None, link: str, repeat: bool = False) -> None:
+        self.depth = depth
+        self.joint = joint
+        self.link = link
+        self.repeat = repeat
+        self.hidden = 0  # links below this one that --max-depth leaves out
+        self.last = True  # the last child of its parent
 
 
-@dataclass(frozen=True)
-class Summary:
+class Summary(NamedTuple):
     links: int
     joints: Counter
     dof: int  # without the mimic joints: they follow others
