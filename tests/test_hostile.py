@@ -14,7 +14,7 @@ from pathlib import Path
 import pytest
 
 from conftest import run_cli
-from urdfcli import sandbox
+from urdfcli import guard, sandbox
 from urdfcli.load import LoadOptions, load_document
 from urdfcli.xmlsafe import parse_bytes
 
@@ -193,8 +193,8 @@ def test_no_symbol_can_replace_the_expression_guard():
         def attribute(obj, name):
             return "replaced"
 
-    with pytest.raises(sandbox.Refused, match="access to 'gi_frame' is not allowed"):
-        sandbox.safe_eval("(x for x in [1]).gi_frame", {"__urdfcli_guard__": Fake})
+    with pytest.raises(guard.Refused, match="access to 'gi_frame' is not allowed"):
+        guard.safe_eval("(x for x in [1]).gi_frame", {"__urdfcli_guard__": Fake})
 
 
 @pytest.mark.parametrize(

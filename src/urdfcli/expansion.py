@@ -57,7 +57,7 @@ _import_on_use("yaml")
 import xacro  # noqa: E402  (after yaml's stand-in)
 import xacro.substitution_args  # noqa: E402
 
-from . import sandbox
+from . import guard
 from .expanded import Expansion, ExpansionError, Origins, PackageNotFound, display_path
 from .places import Call, Origin
 from .positions import Source, ascii_compatible, decode
@@ -372,10 +372,10 @@ class _Session:
             self.patch(xacro, name, self.touch(getattr(xacro, name)))
         self.patch(xacro, "parse", self.parse)
         self.patch(xacro, "replace_node", self.replace_node)
-        self.patch(xacro, "safe_eval", sandbox.safe_eval)
+        self.patch(xacro, "safe_eval", guard.safe_eval)
         self.patch(xacro.Table, "_setitem", self.define(xacro.Table._setitem))
         self.patch(xacro.Table, "_resolve_", self.resolve(xacro.Table._resolve_))
-        sandbox.restrict(xacro._global_symbols)
+        guard.restrict(xacro._global_symbols)
         self.patch(xacro.substitution_args, "_eval_find", self.find)
         xacro.all_includes = []
         return self
