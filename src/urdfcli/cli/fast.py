@@ -121,8 +121,9 @@ def _parameters(command) -> list[_Parameter] | None:
     reading, without importing inspect: a tenth of a start)."""
     code = command.__code__
     names = code.co_varnames[: code.co_argcount + code.co_kwonlyargcount]
-    given = command.__defaults__ or ()  # those of the last positional parameters
-    defaults = {**dict(zip(names[code.co_argcount - len(given) : code.co_argcount], given)), **(command.__kwdefaults__ or {})}
+    positional = names[: code.co_argcount]
+    defaults = dict(zip(reversed(positional), reversed(command.__defaults__ or ())))  # the last ones have defaults
+    defaults.update(command.__kwdefaults__ or {})
     annotations = typing.get_type_hints(command, include_extras=True)
     found = []
     for name in names:
