@@ -91,10 +91,34 @@ def is_complete(path: Path) -> bool:
     return path.relative_to(FIXTURES).as_posix() not in PARTIAL
 
 
-def use_expat(monkeypatch, expat: bool = True) -> None:
-    """Have documents read by expat (urdfcli.lightxml) where it can, or always by lxml,
-    whatever this process has loaded and read before."""
-    from urdfcli import xmlsafe
+def lint_file(path, config=None, checks: str = "all"):
+    """One file linted with ``config`` (a urdfcli Config; the defaults when None), as
+    `lint` would: the Result."""
+    from urdfcli.api import Target, check_target
+    from urdfcli.project.config import Config
+    from urdfcli.session import Session
 
-    monkeypatch.setattr(xmlsafe, "_expat_left", 1 << 40 if expat else 0)
-    monkeypatch.setattr(xmlsafe, "lxml_loaded", lambda: False)
+    with Session(config=config if config is not None else Config()) as session:
+        return check_target(Target(str(path)), {}, checks, session)
+
+
+def load(path, checks: str = "check"):
+    """One file checked with the default configuration and the rules ``checks`` names
+    ("check", "all", or "none": those of the tree only): the Result."""
+    return lint_file(path, None, checks)
+
+
+def model(path):
+    """The model read from one file, with the tree's rules only: the Loaded."""
+    return load(path, "none").loaded
+
+
+def audited(path, **options):
+    """The mass-property audit of one file, as `urdfcli inertia` makes it."""
+    from urdfcli import api
+    from urdfcli.project.config import Config
+    from urdfcli.session import Session
+
+    with Session(config=Config()) as session:
+        result = api.check_target(api.Target(str(path)), {}, "none", session)
+        return api.audit(result, session, **options)

@@ -10,9 +10,8 @@ import sys
 from dataclasses import dataclass
 from pathlib import Path
 
-from lxml import etree
-
 from conftest import FIXTURES, ROOT, require_tool
+from lxml import etree
 
 SUPPORT = ROOT / "tests" / "support"
 PACKAGES = {"urdf01_rviz": str(FIXTURES / "urdf01_rviz"), "urdf02_gazebo": str(FIXTURES / "urdf02_gazebo")}

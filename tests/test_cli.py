@@ -9,7 +9,6 @@ import subprocess
 import sys
 
 import pytest
-
 from conftest import run_cli
 
 COMMANDS = ("expand", "check", "tree", "graph", "inertia", "lint", "rules", "rule")
@@ -88,13 +87,13 @@ def test_no_color_removes_bold_and_dim_too_and_color_option_decides(tmp_path):
 WIDE = '<robot name="wide"><link name="l0"/>' + "".join(
     f'<link name="l{i}"/><joint name="j{i}" type="fixed"><parent link="l0"/><child link="l{i}"/></joint>' for i in range(1, 5000)
 ) + "</robot>"
-IN_PROCESS = "import sys; from urdfcli.cli import main\nsys.argv = ['urdfcli', *sys.argv[1:]]\nmain()\n"
+IN_PROCESS = "import sys; from urdfcli.cli import main\nsys.exit(main(sys.argv[1:]))\n"
 BUFFERED = {k: v for k, v in os.environ.items() if k != "PYTHONUNBUFFERED"} | {"NO_COLOR": "1", "COLUMNS": "200"}
 
 
 def test_the_program_prints_all_a_run_that_ends_as_python_does_prints(tmp_path):
-    """The program ends without Python's finalization: its buffered output, larger than
-    a pipe holds, and its exit code are those of main() ending the usual way."""
+    """The program's buffered output, larger than a pipe holds, and its exit code are
+    those of main() ending the usual way."""
     path = tmp_path / "wide.urdf"
     path.write_text(WIDE)
     for args in (["tree", str(path)], ["check", str(path)], ["check", "--format", "json", str(path), str(tmp_path / "missing.urdf")]):

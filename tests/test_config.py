@@ -6,11 +6,10 @@ import json
 import textwrap
 
 import pytest
+from conftest import lint_file, run_cli
 
-from conftest import run_cli
-from urdfcli.config import Config, ConfigError, discover, parse
-from urdfcli.linter import lint_file
-from urdfcli.rules import load_all
+from urdfcli.project.config import Config, ConfigError, Configurations, parse
+from urdfcli.rules import REGISTRY
 
 # A model with a typo (D002), an undefined material (M002), and names that break the style rules (S001, S002).
 MODEL = """<robot name="r">
@@ -37,7 +36,7 @@ def write(folder, name, text):
 
 
 def codes(path, config=None):
-    config = discover(str(path)) if config is None else config
+    config = Configurations().for_input(str(path)) if config is None else config
     return sorted({d.code for d in lint_file(str(path), config).diagnostics})
 
 
@@ -79,32 +78,31 @@ def test_every_toml_spelling_of_the_table_is_found(tmp_path, toml):
 
 def test_a_pyproject_without_the_table_is_not_parsed(tmp_path, monkeypatch):
     """Most pyproject.toml files are another tool's: naming urdfcli elsewhere does not make one ours."""
-    from urdfcli import config
+    from urdfcli.project import config
 
     write(tmp_path, "pyproject.toml", '[project]\nname = "urdfcli"\n[project.scripts]\nurdfcli = "x:y"\n[tool.ruff]\nline-length = 1\n')
     model = write(tmp_path, "urdf/robot.urdf", MODEL)
     monkeypatch.setattr(config, "_read_toml", lambda path, data: pytest.fail(f"{path} parsed"))
-    assert config.find(model.parent) is None
+    assert config.Configurations().find(model.parent) is None
 
 
 def test_a_run_looks_at_each_folder_once(tmp_path, monkeypatch):
-    """Inputs of one repository share their ancestors: a run asks each folder once
-    for its configuration, and outside a run every question is asked anew."""
-    from urdfcli import config
-    from urdfcli.folders import one_run
+    """Inputs of one repository share their ancestors: a session asks each folder once
+    for its configuration, and a new session asks anew."""
+    from urdfcli.project.config import Configurations
 
     write(tmp_path, "pyproject.toml", '[tool.urdfcli]\nextend-select = ["S"]\n')
     models = [write(tmp_path, f"robots/{name}/urdf/robot.urdf", MODEL) for name in ("a", "b")]
     asked = []
-    own_config = config._own_config
-    monkeypatch.setattr(config, "_own_config", lambda folder: asked.append(folder) or own_config(folder))
-    with one_run():
-        found = {config.find(model.parent) for model in models}
+    own_config = Configurations._own
+    monkeypatch.setattr(Configurations, "_own", lambda self, folder: asked.append(folder) or own_config(self, folder))
+    session = Configurations()
+    found = {session.find(model.parent) for model in models}
     assert found == {tmp_path / "pyproject.toml"}
     assert len(asked) == len(set(asked)) == 6  # a/urdf, a, robots, the root; then b/urdf and b only
     asked.clear()
-    config.find(models[0].parent)
-    config.find(models[0].parent)
+    Configurations().find(models[0].parent)
+    Configurations().find(models[0].parent)
     assert len(asked) == 2 * 4
 
 
@@ -166,7 +164,7 @@ def test_xacro_args_per_file(tmp_path):
         """,
     )
     write(tmp_path, "urdfcli.toml", '[xacro-args]\n"urdf/*.urdf.xacro" = { prefix = "Left" }\n')
-    config = discover(str(model)).overridden(select=["S003"])
+    config = Configurations().for_input(str(model)).overridden(select=["S003"])
     [diagnostic] = lint_file(str(model), config).diagnostics
     assert diagnostic.message == "link name 'Leftbase_link' is not snake_case"
 
@@ -221,7 +219,7 @@ def test_explicit_config_file(tmp_path):
 
 def test_everything_selects_every_rule():
     config = Config.everything()
-    assert all(config.enabled(rule, "x.urdf") for rule in load_all().values())
+    assert all(config.enabled(rule, "x.urdf") for rule in REGISTRY.values())
     with pytest.raises(ConfigError):
         Config().overridden(select=["not-a-code"])
 

@@ -24,7 +24,6 @@ import os
 from pathlib import Path
 
 import pytest
-
 from conftest import ROOT, example_robot_data, run_cli
 
 SNAPSHOT = ROOT / "tests" / "snapshots" / "example-robot-data.txt"

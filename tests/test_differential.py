@@ -13,11 +13,10 @@ from __future__ import annotations
 import random
 
 import pytest
-
-from conftest import all_fixture_models, run_cli
+from conftest import all_fixture_models, load, run_cli
 from differential import check_urdf, expanded_fixture, mutate
+
 from urdfcli.diagnostics import Severity
-from urdfcli.load import load
 from urdfcli.rules import rule
 
 # The real xacro cannot expand broken_xacro_robot (undeclared argument); tests/test_expand.py covers it.

@@ -11,10 +11,10 @@ import re
 import unicodedata
 
 import pytest
-
 from conftest import run_cli
 from differential import check_urdf
-from urdfcli.escape import escape
+
+from urdfcli.report.escape import escape
 
 C1_CSI, DEL, RLO, LRI, RLM = "\x9b", "\x7f", "\u202e", "\u2066", "\u200f"
 NAMES = (
@@ -90,7 +90,7 @@ def test_the_escapes_show_what_was_there(inputs):
     assert "'b\\x9b2J\\u202e'" in missing
     esc = run_cli("check", str(inputs / "esc.urdf")).stderr.decode()
     assert "\\x1b[31mRED\\x1b]0;pwned\\x07 not xml" in esc
-    lint = run_cli("lint", str(inputs / "names.urdf")).stderr.decode()
+    lint = run_cli("lint", str(inputs / "names.urdf")).stdout.decode()  # lint reports on standard output
     assert "arm\\u202etxt.exe\\x7f\\nx" in lint  # I002 names the massless moving link
 
 

@@ -6,11 +6,10 @@ import shutil
 from pathlib import Path
 
 import pytest
-
 from conftest import FIXTURES, run_cli
 from differential import canonical, real_xacro
 
-from urdfcli import packages
+from urdfcli.read import packages
 
 XACRO_FIXTURES = sorted(p for p in FIXTURES.rglob("*.xacro"))
 
@@ -80,7 +79,7 @@ def test_find_uses_package_name_not_folder_name(tmp_path):
 )
 def test_a_package_is_known_by_the_name_its_manifest_gives(tmp_path, manifest, name):
     (tmp_path / "package.xml").write_text(manifest)
-    assert packages.package_name(tmp_path / "package.xml") == name
+    assert packages.read_package_name(tmp_path / "package.xml") == name
 
 
 def test_package_path_option_and_environment(tmp_path):

@@ -25,13 +25,13 @@ from pathlib import Path
 import pytest
 import typer.main
 import typer.testing
+from conftest import FIXTURES, all_fixture_models
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from conftest import FIXTURES, all_fixture_models
-from urdfcli import sandbox
-from urdfcli.numbers import NumberError, VectorLengthError, parse_double, parse_vector
-from urdfcli.xmlsafe import XmlError, parse_bytes
+from urdfcli.model.numbers import NumberError, VectorLengthError, parse_double, parse_vector
+from urdfcli.read.xml import XmlError
+from urdfcli.read.xml import parse as parse_bytes
 
 DOCUMENTS = int(os.environ.get("URDFCLI_FUZZ_DOCUMENTS", "2000"))
 SEED = int(os.environ.get("URDFCLI_FUZZ_SEED", "6"))
@@ -148,7 +148,7 @@ def invoke(monkeypatch):
 
     command = typer.main.get_command(app)
     monkeypatch.setattr(typer.testing, "_get_command", lambda _: command)  # build the click command once
-    monkeypatch.setattr(sandbox, "TIMEOUT_SECONDS", 5)
+    monkeypatch.setenv("URDFCLI_XACRO_TIMEOUT", "5")
     runner = typer.testing.CliRunner()
     previous = signal.signal(signal.SIGALRM, _alarm)
 

@@ -9,10 +9,9 @@ import subprocess
 from pathlib import Path
 
 import pytest
-from lxml import etree
-
 from conftest import FIXTURES, all_fixture_models, require_tool, run_cli
-from test_tree import MODELS, IDS, plain_urdf
+from lxml import etree
+from test_tree import IDS, MODELS, plain_urdf
 
 CAR = FIXTURES / "urdf02_gazebo" / "urdf" / "car.urdf.xacro"
 CRANE = FIXTURES / "seed001" / "broken_inertia_crane.urdf"
@@ -94,7 +93,7 @@ def test_compat_numbers_are_cpp_stream_numbers(tmp_path):
 
 
 def test_cpp_number_examples():
-    from urdfcli.drawing import cpp_number
+    from urdfcli.report.drawing import cpp_number
 
     assert [cpp_number(v) for v in (1e-7, 123456789.0, -0.0, 0.1 + 0.2, 100000.0, 1000000.0, 0.0001, 0.00001)] == [
         "1e-07", "1.23457e+08", "-0", "0.3", "100000", "1e+06", "0.0001", "1e-05",

@@ -6,16 +6,15 @@ import re
 from pathlib import Path
 
 import pytest
-
 from conftest import example_robot_data, run_cli
-
 
 
 def diagnostics(*args: str, cwd: Path | None = None, env: dict | None = None) -> list[dict]:
     """Each diagnostic of the text output: its code, message and hint."""
     done = run_cli(*args, cwd=cwd, env=env)
     found = []
-    for line in done.stderr.decode().splitlines():
+    report = done.stdout if args[0] == "lint" else done.stderr  # lint writes its report on standard output
+    for line in report.decode().splitlines():
         match = re.match(r"\S+:\d+:\d+: (\w+) \w+: (.*)$", line)
         if match:
             found.append({"code": match.group(1), "message": match.group(2), "hint": None})

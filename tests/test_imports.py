@@ -1,5 +1,11 @@
-"""The package's modules import each other in layers: no circle, counting the imports
-made inside functions too (those under ``if TYPE_CHECKING:`` are for annotations only)."""
+"""The package's modules import each other in layers, shown by its folders:
+read -> model -> rules -> report -> project -> the library (api, session) -> cli,
+each importing only those below it, and no module importing itself through others.
+
+Every import counts: at the top of a module, inside a function, and by name
+(``importlib.import_module("urdfcli...")``, ``sys.modules["urdfcli..."]``); only
+those under ``if TYPE_CHECKING:`` are for annotations and do not.
+"""
 
 from __future__ import annotations
 
@@ -12,6 +18,10 @@ import networkx as nx
 import urdfcli
 
 PACKAGE = Path(urdfcli.__file__).parent
+LAYERS = ("read", "model", "rules", "report", "project", "library", "cli")
+FOUNDATION = ("urdfcli.diagnostics", "urdfcli.version")  # imported by every layer, importing none
+LIBRARY = ("urdfcli.api", "urdfcli.session")  # what a program calls; the command line is a shell over it
+ENTRY_POINTS = ("urdfcli", "urdfcli.__main__")
 
 
 def _module_name(path: Path) -> str:
@@ -33,6 +43,20 @@ def _annotation_only(tree: ast.AST) -> set[int]:
     }
 
 
+def _named(node: ast.AST, package: str) -> str | None:
+    """A module named by a string, wherever it is written: given to
+    ``importlib.import_module``, looked up in ``sys.modules``, or kept in a
+    constant that a worker imports (``"urdfcli.read.expansion"``); a relative name
+    given to ``import_module`` with its package."""
+    if isinstance(node, ast.Call) and node.args and isinstance(node.args[0], ast.Constant) and isinstance(node.args[0].value, str):
+        text = node.args[0].value
+        if text.startswith(".") and ast.unparse(node.func).endswith("import_module"):
+            return importlib.util.resolve_name(text, package)
+    if isinstance(node, ast.Constant) and isinstance(node.value, str) and node.value.startswith("urdfcli.") and _is_module(node.value):
+        return node.value
+    return None
+
+
 def _imported(path: Path) -> set[str]:
     """The package's modules that ``path`` imports when it runs."""
     name = _module_name(path)
@@ -49,6 +73,8 @@ def _imported(path: Path) -> set[str]:
             target = importlib.util.resolve_name("." * node.level + (node.module or ""), package)
             if target.startswith("urdfcli"):
                 found |= {f"{target}.{a.name}" if _is_module(f"{target}.{a.name}") else target for a in node.names}
+        elif (named := _named(node, package)) is not None and named.startswith("urdfcli"):
+            found.add(named)
     return found - {name}
 
 
@@ -60,13 +86,49 @@ def import_graph() -> nx.DiGraph:
     return graph
 
 
+def layer(module: str) -> int:
+    """0 for the foundation, then 1 + the index of the layer in LAYERS; above all for the entry points."""
+    if module in FOUNDATION:
+        return 0
+    if module in ENTRY_POINTS:
+        return len(LAYERS) + 1
+    if module in LIBRARY:
+        return LAYERS.index("library") + 1
+    return LAYERS.index(module.split(".")[1]) + 1
+
+
 def test_the_graph_sees_the_imports_it_should():
     graph = import_graph()
-    assert graph.has_edge("urdfcli.cli.fast", "urdfcli.cli.commands")  # at the top
-    assert graph.has_edge("urdfcli.load", "urdfcli.expanded")  # inside a function
-    assert not graph.has_edge("urdfcli.rules", "urdfcli.diagnostics")  # for annotations only
+    assert graph.has_edge("urdfcli.read.document", "urdfcli.read.xacro")  # at the top
+    assert graph.has_edge("urdfcli.model.load", "urdfcli.model.kinematics")  # inside a function
+    assert not graph.has_edge("urdfcli.report.lines", "urdfcli.report.result")  # for annotations only
+    assert graph.has_edge("urdfcli.read.xacro", "urdfcli.read.expansion")  # by name: the module its worker imports
+
+
+def test_names_in_strings_are_imports():
+    code = "import importlib, sys\nimportlib.import_module('urdfcli.rules')\nsys.modules.get('urdfcli.model')\n'urdfcli.cli' in sys.modules\n"
+    code += "importlib.import_module('.report', 'urdfcli')\nWORKER = 'urdfcli.read.expansion'\nTEXT = 'urdfcli.no_such_module'"
+    found = {_named(node, "urdfcli") for node in ast.walk(ast.parse(code))} - {None}
+    assert found == {"urdfcli.rules", "urdfcli.model", "urdfcli.cli", "urdfcli.report", "urdfcli.read.expansion"}
 
 
 def test_no_module_imports_itself_through_others():
     circles = [sorted(c) for c in nx.strongly_connected_components(import_graph()) if len(c) > 1]
     assert circles == []
+
+
+def test_each_folder_imports_only_the_folders_below_it():
+    upward = [(a, b) for a, b in import_graph().edges if layer(b) > layer(a)]
+    assert upward == []
+
+
+def test_the_folders_show_the_layers():
+    tops = sorted(p.name for p in PACKAGE.glob("*.py"))
+    assert len(tops) <= 8, tops
+    assert {p.name for p in PACKAGE.iterdir() if (p / "__init__.py").exists()} == set(LAYERS) - {"library"}
+
+
+def test_nothing_below_the_rules_reads_the_rule_registry():
+    graph = import_graph()
+    below = [m for m in graph if layer(m) < LAYERS.index("rules") + 1]
+    assert [m for m in below if any(t.startswith("urdfcli.rules") for t in graph.successors(m))] == []

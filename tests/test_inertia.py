@@ -9,12 +9,11 @@ import shutil
 
 import numpy
 import pytest
+from conftest import FIXTURES, audited, model, run_cli
 from lxml import etree
 
-from conftest import FIXTURES, run_cli
-from urdfcli import inertia, massprops
-from urdfcli.poses import link_poses
-from urdfcli.load import LoadOptions, load
+from urdfcli.model import inertia, massprops
+from urdfcli.model.poses import link_poses
 
 CAR = FIXTURES / "urdf02_gazebo/urdf/broken_rotated_box_inertia_car.urdf.xacro"
 HELLOWORLD = FIXTURES / "urdf02_gazebo/urdf/broken_invalid_inertia_helloworld.urdf"
@@ -72,11 +71,7 @@ ROVER = """<robot name="rover">
 """
 
 
-def audited(path, **kwargs) -> inertia.Report:
-    return inertia.audit(load(str(path), LoadOptions(checks="none")), **kwargs)
-
-
-def codes_by_link(report: inertia.Report) -> dict[str, set[str]]:
+def codes_by_link(report) -> dict[str, set[str]]:
     return {entry.link.name: {d.code for d in entry.problems} for entry in report.links}
 
 
@@ -87,7 +82,7 @@ def one_link(tmp_path, body: str, mass: float = 1.0, name: str = "model.urdf") -
         f'<robot name="r"><link name="l">{body}<inertial><mass value="{mass}"/>'
         '<inertia ixx="1" ixy="0" ixz="0" iyy="1" iyz="0" izz="1"/></inertial></link></robot>'
     )
-    loaded = load(str(path), LoadOptions(checks="none"))
+    loaded = model(str(path))
     return inertia.implied(loaded, loaded.robot.links["l"])
 
 
@@ -263,7 +258,7 @@ def test_link_poses_match_yourdfpy_reading_the_file_itself(path):
     import yourdfpy
 
     reference = yourdfpy.URDF.load(str(path), build_scene_graph=True, load_meshes=False)
-    loaded = load(str(path), LoadOptions(checks="none"))
+    loaded = model(str(path))
     poses = link_poses(loaded)
     assert set(poses) == set(loaded.robot.links)
     for name, (rotation, translation) in poses.items():
@@ -282,7 +277,7 @@ def test_a_mimic_joint_sits_at_its_offset_at_zero_positions(tmp_path):
         '<limit lower="-3" upper="3" effort="1" velocity="1"/><mimic joint="j1" multiplier="2" offset="1.5707963267948966"/></joint>'
         '<joint name="j3" type="fixed"><parent link="b"/><child link="c"/><origin xyz="1 0 0"/></joint></robot>'
     )
-    poses = link_poses(load(str(path), LoadOptions(checks="none")))
+    poses = link_poses(model(str(path)))
     close(poses["b"][1], (1, 0, 0), abs_=1e-12)
     close(poses["c"][1], (1, 1, 0), abs_=1e-12)  # b is turned a quarter about z by the offset
 
@@ -290,7 +285,7 @@ def test_a_mimic_joint_sits_at_its_offset_at_zero_positions(tmp_path):
 def test_total_of_the_rover_against_a_hand_computation(tmp_path):
     path = tmp_path / "rover.urdf"
     path.write_text(ROVER)
-    body = inertia.total(load(str(path), LoadOptions(checks="none")))
+    body = inertia.total(model(str(path)))
     # by hand: body at z=0.1; wheels at y=±0.16 (z 0.1); mast rotated 0.3 about z, centre 0.25 above (-0.1, 0, 0.15)
     parts = [
         (2.0, numpy.array([0, 0, 0.1]), numpy.diag([0.0166667, 0.0283333, 0.0416667])),
@@ -309,7 +304,7 @@ def test_total_of_the_rover_against_a_hand_computation(tmp_path):
 def test_total_with_density_weighs_each_link_by_its_geometry(tmp_path):
     path = tmp_path / "rover.urdf"
     path.write_text(ROVER)
-    loaded = load(str(path), LoadOptions(checks="none"))
+    loaded = model(str(path))
     body = inertia.total(loaded, density=1000)
     # body box 0.4 x 0.3 x 0.1; wheels r 0.05 l 0.02; mast 0.05 x 0.05 x 0.5 (collision shapes)
     volumes = 0.4 * 0.3 * 0.1 + 2 * math.pi * 0.05**2 * 0.02 + 0.05 * 0.05 * 0.5
@@ -326,7 +321,7 @@ def test_total_rotates_each_link_tensor_into_the_root_frame(tmp_path):
         '<joint name="j" type="revolute"><parent link="root"/><child link="plate"/><origin xyz="1 0 0" rpy="0 0 1.5707963267948966"/>'
         '<axis xyz="0 0 1"/><limit effort="1" velocity="1" lower="-1" upper="1"/></joint></robot>'
     )
-    body = inertia.total(load(str(path), LoadOptions(checks="none")))
+    body = inertia.total(model(str(path)))
     close(body.com, (1, 0, 0), abs_=1e-12)
     close(body.tensor, massprops.diagonal(2, 1, 3), abs_=1e-12)
 

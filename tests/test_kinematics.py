@@ -7,10 +7,10 @@ import networkx as nx
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from urdfcli.kinematics import build_graph, children_by_joint_name, has_loop, reached, rigid_bodies, roots, subtree_masses, walk
-from urdfcli.document import Document
-from urdfcli.loaded import Loaded
-from urdfcli.model import IDENTITY, Joint, Link, Robot
+from urdfcli.model.kinematics import build_graph, children_by_joint_name, has_loop, reached, rigid_bodies, roots, subtree_masses, walk
+from urdfcli.model.load import Loaded
+from urdfcli.model.robot import IDENTITY, Joint, Link, Robot
+from urdfcli.read.document import Document
 
 LINKS = [f"l{i}" for i in range(8)]
 # a parent or child may name a link that does not exist ("gone"), or none at all

@@ -5,9 +5,9 @@ from __future__ import annotations
 import json
 import textwrap
 
-from conftest import FIXTURES, run_cli
-from urdfcli.config import Config
-from urdfcli.linter import lint_file
+from conftest import FIXTURES, lint_file, run_cli
+
+from urdfcli.project.config import Config
 
 CLEAN = FIXTURES / "urdf01_rviz/urdf/urdf/demo01_helloworld.urdf"
 TYPO = FIXTURES / "urdf01_rviz/urdf/urdf/demo03_joint.urdf"  # <color rgb=...>: D002 and M002, warnings only
@@ -161,18 +161,20 @@ def test_progress_bar_only_on_a_terminal_for_a_long_run(monkeypatch):
 
     from rich.console import Console
 
-    from urdfcli.linter import Job
+    from urdfcli import api
+    from urdfcli.report.console import Output
+    from urdfcli.session import Session
 
     lint_command = importlib.import_module("urdfcli.cli.lint")  # the module, not the command it defines
 
-    work = [Job(str(path), Config()) for path in sorted(FIXTURES.rglob("*.urdf"))[:3]]
-    terminal = io.StringIO()
-    monkeypatch.setattr(lint_command, "stderr", Console(file=terminal, force_terminal=True, width=100))
+    paths = [str(path) for path in sorted(FIXTURES.rglob("*.urdf"))[:3]]
     monkeypatch.setattr(lint_command, "PROGRESS_AFTER", 0.0)
-    outcomes = lint_command.run(work, jobs=1)
-    assert [o.path for o in outcomes] == [job.path for job in work]
+    terminal = io.StringIO()
+    with Session(config=Config()) as session, lint_command.Progress(Output(Console(), Console(file=terminal, force_terminal=True, width=100))) as progress:
+        found = api.run(paths, {}, "all", session, progress=progress.update)
+    assert [r.path for r in found.results] == paths
     assert "linting" in terminal.getvalue()
     piped = io.StringIO()
-    monkeypatch.setattr(lint_command, "stderr", Console(file=piped, force_terminal=False))
-    lint_command.run(work, jobs=1)
+    with Session(config=Config()) as session, lint_command.Progress(Output(Console(), Console(file=piped, force_terminal=False))) as progress:
+        api.run(paths, {}, "all", session, progress=progress.update)
     assert piped.getvalue() == ""

@@ -9,14 +9,14 @@ import sys
 from pathlib import Path
 
 import pytest
+from conftest import model
 from hypothesis import given, settings
 from hypothesis import strategies as st
 from lxml import etree
 
-from urdfcli.document import tag_name
-from urdfcli.load import LoadOptions, load
-from urdfcli.positions import Source
-from urdfcli.xmlsafe import parse_bytes
+from urdfcli.read.document import tag_name
+from urdfcli.read.positions import Source
+from urdfcli.read.xml import parse as parse_bytes
 
 XACRO = 'xmlns:xacro="http://www.ros.org/wiki/xacro"'
 
@@ -61,7 +61,7 @@ def body(writer: Writer, prefix: str, indent: int) -> None:
 
 
 def positions_of(path, ids: set[str]) -> dict[str, tuple[str, int, int]]:
-    loaded = load(str(path), LoadOptions(checks="none"))
+    loaded = model(str(path))
     assert loaded.document.readable, loaded.diagnostics
     found = {}
     text = loaded.document.expanded_text.encode() if loaded.document.is_xacro else Path(path).read_bytes()
@@ -144,8 +144,8 @@ def test_machine_formats_carry_the_column_of_a_multiline_tag(tmp_path, fmt):
 def test_standard_input_gets_the_excerpt_and_column_of_a_file(tmp_path):
     path = tmp_path / "ml.urdf"
     path.write_text(MULTILINE)
-    by_path = run("lint", str(path)).stderr.decode().replace(str(path), "FILE")
-    by_stdin = run("lint", "-", stdin=MULTILINE.encode()).stderr.decode().replace("<stdin>", "FILE")
+    by_path = run("lint", str(path)).stdout.decode().replace(str(path), "FILE")
+    by_stdin = run("lint", "-", stdin=MULTILINE.encode()).stdout.decode().replace("<stdin>", "FILE")
     assert "FILE:6:7: I006" in by_path
     assert "     6 |       <inertia ixx=\"1\"\n       |       ^" in by_path
     assert by_stdin == by_path
@@ -203,7 +203,7 @@ def test_a_macro_body_diagnostic_names_each_call_site_innermost_first(tmp_path):
         ],
         [{"path": "robot.urdf.xacro", "line": 5, "column": 3, "macro": "wheel"}],
     ]
-    text = run("lint", "robot.urdf.xacro", "--format", "text", cwd=tmp_path).stderr.decode()
+    text = run("lint", "robot.urdf.xacro", "--format", "text", cwd=tmp_path).stdout.decode()
     assert (
         "wheel.xacro:5:9: I006 warning: inertia of link 'left_wheel' breaks the triangle inequality: 1 + 1 < 5\n"
         "    note: in macro 'wheel' called at wheel.xacro:12:5\n"
@@ -234,7 +234,7 @@ def test_a_deep_trace_is_cut_after_three_levels(tmp_path):
         "  <xacro:m5/>\n"
         "</robot>\n"
     )
-    text = run("lint", "deep.urdf.xacro", cwd=tmp_path).stderr.decode()
+    text = run("lint", "deep.urdf.xacro", cwd=tmp_path).stdout.decode()
     notes = [line for line in text.splitlines() if line.startswith("    note:")]
     assert notes[:3] == [
         "    note: in macro 'm0' called at deep.urdf.xacro:3:26",
@@ -373,7 +373,7 @@ def test_element_paths_from_the_text_match_the_tree(name):
     from conftest import example_robot_data
 
     paths = sorted((example_robot_data() / "robots").rglob(name))
-    loaded = load(str(paths[0]), LoadOptions(checks="none"))
+    loaded = model(str(paths[0]))
     elements = list(parse_bytes(paths[0].read_bytes()).iter(etree.Element))
     assert len(loaded.document.tops) > 10
     for at, element in enumerate(elements):

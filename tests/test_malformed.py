@@ -18,7 +18,6 @@ import time
 from pathlib import Path
 
 import pytest
-
 from conftest import run_cli
 
 ONE_LINK = '<robot name="r"><link name="a"/></robot>'
@@ -314,19 +313,17 @@ def test_unknown_subcommand_and_missing_argument_are_one_line_exit_2():
 def run_main(monkeypatch, capsys, *args: str) -> tuple[int, str]:
     from urdfcli.cli import main
 
-    monkeypatch.setattr(sys, "argv", ["urdfcli", *args])
-    with pytest.raises(SystemExit) as stopped:
-        main()
-    return stopped.value.code, capsys.readouterr().err
+    code = main(list(args))
+    return code, capsys.readouterr().err
 
 
 def test_an_internal_error_is_one_line_asking_for_a_bug_report(monkeypatch, capsys, tmp_path):
-    import urdfcli.model
+    import urdfcli.model.load
 
     def broken(*args, **kwargs):
         raise ZeroDivisionError("division by zero\nwith a second line")
 
-    monkeypatch.setattr(urdfcli.model, "read", broken)
+    monkeypatch.setattr(urdfcli.model.load, "read", broken)
     monkeypatch.delenv("URDFCLI_DEBUG", raising=False)
     path = write(tmp_path, "ok.urdf", ONE_LINK)
     code, err = run_main(monkeypatch, capsys, "check", str(path))
@@ -341,12 +338,11 @@ def test_urdfcli_debug_shows_the_traceback(monkeypatch, tmp_path):
     """With URDFCLI_DEBUG=1, the real process prints the traceback of an internal error."""
     path = write(tmp_path, "ok.urdf", ONE_LINK)
     program = (
-        "import sys, urdfcli.model\n"
+        "import sys, urdfcli.model.load\n"
         "def broken(*a, **k): raise ZeroDivisionError('boom')\n"
-        "urdfcli.model.read = broken\n"
+        "urdfcli.model.load.read = broken\n"
         "from urdfcli.cli import main\n"
-        f"sys.argv = ['urdfcli', 'check', {str(path)!r}]\n"
-        "main()\n"
+        f"sys.exit(main(['check', {str(path)!r}]))\n"
     )
     for debug, traceback in (("1", True), ("", False)):
         result = subprocess.run([sys.executable, "-c", program], capture_output=True, text=True, timeout=60, env={**os.environ, "URDFCLI_DEBUG": debug})

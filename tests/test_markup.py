@@ -3,8 +3,9 @@ published robots draws nothing, next to the real defect that still draws its war
 
 from __future__ import annotations
 
-from urdfcli.config import Config
-from urdfcli.linter import lint_file
+from conftest import lint_file
+
+from urdfcli.project.config import Config
 
 MARKUP = ("D001", "D002", "D010", "D011", "D012", "M002", "M003")
 

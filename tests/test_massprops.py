@@ -9,7 +9,7 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from urdfcli import massprops as mp
+from urdfcli.model import massprops as mp
 
 finite = st.floats(min_value=-10, max_value=10, allow_nan=False, allow_infinity=False)
 positive = st.floats(min_value=0.01, max_value=10, allow_nan=False, allow_infinity=False)

@@ -4,10 +4,10 @@ nothing here, next to a small model with the real defect, which still draws its 
 from __future__ import annotations
 
 import pytest
+from conftest import lint_file
 
-from urdfcli.config import Config
 from urdfcli.diagnostics import Severity
-from urdfcli.linter import lint_file
+from urdfcli.project.config import Config
 
 
 def lint(tmp_path, body: str, name: str = "robot.urdf"):

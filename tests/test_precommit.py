@@ -10,7 +10,6 @@ import subprocess
 
 import pytest
 import yaml
-
 from conftest import ROOT, require_tool
 from ros_workspace import edit, line_of, make_repository
 

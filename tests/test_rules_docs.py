@@ -6,14 +6,14 @@ import json
 import re
 
 import pytest
+from conftest import ROOT, run_cli
 from hypothesis import given
 from hypothesis import strategies as st
 
-from conftest import ROOT, run_cli
-from urdfcli.formatters.rules import markdown
-from urdfcli.rules import SECTIONS, load_all
+from urdfcli.report.rules import markdown
+from urdfcli.rules import REGISTRY, SECTIONS
 
-RULES = sorted(load_all().values(), key=lambda r: r.code)
+RULES = sorted(REGISTRY.values(), key=lambda r: r.code)
 
 
 def test_every_rule_has_the_four_documentation_sections():

@@ -10,16 +10,16 @@ from __future__ import annotations
 import re
 
 import pytest
+from conftest import lint_file
 
-from urdfcli.config import Config
-from urdfcli.linter import lint_file
-from urdfcli.rules import example_code, load_all
+from urdfcli.project.config import Config
+from urdfcli.rules import REGISTRY, example_code
 
 ROBOT_CHILDREN = {"link", "joint", "material", "gazebo", "transmission"}
 # X006 is about a library and the models of its repository that include it: its Example and
 # Use instead are a pyproject.toml, tested in tests/test_workspace.py.
 NEEDS_A_REPOSITORY = {"X006"}
-RULES = sorted((r for r in load_all().values() if r.code not in NEEDS_A_REPOSITORY), key=lambda r: r.code)
+RULES = sorted((r for r in REGISTRY.values() if r.code not in NEEDS_A_REPOSITORY), key=lambda r: r.code)
 
 
 def first_tag(snippet: str) -> str:

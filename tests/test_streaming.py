@@ -6,24 +6,22 @@ from __future__ import annotations
 from pathlib import Path
 
 import pytest
-
-from conftest import all_fixture_models, example_robot_data, use_expat
+from conftest import all_fixture_models, example_robot_data, load
 from test_malformed import MALFORMED
-from urdfcli import xmlsafe
-from urdfcli.load import LoadOptions, load
+
+from urdfcli.read import xml
 
 
 def readings(path: Path, monkeypatch) -> list:
-    """What a load reports on ``path``, and the links and joints it read: read by
-    expat (urdfcli.lightxml), read whole by lxml, and streamed by lxml."""
+    """What a load reports on ``path``, and the links and joints it read: read whole,
+    and streamed."""
     found = []
-    for expat, whole_up_to in ((True, xmlsafe.WHOLE_UP_TO), (False, xmlsafe.WHOLE_UP_TO), (False, 0)):
-        use_expat(monkeypatch, expat)
-        monkeypatch.setattr(xmlsafe, "WHOLE_UP_TO", whole_up_to)
-        loaded = load(str(path), LoadOptions(checks="all"))
-        robot = loaded.robot
-        model = (robot.links, robot.joints, robot.materials, robot.resources, list(loaded.document.tops)) if robot else None
-        found.append(([(d.code, d.line, d.location.column, d.message, d.element) for d in loaded.diagnostics], model))
+    for whole_up_to in (xml.WHOLE_UP_TO, 0):
+        monkeypatch.setattr(xml, "WHOLE_UP_TO", whole_up_to)
+        result = load(str(path), "all")
+        robot = result.robot
+        model = (robot.links, robot.joints, robot.materials, robot.resources, list(result.loaded.document.tops)) if robot else None
+        found.append(([(d.code, d.line, d.location.column, d.message, d.element) for d in result.diagnostics], model))
     return found
 
 
@@ -31,24 +29,24 @@ def readings(path: Path, monkeypatch) -> list:
 def test_malformed_documents_read_alike(tmp_path, monkeypatch, name):
     path = tmp_path / "robot.urdf"
     path.write_bytes(MALFORMED[name][0])
-    by_expat, whole, streamed = readings(path, monkeypatch)
-    assert by_expat == whole == streamed
+    whole, streamed = readings(path, monkeypatch)
+    assert whole == streamed
 
 
 def test_fixture_models_read_alike(monkeypatch):
     """Plain and xacro (their expansion is read): every fixture model."""
     for path in all_fixture_models():
-        by_expat, whole, streamed = readings(path, monkeypatch)
-        assert by_expat == whole == streamed, path.name
+        whole, streamed = readings(path, monkeypatch)
+        assert whole == streamed, path.name
 
 
 def test_published_models_read_alike(monkeypatch):
     paths = sorted((example_robot_data() / "robots").rglob("*.urdf"))
     assert len(paths) > 60
-    assert all(path.stat().st_size <= xmlsafe.WHOLE_UP_TO for path in paths)  # read whole by default
+    assert all(path.stat().st_size <= xml.WHOLE_UP_TO for path in paths)  # read whole by default
     for path in paths:
-        by_expat, whole, streamed = readings(path, monkeypatch)
-        assert by_expat == whole == streamed, path.name
+        whole, streamed = readings(path, monkeypatch)
+        assert whole == streamed, path.name
 
 
 def test_a_kept_block_holds_only_itself(tmp_path, monkeypatch):
@@ -56,9 +54,8 @@ def test_a_kept_block_holds_only_itself(tmp_path, monkeypatch):
     many files checked at once, each keeps its block, not its whole document."""
     path = tmp_path / "robot.urdf"
     path.write_text('<robot name="r"><link name="a"/><gazebo reference="a"><mu1>1</mu1></gazebo><link name="b"/></robot>')
-    for expat, whole_up_to in ((True, xmlsafe.WHOLE_UP_TO), (False, xmlsafe.WHOLE_UP_TO), (False, 0)):
-        use_expat(monkeypatch, expat)
-        monkeypatch.setattr(xmlsafe, "WHOLE_UP_TO", whole_up_to)
-        (block,) = load(str(path), LoadOptions(checks="none")).robot.extensions
+    for whole_up_to in (xml.WHOLE_UP_TO, 0):
+        monkeypatch.setattr(xml, "WHOLE_UP_TO", whole_up_to)
+        (block,) = load(str(path), "none").robot.extensions
         assert block.tag == "gazebo"
-        assert expat or block.getparent() is None  # (an element read by expat knows no parent)
+        assert block.getparent() is None

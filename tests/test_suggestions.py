@@ -7,7 +7,7 @@ import difflib
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from urdfcli.suggestions import close_matches
+from urdfcli.rules.suggestions import close_matches
 
 NAMES = st.text(alphabet="abcde_12", max_size=8)  # few letters: many ties and near misses
 

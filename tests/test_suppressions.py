@@ -5,9 +5,9 @@ from __future__ import annotations
 
 import textwrap
 
-from conftest import run_cli
-from urdfcli.config import Config
-from urdfcli.linter import lint_file
+from conftest import lint_file, run_cli
+
+from urdfcli.project.config import Config
 
 # I006 points at the <inertia> line, four lines below the <link>.
 SENSOR = """\
@@ -53,11 +53,11 @@ def test_a_comment_in_a_utf16_file_silences_too(tmp_path):
 
 def test_a_file_whose_bytes_hold_no_comment_is_not_read_again(tmp_path, monkeypatch):
     """The input's bytes tell, while they are read, that no suppression comment is in them."""
-    from urdfcli import positions
+    from urdfcli.read.positions import Sources
 
     asked = []
-    text_of = positions.text_of
-    monkeypatch.setattr(positions, "text_of", lambda name, containing=None: asked.append(name) or text_of(name, containing))
+    text_of = Sources.text
+    monkeypatch.setattr(Sources, "text", lambda self, name, containing=None: asked.append(name) or text_of(self, name, containing))
     assert codes(tmp_path, SENSOR.format(comment="")) == [(7, "I006")]
     assert asked == []
     assert codes(tmp_path, SENSOR.format(comment="<!-- urdfcli: noqa: I006 -->")) == []
@@ -65,9 +65,9 @@ def test_a_file_whose_bytes_hold_no_comment_is_not_read_again(tmp_path, monkeypa
 
 
 def test_the_rule_name_is_the_registered_one():
-    from urdfcli.rules import load_all
+    from urdfcli.rules import REGISTRY
 
-    assert load_all()["I006"].name == "inertia-triangle-inequality"
+    assert REGISTRY["I006"].name == "inertia-triangle-inequality"
 
 
 def test_a_comment_naming_another_rule_silences_nothing(tmp_path):

@@ -10,9 +10,8 @@ from collections import Counter
 from pathlib import Path
 
 import pytest
-from lxml import etree
-
 from conftest import FIXTURES, all_fixture_models, require_tool, run_cli
+from lxml import etree
 
 BROKEN = {"seed000/broken_xacro_robot.urdf.xacro"}  # xacro cannot expand it
 MODELS = [p for p in all_fixture_models() if p.relative_to(FIXTURES).as_posix() not in BROKEN]

@@ -1,92 +1,92 @@
-"""xacro runs in one bounded worker per run: the same answers and the same bounds as a
-child forked per file, and a worker that fails is replaced."""
+"""xacro runs in one bounded worker per session: the same answers as in this process,
+each job bounded in time and memory, and a worker that fails is replaced."""
 
 from __future__ import annotations
 
 import os
 import time
+import xml.dom.minidom
 from pathlib import Path
 
 import pytest
 from conftest import FIXTURES
 
-from urdfcli import expanded, expansion, sandbox
-from urdfcli.packages import PackageResolver
+from urdfcli.read import expansion, sandbox
+from urdfcli.read.packages import PackageResolver
+from urdfcli.read.xacro import Expander, ExpansionError
+
+PROBE = "worker_probe"  # tests/support/worker_probe.py: functions for the worker to run
 
 
-def test_jobs_share_one_worker_that_is_not_this_process():
-    first, second = sandbox.bounded(os.getpid), sandbox.bounded(os.getpid)
+@pytest.fixture
+def worker(monkeypatch):
+    support = Path(__file__).parent / "support"
+    monkeypatch.syspath_prepend(str(support))
+    found = sandbox.Worker(PROBE)
+    yield found
+    found.stop()
+
+
+def test_jobs_share_one_worker_that_is_not_this_process(worker):
+    first, second = worker.run("pid"), worker.run("pid")
     assert first == second != os.getpid()
 
 
-def imported_here(module: str) -> bool:
-    import sys
-
-    return module in sys.modules
-
-
-def test_a_worker_started_early_has_imported_what_it_was_given_when_the_first_job_comes(tmp_path, monkeypatch):
-    (tmp_path / "urdfcli_early_probe.py").write_text("")
-    monkeypatch.syspath_prepend(str(tmp_path))
-    with pytest.raises(sandbox.LimitExceeded):
-        sandbox.bounded(os._exit, 0)  # no worker runs now: the next is started afresh
-    sandbox.start("urdfcli_early_probe")
-    assert sandbox.bounded(imported_here, "urdfcli_early_probe")
-    assert not imported_here("urdfcli_early_probe")  # the worker imported it, not this process
-    assert sandbox.bounded(sandbox.call, "os", "getpid") == sandbox.bounded(os.getpid)  # one worker takes every job
+def test_a_worker_returns_results_and_raises_errors():
+    builtins = sandbox.Worker("operator")
+    try:
+        assert builtins.run("add", 1, 2) == 3
+        with pytest.raises(ZeroDivisionError):
+            builtins.run("truediv", 1, 0)
+    finally:
+        builtins.stop()
 
 
-def test_a_worker_that_dies_is_reported_and_replaced():
-    before = sandbox.bounded(os.getpid)
+def test_a_worker_that_dies_is_reported_and_replaced(worker):
+    before = worker.run("pid")
     with pytest.raises(sandbox.LimitExceeded, match="ended without a result"):
-        sandbox.bounded(os._exit, 3)
-    after = sandbox.bounded(os.getpid)
+        worker.run("die", 3)
+    after = worker.run("pid")
     assert after != before
-    assert sandbox.bounded(sum, [1, 2]) == 3
+    assert worker.run("pid") == after
 
 
-KEPT = []
+def test_a_worker_that_kept_much_memory_retires_and_the_next_job_runs_in_a_new_one(worker):
+    kept_in = worker.run("keep", (sandbox.RETIRE_MIB + 16) * 1024 * 1024)
+    assert worker.run("pid") != kept_in
+    assert worker.run("pid") == worker.run("pid")
 
 
-def keep(size: int) -> int:
-    KEPT.append(bytearray(size))  # memory the job leaves behind in its process
-    return os.getpid()
-
-
-def test_a_worker_that_kept_much_memory_retires_and_the_next_job_runs_in_a_new_one():
-    kept_in = sandbox.bounded(keep, (sandbox.RETIRE_MIB + 16) * 1024 * 1024)
-    assert sandbox.bounded(os.getpid) != kept_in
-    assert sandbox.bounded(os.getpid) == sandbox.bounded(os.getpid)
-    assert not KEPT  # nothing of the job in this process
-
-
-def test_a_worker_out_of_time_is_stopped_and_replaced(monkeypatch):
-    monkeypatch.setattr(sandbox, "TIMEOUT_SECONDS", 0.5)
-    before = sandbox.bounded(os.getpid)
+def test_a_worker_out_of_time_is_stopped_and_replaced(worker, monkeypatch):
+    monkeypatch.setenv("URDFCLI_XACRO_TIMEOUT", "0.5")
+    before = worker.run("pid")
     started = time.monotonic()
     with pytest.raises(sandbox.LimitExceeded, match="took longer than 0.5 s"):
-        sandbox.bounded(time.sleep, 30)
+        worker.run("sleep", 30)
     assert time.monotonic() - started < 5
-    assert sandbox.bounded(os.getpid) != before
+    assert worker.run("pid") != before
 
 
-def test_the_memory_bound_holds_in_the_worker(monkeypatch):
-    monkeypatch.setattr(sandbox, "MEMORY_MIB", 64)
+def test_the_memory_bound_holds_in_the_worker(worker, monkeypatch):
+    monkeypatch.setenv("URDFCLI_XACRO_MEMORY_MIB", "64")
     with pytest.raises(sandbox.LimitExceeded, match="more than 64 MiB"):
-        sandbox.bounded(bytearray, 256 * 1024 * 1024)
-    assert sandbox.bounded(sum, [1, 2]) == 3
+        worker.run("allocate", 256 * 1024 * 1024)
+    assert worker.run("pid") != os.getpid()
 
 
-def test_the_worker_sees_the_environment_and_folder_of_each_job(monkeypatch, tmp_path):
-    sandbox.bounded(os.getpid)  # a worker started before the changes below
+def test_the_worker_sees_the_environment_and_folder_of_each_job(worker, monkeypatch, tmp_path):
+    worker.run("pid")  # a worker started before the changes below
     monkeypatch.setenv("URDFCLI_TEST_VARIABLE", "now")
     monkeypatch.chdir(tmp_path)
-    assert sandbox.bounded(os.environ.get, "URDFCLI_TEST_VARIABLE") == "now"
-    assert sandbox.bounded(os.getcwd) == str(tmp_path)
+    assert worker.run("variable", "URDFCLI_TEST_VARIABLE") == "now"
+    assert worker.run("folder") == str(tmp_path)
 
 
-def test_a_job_that_cannot_be_pickled_runs_in_a_child_of_its_own():
-    assert sandbox.bounded(lambda: os.getpid()) != os.getpid()
+def test_a_stopped_worker_process_is_gone(worker):
+    pid = worker.run("pid")
+    worker.stop()
+    with pytest.raises(ChildProcessError):
+        os.waitpid(pid, os.WNOHANG)
 
 
 XACRO_FIXTURES = sorted(FIXTURES.rglob("*.xacro"))
@@ -94,76 +94,19 @@ XACRO_FIXTURES = sorted(FIXTURES.rglob("*.xacro"))
 
 def expansion_of(expand, path: Path, mappings: dict[str, str]):
     try:
-        result = expand(path.read_bytes(), str(path), mappings, PackageResolver((), path))
-    except expanded.ExpansionError as error:
+        result = expand(path.read_bytes(), str(path), mappings, PackageResolver((), path), {})
+    except ExpansionError as error:
         return ("error", error.message, error.origin, error.file, error.code)
     return (result.text, list(result.origins), result.includes, result.warnings)
 
 
 @pytest.mark.parametrize("path", XACRO_FIXTURES, ids=lambda p: str(p.relative_to(FIXTURES)))
 def test_expansion_in_the_worker_is_the_expansion_in_process(path: Path):
-    assert expansion_of(expanded.expand, path, {}) == expansion_of(expansion.expand_here, path, {})
-
-
-def test_a_job_sent_now_is_answered_when_asked_for():
-    sent = sandbox.Sent(os.getpid)
-    assert sent.result() == sandbox.bounded(os.getpid) != os.getpid()
-
-
-def answered(sent: sandbox.Sent) -> bool:
-    deadline = time.monotonic() + 10
-    while not sent.worker.answered():
-        assert time.monotonic() < deadline, "the worker did not answer"
-        time.sleep(0.01)
-    return True
-
-
-def test_a_job_given_up_after_its_answer_leaves_the_worker_to_the_next_job():
-    worker = sandbox.bounded(os.getpid)
-    sent = sandbox.Sent(sum, [1, 2])
-    assert answered(sent)
-    sent.drop()
-    assert sandbox.bounded(os.getpid) == worker
-
-
-def test_a_job_given_up_before_its_answer_stops_the_worker_and_the_next_job_starts_another():
-    worker = sandbox.bounded(os.getpid)
-    sent = sandbox.Sent(time.sleep, 30)
-    started = time.monotonic()
-    sent.drop()
-    assert sandbox.bounded(os.getpid) != worker
-    assert time.monotonic() - started < 5
-
-
-CAR = FIXTURES / "urdf01_rviz" / "urdf" / "xacro" / "car.urdf.xacro"
-
-
-@pytest.fixture
-def two_cpus(monkeypatch):
-    monkeypatch.setattr(os, "sched_getaffinity", lambda pid: {0, 1}, raising=False)
-
-
-def test_the_first_expansion_of_a_run_takes_the_answer_sent_ahead_for_it(two_cpus, monkeypatch):
-    with expanded.started(str(CAR), {"unused": "1"}):
-        monkeypatch.setattr(sandbox, "bounded", None)  # no job is sent again
-        assert expanded._ahead is not None
-        assert expansion_of(expanded.expand, CAR, {"unused": "1"}) == expansion_of(expansion.expand_here, CAR, {"unused": "1"})
-        assert expanded._ahead is None
-
-
-@pytest.mark.parametrize("first", [CAR.with_name("demo05_car_base.urdf.xacro"), CAR], ids=["another file", "other arguments"])
-def test_another_first_expansion_drops_the_one_sent_ahead(two_cpus, first):
-    with expanded.started(str(CAR), {"unused": "1"}):
-        assert expansion_of(expanded.expand, first, {}) == expansion_of(expansion.expand_here, first, {})
-        assert expanded._ahead is None
-        assert expansion_of(expanded.expand, CAR, {"unused": "1"}) == expansion_of(expansion.expand_here, CAR, {"unused": "1"})
-
-
-def test_an_expansion_sent_ahead_and_not_asked_for_is_dropped_at_the_end_of_the_run(two_cpus):
-    with expanded.started(str(CAR), {}):
-        assert expanded._ahead is not None
-    assert expanded._ahead is None
-    assert expansion_of(expanded.expand, CAR, {}) == expansion_of(expansion.expand_here, CAR, {})
+    expander = Expander()
+    try:
+        assert expansion_of(expander.expand, path, {}) == expansion_of(expansion.expand_here, path, {})
+    finally:
+        expander.close()
 
 
 ODD_DOCUMENTS = [
@@ -173,11 +116,10 @@ ODD_DOCUMENTS = [
 ]
 
 
-def readings(data: bytes) -> tuple[str, str]:
-    """The document xacro is given, read by minidom alone and through urdfcli's reader."""
-    from urdfcli.positions import Source, decode
-
-    return (expansion.tagged_dom(data, "f").toxml(), expansion._tagged_by_reader(data, "f", Source(decode(data))).toxml())
+def without_marks(document) -> str:
+    for element in document.getElementsByTagName("*"):
+        element.removeAttribute(expansion.ORIGIN)
+    return document.toxml()
 
 
 @pytest.mark.parametrize(
@@ -185,7 +127,9 @@ def readings(data: bytes) -> tuple[str, str]:
     [*(p.read_bytes() for p in XACRO_FIXTURES), *(d.encode("latin-1" if "8859" in d else "utf-8") for d in ODD_DOCUMENTS)],
     ids=[*(str(p.relative_to(FIXTURES)) for p in XACRO_FIXTURES), "odd-markup", "latin-1"],
 )
-def test_minidom_alone_reads_and_marks_a_document_as_urdfcli_s_reader_does(data):
-    alone, through_reader = readings(data)
-    assert alone == through_reader
-    assert expansion.ORIGIN in alone
+def test_xacro_is_given_the_document_it_would_read_itself_with_each_element_marked(data):
+    """Read by urdfcli's reader and marked with where each element was written, the
+    document is the one xacro's own parser (minidom) reads, marks aside."""
+    marked = expansion.tagged_dom(data, "f")
+    assert all(e.hasAttribute(expansion.ORIGIN) for e in marked.getElementsByTagName("*"))
+    assert without_marks(marked) == xml.dom.minidom.parseString(data).toxml()

@@ -8,11 +8,11 @@ import textwrap
 from pathlib import Path
 
 import pytest
-
 from conftest import run_cli
 from ros_workspace import INERTIA, WHEEL, XACRO, edit, line_of, make_repository, package_xml
-from urdfcli.packages import PackageResolver
-from urdfcli.workspace import Index, read_source, resolve_include
+
+from urdfcli.project.workspace import Index, read_source, resolve_include
+from urdfcli.read.packages import PackageIndex, PackageResolver
 
 
 def write(path: Path, text: str) -> Path:
@@ -138,7 +138,7 @@ def test_a_changed_interface_breaks_the_model_and_fails_the_library(repository):
 
 def test_an_unused_library_is_expanded_alone_and_named_once(repository):
     done = run_cli("lint", "common/urdf/sensor.xacro", cwd=repository)
-    err = done.stderr.decode()
+    err = done.stdout.decode()  # lint reports on standard output
     assert done.returncode == 0, err
     assert err.count("sensor.xacro") == 1 and "no model includes" in err
     edit(repository / "common/urdf/sensor.xacro", '<xacro:property name="sensor_size" value="0.05"/>', '<xacro:include filename="camera.xacro"/>')
@@ -258,16 +258,16 @@ def test_a_model_whose_packages_are_missing_here_is_named_not_failed(repository)
 
 
 def test_a_repository_in_a_folder_named_src_is_searched_alone_unless_that_is_a_workspace(tmp_path):
-    from urdfcli.workspace import search_roots
+    from urdfcli.project.workspace import search_roots
 
     src = tmp_path / "home" / "src"
     library = write(src / "my_robot" / "description" / "urdf" / "wheel.xacro", WHEEL)
     write(src / "my_robot" / "description" / "package.xml", package_xml("my_robot_description"))
     (src / "my_robot" / ".git").mkdir()
     (src / "website" / "pages").mkdir(parents=True)  # ~/src holds other projects
-    assert search_roots(library) == ([src / "my_robot"], True)
+    assert search_roots(library, PackageIndex()) == ([src / "my_robot"], True)
     write(src / "other_robot" / "arm" / "package.xml", package_xml("arm"))  # a second repository of packages
-    assert search_roots(library) == ([src / "my_robot", src], True)
+    assert search_roots(library, PackageIndex()) == ([src / "my_robot", src], True)
 
 
 def test_only_the_models_that_include_the_library_are_expanded(repository):

@@ -1,14 +1,39 @@
-"""The one problem type every part of urdfcli reports, and where it points."""
+"""The one problem type every part of urdfcli reports, and where it points.
+
+A diagnostic is a plain value: what was found (``code``, ``message``, ``hint``),
+where (``location``, with the xacro macro calls that made the element), and
+what it is about (``subjects``: the names of the links or joints). Readers and
+rules make them without a severity; the linter gives each one its rule's
+severity, or the one the configuration sets (see :mod:`urdfcli.project.linter`).
+A rule that knows better than its default (a finding on a 5 g link) gives one.
+"""
 
 from __future__ import annotations
 
+from collections import namedtuple
+from enum import Enum
 from typing import NamedTuple
 
-from .places import Call
-from .rules import rule
-from .severity import Severity
 
-__all__ = ["Call", "Diagnostic", "Location", "Severity"]
+class Severity(str, Enum):
+    ERROR = "error"
+    WARNING = "warning"
+    INFO = "info"
+
+    @property
+    def rank(self) -> int:
+        return _RANKS[self.value]
+
+
+_RANKS = {"error": 2, "warning": 1, "info": 0}
+
+
+class Call(namedtuple("Call", "file line column macro")):
+    """A xacro macro call: where it was written (``line`` and ``column`` may be
+    None), and the name of the macro it called. (A standard named tuple: xacro's
+    worker makes these and sends them back.)"""
+
+    __slots__ = ()
 
 
 class Location(NamedTuple):
@@ -28,28 +53,34 @@ class Location(NamedTuple):
 
 class Diagnostic(NamedTuple):
     code: str
-    severity: Severity
     message: str
     location: Location
-    element: str | None = None
+    element: str | None = None  # an element path such as joint[@name='elbow']
     hint: str | None = None
+    severity: Severity | None = None  # None until the linter gives the rule's or the configured one
+    subjects: tuple[str, ...] = ()  # the links or joints it is about
 
     @property
-    def file(self) -> str:
+    def path(self) -> str:
         return self.location.file
+
+    file = path
 
     @property
     def line(self) -> int | None:
         return self.location.line
 
-    @classmethod
-    def of(cls, code: str, message: str, location: Location, element: str | None = None, hint: str | None = None) -> "Diagnostic":
-        """A diagnostic with its rule's default severity."""
-        return cls(code, rule(code).severity, message, location, element, hint)
+    @property
+    def column(self) -> int | None:
+        return self.location.column
 
-    def with_severity(self, severity: Severity) -> "Diagnostic":
+    @property
+    def trace(self) -> tuple[Call, ...]:
+        return self.location.trace
+
+    def with_severity(self, severity: Severity) -> Diagnostic:
         return self._replace(severity=severity)
 
     def sort_key(self) -> tuple:
         trace = tuple((c.file, c.line or 0, c.column or 0) for c in self.location.trace)
-        return (self.file, self.line or 0, self.location.column or 0, self.code, trace)
+        return (self.path, self.line or 0, self.column or 0, self.code, trace)

@@ -1,54 +1,101 @@
-"""The command line: one small module per subcommand, joined here.
+"""The command line: one small module per subcommand, joined here, and the one place
+that ends the process.
 
-A plain command line (a subcommand, its options and its inputs) is read by
-:mod:`.fast` without importing typer; help, --version and anything unusual go
-through the typer application (:mod:`.application`), which reads the same declarations
-and says what is wrong with a command line. This module imports little: a run
-with a xacro input starts xacro's worker before anything else (see :func:`main`).
+Every command exits 0 when nothing is wrong, 1 when problems are found, 2 when
+it cannot run; a usage mistake is one line naming the option, an internal error
+one line asking for a bug report (``URDFCLI_DEBUG=1`` shows its traceback).
 """
 
 from __future__ import annotations
 
-import atexit
-import contextlib
+import inspect
 import os
 import sys
 
-from ..folders import one_run
-from .options import BadValue
+import typer
+
+from ..version import __version__
+from . import check, expand, graph, inertia, lint, rules, tree
+
+COMMANDS = {
+    "expand": expand.expand,
+    "check": check.check,
+    "tree": tree.tree,
+    "graph": graph.graph,
+    "inertia": inertia.inertia,
+    "lint": lint.lint,
+    "rules": rules.rules,
+    "rule": rules.rule,
+}
 
 
-def __getattr__(name: str):
-    if name == "app":  # the whole application, for those who import it
-        from .application import build_app
-
-        return build_app()
-    raise AttributeError(name)
+def _version(value: bool) -> None:
+    if value:
+        print(f"urdfcli {__version__}")
+        raise typer.Exit()
 
 
-def main() -> None:
-    """Run a command line; a usage error or an internal error is one line, never a bare traceback."""
-    argv = sys.argv[1:]
-    xacro = contextlib.nullcontext()
-    if argv[:1] != ["rules"] and any(argument.endswith(".xacro") for argument in argv[1:]):
-        from ..expanded import started
+def reflow(doc: str) -> str:
+    """The help text with each paragraph on one line, for the help screen to wrap
+    (it would keep the docstring's line breaks, and wrap the long lines again)."""
+    return "\n\n".join(" ".join(paragraph.split()) for paragraph in inspect.cleandoc(doc).split("\n\n"))
 
-        xacro = started(*_first_expansion(argv[1:]))  # xacro's worker expands while this process imports the rest
+
+def build_app() -> typer.Typer:
+    app = typer.Typer(
+        name="urdfcli",
+        help="Check, expand, draw and lint URDF and xacro robot descriptions, without ROS.\n\n"
+        "Exit codes: 0 no errors, 1 problems found, 2 could not run.",
+        no_args_is_help=True,
+        add_completion=False,
+        pretty_exceptions_enable=False,
+        context_settings={"help_option_names": ["-h", "--help"]},
+    )
+
+    @app.callback()
+    def main(version: bool = typer.Option(False, "--version", callback=_version, is_eager=True, help="Show the version and exit.")) -> None:
+        pass
+
+    for name, command in COMMANDS.items():
+        app.command(name=name, help=reflow(command.__doc__ or ""))(command)
+    return app
+
+
+app = build_app()
+
+
+def main(argv: list[str] | None = None) -> int:
+    """Run a command line; the exit code. Usage and internal errors are one line each."""
+    try:  # typer vendors click from 0.2x on
+        from typer._click.exceptions import ClickException, NoArgsIsHelpError, UsageError
+    except ImportError:
+        from click.exceptions import ClickException, NoArgsIsHelpError, UsageError
+
+    argv = sys.argv[1:] if argv is None else argv
+    if os.environ.get("NO_COLOR") and (not argv or {"-h", "--help"} & set(argv)):
+        from typer import rich_utils  # the help screen: no bold or dim either
+
+        rich_utils.COLOR_SYSTEM = None
     try:
-        with one_run(), xacro:
-            from .fast import parsed  # (after the worker's start: it needs none of it)
-
-            found = parsed(argv)
-            code = found.run() if found is not None else _typer_main(argv)
-    except BadValue as error:  # as typer says it, for a command line read without typer
-        sys.stderr.write(f"urdfcli: Invalid value for {error.option}: {_one_line(str(error))} (see 'urdfcli {argv[0]} -h')\n")
-        sys.exit(2)
-    except KeyboardInterrupt:
+        app(args=argv, prog_name="urdfcli", standalone_mode=False)
+    except SystemExit as done:
+        return done.code if isinstance(done.code, int) else 0
+    except NoArgsIsHelpError as error:  # the help is printed already
+        if error.format_message().strip():
+            sys.stderr.write(error.format_message().rstrip("\n") + "\n")
+        return error.exit_code
+    except UsageError as error:
+        command = error.ctx.command_path if error.ctx is not None else "urdfcli"
+        sys.stderr.write(f"urdfcli: {_one_line(error.format_message())} (see '{command} -h')\n")
+        return error.exit_code
+    except ClickException as error:
+        sys.stderr.write(f"urdfcli: {_one_line(error.format_message())}\n")
+        return error.exit_code
+    except (KeyboardInterrupt, typer.Abort):
         sys.stderr.write("urdfcli: interrupted\n")
-        sys.exit(130)
+        return 130
     except BrokenPipeError:
-        sys.stderr.close()
-        sys.exit(1)
+        return 1
     except Exception as error:  # noqa: BLE001
         if os.environ.get("URDFCLI_DEBUG"):
             raise
@@ -57,77 +104,26 @@ def main() -> None:
             f"urdfcli: internal error ({type(error).__name__}: {_one_line(str(error))}) on {name or 'the input'}; "
             "please report this bug with the input file (URDFCLI_DEBUG=1 shows the traceback)\n"
         )
-        sys.exit(2)
-    sys.exit(code if isinstance(code, int) else 0)
-
-
-def _first_expansion(arguments: list[str]) -> tuple[str | None, dict[str, str]]:
-    """The first xacro input of a command line and its NAME:=VALUE arguments, for the
-    worker to expand ahead; no input when package paths are given (they are read
-    with the options)."""
-    if any(a in ("-P", "--package-path") or a.startswith(("-P", "--package-path=")) for a in arguments):
-        return None, {}
-    mappings = dict(a.partition(":=")[::2] for a in arguments if ":=" in a)
-    return next(a for a in arguments if a.endswith(".xacro")), mappings
+        return 2
+    return 0
 
 
 def run() -> None:
-    """The ``urdfcli`` program: :func:`main`, then an end without Python's finalization.
-
-    Freeing every module and object at exit took 2 to 5 ms of a 55 to 90 ms run on
-    a small file. Standard output and error are flushed and the exit handlers (the
-    xacro worker's stop) run first; nothing else urdfcli opens outlives its ``with``.
-    """
-    try:
-        main()
-        code = 0
-    except SystemExit as done:
-        if done.code is not None and not isinstance(done.code, int):
-            raise  # a message for Python to print as it ends
-        code = done.code or 0
+    """The ``urdfcli`` program."""
+    code = main()
     try:
         sys.stdout.flush()
-    except (BrokenPipeError, ValueError):  # a reader that stopped early, as main() reports it
+    except (BrokenPipeError, ValueError):  # a reader that stopped early
         code = code or 1
-    with contextlib.suppress(OSError, ValueError):  # main() closes it after a broken pipe
-        sys.stderr.flush()
-    run_exit_handlers = getattr(atexit, "_run_exitfuncs", None)
-    if run_exit_handlers is None:  # not CPython: let the interpreter end as usual
-        sys.exit(code)
-    run_exit_handlers()
-    os._exit(code)
+        _quiet_stdout()
+    sys.exit(code)
 
 
-def _typer_main(argv: list[str]):
-    """The command line read by typer: help, --version, and what :mod:`.fast` leaves to it."""
-    import typer
-
-    from .application import app_for
-
-    try:  # typer vendors click from 0.2x on
-        from typer._click.exceptions import ClickException, NoArgsIsHelpError, UsageError
-    except ImportError:
-        from click.exceptions import ClickException, NoArgsIsHelpError, UsageError
-
-    if os.environ.get("NO_COLOR") and (not argv or {"-h", "--help"} & set(argv)):
-        from typer import rich_utils  # the help screen: no bold or dim either
-
-        rich_utils.COLOR_SYSTEM = None
-    try:
-        return app_for(argv)(args=argv, prog_name="urdfcli", standalone_mode=False)
-    except NoArgsIsHelpError as error:  # the help is printed already (rich prints it, the message is empty)
-        if error.format_message().strip():
-            sys.stderr.write(error.format_message().rstrip("\n") + "\n")
-        sys.exit(error.exit_code)
-    except UsageError as error:
-        command = error.ctx.command_path if error.ctx is not None else "urdfcli"
-        sys.stderr.write(f"urdfcli: {_one_line(error.format_message())} (see '{command} -h')\n")
-        sys.exit(error.exit_code)
-    except ClickException as error:
-        sys.stderr.write(f"urdfcli: {_one_line(error.format_message())}\n")
-        sys.exit(error.exit_code)
-    except typer.Abort:
-        raise KeyboardInterrupt from None
+def _quiet_stdout() -> None:
+    """After a broken pipe, point standard output at nothing, so that Python's own
+    flush at exit does not print an error."""
+    devnull = os.open(os.devnull, os.O_WRONLY)
+    os.dup2(devnull, sys.stdout.fileno())
 
 
 def _one_line(text: str) -> str:

@@ -4,32 +4,41 @@ from __future__ import annotations
 
 from typing import Annotated
 
-from ..diagnostics import Severity
-from ..formatters import FORMATS, resolve
-from ..formatters.emit import emit
-from .common import LIBRARIES_HELP, ConfigOption, Exit, InputsArgument, IsolatedOption, PackagePathOption, configurations, load_all, stderr, stdout
-from .options import BadValue, Option
+import typer
 
-FormatOption = Annotated[
-    str,
-    Option(
-        "--format",
-        "-f",
-        metavar="FORMAT",
-        help="Output format: auto (text, or github under GitHub Actions), text, concise, json, sarif, github, "
-        "or check_urdf (exactly check_urdf's standard output).",
-        case_sensitive=False,
-    ),
-]
+from .. import api, report
+from ..diagnostics import Severity
+from ..report.console import Output
+from .common import (
+    LIBRARIES_HELP,
+    ColorOption,
+    ConfigOption,
+    Exit,
+    InputsArgument,
+    IsolatedOption,
+    PackagePathOption,
+    choose,
+    format_option,
+    report_unreadable,
+    session,
+    split_inputs,
+)
+
+FORMATS = ("auto", "text", "concise", "json", "sarif", "github", "check_urdf")
+FormatOption = format_option(
+    "Output format: auto (text, or github under GitHub Actions), text, concise, json, sarif, github, "
+    "or check_urdf (exactly check_urdf's standard output)."
+)
 
 
 def check(
     inputs: InputsArgument,
     output_format: FormatOption = "auto",
-    strict: Annotated[bool, Option("--strict", help="Fail (exit 1) on warnings too.")] = False,
+    strict: Annotated[bool, typer.Option("--strict", help="Fail (exit 1) on warnings too.")] = False,
     package_path: PackagePathOption = None,
     config: ConfigOption = None,
     isolated: IsolatedOption = False,
+    color: ColorOption = "auto",
 ) -> None:
     """Check URDF/xacro files the way check_urdf does, and find what it misses.
 
@@ -40,14 +49,17 @@ def check(
     Configuration (the tool.urdfcli table of the nearest pyproject.toml, or urdfcli.toml)
     and noqa comments apply as they do for lint.
     """
-    if output_format not in FORMATS:
-        raise BadValue(f"unknown format {output_format!r}; choose from {', '.join(FORMATS)}", "--format")
-    results, unreadable = load_all(inputs, package_path, "check", configurations(config, isolated), libraries=True)
-    emit(results, resolve(output_format), stdout, stderr)
+    output_format = choose(output_format, FORMATS)
+    paths, mappings = split_inputs(inputs)
+    output = Output.standard(color)
+    with session(package_path, config=config, isolated=isolated) as run:
+        found = api.run(paths, mappings, "check", run)
+        report_unreadable(output, found.unreadable)
+        report.reporter(output_format)(found.results, output, "check", run.sources)
     failing = Severity.WARNING.rank if strict else Severity.ERROR.rank
-    if unreadable:
+    if found.unreadable:
         raise SystemExit(Exit.CANNOT_RUN)
-    if any(d.severity.rank >= failing for loaded in results for d in loaded.diagnostics):
+    if any(d.severity.rank >= failing for result in found.results for d in result.diagnostics):
         raise SystemExit(Exit.PROBLEMS)
 
 

@@ -2,24 +2,26 @@
 
 from __future__ import annotations
 
-import sys
 from pathlib import Path
 from typing import Annotated
 
-from ..escape import escape
-from ..formatters.text import print_diagnostic
-from ..load import InputError, LoadOptions, load_document
-from ..output import OutputError, write_atomic
-from ..packages import PackageError
-from .common import Exit, FileArgument, PackagePathOption, fail, split_inputs, stderr
-from .options import Option
+import typer
+
+from .. import api
+from ..diagnostics import Severity
+from ..report.console import Output, write
+from ..report.escape import escape
+from ..report.lines import diagnostic_lines
+from ..report.output import OutputError, write_atomic
+from .common import ColorOption, Exit, FileArgument, PackagePathOption, fail, session, split_inputs
 
 
 def expand(
     inputs: FileArgument,
-    output: Annotated[Path | None, Option("--output", "-o", metavar="PATH", help="Write to this file (atomically) instead of standard output.")] = None,
-    deps: Annotated[bool, Option("--deps", help="List the files the input includes, one per line, instead of expanding.")] = False,
+    output: Annotated[Path | None, typer.Option("--output", "-o", metavar="PATH", help="Write to this file (atomically) instead of standard output.")] = None,
+    deps: Annotated[bool, typer.Option("--deps", help="List the files the input includes, one per line, instead of expanding.")] = False,
     package_path: PackagePathOption = None,
+    color: ColorOption = "auto",
 ) -> None:
     """Expand a xacro file to URDF, exactly as the xacro tool does.
 
@@ -30,22 +32,17 @@ def expand(
     if len(paths) != 1:
         raise fail(f"expand takes one input file, got {len(paths)}")
     path = paths[0]
-    try:
-        document, diagnostics = load_document(path, LoadOptions(tuple(package_path or ()), mappings), force_xacro=True)
-    except InputError as error:
-        raise fail(str(error)) from None
-    except PackageError as error:
-        raise fail(str(error)) from None
-    errors = [d for d in diagnostics if d.severity.value == "error"]
-    for diagnostic in diagnostics:
-        print_diagnostic(stderr, diagnostic)
-    if errors:
+    console = Output.standard(color)
+    with session(package_path) as run:
+        text, includes, diagnostics = api.expand(path, mappings, run)
+    write(console.err, (line for d in diagnostics for line in diagnostic_lines(d, None)))
+    if text is None or any(d.severity is Severity.ERROR for d in diagnostics):
         raise SystemExit(Exit.PROBLEMS)
-    text = "".join(f"{escape(name)}\n" for name in document.includes) if deps else document.expanded_text
+    text = "".join(f"{escape(name)}\n" for name in includes) if deps else text
     if output is None:
-        sys.stdout.write(text)
+        console.out.file.write(text)
         return
     try:
-        write_atomic(output, text, [path, *document.includes])
+        write_atomic(output, text, [path, *includes])
     except OutputError as error:
         raise fail(str(error)) from None

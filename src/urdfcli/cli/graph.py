@@ -2,16 +2,17 @@
 
 from __future__ import annotations
 
-import sys
 from enum import Enum
 from pathlib import Path
 from typing import Annotated
 
-from ..escape import escape
-from ..drawing import RenderError, Style, compat_dot, render, styled_dot
-from ..output import OutputError, write_atomic
-from .common import ConfigOption, Exit, IsolatedOption, PackagePathOption, fail, split_inputs, stderr, stdout
-from .options import Argument, BadValue, Option
+import typer
+
+from ..report.console import Output
+from ..report.drawing import RenderError, Style, compat_dot, render, styled_dot
+from ..report.escape import escape
+from ..report.output import OutputError, write_atomic
+from .common import ColorOption, ConfigOption, Exit, IsolatedOption, PackagePathOption, fail, session, split_inputs
 from .tree import load_model, report_errors, start_link
 
 EXTENSIONS = {".pdf": "pdf", ".svg": "svg", ".png": "png", ".gv": "dot", ".dot": "dot"}
@@ -25,25 +26,26 @@ class RankDir(str, Enum):
 def graph(
     inputs: Annotated[
         list[str],
-        Argument(
+        typer.Argument(
             metavar="FILE [OUT] [NAME:=VALUE]...",
             help="URDF or xacro file ('-' reads standard input); OUT names the outputs OUT.gv and OUT.pdf "
             "(default: the robot's name); NAME:=VALUE sets a xacro argument.",
             show_default=False,
         ),
     ],
-    output: Annotated[Path | None, Option("--output", "-o", metavar="PATH", help="Write one file instead, its format chosen by the extension: .pdf .svg .png .gv .dot.")] = None,
-    output_format: Annotated[str | None, Option("--format", "-f", metavar="dot", help="'dot': print the DOT text on standard output, write no file.")] = None,
-    compat: Annotated[bool, Option("--compat", help="Exactly urdf_to_graphviz's DOT statements (for scripts that parse them).")] = False,
-    limits: Annotated[bool, Option("--limits", help="Add joint limits (range, effort, velocity).")] = False,
-    inertial: Annotated[bool, Option("--inertial", help="Add link masses.")] = False,
-    rankdir: Annotated[RankDir, Option("--rankdir", case_sensitive=False, metavar="TB|LR", help="Top to bottom, or left to right.")] = RankDir.TB,
-    collapse_fixed: Annotated[bool, Option("--collapse-fixed", help="Merge links joined by fixed joints into one box (for large robots).")] = False,
-    force: Annotated[bool, Option("--force", help="Draw even when the model has errors (they are still printed, and the exit code is still 1).")] = False,
-    timeout: Annotated[float, Option("--timeout", min=1, metavar="SECONDS", help="Give up rendering after this long.")] = 120,
+    output: Annotated[Path | None, typer.Option("--output", "-o", metavar="PATH", help="Write one file instead, its format chosen by the extension: .pdf .svg .png .gv .dot.")] = None,
+    output_format: Annotated[str | None, typer.Option("--format", "-f", metavar="dot", help="'dot': print the DOT text on standard output, write no file.")] = None,
+    compat: Annotated[bool, typer.Option("--compat", help="Exactly urdf_to_graphviz's DOT statements (for scripts that parse them).")] = False,
+    limits: Annotated[bool, typer.Option("--limits", help="Add joint limits (range, effort, velocity).")] = False,
+    inertial: Annotated[bool, typer.Option("--inertial", help="Add link masses.")] = False,
+    rankdir: Annotated[RankDir, typer.Option("--rankdir", case_sensitive=False, metavar="TB|LR", help="Top to bottom, or left to right.")] = RankDir.TB,
+    collapse_fixed: Annotated[bool, typer.Option("--collapse-fixed", help="Merge links joined by fixed joints into one box (for large robots).")] = False,
+    force: Annotated[bool, typer.Option("--force", help="Draw even when the model has errors (they are still printed, and the exit code is still 1).")] = False,
+    timeout: Annotated[float, typer.Option("--timeout", min=1, metavar="SECONDS", help="Give up rendering after this long.")] = 120,
     package_path: PackagePathOption = None,
     config: ConfigOption = None,
     isolated: IsolatedOption = False,
+    color: ColorOption = "auto",
 ) -> None:
     """Draw the link tree, like urdf_to_graphviz: writes OUT.gv and OUT.pdf.
 
@@ -62,35 +64,37 @@ def graph(
     if len(paths) > 2:
         raise fail(f"graph takes a file and an optional output name, got {len(paths)} paths")
     if output_format is not None and output_format.lower() != "dot":
-        raise BadValue(f"unknown format {output_format!r}; the only one is dot", "--format")
+        raise typer.BadParameter(f"unknown format {output_format!r}; the only one is dot", param_hint="--format")
     if sum(x is not None for x in (output, output_format, paths[1] if len(paths) == 2 else None)) > 1:
         raise fail("give only one of OUT, --output and --format")
     output_kind = EXTENSIONS.get(output.suffix.lower()) if output is not None else None
     if output is not None and output_kind is None:
         raise fail(f"{output}: unknown extension; use one of {' '.join(EXTENSIONS)}")
-    loaded = load_model(paths[0], mappings, package_path, config, isolated)
-    has_errors = report_errors(loaded)
-    start = start_link(loaded, None) if force or not has_errors else None
+    console = Output.standard(color)
+    with session(package_path, config=config, isolated=isolated) as run:
+        result = load_model(paths[0], mappings, run)
+        has_errors = report_errors(result, console, run)
+        start = start_link(result, None, console) if force or not has_errors else None
     if start is None:
         raise SystemExit(Exit.PROBLEMS)
-    robot = loaded.robot
+    robot = result.robot
     dot = compat_dot(robot, start) if compat else styled_dot(robot, start, Style(limits, inertial, rankdir.value, collapse_fixed))
-    inputs_read = [paths[0], *loaded.document.includes]
+    inputs_read = [paths[0], *result.includes]
     if output_format is not None:
-        sys.stdout.write(dot)
+        console.out.file.write(dot)
     elif output is not None and output_kind == "dot":
-        write(output, dot, inputs_read)
+        write(console, output, dot, inputs_read)
     elif output is not None:
-        make_picture(dot, output, output_kind, timeout, inputs_read, None)
+        make_picture(console, dot, output, output_kind, timeout, inputs_read, None)
     else:
         base = paths[1] if len(paths) == 2 else escape(robot.name or "robot").replace("/", "_")  # no control character in a file name
-        write(Path(f"{base}.gv"), dot, inputs_read)
-        make_picture(dot, Path(f"{base}.pdf"), "pdf", timeout, inputs_read, Path(f"{base}.gv"))
+        write(console, Path(f"{base}.gv"), dot, inputs_read)
+        make_picture(console, dot, Path(f"{base}.pdf"), "pdf", timeout, inputs_read, Path(f"{base}.gv"))
     if has_errors:  # drawn with --force
         raise SystemExit(Exit.PROBLEMS)
 
 
-def make_picture(dot: str, output: Path, kind: str, timeout: float, inputs: list[str], dot_file: Path | None) -> None:
+def make_picture(console: Output, dot: str, output: Path, kind: str, timeout: float, inputs: list[str], dot_file: Path | None) -> None:
     """Render and write ``output``; on failure, say so and exit 2, with the DOT
     kept in ``dot_file`` (written now, beside ``output``, when not given)."""
     try:
@@ -98,15 +102,15 @@ def make_picture(dot: str, output: Path, kind: str, timeout: float, inputs: list
     except RenderError as error:
         if dot_file is None:
             dot_file = output.with_suffix(".gv")
-            write(dot_file, dot, inputs)
-        stderr.print(f"urdfcli: cannot make {output}: {error}; the graph is in {dot_file}", markup=False)
+            write(console, dot_file, dot, inputs)
+        console.err.file.write(f"urdfcli: cannot make {escape(str(output))}: {escape(str(error))}; the graph is in {escape(str(dot_file))}\n")
         raise SystemExit(Exit.CANNOT_RUN) from None
-    write(output, picture, inputs)
+    write(console, output, picture, inputs)
 
 
-def write(path: Path, data: str | bytes, inputs: list[str]) -> None:
+def write(console: Output, path: Path, data: str | bytes, inputs: list[str]) -> None:
     try:
         write_atomic(path, data, inputs)
     except OutputError as error:
         raise fail(str(error)) from None
-    stdout.print(f"Created file {escape(str(path))}", markup=False, highlight=False)
+    console.out.file.write(f"Created file {escape(str(path))}\n")

@@ -2,30 +2,32 @@
 
 from __future__ import annotations
 
-import sys
-from pathlib import Path
 from typing import Annotated
 
-from ..diagnostics import Severity
-from ..formatters.text import plain, print_diagnostic
-from ..formatters.tree import cut, summarise, text_lines, tree_json, tree_rows
-from ..kinematics import roots
-from ..loaded import Loaded
-from ..suggestions import close_matches
-from .common import ConfigOption, Exit, FileArgument, IsolatedOption, PackagePathOption, configurations, fail, load_one, split_inputs, stderr, stdout
-from .options import BadValue, Option
+import typer
+
+from .. import api
+from ..model.kinematics import roots
+from ..report.console import Output, write
+from ..report.lines import diagnostic_lines
+from ..report.result import Result
+from ..report.tree import cut, summarise, text_lines, tree_json, tree_rows
+from ..rules.suggestions import close_matches
+from ..session import Session
+from .common import ColorOption, ConfigOption, Exit, FileArgument, IsolatedOption, PackagePathOption, choose, fail, format_option, session, split_inputs
 
 
 def tree(
     inputs: FileArgument,
-    max_depth: Annotated[int | None, Option("--max-depth", min=0, metavar="N", help="Show links down to depth N (the start link is depth 0).")] = None,
-    from_link: Annotated[str | None, Option("--from", metavar="LINK", help="Show the subtree below LINK instead of the whole tree.")] = None,
-    no_joints: Annotated[bool, Option("--no-joints", help="Show link names only.")] = False,
-    ascii_only: Annotated[bool, Option("--ascii", help="Plain ASCII characters (for logs).")] = False,
-    output_format: Annotated[str, Option("--format", "-f", metavar="FORMAT", help="text, or json (nested: each link with its children as {joint, link}).", case_sensitive=False)] = "text",
+    max_depth: Annotated[int | None, typer.Option("--max-depth", min=0, metavar="N", help="Show links down to depth N (the start link is depth 0).")] = None,
+    from_link: Annotated[str | None, typer.Option("--from", metavar="LINK", help="Show the subtree below LINK instead of the whole tree.")] = None,
+    no_joints: Annotated[bool, typer.Option("--no-joints", help="Show link names only.")] = False,
+    ascii_only: Annotated[bool, typer.Option("--ascii", help="Plain ASCII characters (for logs).")] = False,
+    output_format: format_option("text, or json (nested: each link with its children as {joint, link}).") = "text",
     package_path: PackagePathOption = None,
     config: ConfigOption = None,
     isolated: IsolatedOption = False,
+    color: ColorOption = "auto",
 ) -> None:
     """Print the kinematic tree, each joint's type, axis and limits, and a summary.
 
@@ -42,55 +44,56 @@ def tree(
     stderr; the tree is still shown when there is one); 2 when the input
     cannot be read.
     """
-    if output_format.lower() not in ("text", "json"):
-        raise BadValue(f"unknown format {output_format!r}; choose text or json", "--format")
+    output_format = choose(output_format, ("text", "json"))
     paths, mappings = split_inputs(inputs)
     if len(paths) != 1:
         raise fail(f"tree takes one input file, got {len(paths)}")
-    loaded = load_model(paths[0], mappings, package_path, config, isolated)
-    has_errors = report_errors(loaded)
-    start = start_link(loaded, from_link)
-    if start is None:
-        raise SystemExit(Exit.PROBLEMS)
-    robot = loaded.robot
-    rows = tree_rows(robot, start)
-    summary = summarise(robot, rows)
-    shown = cut(rows, max_depth)
-    if output_format.lower() == "json":
-        sys.stdout.write(tree_json(robot, shown, summary) + "\n")
-    else:
-        lines = text_lines(robot, shown, joints=not no_joints, ascii_only=ascii_only)
-        if plain(stdout):
-            stdout.file.writelines("".join(text for text, _ in line) + "\n" for line in lines)
+    output = Output.standard(color)
+    with session(package_path, config=config, isolated=isolated) as run:
+        result = load_model(paths[0], mappings, run)
+        has_errors = report_errors(result, output, run)
+        start = start_link(result, from_link, output)
+        if start is None:
+            raise SystemExit(Exit.PROBLEMS)
+        robot = result.robot
+        rows = tree_rows(robot, start)
+        summary = summarise(robot, rows)
+        shown = cut(rows, max_depth)
+        if output_format == "json":
+            output.out.file.write(tree_json(robot, shown, summary) + "\n")
         else:
-            from rich.text import Text  # only to style: plain output never imports rich
-
-            for line in lines:
-                stdout.print(Text.assemble(*line), soft_wrap=True, highlight=False)
-        stdout.print(summary.text(), style="bold", markup=False, highlight=False)
+            write(output.out, text_lines(robot, shown, joints=not no_joints, ascii_only=ascii_only))
+            write(output.out, [[(summary.text(), "bold")]])
     if has_errors:
         raise SystemExit(Exit.PROBLEMS)
 
 
-def load_model(path: str, mappings: dict[str, str], package_path: list[str] | None, config: Path | None = None, isolated: bool = False) -> Loaded:
-    """Load one input for drawing, with its configuration and the rules `check` runs:
-    its errors are the model's errors, the same as `check` reports."""
-    return load_one(path, mappings, package_path, "check", configurations(config, isolated))
+def load_model(path: str, mappings: dict[str, str], run: Session) -> Result:
+    """One input to draw, with its configuration and the rules `check` runs (its
+    errors are the model's errors, as `check` reports them): the first argument
+    set ``[tool.urdfcli] models`` lists for it."""
+    config = api.configured(run)(path)
+    first_set = (config.argument_sets(path) or [{}])[0]
+    found = api.check_target(api.Target(path), {**first_set, **mappings}, "check", run)
+    if isinstance(found, str):
+        raise fail(found)
+    return found
 
 
-def report_errors(loaded: Loaded) -> bool:
+def report_errors(result: Result, output: Output, run: Session) -> bool:
     """Print the model's errors on stderr as `check` prints them; whether there were any."""
-    errors = [d for d in loaded.diagnostics if d.severity is Severity.ERROR]
-    for diagnostic in errors:
-        print_diagnostic(stderr, diagnostic, excerpt=True)
-    return bool(errors) or loaded.robot is None or loaded.robot.at is None
+    errors = result.errors
+    write(output.err, (line for d in errors for line in diagnostic_lines(d, run.sources)))
+    loaded = result.loaded
+    return bool(errors) or loaded is None or not loaded.modelled
 
 
-def start_link(loaded: Loaded, from_link: str | None) -> str | None:
+def start_link(result: Result, from_link: str | None, output: Output) -> str | None:
     """The link to draw from: ``--from``, else the root. None (after saying
     why) when the model has no single root; an unknown ``--from`` exits 2."""
-    robot = loaded.robot
-    if robot is None or robot.at is None or not robot.links:
+    loaded = result.loaded
+    robot = result.robot
+    if loaded is None or not loaded.modelled or not robot.links:
         return None
     if from_link is not None:
         if from_link not in robot.links:
@@ -101,8 +104,8 @@ def start_link(loaded: Loaded, from_link: str | None) -> str | None:
     if loaded.root is None:
         found = roots(robot)
         if found:
-            stderr.print(f"urdfcli: {len(found)} links have no parent; choose one with --from LINK", markup=False)
+            output.err.file.write(f"urdfcli: {len(found)} links have no parent; choose one with --from LINK\n")
         else:
-            stderr.print("urdfcli: every link has a parent (a loop), so there is no root; choose one with --from LINK", markup=False)
+            output.err.file.write("urdfcli: every link has a parent (a loop), so there is no root; choose one with --from LINK\n")
         return None
     return loaded.root

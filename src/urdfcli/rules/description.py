@@ -4,9 +4,10 @@ from __future__ import annotations
 
 import re
 
-from ..markup import SCHEMA
-from ..suggestions import close_matches
-from . import INFO, WARNING, check
+from ..model.kinematics import bodies
+from ..model.vocabulary import SCHEMA
+from .base import INFO, WARNING, check
+from .suggestions import close_matches
 
 # Gazebo plugin parameters that name a joint or a link (ROS 1 and ROS 2 spellings).
 PLUGIN_JOINT_TAGS = {
@@ -244,8 +245,6 @@ def visual_without_collision(loaded):
     </joint>
     ```
     """
-    from ..kinematics import bodies
-
     links = loaded.robot.links
     bare = []  # (body, its first link with a visual) for each moving body without collision
     seen = set()

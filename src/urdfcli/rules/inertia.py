@@ -6,13 +6,21 @@ link's geometry implies comes from :mod:`urdfcli.inertia`.
 
 from __future__ import annotations
 
-import functools
+import math
 from collections import defaultdict
+from typing import TYPE_CHECKING, NamedTuple
 
-from .. import massprops
-from ..numbers import format_number
-from . import INFO, WARNING, Option, check
+from ..model import inertia as model
+from ..model import massprops
+from ..model.inertia import OVERREACH, assess, axes_apart, declared_body, reach
+from ..model.massprops import number, tensor_text
+from ..model.numbers import format_number
+from .base import INFO, WARNING, Option, check
 from .physics import absorbed, has_invalid_tensor
+
+if TYPE_CHECKING:
+    from ..model.load import Loaded
+    from ..model.robot import Link
 
 ROOT_MASS = 0.001  # kg: a lighter root is the usual answer to KDL's complaint
 SIZE_RATIO = 2.0  # links this many times apart in mass or size cannot share one honest tensor
@@ -24,14 +32,6 @@ TOLERANCE = Option(
     "0.1 lets values rounded to two digits pass.",
 )
 DENSITY = Option("density", 0.0, "kg/m³: when positive, masses come from the geometry's volume instead of the declared mass.")
-
-
-@functools.cache  # asked for thousands of times a run
-def _inertia():
-    """:mod:`urdfcli.inertia`, imported when one of these rules first runs (`check` runs none)."""
-    from .. import inertia
-
-    return inertia
 
 
 def _names(links) -> str:
@@ -52,14 +52,14 @@ def _declaring(loaded):
 
 
 def _assess(loaded, link, options):
-    return _inertia().assess(loaded, link, options.get("density") or None)
+    return model.assess(loaded, link, options.get("density") or None)
 
 
 def _implies(found) -> str | None:
-    return f"its {found.implied.source} implies {_inertia().tensor_text(found.expected)}" if found and found.expected else None
+    return f"its {found.implied.source} implies {tensor_text(found.expected)}" if found and found.expected else None
 
 
-@check("I007", "placeholder-identity", WARNING, "An inertia tensor that is the identity: a placeholder.", in_check=False, options=(TOLERANCE,))
+@check("I007", "placeholder-identity", WARNING, "An inertia tensor that is the identity: a placeholder.", in_check=False, options=(TOLERANCE,), inertial_fix=True)
 def placeholder_identity(loaded, options):
     """## What it does
     Flags ``ixx=iyy=izz=1`` without products of inertia, unless the link's geometry really
@@ -98,7 +98,8 @@ def placeholder_identity(loaded, options):
     links = identity_links(loaded, options)
     if len(links) == 1:
         yield loaded.diagnostic(
-            "I007", f"inertia of link '{links[0].name}' is the identity, a placeholder", links[0].inertial.inertia_at, _implies(_assess(loaded, links[0], options))
+            "I007", f"inertia of link '{links[0].name}' is the identity, a placeholder", links[0].inertial.inertia_at,
+            _implies(_assess(loaded, links[0], options)), subjects=(links[0].name,),
         )
     elif links:  # one cause: one diagnostic naming every link, at the first
         yield loaded.diagnostic(
@@ -106,6 +107,7 @@ def placeholder_identity(loaded, options):
             f"inertia of {len(links)} links is the identity, a placeholder: {_names(links)}",
             links[0].inertial.inertia_at,
             "`urdfcli inertia --suggest` prints the values each link's geometry implies",
+            subjects=tuple(link.name for link in links),
         )
 
 
@@ -113,7 +115,7 @@ def identity_links(loaded, options) -> list:
     """Links whose tensor is the identity, unless their geometry really implies it."""
     found = []
     for link in _declaring(loaded):
-        if massprops.is_identity(_inertia().declared_tensor(link)) and not absorbed(loaded, link):
+        if massprops.is_identity(model.declared_tensor(link)) and not absorbed(loaded, link):
             assessment = _assess(loaded, link, options)
             if assessment is not None and assessment.expected is not None and not assessment.off(options["tolerance"]):
                 continue
@@ -121,7 +123,7 @@ def identity_links(loaded, options) -> list:
     return found
 
 
-@check("I008", "placeholder-repeated", WARNING, "The same inertia tensor on links of very different sizes.", in_check=False, options=(TOLERANCE,))
+@check("I008", "placeholder-repeated", WARNING, "The same inertia tensor on links of very different sizes.", in_check=False, options=(TOLERANCE,), inertial_fix=True)
 def placeholder_repeated(loaded, options):
     """## What it does
     Flags a tensor repeated on links whose masses or geometries differ by more than a
@@ -166,14 +168,15 @@ def placeholder_repeated(loaded, options):
         else:
             differ = "though their geometries differ in size"
         if others:
-            said = f"{_naming(wrong)} {'has' if len(wrong) == 1 else 'have'} the inertia tensor ({_inertia().tensor_text(tensor)}) of {_names(others)}"
+            said = f"{_naming(wrong)} {'has' if len(wrong) == 1 else 'have'} the inertia tensor ({tensor_text(tensor)}) of {_names(others)}"
         else:
-            said = f"{_naming(wrong)} share one inertia tensor ({_inertia().tensor_text(tensor)})"
+            said = f"{_naming(wrong)} share one inertia tensor ({tensor_text(tensor)})"
         yield loaded.diagnostic(
             "I008",
             f"{said}, {differ}: a placeholder",
             wrong[0].inertial.inertia_at,
             "`urdfcli inertia --suggest` prints the values each link's geometry implies",
+            subjects=tuple(link.name for link in wrong + others),
         )
 
 
@@ -186,7 +189,7 @@ def placeholder_groups(loaded, options) -> list:
 def _placeholder_groups(loaded, options) -> list:
     groups = defaultdict(list)
     for link in _declaring(loaded):
-        tensor = _inertia().declared_tensor(link)
+        tensor = model.declared_tensor(link)
         # light frames and dummies draw nothing; the identity is I007's
         if (
             link.inertial.mass >= massprops.LIGHT and not massprops.is_negligible(tensor)
@@ -211,7 +214,7 @@ def _placeholder_groups(loaded, options) -> list:
     return found
 
 
-@check("I009", "inertia-geometry-mismatch", WARNING, "A declared inertia tensor that the link's geometry proves wrong.", in_check=False, options=(TOLERANCE, DENSITY))
+@check("I009", "inertia-geometry-mismatch", WARNING, "A declared inertia tensor that the link's geometry proves wrong.", in_check=False, options=(TOLERANCE, DENSITY), inertial_fix=True)
 def geometry_mismatch(loaded, options):
     """## What it does
     Flags a declared tensor only when the link's geometry proves it wrong, in one of three ways:
@@ -272,18 +275,18 @@ def geometry_mismatch(loaded, options):
     for link in _declaring(loaded):
         found = _verdict(loaded, link, options)
         if found is not None:
-            diagnostic = loaded.diagnostic("I009", f"inertia of link '{link.name}': {found.message}", link.inertial.inertia_at, found.hint)
-            yield diagnostic.with_severity(INFO) if link.inertial.mass < massprops.LIGHT else diagnostic
+            severity = INFO if link.inertial.mass < massprops.LIGHT else None  # a light link's turned axes: a note
+            yield loaded.diagnostic("I009", f"inertia of link '{link.name}': {found.message}", link.inertial.inertia_at, found.hint, subjects=(link.name,))._replace(severity=severity)
 
 
 def _verdict(loaded, link, options):
     """:func:`urdfcli.inertia.verdict`, unless another rule already reports the link's tensor."""
-    tensor = _inertia().declared_tensor(link)
+    tensor = model.declared_tensor(link)
     if massprops.is_identity(tensor) or has_invalid_tensor(loaded, link) or any(link in wrong for _, wrong, _ in placeholder_groups(loaded, options)):
         return None
     if _rotated_with_shapes(loaded, link, options) is not None:
         return None  # I010 explains it
-    return _inertia().verdict(loaded, link, options["tolerance"], options.get("density") or None)
+    return verdict(loaded, link, options["tolerance"], options.get("density") or None)
 
 
 def _rotated_with_shapes(loaded, link, options):
@@ -292,13 +295,13 @@ def _rotated_with_shapes(loaded, link, options):
     found = _assess(loaded, link, options)
     if found is None or not found.off(options["tolerance"]):
         return None
-    rotated = _inertia().rotated_fit(found)
+    rotated = model.rotated_fit(found)
     if rotated is None or (rotated[1] > options["tolerance"] and rotated[1] > found.difference / 2):
         return None
     return found, rotated
 
 
-@check("I010", "inertia-frame-rotated", WARNING, "An inertia tensor not rotated with the geometry it was computed for.", in_check=False, options=(TOLERANCE, DENSITY))
+@check("I010", "inertia-frame-rotated", WARNING, "An inertia tensor not rotated with the geometry it was computed for.", in_check=False, options=(TOLERANCE, DENSITY), inertial_fix=True)
 def frame_rotated(loaded, options):
     """## What it does
     Flags a tensor that is more than ``tolerance`` (0.1) off its geometry's, but fits
@@ -352,6 +355,7 @@ def frame_rotated(loaded, options):
             f"{found.difference:.0%} off as declared, {left:.0%} once rotated",
             link.inertial.inertia_at,
             f'give the <inertial> <origin rpy="{rpy}"/>, or use the rotated values `urdfcli inertia --suggest` prints',
+            subjects=(link.name,),
         )
 
 
@@ -393,4 +397,81 @@ def root_inertia(loaded):
             f"root link '{root}' has mass {format_number(link.inertial.mass)}, which KDL ignores",
             link.inertial.at,
             f"add a massless root link and a fixed joint from it to '{root}'",
+            subjects=(root,),
         )
+
+
+# -- what the geometry proves --------------------------------------------------------
+PLACEHOLDER_FACTOR = 100.0
+"""A tensor this many times below a uniform body of the same mass and geometry is a placeholder."""
+
+AXES = ("ixx", "iyy", "izz")
+TURNED = 30.0  # degrees between principal axes that say the axes are swapped or rotated
+
+
+class Verdict(NamedTuple):
+    """What the geometry proves wrong about a declared tensor: ``kind`` is ``impossible``,
+    ``rotated`` or ``placeholder``; ``factor`` says by how much."""
+
+    kind: str
+    factor: float
+    message: str
+    hint: str
+
+
+def verdict(loaded: Loaded, link: Link, tolerance: float = massprops.TOLERANCE, density: float | None = None) -> Verdict | None:
+    """The one thing the geometry proves wrong about the link's tensor, if any.
+
+    In order: a moment larger than any distribution of the mass in the geometry's bounding
+    box allows; principal moments that match the geometry's on axes that do not; with a
+    density, any difference beyond the tolerance from that uniform body; a tensor orders of
+    magnitude below a uniform body's. Anything else (a CAD tensor within a few times of the
+    uniform body's) is left alone."""
+    declared = declared_body(link)
+    if declared is None or massprops.is_negligible(declared.tensor):
+        return None
+    light = declared.mass < massprops.LIGHT  # only a rotation, which a formula got wrong, is worth saying
+    limits = reach(loaded, link) if not light else None
+    if limits is not None:
+        worst = max(range(3), key=lambda i: declared.tensor[i][i] / limits.bounds[i] if limits.bounds[i] > 0 else math.inf)
+        moment, most = declared.tensor[worst][worst], limits.bounds[worst]
+        if moment > OVERREACH * most:
+            factor = moment / most if most > 0 else math.inf
+            sides = " x ".join(f"{side:.3g}" for side in limits.sides)
+            times = f"{factor:.1f} times" if factor < math.inf else "infinitely more than"
+            return Verdict(
+                "impossible", factor,
+                f"{AXES[worst]}={moment:.3g} (link axes) is {times} the most {number(declared.mass)} kg can reach "
+                f"about the declared centre of mass inside the {sides} m box its shapes fill: {most:.3g}",
+                "the tensor, the centre of mass or the mass is wrong (units?); "
+                "`urdfcli inertia --suggest` prints a uniform body's values as a start",
+            )
+    found = assess(loaded, link, density)
+    if found is None or found.expected is None or massprops.is_zero(found.expected):
+        return None
+    source = found.implied.source
+    turned = axes_apart(found.declared, found.expected) if massprops.moments_difference(found.declared, found.expected) <= tolerance else 0.0
+    if found.difference > 2 * tolerance and turned > TURNED:
+        return Verdict(
+            "rotated", turned,
+            f"its principal moments match its {source}, but on axes {turned:.0f}° away: declared {tensor_text(found.declared, found.expected)}, "
+            f"the {source} gives {tensor_text(found.expected, found.declared)}",
+            "the axes are swapped or rotated: `urdfcli inertia --suggest` prints the tensor on the geometry's axes",
+        )
+    if density is not None and found.off(tolerance):  # the link is said to be that uniform material
+        return Verdict(
+            "density", found.difference,
+            f"it is {found.difference:.0%} off what its {source} implies at density {number(density)}: "
+            f"declared {tensor_text(found.declared, found.expected)}, expected {tensor_text(found.expected, found.declared)}",
+            "`urdfcli inertia --suggest --density ...` prints the uniform body's <inertial>",
+        )
+    largest, expected_largest = massprops.principal_moments(found.declared)[2], massprops.principal_moments(found.expected)[2]
+    if not light and largest * PLACEHOLDER_FACTOR < expected_largest:
+        factor = expected_largest / largest
+        return Verdict(
+            "placeholder", factor,
+            f"its largest moment {largest:.3g} is {factor:.0f} times below the {expected_largest:.3g} of a uniform body of "
+            f"{number(declared.mass)} kg filling its {source}: a placeholder",
+            "`urdfcli inertia --suggest` prints the uniform body's tensor, a better start than the placeholder",
+        )
+    return None

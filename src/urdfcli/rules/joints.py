@@ -4,9 +4,9 @@ from __future__ import annotations
 
 import math
 
-from ..numbers import format_number
-from . import ERROR, WARNING, check
-from ..model import MOVING_AXIS_TYPES
+from ..model.numbers import format_number
+from ..model.robot import MOVING_AXIS_TYPES
+from .base import ERROR, WARNING, check
 
 FULL_TURN = 2 * math.pi - 1e-3  # a range written as -3.1416..3.1416 is a full turn
 

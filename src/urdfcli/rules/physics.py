@@ -2,10 +2,10 @@
 
 from __future__ import annotations
 
-from .. import massprops
-from ..kinematics import bodies, body_mass, link_mass, subtree_masses
-from ..numbers import format_number
-from . import WARNING, check
+from ..model import massprops
+from ..model.kinematics import bodies, body_mass, link_mass, subtree_masses, walk
+from ..model.numbers import format_number
+from .base import WARNING, check
 
 
 def _inertials(loaded):
@@ -45,7 +45,7 @@ def moments_text(moments) -> str:
     return ", ".join("0" if abs(m) <= 1e-9 * largest else f"{m:.6g}" for m in moments)
 
 
-@check("I001", "negative-mass", WARNING, "A link with negative mass.")
+@check("I001", "negative-mass", WARNING, "A link with negative mass.", inertial_fix=True)
 def negative_mass(loaded):
     """## What it does
     Flags a link whose `<mass value>` is negative.
@@ -69,10 +69,10 @@ def negative_mass(loaded):
     """
     for link, inertial in _inertials(loaded):
         if inertial.mass < 0:
-            yield loaded.diagnostic("I001", f"link '{link.name}' has negative mass {format_number(inertial.mass)}", inertial.mass_at)
+            yield loaded.diagnostic("I001", f"link '{link.name}' has negative mass {format_number(inertial.mass)}", inertial.mass_at, subjects=(link.name,))
 
 
-@check("I002", "massless-moving-link", WARNING, "A joint that moves only massless links.")
+@check("I002", "massless-moving-link", WARNING, "A joint that moves only massless links.", inertial_fix=True)
 def massless_moving_link(loaded):
     """## What it does
     Flags a moving joint when nothing it moves has mass: the link it carries and every
@@ -135,17 +135,16 @@ def massless_moving_link(loaded):
             f"joint '{joint.name}' moves no mass: {what} {'has' if len(branch) == 1 else 'have'} none, so the mass matrix is singular",
             at if at is not None else link.at,
             hint="give the moving links their mass and inertia, or make the joint fixed",
+            subjects=(joint.child, joint.name),
         )
 
 
 def _branch(robot, top: str) -> list[str]:
     """The link and every link below it, depth first."""
-    from ..kinematics import walk
-
     return [link for _, _, link in walk(robot, top)]
 
 
-@check("I003", "massless-with-inertia", WARNING, "A link with zero mass but a non-zero inertia tensor.")
+@check("I003", "massless-with-inertia", WARNING, "A link with zero mass but a non-zero inertia tensor.", inertial_fix=True)
 def massless_with_inertia(loaded):
     """## What it does
     Flags a link with mass 0 and an inertia tensor that is not all zero. A massless
@@ -176,10 +175,10 @@ def massless_with_inertia(loaded):
             continue
         tensor = massprops.matrix(inertial.inertia)
         if not massprops.is_zero(tensor) and not (absorbed(loaded, link) and massprops.scale_of(tensor) <= LUMPED_TENSOR):
-            yield loaded.diagnostic("I003", f"link '{link.name}' has mass 0 but a non-zero inertia tensor", inertial.inertia_at)
+            yield loaded.diagnostic("I003", f"link '{link.name}' has mass 0 but a non-zero inertia tensor", inertial.inertia_at, subjects=(link.name,))
 
 
-@check("I004", "point-mass", WARNING, "A link with positive mass and an all-zero inertia tensor.")
+@check("I004", "point-mass", WARNING, "A link with positive mass and an all-zero inertia tensor.", inertial_fix=True)
 def point_mass(loaded):
     """## What it does
     Flags a link with positive mass and an all-zero inertia tensor. Elements below
@@ -213,10 +212,11 @@ def point_mass(loaded):
                 f"link '{link.name}' has mass {format_number(inertial.mass)} but {zero} inertia tensor: a point mass",
                 inertial.inertia_at,
                 "`urdfcli inertia --suggest` prints the tensor of a uniform body filling its geometry",
+                subjects=(link.name,),
             )
 
 
-@check("I005", "inertia-not-positive-semidefinite", WARNING, "An inertia tensor with a negative principal moment.")
+@check("I005", "inertia-not-positive-semidefinite", WARNING, "An inertia tensor with a negative principal moment.", inertial_fix=True)
 def not_positive_semidefinite(loaded):
     """## What it does
     Flags an inertia tensor with a negative principal moment (it is not positive
@@ -247,10 +247,11 @@ def not_positive_semidefinite(loaded):
             "I005",
             f"inertia of link '{link.name}' is not positive semi-definite (principal moments {moments_text(moments)})",
             link.inertial.inertia_at,
+            subjects=(link.name,),
         )
 
 
-@check("I006", "inertia-triangle-inequality", WARNING, "Principal moments that break the triangle inequality.")
+@check("I006", "inertia-triangle-inequality", WARNING, "Principal moments that break the triangle inequality.", inertial_fix=True)
 def triangle_inequality(loaded):
     """## What it does
     Flags a tensor whose principal moments break the triangle inequality
@@ -278,7 +279,7 @@ def triangle_inequality(loaded):
     """
     for link, moments in invalid_tensors(loaded)["I006"]:
         a, b, c = moments_text(moments).split(", ")
-        yield loaded.diagnostic("I006", f"inertia of link '{link.name}' breaks the triangle inequality: {a} + {b} < {c}", link.inertial.inertia_at)
+        yield loaded.diagnostic("I006", f"inertia of link '{link.name}' breaks the triangle inequality: {a} + {b} < {c}", link.inertial.inertia_at, subjects=(link.name,))
 
 
 def invalid_tensors(loaded) -> dict[str, list]:

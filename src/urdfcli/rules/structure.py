@@ -4,7 +4,10 @@ Everything check_urdf rejects is here (``urdfdom=True``), plus the defects
 that make a description unusable which check_urdf does not see.
 """
 
-from . import ERROR, WARNING, declare, explain
+from ..diagnostics import Severity
+from .base import declare, explain
+
+ERROR, WARNING = Severity.ERROR, Severity.WARNING
 
 U = dict(urdfdom=True)
 REJECTED = "check_urdf rejects the file, and so does every tool built on urdfdom (robot_state_publisher, RViz, MoveIt, Gazebo's URDF import)."
@@ -14,33 +17,33 @@ LIBRARY = (
 )
 
 # Input
-declare("X001", "xml-syntax-error", ERROR, "The file is not well-formed XML.", explain(
+X001 = declare("X001", "xml-syntax-error", ERROR, "The file is not well-formed XML.", explain(
     "Reports where the XML parser stopped: an unclosed tag, a stray `&`, a missing quote.",
     f"Nothing can read a file that is not XML. {REJECTED}",
     '<robot name="r">\n  <link name="base">\n</robot>',
     '<robot name="r">\n  <link name="base"/>\n</robot>'), **U)
-declare("X002", "xml-entity-declaration", ERROR, "The document declares XML entities, which urdfcli never expands.", explain(
+X002 = declare("X002", "xml-entity-declaration", ERROR, "The document declares XML entities, which urdfcli never expands.", explain(
     "Refuses a document whose DTD declares entities.",
     "Entities can read local files or expand to gigabytes (\"billion laughs\"); URDF never needs them. Use xacro properties instead.",
     '<!DOCTYPE robot [<!ENTITY base "base_link">]>\n<robot name="r">\n  <link name="&base;"/>\n</robot>',
     '<robot name="r">\n  <link name="base_link"/>\n</robot>'))
-declare("X003", "xacro-error", ERROR, "xacro could not expand the file.", explain(
+X003 = declare("X003", "xacro-error", ERROR, "xacro could not expand the file.", explain(
     "Reports a xacro expansion error (unknown macro, undefined property or argument, bad expression) at the element being expanded.",
     "Without an expansion there is no URDF: `xacro` fails the same way at launch time.",
     '<robot name="r" xmlns:xacro="http://www.ros.org/wiki/xacro">\n  <link name="${base_name}"/>\n</robot>',
     '<robot name="r" xmlns:xacro="http://www.ros.org/wiki/xacro">\n  <xacro:property name="base_name" value="base_link"/>\n  <link name="${base_name}"/>\n</robot>'))
-declare("X004", "package-not-found", ERROR, "A `$(find pkg)` names a package that cannot be found.", explain(
+X004 = declare("X004", "package-not-found", ERROR, "A `$(find pkg)` names a package that cannot be found.", explain(
     "Reports a `$(find NAME)` whose package is found neither through `-P/--package-path`, `ROS_PACKAGE_PATH`, `AMENT_PREFIX_PATH`, nor next to the input file.",
     "The include or file it builds cannot be read, so the expansion fails.",
     '<robot name="r" xmlns:xacro="http://www.ros.org/wiki/xacro">\n  <xacro:include filename="$(find no_such_package)/urdf/arm.xacro"/>\n  <link name="base_link"/>\n</robot>',
     '<robot name="r" xmlns:xacro="http://www.ros.org/wiki/xacro">\n  <xacro:include filename="$(find my_robot)/urdf/arm.xacro"/>\n  <link name="base_link"/>\n</robot>'))
-declare("X005", "xacro-warning", WARNING, "xacro warned while expanding the file.", explain(
+X005 = declare("X005", "xacro-warning", WARNING, "xacro warned while expanding the file.", explain(
     "Passes on a warning xacro printed while expanding (a redefined global symbol, ignored children of an include, unknown attributes).",
     "xacro expanded the file, but probably not as meant: a redefined `pi` changes every angle that uses it.",
     '<robot name="r" xmlns:xacro="http://www.ros.org/wiki/xacro">\n  <xacro:property name="pi" value="3"/>\n  <link name="base_link"/>\n</robot>',
     '<robot name="r" xmlns:xacro="http://www.ros.org/wiki/xacro">\n  <xacro:property name="half_turn" value="${pi}"/>\n  <link name="base_link"/>\n</robot>'))
 
-declare("X006", "library-unchecked", WARNING, "A xacro library that no model including it could check, for want of xacro arguments.", explain(
+X006 = declare("X006", "library-unchecked", WARNING, "A xacro library that no model including it could check, for want of xacro arguments.", explain(
     "Flags a xacro library (macros and properties only) given to urdfcli when no model of its repository that "
     "includes it could check it: each fails to expand for want of a xacro argument, or does not read the library "
     "with the arguments it is checked with (an include under `xacro:if`, such as a gripper included only with "
@@ -52,96 +55,96 @@ declare("X006", "library-unchecked", WARNING, "A xacro library that no model inc
     '# pyproject.toml\n[tool.urdfcli]\nmodels = { "urdf/robot.urdf.xacro" = [["name:=robot"]] }'))
 
 # Robot
-declare("R001", "robot-element-missing", ERROR, "The root element is not `<robot>`.", explain(
+R001 = declare("R001", "robot-element-missing", ERROR, "The root element is not `<robot>`.", explain(
     "Flags a document whose root element is not `<robot>`.",
     f"A URDF is a `<robot>`. {REJECTED}",
     '<model name="r">\n  <link name="base_link"/>\n</model>',
     '<robot name="r">\n  <link name="base_link"/>\n</robot>'), **U)
-declare("R002", "robot-name-missing", ERROR, "`<robot>` has no `name` attribute.", explain(
+R002 = declare("R002", "robot-name-missing", ERROR, "`<robot>` has no `name` attribute.", explain(
     "Flags a `<robot>` without `name`." + LIBRARY,
     f"The name identifies the model (and names the graph urdf_to_graphviz draws). {REJECTED}",
     '<robot>\n  <link name="base_link"/>\n</robot>',
     '<robot name="r">\n  <link name="base_link"/>\n</robot>'), **U)
-declare("R003", "robot-version-unsupported", ERROR, "`<robot version>` is not `1.0`.", explain(
+R003 = declare("R003", "robot-version-unsupported", ERROR, "`<robot version>` is not `1.0`.", explain(
     "Flags a `version` attribute other than `1.0`, or one that is not of the form `x.y`.",
     f"urdfdom only reads version 1.0. {REJECTED}",
     '<robot name="r" version="2.0">\n  <link name="base_link"/>\n</robot>',
     '<robot name="r" version="1.0">\n  <link name="base_link"/>\n</robot>'), **U)
-declare("R004", "robot-without-links", ERROR, "The robot has no `<link>`.", explain(
+R004 = declare("R004", "robot-without-links", ERROR, "The robot has no `<link>`.", explain(
     "Flags a robot that defines no link at all." + LIBRARY,
     f"A robot needs at least a root link. {REJECTED}",
     '<robot name="r">\n  <material name="grey"><color rgba="0.5 0.5 0.5 1"/></material>\n</robot>',
     '<robot name="r">\n  <link name="base_link"/>\n</robot>'), **U)
 
 # Names
-declare("N001", "link-name-missing", ERROR, "A `<link>` has no `name`.", explain(
+N001 = declare("N001", "link-name-missing", ERROR, "A `<link>` has no `name`.", explain(
     "Flags a `<link>` without `name`.",
     f"Joints refer to links by name. {REJECTED}",
     '<link/>', '<link name="base_link"/>'), **U)
-declare("N002", "joint-name-missing", ERROR, "A `<joint>` has no `name`.", explain(
+N002 = declare("N002", "joint-name-missing", ERROR, "A `<joint>` has no `name`.", explain(
     "Flags a `<joint>` without `name`.",
     f"Controllers, transmissions and joint states refer to joints by name. {REJECTED}",
     '<link name="a"/>\n<link name="b"/>\n<joint type="fixed">\n  <parent link="a"/>\n  <child link="b"/>\n</joint>',
     '<link name="a"/>\n<link name="b"/>\n<joint name="a_to_b" type="fixed">\n  <parent link="a"/>\n  <child link="b"/>\n</joint>'), **U)
-declare("N003", "material-name-missing", ERROR, "A `<material>` has no `name`.", explain(
+N003 = declare("N003", "material-name-missing", ERROR, "A `<material>` has no `name`.", explain(
     "Flags a `<material>`, top-level or inside a visual, without `name`.",
     f"Materials are shared by name. {REJECTED}",
     '<material>\n  <color rgba="1 0 0 1"/>\n</material>\n<link name="base_link"/>',
     '<material name="red">\n  <color rgba="1 0 0 1"/>\n</material>\n<link name="base_link"/>'), **U)
-declare("N004", "duplicate-link", ERROR, "Two links have the same name.", explain(
+N004 = declare("N004", "duplicate-link", ERROR, "Two links have the same name.", explain(
     "Flags a link whose name an earlier link already has.",
     f"Names identify links; which of the two a joint means is undefined. {REJECTED}",
     '<link name="base_link"/>\n<link name="base_link"/>',
     '<link name="base_link"/>\n<link name="base_footprint"/>\n<joint name="footprint_joint" type="fixed">\n  <parent link="base_footprint"/>\n  <child link="base_link"/>\n</joint>'), **U)
-declare("N005", "duplicate-joint", ERROR, "Two joints have the same name.", explain(
+N005 = declare("N005", "duplicate-joint", ERROR, "Two joints have the same name.", explain(
     "Flags a joint whose name an earlier joint already has.",
     f"Joint states, controllers and transmissions refer to joints by name. {REJECTED}",
     '<link name="a"/>\n<link name="b"/>\n<link name="c"/>\n<joint name="j" type="fixed"><parent link="a"/><child link="b"/></joint>\n<joint name="j" type="fixed"><parent link="a"/><child link="c"/></joint>',
     '<link name="a"/>\n<link name="b"/>\n<link name="c"/>\n<joint name="a_to_b" type="fixed"><parent link="a"/><child link="b"/></joint>\n<joint name="a_to_c" type="fixed"><parent link="a"/><child link="c"/></joint>'), **U)
-declare("N006", "duplicate-material", ERROR, "Two top-level materials have the same name.", explain(
+N006 = declare("N006", "duplicate-material", ERROR, "Two top-level materials have the same name.", explain(
     "Flags a top-level `<material>` whose name an earlier top-level material already has.",
     f"Visuals refer to materials by name. {REJECTED}",
     '<material name="grey"><color rgba="0.5 0.5 0.5 1"/></material>\n<material name="grey"><color rgba="0.6 0.6 0.6 1"/></material>\n<link name="base_link"/>',
     '<material name="grey"><color rgba="0.5 0.5 0.5 1"/></material>\n<material name="light_grey"><color rgba="0.6 0.6 0.6 1"/></material>\n<link name="base_link"/>'), **U)
 
 # Values
-declare("V001", "number-malformed", ERROR, "A number that urdfdom cannot read.", explain(
+V001 = declare("V001", "number-malformed", ERROR, "A number that urdfdom cannot read.", explain(
     "Flags a numeric attribute that is not a number as urdfdom reads numbers (a unit, a comma as decimal point, an unexpanded `${...}`).",
     f"{REJECTED}",
     '<link name="base_link">\n  <inertial><mass value="2kg"/><inertia ixx="1" ixy="0" ixz="0" iyy="1" iyz="0" izz="1"/></inertial>\n</link>',
     '<link name="base_link">\n  <inertial><mass value="2"/><inertia ixx="1" ixy="0" ixz="0" iyy="1" iyz="0" izz="1"/></inertial>\n</link>'), **U)
-declare("V002", "number-not-finite", ERROR, "A number that is NaN, infinite or overflows.", explain(
+V002 = declare("V002", "number-not-finite", ERROR, "A number that is NaN, infinite or overflows.", explain(
     "Flags `nan`, `inf` and numbers too large for a double.",
     "Kinematics and dynamics solvers propagate NaN and infinity into every pose and torque they compute.",
     '<link name="base_link">\n  <inertial><mass value="nan"/><inertia ixx="1" ixy="0" ixz="0" iyy="1" iyz="0" izz="1"/></inertial>\n</link>',
     '<link name="base_link">\n  <inertial><mass value="1"/><inertia ixx="1" ixy="0" ixz="0" iyy="1" iyz="0" izz="1"/></inertial>\n</link>'), **U)
-declare("V003", "vector-length", ERROR, "A vector (`xyz`, `rpy`, `size`, `scale`) without three components.", explain(
+V003 = declare("V003", "vector-length", ERROR, "A vector (`xyz`, `rpy`, `size`, `scale`) without three components.", explain(
     "Flags an `xyz`, `rpy`, box `size` or mesh `scale` that does not have exactly three space-separated numbers.",
     f"{REJECTED}",
     '<link name="base_link">\n  <visual><geometry><box size="1 1"/></geometry></visual>\n</link>',
     '<link name="base_link">\n  <visual><geometry><box size="1 1 0.5"/></geometry></visual>\n</link>'), **U)
-declare("V004", "attribute-missing", ERROR, "A required attribute is missing.", explain(
+V004 = declare("V004", "attribute-missing", ERROR, "A required attribute is missing.", explain(
     "Flags a required attribute that is absent: a sphere's `radius`, a mesh's `filename`, a limit's `effort` or `velocity`, an inertia component.",
     f"{REJECTED}",
     '<link name="base_link">\n  <visual><geometry><sphere/></geometry></visual>\n</link>',
     '<link name="base_link">\n  <visual><geometry><sphere radius="0.1"/></geometry></visual>\n</link>'), **U)
-declare("V005", "element-missing", ERROR, "A required child element is missing.", explain(
+V005 = declare("V005", "element-missing", ERROR, "A required child element is missing.", explain(
     "Flags a required child element that is absent: `<geometry>` in a visual or collision, `<mass>` or `<inertia>` in an inertial.",
     f"{REJECTED}",
     '<link name="base_link">\n  <visual><origin xyz="0 0 0"/></visual>\n</link>',
     '<link name="base_link">\n  <visual><origin xyz="0 0 0"/><geometry><box size="1 1 1"/></geometry></visual>\n</link>'), **U)
-declare("V006", "dimension-negative", ERROR, "A box size, radius or length that is negative.", explain(
+V006 = declare("V006", "dimension-negative", ERROR, "A box size, radius or length that is negative.", explain(
     "Flags a box size component, sphere or cylinder radius, or cylinder length below zero. A zero one is V008.",
     "A negative size describes no shape: urdfdom accepts it, but collision checkers and physics engines reject it or "
     "compute a negative volume. It is an error because no reading of it is right.",
     '<link name="base_link">\n  <collision><geometry><cylinder radius="-0.1" length="0.2"/></geometry></collision>\n</link>',
     '<link name="base_link">\n  <collision><geometry><cylinder radius="0.1" length="0.2"/></geometry></collision>\n</link>'))
-declare("V007", "rgba-out-of-range", ERROR, "An rgba component outside [0, 1].", explain(
+V007 = declare("V007", "rgba-out-of-range", ERROR, "An rgba component outside [0, 1].", explain(
     "Flags an rgba component below 0 or above 1 (often a 0-255 colour).",
     f"Colours are fractions. {REJECTED}",
     '<material name="orange"><color rgba="255 128 0 255"/></material>\n<link name="base_link"/>',
     '<material name="orange"><color rgba="1 0.5 0 1"/></material>\n<link name="base_link"/>'), **U)
-declare("V008", "dimension-zero", WARNING, "A box size, radius or length that is zero.", explain(
+V008 = declare("V008", "dimension-zero", WARNING, "A box size, radius or length that is zero.", explain(
     "Flags a box size component, sphere or cylinder radius, or cylinder length that is exactly zero "
     "(often a placeholder shape). A negative one is V006.",
     "A shape without volume loads in urdfdom, ROS and MoveIt, so it is a warning, not an error; but physics "
@@ -150,32 +153,32 @@ declare("V008", "dimension-zero", WARNING, "A box size, radius or length that is
     '<link name="base_link">\n  <collision><geometry><box size="0.1 0.1 0.1"/></geometry></collision>\n</link>'))
 
 # Geometry and materials
-declare("G001", "geometry-empty", ERROR, "`<geometry>` holds no shape.", explain(
+G001 = declare("G001", "geometry-empty", ERROR, "`<geometry>` holds no shape.", explain(
     "Flags a `<geometry>` with no shape element in it.",
     f"{REJECTED}",
     '<link name="base_link">\n  <visual><geometry/></visual>\n</link>',
     '<link name="base_link">\n  <visual><geometry><box size="1 1 1"/></geometry></visual>\n</link>'), **U)
-declare("G002", "geometry-unknown-shape", ERROR, "`<geometry>` holds an unknown shape.", explain(
+G002 = declare("G002", "geometry-unknown-shape", ERROR, "`<geometry>` holds an unknown shape.", explain(
     "Flags a shape other than `box`, `cylinder`, `sphere` and `mesh` (`capsule` is not URDF).",
     f"{REJECTED}",
     '<link name="base_link">\n  <visual><geometry><cube size="1 1 1"/></geometry></visual>\n</link>',
     '<link name="base_link">\n  <visual><geometry><box size="1 1 1"/></geometry></visual>\n</link>'), **U)
-declare("G003", "geometry-multiple-shapes", WARNING, "`<geometry>` holds more than one shape; only the first is used.", explain(
+G003 = declare("G003", "geometry-multiple-shapes", WARNING, "`<geometry>` holds more than one shape; only the first is used.", explain(
     "Flags a `<geometry>` with more than one shape.",
     "urdfdom reads only the first shape and drops the others without a word.",
     '<link name="base_link">\n  <visual><geometry><box size="1 1 1"/><sphere radius="0.5"/></geometry></visual>\n</link>',
     '<link name="base_link">\n  <visual><geometry><box size="1 1 1"/></geometry></visual>\n  <visual><geometry><sphere radius="0.5"/></geometry></visual>\n</link>'))
-declare("M001", "material-without-color", ERROR, "A top-level material with neither colour nor texture.", explain(
+M001 = declare("M001", "material-without-color", ERROR, "A top-level material with neither colour nor texture.", explain(
     "Flags a top-level `<material>` without `<color rgba>` or `<texture filename>`.",
     f"A material that defines nothing is a mistake, often `rgb=` written for `rgba=`. {REJECTED}",
     '<material name="grey"/>\n<link name="base_link"/>',
     '<material name="grey"><color rgba="0.5 0.5 0.5 1"/></material>\n<link name="base_link"/>'), **U)
-declare("M002", "material-undefined", WARNING, "A visual names a material defined nowhere.", explain(
+M002 = declare("M002", "material-undefined", WARNING, "A visual names a material defined nowhere.", explain(
     "Flags a visual's `<material name>` without colour or texture whose name no top-level material defines. A material with an empty name is left alone: urdfdom never looks it up.",
     "check_urdf only warns, and RViz draws the visual in a default colour.",
     '<link name="base_link">\n  <visual><geometry><box size="1 1 1"/></geometry><material name="grey"/></visual>\n</link>',
     '<material name="grey"><color rgba="0.5 0.5 0.5 1"/></material>\n<link name="base_link">\n  <visual><geometry><box size="1 1 1"/></geometry><material name="grey"/></visual>\n</link>'))
-declare("M003", "material-redefined", WARNING, "One material name is given different colours.", explain(
+M003 = declare("M003", "material-redefined", WARNING, "One material name is given different colours.", explain(
     "Flags a material name given a colour different from the one it was given before (often in two xacro files). "
     "Components within a tenth of each other are the same colour (`0.752941176470588` and `0.75294`, "
     "an alpha of 0.9 and 1): a difference no viewer shows is left alone; "
@@ -183,7 +186,7 @@ declare("M003", "material-redefined", WARNING, "One material name is given diffe
     "Consumers keep one colour per name: which one wins depends on the order the files were included.",
     '<link name="camera">\n  <visual><geometry><box size="1 1 1"/></geometry><material name="black"><color rgba="0 0 0 0.8"/></material></visual>\n</link>\n<link name="laser">\n  <visual><geometry><box size="1 1 1"/></geometry><material name="black"><color rgba="0 0 0 0.5"/></material></visual>\n</link>',
     '<link name="camera">\n  <visual><geometry><box size="1 1 1"/></geometry><material name="black"><color rgba="0 0 0 0.8"/></material></visual>\n</link>\n<link name="laser">\n  <visual><geometry><box size="1 1 1"/></geometry><material name="translucent_black"><color rgba="0 0 0 0.5"/></material></visual>\n</link>'))
-declare("M004", "rgba-length", WARNING, "An rgba value without exactly four components.", explain(
+M004 = declare("M004", "rgba-length", WARNING, "An rgba value without exactly four components.", explain(
     "Flags an `rgba` that does not have four numbers (red, green, blue, alpha).",
     "urdfdom reads what is there; a missing alpha leaves the colour transparent or undefined.",
     '<material name="red"><color rgba="1 0 0"/></material>\n<link name="base_link"/>',
@@ -191,55 +194,28 @@ declare("M004", "rgba-length", WARNING, "An rgba value without exactly four comp
 
 # Joints
 _LINKS = '<link name="base_link"/>\n<link name="arm_link"/>\n'
-declare("J001", "joint-type-missing", ERROR, "A `<joint>` has no `type`.", explain(
+J001 = declare("J001", "joint-type-missing", ERROR, "A `<joint>` has no `type`.", explain(
     "Flags a `<joint>` without `type`.",
     f"Without a type nothing knows how the child moves. {REJECTED}",
     _LINKS + '<joint name="arm_joint">\n  <parent link="base_link"/>\n  <child link="arm_link"/>\n</joint>',
     _LINKS + '<joint name="arm_joint" type="fixed">\n  <parent link="base_link"/>\n  <child link="arm_link"/>\n</joint>'), **U)
-declare("J002", "joint-type-unknown", ERROR, "A joint type other than the six URDF types.", explain(
+J002 = declare("J002", "joint-type-unknown", ERROR, "A joint type other than the six URDF types.", explain(
     "Flags a joint type other than fixed, revolute, continuous, prismatic, floating and planar.",
     f"{REJECTED}",
     _LINKS + '<joint name="arm_joint" type="hinge">\n  <parent link="base_link"/>\n  <child link="arm_link"/>\n  <limit lower="0" upper="1" effort="10" velocity="1"/>\n</joint>',
     _LINKS + '<joint name="arm_joint" type="revolute">\n  <parent link="base_link"/>\n  <child link="arm_link"/>\n  <limit lower="0" upper="1" effort="10" velocity="1"/>\n</joint>'), **U)
-declare("J003", "joint-limit-missing", ERROR, "A revolute or prismatic joint without `<limit>`.", explain(
+J003 = declare("J003", "joint-limit-missing", ERROR, "A revolute or prismatic joint without `<limit>`.", explain(
     "Flags a revolute or prismatic joint without `<limit>`.",
     f"Their range, effort and velocity are required. {REJECTED}",
     _LINKS + '<joint name="arm_joint" type="revolute">\n  <parent link="base_link"/>\n  <child link="arm_link"/>\n</joint>',
     _LINKS + '<joint name="arm_joint" type="revolute">\n  <parent link="base_link"/>\n  <child link="arm_link"/>\n  <limit lower="-1.57" upper="1.57" effort="10" velocity="1"/>\n</joint>'), **U)
-declare("J004", "joint-link-unspecified", ERROR, "A joint without `<parent link>` or `<child link>`.", explain(
+J004 = declare("J004", "joint-link-unspecified", ERROR, "A joint without `<parent link>` or `<child link>`.", explain(
     "Flags a joint that lacks `<parent link>` or `<child link>` (or gives an empty name).",
     f"A joint connects two links. {REJECTED}",
     _LINKS + '<joint name="arm_joint" type="fixed">\n  <parent link="base_link"/>\n</joint>',
     _LINKS + '<joint name="arm_joint" type="fixed">\n  <parent link="base_link"/>\n  <child link="arm_link"/>\n</joint>'), **U)
-declare("J005", "joint-link-not-found", ERROR, "A joint names a parent or child link that does not exist.", explain(
-    "Flags a joint whose parent or child link is not defined.",
-    f"The tree cannot be built. {REJECTED}",
-    _LINKS + '<joint name="arm_joint" type="fixed">\n  <parent link="base"/>\n  <child link="arm_link"/>\n</joint>',
-    _LINKS + '<joint name="arm_joint" type="fixed">\n  <parent link="base_link"/>\n  <child link="arm_link"/>\n</joint>'), **U)
-declare("J006", "joint-dynamics-empty", ERROR, "`<dynamics>` with neither damping nor friction.", explain(
+J006 = declare("J006", "joint-dynamics-empty", ERROR, "`<dynamics>` with neither damping nor friction.", explain(
     "Flags a `<dynamics>` that sets neither `damping` nor `friction`.",
     f"{REJECTED}",
     _LINKS + '<joint name="arm_joint" type="continuous">\n  <parent link="base_link"/>\n  <child link="arm_link"/>\n  <dynamics/>\n</joint>',
     _LINKS + '<joint name="arm_joint" type="continuous">\n  <parent link="base_link"/>\n  <child link="arm_link"/>\n  <dynamics damping="0.1"/>\n</joint>'), **U)
-
-# Tree
-declare("T001", "multiple-roots", ERROR, "More than one link has no parent.", explain(
-    "Flags a model whose links do not form one tree: more than one link is the child of no joint.",
-    f"A URDF has exactly one root link (check_urdf: \"Two root links found\"). {REJECTED}",
-    '<link name="base_link"/>\n<link name="sensor_link"/>',
-    '<link name="base_link"/>\n<link name="sensor_link"/>\n<joint name="sensor_joint" type="fixed">\n  <parent link="base_link"/>\n  <child link="sensor_link"/>\n</joint>'), **U)
-declare("T002", "no-root", ERROR, "Every link has a parent: there is no root.", explain(
-    "Flags a model in which every link is the child of some joint, so no link is the root.",
-    f"The joints form a loop through every link. {REJECTED}",
-    '<link name="a"/>\n<link name="b"/>\n<joint name="a_to_b" type="fixed"><parent link="a"/><child link="b"/></joint>\n<joint name="b_to_a" type="fixed"><parent link="b"/><child link="a"/></joint>',
-    '<link name="a"/>\n<link name="b"/>\n<joint name="a_to_b" type="fixed"><parent link="a"/><child link="b"/></joint>'), **U)
-declare("T003", "multiple-parents", ERROR, "A link is the child of more than one joint.", explain(
-    "Flags a link that is the child of two or more joints.",
-    "URDF describes trees: check_urdf accepts it and prints the link twice, but robot_state_publisher and KDL keep only one parent and the other joint does nothing.",
-    '<link name="a"/>\n<link name="b"/>\n<link name="c"/>\n<joint name="a_to_c" type="fixed"><parent link="a"/><child link="c"/></joint>\n<joint name="b_to_c" type="fixed"><parent link="b"/><child link="c"/></joint>\n<joint name="a_to_b" type="fixed"><parent link="a"/><child link="b"/></joint>',
-    '<link name="a"/>\n<link name="b"/>\n<link name="c"/>\n<joint name="a_to_c" type="fixed"><parent link="a"/><child link="c"/></joint>\n<joint name="a_to_b" type="fixed"><parent link="a"/><child link="b"/></joint>'))
-declare("T004", "kinematic-loop", ERROR, "The joints form a loop.", explain(
-    "Flags joints that form a closed loop anywhere in the model, even below a proper root.",
-    "check_urdf never finishes on a loop below a root (it prints forever); solvers recurse without end.",
-    '<link name="base_link"/>\n<link name="a"/>\n<link name="b"/>\n<joint name="base_to_a" type="fixed"><parent link="base_link"/><child link="a"/></joint>\n<joint name="a_to_b" type="fixed"><parent link="a"/><child link="b"/></joint>\n<joint name="b_to_a" type="fixed"><parent link="b"/><child link="a"/></joint>',
-    '<link name="base_link"/>\n<link name="a"/>\n<link name="b"/>\n<joint name="base_to_a" type="fixed"><parent link="base_link"/><child link="a"/></joint>\n<joint name="a_to_b" type="fixed"><parent link="a"/><child link="b"/></joint>'))

@@ -5,7 +5,7 @@ from __future__ import annotations
 import re
 from fnmatch import fnmatchcase
 
-from . import WARNING, Option, check
+from .base import WARNING, Option, check
 
 SNAKE_CASE = re.compile(r"[a-z][a-z0-9]*(_[a-z0-9]+)*")
 FRAME_EXEMPTIONS = ["base_footprint", "world", "*_frame", "*_optical_frame"]

@@ -1,13 +1,16 @@
 """Rules about suppression comments themselves (reported by ``urdfcli lint``)."""
 
-from . import INFO, WARNING, declare, explain
+from ..diagnostics import Severity
+from .base import declare, explain
 
-declare("U001", "unused-suppression", INFO, "A `urdfcli: noqa` comment that silences nothing.", explain(
+INFO, WARNING = Severity.INFO, Severity.WARNING
+
+U001 = declare("U001", "unused-suppression", INFO, "A `urdfcli: noqa` comment that silences nothing.", explain(
     "Reports a code, prefix or rule name in a `<!-- urdfcli: noqa: CODE -->` or `noqa-file` comment when it silenced no diagnostic, and a bare `noqa` that silenced nothing on its element.",
     "A stale suppression hides the next real problem of that kind on that element, and misleads readers about what is wrong there.",
     '<!-- urdfcli: noqa: D002 -->\n<link name="base_link"/>',
     '<link name="base_link"/>'), in_check=False)
-declare("U002", "suppression-code-unknown", WARNING, "A `urdfcli: noqa` comment names no rule.", explain(
+U002 = declare("U002", "suppression-code-unknown", WARNING, "A `urdfcli: noqa` comment names no rule.", explain(
     "Reports a word in a suppression comment that is neither a rule's code, nor a prefix of codes, nor a rule's name.",
     "The comment silences nothing; the problem it was meant for is still reported, or the code is a typo.",
     '<!-- urdfcli: noqa: D02 -->\n<link name="base_link">\n  <visual><geometry><box size="1 1 1"/></geometry><metrial/></visual>\n</link>',

@@ -1,0 +1,294 @@
+"""urdfcli as a library: check and lint models from Python, as the command line does.
+
+::
+
+    import urdfcli
+
+    result = urdfcli.check("urdf/robot.urdf.xacro", "ur_type:=ur5e")
+    assert not result.errors, result.report()
+    results = urdfcli.lint(["urdf/a.urdf", "urdf/b.urdf.xacro"])
+
+Nothing here prints or exits. A problem with the input itself (a missing file,
+a ``-P`` that is no folder, a broken configuration) raises :class:`UsageError`;
+every problem in a model is a diagnostic of its result.
+"""
+
+from __future__ import annotations
+
+import os
+from collections.abc import Callable, Iterable
+from pathlib import Path
+from typing import NamedTuple
+
+from .diagnostics import Diagnostic
+from .model import massprops
+from .model.load import Loaded, load
+from .project import linter
+from .project.config import Config, ConfigError
+from .project.workspace import Target, assemble, model_targets, plan, unchecked_library
+from .read.document import STDIN, InputError, read_document
+from .read.packages import SKIP_DIRS, PackageError
+from .report import inertia
+from .report.result import Result
+from .rules import REGISTRY
+from .session import Session
+
+MODEL_SUFFIXES = (".urdf", ".urdf.xacro")
+
+
+class UsageError(Exception):
+    """urdfcli cannot run as asked: an unreadable input, a bad package path or configuration."""
+
+
+class Run(NamedTuple):
+    """The results of one run, in the order the inputs were given, and the one-line
+    reason for each input that could not be read."""
+
+    results: list[Result]
+    unreadable: list[str]
+
+
+Progress = Callable[[int, int], None]  # (done, total)
+
+
+def check(path: str | os.PathLike, *arguments: str, session: Session | None = None, **settings) -> Result:
+    """Check one model (or xacro library) as ``urdfcli check`` does: every error, and
+    the warnings of check's rules. ``arguments`` are xacro arguments ``NAME:=VALUE``;
+    ``settings`` are those of :class:`Session` (``package_paths``, ``config``...)
+    when no session is given."""
+    return _single(run_api([os.fspath(path)], arguments, "check", session, settings))
+
+
+def lint(paths: Iterable[str | os.PathLike], *arguments: str, session: Session | None = None, **settings) -> list[Result]:
+    """Lint files and folders as ``urdfcli lint`` does: one result per model found
+    (a model listed in ``[tool.urdfcli] models`` once per argument set)."""
+    if isinstance(paths, (str, os.PathLike)):
+        paths = [paths]
+    return run_api(find_models([os.fspath(p) for p in paths]), arguments, "all", session, settings).results
+
+
+def run_api(paths: list[str], arguments: Iterable[str], checks: str, session: Session | None, settings: dict) -> Run:
+    mappings = xacro_arguments(arguments)
+    own = session is None
+    try:
+        session = session or Session(**settings)
+    except PackageError as error:
+        raise UsageError(str(error)) from None
+    try:
+        found = run(paths, mappings, checks, session)
+    finally:
+        if own:
+            session.close()
+    if found.unreadable:
+        raise UsageError("; ".join(found.unreadable))
+    return found
+
+
+def _single(found: Run) -> Result:
+    if len(found.results) != 1:  # a model listed with several argument sets
+        raise UsageError(f"{len(found.results)} results: use urdfcli.lint for a model checked with several argument sets")
+    return found.results[0]
+
+
+def xacro_arguments(arguments: Iterable[str]) -> dict[str, str]:
+    """``NAME:=VALUE`` texts as a mapping; raises UsageError for anything else."""
+    mappings = {}
+    for argument in arguments:
+        name, separator, value = argument.partition(":=")
+        if not separator or not name:
+            raise UsageError(f"bad xacro argument {argument!r}: expected NAME:=VALUE")
+        mappings[name] = value
+    return mappings
+
+
+def find_models(paths: list[str]) -> list[str]:
+    """Files as given; folders searched (sorted) for *.urdf and *.urdf.xacro. Raises
+    UsageError for a folder with none."""
+    files: list[str] = []
+    for path in paths:
+        folder = Path(path)
+        if path != STDIN and folder.is_dir():
+            found = models_in(folder)
+            if not found:
+                raise UsageError(f"{path}: no *.urdf or *.urdf.xacro file in this folder")
+            files.extend(str(f) for f in found)
+        else:
+            files.append(path)
+    return files
+
+
+def models_in(folder: Path) -> list[Path]:
+    """Robot models below a folder, skipping hidden and build folders. Plain *.xacro
+    files are macro libraries: they are checked through the models that include them."""
+    found = []
+    stack = [folder]
+    while stack:
+        current = stack.pop()
+        try:
+            entries = sorted(current.iterdir())
+        except OSError:
+            continue
+        for entry in entries:
+            if entry.is_dir():
+                if not entry.name.startswith(".") and entry.name not in SKIP_DIRS:
+                    stack.append(entry)
+            elif entry.name.endswith(MODEL_SUFFIXES):
+                found.append(entry)
+    return sorted(found)
+
+
+def run(
+    paths: list[str],
+    mappings: dict[str, str],
+    checks: str,
+    session: Session,
+    libraries: bool = True,
+    jobs: int = 1,
+    progress: Progress | None = None,
+) -> Run:
+    """Check each input with the rules ``checks`` names (see :data:`linter.CHECKS`).
+
+    With ``libraries``, a xacro library is checked through the models that include
+    it (see :mod:`urdfcli.project.workspace`); a model listed in ``[tool.urdfcli]
+    models`` is checked once per argument set. ``jobs`` other than 1 checks models
+    in that many processes (0: one per CPU). Raises UsageError for a bad
+    configuration or package path."""
+    config_for = configured(session)
+    try:
+        if libraries:
+            entries = plan(paths, config_for, session.package_paths, session.packages)
+        else:
+            entries = [_model_entry(path, config_for) for path in paths]
+    except PackageError as error:
+        raise UsageError(str(error)) from None
+    targets = list(dict.fromkeys(t for entry in entries for t in entry.targets))
+    done = dict(zip(targets, _outcomes(targets, mappings, checks, session, jobs, progress)))
+
+    def outcome(target: Target) -> Result | str:
+        if target not in done:  # a library no model could check, expanded on its own
+            done[target] = check_target(target, mappings, checks, session)
+        return done[target]
+
+    results, unreadable = assemble(entries, outcome)
+    return Run(results, unreadable)
+
+
+def _model_entry(path: str, config_for):
+    from .project.workspace import Entry
+
+    return Entry(path, model_targets(path, config_for(path).argument_sets(path)))
+
+
+def configured(session: Session):
+    """The configuration of each input; a broken configuration raises UsageError."""
+
+    def config_for(path: str):
+        try:
+            return session.configs.for_input(path)
+        except ConfigError as error:
+            raise UsageError(str(error)) from None
+
+    return config_for
+
+
+def _outcomes(targets: list[Target], mappings: dict[str, str], checks: str, session: Session, jobs: int, progress: Progress | None):
+    """Each target's result, in order: here, or in ``jobs`` processes."""
+    parallel = jobs != 1 and len(targets) > 1 and not any(t.path == STDIN for t in targets)
+    if not parallel:
+        for done, target in enumerate(targets, 1):
+            yield check_target(target, mappings, checks, session)
+            if progress is not None:
+                progress(done, len(targets))
+        return
+    from concurrent.futures import ProcessPoolExecutor
+
+    with ProcessPoolExecutor(max_workers=jobs or None, initializer=_start_process, initargs=(session.settings,)) as pool:
+        for done, found in enumerate(pool.map(_check_in_process, targets, [mappings] * len(targets), [checks] * len(targets)), 1):
+            yield found
+            if progress is not None:
+                progress(done, len(targets))
+
+
+class _ProcessSession:
+    """The session of a process that checks models for another (``-j``)."""
+
+    current: Session | None = None
+
+
+def _start_process(settings: dict) -> None:
+    _ProcessSession.current = Session(**settings)
+
+
+def _check_in_process(target: Target, mappings: dict[str, str], checks: str) -> Result | str:
+    found = check_target(target, mappings, checks, _ProcessSession.current)
+    return found if isinstance(found, str) else found.detached()
+
+
+def check_target(target: Target, mappings: dict[str, str], checks: str, session: Session) -> Result | str:
+    """One model with one argument set (or a library on its own): its result, or
+    the one-line reason it cannot be read. Raises UsageError (configuration, package path)."""
+    path = target.path
+    config = configured(session)(path)
+    arguments = {**config.mappings_for(path), **mappings, **dict(target.arguments)}
+    try:
+        resolver = session.resolver(config.package_paths, None if path == STDIN else Path(path))
+        if target.alone:
+            document, found = read_document(path, session.inputs, resolver, arguments)
+            if target.unchecked:
+                found.append(unchecked_library(path, target.unchecked))
+            loaded = Loaded(document, diagnostics=found, resolver=resolver, meshes=session.meshes)
+            diagnostics = linter.configure(loaded, found, config, checks)
+            return Result(path, diagnostics, None, dict(target.arguments), includes=tuple(document.includes))
+        loaded = load(path, session.inputs, resolver, arguments, vocabulary=checks == "all", meshes=session.meshes)
+    except InputError as error:
+        return str(error)
+    except PackageError as error:
+        raise UsageError(str(error)) from None
+    document = loaded.document
+    if document.missing_argument is not None:
+        loaded.diagnostics = [needs_argument(d, document.missing_argument, path) if d.code == "X003" else d for d in loaded.diagnostics]
+    diagnostics = linter.lint(loaded, config, checks)
+    return Result(path, diagnostics, loaded, dict(target.arguments), includes=tuple(document.includes), needs_argument=document.missing_argument)
+
+
+def audit(result: Result, session: Session, tolerance: float = massprops.TOLERANCE, density: float | None = None):
+    """The mass-property audit of a model (None when there is no robot): every
+    mass-property rule (codes I...) run with this tolerance and density, what
+    the configuration and suppressions leave of them, and the per-link table."""
+    loaded = result.loaded
+    if loaded is None or not loaded.modelled:
+        return None
+    given = {"tolerance": tolerance, "density": density or 0.0}
+    found = [
+        diagnostic
+        for rule in REGISTRY.values() if rule.code.startswith("I") and rule.function is not None
+        for diagnostic in rule.run(loaded, {k: v for k, v in given.items() if k in rule.defaults})
+    ]
+    config = configured(session)(result.path)
+    problems = [d for d in linter.configure(loaded, found, config, "all") if d.code not in ("U001", "U002")]
+    return inertia.build(loaded, problems, tolerance, density)
+
+
+def needs_argument(diagnostic: Diagnostic, name: str, path: str) -> Diagnostic:
+    """xacro's 'Undefined substitution argument NAME', said so that it names the fix for the input ``path``."""
+    message = (f"needs xacro argument '{name}': it has no value where it is used (no default, or used before its "
+               f"<xacro:arg>); pass {name}:=VALUE, or list the model's argument sets in [tool.urdfcli] models")
+    file = Path(path).name if path != STDIN else "FILE"
+    hint = f'give {name}:=VALUE after the file on the command line, or in pyproject.toml: [tool.urdfcli.xacro-args] "{file}" = {{ {name} = "VALUE" }}'
+    return diagnostic._replace(message=message, hint=diagnostic.hint or hint)
+
+
+def expand(path: str, mappings: dict[str, str], session: Session) -> tuple[str | None, list[str], list[Diagnostic]]:
+    """The xacro expansion of one file, as the ``xacro`` tool prints it (None when it
+    fails), the files it read, and what xacro said (each with its severity). Raises
+    UsageError when the file cannot be read."""
+    try:
+        resolver = session.resolver((), None if path == STDIN else Path(path))
+        document, found = read_document(path, session.inputs, resolver, mappings, force_xacro=True)
+    except (InputError, PackageError) as error:
+        raise UsageError(str(error)) from None
+    diagnostics = [linter.with_severity(d, Config()) for d in found]
+    return document.expanded_text, list(document.includes), diagnostics
+
+
+__all__ = ["Run", "Session", "UsageError", "check", "check_target", "expand", "find_models", "lint", "models_in", "run", "xacro_arguments"]

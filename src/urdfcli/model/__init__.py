@@ -1,0 +1,1 @@
+"""The robot model: links and joints read tolerantly, kinematics, mass properties, meshes, poses."""

@@ -1,0 +1,323 @@
+"""Mass properties as declared and as the geometry implies them: each link's declared
+body, the uniform body its shapes make, the most its mass can reach inside them,
+and the whole robot's total.
+
+The closed-form maths is :mod:`.massprops`, meshes are read by :mod:`.meshes`, the
+links' poses come from :mod:`.poses`. What the geometry proves wrong is the rules'
+(:mod:`urdfcli.rules.inertia`).
+
+Frames: a declared tensor is given in the frame of its ``<inertial><origin>``;
+the *expected* tensor is expressed in that same frame, so the two compare one to one.
+"""
+
+from __future__ import annotations
+
+import math
+from typing import NamedTuple
+
+from . import massprops
+from .load import Loaded
+from .massprops import Matrix, Vector
+from .meshes import GeometryUnknown, mesh_properties
+from .poses import link_poses
+from .robot import Link, Shape
+
+TOLERANCE = massprops.TOLERANCE
+
+
+class Body(NamedTuple):
+    mass: float
+    com: Vector  # centre of mass
+    tensor: Matrix  # about the centre of mass
+
+
+class Implied(NamedTuple):
+    """What a link's geometry implies; ``body`` is None when it cannot tell, and ``source`` says why."""
+
+    body: Body | None
+    source: str
+    volume: float | None = None
+    shapes: tuple[Shape, ...] = ()
+
+
+class Assessment(NamedTuple):
+    """A link's declared tensor next to the one its geometry implies, both in the inertial frame."""
+
+    link: Link
+    declared: Matrix
+    implied: Implied
+    expected: Matrix | None
+    difference: float | None
+
+    def off(self, tolerance: float) -> bool:
+        return self.difference is not None and self.difference > tolerance
+
+
+# -- declared --------------------------------------------------------------------------
+def inertial_rotation(link: Link) -> Matrix:
+    return massprops.rotation(link.inertial.origin.rpy) if link.inertial is not None else massprops.IDENTITY
+
+
+def declared_tensor(link: Link) -> Matrix | None:
+    """The tensor as written, in the inertial frame."""
+    inertial = link.inertial
+    if inertial is None or inertial.inertia is None:
+        return None
+    return massprops.matrix(inertial.inertia)
+
+
+def declared_body(link: Link) -> Body | None:
+    """Mass, centre and tensor as declared, in the link frame."""
+    tensor = declared_tensor(link)
+    if tensor is None or link.inertial.mass is None:
+        return None
+    return Body(link.inertial.mass, link.inertial.origin.xyz, massprops.rotate(tensor, inertial_rotation(link)))
+
+
+def is_frame(link: Link) -> bool:
+    """A massless frame link: no inertial, or mass 0 with a zero (or no) tensor."""
+    inertial = link.inertial
+    if inertial is None:
+        return True
+    tensor = declared_tensor(link)
+    return inertial.mass == 0 and (tensor is None or massprops.is_zero(tensor))
+
+
+# -- implied by geometry ---------------------------------------------------------------
+def implied(loaded: Loaded, link: Link, density: float | None = None) -> Implied:
+    """The body the link's collision shapes (else its visual shapes) make, with the
+    declared mass spread by volume, or ``density`` times the volume when given;
+    worked out once per link (several rules and the audit ask)."""
+    return loaded.remembered(("implied", link.name, density), lambda: _implied(loaded, link, density))
+
+
+def _implied(loaded: Loaded, link: Link, density: float | None) -> Implied:
+    collisions = tuple(s for s in link.collisions if s.geometry is not None)
+    kind, shapes = ("collision", collisions) if collisions else ("visual", tuple(s for s in link.visuals if s.geometry is not None))
+    if not shapes:
+        return Implied(None, "no collision or visual geometry")
+    names = ", ".join(s.geometry.kind for s in shapes)
+    source = f"{kind} {names}" if len(shapes) == 1 else f"{kind} shapes ({names})"
+    try:
+        parts = [shape_part(loaded, shape) for shape in shapes]
+    except GeometryUnknown as error:
+        return Implied(None, str(error), shapes=shapes)
+    volume = sum(v for v, _, _ in parts)
+    if volume <= 0:
+        return Implied(None, f"{source} has no volume", shapes=shapes)
+    mass = density * volume if density is not None else (link.inertial.mass if link.inertial else None)
+    if mass is None or mass <= 0:
+        return Implied(None, "no mass to spread over the geometry", volume, shapes)
+    total, com, tensor = massprops.combine(
+        (mass * v / volume, centre, massprops.scaled(unit, mass * v / volume)) for v, centre, unit in parts
+    )
+    return Implied(Body(total, com, tensor), source, volume, shapes)
+
+
+def shape_part(loaded: Loaded, shape: Shape) -> tuple[float, Vector, Matrix]:
+    """Volume, centre (link frame) and tensor per unit mass (link axes) of one shape."""
+    geometry = shape.geometry
+    if geometry.kind == "mesh":
+        volume, centre, unit, _ = mesh_properties(loaded, geometry.filename, tuple(geometry.scale))
+    else:
+        volume, unit = primitive(geometry)
+        centre = (0.0, 0.0, 0.0)
+    pose = massprops.transform(shape.origin.xyz, shape.origin.rpy)
+    return volume, massprops.place(pose, centre), massprops.rotate(unit, pose[0])
+
+
+def primitive(geometry) -> tuple[float, Matrix]:
+    """Volume and tensor per unit mass of a box, cylinder or sphere (SPEC section 6)."""
+    if geometry.kind == "box":
+        dims = geometry.size
+        if min(dims) <= 0:
+            raise GeometryUnknown("box size is not positive")
+        return massprops.box_volume(dims), massprops.box(1.0, dims)
+    if geometry.kind == "cylinder":
+        if geometry.radius <= 0 or geometry.length <= 0:
+            raise GeometryUnknown("cylinder radius or length is not positive")
+        return massprops.cylinder_volume(geometry.radius, geometry.length), massprops.cylinder(1.0, geometry.radius, geometry.length)
+    if geometry.radius <= 0:
+        raise GeometryUnknown("sphere radius is not positive")
+    return massprops.sphere_volume(geometry.radius), massprops.sphere(1.0, geometry.radius)
+
+
+def shape_bounds(loaded: Loaded, shape: Shape) -> tuple[Vector, Vector]:
+    """Lowest and highest corner, in the link frame, of a box holding the shape
+    (its own bounding box, turned as the shape is)."""
+    geometry = shape.geometry
+    if geometry.kind == "mesh":
+        low, high = mesh_properties(loaded, geometry.filename, tuple(geometry.scale))[3]
+    else:
+        primitive(geometry)  # raises on a shape without size
+        if geometry.kind == "box":
+            half = tuple(d / 2.0 for d in geometry.size)
+        elif geometry.kind == "cylinder":
+            half = (geometry.radius, geometry.radius, geometry.length / 2.0)
+        else:
+            half = (geometry.radius,) * 3
+        low, high = tuple(-h for h in half), half
+    pose = massprops.transform(shape.origin.xyz, shape.origin.rpy)
+    corners = [massprops.place(pose, (x, y, z)) for x in (low[0], high[0]) for y in (low[1], high[1]) for z in (low[2], high[2])]
+    return tuple(min(c[i] for c in corners) for i in range(3)), tuple(max(c[i] for c in corners) for i in range(3))  # type: ignore[return-value]
+
+
+def extent(loaded: Loaded, link: Link, shapes=None) -> tuple[Vector, Vector] | None:
+    """The box (lowest and highest corner, link frame) that holds the shapes, by default every
+    visual and collision shape of the link; None when there are none, or one cannot be measured."""
+    if shapes is None:
+        shapes = (*link.visuals, *link.collisions)
+    shapes = [s for s in shapes if s.geometry is not None]
+    if not shapes:
+        return None
+    try:
+        boxes = [shape_bounds(loaded, shape) for shape in shapes]
+    except GeometryUnknown:
+        return None
+    return (
+        tuple(min(b[0][i] for b in boxes) for i in range(3)),  # type: ignore[return-value]
+        tuple(max(b[1][i] for b in boxes) for i in range(3)),
+    )
+
+
+# -- comparison ------------------------------------------------------------------------
+def assess(loaded: Loaded, link: Link, density: float | None = None) -> Assessment | None:
+    """Declared against implied, for a link that declares a tensor (None otherwise).
+
+    Worked out once per link and density: three rules and the audit ask for it."""
+    return loaded.remembered(("assess", link.name, density), lambda: _assess(loaded, link, density))
+
+
+def _assess(loaded: Loaded, link: Link, density: float | None) -> Assessment | None:
+    declared = declared_tensor(link)
+    if declared is None or is_frame(link):
+        return None
+    found = implied(loaded, link, density)
+    if found.body is None:
+        return Assessment(link, declared, found, None, None)
+    back = massprops.transpose(inertial_rotation(link))
+    expected = massprops.tidy(massprops.rotate(found.body.tensor, back))
+    return Assessment(link, declared, found, expected, massprops.relative_difference(declared, expected))
+
+
+def shapes_rotation(shapes: tuple[Shape, ...]) -> Matrix | None:
+    """The rotation every shape shares, or None when they differ."""
+    rotations = [massprops.rotation(s.origin.rpy) for s in shapes]
+    first = rotations[0] if rotations else None
+    if first is None or any(massprops.relative_difference(r, first) > 1e-9 for r in rotations[1:]):
+        return None
+    return first
+
+
+def rotated_fit(assessment: Assessment) -> tuple[Vector, float] | None:
+    """When the geometry is rotated and the inertial frame is not rotated with it:
+    the shapes' rpy, and the difference left if the tensor were read in their frame."""
+    shapes = assessment.implied.shapes
+    shared = shapes_rotation(shapes)
+    inertial = inertial_rotation(assessment.link)
+    if shared is None or massprops.relative_difference(shared, inertial) < 1e-6:
+        return None
+    # the declared tensor read in the shapes' frame, then expressed in the inertial frame
+    in_link = massprops.rotate(assessment.declared, shared)
+    moved = massprops.rotate(in_link, massprops.transpose(inertial))
+    return shapes[0].origin.rpy, massprops.relative_difference(moved, assessment.expected)
+
+
+# -- what the geometry proves ---------------------------------------------------------
+OVERREACH = 1.1
+"""A moment is impossible when it exceeds the most its mass can reach by this factor
+(the margin absorbs meshes a little smaller than the part they draw)."""
+
+DENSEST = 22600.0
+"""kg/m³ (osmium): a mass denser than this in its geometry's bounding box is not drawn by that
+geometry (a millimetre sphere standing in for a finger), which then proves nothing."""
+
+DISTINCT = 0.15  # a principal moment this far (relative to the largest) from the others has a well-defined axis
+
+
+def axes_apart(a: Matrix, b: Matrix) -> float:
+    """The largest angle (degrees) between matching principal axes of two tensors, over the
+    axes whose moment stands apart from the other two in both (others are not defined)."""
+    worst = 0.0
+    moments_a, moments_b = massprops.principal_moments(a), massprops.principal_moments(b)
+    for i in range(3):
+        if _distinct(moments_a, i) and _distinct(moments_b, i):
+            axis_a, axis_b = massprops.principal_axis(a, moments_a[i]), massprops.principal_axis(b, moments_b[i])
+            if axis_a is not None and axis_b is not None:
+                cosine = abs(sum(x * y for x, y in zip(axis_a, axis_b)))
+                worst = max(worst, math.degrees(math.acos(min(1.0, cosine))))
+    return worst
+
+
+def _distinct(moments, i: int) -> bool:
+    largest = max(abs(m) for m in moments)
+    return largest > 0 and all(abs(moments[i] - moments[j]) >= DISTINCT * largest for j in range(3) if j != i)
+
+
+class Reach(NamedTuple):
+    """The most each moment (link-frame axes, about the declared centre of mass) can be
+    for the declared mass held inside the geometry's bounding box."""
+
+    bounds: Vector
+    sides: Vector
+
+
+def reach(loaded: Loaded, link: Link) -> Reach | None:
+    """None when the link has no measurable geometry, or geometry too small to hold its mass.
+
+    Along each axis, a mass held in [lo, hi] with its mean at c has a variance of at most
+    (hi - c)(c - lo) (the Bhatia-Davis inequality); a moment is the mass times the sum of
+    two such variances. A centre outside the box gives (farthest extent)² instead."""
+    inertial = link.inertial
+    if inertial is None or not (inertial.mass or 0) > 0:
+        return None
+    declared = declared_body(link)
+    # the shapes already measured first: a box that holds the tensor proves nothing, and a
+    # larger one around the same centre would not either, so the other meshes are read only
+    # when it does not (or when the centre lies outside it, where the bound is not monotone)
+    box = extent(loaded, link, implied(loaded, link).shapes)
+    first = _reach(inertial, box)
+    inside = box is not None and all(lo <= c <= h for lo, h, c in zip(*box, inertial.origin.xyz))
+    if first is not None and inside and declared is not None and all(declared.tensor[i][i] <= OVERREACH * first.bounds[i] for i in range(3)):
+        return first
+    return _reach(inertial, extent(loaded, link))
+
+
+def _reach(inertial, box) -> Reach | None:
+    if box is None:
+        return None
+    low, high = box
+    sides = tuple(h - lo for lo, h in zip(low, high))
+    volume = sides[0] * sides[1] * sides[2]
+    if volume <= 0 or inertial.mass / volume > DENSEST:
+        return None
+    spread = []
+    for lo, h, c in zip(low, high, inertial.origin.xyz):
+        spread.append((h - c) * (c - lo) if lo <= c <= h else max(h - c, c - lo) ** 2)
+    x, y, z = spread
+    m = inertial.mass
+    return Reach((m * (y + z), m * (x + z), m * (x + y)), sides)  # type: ignore[arg-type]
+
+
+# -- the whole robot -------------------------------------------------------------------
+def used_body(loaded: Loaded, link: Link, density: float | None = None) -> Body | None:
+    """The body the total counts for a link: with ``density`` the one its geometry fills
+    (a link without geometry keeps its declared one), else the declared one."""
+    return (density is not None and implied(loaded, link, density).body) or declared_body(link)
+
+
+def total(loaded: Loaded, density: float | None = None) -> Body | None:
+    """Mass, centre of mass (root frame) and tensor about it of the whole robot: the declared
+    links, or with ``density`` each link its geometry fills (links without any keep theirs)."""
+    poses = link_poses(loaded)
+    if not poses:
+        return None
+    parts = []
+    for name, pose in poses.items():
+        body = used_body(loaded, loaded.robot.links[name], density)
+        if body is not None and body.mass > 0:
+            parts.append((body.mass, massprops.place(pose, body.com), massprops.rotate(body.tensor, pose[0])))
+    mass, com, tensor = massprops.combine(parts)
+    return Body(mass, com, massprops.tidy(tensor))
+
+

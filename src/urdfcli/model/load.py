@@ -1,0 +1,149 @@
+"""A description once loaded: its document, its robot model and what reading found.
+
+read the input -> expand xacro where it is used (in the session's bounded
+worker, origins kept) -> read the model's elements one top-level element at a
+time, tolerantly, keeping no tree. The rules run on a :class:`Loaded` (see
+:mod:`urdfcli.project.linter`). Nothing here exits the process or prints.
+"""
+
+from __future__ import annotations
+
+from functools import cached_property
+from typing import TYPE_CHECKING
+
+from ..diagnostics import Diagnostic, Location
+from ..read import positions
+from ..read.document import STDIN, SUPPRESSION_MARK, Document, Inputs, read_document
+from ..read.packages import PackageResolver
+from ..read.xml import XmlError, parse
+from .meshes import MeshSummaries
+from .robot import Joint, Robot, read
+
+if TYPE_CHECKING:
+    import networkx as nx
+
+
+class Loaded:
+    """A document, the robot read from it (None when unreadable, ``robot.at`` None
+    when its root is not ``<robot>``), what reading and expanding it found, and
+    what the rules need to look further: the package resolver of its run (meshes)
+    and the session's mesh summaries."""
+
+    def __init__(
+        self,
+        document: Document,
+        robot: Robot | None = None,
+        diagnostics: list[Diagnostic] | None = None,
+        resolver: PackageResolver | None = None,
+        meshes: MeshSummaries | None = None,
+    ) -> None:
+        self.document = document
+        self.robot = robot
+        self.diagnostics = diagnostics if diagnostics is not None else []
+        self.resolver = resolver if resolver is not None else PackageResolver((), document.file)
+        self.meshes = meshes if meshes is not None else MeshSummaries()
+        self.derived: dict = {}  # worked out from the rest, once
+
+    def remembered(self, key, compute):
+        """``compute()``, once for this model: for a costly step several rules share."""
+        if key not in self.derived:
+            self.derived[key] = compute()
+        return self.derived[key]
+
+    @property
+    def path(self) -> str:
+        return self.document.path
+
+    @property
+    def modelled(self) -> bool:
+        """Whether a robot was read (its root element is ``<robot>``)."""
+        return self.robot is not None and self.robot.at is not None
+
+    def diagnostic(
+        self, code: str, message: str, at: int | None, hint: str | None = None, attribute: str | None = None, subjects: tuple[str, ...] = ()
+    ) -> Diagnostic:
+        """A diagnostic about the element ``at`` (see :class:`Document`)."""
+        return self.document.diagnostic(code, message, at, hint, attribute, subjects)
+
+    @cached_property
+    def parent_joints(self) -> dict[str, Joint]:
+        """Each link's parent joint: the first written, when a link has several."""
+        found: dict[str, Joint] = {}
+        if self.robot is not None:
+            for joint in self.robot.joints.values():
+                if joint.child is not None:
+                    found.setdefault(joint.child, joint)
+        return found
+
+    def parent_joint(self, link: str) -> Joint | None:
+        return self.parent_joints.get(link)
+
+    @cached_property
+    def graph(self) -> nx.DiGraph | None:
+        """The kinematic tree as a networkx DiGraph (links as nodes, joints on the edges)."""
+        if not self.modelled:
+            return None
+        from .kinematics import build_graph
+
+        return build_graph(self.robot)
+
+    @cached_property
+    def root(self) -> str | None:
+        if not self.modelled:
+            return None
+        from .kinematics import roots
+
+        found = roots(self.robot)
+        return found[0] if len(found) == 1 else None
+
+
+def load(
+    path: str,
+    inputs: Inputs,
+    resolver: PackageResolver,
+    mappings: dict[str, str] | None = None,
+    vocabulary: bool = False,
+    meshes: MeshSummaries | None = None,
+    force_xacro: bool = False,
+) -> Loaded:
+    """Read one input and its robot. With ``vocabulary``, markup URDF does not define
+    is classified too (for the description rules). Raises InputError."""
+    document, diagnostics = read_document(path, inputs, resolver, mappings, force_xacro)
+    loaded = Loaded(document, diagnostics=diagnostics, resolver=resolver, meshes=meshes)
+    if not document.readable:
+        return loaded
+    try:
+        robot, found = read(document, vocabulary=vocabulary)
+    except XmlError as error:
+        _unreadable(loaded, error)
+        return loaded
+    except Exception:  # a stream may reach odd markup before the error after it: the error is what to say
+        error = _not_well_formed(document.data)
+        if error is None:
+            raise
+        _unreadable(loaded, error)
+        return loaded
+    if not document.is_xacro and document.file is not None:
+        document.may_suppress = positions.may_contain(document.data, SUPPRESSION_MARK)
+    document.data = None  # a large model's text is not kept beside the model
+    loaded.diagnostics += found
+    loaded.robot = robot
+    return loaded
+
+
+def _unreadable(loaded: Loaded, error: XmlError) -> None:
+    document = loaded.document
+    document.data, document.readable = None, False
+    loaded.diagnostics.append(Diagnostic(error.code, error.message, Location(document.shown, error.line, error.column)))
+
+
+def _not_well_formed(data: bytes) -> XmlError | None:
+    """Why ``data`` is not a well-formed document, or None when it is."""
+    try:
+        parse(data)
+    except XmlError as error:
+        return error
+    return None
+
+
+__all__ = ["STDIN", "Loaded", "load"]

@@ -1,0 +1,59 @@
+"""Each link's pose in the root frame at zero joint positions, through yourdfpy's scene graph
+(imported only when a pose is asked for)."""
+
+from __future__ import annotations
+
+from . import massprops
+from .kinematics import walk
+from .load import Loaded
+from .massprops import Transform
+from .meshes import quiet_libraries
+from .robot import Joint
+
+
+def link_poses(loaded: Loaded) -> dict[str, Transform]:
+    """Each link's pose in the root frame at zero joint positions (a mimic joint at its offset).
+
+    yourdfpy's scene graph gives each joint's transform; urdfcli chains them down the tree,
+    because a root-to-link query multiplies the whole path each time (trimesh orders that
+    product at a cost that grows with the path's length cubed: 20 s on a 200-link chain).
+    Only the tree's joints are given to yourdfpy; the structure rules report the others."""
+    root = loaded.root
+    if root is None:
+        return {}
+    joints = [joint for _, joint, _ in walk(loaded.robot, root) if joint is not None]
+    poses = {root: massprops.ORIGIN}
+    if not joints:
+        return poses
+    scene = kinematic_scene(loaded.robot.name or "robot", root, joints)
+    for joint in joints:
+        matrix = scene.get_transform(joint.child, joint.parent)
+        step = (tuple(tuple(float(v) for v in row[:3]) for row in matrix[:3]), tuple(float(v) for v in matrix[:3, 3]))
+        poses[joint.child] = massprops.compose(poses[joint.parent], step)
+    return poses
+
+
+def kinematic_scene(name: str, root: str, joints: list[Joint]):
+    """A yourdfpy model of the kinematic tree alone (no geometry), at zero joint positions.
+
+    At zero positions only a mimic joint's offset moves a joint, so the others are given
+    as fixed: yourdfpy looks each moving joint up in a list, which would make setting up
+    a large robot quadratic in its joints."""
+    import numpy
+    import trimesh.transformations as tra
+    import yourdfpy
+
+    def joint_of(joint: Joint) -> yourdfpy.Joint:
+        matrix = tra.euler_matrix(*joint.origin.rpy, axes="sxyz")
+        matrix[:3, 3] = joint.origin.xyz
+        # a zero axis (reported by J007) gives no direction to move along
+        moves = joint.mimic is not None and joint.type in ("revolute", "continuous", "prismatic") and any(joint.axis)
+        return yourdfpy.Joint(
+            name=joint.name, type=joint.type if moves else "fixed", parent=joint.parent, child=joint.child, origin=matrix,
+            axis=numpy.array(joint.axis) if moves else None,
+            mimic=yourdfpy.Mimic(joint.mimic.joint, joint.mimic.multiplier, joint.mimic.offset) if moves else None,
+        )
+
+    links = [yourdfpy.Link(name=root)] + [yourdfpy.Link(name=joint.child) for joint in joints]
+    with quiet_libraries():
+        return yourdfpy.URDF(yourdfpy.Robot(name=name, links=links, joints=[joint_of(j) for j in joints]), load_meshes=False)

@@ -1,0 +1,582 @@
+"""The robot model, read tolerantly: every problem becomes a diagnostic.
+
+The reader follows urdfdom's parser element by element (which child it reads,
+which attributes it requires, how it reads numbers), so that urdfcli rejects
+what check_urdf rejects; where urdfdom stops, urdfcli records the problem,
+leaves the field empty, and reads on.
+"""
+
+# No ``from __future__ import annotations`` here: typing.NamedTuple compiles each field's
+# annotation written as a string, which cost 6 ms of every start.
+from itertools import count
+from typing import TYPE_CHECKING, NamedTuple
+
+from ..diagnostics import Diagnostic
+from ..read.document import Document, tag_name
+from ..read.xml import Element, top_level
+from .numbers import NumberError, VectorLengthError, format_number, parse_double, parse_vector
+
+if TYPE_CHECKING:
+    from .vocabulary import Unknown
+
+Vec3 = tuple[float, float, float]
+JOINT_TYPES = ("fixed", "revolute", "continuous", "prismatic", "floating", "planar")
+MOVING_AXIS_TYPES = ("revolute", "continuous", "prismatic", "planar")
+INERTIA_KEYS = ("ixx", "ixy", "ixz", "iyy", "iyz", "izz")
+ZERO_HINT = "a placeholder shape is better left out; give a real shape a positive size"
+
+
+# Model parts are named tuples: built by the million on large models, where a
+# frozen dataclass costs several times more. ``at`` is an element's index in
+# document order (see document.py), which locates it.
+class Pose(NamedTuple):
+    xyz: Vec3 = (0.0, 0.0, 0.0)
+    rpy: Vec3 = (0.0, 0.0, 0.0)
+
+
+class Geometry(NamedTuple):
+    kind: str  # box, cylinder, sphere, mesh
+    at: int
+    size: Vec3 | None = None
+    radius: float | None = None
+    length: float | None = None
+    filename: str | None = None
+    scale: Vec3 = (1.0, 1.0, 1.0)
+
+
+class Shape(NamedTuple):
+    """A ``<visual>`` or ``<collision>``."""
+
+    at: int
+    origin: Pose
+    geometry: Geometry | None
+    material: str | None = None
+
+
+class Inertial(NamedTuple):
+    at: int
+    origin: Pose
+    mass: float | None
+    inertia: dict[str, float] | None  # ixx ixy ixz iyy iyz izz
+    mass_at: int | None = None
+    inertia_at: int | None = None
+
+
+class Link(NamedTuple):
+    name: str
+    at: int
+    inertial: Inertial | None
+    visuals: tuple[Shape, ...]
+    collisions: tuple[Shape, ...]
+
+
+class Limit(NamedTuple):
+    lower: float = 0.0
+    upper: float = 0.0
+    effort: float | None = None
+    velocity: float | None = None
+    has_lower: bool = False
+    has_upper: bool = False
+
+
+class Mimic(NamedTuple):
+    joint: str
+    multiplier: float = 1.0
+    offset: float = 0.0
+
+
+class Joint(NamedTuple):
+    name: str
+    at: int
+    type: str | None
+    parent: str | None
+    child: str | None
+    origin: Pose
+    axis: Vec3
+    limit: Limit | None
+    mimic: Mimic | None
+    parts: tuple[tuple[str, int], ...] = ()  # where its first <parent>, <child>, <axis>, <limit>, <mimic> are
+
+    def part(self, tag: str) -> int | None:
+        """Where the joint's first ``<tag>`` is (None when it has none)."""
+        return next((at for name, at in self.parts if name == tag), None)
+
+    @property
+    def moving(self) -> bool:
+        return self.type not in (None, "fixed")
+
+
+class Material(NamedTuple):
+    name: str
+    at: int
+    rgba: tuple[float, ...] | None
+    texture: str | None
+    rgba_text: str | None = None  # as written
+
+
+class Resource(NamedTuple):
+    """A file the model names: a ``<mesh>`` or ``<texture>``."""
+
+    at: int
+    kind: str  # mesh, texture
+    uri: str
+
+
+class Robot:
+    def __init__(self, name: str | None, at: int | None, resources: list[Resource] | None = None) -> None:
+        self.name = name
+        self.at = at  # None when the root element is not <robot>
+        self.links: dict[str, Link] = {}
+        self.joints: dict[str, Joint] = {}
+        self.materials: dict[str, Material] = {}
+        self.resources: list[Resource] = resources if resources is not None else []
+        self.unknown: "list[Unknown]" = []  # read only when asked for
+        self.extensions: "list[Element]" = []  # top-level blocks of other formats
+        self._placed: "dict[Element, int]" = {}
+        self.derived: dict = {}  # worked out from the rest, once
+
+    def remembered(self, key, compute):
+        """``compute()``, once for this robot: for a costly step several rules share."""
+        if key not in self.derived:
+            self.derived[key] = compute()
+        return self.derived[key]
+
+    def blocks(self, tag: str | None = None) -> "list[Element]":
+        """The top-level elements other than links, joints and materials (``<gazebo>``,
+        ``<transmission>``, ``<ros2_control>``...), kept whole; with ``tag``, those of that tag."""
+        return [block for block in self.extensions if tag is None or block.tag == tag]
+
+    def place(self, element: "Element") -> int | None:
+        """Where an element of one of :meth:`blocks` is."""
+        return self._placed.get(element)
+
+
+class Reader:
+    """Builds a Robot from a Document, collecting diagnostics. Each element written
+    at the top level is read whole, in document order, and no tree is kept once the
+    robot is read (a large document is streamed: see read.xml.top_level)."""
+
+    def __init__(self, document: Document, vocabulary: bool = False):
+        self.document = document
+        self.vocabulary = vocabulary  # classify markup against URDF's vocabulary too
+        self.diagnostics: list[Diagnostic] = []
+        self.resources: list[Resource] = []
+        self._index: "dict[Element, int]" = {}  # the elements being read -> their index
+        # Values read from texts seen before in this document: models repeat a few texts
+        # over and over. Only texts read without a diagnostic are kept, and values are
+        # never changed (an inertia dict is shared by the links that write the same text).
+        self._numbers: dict[str, float] = {}
+        self._poses: dict[tuple[str | None, str | None], Pose] = {}
+        self._tensors: dict[tuple[str | None, ...], dict[str, float]] = {}
+        self._limits: dict[tuple[str | None, ...], Limit] = {}
+
+    def at(self, element: "Element | None") -> int | None:
+        return self._index[element] if element is not None else None
+
+    # -- reporting -------------------------------------------------------------
+    def report(self, code: str, message: str, element: "Element | None", hint: str | None = None) -> None:
+        self.diagnostics.append(self.document.diagnostic(code, message, self.at(element), hint))
+
+    # -- values ----------------------------------------------------------------
+    def number(self, element: "Element", attribute: str, required: bool = False, what: str = "") -> float | None:
+        text = element.get(attribute)
+        value = self._numbers.get(text)
+        if value is not None:
+            return value
+        if text is None:
+            if required:
+                self.report("V004", f"<{tag_name(element)}> has no '{attribute}' attribute{what}", element)
+            return None
+        try:
+            value = parse_double(text)
+        except NumberError as error:
+            self.report(error.code, f"{tag_name(element)} {attribute}: {error.reason}{what}", element)
+            return None
+        self._numbers[text] = value
+        return value
+
+    def vector(self, element: "Element", attribute: str, default: Vec3 | None = None) -> Vec3 | None:
+        text = element.get(attribute)
+        if text is None:
+            return default
+        try:
+            return parse_vector(text)  # type: ignore[return-value]
+        except NumberError as error:
+            self.report(error.code, f"{tag_name(element)} {attribute}: component {error.reason}", element)
+        except VectorLengthError as error:
+            hint = "components are separated by single spaces" if ("\t" in text or "\n" in text or "," in text) else None
+            self.report("V003", f"{tag_name(element)} {attribute}: {error.reason}", element, hint)
+        return None
+
+    def pose(self, origin: "Element | None") -> Pose:
+        if origin is None:
+            return IDENTITY
+        key = (origin.get("xyz"), origin.get("rpy"))
+        pose = self._poses.get(key)
+        if pose is None:
+            reported = len(self.diagnostics)
+            pose = Pose(self.vector(origin, "xyz", (0.0, 0.0, 0.0)) or (0.0, 0.0, 0.0), self.vector(origin, "rpy", (0.0, 0.0, 0.0)) or (0.0, 0.0, 0.0))
+            if len(self.diagnostics) == reported:
+                self._poses[key] = pose
+        return pose
+
+    def positive(self, element: "Element", attribute: str, value: float | None) -> None:
+        """A negative dimension is an error (V006); zero is a warning (V008): ROS loads it, physics engines do not."""
+        if value is not None and value < 0:
+            self.report("V006", f"{tag_name(element)} {attribute} is {format_number(value)}; it must be positive", element)
+        elif value == 0:
+            self.report("V008", f"{tag_name(element)} {attribute} is 0: the shape has no volume", element, ZERO_HINT)
+
+    # -- elements --------------------------------------------------------------
+    def rgba(self, material: "Element", color: "Element") -> tuple[float, ...] | None:
+        text = color.get("rgba")
+        name = material.get("name", "")
+        values = []
+        for piece in (p for p in text.split(" ") if p):
+            try:
+                value = parse_double(piece)
+            except NumberError as error:
+                self.report(error.code, f"material '{name}' rgba: component {error.reason}", color)
+                return None
+            if not 0.0 <= value <= 1.0:
+                self.report("V007", f"material '{name}' rgba component {piece} is outside [0, 1]", color)
+                return None
+            values.append(value)
+        if len(values) != 4:
+            self.report("M004", f"material '{name}' rgba '{text}' has {len(values)} components, 4 expected", color)
+        return tuple(values)
+
+    def material(self, element: "Element", top_level: bool) -> Material | None:
+        name = element.get("name")
+        if name is None:
+            self.report("N003", "<material> has no 'name' attribute", element)
+            return None
+        found = first_children(element)
+        texture = found.get("texture")
+        texture_file = texture.get("filename") if texture is not None else None
+        if texture_file:
+            self.resources.append(Resource(self._index[texture], "texture", texture_file))
+        color = found.get("color")
+        rgba = self.rgba(element, color) if color is not None and color.get("rgba") is not None else None
+        if top_level and rgba is None and texture_file is None:
+            hint = "did you mean rgba=?" if color is not None and color.get("rgb") is not None else None
+            self.report("M001", f"material '{name}' has neither <color rgba> nor <texture filename>", element, hint)
+        return Material(name, self.at(element), rgba, texture_file, color.get("rgba") if color is not None else None)
+
+    def geometry(self, parent: "Element", element: "Element | None") -> Geometry | None:
+        if element is None:
+            self.report("V005", f"<{tag_name(parent)}> has no <geometry>", parent)
+            return None
+        shapes = list(element)  # comments are not read
+        if not shapes:
+            self.report("G001", "<geometry> holds no shape (box, cylinder, sphere or mesh)", element)
+            return None
+        shape = shapes[0]
+        if len(shapes) > 1:
+            self.report("G003", f"<geometry> holds {len(shapes)} shapes; only the first, <{tag_name(shape)}>, is used", shapes[1])
+        kind = tag_name(shape)
+        if kind == "sphere":
+            radius = self.number(shape, "radius", required=True)
+            self.positive(shape, "radius", radius)
+            return Geometry(kind, self.at(shape), radius=radius) if radius is not None else None
+        if kind == "box":
+            text = shape.get("size")
+            if text is None:
+                self.report("V004", "<box> has no 'size' attribute", shape)
+                return None
+            size = self.vector(shape, "size")
+            if size is None:
+                return None
+            smallest = min(size)
+            if smallest < 0:
+                self.report("V006", f"box size '{text}' has a negative component", shape)
+            elif smallest == 0:
+                self.report("V008", f"box size '{text}' has a zero component: the box has no volume", shape, ZERO_HINT)
+            return Geometry(kind, self._index[shape], size)
+        if kind == "cylinder":
+            if shape.get("radius") is None or shape.get("length") is None:
+                missing = " and ".join(a for a in ("radius", "length") if shape.get(a) is None)
+                self.report("V004", f"<cylinder> has no '{missing}' attribute", shape)
+                return None
+            length = self.number(shape, "length")
+            radius = self.number(shape, "radius")
+            self.positive(shape, "length", length)
+            self.positive(shape, "radius", radius)
+            return Geometry(kind, self.at(shape), radius=radius, length=length) if None not in (length, radius) else None
+        if kind == "mesh":
+            filename = shape.get("filename")
+            if filename is None:
+                self.report("V004", "<mesh> has no 'filename' attribute", shape)
+                return None
+            scale = self.vector(shape, "scale", (1.0, 1.0, 1.0))
+            if filename:
+                self.resources.append(Resource(self._index[shape], "mesh", filename))
+            return Geometry(kind, self.at(shape), filename=filename, scale=scale) if scale is not None else None
+        self.report("G002", f"unknown shape <{kind}> in <geometry>", shape, "URDF shapes are box, cylinder, sphere and mesh")
+        return None
+
+    def shape(self, element: "Element", visual: bool) -> Shape:
+        found = first_children(element)
+        origin = self.pose(found.get("origin"))
+        geometry = self.geometry(element, found.get("geometry"))
+        material_name = None
+        if visual:
+            material = found.get("material")
+            if material is not None:
+                parsed = self.material(material, top_level=False)
+                material_name = parsed.name if parsed else None
+                if parsed is not None:
+                    self._inline_materials.append(parsed)
+        return Shape(self._index[element], origin, geometry, material_name)
+
+    def inertial(self, element: "Element") -> Inertial:
+        found = first_children(element)
+        origin = self.pose(found.get("origin"))
+        mass_element = found.get("mass")
+        mass = None
+        if mass_element is None:
+            self.report("V005", "<inertial> has no <mass>", element)
+        else:
+            mass = self.number(mass_element, "value", required=True)
+        inertia_element = found.get("inertia")
+        inertia = None
+        if inertia_element is None:
+            self.report("V005", "<inertial> has no <inertia>", element)
+        else:
+            texts = tuple(map(inertia_element.get, INERTIA_KEYS))
+            inertia = self._tensors.get(texts)
+            if inertia is None:
+                values = {key: self.number(inertia_element, key, required=True) for key in INERTIA_KEYS}
+                if None not in values.values():
+                    inertia = self._tensors[texts] = values
+        return Inertial(self._index[element], origin, mass, inertia, self.at(mass_element), self.at(inertia_element))  # type: ignore[arg-type]
+
+    def link(self, element: "Element") -> Link:
+        name = element.get("name")
+        if name is None:
+            self.report("N001", "<link> has no 'name' attribute", element)
+            name = ""
+        inertial = None
+        visuals: list[Shape] = []
+        collisions: list[Shape] = []
+        for child in element:  # one pass, in the order written
+            tag = child.tag
+            if tag == "visual":
+                visuals.append(self.shape(child, visual=True))
+            elif tag == "collision":
+                collisions.append(self.shape(child, visual=False))
+            elif tag == "inertial" and inertial is None:  # the first, as urdfdom reads it
+                inertial = self.inertial(child)
+        return Link(name, self._index[element], inertial, tuple(visuals), tuple(collisions))
+
+    def joint_limit(self, joint_name: str, element: "Element") -> Limit:
+        key = (element.get("lower"), element.get("upper"), element.get("effort"), element.get("velocity"))
+        limit = self._limits.get(key)
+        if limit is not None:
+            return limit
+        reported = len(self.diagnostics)
+        what = f" (joint '{joint_name}')"
+        lower = self.number(element, "lower", what=what)
+        upper = self.number(element, "upper", what=what)
+        effort = self.number(element, "effort", required=True, what=what)
+        velocity = self.number(element, "velocity", required=True, what=what)
+        limit = Limit(
+            lower if lower is not None else 0.0,
+            upper if upper is not None else 0.0,
+            effort,
+            velocity,
+            key[0] is not None,
+            key[1] is not None,
+        )
+        if len(self.diagnostics) == reported:
+            self._limits[key] = limit
+        return limit
+
+    def joint(self, element: "Element") -> Joint:
+        name = element.get("name")
+        if name is None:
+            self.report("N002", "<joint> has no 'name' attribute", element)
+        shown = name if name is not None else "?"
+        what = f" (joint '{shown}')"
+        joint_type = element.get("type")
+        if joint_type is None:
+            self.report("J001", f"joint '{shown}' has no 'type' attribute", element, f"the types are {', '.join(JOINT_TYPES)}")
+        elif joint_type not in JOINT_TYPES:
+            self.report("J002", f"joint '{shown}' has unknown type '{joint_type}'", element, f"the types are {', '.join(JOINT_TYPES)}")
+            joint_type = None
+        found = first_children(element)
+        origin = self.pose(found.get("origin"))
+        axis: Vec3 = (1.0, 0.0, 0.0)
+        axis_element = found.get("axis")
+        if axis_element is not None and joint_type not in ("fixed", "floating"):
+            axis = self.vector(axis_element, "xyz", (1.0, 0.0, 0.0)) or axis
+        limit_element = found.get("limit")
+        limit = self.joint_limit(shown, limit_element) if limit_element is not None else None
+        if limit_element is None and joint_type in ("revolute", "prismatic"):
+            self.report("J003", f"{joint_type} joint '{shown}' has no <limit>", element, 'add <limit lower="..." upper="..." effort="..." velocity="..."/>')
+        safety = found.get("safety_controller")
+        if safety is not None:
+            for attribute in ("soft_lower_limit", "soft_upper_limit", "k_position"):
+                self.number(safety, attribute, what=what)
+            self.number(safety, "k_velocity", required=True, what=what)
+        calibration = found.get("calibration")
+        if calibration is not None:
+            for attribute in ("reference_position", "rising", "falling"):
+                self.number(calibration, attribute, what=what)
+        mimic = None
+        mimic_element = found.get("mimic")
+        if mimic_element is not None:
+            multiplier = self.number(mimic_element, "multiplier", what=what)
+            offset = self.number(mimic_element, "offset", what=what)
+            target = mimic_element.get("joint")
+            if target is None:
+                self.report("V004", f"<mimic> of joint '{shown}' has no 'joint' attribute", mimic_element)
+            else:
+                mimic = Mimic(target, 1.0 if multiplier is None else multiplier, offset or 0.0)
+        dynamics = found.get("dynamics")
+        if dynamics is not None:
+            if dynamics.get("damping") is None and dynamics.get("friction") is None:
+                self.report("J006", f"<dynamics> of joint '{shown}' has neither damping nor friction", dynamics)
+            self.number(dynamics, "damping", what=what)
+            self.number(dynamics, "friction", what=what)
+        parent = self._link_ref(found.get("parent"))
+        child = self._link_ref(found.get("child"))
+        if parent is None or child is None:
+            missing = " and ".join(t for t, v in (("<parent link>", parent), ("<child link>", child)) if v is None)
+            self.report("J004", f"joint '{shown}' has no {missing}", element)
+        parts = tuple((tag, self._index[found[tag]]) for tag in ("parent", "child", "axis", "limit", "mimic") if tag in found)
+        return Joint(name if name is not None else "", self._index[element], joint_type, parent, child, origin, axis, limit, mimic, parts)
+
+    @staticmethod
+    def _link_ref(element: "Element | None") -> str | None:
+        value = element.get("link") if element is not None else None
+        return value or None  # urdfdom treats an empty name as missing
+
+    # -- robot -----------------------------------------------------------------
+    def robot(self) -> Robot:
+        """The robot, read from the document's elements as they come; raises
+        XmlError when the document turns out not to be well-formed."""
+        stream = top_level(self.document.data)
+        root = next(stream)
+        self._index = {root: 0}
+        self._inline_materials: list[Material] = []
+        if tag_name(root) != "robot":
+            self.report("R001", f"the root element is <{tag_name(root)}>, not <robot>", root)
+            for _ in stream:  # the rest must still be well-formed
+                pass
+            return Robot(None, None)
+        name = root.get("name")
+        if name is None:
+            self.report("R002", "<robot> has no 'name' attribute", root)
+        self.version(root)
+        robot = Robot(name, 0, resources=self.resources)
+        if self.vocabulary:
+            from . import vocabulary  # only lint's rules read what it finds
+
+            robot.unknown.extend(vocabulary.unknown_attributes(root, 0))
+        numbers = count(1)
+        tops = self.document.tops
+        for element in stream:
+            self._index = index = dict(zip(element.iter(), numbers))
+            tops.append(index[element])
+            index[root] = 0
+            self.top_level(robot, element)
+            if self.vocabulary:
+                robot.unknown.extend(vocabulary.unknown_markup(element, index.__getitem__))
+        if not robot.links:
+            self.report("R004", "the robot has no <link>", root)
+        self.check_materials(robot)
+        return robot
+
+    def top_level(self, robot: Robot, element: "Element") -> None:
+        """Read one element written directly in ``<robot>``."""
+        tag = element.tag
+        if tag == "link":
+            link = self.link(element)
+            if link.name in robot.links:
+                self.report("N004", f"link '{link.name}' is defined twice", element, f"first defined at {_where(self.document, robot.links[link.name].at)}")
+            else:
+                robot.links[link.name] = link
+        elif tag == "joint":
+            joint = self.joint(element)
+            if element.get("name") is None:
+                return
+            if joint.name in robot.joints:
+                self.report("N005", f"joint '{joint.name}' is defined twice", element)
+            else:
+                robot.joints[joint.name] = joint
+        elif tag == "material":
+            material = self.material(element, top_level=True)
+            if material is None:
+                return
+            if material.name in robot.materials:
+                self.report("N006", f"material '{material.name}' is defined twice", element)
+            else:
+                robot.materials[material.name] = material
+        else:
+            robot.extensions.append(element)
+            robot._placed.update(self._index)
+            found = (e for e in element.iter() if e.tag in ("mesh", "texture"))  # (ElementTree's iter takes one tag)
+            self.resources.extend(Resource(self._index[e], e.tag, uri) for e in found if (uri := e.get("filename")))
+
+    def version(self, root: "Element") -> None:
+        version = root.get("version")
+        if version is None:
+            return
+        parts = version.split(".")
+        if len(parts) != 2 or not all(p.isdigit() for p in parts):
+            self.report("R003", f"robot version '{version}' is not of the form 'x.y'", root)
+        elif (int(parts[0]), int(parts[1])) != (1, 0):
+            self.report("R003", f"robot version '{version}' is not supported; only 1.0 is", root)
+
+    def check_materials(self, robot: Robot) -> None:
+        """M002 and M003 as urdfdom shares materials: by name, the first definition
+        winning. A visual material with an empty name is never shared (urdfdom skips
+        it), so it can neither be undefined nor clash."""
+        seen: dict[str, Material] = {m.name: m for m in robot.materials.values() if m.rgba is not None}
+        for material in self._inline_materials:
+            if not material.name:
+                continue
+            if material.rgba is None and material.texture is None:
+                if material.name not in robot.materials and material.name not in seen:
+                    self.diagnostics.append(self.document.diagnostic("M002", f"material '{material.name}' is defined nowhere", material.at, "define it at the top level, or give it a <color rgba>"))
+                continue
+            first = seen.setdefault(material.name, material)
+            if first.rgba is not None and material.rgba is not None and not same_colour(first.rgba, material.rgba):
+                self.diagnostics.append(self.document.diagnostic(
+                    "M003",
+                    f"material '{material.name}' has rgba '{material.rgba_text}' here but '{first.rgba_text}' at {_where(self.document, first.at)}",
+                    material.at,
+                    "consumers keep one colour per name: give each colour its own name",
+                ))
+
+
+# Components closer than a tenth look alike in a viewer: 0.75294 is 192/255 rounded, and
+# an alpha of 0.9 against 1 is not a second colour; 0.5 against 0.8 is.
+COLOUR_TOLERANCE = 0.1 + 1e-9
+
+
+def same_colour(a: tuple[float, ...], b: tuple[float, ...]) -> bool:
+    return len(a) == len(b) and all(abs(x - y) <= COLOUR_TOLERANCE for x, y in zip(a, b))
+
+
+IDENTITY = Pose()
+
+
+def first_children(element: "Element") -> "dict[str, Element]":
+    """The first child of each tag, as ``element.find(tag)`` gives it, in one pass
+    over the children (a model has millions of these lookups)."""
+    return {child.tag: child for child in reversed(element)}  # the first of a tag written last, and kept
+
+
+def _where(document: Document, at: int) -> str:
+    location = document.locate(at)
+    return f"{location.file}:{location.line}"
+
+
+def read(document: Document, vocabulary: bool = False) -> tuple[Robot, list[Diagnostic]]:
+    """The robot and what reading it found; with ``vocabulary``, markup URDF does not
+    define is classified too (``Robot.unknown``). Raises XmlError."""
+    reader = Reader(document, vocabulary)
+    robot = reader.robot()
+    return robot, reader.diagnostics

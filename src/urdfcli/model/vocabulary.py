@@ -1,0 +1,190 @@
+"""The URDF vocabulary, and the markup outside it, found while the model is read.
+
+Which elements and attributes URDF and the documented extensions define where,
+and the classification of everything else (a typo, Gazebo markup out of its
+block, or unknown markup) that the description rules D001, D002, D010 and D011
+report.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Iterator
+from typing import TYPE_CHECKING, NamedTuple
+
+from ..read.document import tag_name
+
+if TYPE_CHECKING:
+    from ..read.xml import Element
+
+# What the URDF format allows: element -> (attributes, child elements). Elements
+# whose contents belong to another format (gazebo, transmission, ros2_control)
+# are not looked into; <geometry> shapes are G002's business. Newer urdfdom
+# releases read `quat_xyzw` (URDF 1.1) and acceleration limits (URDF 1.2).
+ORIGIN = ({"xyz", "rpy", "quat_xyzw"}, set())
+SCHEMA: dict[str, tuple[set[str], set[str]]] = {
+    "robot": ({"name", "version"}, {"link", "joint", "material", "transmission", "gazebo", "ros2_control"}),
+    "link": ({"name", "type"}, {"inertial", "visual", "collision"}),
+    "inertial": (set(), {"origin", "mass", "inertia"}),
+    "origin": ORIGIN,
+    "mass": ({"value"}, set()),
+    "inertia": ({"ixx", "ixy", "ixz", "iyy", "iyz", "izz"}, set()),
+    "visual": ({"name"}, {"origin", "geometry", "material"}),
+    "collision": ({"name"}, {"origin", "geometry"}),
+    "geometry": (set(), None),  # shapes: checked by G001/G002
+    "box": ({"size"}, set()),
+    "cylinder": ({"radius", "length"}, set()),
+    "sphere": ({"radius"}, set()),
+    "mesh": ({"filename", "scale"}, set()),
+    "material": ({"name"}, {"color", "texture"}),
+    "color": ({"rgba"}, set()),
+    "texture": ({"filename"}, set()),
+    "joint": ({"name", "type"}, {"origin", "parent", "child", "axis", "calibration", "dynamics", "limit", "mimic", "safety_controller"}),
+    "parent": ({"link"}, set()),
+    "child": ({"link"}, set()),
+    "axis": ({"xyz"}, set()),
+    "calibration": ({"rising", "falling", "reference_position"}, set()),
+    "dynamics": ({"damping", "friction"}, set()),
+    "limit": ({"lower", "upper", "effort", "velocity", "acceleration", "deceleration", "jerk"}, set()),
+    "mimic": ({"joint", "multiplier", "offset"}, set()),
+    "safety_controller": ({"soft_lower_limit", "soft_upper_limit", "k_position", "k_velocity"}, set()),
+}
+OPAQUE = {"gazebo", "transmission", "ros2_control"}
+# Elements a URDF holds more than once: a typo of one is a typo even when another is there.
+REPEATED = {"link", "joint", "material", "transmission", "gazebo", "ros2_control", "visual", "collision"}
+
+# Documented extensions other consumers read: never typos, never reported.
+# element -> (attributes, child elements), each with who reads it.
+EXTENSIONS: dict[str, tuple[dict[str, str], dict[str, str]]] = {
+    "robot": ({}, {
+        "sensor": "urdfdom's and iDynTree's sensor extension",
+        "mujoco": "MuJoCo's compiler options",
+        "deformable": "PyBullet's soft bodies",
+        "klampt": "Klampt's robot settings",
+    }),
+    "link": ({}, {
+        "contact": "PyBullet's contact parameters",
+        "audio_source": "PyBullet's audio source",
+    }),
+    "collision": ({"group": "PyBullet's collision filter", "mask": "PyBullet's collision filter", "concave": "PyBullet's concave meshes"}, {
+        "material": "exporters that write one material for visual and collision; harmless",
+        "contact_coefficients": "the ROS URDF tutorial's contact coefficients (mu, kp, kd)",
+    }),
+    "material": ({}, {"specular": "PyBullet's specular colour"}),
+    "joint": ({"dont_collapse": "Isaac Sim's URDF importer (keeps a fixed joint)"}, {}),
+    "dynamics": ({"K": "Franka's joint friction model", "D": "Franka's joint friction model",
+                  "mu_coulomb": "Franka's joint friction model", "mu_viscous": "Franka's joint friction model"}, {}),
+    "limit": ({"command_effort": "ANYmal's actuator limits", "current": "ANYmal's actuator limits",
+               "gear_velocity": "ANYmal's actuator limits"}, {}),
+}
+
+# Gazebo's URDF extension keys and the SDFormat elements Gazebo reads in a
+# <gazebo reference> block (sdformat's URDF to SDF conversion): written anywhere
+# else, Gazebo never sees them.
+GAZEBO_TAGS = {
+    "gazebo", "plugin", "static", "turnGravityOff", "dampingFactor", "maxVel", "minDepth", "mu1", "mu2", "fdir1",
+    "kp", "kd", "selfCollide", "maxContacts", "laserRetro", "springReference", "springStiffness", "stopCfm",
+    "stopErp", "fudgeFactor", "provideFeedback", "canonicalBody", "cfmDamping", "implicitSpringDamper",
+    "disableFixedJointLumping", "preserveFixedJoint",
+    "gravity", "kinematic", "self_collide", "enable_wind", "velocity_decay", "must_be_base_link", "sensor",
+    "surface", "laser_retro", "max_contacts", "cast_shadows", "transparency", "physics",
+}
+
+# What each element may carry: URDF's own names and the documented extensions', computed once.
+KNOWN_ATTRIBUTES = {tag: frozenset(attributes | set(EXTENSIONS.get(tag, ({}, {}))[0])) for tag, (attributes, _) in SCHEMA.items()}
+KNOWN_CHILDREN = {tag: frozenset(children | set(EXTENSIONS.get(tag, ({}, {}))[1])) for tag, (_, children) in SCHEMA.items() if children is not None}
+# The children read as URDF (walked into): those of the schema, other formats' blocks aside.
+WALKED = {tag: frozenset(c for c in children if c in SCHEMA and c not in OPAQUE) for tag, children in KNOWN_CHILDREN.items()}
+
+
+def _edits(a: str, b: str) -> int:
+    """Edits (insertion, deletion, substitution, swap of neighbours) from a to b."""
+    previous, current = None, list(range(len(b) + 1))
+    for i in range(1, len(a) + 1):
+        before, previous, current = previous, current, [i] + [0] * len(b)
+        for j in range(1, len(b) + 1):
+            cost = a[i - 1] != b[j - 1]
+            current[j] = min(previous[j] + 1, current[j - 1] + 1, previous[j - 1] + cost)
+            if before is not None and j > 1 and a[i - 1] == b[j - 2] and a[i - 2] == b[j - 1]:
+                current[j] = min(current[j], before[j - 2] + 1)
+    return current[len(b)]
+
+
+def _typo_of(word: str, candidates) -> str | None:
+    """The candidate ``word`` is a misspelling of: one edit away (two for longer words), case aside."""
+    allowed = 1 if len(word) <= 4 else 2
+    scored = sorted((_edits(word.lower(), c.lower()), c) for c in candidates)
+    return scored[0][1] if scored and scored[0][0] <= allowed else None
+
+
+class Unknown(NamedTuple):
+    """Markup that neither URDF nor a known extension defines where it is written."""
+
+    at: int  # the unknown child, or the element carrying the unknown attribute
+    parent: str  # the tag of the element it is written in (or on)
+    name: str
+    attribute: bool
+    typo_of: str | None = None  # a name missing there that it is one or two edits from
+    gazebo: bool = False  # Gazebo markup outside <gazebo>
+    holder: int = 0  # the element it is written in
+    owner: str | None = None  # the link or joint it is written in, if any
+
+
+def _is_foreign(name: str) -> bool:
+    """Namespaced names (``xacro:``, ``drake:``, ``{uri}``) belong to other formats."""
+    return ":" in name or name.startswith("{")
+
+
+def _gazebo_material(element) -> bool:
+    """Gazebo's ``<material>Gazebo/Grey</material>``: a script name as text, no name attribute."""
+    return tag_name(element) == "material" and element.get("name") is None and bool((element.text or "").strip())
+
+
+def unknown_attributes(element: Element, at: int, tag: str | None = None) -> Iterator[Unknown]:
+    """The attributes of ``element`` (at ``at``, of ``tag``) that its tag does not take."""
+    tag = tag or tag_name(element)
+    known = KNOWN_ATTRIBUTES[tag]
+    names = element.keys()
+    if known.issuperset(names):
+        return  # the common case, decided in one step
+    for name in names:
+        if name not in known and not _is_foreign(name):
+            yield Unknown(at, tag, name, True, _typo_of(name, known - set(names)))
+
+
+def unknown_markup(top: Element, index: Callable[[Element], int]) -> Iterator[Unknown]:
+    """What is unknown in one element written at the top level of ``<robot>``: the
+    element itself as a child of ``<robot>``, and inside it, one walk over the URDF
+    elements (not into other formats' blocks)."""
+    name = tag_name(top)
+    if name not in KNOWN_CHILDREN["robot"]:
+        if not _is_foreign(name):
+            gazebo = name in GAZEBO_TAGS or _gazebo_material(top)
+            yield Unknown(index(top), "robot", name, False, None if gazebo else _typo_of(name, KNOWN_CHILDREN["robot"]), gazebo)
+        return
+    if name not in SCHEMA or name in OPAQUE:
+        return
+    owner = top.get("name") if name in ("link", "joint") else None
+    stack = [(top, name)]
+    while stack:
+        element, tag = stack.pop()
+        if not KNOWN_ATTRIBUTES[tag].issuperset(element.keys()):  # most elements: decided here
+            yield from unknown_attributes(element, index(element), tag)
+        children = KNOWN_CHILDREN.get(tag)
+        if children is None:
+            continue
+        walked = WALKED[tag]
+        inside = []
+        for child in element:
+            name = child.tag
+            if "{" in name:
+                name = tag_name(child)
+            if name in walked:
+                inside.append((child, name))
+            elif name not in children and not _is_foreign(name):
+                if name in GAZEBO_TAGS or _gazebo_material(child):
+                    yield Unknown(index(child), tag, name, False, gazebo=True, holder=index(element), owner=owner)
+                else:
+                    present = {tag_name(c) for c in element}
+                    missing = {c for c in children if c in REPEATED or c not in present}
+                    yield Unknown(index(child), tag, name, False, _typo_of(name, missing), holder=index(element), owner=owner)
+        stack.extend(reversed(inside))

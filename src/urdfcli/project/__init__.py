@@ -1,0 +1,1 @@
+"""The project around a model: configuration, the workspace's libraries and models, suppressions, the linter."""

@@ -1,0 +1,86 @@
+"""The rules on a loaded model, and what configuration and suppressions leave of them.
+
+:func:`lint` runs the rules a command asks for (``checks``), with the options
+the configuration gives; keeps what the configuration selects for each file;
+drops what suppression comments silence (reporting the comments that silence
+nothing); and gives each diagnostic its severity: the configured one, else the
+one its rule chose, else its rule's default. ``check``, ``lint``, ``inertia``,
+``tree`` and ``graph`` all go through it, so that configuration and ``noqa``
+comments mean the same everywhere.
+"""
+
+from __future__ import annotations
+
+from ..diagnostics import Diagnostic
+from ..model.load import Loaded
+from ..read.document import SUPPRESSION_MARK
+from ..rules import REGISTRY, Rule
+from . import suppressions
+from .config import Config
+
+CHECKS = ("none", "check", "all")
+"""Which rules a command runs: only those that judge the tree's structure ("none"),
+those of ``check``, or every rule ("all")."""
+
+
+def runs(rule: Rule, checks: str) -> bool:
+    """Whether a command running ``checks`` runs the check ``rule``."""
+    return rule.function is not None and (rule.always or checks == "all" or (checks == "check" and rule.in_check))
+
+
+def ran(code: str, checks: str) -> bool:
+    """Whether the diagnostics of ``code`` can be there (a rule reported while reading always can)."""
+    rule = REGISTRY.get(code)
+    return rule is None or rule.function is None or runs(rule, checks)
+
+
+def run_rules(loaded: Loaded, config: Config, checks: str) -> list[Diagnostic]:
+    """What the rules find, each with the options the configuration gives it. A rule
+    the configuration turns off everywhere does not run."""
+    if not loaded.modelled:
+        return []
+    options = config.rule_options()
+    found: list[Diagnostic] = []
+    for rule in REGISTRY.values():
+        if runs(rule, checks) and (rule.always or config.enabled(rule)):
+            found.extend(rule.run(loaded, options.get(rule.code)))
+    return found
+
+
+def lint(loaded: Loaded, config: Config, checks: str = "all") -> list[Diagnostic]:
+    """Every diagnostic of a loaded model that its configuration and suppressions leave."""
+    return configure(loaded, [*loaded.diagnostics, *run_rules(loaded, config, checks)], config, checks)
+
+
+def configure(loaded: Loaded, diagnostics: list[Diagnostic], config: Config, checks: str = "all") -> list[Diagnostic]:
+    """``diagnostics`` found on ``loaded``, after configuration and suppression comments,
+    each with its severity, in file order. A suppression naming a rule that did not
+    run under ``checks`` is not reported as unused."""
+    path = loaded.path
+    document = loaded.document
+
+    def enabled(code: str, file: str) -> bool:
+        return config.enabled(REGISTRY[code], path, file)
+
+    unreadable = not document.readable  # why nothing was checked is never selected away, nor silenced
+    selected = [d for d in diagnostics if unreadable or enabled(d.code, d.path)]
+    if unreadable:
+        found = []
+    else:
+        files = {document.shown, *document.includes}
+        files |= {place.file for d in selected for place in (d.location, *d.location.trace)}
+        if document.may_suppress is False:  # told while its bytes were read
+            files.discard(document.shown)
+        texts = ((file, document.sources.text(file, containing=SUPPRESSION_MARK)) for file in sorted(files))
+        found = [s for file, text in texts if text is not None for s in suppressions.parse(file, text)]
+    kept = suppressions.apply(selected, found, lambda code: ran(code, checks) and enabled(code, path))
+    kept = [d for d in kept if d.code not in ("U001", "U002") or enabled(d.code, d.path)]
+    kept = [with_severity(d, config) for d in kept]
+    kept.sort(key=Diagnostic.sort_key)
+    return kept
+
+
+def with_severity(diagnostic: Diagnostic, config: Config) -> Diagnostic:
+    """The diagnostic with its severity: configured, else chosen by its rule, else the rule's default."""
+    default = diagnostic.severity or REGISTRY[diagnostic.code].severity
+    return diagnostic._replace(severity=config.severity_of(diagnostic.code, default))

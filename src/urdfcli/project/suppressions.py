@@ -1,0 +1,151 @@
+"""Suppression comments in the sources of a description.
+
+``<!-- urdfcli: noqa: CODE1, CODE2 -->`` silences those rules for one element
+and everything inside it, whatever line of it a diagnostic points at: the
+element whose start tag shares a line with the comment (any line of a tag
+written over several), or else the element just below the comment. A bare
+``<!-- urdfcli: noqa -->`` silences every rule there. ``<!-- urdfcli:
+noqa-file: CODE1 -->`` anywhere in a file silences them for every diagnostic
+in that file. Codes, code prefixes (``I``) and rule names
+(``visual-without-collision``) are accepted, as in the configuration. A
+diagnostic on an element a xacro macro made is silenced too by a comment on
+the macro call (any call in its trace). A suppression that silences nothing is
+reported (U001), and so is a word that names no rule (U002).
+
+Two calls: :func:`parse` reads the comments of one source text, :func:`apply`
+filters diagnostics with them.
+"""
+
+from __future__ import annotations
+
+import bisect
+import re
+from typing import NamedTuple
+
+from ..diagnostics import Diagnostic, Location
+from ..read.document import SUPPRESSION_MARK
+from ..read.positions import Source
+from ..rules import REGISTRY
+from .config import matches, selector
+
+COMMENT = re.compile(r"<!--\s*urdfcli\s*:\s*(noqa-file|noqa)(?![\w-])\s*(?::\s*(.*?))?\s*-->", re.DOTALL)
+
+Position = tuple[int, int]  # line, column (1-based)
+
+
+class Suppression(NamedTuple):
+    file: str  # as diagnostics name it
+    line: int  # where the comment is
+    column: int
+    selectors: tuple[str, ...]  # codes or prefixes
+    regions: tuple[tuple[Position, Position], ...] | None  # the elements it covers, [start, end); None: the whole file
+    target: int | None  # the line of the (first) element it silences
+    unknown: tuple[str, ...]  # words that name no rule
+    bare: bool  # no codes: every rule
+    used: set[str]  # the selectors that silenced something ("" for a bare noqa), filled in by apply
+
+    @property
+    def kind(self) -> str:
+        return "noqa-file" if self.regions is None else "noqa"
+
+    def selecting(self, code: str) -> str | None:
+        """The selector of this suppression that names ``code``, if any."""
+        if self.bare:
+            return ""
+        return next((s for s in self.selectors if matches(s, code)), None)
+
+    def covers(self, diagnostic: Diagnostic) -> bool:
+        places = (diagnostic.location, *diagnostic.location.trace)
+        return any(place.file == self.file and self._inside(place.line, place.column) for place in places)
+
+    def _inside(self, line: int | None, column: int | None) -> bool:
+        if self.regions is None:
+            return True
+        if not line:
+            return False
+        if column is None:  # only the line is known: any line of the element
+            return any(start[0] <= line <= end[0] for start, end in self.regions)
+        return any(start <= (line, column) < end for start, end in self.regions)
+
+
+def parse(file: str, text: str) -> list[Suppression]:
+    """Every urdfcli suppression comment in one source text."""
+    if SUPPRESSION_MARK not in text:
+        return []
+    source = Source(text)
+    text = source.text
+    found = []
+    for match in COMMENT.finditer(text):
+        line, column = source.position(match.start())
+        words = [w for w in re.split(r"[,\s]+", match.group(2) or "") if w]
+        resolved = [(w, selector(w)) for w in words]
+        selectors = tuple(dict.fromkeys(s for _, s in resolved if s is not None))
+        unknown = tuple(w for w, s in resolved if s is None)
+        bare = not words
+        if match.group(1) == "noqa-file":
+            found.append(Suppression(file, line, column, selectors, None, None, unknown, bare, set()))
+            continue
+        regions = _targets(source, match.start(), match.end())
+        target = regions[0][0][0] if regions else line + 1
+        if not regions:  # not well-formed here: the line below, as a fallback
+            regions = [((line + 1, 1), (line + 2, 1))]
+        found.append(Suppression(file, line, column, selectors, tuple(regions), target, unknown, bare, set()))
+    return found
+
+
+def _targets(source: Source, start: int, end: int) -> list[tuple[Position, Position]]:
+    """The elements a comment at [start, end) silences: those whose start tag shares
+    a line with it, else the first element after it. Empty when unknown."""
+    spans = source.spans
+    if not spans:
+        return []
+    text = source.text
+    line_start = text.rfind("\n", 0, start) + 1
+    line_end = text.find("\n", end)
+    line_end = len(text) if line_end < 0 else line_end
+    starts = [s for s, _, _ in spans]
+    tag_ends = [t for _, t, _ in spans]
+    first = bisect.bisect_right(tag_ends, line_start)  # start tags are in order and never overlap
+    last = bisect.bisect_left(starts, line_end)
+    chosen = spans[first:last]
+    if not chosen:
+        after = bisect.bisect_left(starts, end)
+        chosen = spans[after : after + 1]
+    return [(source.position(s), source.position(e)) for s, _, e in chosen]
+
+
+def apply(diagnostics: list[Diagnostic], suppressions: list[Suppression], enabled=lambda code: True) -> list[Diagnostic]:
+    """The diagnostics no suppression covers, plus U001/U002 for the suppressions themselves.
+
+    ``enabled(code)`` tells whether a rule is on here: a suppression of a rule
+    that is off is not reported as unused.
+    """
+    kept = []
+    by_file: dict[str, list[Suppression]] = {}
+    for suppression in suppressions:
+        by_file.setdefault(suppression.file, []).append(suppression)
+    for diagnostic in diagnostics:
+        files = {diagnostic.file, *(call.file for call in diagnostic.location.trace)}
+        silenced = False
+        for suppression in (s for f in files for s in by_file.get(f, ())):
+            chosen = suppression.selecting(diagnostic.code)
+            if chosen is not None and suppression.covers(diagnostic):
+                suppression.used.add(chosen)
+                silenced = True
+        if not silenced:
+            kept.append(diagnostic)
+    known = REGISTRY
+    for suppression in suppressions:
+        where = Location(suppression.file, suppression.line, suppression.column)
+        kind = suppression.kind
+        for word in suppression.unknown:
+            kept.append(Diagnostic("U002", f"'{kind}: {word}' names no rule", where, hint="`urdfcli rules` lists the codes and names"))
+        scope = "in this file" if suppression.target is None else f"on the element at line {suppression.target}"
+        if suppression.bare:
+            if "" not in suppression.used:
+                kept.append(Diagnostic("U001", f"'{kind}' silences nothing: no diagnostic {scope}", where, hint="remove it"))
+            continue
+        for chosen in suppression.selectors:
+            if chosen not in suppression.used and any(enabled(code) for code in known if matches(chosen, code)):
+                kept.append(Diagnostic("U001", f"'{kind}: {chosen}' silences nothing: no {chosen} {scope}", where, hint="remove it"))
+    return kept

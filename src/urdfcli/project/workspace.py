@@ -1,0 +1,510 @@
+"""Libraries, models and the includes between them: which models a changed file affects.
+
+A xacro file is a *library* when, outside its macro definitions, it writes no
+``<link>``, no ``<joint>`` and no macro call: it defines macros and properties,
+includes other files, or holds ``<gazebo>`` or ``<material>`` blocks for links
+made elsewhere. Any other file is a *model*: every plain URDF, a xacro file
+that makes a link, a joint or calls a macro at its top level, and a file that
+cannot be read as XML (loading it says why). Only ``xacro:if`` and
+``xacro:unless`` blocks are looked into; when in doubt a file is a library,
+because a library is never reported as a broken robot.
+
+A library given to ``check`` or ``lint`` is checked through the top-level
+models that include it, directly or through other files: the models of its
+repository or workspace ``src/`` (see :func:`search_roots`) that no other file
+includes, plus those listed in ``[tool.urdfcli] models``. Which models include it is decided by reading the
+``xacro:include`` elements of every xacro file there, without expanding
+anything: ``$(find pkg)``, ``$(arg x)`` with a default, ``$(dirname)``,
+``$(env X)`` and ``${name}`` of a plain property are resolved; an include
+that stays unresolved is matched by its file name, or, when even that is
+computed, taken to include anything. Only the models found are expanded.
+"""
+
+from __future__ import annotations
+
+import functools
+import os
+import re
+from collections.abc import Callable, Iterable
+from fnmatch import fnmatchcase
+from pathlib import Path
+from typing import NamedTuple
+
+from ..diagnostics import Diagnostic, Location, Severity
+from ..read.document import STDIN, XACRO_NAMESPACES, local_name, namespace_of
+from ..read.packages import MAX_SCAN_DIRS, SKIP_DIRS, PackageIndex, PackageResolver
+from ..read.xml import XmlError, parse
+from ..report.result import Library, Result
+
+XACRO_SUFFIXES = (".xacro", ".urdf")
+# xacro elements that make nothing by themselves; any other one (a macro call,
+# xacro:element, xacro:insert_block, xacro:call) makes part of a robot
+_DECLARATIONS = {"include", "property", "arg", "macro"}
+_BLOCKS = {"if", "unless"}
+_SUBSTITUTION = re.compile(r"\$\(\s*(\w+)\s*([^()]*?)\s*\)|\$\{\s*([A-Za-z_]\w*)\s*\}")
+
+
+class Source(NamedTuple):
+    """What reading a file (not expanding it) tells about it."""
+
+    path: Path  # resolved
+    kind: str  # "model" or "library"
+    includes: tuple[str, ...] = ()  # filename attributes of its xacro:include elements, as written
+    arguments: tuple[tuple[str, str], ...] = ()  # xacro:arg defaults
+    properties: tuple[tuple[str, str], ...] = ()  # xacro:property values written as attributes
+
+
+def _is_xacro(element) -> bool:
+    return element.prefix == "xacro" or namespace_of(element.tag) in XACRO_NAMESPACES
+
+
+def _parsed(data: bytes):
+    """The root element of ``data``, or None when it cannot be read (loading it says why)."""
+    try:
+        return parse(data)
+    except XmlError:
+        return None
+
+
+def read_source(path: Path, data: bytes | None = None) -> Source:
+    """Read a file's kind and includes. Never raises: an unreadable file is a model."""
+    try:
+        data = path.read_bytes() if data is None else data
+    except OSError:
+        return Source(path, "model")
+    named_xacro = path.name.endswith(".xacro")
+    if not named_xacro and b"xacro" not in data:
+        return Source(path, "model")  # plain URDF
+    root = _parsed(data)
+    if root is None:
+        return Source(path, "model")  # loading it reports the syntax error
+    elements = list(root.iter())
+    if not named_xacro and not any(_is_xacro(e) for e in elements) and not set(root.nsmap.values()) & XACRO_NAMESPACES:
+        return Source(path, "model")
+    makes = False
+    stack = list(root)
+    while stack and not makes:
+        element = stack.pop()
+        local = local_name(element.tag)
+        if _is_xacro(element):
+            if local in _BLOCKS:
+                stack.extend(element)
+            elif local not in _DECLARATIONS:
+                makes = True
+        elif local in ("link", "joint"):
+            makes = True
+    includes, arguments, properties = [], [], []
+    for element in elements:
+        if not _is_xacro(element):
+            continue
+        local = local_name(element.tag)
+        name = element.get("name")
+        if local == "include" and element.get("filename"):
+            includes.append(element.get("filename"))
+        elif local == "arg" and name and element.get("default") is not None:
+            arguments.append((name, element.get("default")))
+        elif local == "property" and name and element.get("value") is not None:
+            properties.append((name, element.get("value")))
+    return Source(path, "model" if makes else "library", tuple(includes), tuple(arguments), tuple(properties))
+
+
+class Include(NamedTuple):
+    """Where an include leads, as far as it can be told without expanding: a file,
+    a glob, only a file name, or (``kind == "any"``) nothing known."""
+
+    kind: str  # "path", "glob", "name" or "any"
+    value: str = ""
+
+    def may_be(self, file: Path) -> bool:
+        if self.kind == "path":
+            return Path(self.value) == file
+        if self.kind == "glob":
+            return fnmatchcase(str(file), self.value)
+        if self.kind == "name":
+            return file.name == self.value
+        return True
+
+
+def resolve_include(text: str, source: Source, find: Callable[[str], Path | None], arguments: dict[str, str] | None = None) -> Include:
+    """Where ``<xacro:include filename=text>`` in ``source`` leads, statically."""
+    values = {**dict(source.arguments), **(arguments or {})}
+    properties = dict(source.properties)
+
+    def substitute(match: re.Match) -> str:
+        function, argument, prop = match.group(1), match.group(2), match.group(3)
+        if prop is not None:
+            value = properties.get(prop)
+        elif function == "find":
+            folder = find(argument)
+            value = str(folder) if folder is not None else None
+        elif function == "arg":
+            value = values.get(argument)
+        elif function == "dirname":
+            value = str(source.path.parent)
+        elif function in ("env", "optenv"):
+            name, _, default = argument.partition(" ")
+            value = os.environ.get(name, default if function == "optenv" else None)
+        else:
+            value = None
+        return match.group(0) if value is None else value
+
+    for _ in range(5):  # a default may itself hold a substitution
+        substituted = _SUBSTITUTION.sub(substitute, text)
+        if substituted == text:
+            break
+        text = substituted
+    if "$" not in text:
+        path = Path(text) if Path(text).is_absolute() else source.path.parent / text
+        path = Path(os.path.normpath(path))
+        if any(c in text for c in "*?["):
+            return Include("glob", str(path))
+        try:
+            return Include("path", str(path.resolve()))
+        except OSError:
+            return Include("path", str(path))
+    name = re.split(r"[/\\]", text)[-1]
+    if name and "$" not in name and not any(c in name for c in "*?["):
+        return Include("name", name)
+    return Include("any")
+
+
+def search_roots(file: Path, packages: PackageIndex) -> tuple[list[Path], bool]:
+    """The folders whose models may include ``file``, and whether to search below
+    them: those the package resolver searches for its siblings (repository,
+    workspace ``src/``); for a file in no package, the repository holding it,
+    else its own folder alone."""
+    package = packages.enclosing_package(file.parent)
+    if package is not None:
+        roots = packages.local_roots(package)
+        # A repository in a folder named src (~/src/my_robot) is searched beyond only
+        # when that src is a ROS workspace's: the package look-up widens only when it
+        # must, a search for models would read every file there on every commit.
+        return [r for r in roots if r == roots[0] or _workspace_src(r)], True
+    for folder in file.parents:
+        if (folder / ".git").exists():
+            return [folder], True
+    return [file.parent], False
+
+
+_WORKSPACE_MARKS = ("build", "install", "log", "devel", ".catkin_workspace", ".catkin_tools", "colcon.meta")
+
+
+def _workspace_src(src: Path) -> bool:
+    """Whether a folder named src holds a ROS workspace: built or marked beside it, or
+    holding packages one or two levels down in more than one of its folders."""
+    if any((src.parent / mark).exists() for mark in _WORKSPACE_MARKS):
+        return True
+    try:
+        children = [c for c in src.iterdir() if c.is_dir() and not c.name.startswith(".")]
+    except OSError:
+        return False
+    holding = sum(1 for c in children if (c / "package.xml").is_file() or any(c.glob("*/package.xml")))
+    return holding > 1
+
+
+def source_files(root: Path, recursive: bool = True) -> Iterable[Path]:
+    """``*.xacro`` and ``*.urdf`` files below a folder, skipping hidden, build and ignored folders."""
+    budget = MAX_SCAN_DIRS
+    stack = [root]
+    while stack and budget > 0:
+        folder = stack.pop()
+        budget -= 1
+        if folder != root and ((folder / "CATKIN_IGNORE").exists() or (folder / "COLCON_IGNORE").exists()):
+            continue
+        try:
+            entries = sorted(folder.iterdir())
+        except OSError:
+            continue
+        for entry in entries:
+            if entry.name.startswith("."):
+                continue
+            if entry.name.endswith(XACRO_SUFFIXES):
+                if entry.is_file():
+                    yield entry
+            elif recursive and entry.name not in SKIP_DIRS and entry.is_dir():
+                stack.append(entry)
+
+
+class Index:
+    """Sources read once each (the files of the folders searched, and any file an
+    include leads to), and the includes between them."""
+
+    def __init__(self, package_paths: tuple[str, ...] = (), packages: PackageIndex | None = None):
+        self.sources: dict[Path, Source] = {}
+        self.scanned: dict[Path, list[Path]] = {}  # a searched folder -> its files
+        self._package_paths = package_paths
+        self.packages = packages if packages is not None else PackageIndex()
+        self._resolvers: dict[Path | None, PackageResolver] = {}
+        self._edges: dict[tuple[Path, tuple], list[Include]] = {}
+        self._kinds: dict[Path, str] = {}
+
+    def scan(self, roots: list[Path], recursive: bool = True) -> list[Path]:
+        """The source files below the folders (read once per folder)."""
+        files: list[Path] = []
+        for root in roots:
+            if root not in self.scanned:
+                self.scanned[root] = [file.resolve() for file in source_files(root, recursive)]
+            files += self.scanned[root]
+        return list(dict.fromkeys(files))
+
+    def kind(self, file: Path, visiting: frozenset = frozenset()) -> str:
+        """"model" or "library": a file that makes nothing itself but includes a
+        model (a robot assembled from included files) is a model too."""
+        if file not in self._kinds:
+            kind = self.source(file).kind
+            if kind == "library" and file not in visiting:
+                for include in self.includes(file):
+                    target = Path(include.value)
+                    if include.kind == "path" and target.is_file() and self.kind(target, visiting | {file}) == "model":
+                        kind = "model"
+                        break
+            self._kinds[file] = kind
+        return self._kinds[file]
+
+    def _find(self, file: Path) -> Callable[[str], Path | None]:
+        """The package look-up the expansion of ``file`` would make (shared per package)."""
+        package = self.packages.enclosing_package(file.parent)
+        if package not in self._resolvers:
+            try:
+                self._resolvers[package] = self.packages.resolver(self._package_paths, file)
+            except ValueError:  # a bad -P is reported when the model loads
+                self._resolvers[package] = self.packages.resolver((), file)
+        return self._resolvers[package].find
+
+    def source(self, file: Path) -> Source:
+        if file not in self.sources:
+            self.sources[file] = read_source(file)
+        return self.sources[file]
+
+    def includes(self, file: Path, arguments: dict[str, str] | None = None) -> list[Include]:
+        key = (file, tuple(sorted((arguments or {}).items())))
+        if key not in self._edges:
+            source = self.source(file)
+            self._edges[key] = [resolve_include(text, source, self._find(file), arguments) for text in source.includes]
+        return self._edges[key]
+
+    def top_level_models(self, files: list[Path]) -> list[Path]:
+        """The models among ``files`` that none of them includes (by a resolved path)."""
+        included = {Path(i.value) for file in files for i in self.includes(file) if i.kind == "path"}
+        return sorted(f for f in files if f not in included and self.kind(f) == "model")
+
+    def reaches(self, model: Path, library: Path, arguments: dict[str, str] | None = None) -> bool:
+        """Whether expanding ``model`` may read ``library``, through any chain of includes."""
+        seen = {model}
+        stack = [(model, arguments)]
+        while stack:
+            file, args = stack.pop()
+            for include in self.includes(file, args):
+                if include.may_be(library):
+                    return True
+                if include.kind == "path":
+                    nexts = [Path(include.value)]
+                else:
+                    known = {f for files in self.scanned.values() for f in files} | set(self.sources)
+                    nexts = [f for f in known if include.may_be(f)]
+                for nxt in nexts:
+                    if nxt not in seen and nxt.is_file():
+                        seen.add(nxt)
+                        stack.append((nxt, None))  # arguments reach included files too, but rarely name includes there
+        return False
+
+
+class Target(NamedTuple):
+    """One expansion to run: a model with an argument set, or a library on its own."""
+
+    path: str
+    arguments: tuple[tuple[str, str], ...] = ()  # from [tool.urdfcli] models
+    alone: bool = False
+    unchecked: str = ""  # alone: why the models that include it could not check it
+
+    @property
+    def label(self) -> str:
+        if not self.arguments:
+            return self.path
+        return f"{self.path} [{' '.join(f'{k}:={v}' for k, v in self.arguments)}]"
+
+
+class Entry(NamedTuple):
+    """A given file: a model and its runs, or a library and the models it is checked through."""
+
+    path: str
+    targets: list[Target]
+    library: bool = False
+
+
+def shown(path: Path) -> str:
+    """A path as diagnostics name files: relative to the working directory when below it."""
+    try:
+        relative = os.path.relpath(path)
+    except ValueError:
+        return str(path)
+    return str(path) if relative.startswith("..") else relative
+
+
+def model_targets(path: str, argument_sets: list[dict[str, str]] | None) -> list[Target]:
+    return [Target(path, tuple(arguments.items())) for arguments in (argument_sets or [{}])]
+
+
+def plan(paths: list[str], config_for, package_paths: tuple[str, ...] = (), packages: PackageIndex | None = None) -> list[Entry]:
+    """What to run for the given files: each model once per argument set, each
+    library through the models that may include it (none: on its own).
+
+    ``config_for(path)`` gives the configuration of a file (for ``models`` and
+    package paths). Raises what ``config_for`` raises.
+    """
+    packages = packages if packages is not None else PackageIndex()
+    entries: list[Entry] = []
+    index: Index | None = None
+    for path in paths:
+        config = config_for(path)
+        # only a file named .xacro can be a library: a plain URDF is never read twice
+        library = Path(path).resolve() if path != STDIN and path.endswith(".xacro") else None
+        if library is not None and read_source(library).kind == "library":  # else no look-up at all
+            index = index or Index(config.package_paths + package_paths, packages)
+            if index.kind(library) == "model":
+                library = None
+        else:
+            library = None
+        if library is None or index is None:
+            entries.append(Entry(path, model_targets(path, config.argument_sets(path))))
+            continue
+        roots, recursive = search_roots(library, packages)
+        candidates = index.top_level_models(index.scan(roots, recursive))
+        for model, _ in config.models:
+            if model not in candidates and model.is_file():
+                candidates.append(model)
+        targets: list[Target] = []
+        for model in candidates:
+            if model == library:
+                continue
+            model_config = config_for(str(model))
+            sets = model_config.argument_sets(str(model))
+            if any(index.reaches(model, library, arguments) for arguments in (sets or [None])):
+                targets += model_targets(shown(model), sets)
+        entries.append(Entry(path, targets, library=True))
+    return entries
+
+
+def _same(file: str, library: Path) -> bool:
+    try:
+        return Path(file).resolve() == library
+    except OSError:
+        return False
+
+
+def _same_input(file: str, path: str) -> bool:
+    """Whether a diagnostic's file is the input ``path``: by name, else resolved."""
+    if path == STDIN:
+        return False
+    return file == path or _same(file, Path(path).resolve())
+
+
+def _key(diagnostic: Diagnostic) -> tuple:
+    location = diagnostic.location
+    return (diagnostic.code, location.file, location.line, location.column, diagnostic.message)
+
+
+def assemble(entries: list[Entry], outcome: Callable[[Target], Result | str]) -> tuple[list[Result], list[str]]:
+    """The results to show, in the order the files were given, and the reasons
+    some inputs could not be read.
+
+    ``outcome(target)`` runs a target (once: the caller remembers), giving its
+    result or the one-line reason it could not be read. A diagnostic
+    located in another file than the result's own, already shown for an
+    earlier result, is not shown again: a library shared by three models
+    reports its mistakes once.
+    """
+    results, unreadable, shown_keys = [], [], set()
+    for entry in entries:
+        if not entry.library:
+            for target in entry.targets:
+                result = outcome(target)
+                if isinstance(result, str):
+                    unreadable.append(result)
+                    continue
+                is_own = functools.cache(lambda file, path=entry.path: _same_input(file, path))
+                result.diagnostics = [d for d in result.diagnostics if _fresh(d, is_own(d.path), shown_keys)]
+                results.append(result)
+            continue
+        results.append(_library_result(entry, outcome, shown_keys, unreadable))
+    return results, unreadable
+
+
+def _fresh(diagnostic: Diagnostic, in_own_file: bool, shown_keys: set) -> bool:
+    """Whether to show a diagnostic: always in its input's own file, elsewhere the first time."""
+    key = _key(diagnostic)
+    if not in_own_file and key in shown_keys:
+        return False
+    shown_keys.add(key)
+    return True
+
+
+def _library_result(entry: Entry, outcome, shown_keys: set, unreadable: list[str]) -> Result:
+    library = Path(entry.path).resolve()
+    checked_through: list[str] = []
+    notes: list[str] = []  # why a model could not be used, or that none includes it
+    found: list[Diagnostic] = []
+    needing: list[str] = []  # models that include it but cannot be expanded without arguments
+    unread: list[tuple[str, str]] = []  # models that expand but do not read it: (label, with which arguments)
+    for target in entry.targets:
+        model = outcome(target)
+        if isinstance(model, str):
+            notes.append(f"not checked through {target.label}: {model}")
+            continue
+        if model.needs_argument is not None:  # the model cannot be expanded as it is: say how to make it, do not fail the library
+            needing.append(f"{target.label} needs '{model.needs_argument}'")
+            notes.append(
+                f"not checked through {target.label}: it needs xacro argument '{model.needs_argument}'; "
+                "list the argument sets it is checked with in [tool.urdfcli] models"
+            )
+            continue
+        missing = next((d for d in model.diagnostics if d.code == "X004" and not _same(d.path, library)), None)
+        if missing is not None:  # a package this machine lacks: the model cannot be expanded here
+            notes.append(f"not checked through {target.label}: {missing.message}")
+            continue
+        reached = any(_same(f, library) for f in model.includes) or any(_same(d.path, library) for d in model.diagnostics)
+        if not reached:  # an include under xacro:if, or a file name made from an argument
+            unread.append((target.label, "the arguments it is checked with" if target.arguments else "its default arguments"))
+            continue
+        checked_through.append(target.label)
+        # mistakes written in the library, and whatever breaks a model that uses it
+        found += [d for d in model.diagnostics if _same(d.path, library) or d.severity is Severity.ERROR]
+    if not checked_through:
+        # Checked on its own; when models include it but none could check it, that is a gap (X006) the config closes.
+        notes += [
+            f"not checked through {label}: it does not read this file with {arguments}; "
+            "list argument sets under which it does in [tool.urdfcli] models"
+            for label, arguments in unread
+        ]
+        reasons = needing + [f"{label} does not read it with {arguments}" for label, arguments in unread]
+        alone = outcome(Target(entry.path, alone=True, unchecked="; ".join(reasons)))
+        if isinstance(alone, str):
+            unreadable.append(alone)
+        else:
+            found += alone.diagnostics
+            if not entry.targets and not alone.diagnostics:  # its own mistakes say enough
+                notes.append("a xacro library that no model includes: only its own xacro was checked")
+    # One mistake written in a macro shows once, however many calls and models
+    # made copies of it (the messages differ only by the names the calls gave).
+    places = set()
+    diagnostics = []
+    for diagnostic in sorted(found, key=Diagnostic.sort_key):
+        place = _key(diagnostic)[:4]
+        if place not in places:
+            places.add(place)
+            if _fresh(diagnostic, False, shown_keys):
+                diagnostics.append(diagnostic)
+    return Result(entry.path, diagnostics, library=Library(tuple(checked_through), tuple(notes)))
+
+
+def unchecked_library(path: str, unchecked: str) -> Diagnostic:
+    """X006: a library that no model including it could check."""
+    return Diagnostic(
+        "X006",
+        f"xacro library checked on its own only: no model that includes it could check it ({unchecked})",
+        Location("<stdin>" if path == STDIN else path),
+        hint='list their argument sets in [tool.urdfcli] models, e.g. models = { "urdf/robot.urdf.xacro" = [["name:=robot"]] }',
+    )
+
+
+__all__ = ["Entry", "Index", "Source", "Target", "assemble", "plan", "read_source", "resolve_include", "search_roots", "unchecked_library"]

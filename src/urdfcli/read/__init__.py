@@ -1,0 +1,1 @@
+"""Reading: XML (one reader), xacro in a bounded worker, ROS packages, source positions."""

@@ -1,0 +1,253 @@
+"""Find ROS packages without ROS: `$(find pkg)` and `package://pkg/...`.
+
+Sources are searched in this order, each scanned only when an earlier one
+did not have the package:
+
+1. ``-P/--package-path`` options: ``NAME=DIR``, or a directory scanned for
+   ``package.xml`` files;
+2. ``ROS_PACKAGE_PATH`` (directories scanned);
+3. ``AMENT_PREFIX_PATH`` (``PREFIX/share/NAME``);
+4. the package holding the input file;
+5. its siblings in the repository (the nearest folder above it holding
+   ``.git``), or in the workspace ``src/`` folder when that comes first;
+6. then, when that repository sits inside a workspace ``src/`` folder (each
+   repository cloned into ``ws/src/``, as ``vcs import`` lays them out), the
+   packages of the whole workspace.
+
+A package's name is the ``<name>`` in its ``package.xml``, never its folder name.
+"""
+
+from __future__ import annotations
+
+import os
+from collections.abc import Iterable, Iterator
+from functools import cached_property
+from pathlib import Path
+
+from .xml import XmlError, parse
+
+SKIP_DIRS = {"build", "install", "log", "devel", "node_modules", "__pycache__", "site-packages"}
+MAX_SCAN_DEPTH = 8
+MAX_SCAN_DIRS = 20_000
+
+
+class PackageError(ValueError):
+    """A ``-P`` option that is not ``NAME=DIR`` or an existing directory."""
+
+
+class PackageIndex:
+    """What a session learns about packages, learnt once: each manifest's name,
+    each folder's packages, each folder's enclosing package and sibling roots. A
+    manifest or folder that changes on disk is read again."""
+
+    def __init__(self) -> None:
+        self._names: dict[tuple[str, int, int], str | None] = {}
+        self._scans: dict[tuple[Path, int], list[tuple[str, Path]]] = {}
+        self._enclosing: dict[Path, Path | None] = {}
+        self._roots: dict[Path, list[Path]] = {}
+
+    def package_name(self, manifest: Path) -> str | None:
+        """The ``<name>`` declared in a package.xml, or None when unreadable."""
+        try:
+            state = os.stat(manifest)
+        except OSError:
+            return None
+        key = (str(manifest), state.st_mtime_ns, state.st_size)
+        if key not in self._names:
+            self._names[key] = read_package_name(manifest)
+        return self._names[key]
+
+    def scan(self, root: Path) -> list[tuple[str, Path]]:
+        """(name, dir) for every package below root, without entering a package."""
+        try:
+            key = (root, os.stat(root).st_mtime_ns)
+        except OSError:
+            return []
+        if key not in self._scans:
+            self._scans[key] = list(_walk(root, self.package_name))
+        return self._scans[key]
+
+    def enclosing_package(self, start: Path) -> Path | None:
+        """The nearest folder at or above ``start`` that holds a package.xml."""
+        found = []
+        folder = start
+        while folder not in self._enclosing:
+            found.append(folder)
+            if (folder / "package.xml").is_file():
+                self._enclosing[folder] = folder
+                break
+            if folder.parent == folder:
+                self._enclosing[folder] = None
+                break
+            folder = folder.parent
+        answer = self._enclosing[folder]
+        for seen in found:
+            self._enclosing[seen] = answer
+        return answer
+
+    def local_roots(self, package_dir: Path) -> list[Path]:
+        """The folders whose packages are siblings of package_dir, nearest first: the
+        repository root or workspace ``src`` (whichever comes first), then a workspace
+        ``src`` above that repository; else the package's parent folder."""
+        if package_dir not in self._roots:
+            self._roots[package_dir] = _local_roots(package_dir)
+        return list(self._roots[package_dir])
+
+    def resolver(self, options: Iterable[str] = (), input_file: Path | None = None) -> PackageResolver:
+        return PackageResolver(options, input_file, index=self)
+
+
+def read_package_name(manifest: Path) -> str | None:
+    """The ``<name>`` declared in a package.xml, or None when unreadable."""
+    try:
+        root = parse(manifest.read_bytes())
+    except (OSError, XmlError):
+        return None
+    name = root.findtext("name")
+    return name.strip() if name and name.strip() else None
+
+
+def _walk(root: Path, package_name) -> Iterator[tuple[str, Path]]:
+    budget = MAX_SCAN_DIRS
+    stack = [(root, 0)]
+    while stack and budget > 0:
+        folder, depth = stack.pop()
+        budget -= 1
+        manifest = folder / "package.xml"
+        if manifest.is_file():
+            name = package_name(manifest)
+            if name:
+                yield name, folder
+            continue  # ROS packages do not nest
+        if depth >= MAX_SCAN_DEPTH or (folder / "CATKIN_IGNORE").exists() or (folder / "COLCON_IGNORE").exists():
+            continue
+        try:
+            children = sorted(
+                (p for p in folder.iterdir() if p.is_dir() and not p.name.startswith(".") and p.name not in SKIP_DIRS),
+                reverse=True,
+            )
+        except OSError:
+            continue
+        stack.extend((child, depth + 1) for child in children)
+
+
+def _local_roots(package_dir: Path) -> list[Path]:
+    roots: list[Path] = []
+    for folder in package_dir.parents:
+        if folder.name == "src":
+            roots.append(folder)
+            break
+        if not roots and (folder / ".git").exists():
+            roots.append(folder)
+    return roots or [package_dir.parent]
+
+
+class PackageResolver:
+    def __init__(self, options: Iterable[str] = (), input_file: Path | None = None, env=None, index: PackageIndex | None = None):
+        env = os.environ if env is None else env
+        self.index = index if index is not None else PackageIndex()
+        self._explicit: dict[str, Path] = {}
+        self._scan_roots: list[Path] = []
+        for option in options:
+            if "=" in option:
+                name, _, folder = option.partition("=")
+                if not name or not folder:
+                    raise PackageError(f"--package-path {option!r}: expected NAME=DIR or DIR")
+                self._explicit.setdefault(name, Path(folder).expanduser().resolve())
+            else:
+                folder = Path(option).expanduser()
+                if not folder.is_dir():
+                    raise PackageError(f"--package-path {option!r}: not a directory")
+                self._scan_roots.append(folder.resolve())
+        self._scan_roots += [Path(p) for p in env.get("ROS_PACKAGE_PATH", "").split(os.pathsep) if p]
+        self._ament = [Path(p) for p in env.get("AMENT_PREFIX_PATH", "").split(os.pathsep) if p]
+        self._input_file = input_file
+        self._found: dict[str, Path] = {}
+        self._scanned: set[Path] = set()
+        self._answers: dict[str, Path | None] = {}  # every look-up, found or not
+
+    def settings(self) -> tuple:
+        """Where it looks, as given: two resolvers of equal settings find the same packages."""
+        return (tuple(self._explicit.items()), tuple(self._scan_roots), tuple(self._ament), self._input_file)
+
+    @cached_property
+    def _own(self) -> Path | None:
+        """The package the input is in: looked for only when a look-up needs it."""
+        return self.index.enclosing_package(self._input_file.resolve().parent) if self._input_file else None
+
+    @cached_property
+    def _local_roots(self) -> list[Path]:
+        return self.index.local_roots(self._own) if self._own else []
+
+    def where(self) -> str:
+        """Where packages were looked for, as ``(looked in ...)`` for error messages."""
+        places = [f"-P {name}={path}" for name, path in self._explicit.items()]
+        places += [str(p) for p in self._scan_roots]
+        places += [f"{p}/share" for p in self._ament]
+        places += [str(p) for p in self._local_roots]
+        if not places:
+            return "(the input is not inside a package and no package path is set: use -P NAME=DIR)"
+        return f"(looked in {', '.join(places)})"
+
+    def _scan_into_cache(self, root: Path) -> None:
+        if root in self._scanned:
+            return
+        self._scanned.add(root)
+        for name, folder in self.index.scan(root):
+            self._found.setdefault(name, folder)
+
+    def find(self, name: str) -> Path | None:
+        """The folder of package ``name``, or None; each name is looked up once."""
+        if name not in self._answers:
+            self._answers[name] = self._find(name)
+        return self._answers[name]
+
+    def _find(self, name: str) -> Path | None:
+        if not name:  # package:///file: no look-up may answer it (PREFIX/share/ would)
+            return None
+        if name in self._explicit:
+            return self._explicit[name]
+        if name in self._found:
+            return self._found[name]
+        for root in self._scan_roots:
+            self._scan_into_cache(root)
+            if name in self._found:
+                return self._found[name]
+        for prefix in self._ament:
+            share = prefix / "share" / name
+            if share.is_dir():
+                return share
+        if self._own is not None:
+            if self.index.package_name(self._own / "package.xml") == name:
+                return self._own
+            for root in self._local_roots:  # the repository first, the whole workspace only when needed
+                self._scan_into_cache(root)
+                if name in self._found:
+                    break
+        return self._found.get(name)
+
+    def misnamed(self, name: str) -> tuple[Path, str] | None:
+        """A folder called ``name``, among the packages looked at, whose package.xml
+        gives another name: (folder, that name). What a look-up by folder name missed."""
+        known = list(self._found.items())
+        if self._own is not None:
+            known.append((self.index.package_name(self._own / "package.xml") or "", self._own))
+        for package, folder in known:
+            if name and package and folder.name == name and package != name:
+                return folder, package
+        return None
+
+    def resolve_uri(self, uri: str, base_dir: Path | None = None) -> Path | None:
+        """The file on disk a mesh or texture URI names; never fetched from a network."""
+        from urllib.parse import unquote, urlparse  # (here: xacro's worker looks up packages, not URIs)
+
+        parsed = urlparse(uri)
+        if parsed.scheme == "package":
+            folder = self.find(parsed.netloc)
+            return folder / unquote(parsed.path.lstrip("/")) if folder else None
+        if parsed.scheme == "file":
+            return Path(unquote(parsed.path))
+        if parsed.scheme == "" or len(parsed.scheme) == 1:  # plain or Windows-style path
+            path = Path(uri)
+            return path if path.is_absolute() or base_dir is None else base_dir / path
+        return None  # http, https, ...: never fetched

@@ -1,0 +1,345 @@
+"""Where each element of a source text starts: the line and column of its ``<``.
+
+libxml2 (lxml's ``sourceline``) gives the line where a start tag *ends*, which
+for a tag written over several lines is not where anyone looks. In well-formed
+XML a ``<`` outside comments, CDATA sections, processing instructions and the
+document type declaration always opens markup, so the element starts are the
+``<`` not followed by ``!``, ``?`` or ``/``, in document order: the order in
+which lxml's ``iter(etree.Element)`` visits the same document's elements.
+
+A session's :class:`Sources` keeps the texts for excerpts and locations.
+"""
+
+from __future__ import annotations
+
+import bisect
+import codecs
+import itertools
+import os
+import re
+from collections.abc import Iterator
+from functools import cached_property
+from pathlib import Path
+
+_AFTER_NAME = frozenset(" \t\n/>")
+_ELEMENT = re.compile(r"<(?![!?/])")
+_DOCTYPE = re.compile(r"<!DOCTYPE(?:[^\[>]|\[.*?\])*>", re.DOTALL)  # its internal subset in brackets
+# A start tag (name, attributes with quoted values that may hold '>', then '/>' or '>') or an end tag.
+_TAG = re.compile(r"""<(?:/[^>]*>|[^\s/>!?](?:[^>"'/]|/(?!>)|"[^"]*"|'[^']*')*(/?)>)""")
+_NAME = re.compile(r"<[^\s/>]+")
+_ENTITY = re.compile(r"&(#x[0-9a-fA-F]+|#[0-9]+|lt|gt|amp|quot|apos);")
+_ENTITIES = {"lt": "<", "gt": ">", "amp": "&", "quot": '"', "apos": "'"}
+_ATTRIBUTE = re.compile(r"""\s+([^\s=/>]+)\s*=\s*(?:"[^"]*"|'[^']*')""")
+_DECLARED = re.compile(rb"""\A(?:\xef\xbb\xbf)?\s*<\?xml[^>]*?\sencoding\s*=\s*["']([A-Za-z0-9._:-]{1,64})["']""")
+_ASCII_COMPATIBLE = ("utf8", "ascii", "usascii", "iso88591", "latin1")
+_BOMS = ((codecs.BOM_UTF32_LE, "utf-32"), (codecs.BOM_UTF32_BE, "utf-32"), (codecs.BOM_UTF8, "utf-8-sig"),
+         (codecs.BOM_UTF16_LE, "utf-16"), (codecs.BOM_UTF16_BE, "utf-16"))
+
+
+def _entity(match: re.Match) -> str:
+    name = match.group(1)
+    if name.startswith("#"):
+        return chr(int(name[2:], 16) if name[1] == "x" else int(name[1:]))
+    return _ENTITIES[name]
+
+
+def bom_encoding(data: bytes) -> str | None:
+    """The encoding a document's byte-order mark names, if it starts with one."""
+    return next((name for bom, name in _BOMS if data.startswith(bom)), None)
+
+
+def declared_encoding(data: bytes) -> str | None:
+    """The encoding the XML declaration names, if it names one."""
+    found = _DECLARED.match(data)
+    return found.group(1).decode("ascii") if found else None
+
+
+def ascii_compatible(data: bytes) -> bool:
+    """Whether the bytes of markup are ASCII, so that they can be searched as bytes."""
+    if bom_encoding(data) not in (None, "utf-8-sig"):
+        return False  # UTF-16 or UTF-32
+    declared = declared_encoding(data)
+    return declared is None or declared.lower().replace("-", "").replace("_", "") in _ASCII_COMPATIBLE
+
+
+def decode(data: bytes) -> str:
+    """The text of an XML document: its byte-order mark, else its declared encoding, else UTF-8."""
+    encoding = bom_encoding(data) or declared_encoding(data) or "utf-8"
+    try:
+        return data.decode(encoding, errors="replace")
+    except LookupError:
+        return data.decode("utf-8", errors="replace")
+
+
+def _markup_end(text: str, at: int) -> int | None:
+    """The end of the comment, CDATA section, processing instruction or DOCTYPE at ``at``."""
+    for opening, closing in (("<!--", "-->"), ("<![CDATA[", "]]>"), ("<?", "?>")):
+        if text.startswith(opening, at):
+            close = text.find(closing, at + len(opening))
+            return close + len(closing) if close >= 0 else None
+    doctype = _DOCTYPE.match(text, at)
+    return doctype.end() if doctype else None
+
+
+class Source:
+    """One source text, its line ends normalised as XML does (CR LF and CR read as LF)."""
+
+    def __init__(self, text: str):
+        self.text = text.replace("\r\n", "\n").replace("\r", "\n") if "\r" in text else text
+        self._asked = 0
+
+    @cached_property
+    def lines(self) -> list[str]:
+        return self.text.split("\n")
+
+    @cached_property
+    def _line_starts(self) -> list[int]:
+        starts = [0]
+        starts.extend(itertools.accumulate(len(line) + 1 for line in self.lines))
+        return starts
+
+    @cached_property
+    def _holes(self) -> list[tuple[int, int]]:
+        """Comments, CDATA, processing instructions and DOCTYPE that hold a '<' of their own."""
+        text = self.text
+        holes = []
+        # the next '<!' and '<?', each searched again only once passed (-1: none left)
+        marks = {"<!": text.find("<!"), "<?": text.find("<?")}
+        at = 0
+        while True:
+            for mark, found in marks.items():
+                if 0 <= found < at:
+                    marks[mark] = text.find(mark, at)
+            pending = [found for found in marks.values() if found >= 0]
+            if not pending:
+                return holes
+            at = min(pending)
+            end = _markup_end(text, at)
+            if end is None:  # not closed: no markup to step over
+                at += 2
+                continue
+            if text.find("<", at + 1, end) >= 0:
+                holes.append((at, end))
+            at = end
+
+    def _between_holes(self, pattern: re.Pattern, begin: int = 0, end: int | None = None) -> Iterator[re.Match]:
+        """The matches of ``pattern`` between ``begin`` and ``end``, outside the holes."""
+        end = len(self.text) if end is None else end
+        for hole_start, hole_end in self._holes:
+            if hole_start >= end:
+                break
+            if hole_end > begin:
+                yield from pattern.finditer(self.text, begin, hole_start)
+                begin = hole_end
+        yield from pattern.finditer(self.text, begin, end)
+
+    @cached_property
+    def starts(self) -> list[int]:
+        """The offset of every element's ``<``, in document order."""
+        return [match.start() for match in self._between_holes(_ELEMENT)]
+
+    def start(self, index: int, tag: str | None = None) -> int | None:
+        """The offset of the ``<`` of the element ``index`` (in document order), checked
+        against its tag when one is given. Found by scanning no further than needed:
+        a diagnostic near the top of a large model costs nearly nothing."""
+        found = self._found
+        while len(found) <= index:
+            batch = [m.start() for m in itertools.islice(self._scan, max(1024, index + 1 - len(found)))]
+            if not batch:
+                return None
+            found.extend(batch)
+        start = found[index]
+        if tag is None:
+            return start
+        if not self.text.startswith(tag, start + 1):
+            return None  # not the text of this tree
+        end = start + 1 + len(tag)
+        return start if end == len(self.text) or self.text[end] in _AFTER_NAME else None
+
+    def parents_within(self, first: int, end: int | None) -> list[int]:
+        """For the elements ``first`` to ``end`` (excluded; None: to the end of the text),
+        which must hold no element of the text before ``first``, the index of each
+        one's parent counted from ``first`` (-1 for ``first`` itself)."""
+        stop = self.start(end) if end is not None else None
+        found: list[int] = []
+        open_: list[int] = []
+        for match in self._tags(self.start(first), len(self.text) if stop is None else stop):
+            if self.text[match.start() + 1] == "/":
+                if open_:
+                    open_.pop()
+                continue
+            found.append(open_[-1] if open_ else -1)
+            if not match.group(1):
+                open_.append(len(found) - 1)
+        return found
+
+    def _tags(self, begin: int = 0, end: int | None = None) -> Iterator[re.Match]:
+        """The start and end tags between two offsets, outside comments and the like."""
+        return self._between_holes(_TAG, begin, end)
+
+    def tag(self, index: int) -> str | None:
+        """The name written in the start tag of element ``index``."""
+        start = self.start(index)
+        name = _NAME.match(self.text, start) if start is not None else None
+        return name.group()[1:] if name else None
+
+    def value(self, index: int, attribute: str) -> str | None:
+        """The value of ``attribute`` on element ``index``, entities replaced."""
+        start = self.start(index)
+        at = self.attribute(start, attribute) if start is not None else None
+        found = _ATTRIBUTE.match(self.text, at - 1) if at is not None else None
+        if found is None:
+            return None
+        written = found.group(0).split("=", 1)[1].strip()[1:-1]
+        return _ENTITY.sub(_entity, written) if "&" in written else written
+
+    @cached_property
+    def _found(self) -> list[int]:
+        return []
+
+    @cached_property
+    def _scan(self) -> Iterator[re.Match]:
+        return self._between_holes(_ELEMENT)
+
+    @cached_property
+    def spans(self) -> list[tuple[int, int, int]]:
+        """Per element in document order: offsets of its ``<``, of the end of its start
+        tag, and of the end of the element (after its end tag). Empty when the text is
+        not the well-formed document it should be."""
+        found: list[list[int]] = []
+        open_: list[int] = []
+        for match in self._tags():
+            start = match.start()
+            if self.text[start + 1] == "/":
+                if not open_:
+                    return []
+                found[open_.pop()][2] = match.end()
+            else:
+                found.append([start, match.end(), match.end()])
+                if not match.group(1):
+                    open_.append(len(found) - 1)
+        if open_:
+            return []
+        return [(a, b, c) for a, b, c in found]
+
+    def position(self, offset: int) -> tuple[int, int]:
+        """1-based line and column (in characters) of an offset."""
+        self._asked += 1
+        if self._asked < 32 and "_line_starts" not in self.__dict__:  # a few: counting is faster than a table
+            line_start = self.text.rfind("\n", 0, offset) + 1
+            return self.text.count("\n", 0, line_start) + 1, offset - line_start + 1
+        line = bisect.bisect_right(self._line_starts, offset)
+        return line, offset - self._line_starts[line - 1] + 1
+
+    def offset(self, line: int, column: int | None = None) -> int | None:
+        if not 0 < line <= len(self._line_starts):
+            return None
+        return self._line_starts[line - 1] + (column or 1) - 1
+
+    def attribute(self, start: int, name: str) -> int | None:
+        """The offset of attribute ``name`` in the start tag whose ``<`` is at ``start``."""
+        tag = _NAME.match(self.text, start)
+        if tag is None:
+            return None
+        at = tag.end()
+        while (found := _ATTRIBUTE.match(self.text, at)) is not None:
+            if found.group(1) == name:
+                return found.start(1)
+            at = found.end()
+        return None
+
+    def line(self, number: int) -> str | None:
+        lines = self.lines
+        return lines[number - 1] if 0 < number <= len(lines) else None
+
+    def element_starts(self, count: int) -> list[int] | None:
+        """The element starts, if there are exactly ``count`` of them (the parsed tree's
+        element count): anything else means the text is not that tree's source."""
+        starts = self.starts
+        return starts if len(starts) == count else None
+
+
+def may_contain(data: bytes, text: str) -> bool:
+    """Whether the document ``data`` may contain ``text`` (ASCII): told from the bytes
+    when they can tell, true otherwise."""
+    return text.encode() in data or not ascii_compatible(data)
+
+
+def _key(name: str) -> str:
+    """A file's name as the texts are kept: its absolute path ("<stdin>" as it is)."""
+    return name if name.startswith("<") else os.path.abspath(name)
+
+
+class Sources:
+    """The source texts of a session: each file read once, and again when it
+    changes on disk; texts that are not (or not yet) in a file, standard input
+    and an editor's unsaved buffers, given under the name diagnostics use.
+
+    Names are paths as diagnostics give them (relative to the working folder,
+    or absolute); "<stdin>" is standard input."""
+
+    def __init__(self) -> None:
+        self._read: dict[str, tuple[tuple[int, int], Source | None]] = {}  # key -> (file stamp, text)
+        self._given: dict[str, bytes] = {}
+
+    def give(self, name: str, data: bytes) -> None:
+        """Let ``data`` stand for the file ``name`` (or standard input) from now on."""
+        key = _key(name)
+        self._given[key] = data
+        self._read.pop(key, None)
+
+    def take_back(self, name: str) -> None:
+        """Read ``name`` from its file again."""
+        key = _key(name)
+        self._given.pop(key, None)
+        self._read.pop(key, None)
+
+    def given(self) -> dict[str, bytes]:
+        """The texts given (absolute path -> bytes), for a xacro expansion to read."""
+        return dict(self._given)
+
+    def data(self, name: str) -> bytes:
+        """The bytes of a source: given, or read from its file now. Raises OSError."""
+        given = self._given.get(_key(name))
+        return given if given is not None else Path(name).read_bytes()
+
+    def text(self, name: str, containing: str | None = None) -> str | None:
+        """The text of a source, without keeping it when it was not kept already: a
+        large model read only to look for comments stays out of memory. With
+        ``containing`` (ASCII), None also when the text cannot contain it, told from
+        the bytes when they can tell (most files need no decoding then)."""
+        key = _key(name)
+        known = self._read.get(key)
+        if key in self._given or known is None or known[1] is None:
+            try:
+                data = self.data(name)
+            except OSError:
+                return None
+            if containing is not None and not may_contain(data, containing):
+                return None
+            return decode(data)
+        return known[1].text
+
+    def source(self, name: str) -> Source | None:
+        """The source text diagnostics call ``name``, read again only when the file
+        changed; None when unreadable."""
+        key = _key(name)
+        given = self._given.get(key)
+        known = self._read.get(key)
+        if given is not None:
+            if known is None:
+                known = self._read[key] = ((0, 0), Source(decode(given)))
+            return known[1]
+        try:
+            status = os.stat(key)
+            stamp = (status.st_mtime_ns, status.st_size)
+            if known is None or known[0] != stamp:
+                known = self._read[key] = (stamp, Source(decode(Path(key).read_bytes())))
+        except OSError:
+            known = self._read[key] = ((0, -1), None)
+        return known[1]
+
+    def line(self, name: str, number: int) -> str | None:
+        """One line of a source (1-based), or None when there is no such line."""
+        text = self.source(name)
+        return text.line(number) if text is not None else None

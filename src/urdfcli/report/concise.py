@@ -1,0 +1,23 @@
+"""One plain line per diagnostic (with the macro call that made its element) on
+standard output, for logs and editors' problem matchers; the libraries' notes
+and the summary on standard error, so that standard output holds nothing else.
+"""
+
+from __future__ import annotations
+
+from typing import TYPE_CHECKING
+
+from .console import Output
+from .lines import concise_line, library_lines, summary_line
+
+if TYPE_CHECKING:
+    from .result import Result
+
+
+def report(results: list[Result], output: Output, view: str = "lint", sources=None) -> None:
+    out, notes = output.out.file, output.err.file
+    for result in results:
+        out.writelines(concise_line(d) + "\n" for d in result.diagnostics)
+        notes.writelines(line + "\n" for line in library_lines(result))
+    if results:  # nothing was read: the one-line reasons already said why
+        notes.write(summary_line(results) + "\n")

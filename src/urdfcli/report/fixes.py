@@ -1,0 +1,164 @@
+"""Fixes for the mass-property audit: a uniform body's ``<inertial>`` for a flagged link, and,
+for a model written with xacro, the macro that wrote its ``<inertial>`` and a call of it
+that gives the tensor the link's geometry implies (read from the xacro sources)."""
+
+from __future__ import annotations
+
+import itertools
+from typing import NamedTuple
+
+from lxml import etree
+
+from ..model import massprops
+from ..model.inertia import implied
+from ..model.load import Loaded
+from ..model.massprops import Matrix, number
+from ..model.numbers import NumberError, parse_double, parse_vector
+from ..model.robot import INERTIA_KEYS, Link
+from ..read.document import XACRO_NAMESPACES
+from ..read.xacro import Expander
+from ..read.xml import XmlError, parse
+from .inertia import LinkReport
+
+
+def suggestion(loaded: Loaded, entry: LinkReport, density: float | None = None) -> str:
+    """A ready-to-paste ``<inertial>`` for a link, in the frame of its current one: the
+    uniform body its geometry makes, said to be an estimate, never a correction; an XML
+    comment saying why when the geometry cannot tell."""
+    link = entry.link
+    found = implied(loaded, link, density)
+    if found.body is None:
+        why = found.source if link.inertial is not None or density else "it declares no mass (give --density)"
+        return f"<!-- link '{link.name}': no suggestion: {why} -->"
+    rpy = link.inertial.origin.rpy if link.inertial is not None else (0.0, 0.0, 0.0)
+    tensor = massprops.tidy(massprops.rotate(found.body.tensor, massprops.transpose(massprops.rotation(rpy))))
+    values = massprops.as_dict(tensor)
+    return "\n".join(
+        [
+            f"<!-- link '{link.name}': a uniform body filling its {found.source} (an estimate: the part's CAD values are better) -->",
+            "<inertial>",
+            f'  <origin xyz="{" ".join(map(number, found.body.com))}" rpy="{" ".join(map(number, rpy))}"/>',
+            f'  <mass value="{number(found.body.mass)}"/>',
+            "  <inertia " + " ".join(f'{k}="{number(values[k])}"' for k in massprops.KEYS) + "/>",
+            "</inertial>",
+        ]
+    )
+
+
+# -- xacro macros ----------------------------------------------------------------------
+class MacroUse(NamedTuple):
+    """The xacro macro whose body wrote a link's <inertial>, and the call that used it."""
+
+    name: str
+    params: str
+    defined_at: str  # FILE:LINE
+    call: str | None  # the call as written, e.g. <xacro:box_inertia m="${mass}" .../>
+    called_at: str | None
+
+
+def _start_lines(loaded: Loaded, file: str) -> dict:
+    """The line of each element's ``<`` in a xacro source (where diagnostics point), read once per model."""
+    return loaded.remembered(("start lines", file), lambda: _read_start_lines(loaded, file))
+
+
+def _read_start_lines(loaded: Loaded, file: str) -> dict:
+    sources = loaded.document.sources
+    try:
+        root = parse(sources.data(file))
+    except (OSError, XmlError):
+        return {}
+    text = sources.source(file)
+    elements = list(root.iter())
+    starts = text.element_starts(len(elements)) if text is not None else None
+    if starts is None:
+        return {e: e.sourceline for e in elements}
+    return {e: text.position(start)[0] for e, start in zip(elements, starts)}
+
+
+def _written(loaded: Loaded, file: str, line: int, tag: str):
+    """The element of that tag written at file:line, in the xacro source."""
+    return next((e for e, at in _start_lines(loaded, file).items() if at == line and etree.QName(e).localname == tag), None)
+
+
+def _is_xacro(element, name: str) -> bool:
+    qname = etree.QName(element)
+    return qname.namespace in XACRO_NAMESPACES and qname.localname == name
+
+
+def macro_use(loaded: Loaded, link: Link) -> MacroUse | None:
+    """Which xacro macro produced the link's <inertial> (None when it was written in place)."""
+    if link.inertial is None or loaded.document.origins is None:
+        return None
+    where = loaded.document.locate(link.inertial.at)
+    written = _written(loaded, where.file, where.line, "inertial") if where.line and not where.expanded else None
+    macro = next((a for a in written.iterancestors() if _is_xacro(a, "macro")), None) if written is not None else None
+    if macro is None:
+        return None
+    name = macro.get("name", "")
+    call, called_at = None, None
+    link_where = loaded.document.locate(link.at)
+    source_link = _written(loaded, link_where.file, link_where.line, "link") if link_where.line and not link_where.expanded else None
+    if source_link is not None:
+        found = next((e for e in source_link.iter(etree.Element) if _is_xacro(e, name)), None)
+        if found is not None:
+            attributes = " ".join(f'{k}="{v}"' for k, v in found.attrib.items())
+            call, called_at = f"<xacro:{name} {attributes}/>", f"{link_where.file}:{_start_lines(loaded, link_where.file)[found]}"
+    return MacroUse(name, macro.get("params", ""), f"{where.file}:{_start_lines(loaded, where.file)[macro]}", call, called_at)
+
+
+def _macro_element(loaded: Loaded, use: MacroUse):
+    file, _, line = use.defined_at.rpartition(":")
+    return _written(loaded, file, int(line), "macro")
+
+
+def _dimensions(geometry) -> tuple[float, ...]:
+    if geometry.kind == "box":
+        return tuple(geometry.size)
+    if geometry.kind == "cylinder":
+        return geometry.radius, geometry.length
+    return (geometry.radius,)
+
+
+def matching_call(loaded: Loaded, link: Link, use: MacroUse, expander: Expander) -> str | None:
+    """A call of the macro that writes the tensor the link's geometry implies, found by
+    expanding the macro with the mass and each ordering of the shape's dimensions;
+    None when no call does (e.g. the macro cannot rotate its tensor with the shape)."""
+    found = implied(loaded, link)
+    macro = _macro_element(loaded, use)
+    if found.body is None or len(found.shapes) != 1 or found.shapes[0].geometry.kind == "mesh" or macro is None:
+        return None
+    required = [p.lstrip("^") for p in use.params.split() if not p.startswith("*") and ":=" not in p and "=" not in p]
+    masses = [p for p in required if p.lower() in ("m", "mass") or "mass" in p.lower()]
+    others = [p for p in required if p not in masses]
+    dimensions = _dimensions(found.shapes[0].geometry)
+    if len(masses) != 1 or len(others) != len(dimensions):
+        return None
+    calls = []
+    for order in dict.fromkeys(itertools.permutations(dimensions)):
+        values = {masses[0]: found.body.mass, **dict(zip(others, order))}
+        calls.append(f"<xacro:{use.name} " + " ".join(f'{k}="{number(v)}"' for k, v in values.items()) + "/>")
+    namespace = etree.QName(macro).namespace
+    probe = f'<robot name="probe" xmlns:xacro="{namespace}">{etree.tostring(macro, encoding="unicode", with_tail=False)}'
+    probe += "".join(f'<link name="c{i}">{call}</link>' for i, call in enumerate(calls)) + "</robot>"
+    try:
+        text = expander.expand(probe.encode(), None, {}, loaded.resolver).text
+        links = parse(text.encode()).findall("link")
+    except Exception:  # noqa: BLE001  (a macro that needs more than its parameters)
+        return None
+    for call, probe_link in zip(calls, links):
+        tensor = _probe_tensor(probe_link)
+        if tensor is not None and massprops.relative_difference(tensor, found.body.tensor) <= 1e-3:
+            return call
+    return None
+
+
+def _probe_tensor(link) -> Matrix | None:
+    """The link-frame tensor of an expanded probe link's <inertial>."""
+    try:
+        inertia = link.find("inertial/inertia")
+        values = {k: parse_double(inertia.get(k)) for k in INERTIA_KEYS}
+        origin = link.find("inertial/origin")
+        rpy = parse_vector(origin.get("rpy", "0 0 0")) if origin is not None else (0.0, 0.0, 0.0)
+    except (AttributeError, TypeError, NumberError, ValueError):
+        return None
+    return massprops.rotate(massprops.matrix(values), massprops.rotation(rpy))

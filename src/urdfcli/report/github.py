@@ -1,0 +1,41 @@
+"""GitHub Actions workflow annotations."""
+
+from __future__ import annotations
+
+from typing import TYPE_CHECKING
+
+from ..diagnostics import Diagnostic
+from .console import Output
+from .escape import escape
+from .lines import call_phrase, severity_name
+
+if TYPE_CHECKING:
+    from .result import Result
+
+LEVELS = {"error": "error", "warning": "warning", "info": "notice"}
+
+
+def _escape_data(text: str) -> str:
+    """Workflow-command escaping, after the control characters are made visible (the log is a terminal)."""
+    return escape(text).replace("%", "%25").replace("\r", "%0D").replace("\n", "%0A")
+
+
+def _escape_property(text: str) -> str:
+    return _escape_data(text).replace(":", "%3A").replace(",", "%2C")
+
+
+def line(diagnostic: Diagnostic) -> str:
+    location = diagnostic.location
+    props = [f"file={_escape_property(location.file)}"]
+    if location.line:
+        props.append(f"line={location.line}")
+        if location.column:
+            props.append(f"col={location.column}")
+    props.append(f"title={_escape_property(diagnostic.code)}")
+    calls = [call_phrase(call) for call in location.trace]
+    return f"::{LEVELS[severity_name(diagnostic)]} {','.join(props)}::" + "%0A".join(map(_escape_data, [diagnostic.message, *calls]))
+
+
+def report(results: list[Result], output: Output, view: str = "lint", sources=None) -> None:
+    """One workflow command per diagnostic, on standard output."""
+    output.out.file.writelines(line(d) + "\n" for result in results for d in result.diagnostics)

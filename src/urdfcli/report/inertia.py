@@ -1,0 +1,167 @@
+"""The mass-property audit of ``urdfcli inertia``: per link the declared tensor, its
+principal moments, the tensor the geometry implies, and the problems; then the
+whole robot's total; as text or JSON, with suggested ``<inertial>`` elements."""
+
+from __future__ import annotations
+
+from typing import TYPE_CHECKING, NamedTuple
+
+from ..diagnostics import Diagnostic, Severity
+from ..model import massprops
+from ..model.inertia import Assessment, Body, assess, declared_tensor, implied, is_frame, total, used_body
+from ..model.load import Loaded
+from ..model.massprops import number, tensor_text
+from ..model.robot import Link
+from ..rules import REGISTRY
+from .console import Line, Output, write
+from .escape import escape
+from .lines import diagnostic_lines, plural
+
+if TYPE_CHECKING:
+    from .result import Result
+
+
+class LinkReport(NamedTuple):
+    link: Link
+    frame: bool  # a massless frame link: listed quietly
+    assessment: Assessment | None
+    problems: tuple[Diagnostic, ...]  # the mass-property diagnostics about this link
+    mass: float | None = None  # the mass the total counts: from --density, or as declared
+    from_density: bool = False
+
+
+class Audit(NamedTuple):
+    loaded: Loaded
+    links: tuple[LinkReport, ...]
+    total: Body | None
+    problems: tuple[Diagnostic, ...]  # every mass-property diagnostic, in file order
+    tolerance: float = massprops.TOLERANCE
+    suggestions: tuple[str, ...] = ()  # XML for the flagged links (``--suggest``), printed after the table
+
+
+def build(loaded: Loaded, problems: list[Diagnostic], tolerance: float = massprops.TOLERANCE, density: float | None = None) -> Audit:
+    """The per-link table, the problems (each given to the links it is about) and the total."""
+    mine: dict[str, list[Diagnostic]] = {name: [] for name in loaded.robot.links}
+    for diagnostic in problems:
+        for subject in dict.fromkeys(diagnostic.subjects):
+            if subject in mine:
+                mine[subject].append(diagnostic)
+    links = []
+    for link in loaded.robot.links.values():
+        used = used_body(loaded, link, density)
+        from_density = density is not None and implied(loaded, link, density).body is not None
+        links.append(LinkReport(link, is_frame(link), assess(loaded, link, density), tuple(mine[link.name]), used.mass if used else None, from_density))
+    return Audit(loaded, tuple(links), total(loaded, density), tuple(problems), tolerance)
+
+
+def flagged(audit: Audit) -> list[LinkReport]:
+    """Links with a problem that a new <inertial> fixes: those a uniform body is suggested for."""
+    return [entry for entry in audit.links if any(REGISTRY[d.code].inertial_fix for d in entry.problems)]
+
+
+# -- JSON ------------------------------------------------------------------------------
+def _vector(values) -> list[float]:
+    return [float(v) for v in values]
+
+
+def _tensor(tensor) -> dict[str, float] | None:
+    return None if tensor is None else {k: float(v) for k, v in massprops.as_dict(tensor).items()}
+
+
+def expected_from(entry: LinkReport) -> str:
+    if entry.frame:
+        return "massless frame link"
+    if entry.assessment is None:
+        return "no inertia tensor declared"
+    return entry.assessment.implied.source
+
+
+def link_dict(entry: LinkReport) -> dict:
+    link, found = entry.link, entry.assessment
+    inertial = link.inertial
+    declared = declared_tensor(link)
+    return {
+        "name": link.name,
+        "mass": inertial.mass if inertial is not None else None,
+        "mass_used": entry.mass,
+        "com": _vector(inertial.origin.xyz) if inertial is not None else None,
+        "inertia": _tensor(declared),
+        "principal": _vector(massprops.principal_moments(declared)) if declared is not None else None,
+        "expected": _tensor(found.expected) if found is not None else None,
+        "expected_from": expected_from(entry),
+        "problems": [{"code": d.code, "severity": (d.severity or Severity.INFO).value, "message": d.message} for d in entry.problems],
+    }
+
+
+def audit_dict(result: Result) -> dict:
+    """``{"robot", "links", "total"}`` of one file (empty when it has no model to audit)."""
+    audit = result.audit
+    if audit is None:
+        return {"robot": None, "links": [], "total": None}
+    body = audit.total
+    return {
+        "robot": audit.loaded.robot.name,
+        "links": [link_dict(entry) for entry in audit.links],
+        "total": None if body is None else {"mass": body.mass, "com": _vector(body.com), "inertia": _tensor(body.tensor)},
+    }
+
+
+# -- text ------------------------------------------------------------------------------
+def _row(label: str, value: str, style: str = "") -> Line:
+    return [(f"    {label:<10} ", "dim"), (value, style)]
+
+
+def audit_lines(audit: Audit, show_name: bool) -> list[Line]:
+    """The per-link table and the total, as styled lines."""
+    loaded = audit.loaded
+    title: Line = [(f"robot '{escape(loaded.robot.name or '')}'", "bold")]
+    if show_name:
+        title.append((f"  ({escape(loaded.document.shown)})", "dim"))
+    lines = [title]
+    for entry in audit.links:
+        link, found = entry.link, entry.assessment
+        if entry.frame and not entry.problems and not entry.from_density:
+            lines.append([(escape(link.name), "bold"), ("  massless frame link", "dim")])
+            continue
+        inertial = link.inertial
+        header: Line = [(escape(link.name), "bold")]
+        if entry.from_density:  # the mass the total counts, and the declared one beside it
+            declared = f"declared {number(inertial.mass)}" if inertial is not None and inertial.mass is not None else "none declared"
+            header.append((f"  mass {number(entry.mass)} from density ({declared})", ""))
+        elif inertial is not None and inertial.mass is not None:
+            header.append((f"  mass {number(inertial.mass)}  com {' '.join(map(number, inertial.origin.xyz))}", ""))
+        lines.append(header)
+        if found is not None:
+            expected = found.expected
+            lines.append(_row("declared", tensor_text(found.declared, expected)))
+            lines.append(_row("principal", " ".join(number(m) for m in massprops.principal_moments(found.declared))))
+            if expected is not None:
+                style = "yellow" if found.off(audit.tolerance) else "green"
+                lines.append(_row("expected", f"{tensor_text(expected, found.declared)}  ({found.implied.source}; {found.difference:.1%} apart)", style))
+            else:
+                lines.append(_row("expected", f"unknown: {found.implied.source}", "dim"))
+        if entry.problems:
+            lines.append(_row("problems", ", ".join(f"{d.code} {REGISTRY[d.code].name}" for d in dict.fromkeys(entry.problems)), "yellow"))
+    body = audit.total
+    if body is not None:
+        lines.append([("total", "bold"), (f"  mass {number(body.mass)}  com {' '.join(map(number, body.com))} (in '{escape(loaded.root or '')}' frame, joints at zero)", "")])
+        lines.append(_row("inertia", tensor_text(body.tensor) + "  about the centre of mass"))
+    return lines
+
+
+def problem_count(results: list[Result]) -> int:
+    """The audits' problems and the models' errors."""
+    return sum(len(r.audit.problems) for r in results if r.audit is not None) + sum(len(r.errors) for r in results)
+
+
+def report(results: list[Result], output: Output, view: str = "inertia", sources=None) -> None:
+    """Each model's table on standard output and its problems on standard error; then
+    how many problems there are."""
+    for result in results:
+        if result.audit is not None:
+            write(output.out, audit_lines(result.audit, show_name=len(results) > 1))
+            write(output.err, (line for d in result.audit.problems for line in diagnostic_lines(d, None)))
+            if result.audit.suggestions:
+                write(output.out, [[("", "")], *([(escape(line), "")] for text in result.audit.suggestions for line in text.split("\n"))])
+    problems = problem_count(results)
+    write(output.err, [[(f"{plural(len(results), 'file')} audited: {plural(problems, 'problem')}", "bold")]])

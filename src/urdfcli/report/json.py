@@ -1,0 +1,76 @@
+"""SPEC section 4: the JSON contract of check and lint."""
+
+from __future__ import annotations
+
+import json
+from typing import TYPE_CHECKING
+
+from ..diagnostics import Diagnostic, Severity
+from .console import Output
+from .escape import json_escape
+from .lines import counts, severity_name
+
+if TYPE_CHECKING:
+    from .result import Result
+
+
+def diagnostic_dict(diagnostic: Diagnostic) -> dict:
+    return {
+        "code": diagnostic.code,
+        "severity": severity_name(diagnostic),
+        "message": diagnostic.message,
+        "path": diagnostic.location.file,
+        "line": diagnostic.location.line,
+        "column": diagnostic.location.column,
+        "element": diagnostic.element,
+        "trace": [
+            {"path": call.file, "line": call.line, "column": call.column, "macro": call.macro}
+            for call in diagnostic.location.trace
+        ],
+    }
+
+
+def file_dict(result: Result) -> dict:
+    entry = {
+        "path": result.path,
+        "ok": result.ok,
+        "robot": result.robot_name,
+        "diagnostics": [diagnostic_dict(d) for d in result.diagnostics],
+    }
+    if result.library is not None:
+        entry["checked_through"] = list(result.library.checked_through)
+        entry["notes"] = list(result.library.notes)
+    if result.arguments:  # a model run with an argument set from [tool.urdfcli] models
+        entry["arguments"] = result.arguments
+    return entry
+
+
+def render(results: list[Result]) -> str:
+    found = counts(results)
+    errors, warnings = found[Severity.ERROR], found[Severity.WARNING]
+    document = {
+        "version": 1,
+        "files": [
+            file_dict(result)
+            for result in results
+        ],
+        "summary": {"files": len(results), "errors": errors, "warnings": warnings},
+    }
+    return dumps(document)
+
+
+def dumps(value) -> str:
+    """JSON as urdfcli writes it: indented, the data unchanged, the terminal safe."""
+    return json_escape(json.dumps(value, indent=2, ensure_ascii=False))
+
+
+def report(results: list[Result], output: Output, view: str = "lint", sources=None) -> None:
+    """The JSON contract of check and lint; for inertia, each file's audit (a list for several)."""
+    if view == "inertia":
+        from .inertia import audit_dict
+
+        objects = [audit_dict(result) for result in results]
+        text = dumps(objects[0] if len(objects) == 1 else objects)
+    else:
+        text = render(results)
+    output.out.file.write(text + "\n")
