@@ -1,7 +1,7 @@
 # Quickstart targets: `make demo` and `make test` work on a fresh machine.
-# They create .venv, install urdfcli with what it needs, and install the
-# system programs (graphviz; for tests also liburdfdom-tools and poppler-utils)
-# with apt-get when they are missing.
+# They create .venv, install urdfcli (demo: with what it needs to run; test: with
+# the test extras too), and install the system programs (graphviz; for tests also
+# liburdfdom-tools and poppler-utils) with apt-get when they are missing.
 
 PYTHON ?= python3
 VENV := .venv
@@ -16,15 +16,21 @@ demo: $(VENV)/.installed system-runtime
 	$(BIN)/urdfcli tree $(DEMO)
 
 # Tests run in parallel, one worker per core; `--dist worksteal` evens out the slow files.
-test: $(VENV)/.installed system-test
+test: $(VENV)/.tested system-test
 	$(BIN)/python -m pytest -n auto --dist worksteal
 
-bench: $(VENV)/.installed system-test
+bench: $(VENV)/.tested system-test
 	$(BIN)/python benchmarks/run.py
 
+# urdfcli and what it needs to run
 $(VENV)/.installed: pyproject.toml
 	$(PYTHON) -m venv $(VENV)
 	$(BIN)/python -m pip install --quiet --upgrade pip
+	$(BIN)/python -m pip install --quiet -e .
+	touch $@
+
+# the test extras too: pytest, the published models, the programs urdfcli is compared with
+$(VENV)/.tested: $(VENV)/.installed
 	$(BIN)/python -m pip install --quiet -e '.[test]'
 	touch $@
 
@@ -47,4 +53,4 @@ system-test:
 	$(call apt_install,dot:graphviz check_urdf:liburdfdom-tools pdfinfo:poppler-utils)
 
 clean:
-	rm -rf $(VENV) build *.egg-info src/*.egg-info .pytest_cache
+	rm -rf $(VENV) build *.egg-info src/*.egg-info .pytest_cache benchmarks/generated

@@ -316,9 +316,9 @@ def import_costs() -> str:
         if match:
             name = match.group(3)
             cumulative[name] = max(cumulative.get(name, 0), int(match.group(1)))
-    names = ("urdfcli.cli", "typer", "lxml.etree", "urdfcli.load", "rich.console", "pydantic", "networkx", "xacro", "urdfcli.inertia")
+    names = ("urdfcli.cli", "typer", "lxml.etree", "urdfcli.api", "urdfcli.rules", "rich.console", "pydantic", "networkx", "xacro", "urdfcli.model.inertia")
     shown = [f"{name} {cumulative[name] / 1000:.0f} ms" for name in names if name in cumulative]
-    absent = [name for name in ("typer", "rich", "pydantic", "networkx", "xacro", "urdfcli.inertia", "numpy") if name not in cumulative]
+    absent = [name for name in ("pydantic", "networkx", "xacro", "numpy", "trimesh", "yourdfpy") if name not in cumulative]
     text = "imports of `urdfcli check` on a small file (python -X importtime, cumulative): " + ", ".join(shown)
     return text + (f"; not imported: {', '.join(absent)}" if absent else "")
 

@@ -71,7 +71,7 @@ def test_corpus_diagnostics_are_the_same_with_or_without_xacro(path, monkeypatch
     monkeypatch.chdir(tmp_path)
     plain = load(str(path))
     assert not plain.loaded.document.is_xacro
-    monkeypatch.setattr(load_module, "is_xacro", lambda data: True)  # every document taken for xacro
+    monkeypatch.setattr(load_module, "_told", lambda data: (True, None))  # every document taken for xacro
     expanded = load(str(path))
     assert expanded.loaded.document.is_xacro
     assert expanded.diagnostics == plain.diagnostics

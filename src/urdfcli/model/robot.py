@@ -166,6 +166,7 @@ class Reader:
         # over and over. Only texts read without a diagnostic are kept, and values are
         # never changed (an inertia dict is shared by the links that write the same text).
         self._numbers: dict[str, float] = {}
+        self._vectors: dict[str, Vec3] = {}
         self._poses: dict[tuple[str | None, str | None], Pose] = {}
         self._tensors: dict[tuple[str | None, ...], dict[str, float]] = {}
         self._limits: dict[tuple[str | None, ...], Limit] = {}
@@ -199,8 +200,12 @@ class Reader:
         text = element.get(attribute)
         if text is None:
             return default
+        known = self._vectors.get(text)
+        if known is not None:
+            return known
         try:
-            return parse_vector(text)  # type: ignore[return-value]
+            value = self._vectors[text] = parse_vector(text)  # type: ignore[assignment]
+            return value  # type: ignore[return-value]
         except NumberError as error:
             self.report(error.code, f"{tag_name(element)} {attribute}: component {error.reason}", element)
         except VectorLengthError as error:
@@ -456,7 +461,8 @@ class Reader:
     def robot(self) -> Robot:
         """The robot, read from the document's elements as they come; raises
         XmlError when the document turns out not to be well-formed."""
-        stream = top_level(self.document.data)
+        stream = top_level(self.document.data, self.document.tree)
+        self.document.tree = None  # its elements are taken out as they are read
         root = next(stream)
         self._index = {root: 0}
         self._inline_materials: list[Material] = []

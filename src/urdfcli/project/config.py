@@ -30,6 +30,7 @@ the working directory; a glob without a ``/`` also matches a file's name alone.
 
 from __future__ import annotations
 
+import os
 import re
 from fnmatch import fnmatchcase
 from pathlib import Path
@@ -301,13 +302,17 @@ class Configurations:
         self._tables: dict[tuple[Path, int, int], dict[str, Any] | None] = {}
         self._nearest: dict[Path, Path | None] = {}
         self._configs: dict[tuple[Path | None, int, int], Config] = {}
+        self._folders: dict[str, Path | None] = {}  # an input's folder, as given -> its configuration file
 
     def for_input(self, file: str) -> Config:
         """The configuration of one input: none when isolated, the explicit file when
         given, else the nearest one above the input; with the command line's
         selections over it. Raises ConfigError."""
         if self.fixed is not None:
-            return self.fixed.overridden(**self.overrides)
+            key = (None, -1, -1)  # the configuration given, whatever the input
+            if key not in self._configs:
+                self._configs[key] = self.fixed.overridden(**self.overrides)
+            return self._configs[key]
         if self.isolated:
             found = None
         elif self.explicit is not None:
@@ -315,7 +320,10 @@ class Configurations:
                 raise ConfigError(f"{self.explicit}: no such configuration file")
             found = self.explicit
         else:
-            found = self.find(Path.cwd() if file == "-" else Path(file).resolve().parent)
+            folder = os.getcwd() if file == "-" else os.path.dirname(os.path.abspath(file))
+            if folder not in self._folders:  # the inputs of a folder share its configuration
+                self._folders[folder] = self.find(Path(folder).resolve())
+            found = self._folders[folder]
         stamp = _stamp(found) if found is not None else (0, 0)
         key = (found, *stamp)
         if key not in self._configs:

@@ -77,6 +77,7 @@ class Document:
         self.may_suppress: bool | None = None
         self.readable = data is not None  # whether a model could be read
         self.missing_argument: str | None = None  # a xacro argument the expansion needed and had no value for
+        self.tree: Element | None = None  # the document parsed whole (elements only), when it was to tell whether it uses xacro
 
     @property
     def shown(self) -> str:
@@ -203,12 +204,18 @@ def is_xacro(data: bytes) -> bool:
     or in text outside comments. A namespace declaration alone is not use: xacro's
     output would read the same, at many times the cost. A document that is not
     well-formed is not xacro: reading it says what is wrong."""
+    return _told(data)[0]
+
+
+def _told(data: bytes) -> tuple[bool, Element | None]:
+    """Whether ``data`` uses xacro, and the tree parsed to tell (None when the bytes told)."""
     if positions.ascii_compatible(data) and b"$" not in data and b"xacro" not in data:
-        return False  # neither mark in markup written in ASCII: nothing to parse
+        return False, None  # neither mark in markup written in ASCII: nothing to parse
     try:
-        return bool(parse(data).xpath(_USES_XACRO))
+        root = parse(data)
     except XmlError:
-        return False
+        return False, None
+    return bool(root.xpath(_USES_XACRO)), root
 
 
 def read_document(
@@ -223,8 +230,12 @@ def read_document(
     data = read_input(path, sources)
     file = None if path == STDIN else Path(path)
     shown = "<stdin>" if file is None else path
-    if not (force_xacro or path.endswith(".xacro") or is_xacro(data)):
-        return Document(path, data, file, sources=sources), []
+    if not (force_xacro or path.endswith(".xacro")):
+        uses_xacro, tree = _told(data)
+        if not uses_xacro:
+            document = Document(path, data, file, sources=sources)
+            document.tree = tree  # parsed to tell: the model reads it rather than parse it again
+            return document, []
     try:
         result = inputs.expander.expand(data, str(file) if file else None, mappings or {}, resolver, sources.given())
     except ExpansionError as error:

@@ -94,13 +94,18 @@ def parse(data: bytes, as_written: bool = False) -> Element:
 WHOLE_UP_TO = 1 << 20
 
 
-def top_level(data: bytes) -> Iterator[Element]:
+def top_level(data: bytes, parsed: Element | None = None) -> Iterator[Element]:
     """The document's root element (read its attributes only), then each element
     written at the top level, whole, in document order; blank text, comments and
     processing instructions dropped. Each top-level element is taken out of the tree
     once the next one is asked for, and a document larger than WHOLE_UP_TO is
     streamed, so that no more than one is held at a time. Raises XmlError as
-    :func:`parse` would, when the problem is met."""
+    :func:`parse` would, when the problem is met. ``parsed`` is the root of the
+    same document read by :func:`parse` already, if it was."""
+    if parsed is not None:
+        yield parsed
+        yield from _finished(parsed, None)
+        return
     if not data or data.isspace():  # (strip() would copy a large document)
         raise XmlError("the document is empty", 1, 1)
     if len(data) <= WHOLE_UP_TO:

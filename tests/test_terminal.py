@@ -1,0 +1,184 @@
+"""What a person sees: each command run on a real pseudo-terminal, as from a shell.
+
+On a terminal rich draws colours and the progress bar, a path the tests that
+redirect everything never take: the diagnostics must be printed, the exit code
+right, and the cursor shown again however the run ends.
+"""
+
+from __future__ import annotations
+
+import os
+import pty
+import re
+import select
+import signal
+import subprocess
+import sys
+import time
+from pathlib import Path
+
+import pytest
+
+from conftest import FIXTURES, example_robot_data
+
+HIDE_CURSOR, SHOW_CURSOR = b"\x1b[?25l", b"\x1b[?25h"
+ANSI = re.compile(rb"\x1b\[[0-9;?]*[A-Za-z]")
+
+
+def on_terminal(*args: str, cwd: Path | None = None, interrupt_after: float | None = None) -> tuple[bytes, int]:
+    """Everything urdfcli writes to a terminal (both streams), and its exit code;
+    with ``interrupt_after``, Ctrl-C is pressed after that many seconds."""
+    leader, follower = pty.openpty()
+    environment = {k: v for k, v in os.environ.items() if k not in ("NO_COLOR", "FORCE_COLOR", "CI", "GITHUB_ACTIONS")}
+    process = subprocess.Popen(
+        [sys.executable, "-m", "urdfcli", *args], stdin=follower, stdout=follower, stderr=follower, cwd=cwd,
+        env={**environment, "TERM": "xterm-256color", "COLUMNS": "160"}, start_new_session=True,
+    )
+    os.close(follower)
+    out = b""
+    started = time.monotonic()
+    interrupted = False
+    while True:
+        if interrupt_after is not None and not interrupted and time.monotonic() - started > interrupt_after:
+            os.killpg(process.pid, signal.SIGINT)  # as the terminal does for Ctrl-C
+            interrupted = True
+        ready, _, _ = select.select([leader], [], [], 0.1)
+        if not ready:
+            if process.poll() is not None:
+                break
+            continue
+        try:
+            chunk = os.read(leader, 65536)
+        except OSError:
+            break
+        if not chunk:
+            break
+        out += chunk
+    code = process.wait(timeout=120)
+    os.close(leader)
+    return out, code
+
+
+def text(out: bytes) -> str:
+    return ANSI.sub(b"", out).replace(b"\r", b"").decode()
+
+
+def cursor_restored(out: bytes) -> bool:
+    """Whether a cursor hidden during the run is shown again after."""
+    hidden = out.rfind(HIDE_CURSOR)
+    return hidden < 0 or out.rfind(SHOW_CURSOR) > hidden
+
+
+BROKEN = FIXTURES / "seed001" / "broken_inertia_crane.urdf"
+
+
+def test_check_on_a_terminal_prints_the_tree_and_every_diagnostic():
+    out, code = on_terminal("check", str(FIXTURES / "urdf02_gazebo" / "urdf" / "car.urdf.xacro"))
+    shown = text(out)
+    assert code == 0
+    assert "root Link: base_footprint has 1 child(ren)" in shown
+    assert "M003 warning: material 'black'" in shown and "1 file checked: 0 errors, 1 warning" in shown
+    assert b"\x1b[" in out  # styled: it is a terminal
+    assert cursor_restored(out)
+
+
+def test_lint_of_published_models_with_their_meshes_shows_progress_then_every_diagnostic():
+    """A run of several seconds: rich draws its progress bar on the terminal, removes
+    it, shows the cursor again, and the whole report follows."""
+    data = example_robot_data()
+    robots = data / "robots"
+    models = [
+        robots / "anymal_b_simple_description/robots/anymal.urdf", robots / "ur_description/urdf/ur5_robot.urdf",
+        robots / "panda_description/urdf/panda.urdf", robots / "b1_description/urdf/b1.urdf",
+        robots / "go1_description/urdf/go1.urdf", robots / "z1_description/urdf/z1.urdf",
+    ]
+    out, code = on_terminal("lint", "-P", f"example-robot-data={data}", *map(str, models))
+    shown = text(out)
+    assert code == 1  # the published models have warnings
+    assert b"linting" in out and HIDE_CURSOR in out  # the progress bar was drawn
+    assert cursor_restored(out)
+    assert "6 files checked:" in shown
+    assert "I009 warning: inertia of link 'wrist_1_link'" in shown  # ur5: a diagnostic, printed after the bar
+    assert "internal error" not in shown and "Traceback" not in shown
+
+
+def test_lint_interrupted_restores_the_terminal():
+    data = example_robot_data()
+    models = sorted((data / "robots").rglob("*.urdf"))[:30]
+    out, code = on_terminal("lint", "-P", f"example-robot-data={data}", *map(str, models), interrupt_after=2.0)
+    assert code == 130
+    assert "urdfcli: interrupted" in text(out)
+    assert cursor_restored(out)
+    assert "Traceback" not in text(out)
+
+
+def test_tree_on_a_terminal():
+    out, code = on_terminal("tree", str(FIXTURES / "urdf02_gazebo" / "urdf" / "car.urdf.xacro"))
+    shown = text(out)
+    assert code == 0
+    assert "└── base_link  ← link2footprint (fixed)" in shown
+    assert "9 links, 8 joints (4 fixed, 4 continuous), 4 DOF, depth 3, 6 leaf links" in shown
+    assert cursor_restored(out)
+
+
+def test_inertia_on_a_terminal_prints_its_table_and_problems():
+    out, code = on_terminal("inertia", str(BROKEN))
+    shown = text(out)
+    assert code == 1
+    assert "robot 'crane'" in shown or "robot '" in shown
+    assert re.search(r"I00\d warning", shown)
+    assert re.search(r"1 file audited: \d+ problems", shown)
+    assert cursor_restored(out)
+
+
+def test_graph_on_a_terminal_says_which_files_it_wrote(tmp_path):
+    out, code = on_terminal("graph", str(FIXTURES / "seed000" / "my_robot.urdf"), "-o", "tree.svg", cwd=tmp_path)
+    assert code == 0, text(out)
+    assert "Created file tree.svg" in text(out)
+    assert (tmp_path / "tree.svg").read_bytes().lstrip().startswith((b"<?xml", b"<svg"))
+    assert cursor_restored(out)
+
+
+def test_an_internal_error_on_a_terminal_is_one_line(tmp_path):
+    """The report of an internal error reaches the terminal, and the terminal is left as it was."""
+    program = tmp_path / "broken_run.py"
+    program.write_text(
+        "import sys, urdfcli.model.load\n"
+        "def broken(*a, **k): raise ZeroDivisionError('boom')\n"
+        "urdfcli.model.load.read = broken\n"
+        "from urdfcli.cli import main\n"
+        "sys.exit(main(sys.argv[1:]))\n"
+    )
+    leader, follower = pty.openpty()
+    environment = {k: v for k, v in os.environ.items() if k not in ("NO_COLOR", "URDFCLI_DEBUG")}
+    process = subprocess.Popen([sys.executable, str(program), "check", str(BROKEN)], stdout=follower, stderr=follower, env=environment)
+    os.close(follower)
+    out = b""
+    while True:
+        try:
+            chunk = os.read(leader, 65536)
+        except OSError:
+            break
+        if not chunk:
+            break
+        out += chunk
+    assert process.wait(timeout=60) == 2
+    os.close(leader)
+    lines = [line for line in text(out).splitlines() if line.strip()]
+    assert len(lines) == 1 and lines[0].startswith("urdfcli: internal error (ZeroDivisionError: boom)")
+    assert cursor_restored(out)
+
+
+@pytest.mark.parametrize("command", ["check", "lint"])
+def test_a_report_redirected_to_a_file_holds_the_diagnostics(tmp_path, command):
+    """`lint robot.urdf > report.txt` keeps the report (check keeps check_urdf's layout:
+    its tree in the file, the diagnostics on the terminal)."""
+    report = tmp_path / "report.txt"
+    with report.open("wb") as stream:
+        done = subprocess.run([sys.executable, "-m", "urdfcli", command, str(BROKEN)], stdout=stream, stderr=subprocess.PIPE)
+    assert done.returncode == (1 if command == "lint" else 0)  # warnings fail lint only
+    written = report.read_text()
+    if command == "lint":
+        assert "I00" in written and "file checked:" in written
+    else:
+        assert written.startswith("robot name is: ") and "I00" in done.stderr.decode()
