@@ -10,9 +10,9 @@ import sys
 from pathlib import Path
 
 import pytest
+from conftest import FIXTURES, run_cli
 
 import urdfcli
-from conftest import FIXTURES, run_cli
 
 CAR = FIXTURES / "urdf02_gazebo" / "urdf" / "car.urdf.xacro"
 CRANE = FIXTURES / "seed001" / "broken_inertia_crane.urdf"

@@ -3,13 +3,13 @@
 from __future__ import annotations
 
 import os
-import pty
 import re
 import subprocess
 import sys
 
 import pytest
 from conftest import run_cli
+from test_terminal import on_terminal
 
 COMMANDS = ("expand", "check", "tree", "graph", "inertia", "lint", "rules", "rule")
 BROKEN = '<robot name="r"><link name="a"/><link name="a"/></robot>'
@@ -50,23 +50,7 @@ def test_lint_help_paragraphs_wrap_as_one():
 
 def on_a_terminal(*args: str, env: dict) -> bytes:
     """What urdfcli writes to a terminal (both streams)."""
-    leader, follower = pty.openpty()
-    environment = {k: v for k, v in os.environ.items() if k not in ("NO_COLOR", "FORCE_COLOR")}
-    process = subprocess.Popen([sys.executable, "-m", "urdfcli", *args], stdout=follower, stderr=follower,
-                               env={**environment, "TERM": "xterm-256color", "COLUMNS": "200", **env})
-    os.close(follower)
-    out = b""
-    while True:
-        try:
-            chunk = os.read(leader, 65536)
-        except OSError:
-            break
-        if not chunk:
-            break
-        out += chunk
-    process.wait(timeout=60)
-    os.close(leader)
-    return out
+    return on_terminal(*args, env=env)[0]
 
 
 def test_no_color_removes_bold_and_dim_too_and_color_option_decides(tmp_path):

@@ -7,8 +7,6 @@ import re
 
 import pytest
 from conftest import ROOT, run_cli
-from hypothesis import given
-from hypothesis import strategies as st
 
 from urdfcli.report.rules import markdown
 from urdfcli.rules import REGISTRY, SECTIONS
@@ -78,42 +76,3 @@ def test_unknown_rule_is_exit_2_with_a_suggestion():
     done = run_cli("rule", "unknown-atribute")
     assert done.returncode == 2
     assert done.stderr.decode() == "urdfcli: unknown rule 'unknown-atribute' (did you mean 'unknown-attribute'?); `urdfcli rules` lists them\n"
-
-
-def _docstrings():
-    """Every docstring of urdfcli's modules and of a few standard ones: real text of every shape."""
-    import importlib
-    import inspect as inspect_module
-    import pkgutil
-
-    import urdfcli
-
-    names = [m.name for m in pkgutil.walk_packages(urdfcli.__path__, "urdfcli.") if not m.name.endswith("__main__")]  # (which runs)
-    names += ["inspect", "textwrap", "pathlib", "argparse"]
-    for name in names:
-        module = importlib.import_module(name)
-        for value in (module, *vars(module).values()):
-            doc = getattr(value, "__doc__", None)
-            if isinstance(doc, str) and inspect_module.getmodule(value) in (module, None):
-                yield doc
-
-
-def test_rule_docs_are_cleaned_as_inspect_cleans_them():
-    """rules.cleandoc stands in for inspect.cleandoc on the start path (inspect is not imported there)."""
-    import inspect
-
-    from urdfcli.rules import cleandoc
-
-    docs = [*_docstrings(), "", "\n", "   ", "one", "  one\n    two\n  three", "\tx\n\t\ty\n\t", "a\n\n   \n  b\n    c\n   \n", " \n \n"]
-    assert len(docs) > 500
-    differing = [doc for doc in docs if cleandoc(doc) != inspect.cleandoc(doc)]
-    assert not differing, differing[:3]
-
-
-@given(st.text(alphabet=" \t\na#", max_size=40))
-def test_cleandoc_reads_any_text_as_inspect_does(text):
-    import inspect
-
-    from urdfcli.rules import cleandoc
-
-    assert cleandoc(text) == inspect.cleandoc(text)

@@ -18,21 +18,22 @@ import time
 from pathlib import Path
 
 import pytest
-
 from conftest import FIXTURES, example_robot_data
 
 HIDE_CURSOR, SHOW_CURSOR = b"\x1b[?25l", b"\x1b[?25h"
 ANSI = re.compile(rb"\x1b\[[0-9;?]*[A-Za-z]")
 
 
-def on_terminal(*args: str, cwd: Path | None = None, interrupt_after: float | None = None) -> tuple[bytes, int]:
-    """Everything urdfcli writes to a terminal (both streams), and its exit code;
-    with ``interrupt_after``, Ctrl-C is pressed after that many seconds."""
+def on_terminal(
+    *args: str, cwd: Path | None = None, interrupt_after: float | None = None, env: dict | None = None, program: Path | None = None
+) -> tuple[bytes, int]:
+    """Everything urdfcli (or ``program``) writes to a terminal (both streams), and
+    its exit code; with ``interrupt_after``, Ctrl-C is pressed after that many seconds."""
     leader, follower = pty.openpty()
-    environment = {k: v for k, v in os.environ.items() if k not in ("NO_COLOR", "FORCE_COLOR", "CI", "GITHUB_ACTIONS")}
+    environment = {k: v for k, v in os.environ.items() if k not in ("NO_COLOR", "FORCE_COLOR", "CI", "GITHUB_ACTIONS", "URDFCLI_DEBUG")}
     process = subprocess.Popen(
-        [sys.executable, "-m", "urdfcli", *args], stdin=follower, stdout=follower, stderr=follower, cwd=cwd,
-        env={**environment, "TERM": "xterm-256color", "COLUMNS": "160"}, start_new_session=True,
+        [sys.executable, *([str(program)] if program else ["-m", "urdfcli"]), *args], stdin=follower, stdout=follower, stderr=follower,
+        cwd=cwd, env={**environment, "TERM": "xterm-256color", "COLUMNS": "200", **(env or {})}, start_new_session=True,
     )
     os.close(follower)
     out = b""
@@ -149,21 +150,8 @@ def test_an_internal_error_on_a_terminal_is_one_line(tmp_path):
         "from urdfcli.cli import main\n"
         "sys.exit(main(sys.argv[1:]))\n"
     )
-    leader, follower = pty.openpty()
-    environment = {k: v for k, v in os.environ.items() if k not in ("NO_COLOR", "URDFCLI_DEBUG")}
-    process = subprocess.Popen([sys.executable, str(program), "check", str(BROKEN)], stdout=follower, stderr=follower, env=environment)
-    os.close(follower)
-    out = b""
-    while True:
-        try:
-            chunk = os.read(leader, 65536)
-        except OSError:
-            break
-        if not chunk:
-            break
-        out += chunk
-    assert process.wait(timeout=60) == 2
-    os.close(leader)
+    out, code = on_terminal("check", str(BROKEN), program=program)
+    assert code == 2
     lines = [line for line in text(out).splitlines() if line.strip()]
     assert len(lines) == 1 and lines[0].startswith("urdfcli: internal error (ZeroDivisionError: boom)")
     assert cursor_restored(out)

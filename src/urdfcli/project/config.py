@@ -37,6 +37,7 @@ from pathlib import Path
 from typing import Any, NamedTuple
 
 from ..diagnostics import Severity
+from ..read.folders import nearest
 from ..rules import REGISTRY, Rule, UnknownRule, lookup
 from ..rules.suggestions import close_matches
 
@@ -340,19 +341,7 @@ class Configurations:
 
     def find(self, start: Path) -> Path | None:
         """The nearest configuration file at or above a folder."""
-        passed = []
-        folder = start
-        while folder not in self._nearest:
-            passed.append(folder)
-            own = self._own(folder)
-            if own is not None or folder.parent == folder:
-                self._nearest[folder] = own
-                break
-            folder = folder.parent
-        found = self._nearest[folder]
-        for seen in passed:
-            self._nearest[seen] = found
-        return found
+        return nearest(start, self._own, self._nearest)
 
     def _own(self, folder: Path) -> Path | None:
         for name in CONFIG_NAMES:

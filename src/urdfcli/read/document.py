@@ -196,6 +196,7 @@ _XACRO_ELEMENT = "//*[" + " or ".join(f"namespace-uri() = '{ns}'" for ns in sort
 # ${...} and $(...) where xacro evaluates them: attribute values and text (comments are not text here).
 _SUBSTITUTION = "//@*[contains(., '${') or contains(., '$(')] | //text()[contains(., '${') or contains(., '$(')]"
 _USES_XACRO = f"boolean({_XACRO_ELEMENT} | {_SUBSTITUTION})"
+_HAS_XACRO_ELEMENT = f"boolean({_XACRO_ELEMENT})"
 
 
 def is_xacro(data: bytes) -> bool:
@@ -215,7 +216,9 @@ def _told(data: bytes) -> tuple[bool, Element | None]:
         root = parse(data)
     except XmlError:
         return False, None
-    return bool(root.xpath(_USES_XACRO)), root
+    # no substitution can be written where the bytes hold none: only elements are looked at then
+    substitutions = b"${" in data or b"$(" in data or not positions.ascii_compatible(data)
+    return bool(root.xpath(_USES_XACRO if substitutions else _HAS_XACRO_ELEMENT)), root
 
 
 def read_document(

@@ -24,6 +24,7 @@ from collections.abc import Iterable, Iterator
 from functools import cached_property
 from pathlib import Path
 
+from .folders import nearest
 from .xml import XmlError, parse
 
 SKIP_DIRS = {"build", "install", "log", "devel", "node_modules", "__pycache__", "site-packages"}
@@ -69,21 +70,7 @@ class PackageIndex:
 
     def enclosing_package(self, start: Path) -> Path | None:
         """The nearest folder at or above ``start`` that holds a package.xml."""
-        found = []
-        folder = start
-        while folder not in self._enclosing:
-            found.append(folder)
-            if (folder / "package.xml").is_file():
-                self._enclosing[folder] = folder
-                break
-            if folder.parent == folder:
-                self._enclosing[folder] = None
-                break
-            folder = folder.parent
-        answer = self._enclosing[folder]
-        for seen in found:
-            self._enclosing[seen] = answer
-        return answer
+        return nearest(start, _holds_package, self._enclosing)
 
     def local_roots(self, package_dir: Path) -> list[Path]:
         """The folders whose packages are siblings of package_dir, nearest first: the
@@ -95,6 +82,10 @@ class PackageIndex:
 
     def resolver(self, options: Iterable[str] = (), input_file: Path | None = None) -> PackageResolver:
         return PackageResolver(options, input_file, index=self)
+
+
+def _holds_package(folder: Path) -> Path | None:
+    return folder if (folder / "package.xml").is_file() else None
 
 
 def read_package_name(manifest: Path) -> str | None:
