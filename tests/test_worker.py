@@ -4,6 +4,9 @@ each job bounded in time and memory, and a worker that fails is replaced."""
 from __future__ import annotations
 
 import os
+import subprocess
+import sys
+import textwrap
 import time
 import xml.dom.minidom
 from pathlib import Path
@@ -51,10 +54,30 @@ def test_a_worker_that_dies_is_reported_and_replaced(worker):
     assert worker.run("pid") == after
 
 
-def test_a_worker_that_kept_much_memory_retires_and_the_next_job_runs_in_a_new_one(worker):
-    kept_in = worker.run("keep", (sandbox.RETIRE_MIB + 16) * 1024 * 1024)
-    assert worker.run("pid") != kept_in
-    assert worker.run("pid") == worker.run("pid")
+IN_A_NEW_PROCESS = """
+import os, sys
+sys.path.insert(0, sys.argv[1])
+from urdfcli.read import sandbox
+worker = sandbox.Worker("worker_probe")
+{body}
+"""
+
+
+def in_a_new_process(body: str, **env: str) -> None:
+    """``body`` run with ``worker``, a Worker forked from a small new process (as a command's
+    is): the memory a long test process has freed, which a child reuses, does not count."""
+    support = Path(__file__).parent / "support"
+    code = IN_A_NEW_PROCESS.format(body=textwrap.dedent(body))
+    done = subprocess.run([sys.executable, "-c", code, str(support)], capture_output=True, text=True, timeout=120, env={**os.environ, **env})
+    assert done.returncode == 0, done.stderr
+
+
+def test_a_worker_that_kept_much_memory_retires_and_the_next_job_runs_in_a_new_one():
+    in_a_new_process("""
+        kept_in = worker.run("keep", (sandbox.RETIRE_MIB + 16) * 1024 * 1024)
+        assert worker.run("pid") != kept_in
+        assert worker.run("pid") == worker.run("pid")
+    """)
 
 
 def test_a_worker_out_of_time_is_stopped_and_replaced(worker, monkeypatch):
@@ -67,11 +90,16 @@ def test_a_worker_out_of_time_is_stopped_and_replaced(worker, monkeypatch):
     assert worker.run("pid") != before
 
 
-def test_the_memory_bound_holds_in_the_worker(worker, monkeypatch):
-    monkeypatch.setenv("URDFCLI_XACRO_MEMORY_MIB", "64")
-    with pytest.raises(sandbox.LimitExceeded, match="more than 64 MiB"):
-        worker.run("allocate", 256 * 1024 * 1024)
-    assert worker.run("pid") != os.getpid()
+def test_the_memory_bound_holds_in_the_worker():
+    in_a_new_process("""
+        try:
+            worker.run("allocate", 256 * 1024 * 1024)
+        except sandbox.LimitExceeded as error:
+            assert "more than 64 MiB" in str(error), error
+        else:
+            raise AssertionError("256 MiB allocated under a limit of 64")
+        assert worker.run("pid") != os.getpid()
+    """, URDFCLI_XACRO_MEMORY_MIB="64")
 
 
 def test_the_worker_sees_the_environment_and_folder_of_each_job(worker, monkeypatch, tmp_path):

@@ -150,7 +150,7 @@ def _serve(jobs: int, answers: int, memory_mib: int) -> None:
         # freed 2 MiB. A job that makes cycles without end still meets the memory limit.
         gc.disable()
         _limit_memory(memory_mib)
-        baseline = _memory_used()
+        baseline = _memory_used(RESIDENT)
         while True:
             job = _read_message(jobs, None)
             if not job:
@@ -160,7 +160,7 @@ def _serve(jobs: int, answers: int, memory_mib: int) -> None:
             _write_message(answers, _dumps_outcome(outcome))
             outcome = None
             gc.collect()  # xacro's DOM is cyclic: freed while the parent goes on
-            if _memory_used() > baseline + RETIRE_MIB * 1024 * 1024:
+            if _memory_used(RESIDENT) > baseline + RETIRE_MIB * 1024 * 1024:
                 _write_message(answers, _RETIRING)
                 break
     except BaseException:  # noqa: BLE001 - the parent reports an empty answer
@@ -235,15 +235,22 @@ def _readable(fd: int, seconds: float) -> bool:
     return bool(poll.poll(max(seconds, 0) * 1000))
 
 
-def _memory_used() -> int:
+MAPPED, RESIDENT = 0, 1  # the fields of /proc/self/statm: address space, and the pages in memory
+
+
+def _memory_used(kind: int = MAPPED) -> int:
+    """Bytes of this process's address space (what its limit counts), or of its pages in memory."""
     try:
         with open("/proc/self/statm") as statm:
-            return int(statm.read().split()[0]) * os.sysconf("SC_PAGE_SIZE")
+            return int(statm.read().split()[kind]) * os.sysconf("SC_PAGE_SIZE")
     except (OSError, ValueError):
         return 0
 
 
 def _limit_memory(memory_mib: int) -> None:
+    """At most ``memory_mib`` more address space than the process has when forked.
+    (Memory its parent had freed and kept for reuse comes on top: a worker is
+    forked early, while its parent is small.)"""
     try:
         import resource
 
