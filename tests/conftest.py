@@ -122,3 +122,8 @@ def audited(path, **options):
     with Session(config=Config()) as session:
         result = api.check_target(api.Target(str(path)), {}, "none", session)
         return api.audit(result, session, **options)
+
+
+def has_errors(path) -> bool:
+    """Whether `urdfcli check` finds an error in one file (its exit code is then 1)."""
+    return bool(load(path).errors)

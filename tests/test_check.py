@@ -65,6 +65,11 @@ CASES = {
     "M003": (robot(link_a(visual('<box size="1 1 1"/>', '<material name="m"><color rgba="0 0 0 1"/></material>')) + '<material name="m"><color rgba="1 1 1 1"/></material>'),
              robot(link_a(visual('<box size="1 1 1"/>', '<material name="m"><color rgba="1 1 1 1"/></material>')) + '<material name="m"><color rgba="1 1 1 1"/></material>')),
     "M004": (robot('<link name="a"/><material name="m"><color rgba="1 0 0"/></material>'), robot('<link name="a"/><material name="m"><color rgba="1 0 0 1"/></material>')),
+    "M005": (robot(link_a(visual('<box size="1 1 1"/>', '<material name="m" rgba="1 0 0 1"/>'))),
+             robot(link_a(visual('<box size="1 1 1"/>', '<material name="m"><color rgba="1 0 0 1"/></material>')))),
+    "V009": (robot(joint("revolute", '<origin rpy="0 0 90"/><limit effort="1" velocity="1" lower="-1" upper="1"/>')),
+             robot(joint("revolute", '<origin rpy="0 0 1.5708"/><limit effort="1" velocity="1" lower="-1" upper="1"/>'))),
+    "V010": (robot(joint("continuous", '<dynamics damping="-0.1"/>')), robot(joint("continuous", '<dynamics damping="0.1"/>'))),
     "J001": (robot(BASE + '<joint name="j"><parent link="a"/><child link="b"/></joint>'), robot(BASE + FIXED)),
     "J002": (robot(joint("ball", "")), robot(joint("floating", ""))),
     "J003": (robot(joint("revolute", "")), robot(joint("continuous", ""))),
@@ -184,16 +189,17 @@ def test_json_format_follows_the_contract(tmp_path):
     assert [f["ok"] for f in report["files"]] == [True, False]
     assert report["files"][0]["robot"] == "jtbot"
     diagnostic = report["files"][1]["diagnostics"][0]
-    assert set(diagnostic) == {"code", "severity", "message", "path", "line", "column", "element", "trace"}
+    assert set(diagnostic) == {"code", "severity", "message", "path", "line", "column", "element", "hint", "model", "trace"}
     assert (diagnostic["code"], diagnostic["severity"], diagnostic["line"], diagnostic["element"]) == ("J003", "error", 1, "joint[@name='j']")
     errors = sum(d["severity"] == "error" for f in report["files"] for d in f["diagnostics"])
     warnings = sum(d["severity"] == "warning" for f in report["files"] for d in f["diagnostics"])
-    assert report["summary"] == {"files": 2, "errors": errors, "warnings": warnings}
+    info = sum(d["severity"] == "info" for f in report["files"] for d in f["diagnostics"])
+    assert report["summary"] == {"files": 2, "errors": errors, "warnings": warnings, "info": info}
 
 
 def test_strict_fails_on_warnings(tmp_path):
     path = tmp_path / "w.urdf"
-    path.write_text(robot(link_a(inertial(mass="-1"))))
+    path.write_text(robot(link_a(inertial(inertia='ixx="0.001" ixy="0" ixz="0" iyy="0.001" iyz="0" izz="0.01"'))))  # I006, a warning
     assert run_cli("check", str(path)).returncode == 0
     assert run_cli("check", "--strict", str(path)).returncode == 1
 
@@ -212,8 +218,8 @@ def test_could_not_run_is_exit_2_with_one_line(tmp_path):
     missing = run_cli("check", str(tmp_path / "missing.urdf"))
     assert missing.returncode == 2
     assert missing.stderr.decode().splitlines() == [f"urdfcli: {tmp_path / 'missing.urdf'}: no such file"]
-    directory = run_cli("check", str(tmp_path))
-    assert directory.returncode == 2 and "is a directory" in directory.stderr.decode()
+    directory = run_cli("check", str(tmp_path))  # a folder is searched for models: none here
+    assert directory.returncode == 2 and "no robot model in this folder" in directory.stderr.decode()
     option = run_cli("check", "--no-such-option", "x.urdf")
     assert option.returncode == 2 and b"Traceback" not in option.stderr
     bad_format = run_cli("check", "--format", "yaml", str(FIXTURES / "seed003" / "jtbot.urdf"))

@@ -9,7 +9,7 @@ import subprocess
 from pathlib import Path
 
 import pytest
-from conftest import FIXTURES, all_fixture_models, require_tool, run_cli
+from conftest import FIXTURES, all_fixture_models, has_errors, require_tool, run_cli
 from lxml import etree
 from test_tree import IDS, MODELS, plain_urdf
 
@@ -34,7 +34,7 @@ def test_compat_is_urdf_to_graphviz(path, tmp_path):
     real = real_urdf_to_graphviz(plain_urdf(path, tmp_path), tmp_path / "real")
     assert real.returncode == 0, real.stderr
     mine = run_cli("graph", "--compat", str(path), "mine", cwd=tmp_path)
-    assert mine.returncode == 0, mine.stderr
+    assert mine.returncode == (1 if has_errors(path) else 0), mine.stderr  # errors urdfdom does not check: still drawn
     assert mine.stdout.decode() == "Created file mine.gv\nCreated file mine.pdf\n"
     real_lines = (tmp_path / "real" / "real.gv").read_text().splitlines()
     mine_lines = (tmp_path / "mine.gv").read_text().splitlines()
@@ -127,7 +127,7 @@ def test_svg_shows_every_link(path, tmp_path):
     require_tool("dot")
     out = tmp_path / "graph.svg"
     result = run_cli("graph", str(path), "-o", str(out), "--limits", "--inertial")
-    assert result.returncode == 0, result.stderr
+    assert result.returncode == (1 if has_errors(path) else 0), result.stderr
     text = svg_texts(out.read_bytes())
     root = etree.parse(str(plain_urdf(path, tmp_path))).getroot()
     for link in root.iterfind("link"):
@@ -302,15 +302,31 @@ def test_tree_and_graph_report_checks_errors_as_check_does(tmp_path, command):
     done = run_cli(*command, str(path), cwd=tmp_path)
     assert done.returncode == 1
     assert error_lines(done.stderr) == error_lines(check.stderr)
-    if command[0] == "graph":
-        assert done.stdout == b"" and sorted(p.name for p in tmp_path.iterdir()) == ["r.urdf"]
+    if command[0] == "graph":  # urdfdom reads it, so urdf_to_graphviz draws it: so does graph
+        drawn = done.stdout.decode().startswith('digraph "r"') if "dot" in command else (tmp_path / "r.pdf").exists()
+        assert drawn
+
+
+REJECTED = (  # urdfdom rejects a revolute joint without <limit>: urdf_to_graphviz draws nothing
+    '<robot name="r"><link name="a"/><link name="b"/>'
+    '<joint name="j" type="revolute"><parent link="a"/><child link="b"/><axis xyz="0 0 1"/></joint></robot>'
+)
+
+
+def test_graph_of_a_model_urdfdom_rejects_is_drawn_only_with_force(tmp_path):
+    path = tmp_path / "r.urdf"
+    path.write_text(REJECTED)
+    for compat in ([], ["--compat"]):
+        refused = run_cli("graph", *compat, str(path), cwd=tmp_path)
+        assert refused.returncode == 1 and "J003 error" in refused.stderr.decode()
+        assert refused.stdout == b"" and sorted(p.name for p in tmp_path.iterdir()) == ["r.urdf"]
 
 
 def test_graph_force_draws_a_model_with_errors_and_still_exits_1(tmp_path):
     path = tmp_path / "r.urdf"
-    path.write_text(CHECK_ERRORS)
+    path.write_text(REJECTED)
     dot = run_cli("graph", "--force", "--format", "dot", str(path), cwd=tmp_path)
-    assert dot.returncode == 1 and dot.stdout.decode().startswith('digraph "r"') and "J007 error" in dot.stderr.decode()
+    assert dot.returncode == 1 and dot.stdout.decode().startswith('digraph "r"') and "J003 error" in dot.stderr.decode()
     files = run_cli("graph", "--force", str(path), "out", cwd=tmp_path)
     assert files.returncode == 1 and (tmp_path / "out.gv").exists()
     assert "--force" in run_cli("graph", "--help", env={"COLUMNS": "200"}).stdout.decode()
@@ -330,3 +346,16 @@ def test_readme_example_picture_is_committed():
     assert "(docs/images/crane_graph.png)" in readme
     png = (FIXTURES.parent / "docs" / "images" / "crane_graph.png").read_bytes()
     assert png.startswith(b"\x89PNG") and len(png) > 10000
+
+
+def test_compat_draws_what_urdf_to_graphviz_draws_when_urdfdom_misses_the_errors(tmp_path):
+    path = tmp_path / "r.urdf"
+    path.write_text(CHECK_ERRORS)
+    real = real_urdf_to_graphviz(path, tmp_path / "real")
+    assert real.returncode == 0, real.stderr  # urdfdom checks neither a zero axis nor a mimic's joint
+    mine = run_cli("graph", "--compat", "--format", "dot", str(path))
+    assert mine.returncode == 1 and "J007 error" in mine.stderr.decode() and "J008 error" in mine.stderr.decode()
+    assert mine.stdout.decode() == (tmp_path / "real" / "real.gv").read_text()
+    rejected = tmp_path / "rejected.urdf"
+    rejected.write_text(REJECTED)
+    assert real_urdf_to_graphviz(rejected, tmp_path / "refused").returncode != 0

@@ -334,9 +334,9 @@ def test_json_has_exactly_the_documented_shape():
     assert set(data) == {"robot", "links", "total"} and data["robot"] == "mycar"
     tensor_keys = {"ixx", "ixy", "ixz", "iyy", "iyz", "izz"}
     for link in data["links"]:
-        assert set(link) == {"name", "mass", "mass_used", "com", "inertia", "principal", "expected", "expected_from", "problems"}
+        assert set(link) == {"name", "path", "line", "column", "mass", "mass_used", "com", "inertia", "principal", "expected", "expected_from", "problems"}
         for problem in link["problems"]:
-            assert set(problem) == {"code", "severity", "message"}
+            assert set(problem) == {"code", "severity", "message", "path", "line", "column", "element", "hint", "model", "trace"}
     camera = next(link for link in data["links"] if link["name"] == "camera")
     assert camera["mass"] == pytest.approx(0.01) and camera["com"] == [0, 0, 0]
     assert set(camera["inertia"]) == tensor_keys and set(camera["expected"]) == tensor_keys
@@ -346,7 +346,8 @@ def test_json_has_exactly_the_documented_shape():
     # the seed's rotated Box_inertial_matrix, shown on a 10 g camera: info, as on any link of a few grams
     assert [p["code"] for p in camera["problems"]] == ["I009"] and camera["problems"][0]["severity"] == "info"
     frame = next(link for link in data["links"] if link["name"] == "base_footprint")
-    assert frame == {"name": "base_footprint", "mass": None, "mass_used": None, "com": None, "inertia": None, "principal": None,
+    assert frame.pop("path").endswith(".urdf.xacro") and frame.pop("line") > 0
+    assert frame == {"name": "base_footprint", "column": frame["column"], "mass": None, "mass_used": None, "com": None, "inertia": None, "principal": None,
                      "expected": None, "expected_from": "massless frame link", "problems": []}
     assert set(data["total"]) == {"mass", "com", "inertia"} and data["total"]["mass"] == pytest.approx(2.38)
     assert set(data["total"]["inertia"]) == tensor_keys

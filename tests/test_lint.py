@@ -56,16 +56,25 @@ def test_a_correct_plugin_model_has_no_description_warnings():
 
 
 def test_folders_are_searched_for_models_only(tmp_path):
-    for name in ("a.urdf", "sub/b.urdf.xacro", "sub/macros.xacro", ".hidden/c.urdf", "build/d.urdf"):
+    for name in ("a.urdf", "sub/b.urdf.xacro", ".hidden/c.urdf", "build/d.urdf"):
         write(tmp_path, name, '<robot name="r" xmlns:xacro="http://www.ros.org/wiki/xacro"><link name="Bad"/></robot>\n')
+    # ROS 1's ur5.xacro: a model named *.xacro, calling the macro its library defines
+    write(tmp_path, "sub/macros.xacro", '<robot xmlns:xacro="http://www.ros.org/wiki/xacro"><xacro:macro name="arm"><link name="Bad"/></xacro:macro></robot>\n')
+    write(tmp_path, "sub/ur5.xacro", '<robot name="r" xmlns:xacro="http://www.ros.org/wiki/xacro"><xacro:include filename="macros.xacro"/><xacro:arm/></robot>\n')
+    for command in ("lint", "check"):
+        done = run_cli(command, "--format", "concise", "--isolated", *(["--select", "S003"] if command == "lint" else []), str(tmp_path))
+        summary = done.stderr.decode().splitlines()[-1]
+        assert summary.startswith("3 files checked"), (command, summary)  # a.urdf, b.urdf.xacro, ur5.xacro: not the library, hidden or build folders
     _, lines = concise("--select", "S003", str(tmp_path))
-    assert [line.split(":")[0] for line in lines] == [str(tmp_path / "a.urdf"), str(tmp_path / "sub/b.urdf.xacro")]
+    assert [line.split(":")[0] for line in lines] == [str(tmp_path / "a.urdf"), str(tmp_path / "sub/b.urdf.xacro"), str(tmp_path / "sub/macros.xacro")]
+    assert lines[2].endswith(f"(in macro 'arm' called at {tmp_path / 'sub/ur5.xacro'}:1:101)")
     _, lines = concise("--select", "S003", str(tmp_path / "sub/macros.xacro"))
-    assert len(lines) == 1  # named explicitly, a plain .xacro is linted
+    assert len(lines) == 1  # named explicitly, a library is linted through its model
     empty = tmp_path / "empty"
     empty.mkdir()
-    done = run_cli("lint", str(empty))
-    assert done.returncode == 2 and "no *.urdf or *.urdf.xacro file" in done.stderr.decode()
+    for command in ("lint", "check"):
+        done = run_cli(command, str(empty))
+        assert done.returncode == 2 and done.stderr.decode() == f"urdfcli: {empty}: no robot model in this folder (*.urdf, *.urdf.xacro, or a *.xacro file that makes a robot)\n"
 
 
 def test_parallel_runs_print_the_same_output_in_the_same_order():

@@ -8,6 +8,7 @@ import re
 import pytest
 from conftest import ROOT, run_cli
 
+import urdfcli
 from urdfcli.report.rules import markdown
 from urdfcli.rules import REGISTRY, SECTIONS
 
@@ -53,7 +54,9 @@ def test_rules_table_lists_every_rule():
 
 
 def test_rules_json():
-    listed = json.loads(run_cli("rules", "--format", "json").stdout)
+    document = json.loads(run_cli("rules", "--format", "json").stdout)
+    assert document["version"] == 1 and document["urdfcli"] == urdfcli.__version__
+    listed = document["rules"]
     assert sorted(r["code"] for r in listed) == [rule.code for rule in RULES]
     style = next(r for r in listed if r["code"] == "S001")
     assert style["default"] is False and style["options"][0] == {

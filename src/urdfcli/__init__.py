@@ -8,10 +8,23 @@ The command line is ``urdfcli``; from Python::
     assert not result.errors, result.report()
 """
 
-from .api import UsageError, check, lint
-from .diagnostics import Call, Diagnostic, Location, Severity
-from .report.result import Result
-from .session import Session
+from importlib import import_module
+
 from .version import __version__
+
+_EXPORTS = {
+    "UsageError": "api", "check": "api", "lint": "api",
+    "Call": "diagnostics", "Diagnostic": "diagnostics", "Location": "diagnostics", "Severity": "diagnostics",
+    "Result": "report.result", "Session": "session",
+}
+
+
+def __getattr__(name: str):
+    """The library's names, imported when first used: ``urdfcli`` itself, which the
+    program's entry point imports first, imports nothing else (see __main__)."""
+    if name not in _EXPORTS:
+        raise AttributeError(f"module 'urdfcli' has no attribute {name!r}")
+    return getattr(import_module(f".{_EXPORTS[name]}", __name__), name)
+
 
 __all__ = ["Call", "Diagnostic", "Location", "Result", "Session", "Severity", "UsageError", "__version__", "check", "lint"]

@@ -25,15 +25,13 @@ from .model import massprops
 from .model.load import Loaded, load
 from .project import linter
 from .project.config import Config, ConfigError
-from .project.workspace import Target, assemble, model_targets, plan, unchecked_library
+from .project.workspace import Target, assemble, model_targets, models_below, plan, unchecked_library
 from .read.document import STDIN, InputError, read_document
-from .read.packages import SKIP_DIRS, PackageError
+from .read.packages import PackageError
 from .report import inertia
 from .report.result import Result
 from .rules import REGISTRY
 from .session import Session
-
-MODEL_SUFFIXES = (".urdf", ".urdf.xacro")
 
 
 class UsageError(Exception):
@@ -64,7 +62,7 @@ def lint(paths: Iterable[str | os.PathLike], *arguments: str, session: Session |
     (a model listed in ``[tool.urdfcli] models`` once per argument set)."""
     if isinstance(paths, (str, os.PathLike)):
         paths = [paths]
-    return run_api(find_models([os.fspath(p) for p in paths]), arguments, "all", session, settings).results
+    return run_api([os.fspath(p) for p in paths], arguments, "all", session, settings).results
 
 
 def run_api(paths: list[str], arguments: Iterable[str], checks: str, session: Session | None, settings: dict) -> Run:
@@ -75,7 +73,7 @@ def run_api(paths: list[str], arguments: Iterable[str], checks: str, session: Se
     except PackageError as error:
         raise UsageError(str(error)) from None
     try:
-        found = run(paths, mappings, checks, session)
+        found = run(find_models(paths, session), mappings, checks, session)
     finally:
         if own:
             session.close()
@@ -101,40 +99,20 @@ def xacro_arguments(arguments: Iterable[str]) -> dict[str, str]:
     return mappings
 
 
-def find_models(paths: list[str]) -> list[str]:
-    """Files as given; folders searched (sorted) for *.urdf and *.urdf.xacro. Raises
-    UsageError for a folder with none."""
+def find_models(paths: list[str], session: Session) -> list[str]:
+    """Files as given; each folder replaced by the models below it (see
+    :func:`urdfcli.project.workspace.models_below`). Raises UsageError for a
+    folder that holds none."""
     files: list[str] = []
     for path in paths:
-        folder = Path(path)
-        if path != STDIN and folder.is_dir():
-            found = models_in(folder)
+        if path != STDIN and Path(path).is_dir():
+            found = models_below(Path(path), session.package_paths, session.packages)
             if not found:
-                raise UsageError(f"{path}: no *.urdf or *.urdf.xacro file in this folder")
+                raise UsageError(f"{path}: no robot model in this folder (*.urdf, *.urdf.xacro, or a *.xacro file that makes a robot)")
             files.extend(str(f) for f in found)
         else:
             files.append(path)
     return files
-
-
-def models_in(folder: Path) -> list[Path]:
-    """Robot models below a folder, skipping hidden and build folders. Plain *.xacro
-    files are macro libraries: they are checked through the models that include them."""
-    found = []
-    stack = [folder]
-    while stack:
-        current = stack.pop()
-        try:
-            entries = sorted(current.iterdir())
-        except OSError:
-            continue
-        for entry in entries:
-            if entry.is_dir():
-                if not entry.name.startswith(".") and entry.name not in SKIP_DIRS:
-                    stack.append(entry)
-            elif entry.name.endswith(MODEL_SUFFIXES):
-                found.append(entry)
-    return sorted(found)
 
 
 def run(
@@ -291,4 +269,4 @@ def expand(path: str, mappings: dict[str, str], session: Session) -> tuple[str |
     return document.expanded_text, list(document.includes), diagnostics
 
 
-__all__ = ["Run", "Session", "UsageError", "check", "check_target", "expand", "find_models", "lint", "models_in", "run", "xacro_arguments"]
+__all__ = ["Run", "Session", "UsageError", "check", "check_target", "expand", "find_models", "lint", "run", "xacro_arguments"]

@@ -35,6 +35,12 @@ class Call(namedtuple("Call", "file line column macro")):
 
     __slots__ = ()
 
+    @property
+    def phrase(self) -> str:
+        """Where it was written: ``in macro 'wheel' called at FILE:LINE:COL``."""
+        where = ":".join([self.file] + ([str(self.line), str(self.column or 1)] if self.line else []))
+        return f"in macro '{self.macro}' called at {where}"
+
 
 class Location(NamedTuple):
     """Where an element was written.
@@ -59,6 +65,12 @@ class Diagnostic(NamedTuple):
     hint: str | None = None
     severity: Severity | None = None  # None until the linter gives the rule's or the configured one
     subjects: tuple[str, ...] = ()  # the links or joints it is about
+    model: str | None = None  # located in a xacro library: the model (and arguments) whose expansion found it
+
+    @property
+    def through(self) -> str | None:
+        """``found through model robot.urdf.xacro``, for a diagnostic a model found in a library."""
+        return f"found through model {self.model}" if self.model else None
 
     @property
     def path(self) -> str:

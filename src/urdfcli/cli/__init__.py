@@ -17,6 +17,7 @@ import typer
 
 from ..version import __version__
 from . import check, expand, graph, inertia, lint, rules, tree
+from .common import CtrlC
 
 COMMANDS = {
     "expand": expand.expand,
@@ -77,10 +78,12 @@ def main(argv: list[str] | None = None) -> int:
         from typer import rich_utils  # the help screen: no bold or dim either
 
         rich_utils.COLOR_SYSTEM = None
+    ctrl_c = CtrlC.install()
     try:
         code = app(args=argv, prog_name="urdfcli", standalone_mode=False)
-        if code == INTERRUPTED:  # typer's answer to Ctrl-C
+        if code == INTERRUPTED or ctrl_c.pressed:  # typer's answer to Ctrl-C; or one a library swallowed
             sys.stderr.write("urdfcli: interrupted\n")
+            return INTERRUPTED
         return code if isinstance(code, int) else 0
     except SystemExit as done:
         return done.code if isinstance(done.code, int) else 0
@@ -109,6 +112,8 @@ def main(argv: list[str] | None = None) -> int:
             "please report this bug with the input file (URDFCLI_DEBUG=1 shows the traceback)\n"
         )
         return 2
+    finally:
+        ctrl_c.uninstall()
 
 
 INTERRUPTED = 130  # the shells' exit code for a program stopped by Ctrl-C

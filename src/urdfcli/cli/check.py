@@ -13,9 +13,11 @@ from .common import (
     LIBRARIES_HELP,
     ColorOption,
     ConfigOption,
+    CtrlC,
     Exit,
     InputsArgument,
     IsolatedOption,
+    QuietOption,
     PackagePathOption,
     choose,
     format_option,
@@ -38,6 +40,7 @@ def check(
     package_path: PackagePathOption = None,
     config: ConfigOption = None,
     isolated: IsolatedOption = False,
+    quiet: QuietOption = False,
     color: ColorOption = "auto",
 ) -> None:
     """Check URDF/xacro files the way check_urdf does, and find what it misses.
@@ -51,9 +54,9 @@ def check(
     """
     output_format = choose(output_format, FORMATS)
     paths, mappings = split_inputs(inputs)
-    output = Output.standard(color)
+    output = Output.standard(color, quiet)
     with session(package_path, config=config, isolated=isolated) as run:
-        found = api.run(paths, mappings, "check", run)
+        found = api.run(api.find_models(paths, run), mappings, "check", run, progress=CtrlC.stop_if_pressed)
         report_unreadable(output, found.unreadable)
         report.reporter(output_format)(found.results, output, "check", run.sources)
     failing = Severity.WARNING.rank if strict else Severity.ERROR.rank

@@ -3,6 +3,8 @@
 from __future__ import annotations
 
 import contextlib
+import signal
+import threading
 from collections.abc import Iterator
 from enum import IntEnum
 from pathlib import Path
@@ -66,6 +68,10 @@ IsolatedOption = Annotated[
     bool,
     typer.Option("--isolated", help="Read no configuration file (neither the tool.urdfcli table of pyproject.toml nor urdfcli.toml)."),
 ]
+QuietOption = Annotated[
+    bool,
+    typer.Option("--quiet", "-q", help="Print only the diagnostics and the summary: no tree, no notes on libraries, no progress bar."),
+]
 LIBRARIES_HELP = (
     "A xacro file (*.xacro) that only defines macros and properties (no link, joint or macro call outside its macros) "
     "is a library: it is checked through the models of its repository or workspace that include it, "
@@ -75,6 +81,39 @@ LIBRARIES_HELP = (
 
 def format_option(help: str, metavar: str = "FORMAT"):
     return Annotated[str, typer.Option("--format", "-f", metavar=metavar, help=help, case_sensitive=False)]
+
+
+class CtrlC:
+    """The SIGINT handler of a command: raise KeyboardInterrupt, and remember it. A
+    library may swallow the exception (trimesh catches BaseException while it imports
+    scipy): the command still stops at the next model (:meth:`stop_if_pressed`), or
+    ends with exit code 130."""
+
+    def __init__(self) -> None:
+        self.pressed = False
+        self.previous = None
+
+    @classmethod
+    def install(cls) -> CtrlC:
+        handler = cls()
+        if threading.current_thread() is threading.main_thread():  # signals reach the main thread only
+            handler.previous = signal.signal(signal.SIGINT, handler)
+        return handler
+
+    def uninstall(self) -> None:
+        if self.previous is not None:
+            signal.signal(signal.SIGINT, self.previous)
+
+    def __call__(self, signum, frame) -> None:
+        self.pressed = True
+        raise KeyboardInterrupt
+
+    @staticmethod
+    def stop_if_pressed(*_) -> None:
+        """Raise KeyboardInterrupt when Ctrl-C was pressed (a progress callback)."""
+        handler = signal.getsignal(signal.SIGINT)
+        if isinstance(handler, CtrlC) and handler.pressed:
+            raise KeyboardInterrupt
 
 
 def fail(message: str) -> SystemExit:

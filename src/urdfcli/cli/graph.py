@@ -12,6 +12,8 @@ from ..report.console import Output
 from ..report.drawing import RenderError, Style, compat_dot, render, styled_dot
 from ..report.escape import escape
 from ..report.output import OutputError, write_atomic
+from ..report.result import Result
+from ..rules import REGISTRY
 from .common import ColorOption, ConfigOption, Exit, IsolatedOption, PackagePathOption, fail, session, split_inputs
 from .tree import load_model, report_errors, start_link
 
@@ -56,9 +58,10 @@ def graph(
 
     The model's errors are those `check` reports (J007 zero axis, J008 mimic
     of a missing joint...), printed on stderr. Exit 0; 1 when the model has
-    errors: then nothing is written, unless --force draws it anyway; 2 when
-    the input cannot be read, an output cannot be written, or dot is missing
-    or fails (the DOT file is still written).
+    errors: the graph is drawn all the same when urdfdom reads the model (as
+    urdf_to_graphviz would), and otherwise only with --force; 2 when the input
+    cannot be read, an output cannot be written, or dot is missing or fails
+    (the DOT file is still written).
     """
     paths, mappings = split_inputs(inputs)
     if len(paths) > 2:
@@ -74,7 +77,7 @@ def graph(
     with session(package_path, config=config, isolated=isolated) as run:
         result = load_model(paths[0], mappings, run)
         has_errors = report_errors(result, console, run)
-        start = start_link(result, None, console) if force or not has_errors else None
+        start = start_link(result, None, console) if force or not stops_drawing(result) else None
     if start is None:
         raise SystemExit(Exit.PROBLEMS)
     robot = result.robot
@@ -90,8 +93,16 @@ def graph(
         base = paths[1] if len(paths) == 2 else escape(robot.name or "robot").replace("/", "_")  # no control character in a file name
         write(console, Path(f"{base}.gv"), dot, inputs_read)
         make_picture(console, dot, Path(f"{base}.pdf"), "pdf", timeout, inputs_read, Path(f"{base}.gv"))
-    if has_errors:  # drawn with --force
+    if has_errors:  # drawn all the same (what urdfdom does not check), or with --force
         raise SystemExit(Exit.PROBLEMS)
+
+
+def stops_drawing(result: Result) -> bool:
+    """Whether the model cannot be drawn as urdf_to_graphviz draws it: urdfdom rejects it
+    (an error check_urdf reports), or no robot was read. Errors urdfdom does not check
+    (a negative mass, a link with two parents) are printed, and the drawing made."""
+    loaded = result.loaded
+    return loaded is None or not loaded.modelled or any(REGISTRY[d.code].urdfdom for d in result.errors)
 
 
 def make_picture(console: Output, dot: str, output: Path, kind: str, timeout: float, inputs: list[str], dot_file: Path | None) -> None:

@@ -8,18 +8,18 @@ from typing import Annotated
 import typer
 
 from .. import api, report
-from ..api import UsageError
 from ..diagnostics import Severity
 from ..report.console import Output
 from .common import (
     LIBRARIES_HELP,
     ColorOption,
     ConfigOption,
+    CtrlC,
     Exit,
     IsolatedOption,
+    QuietOption,
     PackagePathOption,
     choose,
-    fail,
     format_option,
     report_unreadable,
     session,
@@ -48,6 +48,7 @@ def lint(
     exit_zero: Annotated[bool, typer.Option("--exit-zero", help="Exit 0 even when problems remain (2 still means it could not run).")] = False,
     jobs: Annotated[int, typer.Option("--jobs", "-j", min=0, metavar="N", help="Lint files in N processes (0: one per CPU); the output order does not change.")] = 1,
     package_path: PackagePathOption = None,
+    quiet: QuietOption = False,
     color: ColorOption = "auto",
 ) -> None:
     """Lint URDF/xacro files against documented, configurable rules.
@@ -58,12 +59,9 @@ def lint(
     """
     output_format = choose(output_format, FORMATS)
     paths, mappings = split_inputs(inputs)
-    output = Output.standard(color)
-    try:
-        files = api.find_models(paths)
-    except UsageError as error:
-        raise fail(str(error)) from None
+    output = Output.standard(color, quiet)
     with session(package_path, config=config, isolated=isolated, select=select, ignore=ignore, extend_select=extend_select) as run:
+        files = api.find_models(paths, run)
         with Progress(output) as progress:
             found = api.run(files, mappings, "all", run, jobs=jobs, progress=progress.update)
         report_unreadable(output, found.unreadable)
@@ -81,13 +79,15 @@ class Progress:
 
     def __init__(self, output: Output) -> None:
         self.console = output.err
+        self.quiet = output.quiet
         self.start = time.monotonic()
         self.bar = None
         self.task = None
 
     def update(self, done: int, total: int) -> None:
+        CtrlC.stop_if_pressed()
         if self.bar is None:
-            if not self.console.is_terminal or done >= total or time.monotonic() - self.start < PROGRESS_AFTER:
+            if self.quiet or not self.console.is_terminal or done >= total or time.monotonic() - self.start < PROGRESS_AFTER:
                 return
             from rich.progress import Progress as Bar
 

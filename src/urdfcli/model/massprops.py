@@ -320,3 +320,15 @@ def tensor_text(tensor: Matrix, other: Matrix | None = None) -> str:
     extra = as_dict(other) if other is not None else values
     shown = [k for k in KEYS if k in ("ixx", "iyy", "izz") or values[k] or extra[k]]
     return " ".join(f"{k}={values[k]:.3g}" for k in shown)
+
+
+def negated_products(m: Matrix) -> Matrix:
+    """The tensor with its products of inertia (ixy, ixz, iyz) negated: the other sign
+    convention for them, which some CAD tools export."""
+    return ((m[0][0], -m[0][1], -m[0][2]), (-m[1][0], m[1][1], -m[1][2]), (-m[2][0], -m[2][1], m[2][2]))
+
+
+def inertia_element(m: Matrix) -> str:
+    """``<inertia ixx=".." .../>`` for a tensor, values to six significant digits."""
+    values = as_dict(m)
+    return "<inertia " + " ".join(f'{k}="{number(values[k])}"' for k in KEYS) + "/>"

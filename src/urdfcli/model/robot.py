@@ -8,6 +8,7 @@ leaves the field empty, and reads on.
 
 # No ``from __future__ import annotations`` here: typing.NamedTuple compiles each field's
 # annotation written as a string, which cost 6 ms of every start.
+import math
 from itertools import count
 from typing import TYPE_CHECKING, NamedTuple
 
@@ -23,6 +24,7 @@ Vec3 = tuple[float, float, float]
 JOINT_TYPES = ("fixed", "revolute", "continuous", "prismatic", "floating", "planar")
 MOVING_AXIS_TYPES = ("revolute", "continuous", "prismatic", "planar")
 INERTIA_KEYS = ("ixx", "ixy", "ixz", "iyy", "iyz", "izz")
+FULL_TURN = 2 * math.pi + 1e-3  # radians: no one writes an angle beyond it, everyone writes 90 or 180 in degrees
 ZERO_HINT = "a placeholder shape is better left out; give a real shape a positive size"
 
 
@@ -85,6 +87,13 @@ class Mimic(NamedTuple):
     offset: float = 0.0
 
 
+class Safety(NamedTuple):
+    """A joint's ``<safety_controller>``: its soft limits (None when not given)."""
+
+    soft_lower: float | None
+    soft_upper: float | None
+
+
 class Joint(NamedTuple):
     name: str
     at: int
@@ -95,7 +104,8 @@ class Joint(NamedTuple):
     axis: Vec3
     limit: Limit | None
     mimic: Mimic | None
-    parts: tuple[tuple[str, int], ...] = ()  # where its first <parent>, <child>, <axis>, <limit>, <mimic> are
+    parts: tuple[tuple[str, int], ...] = ()  # where its first <parent>, <child>, <axis>, <limit>, <mimic>, <safety_controller> are
+    safety: Safety | None = None
 
     def part(self, tag: str) -> int | None:
         """Where the joint's first ``<tag>`` is (None when it has none)."""
@@ -130,9 +140,9 @@ class Robot:
         self.joints: dict[str, Joint] = {}
         self.materials: dict[str, Material] = {}
         self.resources: list[Resource] = resources if resources is not None else []
-        self.unknown: "list[Unknown]" = []  # read only when asked for
-        self.extensions: "list[Element]" = []  # top-level blocks of other formats
-        self._placed: "dict[Element, int]" = {}
+        self.unknown: list[Unknown] = []  # read only when asked for
+        self.extensions: list[Element] = []  # top-level blocks of other formats
+        self._placed: dict[Element, int] = {}
         self.derived: dict = {}  # worked out from the rest, once
 
     def remembered(self, key, compute):
@@ -161,7 +171,7 @@ class Reader:
         self.vocabulary = vocabulary  # classify markup against URDF's vocabulary too
         self.diagnostics: list[Diagnostic] = []
         self.resources: list[Resource] = []
-        self._index: "dict[Element, int]" = {}  # the elements being read -> their index
+        self._index: dict[Element, int] = {}  # the elements being read -> their index
         # Values read from texts seen before in this document: models repeat a few texts
         # over and over. Only texts read without a diagnostic are kept, and values are
         # never changed (an inertia dict is shared by the links that write the same text).
@@ -170,13 +180,14 @@ class Reader:
         self._poses: dict[tuple[str | None, str | None], Pose] = {}
         self._tensors: dict[tuple[str | None, ...], dict[str, float]] = {}
         self._limits: dict[tuple[str | None, ...], Limit] = {}
+        self._misplaced_colours: set[int] = set()  # materials whose colour is written on <material> (M005)
 
     def at(self, element: "Element | None") -> int | None:
         return self._index[element] if element is not None else None
 
     # -- reporting -------------------------------------------------------------
-    def report(self, code: str, message: str, element: "Element | None", hint: str | None = None) -> None:
-        self.diagnostics.append(self.document.diagnostic(code, message, self.at(element), hint))
+    def report(self, code: str, message: str, element: "Element | None", hint: str | None = None, attribute: str | None = None) -> None:
+        self.diagnostics.append(self.document.diagnostic(code, message, self.at(element), hint, attribute))
 
     # -- values ----------------------------------------------------------------
     def number(self, element: "Element", attribute: str, required: bool = False, what: str = "") -> float | None:
@@ -191,7 +202,7 @@ class Reader:
         try:
             value = parse_double(text)
         except NumberError as error:
-            self.report(error.code, f"{tag_name(element)} {attribute}: {error.reason}{what}", element)
+            self.report(error.code, f"{tag_name(element)} {attribute}: {error.reason}{what}", element, attribute=attribute)
             return None
         self._numbers[text] = value
         return value
@@ -207,10 +218,10 @@ class Reader:
             value = self._vectors[text] = parse_vector(text)  # type: ignore[assignment]
             return value  # type: ignore[return-value]
         except NumberError as error:
-            self.report(error.code, f"{tag_name(element)} {attribute}: component {error.reason}", element)
+            self.report(error.code, f"{tag_name(element)} {attribute}: component {error.reason}", element, attribute=attribute)
         except VectorLengthError as error:
             hint = "components are separated by single spaces" if ("\t" in text or "\n" in text or "," in text) else None
-            self.report("V003", f"{tag_name(element)} {attribute}: {error.reason}", element, hint)
+            self.report("V003", f"{tag_name(element)} {attribute}: {error.reason}", element, hint, attribute)
         return None
 
     def pose(self, origin: "Element | None") -> Pose:
@@ -221,16 +232,27 @@ class Reader:
         if pose is None:
             reported = len(self.diagnostics)
             pose = Pose(self.vector(origin, "xyz", (0.0, 0.0, 0.0)) or (0.0, 0.0, 0.0), self.vector(origin, "rpy", (0.0, 0.0, 0.0)) or (0.0, 0.0, 0.0))
+            self.radians(origin, pose.rpy)
             if len(self.diagnostics) == reported:
                 self._poses[key] = pose
         return pose
 
+    def radians(self, origin: "Element", rpy: Vec3) -> None:
+        """V009: an angle beyond a full turn is written in degrees (``rpy="0 0 90"``)."""
+        if all(abs(angle) <= FULL_TURN for angle in rpy):
+            return
+        radians = " ".join(format_number(round(math.radians(a), 6)) if abs(a) > FULL_TURN else format_number(a) for a in rpy)
+        self.report(
+            "V009", f"origin rpy '{origin.get('rpy')}' has an angle beyond a full turn: degrees, where URDF takes radians",
+            origin, f'in radians: rpy="{radians}"', "rpy",
+        )
+
     def positive(self, element: "Element", attribute: str, value: float | None) -> None:
         """A negative dimension is an error (V006); zero is a warning (V008): ROS loads it, physics engines do not."""
         if value is not None and value < 0:
-            self.report("V006", f"{tag_name(element)} {attribute} is {format_number(value)}; it must be positive", element)
+            self.report("V006", f"{tag_name(element)} {attribute} is {format_number(value)}; it must be positive", element, attribute=attribute)
         elif value == 0:
-            self.report("V008", f"{tag_name(element)} {attribute} is 0: the shape has no volume", element, ZERO_HINT)
+            self.report("V008", f"{tag_name(element)} {attribute} is 0: the shape has no volume", element, ZERO_HINT, attribute)
 
     # -- elements --------------------------------------------------------------
     def rgba(self, material: "Element", color: "Element") -> tuple[float, ...] | None:
@@ -241,10 +263,10 @@ class Reader:
             try:
                 value = parse_double(piece)
             except NumberError as error:
-                self.report(error.code, f"material '{name}' rgba: component {error.reason}", color)
+                self.report(error.code, f"material '{name}' rgba: component {error.reason}", color, attribute="rgba")
                 return None
             if not 0.0 <= value <= 1.0:
-                self.report("V007", f"material '{name}' rgba component {piece} is outside [0, 1]", color)
+                self.report("V007", f"material '{name}' rgba component {piece} is outside [0, 1]", color, attribute="rgba")
                 return None
             values.append(value)
         if len(values) != 4:
@@ -263,9 +285,14 @@ class Reader:
             self.resources.append(Resource(self._index[texture], "texture", texture_file))
         color = found.get("color")
         rgba = self.rgba(element, color) if color is not None and color.get("rgba") is not None else None
+        misplaced = element.get("rgba")  # a colour every parser ignores: it belongs in a <color> child
+        moved = f'write it in a <color> child: <material name="{name}"><color rgba="{misplaced}"/></material>' if misplaced is not None else None
         if top_level and rgba is None and texture_file is None:
-            hint = "did you mean rgba=?" if color is not None and color.get("rgb") is not None else None
+            hint = "did you mean rgba=?" if color is not None and color.get("rgb") is not None else moved
             self.report("M001", f"material '{name}' has neither <color rgba> nor <texture filename>", element, hint)
+        elif misplaced is not None and color is None:
+            self.report("M005", f"material '{name}' has rgba=\"{misplaced}\" on the <material> element, where every parser ignores it", element, moved, "rgba")
+            self._misplaced_colours.add(self.at(element))  # one mistake: not also "defined nowhere" (M002)
         return Material(name, self.at(element), rgba, texture_file, color.get("rgba") if color is not None else None)
 
     def geometry(self, parent: "Element", element: "Element | None") -> Geometry | None:
@@ -294,9 +321,9 @@ class Reader:
                 return None
             smallest = min(size)
             if smallest < 0:
-                self.report("V006", f"box size '{text}' has a negative component", shape)
+                self.report("V006", f"box size '{text}' has a negative component", shape, attribute="size")
             elif smallest == 0:
-                self.report("V008", f"box size '{text}' has a zero component: the box has no volume", shape, ZERO_HINT)
+                self.report("V008", f"box size '{text}' has a zero component: the box has no volume", shape, ZERO_HINT, "size")
             return Geometry(kind, self._index[shape], size)
         if kind == "cylinder":
             if shape.get("radius") is None or shape.get("length") is None:
@@ -419,11 +446,12 @@ class Reader:
         limit = self.joint_limit(shown, limit_element) if limit_element is not None else None
         if limit_element is None and joint_type in ("revolute", "prismatic"):
             self.report("J003", f"{joint_type} joint '{shown}' has no <limit>", element, 'add <limit lower="..." upper="..." effort="..." velocity="..."/>')
-        safety = found.get("safety_controller")
-        if safety is not None:
-            for attribute in ("soft_lower_limit", "soft_upper_limit", "k_position"):
-                self.number(safety, attribute, what=what)
-            self.number(safety, "k_velocity", required=True, what=what)
+        safety = None
+        safety_element = found.get("safety_controller")
+        if safety_element is not None:
+            safety = Safety(self.number(safety_element, "soft_lower_limit", what=what), self.number(safety_element, "soft_upper_limit", what=what))
+            self.number(safety_element, "k_position", what=what)
+            self.number(safety_element, "k_velocity", required=True, what=what)
         calibration = found.get("calibration")
         if calibration is not None:
             for attribute in ("reference_position", "rising", "falling"):
@@ -442,15 +470,18 @@ class Reader:
         if dynamics is not None:
             if dynamics.get("damping") is None and dynamics.get("friction") is None:
                 self.report("J006", f"<dynamics> of joint '{shown}' has neither damping nor friction", dynamics)
-            self.number(dynamics, "damping", what=what)
-            self.number(dynamics, "friction", what=what)
+            for attribute in ("damping", "friction"):
+                value = self.number(dynamics, attribute, what=what)
+                if value is not None and value < 0:
+                    self.report("V010", f"joint '{shown}' has {attribute} {format_number(value)}; it must not be negative", dynamics,
+                                f"a {attribute} coefficient is 0 or more", attribute)
         parent = self._link_ref(found.get("parent"))
         child = self._link_ref(found.get("child"))
         if parent is None or child is None:
             missing = " and ".join(t for t, v in (("<parent link>", parent), ("<child link>", child)) if v is None)
             self.report("J004", f"joint '{shown}' has no {missing}", element)
-        parts = tuple((tag, self._index[found[tag]]) for tag in ("parent", "child", "axis", "limit", "mimic") if tag in found)
-        return Joint(name if name is not None else "", self._index[element], joint_type, parent, child, origin, axis, limit, mimic, parts)
+        parts = tuple((tag, self._index[found[tag]]) for tag in ("parent", "child", "axis", "limit", "mimic", "safety_controller") if tag in found)
+        return Joint(name if name is not None else "", self._index[element], joint_type, parent, child, origin, axis, limit, mimic, parts, safety)
 
     @staticmethod
     def _link_ref(element: "Element | None") -> str | None:
@@ -500,7 +531,7 @@ class Reader:
         if tag == "link":
             link = self.link(element)
             if link.name in robot.links:
-                self.report("N004", f"link '{link.name}' is defined twice", element, f"first defined at {_where(self.document, robot.links[link.name].at)}")
+                self.report("N004", f"link '{link.name}' is defined twice", element, _twice(self.document, robot.links[link.name].at, self._index[element]))
             else:
                 robot.links[link.name] = link
         elif tag == "joint":
@@ -508,7 +539,7 @@ class Reader:
             if element.get("name") is None:
                 return
             if joint.name in robot.joints:
-                self.report("N005", f"joint '{joint.name}' is defined twice", element)
+                self.report("N005", f"joint '{joint.name}' is defined twice", element, _twice(self.document, robot.joints[joint.name].at, self._index[element]))
             else:
                 robot.joints[joint.name] = joint
         elif tag == "material":
@@ -544,7 +575,7 @@ class Reader:
             if not material.name:
                 continue
             if material.rgba is None and material.texture is None:
-                if material.name not in robot.materials and material.name not in seen:
+                if material.name not in robot.materials and material.name not in seen and material.at not in self._misplaced_colours:
                     self.diagnostics.append(self.document.diagnostic("M002", f"material '{material.name}' is defined nowhere", material.at, "define it at the top level, or give it a <color rgba>"))
                 continue
             first = seen.setdefault(material.name, material)
@@ -576,8 +607,18 @@ def first_children(element: "Element") -> "dict[str, Element]":
 
 
 def _where(document: Document, at: int) -> str:
+    """Where an element was written, and the macro call that made it."""
     location = document.locate(at)
-    return f"{location.file}:{location.line}"
+    called = f" ({location.trace[0].phrase})" if location.trace else ""
+    return f"{location.file}:{location.line}{called}"
+
+
+def _twice(document: Document, first: int, again: int) -> str:
+    """The hint of a name defined twice: where first, and the way out."""
+    location, repeated = document.locate(first), document.locate(again)
+    same_macro = location.trace and repeated.trace and (location.file, location.line) == (repeated.file, repeated.line)
+    fix = "give the macro a prefix parameter and put it in the names it makes" if same_macro else "rename one of them"
+    return f"first defined at {_where(document, first)}; {fix}"
 
 
 def read(document: Document, vocabulary: bool = False) -> tuple[Robot, list[Diagnostic]]:

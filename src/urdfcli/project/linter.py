@@ -73,7 +73,8 @@ def configure(loaded: Loaded, diagnostics: list[Diagnostic], config: Config, che
             files.discard(document.shown)
         texts = ((file, document.sources.text(file, containing=SUPPRESSION_MARK)) for file in sorted(files))
         found = [s for file, text in texts if text is not None for s in suppressions.parse(file, text)]
-    kept = suppressions.apply(selected, found, lambda code: ran(code, checks) and enabled(code, path))
+    written = document.origins.written() if found and document.origins is not None else None
+    kept = suppressions.apply(selected, found, lambda code: ran(code, checks) and enabled(code, path), written)
     kept = [d for d in kept if d.code not in ("U001", "U002") or enabled(d.code, d.path)]
     kept = [with_severity(d, config) for d in kept]
     kept.sort(key=Diagnostic.sort_key)

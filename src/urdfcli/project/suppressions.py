@@ -58,6 +58,14 @@ class Suppression(NamedTuple):
         places = (diagnostic.location, *diagnostic.location.trace)
         return any(place.file == self.file and self._inside(place.line, place.column) for place in places)
 
+    def took_part(self, written: dict[str, list[Position]] | None) -> bool:
+        """Whether an element it covers was made (or a macro call it covers made one)
+        in this expansion: a noqa in a macro this model never calls, or in a xacro:if
+        branch it never takes, silenced nothing here but may elsewhere."""
+        if written is None or self.regions is None:
+            return True
+        return any(self._inside(line, column or None) for line, column in written.get(self.file, ()))
+
     def _inside(self, line: int | None, column: int | None) -> bool:
         if self.regions is None:
             return True
@@ -114,11 +122,14 @@ def _targets(source: Source, start: int, end: int) -> list[tuple[Position, Posit
     return [(source.position(s), source.position(e)) for s, _, e in chosen]
 
 
-def apply(diagnostics: list[Diagnostic], suppressions: list[Suppression], enabled=lambda code: True) -> list[Diagnostic]:
+def apply(diagnostics: list[Diagnostic], suppressions: list[Suppression], enabled=lambda code: True, written=None) -> list[Diagnostic]:
     """The diagnostics no suppression covers, plus U001/U002 for the suppressions themselves.
 
     ``enabled(code)`` tells whether a rule is on here: a suppression of a rule
-    that is off is not reported as unused.
+    that is off is not reported as unused. ``written`` (see
+    :meth:`~urdfcli.read.expanded.Origins.written`; None for a plain URDF) tells
+    which elements an expansion made: a suppression of an element it did not
+    make is not reported as unused either.
     """
     kept = []
     by_file: dict[str, list[Suppression]] = {}
@@ -140,6 +151,8 @@ def apply(diagnostics: list[Diagnostic], suppressions: list[Suppression], enable
         kind = suppression.kind
         for word in suppression.unknown:
             kept.append(Diagnostic("U002", f"'{kind}: {word}' names no rule", where, hint="`urdfcli rules` lists the codes and names"))
+        if not suppression.took_part(written):
+            continue
         scope = "in this file" if suppression.target is None else f"on the element at line {suppression.target}"
         if suppression.bare:
             if "" not in suppression.used:

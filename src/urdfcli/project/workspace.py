@@ -332,6 +332,25 @@ class Entry(NamedTuple):
     library: bool = False
 
 
+MODEL_SUFFIXES = (".urdf", ".urdf.xacro")
+
+
+def models_below(folder: Path, package_paths: tuple[str, ...] = (), packages: PackageIndex | None = None) -> list[Path]:
+    """The robot models below a folder, as ``check`` and ``lint`` find them: every
+    ``*.urdf`` and ``*.urdf.xacro`` file, and each other ``*.xacro`` file that is a
+    model (ROS 1's ``ur5.xacro``) and that no file there includes. Libraries are
+    checked through the models that include them."""
+    index = Index(package_paths, packages)
+    files = list(source_files(folder))
+    resolved = {file: file.resolve() for file in files}
+    included = {Path(i.value) for file in files if file.name.endswith(".xacro") for i in index.includes(resolved[file]) if i.kind == "path"}
+    return sorted(
+        file
+        for file in files
+        if file.name.endswith(MODEL_SUFFIXES) or (resolved[file] not in included and index.kind(resolved[file]) == "model")
+    )
+
+
 def shown(path: Path) -> str:
     """A path as diagnostics name files: relative to the working directory when below it."""
     try:
@@ -395,7 +414,7 @@ def _same(file: str, library: Path) -> bool:
 def _same_input(file: str, path: str) -> bool:
     """Whether a diagnostic's file is the input ``path``: by name, else resolved."""
     if path == STDIN:
-        return False
+        return file == "<stdin>"
     return file == path or _same(file, Path(path).resolve())
 
 
@@ -414,6 +433,8 @@ def assemble(entries: list[Entry], outcome: Callable[[Target], Result | str]) ->
     earlier result, is not shown again: a library shared by three models
     reports its mistakes once.
     """
+    models = [outcome(target) for entry in entries if not entry.library for target in entry.targets]
+    unused = _unused_in_all([m for m in models if not isinstance(m, str)])
     results, unreadable, shown_keys = [], [], set()
     for entry in entries:
         if not entry.library:
@@ -423,11 +444,45 @@ def assemble(entries: list[Entry], outcome: Callable[[Target], Result | str]) ->
                     unreadable.append(result)
                     continue
                 is_own = functools.cache(lambda file, path=entry.path: _same_input(file, path))
-                result.diagnostics = [d for d in result.diagnostics if _fresh(d, is_own(d.path), shown_keys)]
+                result.diagnostics = [
+                    d if is_own(d.path) or len(models) == 1 else _through(d, result)  # one model: it found them all
+                    for d in result.diagnostics
+                    if unused(d) and _fresh(d, is_own(d.path), shown_keys)
+                ]
                 results.append(result)
             continue
         results.append(_library_result(entry, outcome, shown_keys, unreadable))
     return results, unreadable
+
+
+def _through(diagnostic: Diagnostic, model: Result) -> Diagnostic:
+    """The diagnostic, saying which model found it: unless a macro call of its trace,
+    written in that model, says so already (and no xacro arguments need naming)."""
+    if not model.arguments and any(_same_input(call.file, model.path) for call in diagnostic.location.trace):
+        return diagnostic
+    return diagnostic._replace(model=model.label)
+
+
+def _unused_in_all(models: list[Result]) -> Callable[[Diagnostic], bool]:
+    """Whether to keep a diagnostic: a U001 only when every model of the run that
+    read its file reports it. A noqa in a shared macro may silence something for
+    one model and nothing for another; it is useless only when useless for all."""
+    read: list[set[Path]] = []
+    counts: dict[tuple, int] = {}
+    for model in models:
+        read.append({_resolved(file) for file in (model.path, *model.includes)})
+        for place in {_place(d) for d in model.diagnostics if d.code == "U001"}:
+            counts[place] = counts.get(place, 0) + 1
+    agreed = {place for place, count in counts.items() if count == sum(place[0] in files for files in read)}
+    return lambda diagnostic: diagnostic.code != "U001" or _place(diagnostic) in agreed
+
+
+def _resolved(file: str) -> Path:
+    return Path(file).resolve() if file != STDIN else Path(file)
+
+
+def _place(diagnostic: Diagnostic) -> tuple:
+    return (_resolved(diagnostic.path), *_key(diagnostic)[2:])
 
 
 def _fresh(diagnostic: Diagnostic, in_own_file: bool, shown_keys: set) -> bool:
@@ -446,6 +501,7 @@ def _library_result(entry: Entry, outcome, shown_keys: set, unreadable: list[str
     found: list[Diagnostic] = []
     needing: list[str] = []  # models that include it but cannot be expanded without arguments
     unread: list[tuple[str, str]] = []  # models that expand but do not read it: (label, with which arguments)
+    used: list[Result] = []  # the models it was checked through
     for target in entry.targets:
         model = outcome(target)
         if isinstance(model, str):
@@ -467,8 +523,10 @@ def _library_result(entry: Entry, outcome, shown_keys: set, unreadable: list[str
             unread.append((target.label, "the arguments it is checked with" if target.arguments else "its default arguments"))
             continue
         checked_through.append(target.label)
-        # mistakes written in the library, and whatever breaks a model that uses it
-        found += [d for d in model.diagnostics if _same(d.path, library) or d.severity is Severity.ERROR]
+        used.append(model)
+    unused = _unused_in_all(used)
+    for model in used:  # mistakes written in the library, and whatever breaks a model that uses it
+        found += [_through(d, model) for d in model.diagnostics if unused(d) and (_same(d.path, library) or d.severity is Severity.ERROR)]
     if not checked_through:
         # Checked on its own; when models include it but none could check it, that is a gap (X006) the config closes.
         notes += [

@@ -69,6 +69,19 @@ class Origins(Sequence):
             return None
         return Origin(self.files[file], line, column or None, tuple(Call(*self.calls[i]) for i in self.traces[trace]))
 
+    def written(self) -> dict[str, list[tuple[int, int]]]:
+        """Each file's places (line, column; 0: unknown) where the expansion made an
+        element or called a macro: what of the sources took part in it."""
+        found: dict[str, list[tuple[int, int]]] = {}
+        places = self.places
+        for at in range(0, len(places), 4):
+            if places[at] >= 0:
+                found.setdefault(self.files[places[at]], []).append((places[at + 1], places[at + 2]))
+        for file, line, column, _ in self.calls:
+            if line:
+                found.setdefault(file, []).append((line, column or 0))
+        return found
+
 
 class Expansion:
     """A xacro document expanded: its text as the ``xacro`` tool prints it, where each

@@ -20,6 +20,7 @@ A package's name is the ``<name>`` in its ``package.xml``, never its folder name
 from __future__ import annotations
 
 import os
+import re
 from collections.abc import Iterable, Iterator
 from functools import cached_property
 from pathlib import Path
@@ -34,6 +35,11 @@ MAX_SCAN_DIRS = 20_000
 
 class PackageError(ValueError):
     """A ``-P`` option that is not ``NAME=DIR`` or an existing directory."""
+
+
+AMENT_INDEX = Path("share/ament_index/resource_index/packages")
+"""Where a ROS 2 install prefix registers its packages, one empty file per name:
+the name ``package://`` and ``$(find)`` resolve, which may differ from the source folder's."""
 
 
 class PackageIndex:
@@ -82,6 +88,17 @@ class PackageIndex:
 
     def resolver(self, options: Iterable[str] = (), input_file: Path | None = None) -> PackageResolver:
         return PackageResolver(options, input_file, index=self)
+
+
+def cmake_project(folder: Path) -> str | None:
+    """The ``project(NAME)`` of a package's CMakeLists.txt: the name ament_cmake
+    installs and registers it under, whatever its package.xml says."""
+    try:
+        text = (folder / "CMakeLists.txt").read_text(errors="replace")
+    except OSError:
+        return None
+    found = re.search(r"^\s*project\s*\(\s*([\w.+-]+)", text, re.MULTILINE | re.IGNORECASE)
+    return found.group(1) if found else None
 
 
 def _holds_package(folder: Path) -> Path | None:
@@ -144,12 +161,15 @@ class PackageResolver:
                 name, _, folder = option.partition("=")
                 if not name or not folder:
                     raise PackageError(f"--package-path {option!r}: expected NAME=DIR or DIR")
+                if not Path(folder).expanduser().is_dir():
+                    raise PackageError(f"--package-path {option!r}: {folder!r} is not a directory")
                 self._explicit.setdefault(name, Path(folder).expanduser().resolve())
             else:
                 folder = Path(option).expanduser()
                 if not folder.is_dir():
                     raise PackageError(f"--package-path {option!r}: not a directory")
-                self._scan_roots.append(folder.resolve())
+                if folder.resolve() not in self._scan_roots:
+                    self._scan_roots.append(folder.resolve())
         self._scan_roots += [Path(p) for p in env.get("ROS_PACKAGE_PATH", "").split(os.pathsep) if p]
         self._ament = [Path(p) for p in env.get("AMENT_PREFIX_PATH", "").split(os.pathsep) if p]
         self._input_file = input_file
@@ -170,12 +190,23 @@ class PackageResolver:
     def _local_roots(self) -> list[Path]:
         return self.index.local_roots(self._own) if self._own else []
 
+    @cached_property
+    def _workspace_prefixes(self) -> list[Path]:
+        """The install space of the colcon workspace the input is in (merged, or one
+        prefix per package): what ``source install/setup.bash`` would add."""
+        source = next((root for root in self._local_roots if root.name == "src"), None)
+        install = source.parent / "install" if source is not None else None
+        if install is None or not install.is_dir():
+            return []
+        return [install, *sorted(p for p in install.iterdir() if (p / "share").is_dir())]
+
     def where(self) -> str:
         """Where packages were looked for, as ``(looked in ...)`` for error messages."""
         places = [f"-P {name}={path}" for name, path in self._explicit.items()]
         places += [str(p) for p in self._scan_roots]
-        places += [f"{p}/share" for p in self._ament]
+        places += [f"{p}/share" for p in self._ament + self._workspace_prefixes]
         places += [str(p) for p in self._local_roots]
+        places = list(dict.fromkeys(places))  # -P and ROS_PACKAGE_PATH may name one folder
         if not places:
             return "(the input is not inside a package and no package path is set: use -P NAME=DIR)"
         return f"(looked in {', '.join(places)})"
@@ -204,9 +235,9 @@ class PackageResolver:
             self._scan_into_cache(root)
             if name in self._found:
                 return self._found[name]
-        for prefix in self._ament:
+        for prefix in self._ament + self._workspace_prefixes:
             share = prefix / "share" / name
-            if share.is_dir():
+            if share.is_dir() or (prefix / AMENT_INDEX / name).is_file():
                 return share
         if self._own is not None:
             if self.index.package_name(self._own / "package.xml") == name:

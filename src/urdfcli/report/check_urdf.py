@@ -8,8 +8,10 @@ from typing import TYPE_CHECKING
 from ..diagnostics import Severity
 from ..model.kinematics import children_by_joint_name
 from ..model.load import Loaded
+from ..rules import REGISTRY
 from .console import Output, write
 from .escape import escape
+from .lines import concise_line
 
 if TYPE_CHECKING:
     from .result import Result
@@ -47,16 +49,25 @@ def tree_lines(loaded: Loaded) -> list[str]:
     return lines
 
 
+def rejected(result: Result) -> list:
+    """The errors check_urdf itself reports: those of what urdfdom rejects."""
+    return [d for d in result.diagnostics if d.severity is Severity.ERROR and REGISTRY[d.code].urdfdom]
+
+
 def error_lines(result: Result) -> list[str]:
-    lines = [f"Error:   {escape(d.message)}" for d in result.diagnostics if d.severity is Severity.ERROR]
+    lines = [f"Error:   {escape(d.message)}" for d in rejected(result)]
     return lines + ["ERROR: Model Parsing the xml failed"] if lines else []
 
 
 def report(results: list[Result], output: Output, view: str = "check", sources=None) -> None:
-    """check_urdf's output for each file: its errors on standard error, else its tree."""
+    """check_urdf's output for each file: what urdfdom rejects on standard error, else
+    the tree on standard output, as check_urdf prints them; the errors urdfdom does not
+    check (a negative mass, a loop) follow on standard error, one line each."""
     for result in results:
         errors = error_lines(result)
         if errors:
             write(output.err, ([(line, "")] for line in errors))
         else:
             write(output.out, ([(line, "")] for line in tree_lines(result.loaded)))
+        beyond = [d for d in result.errors if not REGISTRY[d.code].urdfdom]
+        write(output.err, ([(concise_line(d), "")] for d in beyond))

@@ -18,6 +18,7 @@ def report(results: list[Result], output: Output, view: str = "lint", sources=No
     out, notes = output.out.file, output.err.file
     for result in results:
         out.writelines(concise_line(d) + "\n" for d in result.diagnostics)
-        notes.writelines(line + "\n" for line in library_lines(result))
+    if not output.quiet:
+        notes.writelines(line + "\n" for line in library_lines(results))
     if results:  # nothing was read: the one-line reasons already said why
         notes.write(summary_line(results) + "\n")

@@ -30,16 +30,18 @@ def console(mode: str = "auto", stream: TextIO | None = None, stderr: bool = Fal
 
 
 class Output:
-    """The two consoles of a command: its results, and its diagnostics and progress."""
+    """The two consoles of a command: its results, and its diagnostics and progress.
+    ``quiet``: only the diagnostics and the summary (no tree, notes or progress)."""
 
-    def __init__(self, out: Console, err: Console) -> None:
+    def __init__(self, out: Console, err: Console, quiet: bool = False) -> None:
         self.out = out
         self.err = err
+        self.quiet = quiet
 
     @classmethod
-    def standard(cls, mode: str = "auto") -> Output:
+    def standard(cls, mode: str = "auto", quiet: bool = False) -> Output:
         """Standard output and error, styled as ``--color`` says."""
-        return cls(console(mode), console(mode, stderr=True))
+        return cls(console(mode), console(mode, stderr=True), quiet)
 
 
 def styled(target: Console) -> bool:

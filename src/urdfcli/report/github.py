@@ -7,7 +7,7 @@ from typing import TYPE_CHECKING
 from ..diagnostics import Diagnostic
 from .console import Output
 from .escape import escape
-from .lines import call_phrase, severity_name
+from .lines import severity_name
 
 if TYPE_CHECKING:
     from .result import Result
@@ -32,7 +32,7 @@ def line(diagnostic: Diagnostic) -> str:
         if location.column:
             props.append(f"col={location.column}")
     props.append(f"title={_escape_property(diagnostic.code)}")
-    calls = [call_phrase(call) for call in location.trace]
+    calls = [call.phrase for call in location.trace] + ([diagnostic.through] if diagnostic.through else [])
     return f"::{LEVELS[severity_name(diagnostic)]} {','.join(props)}::" + "%0A".join(map(_escape_data, [diagnostic.message, *calls]))
 
 

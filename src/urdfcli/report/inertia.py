@@ -6,7 +6,7 @@ from __future__ import annotations
 
 from typing import TYPE_CHECKING, NamedTuple
 
-from ..diagnostics import Diagnostic, Severity
+from ..diagnostics import Diagnostic
 from ..model import massprops
 from ..model.inertia import Assessment, Body, assess, declared_tensor, implied, is_frame, total, used_body
 from ..model.load import Loaded
@@ -15,7 +15,7 @@ from ..model.robot import Link
 from ..rules import REGISTRY
 from .console import Line, Output, write
 from .escape import escape
-from .lines import diagnostic_lines, plural
+from .lines import diagnostic_dict, diagnostic_lines, plural
 
 if TYPE_CHECKING:
     from .result import Result
@@ -76,12 +76,16 @@ def expected_from(entry: LinkReport) -> str:
     return entry.assessment.implied.source
 
 
-def link_dict(entry: LinkReport) -> dict:
+def link_dict(entry: LinkReport, loaded: Loaded) -> dict:
     link, found = entry.link, entry.assessment
     inertial = link.inertial
     declared = declared_tensor(link)
+    where = loaded.document.locate(link.at)
     return {
         "name": link.name,
+        "path": where.file,
+        "line": where.line,
+        "column": where.column,
         "mass": inertial.mass if inertial is not None else None,
         "mass_used": entry.mass,
         "com": _vector(inertial.origin.xyz) if inertial is not None else None,
@@ -89,7 +93,7 @@ def link_dict(entry: LinkReport) -> dict:
         "principal": _vector(massprops.principal_moments(declared)) if declared is not None else None,
         "expected": _tensor(found.expected) if found is not None else None,
         "expected_from": expected_from(entry),
-        "problems": [{"code": d.code, "severity": (d.severity or Severity.INFO).value, "message": d.message} for d in entry.problems],
+        "problems": [diagnostic_dict(d) for d in entry.problems],
     }
 
 
@@ -101,7 +105,7 @@ def audit_dict(result: Result) -> dict:
     body = audit.total
     return {
         "robot": audit.loaded.robot.name,
-        "links": [link_dict(entry) for entry in audit.links],
+        "links": [link_dict(entry, audit.loaded) for entry in audit.links],
         "total": None if body is None else {"mass": body.mass, "com": _vector(body.com), "inertia": _tensor(body.tensor)},
     }
 

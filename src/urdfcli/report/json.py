@@ -5,29 +5,13 @@ from __future__ import annotations
 import json
 from typing import TYPE_CHECKING
 
-from ..diagnostics import Diagnostic, Severity
+from ..diagnostics import Severity
 from .console import Output
 from .escape import json_escape
-from .lines import counts, severity_name
+from .lines import counts, diagnostic_dict
 
 if TYPE_CHECKING:
     from .result import Result
-
-
-def diagnostic_dict(diagnostic: Diagnostic) -> dict:
-    return {
-        "code": diagnostic.code,
-        "severity": severity_name(diagnostic),
-        "message": diagnostic.message,
-        "path": diagnostic.location.file,
-        "line": diagnostic.location.line,
-        "column": diagnostic.location.column,
-        "element": diagnostic.element,
-        "trace": [
-            {"path": call.file, "line": call.line, "column": call.column, "macro": call.macro}
-            for call in diagnostic.location.trace
-        ],
-    }
 
 
 def file_dict(result: Result) -> dict:
@@ -47,14 +31,14 @@ def file_dict(result: Result) -> dict:
 
 def render(results: list[Result]) -> str:
     found = counts(results)
-    errors, warnings = found[Severity.ERROR], found[Severity.WARNING]
+    errors, warnings, info = found[Severity.ERROR], found[Severity.WARNING], found[Severity.INFO]
     document = {
         "version": 1,
         "files": [
             file_dict(result)
             for result in results
         ],
-        "summary": {"files": len(results), "errors": errors, "warnings": warnings},
+        "summary": {"files": len(results), "errors": errors, "warnings": warnings, "info": info},
     }
     return dumps(document)
 

@@ -44,22 +44,17 @@ def plain_line(diagnostic: Diagnostic) -> str:
     return escape(f"{position(diagnostic)}: {diagnostic.code} {severity_name(diagnostic)}: {diagnostic.message}{expanded}")
 
 
-def call_phrase(call) -> str:
-    """Where a macro call that made an element was written: ``in macro 'wheel' called at FILE:LINE:COL``."""
-    where = ":".join([call.file] + ([str(call.line), str(call.column or 1)] if call.line else []))
-    return f"in macro '{call.macro}' called at {where}"
-
-
 def concise_line(diagnostic: Diagnostic) -> str:
     """``plain_line`` and, for an element a macro made, the call that made it: still one line."""
     trace = diagnostic.location.trace
-    return plain_line(diagnostic) + (escape(f" ({call_phrase(trace[0])})") if trace else "")
+    notes = ([trace[0].phrase] if trace else []) + ([diagnostic.through] if diagnostic.through else [])
+    return plain_line(diagnostic) + (escape(f" ({'; '.join(notes)})") if notes else "")
 
 
 def trace_notes(diagnostic: Diagnostic, levels: int = TRACE_LEVELS) -> list[str]:
     """One ``note:`` line per macro call that made the element, innermost first."""
     trace = diagnostic.location.trace
-    notes = [escape(f"    note: {call_phrase(call)}") for call in trace[:levels]]
+    notes = [escape(f"    note: {call.phrase}") for call in trace[:levels]]
     if len(trace) > levels:
         notes.append(f"    note: ... and {len(trace) - levels} more macro call{'s' if len(trace) - levels > 1 else ''}")
     return notes
@@ -87,17 +82,34 @@ def excerpt_lines(diagnostic: Diagnostic, sources: Sources, width: int = 160) ->
 def details(diagnostic: Diagnostic, sources: Sources | None) -> list[str]:
     """The lines under a diagnostic: its macro calls, its hint, its source excerpt."""
     hint = ["    hint: " + escape(diagnostic.hint)] if diagnostic.hint else []
+    through = ["    note: " + escape(diagnostic.through)] if diagnostic.through else []
     excerpt = excerpt_lines(diagnostic, sources) if sources is not None else []
-    return trace_notes(diagnostic) + hint + excerpt
+    return trace_notes(diagnostic) + through + hint + excerpt
 
 
-def library_lines(result: Result) -> list[str]:
-    """For a xacro library: which models it was checked through, and why one could not be."""
-    library = result.library
-    if library is None:
-        return []
-    lines = [f"{result.path}: xacro library, checked through {', '.join(library.checked_through)}"] if library.checked_through else []
-    return [escape(line) for line in lines + [f"{result.path}: {note}" for note in library.notes]]
+def library_lines(results: list[Result]) -> list[str]:
+    """For the xacro libraries of a run: one line naming the models they were checked
+    through, then one line per reason a model could not check some of them."""
+    libraries = [r for r in results if r.library is not None]
+    checked = [r for r in libraries if r.library.checked_through]
+    lines = []
+    if checked:
+        models = list(dict.fromkeys(m for r in checked for m in r.library.checked_through))
+        what = f"{checked[0].path}: xacro library" if len(checked) == 1 else f"{len(checked)} xacro libraries"
+        lines.append(f"{what}, checked through {listed(models)}")
+    reasons: dict[str, list[str]] = {}
+    for result in libraries:
+        for note in result.library.notes:
+            reasons.setdefault(note, []).append(result.path)
+    lines += [f"{listed(paths)}: {note}" for note, paths in reasons.items()]
+    return [escape(line) for line in lines]
+
+
+def listed(names: list[str], most: int = 4) -> str:
+    """``a, b, c`` or ``a, b, c, d and 7 more``."""
+    if len(names) <= most + 1:
+        return ", ".join(names)
+    return f"{', '.join(names[:most])} and {len(names) - most} more"
 
 
 def plural(n: int, word: str) -> str:
@@ -124,3 +136,22 @@ def diagnostic_lines(diagnostic: Diagnostic, sources: Sources | None) -> list[Li
     if diagnostic.location.expanded:
         first.append((" (line in the xacro-expanded document)", "dim"))
     return [first, *([(line, "dim")] for line in details(diagnostic, sources))]
+
+
+def diagnostic_dict(diagnostic: Diagnostic) -> dict:
+    """A diagnostic as the JSON formats give it (SPEC section 4)."""
+    return {
+        "code": diagnostic.code,
+        "severity": severity_name(diagnostic),
+        "message": diagnostic.message,
+        "path": diagnostic.location.file,
+        "line": diagnostic.location.line,
+        "column": diagnostic.location.column,
+        "element": diagnostic.element,
+        "hint": diagnostic.hint,
+        "model": diagnostic.model,
+        "trace": [
+            {"path": call.file, "line": call.line, "column": call.column, "macro": call.macro}
+            for call in diagnostic.location.trace
+        ],
+    }

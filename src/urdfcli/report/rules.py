@@ -6,6 +6,7 @@ import json
 import re
 
 from ..rules import Rule
+from ..version import __version__
 
 PREFIXES = {
     "X": "Input and xacro",
@@ -56,8 +57,9 @@ def page(rule: Rule, level: int = 1) -> str:
 
 
 def as_json(rules: list[Rule]) -> str:
-    return json.dumps(
-        [
+    """The registry as ``{"version": 1, "urdfcli": VERSION, "rules": [...]}``: which
+    release the codes and defaults belong to travels with them."""
+    return json.dumps({"version": 1, "urdfcli": __version__, "rules": [
             {
                 "code": r.code,
                 "name": r.name,
@@ -70,7 +72,7 @@ def as_json(rules: list[Rule]) -> str:
                 "doc": r.doc,
             }
             for r in rules
-        ],
+        ]},
         indent=2,
         ensure_ascii=False,
     )

@@ -47,7 +47,9 @@ def result(diagnostic: Diagnostic, index: dict[str, int]) -> dict:
     region = {"startLine": location.line or 1}
     if location.column:
         region["startColumn"] = location.column
-    message = diagnostic.message + (f"\nhint: {diagnostic.hint}" if diagnostic.hint else "")
+    notes = [diagnostic.through] if diagnostic.through else []
+    notes += [f"hint: {diagnostic.hint}"] if diagnostic.hint else []
+    message = "\n".join([diagnostic.message, *notes])
     physical = {"artifactLocation": {"uri": artifact_uri(location.file)}, "region": region}
     found = {
         "ruleId": diagnostic.code,
@@ -59,6 +61,8 @@ def result(diagnostic: Diagnostic, index: dict[str, int]) -> dict:
         found["ruleIndex"] = index[diagnostic.code]
     if diagnostic.element:
         found["locations"][0]["logicalLocations"] = [{"fullyQualifiedName": diagnostic.element, "kind": "element"}]
+    if diagnostic.model:
+        found["properties"] = {"model": diagnostic.model}
     if location.trace:
         found["relatedLocations"] = [related(i, call) for i, call in enumerate(location.trace)]
     return found

@@ -50,12 +50,13 @@ def report(results: list[Result], output: Output, view: str = "lint", sources: S
     out = output.out
     err = output.err if view == "check" else output.out
     for result in results:
-        if view == "check" and result.library is None and result.loaded is not None:
+        if view == "check" and result.library is None and result.loaded is not None and not output.quiet:
             if len(results) > 1:
                 write(out, [[(f"==> {escape(result.label if result.arguments else result.shown)} <==", "bold")]])
             write(out, tree_text(result))
         write(err, (line for diagnostic in result.diagnostics for line in diagnostic_lines(diagnostic, sources)))
-        write(err, ([(line, "dim")] for line in library_lines(result)))
+    if not output.quiet:
+        write(err, ([(line, "dim")] for line in library_lines(results)))
     if results:
         write(err, [[(summary_line(results), "bold")]])
 

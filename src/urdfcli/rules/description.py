@@ -6,7 +6,8 @@ import re
 
 from ..model.kinematics import bodies
 from ..model.vocabulary import SCHEMA
-from .base import INFO, WARNING, check
+from ..read.packages import cmake_project
+from .base import ERROR, INFO, WARNING, check
 from .suggestions import close_matches
 
 # Gazebo plugin parameters that name a joint or a link (ROS 1 and ROS 2 spellings).
@@ -139,8 +140,8 @@ def unknown_markup(loaded):
     ```
     """
     for unknown in loaded.robot.unknown:
-        if unknown.typo_of or unknown.gazebo:
-            continue
+        if unknown.typo_of or unknown.gazebo or (unknown.attribute and unknown.parent == "material" and unknown.name == "rgba"):
+            continue  # a typo is D001/D002's, Gazebo markup D011's, a material's rgba M005's or M001's
         if unknown.attribute:
             attributes = sorted(SCHEMA[unknown.parent][0])
             hint = f"<{unknown.parent}> takes {', '.join(attributes)}" if attributes else f"<{unknown.parent}> takes no attributes"
@@ -367,7 +368,10 @@ def package_not_found(loaded):
             misnamed = loaded.resolver.misnamed(package)
             if misnamed is not None:  # a package is named by its package.xml, not its folder
                 folder, real = misnamed
-                hint = f"the folder {folder} holds the package named '{real}' (its package.xml): write package://{real}/, or give -P {package}={folder}"
+                if cmake_project(folder) == package:  # ament installs it as `package`: the URI is right
+                    hint = f"the folder {folder} installs as '{package}' (its CMakeLists.txt project): build and source the workspace, or give -P {package}={folder}"
+                else:
+                    hint = f"the folder {folder} holds the package named '{real}' (its package.xml): write package://{real}/, or give -P {package}={folder}"
         else:
             message, hint = f"{kind} '{uri}'{others}: the package name is empty", "a package URI is package://PACKAGE/PATH: two slashes, then the package's name"
         yield loaded.diagnostic("D005", message, at, hint)
@@ -459,6 +463,58 @@ def transmission_joint(loaded):
             if name is not None and name not in joints:
                 close = _suggestion(name, joints)
                 yield loaded.diagnostic("D007", f"transmission '{transmission.get('name', '')}' names joint '{name}', which does not exist", loaded.robot.place(joint), f"did you mean '{close}'?" if close else None)
+
+
+@check("D013", "ros2-control-joint-not-found", ERROR, "A `<ros2_control>` joint that names no joint of the robot.")
+def ros2_control_joint(loaded):
+    """## What it does
+    Flags a `<joint name>` inside `<ros2_control>` that is not a joint of the robot.
+
+    ## Why is this bad?
+    ros2_control's resource manager refuses the hardware description: the
+    controller manager fails to start (gz_ros2_control and the real robot's
+    hardware interface alike), and nothing moves.
+
+    ## Example
+    ```xml
+    <link name="base_link"/>
+    <link name="arm_link"/>
+    <joint name="arm_joint" type="revolute">
+      <parent link="base_link"/>
+      <child link="arm_link"/>
+      <limit lower="-1" upper="1" effort="10" velocity="1"/>
+    </joint>
+    <ros2_control name="arm" type="system">
+      <hardware><plugin>mock_components/GenericSystem</plugin></hardware>
+      <joint name="arm_jiont"><command_interface name="position"/><state_interface name="position"/></joint>
+    </ros2_control>
+    ```
+
+    ## Use instead
+    ```xml
+    <link name="base_link"/>
+    <link name="arm_link"/>
+    <joint name="arm_joint" type="revolute">
+      <parent link="base_link"/>
+      <child link="arm_link"/>
+      <limit lower="-1" upper="1" effort="10" velocity="1"/>
+    </joint>
+    <ros2_control name="arm" type="system">
+      <hardware><plugin>mock_components/GenericSystem</plugin></hardware>
+      <joint name="arm_joint"><command_interface name="position"/><state_interface name="position"/></joint>
+    </ros2_control>
+    ```
+    """
+    joints = set(loaded.robot.joints)
+    for control in loaded.robot.blocks("ros2_control"):
+        for element in control.iterfind("joint"):
+            name = element.get("name")
+            if name is not None and name not in joints:
+                close = _suggestion(name, joints)
+                yield loaded.diagnostic(
+                    "D013", f"ros2_control '{control.get('name', '')}' names joint '{name}', which does not exist", loaded.robot.place(element),
+                    f"did you mean '{close}'?" if close else "name a joint of the robot, or remove this <joint>", subjects=(name,),
+                )
 
 
 @check("D012", "transmission-fixed-joint", WARNING, "A transmission or ros2_control command driving a fixed joint.", in_check=False)

@@ -127,10 +127,15 @@ def identity_links(loaded, options) -> list:
 def placeholder_repeated(loaded, options):
     """## What it does
     Flags a tensor repeated on links whose masses or geometries differ by more than a
-    factor of two: one diagnostic per tensor, naming every copy that does not fit its own
-    geometry (within ``tolerance``). Left alone: links lighter than 20 g (dummy and frame
-    links), zero tensors (I004), the identity (I007) and tensors no body can have (I005,
-    I006), which their own rules report.
+    factor of two: one diagnostic per tensor, naming the links it does not fit, at the
+    first of them. A link it fits (its geometry gives the tensor within ``tolerance``, or
+    its largest moment is within three times of the uniform body filling its shapes, as a
+    CAD tensor is) is the part the tensor was computed for: PR2's caster wheels (0.44 kg)
+    carry the tensor of their 3.47 kg caster body, and the diagnostic is about the wheels.
+    Left alone: copies of one part (the same shapes: I012 compares their masses), links
+    lighter than 20 g whose tensor adds nothing material to the body they are fixed to
+    (dummy and frame links), zero tensors (I004), the identity (I007) and tensors no body
+    can have (I005, I006), which their own rules report.
 
     ## Why is this bad?
     One small value pasted on every sensor and caster is a placeholder: a 35 g
@@ -163,21 +168,23 @@ def placeholder_repeated(loaded, options):
     """
     for tensor, wrong, others in placeholder_groups(loaded, options):
         masses = [link.inertial.mass for link in wrong + others]
-        if max(masses) > SIZE_RATIO * min(masses):
-            differ = f"though they weigh {format_number(min(masses))} to {format_number(max(masses))} kg"
+        if others:  # the tensor of a part, copied onto parts it does not fit
+            message = (f"{_naming(wrong)} ({_weights(wrong)}) {'has' if len(wrong) == 1 else 'have'} the inertia tensor ({tensor_text(tensor)}) "
+                       f"of {_names(others)} ({_weights(others)}), which it fits: a copy, not {'its' if len(wrong) == 1 else 'their'} own")
         else:
-            differ = "though their geometries differ in size"
-        if others:
-            said = f"{_naming(wrong)} {'has' if len(wrong) == 1 else 'have'} the inertia tensor ({tensor_text(tensor)}) of {_names(others)}"
-        else:
-            said = f"{_naming(wrong)} share one inertia tensor ({tensor_text(tensor)})"
+            differ = (f"though they weigh {format_number(min(masses))} to {format_number(max(masses))} kg" if max(masses) > SIZE_RATIO * min(masses)
+                      else "though their geometries differ in size")
+            message = f"{_naming(wrong)} share one inertia tensor ({tensor_text(tensor)}), {differ}: a placeholder"
         yield loaded.diagnostic(
-            "I008",
-            f"{said}, {differ}: a placeholder",
-            wrong[0].inertial.inertia_at,
+            "I008", message, wrong[0].inertial.inertia_at,
             "`urdfcli inertia --suggest` prints the values each link's geometry implies",
-            subjects=tuple(link.name for link in wrong + others),
+            subjects=tuple(link.name for link in wrong),
         )
+
+
+def _weights(links) -> str:
+    masses = sorted({link.inertial.mass for link in links})
+    return f"{format_number(masses[0])} kg" if len(masses) == 1 else f"{format_number(masses[0])} to {format_number(masses[-1])} kg"
 
 
 def placeholder_groups(loaded, options) -> list:
@@ -190,28 +197,113 @@ def _placeholder_groups(loaded, options) -> list:
     groups = defaultdict(list)
     for link in _declaring(loaded):
         tensor = model.declared_tensor(link)
-        # light frames and dummies draw nothing; the identity is I007's
+        # light frames lost in their bodies draw nothing; the identity is I007's
         if (
-            link.inertial.mass >= massprops.LIGHT and not massprops.is_negligible(tensor)
+            not absorbed(loaded, link) and not massprops.is_negligible(tensor)
             and not massprops.is_identity(tensor) and not has_invalid_tensor(loaded, link)  # I007, I005 and I006 say it
         ):
             groups[tensor].append(link)
     found = []
     for tensor, links in groups.items():
-        if len(links) < 2:
-            continue
+        if len(links) < 2 or len({geometry_signature(link) for link in links}) == 1:
+            continue  # one link, or copies of one part: same geometry and tensor (I012 compares their masses)
         assessed = {link.name: _assess(loaded, link, options) for link in links}
         sizes = [massprops.scale_of(a.expected) for a in assessed.values() if a is not None and a.expected is not None]
         masses = [link.inertial.mass for link in links]
         if max(masses) <= SIZE_RATIO * min(masses) and (len(sizes) < 2 or max(sizes) <= SIZE_RATIO * min(sizes)):
             continue
-        wrong = [
-            link for link in links
-            if not (assessed[link.name] is not None and assessed[link.name].expected is not None and not assessed[link.name].off(options["tolerance"]))
-        ]
+        wrong = [link for link in links if not _fits(assessed[link.name], options["tolerance"])]
         if wrong:
             found.append((tensor, wrong, [link for link in links if link not in wrong]))
     return found
+
+
+CAD_RANGE = 3.0  # a CAD tensor is within this factor of the uniform body filling the part's shapes
+
+
+def _fits(found, tolerance: float) -> bool:
+    """Whether a shared tensor is the link's own: its geometry gives it within the tolerance,
+    or its largest moment is within CAD_RANGE of the uniform body's (the part it was computed for)."""
+    if found is None or found.expected is None or massprops.is_zero(found.expected):
+        return False
+    if not found.off(tolerance):
+        return True
+    declared, expected = massprops.principal_moments(found.declared)[2], massprops.principal_moments(found.expected)[2]
+    return expected / CAD_RANGE <= declared <= expected * CAD_RANGE
+
+
+def geometry_signature(link) -> tuple:
+    """What a link's shapes are, wherever they stand: the collision shapes (else the visual
+    shapes) by kind, mesh file, scale and size. Two copies of one part (left and right
+    finger, four wheels) have the same."""
+    shapes = [s for s in link.collisions if s.geometry is not None] or [s for s in link.visuals if s.geometry is not None]
+    return tuple(sorted((g.kind, g.filename or "", g.scale, g.size or (), g.radius or 0.0, g.length or 0.0) for g in (s.geometry for s in shapes)))
+
+
+MIRROR_RATIO = 5.0  # copies of one part this many times apart in mass: one mass is wrong
+
+
+@check("I012", "copies-differ-in-mass", WARNING, "Two links with the same geometry and inertia tensor whose masses are five or more times apart.", in_check=False, inertial_fix=True)
+def copies_differ_in_mass(loaded):
+    """## What it does
+    Flags links that are copies of one part, the same shapes (by kind, mesh file, scale
+    and size, wherever they stand) and the same inertia tensor, when their masses are five
+    or more times apart: left and right fingers, the wheels of a base. Names the links, at
+    the lightest and the heaviest. Links without shapes, with a zero tensor (frames) or
+    within five times of each other are left alone.
+
+    ## Why is this bad?
+    One part has one mass: a tensor copied with the shapes, and a mass typed again with a
+    decimal point out of place (moveit_resources' Panda: `panda_rightfinger` 0.15 kg,
+    `panda_leftfinger` 0.015 kg). The simulated fingers close at different speeds and the
+    controller's model is wrong for one of them.
+
+    ## Example
+    ```xml
+    <link name="left_finger">
+      <collision><geometry><box size="0.02 0.02 0.05"/></geometry></collision>
+      <inertial><mass value="0.015"/><inertia ixx="2.3e-06" ixy="0" ixz="0" iyy="2.3e-06" iyz="0" izz="1e-06"/></inertial>
+    </link>
+    <link name="right_finger">
+      <collision><geometry><box size="0.02 0.02 0.05"/></geometry></collision>
+      <inertial><mass value="0.15"/><inertia ixx="2.3e-06" ixy="0" ixz="0" iyy="2.3e-06" iyz="0" izz="1e-06"/></inertial>
+    </link>
+    <joint name="fingers" type="fixed"><parent link="left_finger"/><child link="right_finger"/></joint>
+    ```
+
+    ## Use instead
+    ```xml
+    <link name="left_finger">
+      <collision><geometry><box size="0.02 0.02 0.05"/></geometry></collision>
+      <inertial><mass value="0.015"/><inertia ixx="2.3e-06" ixy="0" ixz="0" iyy="2.3e-06" iyz="0" izz="1e-06"/></inertial>
+    </link>
+    <link name="right_finger">
+      <collision><geometry><box size="0.02 0.02 0.05"/></geometry></collision>
+      <inertial><mass value="0.015"/><inertia ixx="2.3e-06" ixy="0" ixz="0" iyy="2.3e-06" iyz="0" izz="1e-06"/></inertial>
+    </link>
+    <joint name="fingers" type="fixed"><parent link="left_finger"/><child link="right_finger"/></joint>
+    ```
+    """
+    copies = defaultdict(list)
+    for link in _declaring(loaded):
+        tensor = model.declared_tensor(link)
+        signature = geometry_signature(link)
+        if signature and not massprops.is_negligible(tensor):
+            copies[signature, tensor].append(link)
+    for links in copies.values():
+        light = min(links, key=lambda link: link.inertial.mass)
+        heavy = max(links, key=lambda link: link.inertial.mass)
+        if heavy.inertial.mass < MIRROR_RATIO * light.inertial.mass:
+            continue
+        ratio = heavy.inertial.mass / light.inertial.mass
+        yield loaded.diagnostic(
+            "I012",
+            f"links '{light.name}' ({format_number(light.inertial.mass)} kg) and '{heavy.name}' ({format_number(heavy.inertial.mass)} kg) "
+            f"have the same shapes and inertia tensor, but masses {ratio:.0f} times apart: the tensor cannot fit both",
+            light.inertial.mass_at,
+            "give copies of one part one mass (a decimal point out of place?), or each part its own shapes and tensor",
+            subjects=(light.name, heavy.name),
+        )
 
 
 @check("I009", "inertia-geometry-mismatch", WARNING, "A declared inertia tensor that the link's geometry proves wrong.", in_check=False, options=(TOLERANCE, DENSITY), inertial_fix=True)
@@ -220,8 +312,9 @@ def geometry_mismatch(loaded, options):
     Flags a declared tensor only when the link's geometry proves it wrong, in one of three ways:
 
     - **impossible**: a moment (about a link axis through the declared centre of mass) larger,
-      by more than 10 %, than any distribution of the link's mass inside the bounding box of
-      all its visual and collision shapes allows. Along each axis a mass in [lo, hi] centred
+      by more than 30 % (CAD rounding, meshes a little smaller than the part), than any
+      distribution of the link's mass inside the bounding box of all its visual and
+      collision shapes allows. Along each axis a mass in [lo, hi] centred
       at c has a variance of at most (hi - c)(c - lo), and ixx = m (var y + var z); for a box
       of sides Lx, Ly, Lz centred on the centre of mass, ixx <= m((Ly/2)² + (Lz/2)²).
     - **rotated**: principal moments within ``tolerance`` (0.1) of those of a uniform body
@@ -231,18 +324,22 @@ def geometry_mismatch(loaded, options):
       two count: a nearly round body has no axis to get wrong. When the shapes' own rotation
       explains it, I010 says so instead.
     - **placeholder**: a largest principal moment more than 100 times below the uniform
-      body's (0.3 kg declared with a 2e-8 tensor).
+      body's (0.3 kg declared with a 2e-8 tensor), or a smallest principal moment more than
+      20 times below the uniform body's (a finger whose moment about its long axis would
+      need its mass within a fifth of its radius of the axis).
 
     With ``density`` (kg/m³) positive, the link is taken to be that uniform material: any
     tensor more than ``tolerance`` off the one it gives is flagged.
 
     Left alone: a CAD tensor within a few times of the uniform body's (real parts are not
-    uniform: motors, shells, cables); links lighter than 20 g (sensor frames, whose
-    dynamics nothing feels), whose turned axes are only `info` (the macro that turned
-    them may serve heavier links too); geometry that cannot hold the mass (denser than osmium in its bounding box: a
+    uniform: motors, shells, cables); a link lighter than 20 g fixed to a heavier body whose
+    tensor adds less than 5 % to that body's (a sensor frame, whose dynamics nothing feels),
+    whose turned axes are only `info` (the macro that turned them may serve heavier links
+    too); geometry that cannot hold the mass (denser than osmium in its bounding box: a
     millimetre sphere standing in for a finger); links without measurable geometry; zero
     tensors (I004), tensors no body can have (I005, I006), the identity (I007) and tensors
-    shared as placeholders (I008), which their own rules report.
+    shared as placeholders (I008), which their own rules report. A light link that moves,
+    or whose tensor matters to its body, is judged as any link.
 
     ## Why is this bad?
     A tensor that no body of that mass and size can have, turned the wrong way, or
@@ -275,7 +372,7 @@ def geometry_mismatch(loaded, options):
     for link in _declaring(loaded):
         found = _verdict(loaded, link, options)
         if found is not None:
-            severity = INFO if link.inertial.mass < massprops.LIGHT else None  # a light link's turned axes: a note
+            severity = INFO if absorbed(loaded, link) else None  # turned axes of a link lost in its body: a note
             yield loaded.diagnostic("I009", f"inertia of link '{link.name}': {found.message}", link.inertial.inertia_at, found.hint, subjects=(link.name,))._replace(severity=severity)
 
 
@@ -405,7 +502,13 @@ def root_inertia(loaded):
 PLACEHOLDER_FACTOR = 100.0
 """A tensor this many times below a uniform body of the same mass and geometry is a placeholder."""
 
+AXIS_FACTOR = 20.0
+"""A smallest principal moment this many times below the uniform body's (the mass would have to
+sit within a fifth of the shape's radius of that axis): Kinova's finger links, 23 to 33 times
+below about their long axis."""
+
 AXES = ("ixx", "iyy", "izz")
+UNITS_FACTOR = 100.0  # a tensor this far off suggests units (g for kg, mm for m), not a rounding
 TURNED = 30.0  # degrees between principal axes that say the axes are swapped or rotated
 
 
@@ -430,7 +533,7 @@ def verdict(loaded: Loaded, link: Link, tolerance: float = massprops.TOLERANCE, 
     declared = declared_body(link)
     if declared is None or massprops.is_negligible(declared.tensor):
         return None
-    light = declared.mass < massprops.LIGHT  # only a rotation, which a formula got wrong, is worth saying
+    light = absorbed(loaded, link)  # lost in its body: only a rotation, which a formula got wrong, is worth saying
     limits = reach(loaded, link) if not light else None
     if limits is not None:
         worst = max(range(3), key=lambda i: declared.tensor[i][i] / limits.bounds[i] if limits.bounds[i] > 0 else math.inf)
@@ -443,7 +546,7 @@ def verdict(loaded: Loaded, link: Link, tolerance: float = massprops.TOLERANCE, 
                 "impossible", factor,
                 f"{AXES[worst]}={moment:.3g} (link axes) is {times} the most {number(declared.mass)} kg can reach "
                 f"about the declared centre of mass inside the {sides} m box its shapes fill: {most:.3g}",
-                "the tensor, the centre of mass or the mass is wrong (units?); "
+                f"the tensor, the centre of mass or the mass is wrong{' (units?)' if factor >= UNITS_FACTOR else ''}; "
                 "`urdfcli inertia --suggest` prints a uniform body's values as a start",
             )
     found = assess(loaded, link, density)
@@ -452,6 +555,14 @@ def verdict(loaded: Loaded, link: Link, tolerance: float = massprops.TOLERANCE, 
     source = found.implied.source
     turned = axes_apart(found.declared, found.expected) if massprops.moments_difference(found.declared, found.expected) <= tolerance else 0.0
     if found.difference > 2 * tolerance and turned > TURNED:
+        negated = massprops.negated_products(found.declared)
+        if massprops.relative_difference(negated, found.expected) <= tolerance:  # the sign of its products only
+            return Verdict(
+                "rotated", turned,
+                f"its products of inertia have the signs opposite to those its {source} gives: declared {tensor_text(found.declared, found.expected)}, "
+                f"the {source} gives {tensor_text(found.expected, found.declared)}; the other sign convention for them (∫xy dm for -∫xy dm), which some CAD tools export",
+                f"negate the products of inertia: {massprops.inertia_element(negated)}",
+            )
         return Verdict(
             "rotated", turned,
             f"its principal moments match its {source}, but on axes {turned:.0f}° away: declared {tensor_text(found.declared, found.expected)}, "
@@ -465,13 +576,24 @@ def verdict(loaded: Loaded, link: Link, tolerance: float = massprops.TOLERANCE, 
             f"declared {tensor_text(found.declared, found.expected)}, expected {tensor_text(found.expected, found.declared)}",
             "`urdfcli inertia --suggest --density ...` prints the uniform body's <inertial>",
         )
-    largest, expected_largest = massprops.principal_moments(found.declared)[2], massprops.principal_moments(found.expected)[2]
-    if not light and largest * PLACEHOLDER_FACTOR < expected_largest:
-        factor = expected_largest / largest
+    if light:
+        return None
+    moments, expected_moments = massprops.principal_moments(found.declared), massprops.principal_moments(found.expected)
+    if moments[2] * PLACEHOLDER_FACTOR < expected_moments[2]:
+        factor = expected_moments[2] / moments[2]
         return Verdict(
             "placeholder", factor,
-            f"its largest moment {largest:.3g} is {factor:.0f} times below the {expected_largest:.3g} of a uniform body of "
+            f"its largest moment {moments[2]:.3g} is {factor:.0f} times below the {expected_moments[2]:.3g} of a uniform body of "
             f"{number(declared.mass)} kg filling its {source}: a placeholder",
             "`urdfcli inertia --suggest` prints the uniform body's tensor, a better start than the placeholder",
+        )
+    smallest, expected_smallest = moments[0], expected_moments[0]
+    if expected_smallest > 0 and smallest * AXIS_FACTOR < expected_smallest:
+        what = "is 0, where" if smallest <= 0 else f"{smallest:.3g} is {expected_smallest / smallest:.0f} times below"
+        return Verdict(
+            "placeholder", expected_smallest / smallest if smallest > 0 else math.inf,
+            f"its smallest principal moment {what} a uniform body of {number(declared.mass)} kg filling its {source} has "
+            f"{expected_smallest:.3g}: no body of that shape turns so easily about that axis",
+            "`urdfcli inertia --suggest` prints the uniform body's tensor, a better start",
         )
     return None

@@ -6,9 +6,10 @@ import math
 
 from ..model.numbers import format_number
 from ..model.robot import MOVING_AXIS_TYPES
-from .base import ERROR, WARNING, check
+from .base import ERROR, INFO, WARNING, check
 
 FULL_TURN = 2 * math.pi - 1e-3  # a range written as -3.1416..3.1416 is a full turn
+UNIT_TOLERANCE = 1e-3  # an axis this close to length 1 is a unit axis written with few decimals
 
 
 @check("J007", "zero-axis", ERROR, "A moving joint whose axis is the zero vector.")
@@ -174,7 +175,9 @@ def lower_above_upper(loaded):
 @check("J011", "axis-not-unit", WARNING, "A joint axis that is not a unit vector.", in_check=False)
 def axis_not_unit(loaded):
     """## What it does
-    Flags a moving joint whose axis is not a unit vector.
+    Flags a moving joint whose axis is not a unit vector: its length is more than
+    0.1 % from 1. Axes written with a few decimals (`0.707 0.707 0`, NAO's
+    `0 0.999999 0`) are unit axes for every parser and are left alone.
 
     ## Why is this bad?
     urdfdom normalises the axis silently; a non-unit axis usually means a typo,
@@ -204,7 +207,7 @@ def axis_not_unit(loaded):
     """
     for joint in loaded.robot.joints.values():
         norm = math.sqrt(sum(c * c for c in joint.axis))
-        if joint.type in MOVING_AXIS_TYPES and norm > 0 and abs(norm - 1.0) > 1e-6:
+        if joint.type in MOVING_AXIS_TYPES and norm > 0 and abs(norm - 1.0) > UNIT_TOLERANCE:
             unit = " ".join(format_number(float(f"{c / norm:.6g}")) for c in joint.axis)
             hint = f'normalised: <axis xyz="{unit}"/>'
             yield loaded.diagnostic("J011", f"axis of joint '{joint.name}' has length {norm:.6g}, not 1", joint.part("axis"), hint)
@@ -309,14 +312,17 @@ def limit_without_range(loaded):
 def effort_velocity_zero(loaded):
     """## What it does
     Flags a revolute, continuous or prismatic joint, not a mimic, whose `<limit>` gives
-    `effort` or `velocity` as 0 or less. Mimic joints are left alone: they follow another
-    joint and are not driven.
+    `effort` or `velocity` as 0 or less. A joint that no `<transmission>` and no
+    `<ros2_control>` names is passive (a caster, a propeller spun by a plugin, a
+    pendulum): zero limits there say it has no actuator, and are only noted (info);
+    a negative limit is flagged wherever it is. Mimic joints are left alone: they
+    follow another joint and are not driven.
 
     ## Why is this bad?
     The limits bound what a controller may command and what a simulator lets the joint do:
-    with a zero effort Gazebo's motor has no force, and with a zero velocity the joint may
-    not move at all; MoveIt plans no motion with a zero velocity limit. A negative limit is
-    meaningless.
+    ros2_control's joint limiter clamps commands to them, Gazebo's motor has no force with a
+    zero effort, and MoveIt plans no motion with a zero velocity limit: the actuator the
+    transmission describes moves nothing. A negative limit is meaningless.
 
     ## Example
     ```xml
@@ -327,6 +333,10 @@ def effort_velocity_zero(loaded):
       <child link="finger"/>
       <limit lower="0" upper="1" effort="0" velocity="0"/>
     </joint>
+    <transmission name="finger_transmission">
+      <type>transmission_interface/SimpleTransmission</type>
+      <joint name="finger_joint"><hardwareInterface>hardware_interface/EffortJointInterface</hardwareInterface></joint>
+    </transmission>
     ```
 
     ## Use instead
@@ -338,17 +348,91 @@ def effort_velocity_zero(loaded):
       <child link="finger"/>
       <limit lower="0" upper="1" effort="2" velocity="1.5"/>
     </joint>
+    <transmission name="finger_transmission">
+      <type>transmission_interface/SimpleTransmission</type>
+      <joint name="finger_joint"><hardwareInterface>hardware_interface/EffortJointInterface</hardwareInterface></joint>
+    </transmission>
     ```
     """
+    driven = driven_joints(loaded)
     for joint in loaded.robot.joints.values():
         limit = joint.limit
         if joint.type not in ("revolute", "continuous", "prismatic") or limit is None or joint.mimic is not None:
             continue
-        bad = [f"{name}={format_number(value)}" for name, value in (("effort", limit.effort), ("velocity", limit.velocity)) if value is not None and value <= 0]
-        if bad:
+        values = [(name, value) for name, value in (("effort", limit.effort), ("velocity", limit.velocity)) if value is not None and value <= 0]
+        if not values:
+            continue
+        bad = " and ".join(f"{name}={format_number(value)}" for name, value in values)
+        if joint.name in driven or any(value < 0 for _, value in values):
+            message = (f"joint '{joint.name}' has {bad}: a controller that honours its limits (ros2_control's limiter, "
+                       f"MoveIt, Gazebo's motor) commands it {_nothing(values)}, so it cannot move it")
+            yield loaded.diagnostic("J014", message, joint.part("limit"), "give the actuator's real effort and velocity limits (the datasheet's peak torque or force, and speed)",
+                                    subjects=(joint.name,))
+        else:
+            message = f"joint '{joint.name}' has {bad}: no transmission or ros2_control drives it, so it is taken as passive (no actuator)"
+            yield loaded.diagnostic("J014", message, joint.part("limit"), "if an actuator drives it, give its real effort and velocity limits",
+                                    subjects=(joint.name,))._replace(severity=INFO)
+
+
+def _nothing(values) -> str:
+    """What a controller clamped to these limits commands."""
+    return " and ".join("no torque or force" if name == "effort" else "no speed" for name, _ in values)
+
+
+def driven_joints(loaded) -> set[str]:
+    """The joints a <transmission> or a <ros2_control> block names."""
+    robot = loaded.robot
+    return {element.get("name") for tag in ("transmission", "ros2_control") for block in robot.blocks(tag) for element in block.iterfind("joint")}
+
+
+@check("J015", "soft-limits-outside-limits", WARNING, "A safety controller's soft limits outside the joint's limits.", in_check=False)
+def soft_limits_outside_limits(loaded):
+    """## What it does
+    Flags a revolute or prismatic joint whose `<safety_controller>` sets
+    `soft_lower_limit` below its `<limit lower>`, or `soft_upper_limit` above its
+    `<limit upper>`. Soft limits at or within the hard limits are left alone.
+
+    ## Why is this bad?
+    The safety controller (pr2_controller_manager, ros_control's joint limits
+    interface) lets the joint go as far as its soft limits before it pushes back: soft
+    limits beyond the hard ones never act, and the joint meets its hard stop at full
+    speed. They were meant to sit a little inside.
+
+    ## Example
+    ```xml
+    <link name="base_link"/>
+    <link name="arm_link"/>
+    <joint name="arm_joint" type="revolute">
+      <parent link="base_link"/>
+      <child link="arm_link"/>
+      <limit lower="-1.5" upper="1.5" effort="10" velocity="1"/>
+      <safety_controller soft_lower_limit="-1.6" soft_upper_limit="1.6" k_position="100" k_velocity="10"/>
+    </joint>
+    ```
+
+    ## Use instead
+    ```xml
+    <link name="base_link"/>
+    <link name="arm_link"/>
+    <joint name="arm_joint" type="revolute">
+      <parent link="base_link"/>
+      <child link="arm_link"/>
+      <limit lower="-1.5" upper="1.5" effort="10" velocity="1"/>
+      <safety_controller soft_lower_limit="-1.4" soft_upper_limit="1.4" k_position="100" k_velocity="10"/>
+    </joint>
+    ```
+    """
+    for joint in loaded.robot.joints.values():
+        limit, safety = joint.limit, joint.safety
+        if joint.type not in ("revolute", "prismatic") or limit is None or safety is None or not (limit.has_lower or limit.has_upper):
+            continue
+        outside = []
+        if safety.soft_lower is not None and limit.has_lower and safety.soft_lower < limit.lower:
+            outside.append(f"soft_lower_limit {format_number(safety.soft_lower)} is below lower {format_number(limit.lower)}")
+        if safety.soft_upper is not None and limit.has_upper and safety.soft_upper > limit.upper:
+            outside.append(f"soft_upper_limit {format_number(safety.soft_upper)} is above upper {format_number(limit.upper)}")
+        if outside:
             yield loaded.diagnostic(
-                "J014",
-                f"joint '{joint.name}' has {' and '.join(bad)}: a controller or simulator that honours its limits cannot move it",
-                joint.part("limit"),
-                hint="give the actuator's real effort and velocity limits (the datasheet's peak torque or force, and speed)",
+                "J015", f"joint '{joint.name}': {' and '.join(outside)}, so the safety controller never acts before the hard stop",
+                joint.part("safety_controller"), "put the soft limits at or inside the <limit> range", subjects=(joint.name,),
             )

@@ -5,7 +5,7 @@ from __future__ import annotations
 from ..model import massprops
 from ..model.kinematics import bodies, body_mass, link_mass, subtree_masses, walk
 from ..model.numbers import format_number
-from .base import WARNING, check
+from .base import ERROR, WARNING, check
 
 
 def _inertials(loaded):
@@ -20,18 +20,35 @@ def moved_by_joint(loaded, link_name: str) -> bool:
     return joint is not None and joint.moving
 
 
-LUMPED_TENSOR = massprops.LIGHT * 0.1**2  # kg·m²: the most a 20 g part 10 cm across can have
+MATERIAL = 0.05
+"""A lumped link's tensor matters when it adds this much to the rest of its body's
+(the largest moment): TurtleBot3's 5 g casters carrying 0.001 kg·m² add 11 % each."""
 
 
 def absorbed(loaded, link) -> bool:
     """A link lighter than massprops.LIGHT fixed to a body that weighs more without it
-    (a sensor frame, a dummy link): simulators lump it into that body, where its
-    tensor is lost in the noise, so its mass properties are left alone."""
-    own = link_mass(loaded.robot, link.name)
+    (a sensor frame, a dummy link) whose tensor adds nothing material to that body's:
+    simulators lump it into the body, where it is lost in the noise, so its mass
+    properties are left alone. One whose tensor changes the body's is judged as any link."""
+    robot = loaded.robot
+    own = link_mass(robot, link.name)
     if own >= massprops.LIGHT:
         return False
     body = bodies(loaded)[link.name]
-    return body_mass(loaded, body) - own >= massprops.LIGHT
+    if body_mass(loaded, body) - own < massprops.LIGHT:
+        return False
+    inertial = link.inertial
+    if inertial is None or not inertial.inertia:
+        return True
+    rest = sum(_largest_moment(robot.links[name]) for name in body.links if name != link.name)
+    return massprops.scale_of(tensor_of(inertial)) <= MATERIAL * rest
+
+
+def _largest_moment(link) -> float:
+    inertial = link.inertial
+    if inertial is None or not inertial.inertia or not (inertial.mass or 0) > 0:
+        return 0.0
+    return max(0.0, massprops.principal_moments(tensor_of(inertial))[2])
 
 
 def tensor_of(inertial):
@@ -45,13 +62,15 @@ def moments_text(moments) -> str:
     return ", ".join("0" if abs(m) <= 1e-9 * largest else f"{m:.6g}" for m in moments)
 
 
-@check("I001", "negative-mass", WARNING, "A link with negative mass.", inertial_fix=True)
+@check("I001", "negative-mass", ERROR, "A link with negative mass.", inertial_fix=True)
 def negative_mass(loaded):
     """## What it does
-    Flags a link whose `<mass value>` is negative.
+    Flags a link whose `<mass value>` is negative: an error, like a negative size.
 
     ## Why is this bad?
-    Mass is never negative; simulators reject the model or explode on it.
+    Mass is never negative and no consumer can simulate it: MuJoCo and
+    Gazebo refuse the model, Drake replaces the body with a 1 kg sphere,
+    Pinocchio and PyBullet load it and their dynamics diverge.
 
     ## Example
     ```xml
@@ -129,10 +148,12 @@ def massless_moving_link(loaded):
         link = robot.links[joint.child]
         names = ", ".join(f"'{n}'" for n in branch[:4]) + (f" and {len(branch) - 4} more" if len(branch) > 4 else "")
         what = f"link {names}" if len(branch) == 1 else f"links {names}"
+        negative = [n for n in branch if (robot.links[n].inertial and robot.links[n].inertial.mass or 0) < 0]
+        none = "no positive mass (I001: a negative mass)" if negative else "none"
         at = link.inertial.mass_at if link.inertial is not None else None
         yield loaded.diagnostic(
             "I002",
-            f"joint '{joint.name}' moves no mass: {what} {'has' if len(branch) == 1 else 'have'} none, so the mass matrix is singular",
+            f"joint '{joint.name}' moves no mass: {what} {'has' if len(branch) == 1 else 'have'} {none}, so the mass matrix is singular",
             at if at is not None else link.at,
             hint="give the moving links their mass and inertia, or make the joint fixed",
             subjects=(joint.child, joint.name),
@@ -148,9 +169,9 @@ def _branch(robot, top: str) -> list[str]:
 def massless_with_inertia(loaded):
     """## What it does
     Flags a link with mass 0 and an inertia tensor that is not all zero. A massless
-    link fixed to a body with mass, whose tensor is no more than a 20 g part 10 cm
-    across could have (2e-4 kg·m²), is left alone: lumped into that body it changes
-    nothing (Bolt's feet: 5e-7 kg·m² on a lower leg).
+    link fixed to a body with mass, whose tensor adds less than 5 % to the body's
+    largest moment, is left alone: lumped into that body it changes nothing (Bolt's
+    feet: 5e-7 kg·m² on a lower leg).
 
     ## Why is this bad?
     A tensor without mass is contradictory: one of the two values is wrong.
@@ -174,7 +195,7 @@ def massless_with_inertia(loaded):
         if inertial.mass != 0 or not inertial.inertia:
             continue
         tensor = massprops.matrix(inertial.inertia)
-        if not massprops.is_zero(tensor) and not (absorbed(loaded, link) and massprops.scale_of(tensor) <= LUMPED_TENSOR):
+        if not massprops.is_zero(tensor) and not absorbed(loaded, link):
             yield loaded.diagnostic("I003", f"link '{link.name}' has mass 0 but a non-zero inertia tensor", inertial.inertia_at, subjects=(link.name,))
 
 
@@ -184,7 +205,7 @@ def point_mass(loaded):
     Flags a link with positive mass and an all-zero inertia tensor. Elements below
     1e-12 kg·m² count as zero (rounding noise such as `2.4e-35`). A link lighter than
     20 g fixed to a heavier body (a sensor or tool frame) is left alone: lumped into
-    that body, it changes nothing.
+    that body, its zero tensor changes nothing.
 
     ## Why is this bad?
     A real body has extent; with a zero tensor turning it costs nothing, and
@@ -216,13 +237,14 @@ def point_mass(loaded):
             )
 
 
-@check("I005", "inertia-not-positive-semidefinite", WARNING, "An inertia tensor with a negative principal moment.", inertial_fix=True)
+@check("I005", "inertia-not-positive-semidefinite", ERROR, "An inertia tensor with a negative principal moment.", inertial_fix=True)
 def not_positive_semidefinite(loaded):
     """## What it does
     Flags an inertia tensor with a negative principal moment (it is not positive
     semi-definite), including ones made so by off-diagonal terms. Elements below
     1e-12 kg·m² count as zero; a tensor made only of such noise is a point mass (I004).
-    A link lighter than 20 g fixed to a heavier body is left alone.
+    A link lighter than 20 g fixed to a heavier body is judged by what it does to that
+    body: left alone when its tensor adds less than 5 % to the body's largest moment.
 
     ## Why is this bad?
     Principal moments of inertia are never negative; a simulator given such a
@@ -243,10 +265,12 @@ def not_positive_semidefinite(loaded):
     ```
     """
     for link, moments in invalid_tensors(loaded)["I005"]:
+        sign, hint = sign_convention(link.inertial)
         yield loaded.diagnostic(
             "I005",
-            f"inertia of link '{link.name}' is not positive semi-definite (principal moments {moments_text(moments)})",
+            f"inertia of link '{link.name}' is not positive semi-definite (principal moments {moments_text(moments)}){sign}",
             link.inertial.inertia_at,
+            hint,
             subjects=(link.name,),
         )
 
@@ -257,7 +281,8 @@ def triangle_inequality(loaded):
     Flags a tensor whose principal moments break the triangle inequality
     (A + B >= C for any ordering), with a small relative tolerance. Elements below
     1e-12 kg·m² count as zero; a tensor made only of such noise is a point mass (I004).
-    A link lighter than 20 g fixed to a heavier body is left alone.
+    A link lighter than 20 g fixed to a heavier body is judged by what it does to that
+    body: left alone when its tensor adds less than 5 % to the body's largest moment.
 
     ## Why is this bad?
     No rigid body has such moments; Gazebo and other engines reject or mishandle
@@ -279,7 +304,22 @@ def triangle_inequality(loaded):
     """
     for link, moments in invalid_tensors(loaded)["I006"]:
         a, b, c = moments_text(moments).split(", ")
-        yield loaded.diagnostic("I006", f"inertia of link '{link.name}' breaks the triangle inequality: {a} + {b} < {c}", link.inertial.inertia_at, subjects=(link.name,))
+        sign, hint = sign_convention(link.inertial)
+        yield loaded.diagnostic(
+            "I006", f"inertia of link '{link.name}' breaks the triangle inequality: {a} + {b} < {c}{sign}", link.inertial.inertia_at, hint, subjects=(link.name,)
+        )
+
+
+SIGN_CONVENTION = "; with its products of inertia negated it is valid: the other sign convention for them (∫xy dm for -∫xy dm), which some CAD tools export"
+
+
+def sign_convention(inertial) -> tuple[str, str | None]:
+    """What to add to the message, and the hint, when negating the products of inertia
+    (ixy, ixz, iyz) makes an invalid tensor valid: a CAD sign convention, not a made-up tensor."""
+    negated = massprops.negated_products(tensor_of(inertial))
+    if _tensor_verdict(negated)[0] is not None:
+        return "", None
+    return SIGN_CONVENTION, f"negate the products of inertia: {massprops.inertia_element(negated)}"
 
 
 def invalid_tensors(loaded) -> dict[str, list]:

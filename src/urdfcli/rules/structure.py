@@ -152,6 +152,19 @@ V008 = declare("V008", "dimension-zero", WARNING, "A box size, radius or length 
     '<link name="base_link">\n  <collision><geometry><box size="0 0 0"/></geometry></collision>\n</link>',
     '<link name="base_link">\n  <collision><geometry><box size="0.1 0.1 0.1"/></geometry></collision>\n</link>'))
 
+V009 = declare("V009", "rpy-in-degrees", WARNING, "An `<origin rpy>` angle written in degrees.", explain(
+    "Flags an `<origin rpy>` with an angle beyond a full turn (2π): `rpy=\"0 0 90\"`, `\"3.14159 0 180\"`. "
+    "Angles within a turn are left alone, whatever they are: 5 could be degrees or radians, and only the author knows.",
+    "URDF angles are radians: 90 radians is 5157 degrees, and the part is turned by 1.6 rad (and 180 by 4.2 rad) "
+    "instead of a quarter or a half turn. Every consumer reads it so, without a word.",
+    '<link name="base_link"/>\n<link name="camera_link"/>\n<joint name="camera_joint" type="fixed">\n  <parent link="base_link"/>\n  <child link="camera_link"/>\n  <origin xyz="0.1 0 0.2" rpy="0 0 90"/>\n</joint>',
+    '<link name="base_link"/>\n<link name="camera_link"/>\n<joint name="camera_joint" type="fixed">\n  <parent link="base_link"/>\n  <child link="camera_link"/>\n  <origin xyz="0.1 0 0.2" rpy="0 0 1.5708"/>\n</joint>'))
+V010 = declare("V010", "dynamics-negative", ERROR, "A joint's damping or friction that is negative.", explain(
+    "Flags a `<dynamics damping>` or `friction` below zero.",
+    "Negative damping or friction feeds energy into the joint: Gazebo, MuJoCo and Drake accelerate it without end. "
+    "urdfdom reads it without a word.",
+    '<link name="base_link"/>\n<link name="arm_link"/>\n<joint name="arm_joint" type="continuous">\n  <parent link="base_link"/>\n  <child link="arm_link"/>\n  <dynamics damping="-0.5" friction="0.1"/>\n</joint>',
+    '<link name="base_link"/>\n<link name="arm_link"/>\n<joint name="arm_joint" type="continuous">\n  <parent link="base_link"/>\n  <child link="arm_link"/>\n  <dynamics damping="0.5" friction="0.1"/>\n</joint>'))
 # Geometry and materials
 G001 = declare("G001", "geometry-empty", ERROR, "`<geometry>` holds no shape.", explain(
     "Flags a `<geometry>` with no shape element in it.",
@@ -191,6 +204,12 @@ M004 = declare("M004", "rgba-length", WARNING, "An rgba value without exactly fo
     "urdfdom reads what is there; a missing alpha leaves the colour transparent or undefined.",
     '<material name="red"><color rgba="1 0 0"/></material>\n<link name="base_link"/>',
     '<material name="red"><color rgba="1 0 0 1"/></material>\n<link name="base_link"/>'))
+M005 = declare("M005", "material-rgba-attribute", WARNING, "An `rgba` written on `<material>` instead of in its `<color>`.", explain(
+    "Flags a visual's `<material rgba=\"...\">` that has no `<color>` child. (On a top-level material the same mistake is M001, an error.)",
+    "urdfdom, Gazebo, MuJoCo and every other parser read a material's colour from its `<color rgba>` child only: "
+    "the attribute is ignored and the visual is drawn in a default colour.",
+    '<link name="base_link">\n  <visual><geometry><box size="1 1 1"/></geometry><material name="grey" rgba="0.5 0.5 0.5 1"/></visual>\n</link>',
+    '<link name="base_link">\n  <visual><geometry><box size="1 1 1"/></geometry><material name="grey"><color rgba="0.5 0.5 0.5 1"/></material></visual>\n</link>'))
 
 # Joints
 _LINKS = '<link name="base_link"/>\n<link name="arm_link"/>\n'
