@@ -4,8 +4,9 @@ each finding with the defect and its clean counterpart."""
 from __future__ import annotations
 
 import json
+import subprocess
 
-from conftest import lint_file, run_cli
+from conftest import lint_file, require_tool, run_cli
 from ros_workspace import edit, make_repository
 
 from urdfcli.project.config import Config
@@ -328,3 +329,13 @@ def test_a_diagnostic_in_a_library_names_its_model_in_every_format(tmp_path):
     assert model in concise.splitlines()[0] and model in lint_as("github").splitlines()[0]
     sarif = json.loads(lint_as("sarif"))["runs"][0]["results"][0]
     assert model in json.dumps(sarif)
+
+
+def test_check_urdf_format_prints_the_tree_whenever_check_urdf_does(tmp_path):
+    path = tmp_path / "negative.urdf"
+    path.write_text(f'<robot name="r">{BASE}{child("arm", inertial(-0.3, 0.001, 0.001, 0.001), joint="revolute")}</robot>')
+    real = subprocess.run([require_tool("check_urdf"), str(path)], capture_output=True, text=True)
+    assert real.returncode == 0  # urdfdom does not check the sign of a mass
+    mine = run_cli("check", "--format", "check_urdf", str(path))
+    assert mine.stdout.decode() == real.stdout
+    assert mine.returncode == 1 and " I001 error: " in mine.stderr.decode()
