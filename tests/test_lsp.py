@@ -1,0 +1,398 @@
+"""`urdfcli lsp` driven over stdio by a real LSP client (pytest-lsp's, see lsp_client.py),
+on a repository laid out as real ones are: a model in one package, the macro library
+it includes from another (tests/ros_workspace.py)."""
+
+from __future__ import annotations
+
+import json
+import subprocess
+import sys
+from pathlib import Path
+from urllib.parse import urlparse
+from urllib.request import url2pathname
+
+import pytest
+from conftest import FIXTURES, run_cli
+from lsp_client import Editor, server_memory_kib, uri
+from lsprotocol import types
+from ros_workspace import line_of, make_repository
+
+pytestmark = pytest.mark.filterwarnings("error::pytest_lsp.LspSpecificationWarning")
+
+
+@pytest.fixture
+def repository(tmp_path: Path) -> Path:
+    root = make_repository(tmp_path / "acme")
+    (root / ".git").mkdir()
+    return root
+
+
+@pytest.fixture
+def cache(tmp_path: Path) -> Path:
+    """The server's cache folder (its rule pages), apart from the files it checks."""
+    return tmp_path / "cache"
+
+
+def rover(root: Path) -> Path:
+    return root / "description" / "urdf" / "rover.urdf.xacro"
+
+
+def wheel(root: Path) -> Path:
+    return root / "common" / "urdf" / "wheel.xacro"
+
+
+def codes(diagnostics) -> list[tuple[str | None, int]]:
+    """Each diagnostic's code and 1-based line, sorted."""
+    return sorted((d.code, d.range.start.line + 1) for d in diagnostics)
+
+
+def path_of(location_uri: str) -> Path:
+    return Path(url2pathname(urlparse(location_uri).path))
+
+
+# -- diagnostics ----------------------------------------------------------------------------
+@pytest.mark.asyncio
+async def test_a_library_is_checked_through_the_models_that_include_it_with_its_unsaved_text(repository, cache):
+    editor = await Editor.start(repository, cache)
+    try:
+        editor.open(rover(repository))
+        editor.open(wheel(repository))
+        assert await editor.diagnostics(rover(repository)) == []
+        assert await editor.diagnostics(wheel(repository)) == []
+        mark = editor.mark()
+        editor.edit(wheel(repository), 'length="${wheel_length}"/></geometry>\n      </visual>', 'length="${wheel_lenth}"/></geometry>\n      </visual>')
+        await editor.diagnostics(wheel(repository))  # not saved: the editor's text stands for the file
+        await editor.diagnostics(rover(repository), mark)  # the model that reads it is checked again too
+        found = editor.latest(wheel(repository))
+        assert codes(found) == [("X003", line_of(wheel(repository), '<geometry><cylinder radius="${radius}" length="${wheel_length}"/></geometry>'))]
+        (error,) = found
+        assert error.severity == types.DiagnosticSeverity.Error and error.source == "urdfcli"
+        assert "wheel_lenth" in error.message
+        # the macro call that ran into it, in the model of the other package
+        calls = {(path_of(r.location.uri), r.location.range.start.line + 1) for r in error.related_information}
+        assert (rover(repository), line_of(rover(repository), '<xacro:wheel prefix="left"')) in calls
+        assert all("in macro 'wheel' called here" == r.message for r in error.related_information)
+        # the code links to the rule's documentation, a page the client can open
+        page = path_of(error.code_description.href).read_text()
+        assert page.startswith("# X003 ") and "## What it does" in page
+        mark = editor.mark()
+        editor.save(wheel(repository))
+        assert codes(await editor.diagnostics(wheel(repository), mark)) == codes(found)
+        editor.edit(wheel(repository), "${wheel_lenth}", "${wheel_length}")
+        assert await editor.diagnostics(wheel(repository)) == []
+    finally:
+        await editor.stop()
+
+
+@pytest.mark.asyncio
+async def test_a_model_publishes_each_diagnostic_to_the_file_it_points_into(repository, cache):
+    editor = await Editor.start(repository, cache)
+    model, library = rover(repository), wheel(repository)
+    try:
+        editor.open(model)
+        assert await editor.diagnostics(model) == []
+        mark = editor.mark()
+        editor.edit(model, '<xacro:wheel prefix="left" parent="base_link" radius="0.1">', '<xacro:wheel prefix="left" parent="base_link" radius="-0.1">')
+        assert [d.code for d in await editor.diagnostics(model)] == []  # nothing is wrong where the model was written
+        in_library = await editor.diagnostics(library, mark)  # the library is not even open
+        assert {d.code for d in in_library} >= {"V006"}
+        cylinders = {line_of(library, "<visual>") + 1, line_of(library, "<collision>") + 1}
+        assert {d.range.start.line + 1 for d in in_library if d.code == "V006"} == cylinders
+        call = line_of(model, '<xacro:wheel prefix="left"')
+        assert all((path_of(r.location.uri), r.location.range.start.line + 1) == (model, call) for d in in_library for r in d.related_information)
+        mark = editor.mark()
+        editor.edit(model, 'radius="-0.1"', 'radius="0.1"')
+        assert await editor.diagnostics(library, mark) == []  # cleared once nothing points there
+    finally:
+        await editor.stop()
+
+
+@pytest.mark.asyncio
+async def test_configuration_and_noqa_apply_as_on_the_command_line(tmp_path, cache):
+    """Every fixture model: what the server publishes, file by file, is what `urdfcli lint` prints."""
+    models = sorted(p for p in FIXTURES.rglob("*") if p.name.endswith((".urdf", ".urdf.xacro")))[:12]
+    expected: dict[Path, set] = {}
+    for model in models:
+        report = json.loads(run_cli("lint", "--format", "json", str(model), cwd=FIXTURES).stdout)
+        for file in report["files"]:
+            for d in file["diagnostics"]:
+                path = (FIXTURES / d["path"]).resolve()
+                expected.setdefault(path, set()).add((d["code"], d["line"] or 1, d["message"]))
+    editor = await Editor.start(FIXTURES, cache)
+    try:
+        published: dict[Path, set] = {}
+        for model in models:
+            mark = editor.mark()
+            editor.open(model)
+            await editor.diagnostics(model)
+            for params in editor.published[mark:]:
+                found = {(d.code, d.range.start.line + 1, d.message.split("\nhint: ")[0]) for d in params.diagnostics if d.code}
+                published[path_of(params.uri).resolve()] = published.get(path_of(params.uri).resolve(), set()) | found
+            editor.close(model)
+    finally:
+        await editor.stop()
+    assert {p: s for p, s in published.items() if s} == expected
+
+
+@pytest.mark.asyncio
+async def test_configuration_files_and_changes_on_disk_are_picked_up(repository, cache):
+    model = rover(repository)
+    editor = await Editor.start(repository, cache)
+    try:
+        editor.open(model)
+        assert await editor.diagnostics(model) == []
+        # a checkout changes the library on disk, not open in the editor
+        library = wheel(repository)
+        library.write_text(library.read_text().replace('<axis xyz="0 0 1"/>', '<axis xyz="0 0 0"/>'))
+        editor.changed_on_disk(library)
+        mark = editor.mark()
+        found = await editor.diagnostics(library, mark)
+        assert "J007" in {d.code for d in found}
+        # a configuration that ignores the rule, written next to the repository's pyproject.toml
+        (repository / "urdfcli.toml").write_text('ignore = ["J007"]\n')
+        editor.changed_on_disk(repository / "urdfcli.toml")
+        mark = editor.mark()
+        assert await editor.diagnostics(library, mark) == []
+        assert [r.method for r in editor.registrations] == [types.WORKSPACE_DID_CHANGE_WATCHED_FILES]
+    finally:
+        await editor.stop()
+
+
+# -- navigation -------------------------------------------------------------------------------
+@pytest.mark.asyncio
+async def test_hover_shows_rule_docs_property_values_and_macro_parameters(repository, cache):
+    model, library = rover(repository), wheel(repository)
+    editor = await Editor.start(repository, cache)
+    try:
+        editor.open(model)
+        editor.open(library)
+        await editor.diagnostics(library)
+        editor.edit(library, '<axis xyz="0 0 1"/>', '<axis xyz="0 0 0"/>')
+        assert "J007" in {d.code for d in await editor.diagnostics(library)}
+        text = await editor.hover(library, '<axis xyz="0 0 0"/>', 1)
+        assert "**J007**" in text and "### What it does" in text and "zero" in text
+        assert "`wheel_length` = `0.04`" in await editor.hover(library, "${wheel_length}", 3)
+        defined = line_of(library, 'name="wheel_length"')
+        assert f"wheel.xacro:{defined}" in await editor.hover(library, "${wheel_length}", 3)
+        macro = await editor.hover(model, "<xacro:wheel", 8)
+        assert "**macro** `wheel`" in macro and "`prefix`, `parent`, `radius`, `*origin`" in macro
+        assert "**parameter** `radius` of macro `wheel`" in await editor.hover(library, 'radius="${radius}"', 11)
+        assert await editor.hover(model, "<robot", 2) is None
+    finally:
+        await editor.stop()
+
+
+@pytest.mark.asyncio
+async def test_go_to_definition_of_macros_properties_arguments_includes_and_links(repository, cache):
+    model, library = rover(repository), wheel(repository)
+    inertia = repository / "common" / "urdf" / "inertia.xacro"
+    editor = await Editor.start(repository, cache)
+    try:
+        text = model.read_text().replace('<link name="base_footprint"/>', '<xacro:arg name="footprint" default="base_footprint"/>\n  <link name="$(arg footprint)"/>')
+        text = text.replace("</robot>", '  <link name="caster"><visual><geometry><mesh filename="package://acme_common/meshes/caster.stl"/></geometry></visual></link>\n'
+                            '  <joint name="caster_joint" type="fixed"><parent link="left_wheel_link"/><child link="caster"/></joint>\n</robot>')
+        (repository / "common" / "meshes").mkdir()
+        (repository / "common" / "meshes" / "caster.stl").write_text("solid caster\nendsolid caster\n")
+        editor.open(model, text)
+        editor.open(library)
+        await editor.diagnostics(model)
+
+        def places(found):
+            return [(path_of(f.uri), f.range.start.line + 1) for f in found]
+
+        assert places(await editor.definition(model, "<xacro:wheel", 8)) == [(library, line_of(library, '<xacro:macro name="wheel"'))]
+        assert places(await editor.definition(model, "<xacro:box_inertial", 8)) == [(inertia, line_of(inertia, '<xacro:macro name="box_inertial"'))]
+        assert places(await editor.definition(library, "${wheel_length}", 3)) == [(library, line_of(library, 'name="wheel_length"'))]
+        assert places(await editor.definition(library, 'radius="${radius}"', 11)) == [(library, line_of(library, '<xacro:macro name="wheel"'))]
+        assert places(await editor.definition(model, "$(arg footprint)", 8)) == [(model, 4)]
+        assert places(await editor.definition(model, "$(find acme_common)/urdf/wheel.xacro", 25)) == [(library, 1)]
+        assert places(await editor.definition(model, "$(find acme_common)", 9)) == [(repository / "common" / "package.xml", 1)]
+        assert places(await editor.definition(model, "package://acme_common/meshes", 5)) == [(repository / "common" / "meshes" / "caster.stl", 1)]
+        assert places(await editor.definition(model, 'parent="base_link"', 9)) == [(model, text[: text.index('<link name="base_link"')].count("\n") + 1)]
+        # a link made by a macro: the call that made it, then where the macro writes it
+        assert places(await editor.definition(model, '<parent link="left_wheel_link"', 16)) == [
+            (model, text[: text.index('<xacro:wheel prefix="left"')].count("\n") + 1),
+            (library, line_of(library, '<link name="${prefix}_wheel_link">')),
+        ]
+    finally:
+        await editor.stop()
+
+
+@pytest.mark.asyncio
+async def test_completion_of_link_names_and_macro_names(repository, cache):
+    model = rover(repository)
+    editor = await Editor.start(repository, cache)
+    try:
+        editor.open(model)
+        await editor.diagnostics(model)
+        editor.edit(model, "</robot>", '  <joint name="extra" type="fixed"><parent link=""/><child link="base_"/></joint>\n  <xacro:\n</robot>')
+        links = [item.label for item in await editor.completion(model, '<parent link=""', 14)]
+        assert links == ["base_footprint", "base_link", "left_wheel_link", "right_wheel_link"]
+        child = await editor.completion(model, '<child link="base_"', 18)
+        assert child[0].text_edit.range == types.Range(
+            child[0].text_edit.range.start, child[0].text_edit.range.end
+        ) and child[0].text_edit.range.end.character - child[0].text_edit.range.start.character == len("base_")
+        macros = await editor.completion(model, "  <xacro:\n", 9)
+        labels = [item.label for item in macros]
+        assert labels[:3] == ["box_inertial", "cylinder_inertial", "wheel"] and "property" in labels
+        assert macros[2].detail.startswith("wheel(prefix parent radius *origin)")
+        assert await editor.completion(model, "<robot", 3) == []
+    finally:
+        await editor.stop()
+
+
+# -- quick fixes --------------------------------------------------------------------------------
+@pytest.mark.asyncio
+async def test_a_code_action_adds_a_noqa_comment_that_silences_the_diagnostic(repository, cache):
+    library = wheel(repository)
+    editor = await Editor.start(repository, cache)
+    try:
+        editor.open(rover(repository))
+        editor.open(library)
+        await editor.diagnostics(library)
+        editor.edit(library, '<axis xyz="0 0 1"/>', '<axis xyz="0 0 0"/>')
+        found = await editor.diagnostics(library)
+        (zero_axis,) = [d for d in found if d.code == "J007"]
+        actions = await editor.code_actions(library, [zero_axis])
+        (noqa,) = [a for a in actions if "noqa" in a.title]
+        editor.apply(noqa)
+        assert "      <!-- urdfcli: noqa: J007 -->\n      <axis" in editor.texts[library] or "<!-- urdfcli: noqa: J007 -->" in editor.texts[library]
+        assert "J007" not in {d.code for d in await editor.diagnostics(library)}
+        assert "U001" not in {d.code for d in editor.latest(library)}  # the comment silences something
+    finally:
+        await editor.stop()
+
+
+BOX = """<?xml version="1.0"?>
+<robot name="crate">
+  <link name="base_link"/>
+  <joint name="lift" type="prismatic">
+    <parent link="base_link"/>
+    <child link="crate"/>
+    <axis xyz="0 0 1"/>
+    <limit lower="0" upper="0.5" effort="100" velocity="0.2"/>
+  </joint>
+  <link name="crate">
+    <inertial>
+      <mass value="2"/>
+      <inertia ixx="1" ixy="0" ixz="0" iyy="1" iyz="0" izz="1"/>
+    </inertial>
+    <visual><geometry><box size="0.4 0.3 0.2"/></geometry></visual>
+    <collision><geometry><box size="0.4 0.3 0.2"/></geometry></collision>
+  </link>
+</robot>
+"""
+
+
+@pytest.mark.asyncio
+async def test_a_code_action_replaces_an_inertial_by_the_one_inertia_suggest_gives(tmp_path, cache):
+    model = tmp_path / "crate.urdf"
+    model.write_text(BOX)
+    suggested = run_cli("inertia", "--suggest", str(model)).stdout.decode()
+    editor = await Editor.start(tmp_path, cache)
+    try:
+        editor.open(model)
+        found = await editor.diagnostics(model)
+        flagged = [d for d in found if d.code in ("I007", "I009")]
+        assert flagged
+        actions = [a for a in await editor.code_actions(model, flagged) if "<inertial>" in a.title]
+        assert actions
+        editor.apply(actions[0])
+        written = editor.texts[model]
+        assert 'ixx="1"' not in written
+        assert written[written.index("<inertial>") : written.index("</inertial>")].split() == suggested[suggested.index("<inertial>") : suggested.index("</inertial>")].split()
+        assert not {"I007", "I009"} & {d.code for d in await editor.diagnostics(model)}
+    finally:
+        await editor.stop()
+
+
+@pytest.mark.asyncio
+async def test_a_code_action_gives_the_macro_call_with_the_geometrys_values(repository, cache):
+    model = rover(repository)
+    editor = await Editor.start(repository, cache)
+    try:
+        editor.open(model)
+        await editor.diagnostics(model)
+        editor.edit(model, '<xacro:box_inertial mass="5" x="0.4" y="0.3" z="0.1"/>', '<xacro:box_inertial mass="5" x="0.1" y="0.3" z="0.4"/>')
+        flagged = [d for d in await editor.diagnostics(model) if d.code == "I009"]
+        assert flagged
+        (call,) = [a for a in await editor.code_actions(model, flagged) if a.title.startswith("Call box_inertial")]
+        editor.apply(call)
+        assert '<xacro:box_inertial mass="5" x="0.4" y="0.3" z="0.1"/>' in editor.texts[model]
+        assert "I009" not in {d.code for d in await editor.diagnostics(model)}
+    finally:
+        await editor.stop()
+
+
+# -- robustness -----------------------------------------------------------------------------------
+@pytest.mark.asyncio
+async def test_half_typed_xml_a_runaway_xacro_and_a_huge_paste_never_stop_it(repository, cache):
+    model = rover(repository)
+    editor = await Editor.start(repository, cache, env={"URDFCLI_XACRO_TIMEOUT": "1"})
+    try:
+        editor.open(model)
+        await editor.diagnostics(model)
+        editor.edit(model, '<link name="base_footprint"/>', '<link name="base_footprint"/>\n  <link name="')
+        assert [d.code for d in await editor.diagnostics(model)] == ["X001"]
+        assert "**macro** `wheel`" in await editor.hover(model, "<xacro:wheel", 8)  # still answering
+        editor.edit(model, '\n  <link name="', '\n  <xacro:property name="spin" value="${python.sum(python.range(10**12))}"/>')
+        editor.edit(model, 'radius="0.1">', 'radius="${spin}">')
+        (stopped,) = await editor.diagnostics(model)
+        assert stopped.code == "X003" and "took longer than 1 s" in stopped.message
+        editor.edit(model, "${python.sum(python.range(10**12))}", "0.1")
+        assert await editor.diagnostics(model) == []
+        paste = "".join(f'  <link name="pasted_{i}"><visual><geometry><box size="1 1 1"/></geometry></visual></link>\n' for i in range(20_000))
+        editor.edit(model, "</robot>", paste + "</robot>")
+        pasted = await editor.diagnostics(model)
+        assert pasted and {d.code for d in pasted} <= {"T001", "D003"}  # unconnected links, visuals without collision
+        editor.edit(model, paste, "")
+        assert await editor.diagnostics(model) == []
+    finally:
+        await editor.stop()
+
+
+@pytest.mark.asyncio
+async def test_memory_stays_flat_over_a_thousand_edits(repository, cache):
+    model = rover(repository)
+    editor = await Editor.start(repository, cache)
+    try:
+        editor.open(model)
+        await editor.diagnostics(model)
+        samples = []
+        for edit in range(1, 1001):
+            old = f'radius="0.{edit % 9 + 1}">'
+            editor.edit(model, editor.texts[model][editor.texts[model].index('<xacro:wheel prefix="right"'):].split(">")[0].rsplit(" ", 1)[1] + ">", old)
+            if edit % 10 == 0:
+                await editor.diagnostics(model)  # each tenth edit waits for its check: a hundred checks in all
+            if edit in (200, 1000):
+                samples.append(server_memory_kib(editor))
+        assert samples[1] - samples[0] < 8 * 1024, samples  # KiB: 8 MiB over 800 edits and 80 checks is no leak
+    finally:
+        await editor.stop()
+
+
+def test_without_pygls_one_line_says_how_to_install_it():
+    code = "import sys; sys.modules['pygls'] = None; from urdfcli.cli import main; sys.exit(main(['lsp']))"
+    done = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=60)
+    assert done.returncode == 2
+    assert done.stdout == ""
+    assert done.stderr == "urdfcli: urdfcli lsp needs pygls and lsprotocol: pip install 'urdfcli[lsp]'\n"
+
+
+def test_a_bad_package_path_is_one_line():
+    done = subprocess.run([sys.executable, "-m", "urdfcli", "lsp", "-P", "/no/such/folder"], capture_output=True, text=True, timeout=60, stdin=subprocess.DEVNULL)
+    assert done.returncode == 2
+    assert done.stderr == "urdfcli: --package-path '/no/such/folder': not a directory\n"
+
+
+@pytest.mark.asyncio
+async def test_a_client_that_counts_in_utf8_gets_its_units(tmp_path, cache):
+    model = tmp_path / "robot.urdf"
+    model.write_text('<robot name="r">\n  <link name="größe"/><link name="größe"/>\n</robot>\n')
+    editor = await Editor.start(tmp_path, cache, capabilities="neovim")
+    try:
+        editor.open(model)
+        found = [d for d in await editor.diagnostics(model) if d.code == "N004"]
+        assert found and found[0].range.start.character == len('  <link name="größe"/>'.encode())
+    finally:
+        await editor.stop()
