@@ -26,6 +26,7 @@ from ..read.packages import PackageResolver
 from ..read.positions import Source
 from ..report import fixes
 from ..report.escape import escape
+from ..report.inertia import LinkReport
 from ..report.result import Result
 from ..rules import REGISTRY
 from ..session import Session
@@ -135,19 +136,21 @@ class Engine:
         return token_place(file, self.session.sources.source(file), line, column)
 
     # -- navigation -----------------------------------------------------------------
-    def hover(self, path: str, line: int, character: int) -> str | None:
-        source, at = self._at(path, line, character)
+    def hover(self, path: str, line: int, character: int, texts: dict[str, str]) -> str | None:
+        source, at = self._at(path, line, character, texts)
         return navigation.hover(source.text, at, self.scope(path))
 
-    def definition(self, path: str, line: int, character: int) -> list[Place]:
-        source, at = self._at(path, line, character)
+    def definition(self, path: str, line: int, character: int, texts: dict[str, str]) -> list[Place]:
+        source, at = self._at(path, line, character, texts)
         return [self.place(_absolute(found.file), found.line, found.column) for found in navigation.definition(source.text, at, self.scope(path))]
 
-    def completion(self, path: str, line: int, character: int) -> list[Completion]:
-        source, at = self._at(path, line, character)
+    def completion(self, path: str, line: int, character: int, texts: dict[str, str]) -> list[Completion]:
+        source, at = self._at(path, line, character, texts)
         return [Completion(item, offset_place(path, source, item.start, item.end)) for item in navigation.completion(source.text, at, self.scope(path))]
 
-    def _at(self, path: str, line: int, character: int) -> tuple[Source, int]:
+    def _at(self, path: str, line: int, character: int, texts: dict[str, str]) -> tuple[Source, int]:
+        """The text of ``path`` as the editor has it now, and the offset of a position in it."""
+        self.sync(texts)
         source = self.session.sources.source(path) or Source("")
         return source, offset(source, line, character)
 
@@ -228,24 +231,22 @@ class Engine:
             found.append(Fix(f"Silence {code} on this element (noqa comment)", ((offset_place(path, source, edit.start, edit.end), edit.text),)))
         rule = REGISTRY.get(code)
         if rule is not None and rule.inertial_fix:
-            found += [fix for link in subjects if (fix := self._inertial_fix(path, link)) is not None]
+            found += [fix for link in subjects if (fix := self._inertial_fix(path, code, link)) is not None]
         return found
 
-    def _inertial_fix(self, path: str, name: str) -> Fix | None:
+    def _inertial_fix(self, path: str, code: str, name: str) -> Fix | None:
         """The ``<inertial>`` ``urdfcli inertia --suggest`` gives for a link, in place of the
-        one written; for one a macro call wrote, the call that gives those values."""
+        one written; for one a macro call wrote, the call that gives those values. From
+        the first model whose audit finds ``code`` on that link."""
         for model in self._models_reading(path):
-            link = model.robot.links.get(name) if model.robot is not None else None
-            fix = self._replacement(model, link) if link is not None and link.inertial is not None else None
-            if fix is not None:
-                return fix
+            audit = api.audit(model, self.session)
+            entry = next((e for e in audit.links if e.link.name == name), None) if audit is not None else None
+            if entry is not None and entry.link.inertial is not None and any(d.code == code for d in entry.problems):
+                return self._replacement(model, entry)
         return None
 
-    def _replacement(self, model: Result, link) -> Fix | None:
-        audit = api.audit(model, self.session)
-        entry = next((e for e in audit.links if e.link.name == link.name), None) if audit is not None else None
-        if entry is None:
-            return None
+    def _replacement(self, model: Result, entry: LinkReport) -> Fix | None:
+        link = entry.link
         loaded = model.loaded
         suggested = fixes.suggestion(loaded, entry)
         if "<inertial>" not in suggested:
@@ -254,7 +255,11 @@ class Engine:
         if use is not None and use.called_at is not None:
             file, _, line = use.called_at.rpartition(":")
             call = fixes.matching_call(loaded, link, use, self.session.expander)
-            return self._replace(_absolute(file), int(line), f"<xacro:{use.name}", call or suggested, f"Call {use.name} with the values the geometry of link '{link.name}' gives")
+            if call is not None:
+                title = f"Call {use.name} with the values the geometry of link '{link.name}' gives"
+            else:
+                title = f"Replace the call of {use.name} by the <inertial> of a uniform body filling the geometry of link '{link.name}'"
+            return self._replace(_absolute(file), int(line), f"<xacro:{use.name}", call or suggested, title)
         where = loaded.document.locate(link.inertial.at)
         if where.trace or not where.line or where.expanded:
             return None  # written in a macro's body for every call: no one edit fixes this link alone

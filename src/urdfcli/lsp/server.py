@@ -250,7 +250,7 @@ def build(package_paths: tuple[str, ...] = ()) -> UrdfServer:
         if at is None:
             return None
         parts = [rule_hover(d) for d in ls.diagnostics_at(at[0], params.position)]
-        found = await ls.on_engine(ls.engine.hover, *at)
+        found = await ls.on_engine(ls.engine.hover, *at, ls.open_files())
         parts += [found] if found else []
         return types.Hover(types.MarkupContent(types.MarkupKind.Markdown, "\n\n---\n\n".join(parts))) if parts else None
 
@@ -259,7 +259,7 @@ def build(package_paths: tuple[str, ...] = ()) -> UrdfServer:
         at = ls.cursor(params.text_document.uri, params.position)
         if at is None:
             return None
-        return [ls.location(place) for place in await ls.on_engine(ls.engine.definition, *at)] or None
+        return [ls.location(place) for place in await ls.on_engine(ls.engine.definition, *at, ls.open_files())] or None
 
     @server.feature(types.TEXT_DOCUMENT_COMPLETION, types.CompletionOptions(trigger_characters=[":", '"', "'", "{"]))
     async def completion(ls: UrdfServer, params: types.CompletionParams) -> types.CompletionList | None:
@@ -273,7 +273,7 @@ def build(package_paths: tuple[str, ...] = ()) -> UrdfServer:
                 detail=c.item.detail,
                 text_edit=types.TextEdit(ls.range(c.place), c.item.label),
             )
-            for c in await ls.on_engine(ls.engine.completion, *at)
+            for c in await ls.on_engine(ls.engine.completion, *at, ls.open_files())
         ]
         return types.CompletionList(is_incomplete=False, items=items)
 
