@@ -2,8 +2,9 @@
 protocol's messages in, :class:`~urdfcli.lsp.engine.Engine` calls on one checking
 thread, diagnostics and answers out.
 
-Checks are scheduled, not run per keystroke: a change starts a check
-``DEBOUNCE_SECONDS`` later, and the changes made while a check runs are checked
+Checks are scheduled, not run per keystroke: a change after a pause starts a
+check at once, one that follows another within ``DEBOUNCE_SECONDS`` waits until
+the changes pause that long, and the changes made while a check runs are checked
 together once it ends, each open file with the editor's latest texts. Requests
 (hover, definition, completion, code actions) queue on the same thread, so they
 see the session as the last check left it; the protocol itself never waits.
@@ -31,8 +32,9 @@ from .engine import Engine, Mark
 from .places import Place, Point
 from .rulepages import rule_links
 
-# Long enough to take in the keys of one burst of typing, short enough that a
-# re-check of a 50-link model still ends within 150 ms of the change.
+# Long enough to take in the changes an editor sends together (a paste, a completion,
+# an auto-indent), short enough not to be felt: changes further apart than this, as
+# keystrokes are, are each checked at once.
 DEBOUNCE_SECONDS = 0.03
 SUFFIXES = (".urdf", ".xacro")  # .urdf.xacro included
 WATCHED = ("**/*.urdf", "**/*.xacro", "**/package.xml", "**/pyproject.toml", "**/urdfcli.toml", "**/.urdfcli.toml")
@@ -54,6 +56,7 @@ class UrdfServer(LanguageServer):
         self.waiting: set[str] = set()
         self.stale: set[str] = set()  # open files whose check is to run again: what they found is not shown
         self.timer: asyncio.TimerHandle | None = None
+        self.last_change = 0.0  # the event loop's time of the last change
         self.running: asyncio.Task | None = None
         self.links = rule_links()
 
@@ -78,11 +81,14 @@ class UrdfServer(LanguageServer):
     # -- checks ------------------------------------------------------------------------
     def schedule(self, paths: set[str]) -> None:
         self.waiting |= paths
+        loop = asyncio.get_running_loop()
+        after_a_pause = loop.time() - self.last_change >= DEBOUNCE_SECONDS
+        self.last_change = loop.time()
         if self.running is not None and not self.running.done():
             return  # taken when the running check ends
         if self.timer is not None:
             self.timer.cancel()
-        self.timer = asyncio.get_running_loop().call_later(DEBOUNCE_SECONDS, self._start)
+        self.timer = loop.call_later(0 if after_a_pause else DEBOUNCE_SECONDS, self._start)
 
     def _start(self) -> None:
         self.timer = None
@@ -105,6 +111,9 @@ class UrdfServer(LanguageServer):
                 if path in self.open_files():  # not closed while it was checked
                     self.reads[path] = checked.reads
                     self.publish(path, {file: [self.diagnostic(m) for m in marks] for file, marks in checked.marks.items()}, versions)
+        # The collector runs seldom while a model is read (the command line's setting: a
+        # fifth of a check's time otherwise); the garbage of the checks goes now, while idle.
+        self.checking.submit(gc.collect)
 
     def _documents(self):
         return {path: self.workspace.get_text_document(uri) for uri in list(self.workspace.text_documents) if (path := checkable(uri))}
@@ -319,7 +328,6 @@ def serve(package_paths: tuple[str, ...] = ()) -> None:
     # goes to standard error, never into the protocol's stream.
     os.dup2(sys.stderr.fileno(), sys.stdout.fileno())
     sys.stdout = sys.stderr
-    gc.set_threshold(700, 10, 10)  # Python's defaults: a server lives long, its cyclic garbage is collected as it goes
     server.engine.warm()
     try:
         server.start_io(sys.stdin.buffer, protocol_out)
