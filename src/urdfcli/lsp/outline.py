@@ -175,9 +175,11 @@ def cursor(text: str, offset: int) -> Cursor | None:
         if attribute is None:
             return Cursor(tag, start, False)  # an attribute being typed
         group = 2 if attribute.group(2) is not None else 4
-        begin, end = attribute.start(group), attribute.end(group)
-        if begin <= offset <= end:
-            return Cursor(tag, start, False, attribute.group(1), attribute.group(group), begin, end)
+        value, begin = attribute.group(group), attribute.start(group)
+        if not attribute.group(group + 1):  # not closed yet: the value being typed ends with its line
+            value = value.split("\n", 1)[0]
+        if begin <= offset <= begin + len(value):
+            return Cursor(tag, start, False, attribute.group(1), value, begin, begin + len(value))
         at = attribute.end()
     return None
 
