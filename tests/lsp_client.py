@@ -9,6 +9,7 @@ Positions are 0-based lines and characters, as the protocol counts them.
 from __future__ import annotations
 
 import asyncio
+import contextlib
 import os
 import sys
 from pathlib import Path
@@ -165,6 +166,16 @@ class Editor:
         change = types.TextDocumentContentChangePartial(range_, new)
         identifier = types.VersionedTextDocumentIdentifier(self.versions[path], uri(path))
         self.client.text_document_did_change(types.DidChangeTextDocumentParams(identifier, [change]))
+
+
+@contextlib.asynccontextmanager
+async def editing(root: Path, cache: Path, **options):
+    """An :class:`Editor` on a server started for the block, and shut down after it."""
+    editor = await Editor.start(root, cache, **options)
+    try:
+        yield editor
+    finally:
+        await editor.stop()
 
 
 def server_memory_kib(editor: Editor) -> int:
