@@ -20,7 +20,7 @@ from typing import NamedTuple
 from .. import api
 from ..diagnostics import Diagnostic, Location, Severity
 from ..project.config import ConfigError
-from ..project.workspace import read_source, resolve_include
+from ..project.workspace import resolve_include
 from ..read.document import STDIN
 from ..read.packages import PackageResolver
 from ..read.positions import Source
@@ -214,11 +214,10 @@ class Engine:
         resolver = self._resolver(file)
         if value.startswith(("package://", "file://")):
             return resolver.resolve_uri(value, Path(file).parent)
-        try:
-            data = self.session.sources.data(file)
-        except OSError:
+        found = self.outline(file)
+        if found is None:
             return None
-        include = resolve_include(value, read_source(Path(file), data), resolver.find)
+        include = resolve_include(value, found.declared, resolver.find)
         return Path(include.value) if include.kind == "path" else None
 
     # -- quick fixes ------------------------------------------------------------------

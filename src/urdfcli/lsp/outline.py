@@ -10,10 +10,13 @@ position is in, from the text alone, so that it also works on a half-typed tag.
 from __future__ import annotations
 
 import re
+from pathlib import Path
 from typing import NamedTuple
 
 from lxml import etree
 
+from ..project.workspace import Source as Declared
+from ..project.workspace import read_source
 from ..read.document import XACRO_NAMESPACES, local_name, namespace_of
 from ..read.positions import Source, declared_encoding
 from ..read.xml import XmlError, parse
@@ -54,6 +57,7 @@ class Outline(NamedTuple):
     file: str
     definitions: tuple[Definition, ...]
     includes: tuple[Written, ...]
+    declared: Declared  # what resolving its includes needs: its arguments' defaults, its properties' values
 
     def named(self, kind: str, name: str) -> list[Definition]:
         return [d for d in self.definitions if d.kind == kind and d.name == name]
@@ -75,8 +79,9 @@ def is_xacro_element(element) -> bool:
 
 def outline(file: str, text: str) -> Outline | None:
     """What ``text`` (the source of ``file``) defines; None when it is not well-formed XML."""
+    data = encoded(text)
     try:
-        root = parse(encoded(text))
+        root = parse(data)
     except XmlError:
         return None
     elements = list(root.iter(etree.Element))
@@ -91,7 +96,7 @@ def outline(file: str, text: str) -> Outline | None:
             definitions.append(found)
         elif is_xacro_element(element) and local_name(element.tag) == "include" and element.get("filename"):
             includes.append(Written(element.get("filename"), line, column))
-    return Outline(file, tuple(definitions), tuple(includes))
+    return Outline(file, tuple(definitions), tuple(includes), read_source(Path(file), data))
 
 
 def _definition(element, file: str, line: int, column: int) -> Definition | None:

@@ -306,9 +306,9 @@ class Configurations:
         self._folders: dict[str, Path | None] = {}  # an input's folder, as given -> its configuration file
 
     def forget(self) -> None:
-        """Look for the nearest configuration file again (new dicts: a look-up under way keeps its own)."""
-        self._nearest = {}
-        self._folders = {}
+        """Look for the nearest configuration file again (each file is read again anyway when it changes)."""
+        self._nearest.clear()
+        self._folders.clear()
 
     def for_input(self, file: str) -> Config:
         """The configuration of one input: none when isolated, the explicit file when

@@ -50,9 +50,9 @@ class PackageIndex:
     def forget(self) -> None:
         """Look at the folders again: packages added, moved or removed on disk (each
         manifest is read again anyway when it changes)."""
-        self._scans = {}
-        self._enclosing = {}
-        self._roots = {}
+        self._scans.clear()
+        self._enclosing.clear()
+        self._roots.clear()
 
     def package_name(self, manifest: Path) -> str | None:
         """The ``<name>`` declared in a package.xml, or None when unreadable."""
