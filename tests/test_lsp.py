@@ -382,3 +382,11 @@ async def test_a_client_that_counts_in_utf8_gets_its_units(tmp_path, cache):
         editor.open(model)
         found = [d for d in await editor.diagnostics(model) if d.code == "N004"]
         assert found and found[0].range.start.character == len('  <link name="größe"/>'.encode())
+
+
+def test_the_other_commands_never_import_the_server():
+    from test_startup import imported
+
+    modules = imported("check", str(FIXTURES / "seed000" / "my_robot.urdf"))
+    assert "urdfcli.cli.lsp" in modules
+    assert not {"pygls", "lsprotocol", "urdfcli.lsp", "urdfcli.lsp.server"} & set(modules)

@@ -97,10 +97,9 @@ class UrdfServer(LanguageServer):
     async def _check_waiting(self) -> None:
         while self.waiting:
             paths, self.waiting = self.waiting, set()
-            texts = self.open_files()
-            self.stale = {p for p in paths if p in texts}
+            self.stale = paths & set(self.open_files())
             for path in sorted(self.stale):
-                versions = {p: d.version for p, d in self._documents().items()}
+                texts, versions = self.open_files(), self.versions()  # the latest, and which they are
                 try:
                     checked = await self.on_engine(self.engine.check, path, texts)
                 except Exception:  # noqa: BLE001 - logged; the server goes on
@@ -115,8 +114,8 @@ class UrdfServer(LanguageServer):
         # fifth of a check's time otherwise); the garbage of the checks goes now, while idle.
         self.checking.submit(gc.collect)
 
-    def _documents(self):
-        return {path: self.workspace.get_text_document(uri) for uri in list(self.workspace.text_documents) if (path := checkable(uri))}
+    def versions(self) -> dict[str, int | None]:
+        return {path: document.version for uri, document in list(self.workspace.text_documents.items()) if (path := checkable(uri))}
 
     def publish(self, path: str, found: dict[str, list[types.Diagnostic]], versions: dict[str, int | None]) -> None:
         """Keep what the check of ``path`` found, and publish ``path`` (its version checked)
