@@ -5,6 +5,7 @@ it includes from another (tests/ros_workspace.py)."""
 from __future__ import annotations
 
 import json
+import shutil
 import subprocess
 import sys
 from pathlib import Path
@@ -44,6 +45,11 @@ def wheel(root: Path) -> Path:
 def codes(diagnostics) -> list[tuple[str | None, int]]:
     """Each diagnostic's code and 1-based line, sorted."""
     return sorted((d.code, d.range.start.line + 1) for d in diagnostics)
+
+
+def line_in(text: str, needle: str) -> int:
+    """The 1-based line of the first ``needle`` in ``text``."""
+    return text[: text.index(needle)].count("\n") + 1
 
 
 def path_of(location_uri: str) -> Path:
@@ -103,24 +109,35 @@ async def test_a_model_publishes_each_diagnostic_to_the_file_it_points_into(repo
 
 @pytest.mark.asyncio
 async def test_configuration_and_noqa_apply_as_on_the_command_line(tmp_path, cache):
-    """Every fixture model: what the server publishes, file by file, is what `urdfcli lint` prints."""
-    models = sorted(p for p in FIXTURES.rglob("*") if p.name.endswith((".urdf", ".urdf.xacro")))[:12]
+    """The fixture models with a configuration and a noqa comment: what the server
+    publishes, file by file, is what `urdfcli lint` prints."""
+    root = tmp_path / "fixtures"
+    for folder in ("seed000", "urdf02_gazebo"):
+        shutil.copytree(FIXTURES / folder, root / folder)
+    (root / "urdfcli.toml").write_text('extend-select = ["S"]\nignore = ["D003"]\n[severity]\nI009 = "error"\n')
+    my_robot = root / "seed000" / "my_robot.urdf"
+    my_robot.write_text(my_robot.read_text().replace('  <link name="link1">', '  <!-- urdfcli: noqa: I002 -->\n  <link name="link1">'))
+    models = sorted(p for p in root.rglob("*") if p.name.endswith((".urdf", ".urdf.xacro")))
     expected: dict[Path, set] = {}
     for model in models:
-        report = json.loads(run_cli("lint", "--format", "json", str(model), cwd=FIXTURES).stdout)
+        report = json.loads(run_cli("lint", "--format", "json", str(model), cwd=root).stdout)
         for file in report["files"]:
             for d in file["diagnostics"]:
-                path = (FIXTURES / d["path"]).resolve()
-                expected.setdefault(path, set()).add((d["code"], d["line"] or 1, d["message"]))
-    async with editing(FIXTURES, cache) as editor:
+                expected.setdefault((root / d["path"]).resolve(), set()).add((d["code"], d["severity"], d["line"] or 1, d["message"]))
+    found = {code for diagnostics in expected.values() for code, *_ in diagnostics}
+    assert {"S001", "I009"} <= found and not {"D003", "I002", "U001"} & found  # the configuration and the comment at work
+    assert ("I009", "error") in {(code, severity) for diagnostics in expected.values() for code, severity, *_ in diagnostics}
+    severities = {types.DiagnosticSeverity.Error: "error", types.DiagnosticSeverity.Warning: "warning", types.DiagnosticSeverity.Information: "info"}
+    async with editing(root, cache) as editor:
         published: dict[Path, set] = {}
         for model in models:
             mark = editor.mark()
             editor.open(model)
             await editor.diagnostics(model)
             for params in editor.published[mark:]:
-                found = {(d.code, d.range.start.line + 1, d.message.split("\nhint: ")[0]) for d in params.diagnostics if d.code}
-                published[path_of(params.uri).resolve()] = published.get(path_of(params.uri).resolve(), set()) | found
+                file = path_of(params.uri).resolve()
+                found = {(d.code, severities[d.severity], d.range.start.line + 1, d.message.split("\nhint: ")[0]) for d in params.diagnostics if d.code}
+                published[file] = published.get(file, set()) | found
             editor.close(model)
     assert {p: s for p, s in published.items() if s} == expected
 
@@ -165,6 +182,10 @@ async def test_hover_shows_rule_docs_property_values_and_macro_parameters(reposi
         assert "**macro** `wheel`" in macro and "`prefix`, `parent`, `radius`, `*origin`" in macro
         assert "**parameter** `radius` of macro `wheel`" in await editor.hover(library, 'radius="${radius}"', 11)
         assert await editor.hover(model, "<robot", 2) is None
+        assert await editor.hover(model, "$(find acme_common)", 9) == f"**package** `acme_common`: `{repository / 'common'}`"
+        editor.edit(model, '<link name="base_footprint"/>', '<xacro:arg name="footprint" default="base_footprint"/>\n  <link name="$(arg footprint)"/>')
+        argument = await editor.hover(model, "$(arg footprint)", 8)
+        assert argument.startswith("**argument** `footprint`, default `base_footprint`") and "rover.urdf.xacro:4" in argument
 
 
 @pytest.mark.asyncio
@@ -190,12 +211,14 @@ async def test_go_to_definition_of_macros_properties_arguments_includes_and_link
         assert places(await editor.definition(library, 'radius="${radius}"', 11)) == [(library, line_of(library, '<xacro:macro name="wheel"'))]
         assert places(await editor.definition(model, "$(arg footprint)", 8)) == [(model, 4)]
         assert places(await editor.definition(model, "$(find acme_common)/urdf/wheel.xacro", 25)) == [(library, 1)]
+        editor.edit(model, "<link name=\"$(arg footprint)\"/>", '<link name="$(arg footprint)"/>\n  <xacro:include filename="../../common/urdf/inertia.xacro"/>')
+        assert places(await editor.definition(model, "../../common/urdf/inertia.xacro", 3)) == [(inertia, 1)]
         assert places(await editor.definition(model, "$(find acme_common)", 9)) == [(repository / "common" / "package.xml", 1)]
         assert places(await editor.definition(model, "package://acme_common/meshes", 5)) == [(repository / "common" / "meshes" / "caster.stl", 1)]
-        assert places(await editor.definition(model, 'parent="base_link"', 9)) == [(model, text[: text.index('<link name="base_link"')].count("\n") + 1)]
+        assert places(await editor.definition(model, 'parent="base_link"', 9)) == [(model, line_in(editor.texts[model], '<link name="base_link"'))]
         # a link made by a macro: the call that made it, then where the macro writes it
         assert places(await editor.definition(model, '<parent link="left_wheel_link"', 16)) == [
-            (model, text[: text.index('<xacro:wheel prefix="left"')].count("\n") + 1),
+            (model, line_in(editor.texts[model], '<xacro:wheel prefix="left"')),
             (library, line_of(library, '<link name="${prefix}_wheel_link">')),
         ]
 
