@@ -314,9 +314,27 @@ EDITS = 10 if QUICK else 30
 EDITOR_LINKS = 50
 
 
-async def _edit_latencies(model: Path, edits: int) -> tuple[list[float], float]:
-    """Seconds from each edit sent to the server until its diagnostics arrive, and the
-    server's resident memory at the end (MiB)."""
+def _cpu_seconds(pid: int) -> float:
+    """The processor time of a process and of its children still running (the xacro worker)."""
+    def own(process: str) -> float:
+        fields = Path(f"/proc/{process}/stat").read_text().rsplit(")", 1)[1].split()
+        return (int(fields[11]) + int(fields[12])) / os.sysconf("SC_CLK_TCK")  # utime, stime
+
+    children = [p.name for p in Path("/proc").iterdir() if p.name.isdigit() and _parent(p.name) == pid]
+    return own(str(pid)) + sum(own(child) for child in children)
+
+
+def _parent(process: str) -> int | None:
+    try:
+        return int(Path(f"/proc/{process}/stat").read_text().rsplit(")", 1)[1].split()[1])
+    except (OSError, ValueError, IndexError):
+        return None
+
+
+async def _edit_latencies(model: Path, edits: int) -> tuple[list[float], float, float]:
+    """Seconds from each edit sent to the server until its diagnostics arrive, the
+    processor time the server and its xacro worker spent per edit, and the server's
+    resident memory at the end (MiB)."""
     import asyncio
 
     from lsprotocol import types
@@ -345,6 +363,8 @@ async def _edit_latencies(model: Path, edits: int) -> tuple[list[float], float]:
     client.text_document_did_open(types.DidOpenTextDocumentParams(types.TextDocumentItem(uri, "xml", 1, text)))
     await wait_for(1)
     latencies = []
+    pid = client._server.pid
+    cpu = _cpu_seconds(pid)
     line = text[: text.index('<xacro:property name="mass" value="')].count("\n")
     column = len('  <xacro:property name="mass" value="')
     for version in range(2, edits + 2):
@@ -354,12 +374,13 @@ async def _edit_latencies(model: Path, edits: int) -> tuple[list[float], float]:
         sent = time.perf_counter()
         client.text_document_did_change(types.DidChangeTextDocumentParams(types.VersionedTextDocumentIdentifier(version, uri), [change]))
         latencies.append(await wait_for(version) - sent)
-    status = Path(f"/proc/{client._server.pid}/status").read_text()
+    cpu = (_cpu_seconds(pid) - cpu) / edits
+    status = Path(f"/proc/{pid}/status").read_text()
     rss = int(next(row.split()[1] for row in status.splitlines() if row.startswith("VmRSS:"))) / 1024
     await client.shutdown_async(None)
     client.exit(None)
     await client.stop()
-    return latencies, rss
+    return latencies, cpu, rss
 
 
 def editor_cases(rows: list[Row]) -> None:
@@ -367,12 +388,12 @@ def editor_cases(rows: list[Row]) -> None:
 
     model = generate_macro_model(EDITOR_LINKS)
     try:
-        latencies, rss = asyncio.run(_edit_latencies(model, EDITS))
+        latencies, cpu, rss = asyncio.run(_edit_latencies(model, EDITS))
     except ImportError:
         rows.append(Row("lsp: re-check after an edit", "pygls not installed (pip install -e '.[lsp]')", ""))
         return
     median, worst = statistics.median(latencies), max(latencies)
-    ours = f"median {_seconds(median)}, slowest {_seconds(worst)} ({len(latencies)} edits), server {rss:.0f} MiB"
+    ours = f"median {_seconds(median)}, slowest {_seconds(worst)} ({len(latencies)} edits); processor {_seconds(cpu)} an edit; server {rss:.0f} MiB"
     rows.append(Row(f"lsp: edit to published diagnostics, xacro model of {EDITOR_LINKS + 1} links", ours, "", target="median ≤ 150 ms", met=verdict(median <= 0.150)))
 
 
