@@ -110,3 +110,12 @@ def test_an_editors_text_is_encoded_as_its_declaration_says():
     assert encoded('<?xml version="1.0" encoding="ISO-8859-1"?><robot name="größe"/>').endswith('"gr\xf6\xdfe"/>'.encode("latin-1"))
     assert encoded('<robot name="größe"/>') == '<robot name="größe"/>'.encode()
     assert encoded('<?xml version="1.0" encoding="ascii"?><robot name="größe"/>').endswith("größe\"/>".encode())  # cannot hold it: UTF-8
+
+
+def test_values_from_an_input_are_shown_as_code_that_cannot_break_out():
+    from urdfcli.lsp.navigation import code
+
+    assert code("0.04") == "`0.04`"
+    assert code("a`b``c") == "``` a`b``c ```"  # a fence longer than any run inside
+    assert code("x\u202ey\x1b[2J") == "`x\\u202ey\\x1b[2J`"  # bidi overrides and escapes shown, not obeyed
+    assert code("") == '`""`'

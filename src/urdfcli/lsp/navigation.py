@@ -62,8 +62,9 @@ class Item(NamedTuple):
 
 
 def code(text: str) -> str:
-    """Text from an input as inline Markdown code: escaped, in a fence longer than any of its backtick runs."""
-    text = escape(text)
+    """Text from an input as inline Markdown code: escaped, in a fence longer than any of
+    its backtick runs (an empty text as ``""``)."""
+    text = escape(text) or '""'
     fence = "`" * (max((len(run) for run in re.findall(r"`+", text)), default=0) + 1)
     return f"{fence} {text} {fence}" if fence != "`" else f"`{text}`"
 
