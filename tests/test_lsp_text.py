@@ -119,3 +119,14 @@ def test_values_from_an_input_are_shown_as_code_that_cannot_break_out():
     assert code("a`b``c") == "``` a`b``c ```"  # a fence longer than any run inside
     assert code("x\u202ey\x1b[2J") == "`x\\u202ey\\x1b[2J`"  # bidi overrides and escapes shown, not obeyed
     assert code("") == '`""`'
+
+
+def test_completion_offers_only_names_that_can_be_typed():
+    from urdfcli.diagnostics import Location
+    from urdfcli.lsp.navigation import Scope, completion
+
+    text = '<robot>\n  <joint name="j" type="fixed"><parent link=""/></joint>\n</robot>\n'
+    links = {"base_link": (Location("/m.urdf", 1, 1),), "evil\u202eknil": (Location("/m.urdf", 2, 1),)}
+    scope = Scope((), links, {}, lambda name: None, lambda value: None)
+    offset = text.index('link=""') + len('link="')
+    assert [(i.label, i.start, i.end) for i in completion(text, offset, scope)] == [("base_link", offset, offset)]

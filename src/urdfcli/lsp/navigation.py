@@ -48,7 +48,7 @@ class Scope(NamedTuple):
         return found
 
     def link_names(self) -> list[str]:
-        return sorted(set(self.links) | set(self.names("link")))
+        return sorted(name for name in set(self.links) | set(self.names("link")) if name.isprintable())
 
 
 class Item(NamedTuple):
@@ -261,14 +261,14 @@ def completion(text: str, offset: int, scope: Scope) -> list[Item]:
 
 
 def _macro_items(scope: Scope, start: int, end: int) -> list[Item]:
-    macros = scope.names("macro")
-    items = [Item(name, "macro", f"{name}({d.detail})  {shown(Path(d.file))}:{d.line}", start, end) for name, d in sorted(macros.items())]
+    macros = {name: d for name, d in scope.names("macro").items() if name.isprintable()}  # a name no one can type is offered to no one
+    items = [Item(name, "macro", escape(f"{name}({d.detail})  {shown(Path(d.file))}:{d.line}"), start, end) for name, d in sorted(macros.items())]
     return items + [Item(keyword, "keyword", "xacro", start, end) for keyword in XACRO_KEYWORDS if keyword not in macros]
 
 
 def _name_items(text: str, offset: int, scope: Scope, start: int) -> list[Item]:
     macro = _macro_at(text, offset)
-    items = [Item(p.lstrip("*"), "parameter", f"parameter of {macro[0]}", start, offset) for p, _ in macro_parameters(macro[1])] if macro else []
+    items = [Item(p.lstrip("*"), "parameter", escape(f"parameter of {macro[0]}"), start, offset) for p, _ in macro_parameters(macro[1]) if p.isprintable()] if macro else []
     taken = {item.label for item in items}
     properties = scope.names("property")
-    return items + [Item(name, "property", d.detail, start, offset) for name, d in sorted(properties.items()) if name not in taken]
+    return items + [Item(name, "property", escape(d.detail), start, offset) for name, d in sorted(properties.items()) if name not in taken and name.isprintable()]

@@ -25,6 +25,7 @@ from pygls.lsp.server import LanguageServer
 from pygls.uris import from_fs_path, to_fs_path
 
 from ..diagnostics import Severity
+from ..report.escape import escape
 from ..report.rules import page
 from ..rules import REGISTRY
 from ..version import __version__
@@ -103,7 +104,7 @@ class UrdfServer(LanguageServer):
                 try:
                     checked = await self.on_engine(self.engine.check, path, texts)
                 except Exception:  # noqa: BLE001 - logged; the server goes on
-                    log.exception("checking %s", path)
+                    log.exception("checking %s", escape(path))
                     continue
                 finally:
                     self.stale.discard(path)
