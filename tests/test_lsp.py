@@ -355,7 +355,7 @@ async def test_a_huge_paste_is_checked_and_taken_back(tmp_path, cache):
         )
         editor.edit(model, "</robot>", chain + '  <link name="l5"/>\n</robot>')  # 3 MB, and one link twice
         assert codes(await editor.diagnostics(model)) == [("N004", 40_003)]
-        assert await editor.hover(model, '<link name="l5"/>', 1) is not None  # the diagnostic's rule, at once
+        assert "N004" in await editor.hover(model, '<link name="l5"/>', 1)  # the diagnostic's rule, on a 3 MB text
         editor.edit(model, chain + '  <link name="l5"/>\n', "")
         assert await editor.diagnostics(model) == []
 
