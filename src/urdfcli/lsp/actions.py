@@ -13,8 +13,9 @@ from typing import NamedTuple
 from ..project.suppressions import COMMENT
 from ..read.positions import Source
 
-# codes the comments cannot silence: a file that cannot be read is reported whatever they say
-UNSILENCEABLE = ("X001", "X002")
+# codes a comment is not the fix for: a file that cannot be read is reported whatever the
+# comments say, and a comment about the comments (U001 unused, U002 unknown code) wants editing
+UNSILENCEABLE = ("X001", "X002", "U001", "U002")
 
 
 class Edit(NamedTuple):
