@@ -106,7 +106,6 @@ class Engine:
             return Checked({path: [self._problem(path, message)]}, frozenset({path}))
         if path not in self.runs or any(m.robot is not None for m in run.models):
             self.runs[path] = run  # navigation keeps the models of the last check that read any
-        self.outline(path)  # remembered while the text is half-typed
         marks: dict[str, list[Mark]] = {path: []}
         for diagnostic, note in _labelled(run.results):
             mark = self.mark(diagnostic, note)

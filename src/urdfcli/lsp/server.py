@@ -111,6 +111,7 @@ class UrdfServer(LanguageServer):
                 if path in self.open_files():  # not closed while it was checked
                     self.reads[path] = checked.reads
                     self.publish(path, {file: [self.diagnostic(m) for m in marks] for file, marks in checked.marks.items()}, versions)
+                    self.checking.submit(self.engine.outline, path)  # after publishing: kept for navigation while the text is half-typed
         # The collector runs seldom while a model is read (the command line's setting: a
         # fifth of a check's time otherwise); the garbage of the checks goes now, while idle.
         self.checking.submit(gc.collect)
