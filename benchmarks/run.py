@@ -13,7 +13,10 @@ It measures every target of "What must hold" in one run:
    ``xacro``; the same on a generated model of 1,500 macro calls;
 4. ``check`` on a generated tree of 100,000 links (each with an inertial, a
    visual and a collision) against ``check_urdf``, time and peak memory; and
-   ``check``, ``tree`` and ``lint`` on it against the 10,000-link tree.
+   ``check``, ``tree`` and ``lint`` on it against the 10,000-link tree;
+5. ``urdfcli lsp``: the time from an edit of a 50-link xacro model (a
+   ``didChange`` sent) to its diagnostics published, over a series of edits
+   made as keystrokes are, one at a time.
 
 Models are written under ``benchmarks/generated/``. Every measurement is a
 separate process with its output discarded; the two commands of a comparison
@@ -307,6 +310,93 @@ def large_cases(rows: list[Row], check_urdf: str) -> None:
         )
 
 
+EDITS = 10 if QUICK else 30
+EDITOR_LINKS = 50
+
+
+def _cpu_seconds(pid: int) -> float:
+    """The processor time of a process and of its children still running (the xacro worker)."""
+    def own(process: str) -> float:
+        fields = Path(f"/proc/{process}/stat").read_text().rsplit(")", 1)[1].split()
+        return (int(fields[11]) + int(fields[12])) / os.sysconf("SC_CLK_TCK")  # utime, stime
+
+    children = [p.name for p in Path("/proc").iterdir() if p.name.isdigit() and _parent(p.name) == pid]
+    return own(str(pid)) + sum(own(child) for child in children)
+
+
+def _parent(process: str) -> int | None:
+    try:
+        return int(Path(f"/proc/{process}/stat").read_text().rsplit(")", 1)[1].split()[1])
+    except (OSError, ValueError, IndexError):
+        return None
+
+
+async def _edit_latencies(model: Path, edits: int) -> tuple[list[float], float, float]:
+    """Seconds from each edit sent to the server until its diagnostics arrive, the
+    processor time the server and its xacro worker spent per edit, and the server's
+    resident memory at the end (MiB)."""
+    import asyncio
+
+    from lsprotocol import types
+    from pygls.lsp.client import LanguageClient
+    from pygls.uris import from_fs_path
+
+    client = LanguageClient("bench", "1")
+    arrived: dict[int, float] = {}
+    published = asyncio.Event()
+
+    @client.feature(types.TEXT_DOCUMENT_PUBLISH_DIAGNOSTICS)
+    def diagnostics(ls, params: types.PublishDiagnosticsParams) -> None:
+        arrived.setdefault(params.version or 0, time.perf_counter())
+        published.set()
+
+    async def wait_for(version: int) -> float:
+        while version not in arrived:
+            published.clear()
+            await asyncio.wait_for(published.wait(), 60)
+        return arrived[version]
+
+    await client.start_io(*urdfcli("lsp"), cwd=str(model.parent))
+    await client.initialize_async(types.InitializeParams(capabilities=types.ClientCapabilities(), process_id=os.getpid()))
+    client.initialized(types.InitializedParams())
+    uri, text = from_fs_path(str(model)), model.read_text()
+    client.text_document_did_open(types.DidOpenTextDocumentParams(types.TextDocumentItem(uri, "xml", 1, text)))
+    await wait_for(1)
+    latencies = []
+    pid = client._server.pid
+    cpu = _cpu_seconds(pid)
+    line = text[: text.index('<xacro:property name="mass" value="')].count("\n")
+    column = len('  <xacro:property name="mass" value="')
+    for version in range(2, edits + 2):
+        await asyncio.sleep(0.2)  # a pause between keystrokes: each edit is checked on its own
+        typed = types.Range(types.Position(line, column), types.Position(line, column + 3))
+        change = types.TextDocumentContentChangePartial(typed, f"1.{version % 10}")
+        sent = time.perf_counter()
+        client.text_document_did_change(types.DidChangeTextDocumentParams(types.VersionedTextDocumentIdentifier(version, uri), [change]))
+        latencies.append(await wait_for(version) - sent)
+    cpu = (_cpu_seconds(pid) - cpu) / edits
+    status = Path(f"/proc/{pid}/status").read_text()
+    rss = int(next(row.split()[1] for row in status.splitlines() if row.startswith("VmRSS:"))) / 1024
+    await client.shutdown_async(None)
+    client.exit(None)
+    await client.stop()
+    return latencies, cpu, rss
+
+
+def editor_cases(rows: list[Row]) -> None:
+    import asyncio
+
+    model = generate_macro_model(EDITOR_LINKS)
+    try:
+        latencies, cpu, rss = asyncio.run(_edit_latencies(model, EDITS))
+    except ImportError:
+        rows.append(Row("lsp: re-check after an edit", "pygls not installed (pip install -e '.[lsp]')", ""))
+        return
+    median, worst = statistics.median(latencies), max(latencies)
+    ours = f"median {_seconds(median)}, slowest {_seconds(worst)} ({len(latencies)} edits); processor {_seconds(cpu)} an edit; server {rss:.0f} MiB"
+    rows.append(Row(f"lsp: edit to published diagnostics, xacro model of {EDITOR_LINKS + 1} links", ours, "", target="median ≤ 150 ms", met=verdict(median <= 0.150)))
+
+
 def import_costs() -> str:
     """Where the start-up of ``urdfcli check SMALL`` goes, from ``python -X importtime``."""
     result = subprocess.run([sys.executable, "-X", "importtime", "-m", "urdfcli", "check", str(SMALL)], capture_output=True, text=True)
@@ -357,6 +447,7 @@ def main() -> int:
     corpus_cases(rows, check_urdf)
     small_file_cases(rows)
     xacro_cases(rows, check_urdf, xacro)
+    editor_cases(rows)
     if not QUICK:
         large_cases(rows, check_urdf)
     load = os.getloadavg()[0] if hasattr(os, "getloadavg") else None

@@ -1,5 +1,6 @@
 """The package's modules import each other in layers, shown by its folders:
-read -> model -> rules -> report -> project -> the library (api, session) -> cli,
+read -> model -> rules -> report -> project -> the library (api, session) -> the
+editor server (lsp) -> cli,
 each importing only those below it, and no module importing itself through others.
 
 Every import counts: at the top of a module, inside a function, and by name
@@ -18,7 +19,7 @@ import networkx as nx
 import urdfcli
 
 PACKAGE = Path(urdfcli.__file__).parent
-LAYERS = ("read", "model", "rules", "report", "project", "library", "cli")
+LAYERS = ("read", "model", "rules", "report", "project", "library", "lsp", "cli")
 FOUNDATION = ("urdfcli.diagnostics", "urdfcli.version")  # imported by every layer, importing none
 LIBRARY = ("urdfcli.api", "urdfcli.session")  # what a program calls; the command line is a shell over it
 ENTRY_POINTS = ("urdfcli", "urdfcli.__main__")

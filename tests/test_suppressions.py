@@ -152,3 +152,20 @@ def test_select_never_hides_malformed_xml(tmp_path):
     done = run_cli("lint", "--format", "concise", str(path))
     assert done.returncode == 1
     assert ": X001 error: " in done.stdout.decode()
+
+
+def test_a_comment_in_a_library_found_through_find_silences_and_is_not_called_unused(tmp_path):
+    """The library is named relative to the working folder by the diagnostics and
+    absolutely by the expansion's includes: one file all the same (no U001)."""
+    from ros_workspace import edit, make_repository
+
+    root = make_repository(tmp_path / "acme")
+    wheel = root / "common" / "urdf" / "wheel.xacro"
+    edit(wheel, '<axis xyz="0 0 1"/>', '<axis xyz="0 0 0"/>')
+    model = "description/urdf/rover.urdf.xacro"
+    done = run_cli("lint", "--format", "concise", model, cwd=root)
+    assert ": J007 error: " in done.stdout.decode()
+    edit(wheel, '<axis xyz="0 0 0"/>', '<!-- urdfcli: noqa: J007 -->\n      <axis xyz="0 0 0"/>')
+    for given in (model, str(root / model)):  # as a path relative to the working folder, and absolute (an editor's)
+        done = run_cli("lint", "--format", "concise", given, cwd=root)
+        assert ": J007 " not in done.stdout.decode() and ": U001 " not in done.stdout.decode()

@@ -40,10 +40,12 @@ class UsageError(Exception):
 
 class Run(NamedTuple):
     """The results of one run, in the order the inputs were given, and the one-line
-    reason for each input that could not be read."""
+    reason for each input that could not be read; ``models``: every model the run
+    checked, those a library was checked through included (an editor follows them)."""
 
     results: list[Result]
     unreadable: list[str]
+    models: tuple[Result, ...] = ()
 
 
 Progress = Callable[[int, int], None]  # (done, total)
@@ -134,7 +136,7 @@ def run(
     config_for = configured(session)
     try:
         if libraries:
-            entries = plan(paths, config_for, session.package_paths, session.packages)
+            entries = plan(paths, config_for, session.package_paths, session.packages, session.sources.data)
         else:
             entries = [_model_entry(path, config_for) for path in paths]
     except PackageError as error:
@@ -148,7 +150,7 @@ def run(
         return done[target]
 
     results, unreadable = assemble(entries, outcome)
-    return Run(results, unreadable)
+    return Run(results, unreadable, tuple(r for r in done.values() if isinstance(r, Result) and r.loaded is not None))
 
 
 def _model_entry(path: str, config_for):

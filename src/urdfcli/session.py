@@ -57,6 +57,13 @@ class Session:
         """The package look-up for one input: its configuration's package paths, then the session's."""
         return self.packages.resolver((*extra, *self.package_paths), input_file)
 
+    def forget(self) -> None:
+        """Forget what was learnt of the folders on disk (which configuration file and
+        which package is nearest, which packages a folder holds): after a change on
+        disk such as a ``git checkout``. Files are read again when they change anyway."""
+        self.configs.forget()
+        self.packages.forget()
+
     def close(self) -> None:
         """Stop the xacro worker and let go of what the session learnt."""
         self.expander.close()

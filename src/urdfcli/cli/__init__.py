@@ -16,7 +16,7 @@ import sys
 import typer
 
 from ..version import __version__
-from . import check, expand, graph, inertia, lint, rules, tree
+from . import check, expand, graph, inertia, lint, lsp, rules, tree
 from .common import CtrlC
 
 COMMANDS = {
@@ -28,6 +28,7 @@ COMMANDS = {
     "lint": lint.lint,
     "rules": rules.rules,
     "rule": rules.rule,
+    "lsp": lsp.lsp,
 }
 
 

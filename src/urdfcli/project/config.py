@@ -305,6 +305,11 @@ class Configurations:
         self._configs: dict[tuple[Path | None, int, int], Config] = {}
         self._folders: dict[str, Path | None] = {}  # an input's folder, as given -> its configuration file
 
+    def forget(self) -> None:
+        """Look for the nearest configuration file again (each file is read again anyway when it changes)."""
+        self._nearest.clear()
+        self._folders.clear()
+
     def for_input(self, file: str) -> Config:
         """The configuration of one input: none when isolated, the explicit file when
         given, else the nearest one above the input; with the command line's

@@ -67,11 +67,13 @@ def configure(loaded: Loaded, diagnostics: list[Diagnostic], config: Config, che
     if unreadable:
         found = []
     else:
-        files = {document.shown, *document.includes}
-        files |= {place.file for d in selected for place in (d.location, *d.location.trace)}
+        # each file once, named as the diagnostics name it (the includes are named absolutely)
+        named: dict[str, str] = {}
+        for file in [place.file for d in selected for place in (d.location, *d.location.trace)] + [document.shown, *document.includes]:
+            named.setdefault(suppressions.file_key(file), file)
         if document.may_suppress is False:  # told while its bytes were read
-            files.discard(document.shown)
-        texts = ((file, document.sources.text(file, containing=SUPPRESSION_MARK)) for file in sorted(files))
+            named.pop(suppressions.file_key(document.shown), None)
+        texts = ((file, document.sources.text(file, containing=SUPPRESSION_MARK)) for file in sorted(named.values()))
         found = [s for file, text in texts if text is not None for s in suppressions.parse(file, text)]
     written = document.origins.written() if found and document.origins is not None else None
     kept = suppressions.apply(selected, found, lambda code: ran(code, checks) and enabled(code, path), written)

@@ -19,6 +19,7 @@ filters diagnostics with them.
 from __future__ import annotations
 
 import bisect
+import os
 import re
 from typing import NamedTuple
 
@@ -56,7 +57,7 @@ class Suppression(NamedTuple):
 
     def covers(self, diagnostic: Diagnostic) -> bool:
         places = (diagnostic.location, *diagnostic.location.trace)
-        return any(place.file == self.file and self._inside(place.line, place.column) for place in places)
+        return any(same_file(place.file, self.file) and self._inside(place.line, place.column) for place in places)
 
     def took_part(self, written: dict[str, list[Position]] | None) -> bool:
         """Whether an element it covers was made (or a macro call it covers made one)
@@ -64,7 +65,8 @@ class Suppression(NamedTuple):
         branch it never takes, silenced nothing here but may elsewhere."""
         if written is None or self.regions is None:
             return True
-        return any(self._inside(line, column or None) for line, column in written.get(self.file, ()))
+        places = (place for file, found in written.items() if same_file(file, self.file) for place in found)
+        return any(self._inside(line, column or None) for line, column in places)
 
     def _inside(self, line: int | None, column: int | None) -> bool:
         if self.regions is None:
@@ -74,6 +76,16 @@ class Suppression(NamedTuple):
         if column is None:  # only the line is known: any line of the element
             return any(start[0] <= line <= end[0] for start, end in self.regions)
         return any(start <= (line, column) < end for start, end in self.regions)
+
+
+def file_key(file: str) -> str:
+    """A file as one name, however it is written: an included file is named relative to
+    the working folder by its locations and absolutely by the expansion's includes."""
+    return file if file.startswith("<") else os.path.abspath(file)
+
+
+def same_file(a: str, b: str) -> bool:
+    return a == b or file_key(a) == file_key(b)
 
 
 def parse(file: str, text: str) -> list[Suppression]:
@@ -134,9 +146,9 @@ def apply(diagnostics: list[Diagnostic], suppressions: list[Suppression], enable
     kept = []
     by_file: dict[str, list[Suppression]] = {}
     for suppression in suppressions:
-        by_file.setdefault(suppression.file, []).append(suppression)
+        by_file.setdefault(file_key(suppression.file), []).append(suppression)
     for diagnostic in diagnostics:
-        files = {diagnostic.file, *(call.file for call in diagnostic.location.trace)}
+        files = {file_key(diagnostic.file), *(file_key(call.file) for call in diagnostic.location.trace)}
         silenced = False
         for suppression in (s for f in files for s in by_file.get(f, ())):
             chosen = suppression.selecting(diagnostic.code)

@@ -66,10 +66,11 @@ def _parsed(data: bytes):
         return None
 
 
-def read_source(path: Path, data: bytes | None = None) -> Source:
-    """Read a file's kind and includes. Never raises: an unreadable file is a model."""
+def read_source(path: Path, data: bytes | None = None, read: Callable[[Path], bytes] = Path.read_bytes) -> Source:
+    """Read a file's kind and includes (its bytes: ``data``, else ``read(path)``). Never
+    raises: an unreadable file is a model."""
     try:
-        data = path.read_bytes() if data is None else data
+        data = read(path) if data is None else data
     except OSError:
         return Source(path, "model")
     named_xacro = path.name.endswith(".xacro")
@@ -229,8 +230,9 @@ class Index:
     """Sources read once each (the files of the folders searched, and any file an
     include leads to), and the includes between them."""
 
-    def __init__(self, package_paths: tuple[str, ...] = (), packages: PackageIndex | None = None):
+    def __init__(self, package_paths: tuple[str, ...] = (), packages: PackageIndex | None = None, read: Callable[[Path], bytes] = Path.read_bytes):
         self.sources: dict[Path, Source] = {}
+        self.read = read  # a file's bytes: an editor's unsaved text stands for the file
         self.scanned: dict[Path, list[Path]] = {}  # a searched folder -> its files
         self._package_paths = package_paths
         self.packages = packages if packages is not None else PackageIndex()
@@ -273,7 +275,7 @@ class Index:
 
     def source(self, file: Path) -> Source:
         if file not in self.sources:
-            self.sources[file] = read_source(file)
+            self.sources[file] = read_source(file, read=self.read)
         return self.sources[file]
 
     def includes(self, file: Path, arguments: dict[str, str] | None = None) -> list[Include]:
@@ -364,12 +366,15 @@ def model_targets(path: str, argument_sets: list[dict[str, str]] | None) -> list
     return [Target(path, tuple(arguments.items())) for arguments in (argument_sets or [{}])]
 
 
-def plan(paths: list[str], config_for, package_paths: tuple[str, ...] = (), packages: PackageIndex | None = None) -> list[Entry]:
+def plan(
+    paths: list[str], config_for, package_paths: tuple[str, ...] = (), packages: PackageIndex | None = None, read: Callable[[Path], bytes] = Path.read_bytes
+) -> list[Entry]:
     """What to run for the given files: each model once per argument set, each
     library through the models that may include it (none: on its own).
 
     ``config_for(path)`` gives the configuration of a file (for ``models`` and
-    package paths). Raises what ``config_for`` raises.
+    package paths); ``read(path)`` the bytes of a file (an editor's unsaved text
+    stands for it). Raises what ``config_for`` raises.
     """
     packages = packages if packages is not None else PackageIndex()
     entries: list[Entry] = []
@@ -378,8 +383,8 @@ def plan(paths: list[str], config_for, package_paths: tuple[str, ...] = (), pack
         config = config_for(path)
         # only a file named .xacro can be a library: a plain URDF is never read twice
         library = Path(path).resolve() if path != STDIN and path.endswith(".xacro") else None
-        if library is not None and read_source(library).kind == "library":  # else no look-up at all
-            index = index or Index(config.package_paths + package_paths, packages)
+        if library is not None and read_source(library, read=read).kind == "library":  # else no look-up at all
+            index = index or Index(config.package_paths + package_paths, packages, read)
             if index.kind(library) == "model":
                 library = None
         else:

@@ -53,6 +53,13 @@ class PackageIndex:
         self._enclosing: dict[Path, Path | None] = {}
         self._roots: dict[Path, list[Path]] = {}
 
+    def forget(self) -> None:
+        """Look at the folders again: packages added, moved or removed on disk (each
+        manifest is read again anyway when it changes)."""
+        self._scans.clear()
+        self._enclosing.clear()
+        self._roots.clear()
+
     def package_name(self, manifest: Path) -> str | None:
         """The ``<name>`` declared in a package.xml, or None when unreadable."""
         try:

@@ -298,8 +298,9 @@ class Sources:
         """The texts given (absolute path -> bytes), for a xacro expansion to read."""
         return dict(self._given)
 
-    def data(self, name: str) -> bytes:
+    def data(self, name: str | os.PathLike) -> bytes:
         """The bytes of a source: given, or read from its file now. Raises OSError."""
+        name = os.fspath(name)
         given = self._given.get(_key(name))
         return given if given is not None else Path(name).read_bytes()
 

@@ -1,0 +1,311 @@
+"""The editor server's work, without the protocol: one session for the server's
+lifetime, the editor's unsaved texts given to it, the checks, and what navigation
+and quick fixes need.
+
+Every method runs on one thread (the server's checking thread): the session and
+its caches are used from nowhere else. Paths are absolute.
+
+A check is :func:`urdfcli.api.run` on one file, as ``urdfcli lint`` runs it
+(configuration, ``noqa`` comments, a library checked through the models that
+include it), each diagnostic placed in the file it points into.
+"""
+
+from __future__ import annotations
+
+import os
+from collections.abc import Iterable
+from pathlib import Path
+from typing import NamedTuple
+
+from .. import api
+from ..diagnostics import Diagnostic, Location, Severity
+from ..project.config import ConfigError
+from ..project.workspace import resolve_include
+from ..read.document import STDIN
+from ..read.packages import PackageResolver
+from ..read.positions import Source
+from ..report import fixes
+from ..report.escape import escape
+from ..report.inertia import LinkReport
+from ..report.result import Result
+from ..rules import REGISTRY
+from ..session import Session
+from . import actions, navigation
+from .outline import Outline, encoded, outline
+from .places import Place, offset, offset_place, token_place
+
+CHECKS = "all"  # what `urdfcli lint` runs: an editor shows every rule the configuration selects
+
+
+class Mark(NamedTuple):
+    """A diagnostic placed in the file it points into, with the text to show."""
+
+    diagnostic: Diagnostic
+    place: Place
+    message: str
+    related: tuple[tuple[Place, str], ...] = ()
+
+
+class Checked(NamedTuple):
+    marks: dict[str, list[Mark]]  # file -> its diagnostics
+    reads: frozenset[str]  # the files the check read: a change to any calls for it again
+
+
+class Completion(NamedTuple):
+    item: navigation.Item
+    place: Place  # the text it replaces
+
+
+class Fix(NamedTuple):
+    title: str
+    edits: tuple[tuple[Place, str], ...]
+
+
+class Engine:
+    def __init__(self, package_paths: tuple[str, ...] = ()) -> None:
+        self.session = Session(package_paths)
+        self.texts: dict[str, str] = {}  # the editor's texts given to the session
+        self.runs: dict[str, api.Run] = {}  # each open file's last check
+        self._outlines: dict[str, tuple[str, Outline]] = {}  # file -> (text, its last well-formed outline)
+
+    # -- the editor's texts ---------------------------------------------------------
+    def sync(self, texts: dict[str, str]) -> None:
+        """Let the editor's texts stand for their files; a file no longer open is read from disk again."""
+        for path in [p for p in self.texts if p not in texts]:
+            self.session.sources.take_back(path)
+            del self.texts[path]
+            self.runs.pop(path, None)
+        for path, text in texts.items():
+            if self.texts.get(path) != text:
+                self.session.sources.give(path, encoded(text))
+                self.texts[path] = text
+
+    def forget(self) -> None:
+        """Something changed on disk (a checkout, a new package or configuration file)."""
+        self.session.forget()
+
+    def close(self) -> None:
+        self.session.close()
+
+    def warm(self) -> None:
+        """Start the xacro worker now, while the server has one thread, rather than at the first check."""
+        self.session.expander.expand(b'<robot name="warm" xmlns:xacro="http://www.ros.org/wiki/xacro"/>', None, {}, PackageResolver())
+
+    # -- checking -------------------------------------------------------------------
+    def check(self, path: str, texts: dict[str, str]) -> Checked:
+        """Check one open file with the editor's texts standing for their files."""
+        self.sync(texts)
+        try:
+            run = api.run([path], {}, CHECKS, self.session)
+        except api.UsageError as error:
+            self.runs.pop(path, None)
+            return Checked({path: [self._problem(path, f"urdfcli cannot check this file: {error}")]}, frozenset({path}))
+        except Exception as error:  # noqa: BLE001 - a bug of urdfcli's must not stop the server
+            self.runs.pop(path, None)
+            message = f"urdfcli internal error ({type(error).__name__}: {error}); please report this bug with the file"
+            return Checked({path: [self._problem(path, message)]}, frozenset({path}))
+        if path not in self.runs or any(m.robot is not None for m in run.models):
+            self.runs[path] = run  # navigation keeps the models of the last check that read any
+        marks: dict[str, list[Mark]] = {path: []}
+        for diagnostic, note in _labelled(run.results):
+            mark = self.mark(diagnostic, note)
+            marks.setdefault(mark.place.file, []).append(mark)
+        for reason in [*run.unreadable, *(n for r in run.results if r.library for n in r.library.notes)]:
+            marks[path].append(self._problem(path, reason, Severity.INFO))
+        return Checked(marks, frozenset({path, *_files(run.models)}))
+
+    def mark(self, diagnostic: Diagnostic, note: str = "") -> Mark:
+        location = diagnostic.location
+        file = _absolute(location.file)
+        message = escape(diagnostic.message) + note
+        line = location.line
+        if location.expanded:  # no place in the sources: said in the message
+            message += f" (line {line} of the xacro expansion)" if line else ""
+            line = None
+        if diagnostic.hint:
+            message += "\nhint: " + escape(diagnostic.hint)
+        related = tuple((self.place(_absolute(c.file), c.line, c.column), f"in macro '{escape(c.macro)}' called here") for c in location.trace)
+        return Mark(diagnostic, self.place(file, line, location.column if line else None), message, related)
+
+    def _problem(self, path: str, message: str, severity: Severity = Severity.ERROR) -> Mark:
+        """What is not a rule's diagnostic (an unusable configuration, a library's note), at the file's top."""
+        return Mark(Diagnostic("", message, Location(path), severity=severity), self.place(path, None, None), escape(message))
+
+    def place(self, file: str, line: int | None, column: int | None) -> Place:
+        return token_place(file, self.session.sources.source(file), line, column)
+
+    # -- navigation -----------------------------------------------------------------
+    def hover(self, path: str, line: int, character: int, texts: dict[str, str]) -> str | None:
+        source, at = self._at(path, line, character, texts)
+        return navigation.hover(source.text, at, self.scope(path))
+
+    def definition(self, path: str, line: int, character: int, texts: dict[str, str]) -> list[Place]:
+        source, at = self._at(path, line, character, texts)
+        return [self.place(_absolute(found.file), found.line, found.column) for found in navigation.definition(source.text, at, self.scope(path))]
+
+    def completion(self, path: str, line: int, character: int, texts: dict[str, str]) -> list[Completion]:
+        source, at = self._at(path, line, character, texts)
+        return [Completion(item, offset_place(path, source, item.start, item.end)) for item in navigation.completion(source.text, at, self.scope(path))]
+
+    def _at(self, path: str, line: int, character: int, texts: dict[str, str]) -> tuple[Source, int]:
+        """The text of ``path`` as the editor has it now, and the offset of a position in it."""
+        self.sync(texts)
+        source = self.session.sources.source(path) or Source("")
+        return source, offset(source, line, character)
+
+    def scope(self, path: str) -> navigation.Scope:
+        """What names the file shares: its outline, then those of the files it includes
+        (statically, and as its last check read them), then the models that include it."""
+        models = self._models_reading(path)
+        files = list(dict.fromkeys([path, *_files(models)]))
+        outlines: list[Outline] = []
+        for file in files:  # grows as includes are found
+            found = self.outline(file)
+            if found is None:
+                continue
+            outlines.append(found)
+            for include in found.includes:
+                target = self._file_named(file, include.value)
+                if target is not None and str(target) not in files:
+                    files.append(str(target))
+        links, joints = _named_places(models)
+        resolver = self._resolver(path)
+        return navigation.Scope(tuple(outlines), links, joints, resolver.find, lambda value: self._file_named(path, value))
+
+    def outline(self, file: str) -> Outline | None:
+        """The file's outline; while its text is not well-formed, the last one that was."""
+        source = self.session.sources.source(file)
+        if source is None:
+            return None
+        known = self._outlines.get(file)
+        if known is not None and known[0] is source.text:
+            return known[1]
+        found = outline(file, source.text)
+        if found is None:
+            return known[1] if known else None
+        self._outlines[file] = (source.text, found)
+        return found
+
+    def _models_reading(self, path: str) -> list[Result]:
+        """The models that the last checks of the open files expanded and that read
+        ``path`` (each once, the latest check's), those of its own check first."""
+        runs = [self.runs[path]] if path in self.runs else []
+        runs += [run for file, run in self.runs.items() if file != path]
+        found: dict[str, Result] = {}
+        for run in runs:
+            for model in run.models:
+                if path in _files([model]):
+                    found.setdefault(model.label, model)
+        return list(found.values())
+
+    def _resolver(self, file: str) -> PackageResolver:
+        try:
+            extra = self.session.configs.for_input(file).package_paths
+        except ConfigError:
+            extra = ()
+        try:
+            return self.session.resolver(extra, Path(file))
+        except ValueError:  # a package path that is no folder: checking says so
+            return PackageResolver((), Path(file), index=self.session.packages)
+
+    def _file_named(self, file: str, value: str) -> Path | None:
+        """The file an include's filename or a mesh's URI in ``file`` leads to."""
+        resolver = self._resolver(file)
+        if value.startswith(("package://", "file://")):
+            return resolver.resolve_uri(value, Path(file).parent)
+        found = self.outline(file)
+        if found is None:
+            return None
+        include = resolve_include(value, found.declared, resolver.find)
+        return Path(include.value) if include.kind == "path" else None
+
+    # -- quick fixes ------------------------------------------------------------------
+    def fixes(self, path: str, code: str, line: int, subjects: Iterable[str]) -> list[Fix]:
+        """The fixes of one diagnostic in ``path`` (its code, its 0-based line, the links it is about)."""
+        found = []
+        source = self.session.sources.source(path)
+        edit = actions.noqa(source, line + 1, code) if source is not None and code in REGISTRY else None
+        if edit is not None:
+            found.append(Fix(f"Silence {code} on this element (noqa comment)", ((offset_place(path, source, edit.start, edit.end), edit.text),)))
+        rule = REGISTRY.get(code)
+        if rule is not None and rule.inertial_fix:
+            found += [fix for link in subjects if (fix := self._inertial_fix(path, code, link)) is not None]
+        return found
+
+    def _inertial_fix(self, path: str, code: str, name: str) -> Fix | None:
+        """The ``<inertial>`` ``urdfcli inertia --suggest`` gives for a link, in place of the
+        one written; for one a macro call wrote, the call that gives those values. From
+        the first model whose audit finds ``code`` on that link."""
+        for model in self._models_reading(path):
+            audit = api.audit(model, self.session)
+            entry = next((e for e in audit.links if e.link.name == name), None) if audit is not None else None
+            if entry is not None and entry.link.inertial is not None and any(d.code == code for d in entry.problems):
+                return self._replacement(model, entry)
+        return None
+
+    def _replacement(self, model: Result, entry: LinkReport) -> Fix | None:
+        link = entry.link
+        loaded = model.loaded
+        suggested = fixes.suggestion(loaded, entry)
+        if "<inertial>" not in suggested:
+            return None  # the geometry cannot tell
+        use = fixes.macro_use(loaded, link)
+        if use is not None and use.called_at is not None:
+            file, _, line = use.called_at.rpartition(":")
+            call = fixes.matching_call(loaded, link, use, self.session.expander)
+            if call is not None:
+                title = f"Call {use.name} with the values the geometry of link '{link.name}' gives"
+            else:
+                title = f"Replace the call of {use.name} by the <inertial> of a uniform body filling the geometry of link '{link.name}'"
+            return self._replace(_absolute(file), int(line), f"<xacro:{use.name}", call or suggested, title)
+        where = loaded.document.locate(link.inertial.at)
+        if where.trace or not where.line or where.expanded:
+            return None  # written in a macro's body for every call: no one edit fixes this link alone
+        return self._replace(_absolute(where.file), where.line, "<inertial", suggested, f"Replace the <inertial> of link '{link.name}' by a uniform body filling its geometry")
+
+    def _replace(self, file: str, line: int, tag: str, replacement: str, title: str) -> Fix | None:
+        source = self.session.sources.source(file)
+        text = source.line(line) if source is not None else None
+        column = text.find(tag) + 1 if text is not None and tag in text else None
+        edit = actions.replace_element(source, line, column, replacement) if column else None
+        if edit is None:
+            return None
+        return Fix(escape(title), ((offset_place(file, source, edit.start, edit.end), edit.text),))
+
+
+def _absolute(file: str) -> str:
+    return file if file == STDIN else os.path.abspath(file)
+
+
+def _files(models: Iterable[Result]) -> list[str]:
+    """The models and every file their expansions read."""
+    return list(dict.fromkeys(_absolute(f) for model in models for f in (model.path, *model.includes)))
+
+
+def _named_places(models: Iterable[Result]) -> tuple[dict[str, tuple[Location, ...]], dict[str, tuple[Location, ...]]]:
+    """Each link and joint of the expanded models, where it was written (with its macro calls)."""
+    links: dict[str, tuple[Location, ...]] = {}
+    joints: dict[str, tuple[Location, ...]] = {}
+    for model in models:
+        robot, document = model.robot, model.loaded.document
+        if robot is None:
+            continue
+        for named, found in ((robot.links, links), (robot.joints, joints)):
+            for name, part in named.items():
+                location = document.locate(part.at)
+                found.setdefault(name, (location._replace(file=_absolute(location.file)),))
+    return links, joints
+
+
+def _labelled(results: list[Result]) -> list[tuple[Diagnostic, str]]:
+    """Each diagnostic once; for a model checked with several argument sets, one that
+    only some of them give says which."""
+    if len(results) == 1:
+        return [(d, "") for d in results[0].diagnostics]
+    given: dict[tuple, tuple[Diagnostic, list[str]]] = {}
+    for result in results:
+        arguments = " ".join(f"{k}:={v}" for k, v in result.arguments.items())
+        for diagnostic in result.diagnostics:
+            key = (diagnostic.code, diagnostic.location, diagnostic.message)
+            given.setdefault(key, (diagnostic, []))[1].append(arguments)
+    return [(d, "" if len(args) == len(results) else f" (with {'; '.join(escape(a) for a in args)})") for d, args in given.values()]
