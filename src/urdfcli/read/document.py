@@ -16,7 +16,7 @@ from pathlib import Path
 from typing import NamedTuple
 
 from ..diagnostics import Diagnostic, Location
-from . import positions
+from . import positions, xacro_warnings
 from .expanded import ExpansionError, Origins
 from .packages import PackageIndex, PackageResolver
 from .positions import Source, Sources
@@ -247,6 +247,6 @@ def read_document(
         document.missing_argument = error.missing_argument
         return document, [Diagnostic(error.code, error.message, location)]
     document = Document(path, result.text.encode("utf-8"), file, True, result.text, result.includes, result.origins, sources)
-    warnings = [Diagnostic("X005", text, origin.location() if origin is not None else Location(shown)) for text, origin in result.warnings]
+    warnings = [xacro_warnings.warning(text, origin.location() if origin is not None else Location(shown), sources) for text, origin in result.warnings]
     return document, warnings
 

@@ -1,0 +1,106 @@
+"""Rules on the package around a model: what its files use and its package.xml declares."""
+
+from __future__ import annotations
+
+import re
+from collections.abc import Iterator
+from pathlib import Path
+
+from ..diagnostics import Diagnostic, Location
+from ..read.xacro_scan import shown
+from .base import WARNING, check
+
+# what to declare for a package used at build time (an included file, a YAML file read
+# while expanding) and for one used at run time (a mesh, a texture, a parameter file)
+BUILD, RUN = "depend", "exec_depend"
+
+
+def _package_of(uri: str) -> str | None:
+    match = re.match(r"package://([^/]*)", uri)
+    return match.group(1) if match else None
+
+
+def _uses(loaded) -> Iterator[tuple[str, str, str, Location]]:
+    """(file, package, what to declare, where) for every package a file of the model
+    names with a plain name: the xacro sources read statically (conditions and
+    uncalled macros included), or a plain URDF's meshes and textures."""
+    sources = loaded.sources
+    if loaded.document.is_xacro:
+        for file in sources.files:
+            for use in file.packages:
+                if use.package and "$" not in use.package:
+                    line, column = file.position(use.place)
+                    yield file.name, use.package, RUN if use.when == "run" else BUILD, Location(file.name, line, column)
+    elif loaded.modelled:
+        for at, _, uri in loaded.robot.resources:
+            package = _package_of(uri)
+            if package:
+                location = loaded.document.locate(at)
+                yield location.file, package, RUN, location
+
+
+@check("P001", "package-dependency-undeclared", WARNING, "A file uses a package that its package.xml does not declare.", in_check=False, sources=True)
+def dependency_undeclared(loaded) -> Iterator[Diagnostic]:
+    """## What it does
+    For each file of the model that belongs to a package (a `package.xml` in
+    its folder or above), reads every `$(find NAME)`, `file://$(find NAME)` and
+    `package://NAME/` it writes, under `xacro:if` and `xacro:unless` too (a
+    condition does not install a package), and flags a package that is
+    neither the file's own nor declared in its `package.xml` as `depend`,
+    `exec_depend`, `build_export_depend`, `build_depend`, `test_depend` (or
+    format 1's `run_depend`). The hint gives the line to add: `<depend>` for a
+    file included or read while expanding, `<exec_depend>` for a mesh or any
+    other file used at run time. One diagnostic per file and package, at its
+    first use. A package named through a variable (`$(find ${pkg})`), and a
+    package that cannot be found at all (X004, D005 say so), are left alone.
+
+    ## Why is this bad?
+    It works where the package happens to be installed, and breaks in a fresh
+    workspace, on the build farm, in a Docker image: rosdep installs only the
+    dependencies a package declares.
+
+    ## Example
+    ```xml
+    <!-- my_robot/package.xml -->
+    <package format="3">
+      <name>my_robot</name>
+    </package>
+    <!-- my_robot/urdf/robot.urdf.xacro -->
+    <mesh filename="package://robot_meshes/meshes/arm.stl"/>
+    ```
+
+    ## Use instead
+    ```xml
+    <!-- my_robot/package.xml -->
+    <package format="3">
+      <name>my_robot</name>
+      <exec_depend>robot_meshes</exec_depend>
+    </package>
+    ```
+    """
+    index = loaded.resolver.index
+    reported: dict[tuple[str, str], list] = {}
+    for file, package, kind, location in _uses(loaded):
+        key = (file, package)
+        if key in reported:
+            reported[key][0] += 1
+            reported[key][1] = BUILD if BUILD in (kind, reported[key][1]) else RUN
+            continue
+        reported[key] = [0, kind, location]
+    for (file, package), (others, kind, location) in reported.items():
+        owner = index.enclosing_package(Path(file).resolve().parent) if not file.startswith("<") else None
+        manifest = index.manifest(owner / "package.xml") if owner is not None else None
+        if manifest is None or manifest.name in (None, package) or package in manifest.dependencies:
+            continue
+        if loaded.resolver.find(package) is None:
+            continue  # a package that cannot be found: X004 or D005
+        more = f" (and {others} more use{'s' if others > 1 else ''} in this file)" if others else ""
+        yield Diagnostic(
+            "P001",
+            f"package '{package}' is used here{more} but {manifest.name}'s package.xml does not declare it",
+            location,
+            hint=f"add <{kind}>{package}</{kind}> to {shown(owner / 'package.xml')}: rosdep installs only declared dependencies",
+        )
+
+
+__all__ = ["dependency_undeclared"]
