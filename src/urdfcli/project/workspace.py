@@ -330,9 +330,9 @@ def xacro_sources(document: Document, index: Index) -> XacroSources:
     """The xacro files behind a read document, for the source rules: those its
     expansion read (none for a plain URDF), then, when a rule asks, those its
     includes may reach and those of the repository or workspace around it."""
-    names = [document.shown, *(shown(file) for file in document.includes)] if document.is_xacro else []
-    files = [found for name in dict.fromkeys(names) if (found := index.scans.get(name)) is not None]
     start = document.file.resolve() if document.file is not None else None
+    names = [document.shown, *(shown(file) for file in _own(document, start, index))] if document.is_xacro else []
+    files = [found for name in dict.fromkeys(names) if (found := index.scans.get(name)) is not None]
 
     def scanned(paths: list[Path]) -> list[XacroFile]:
         return [found for path in paths if (found := index.xacro_file(path)) is not None]
@@ -350,6 +350,20 @@ def xacro_sources(document: Document, index: Index) -> XacroSources:
         return scanned(index.scan(*search_roots(start, index.packages)))
 
     return XacroSources(files, reach, around)
+
+def _own(document: Document, start: Path | None, index: Index) -> list[str]:
+    """The files a document's expansion included that belong to its repository or
+    workspace: the source rules say nothing of a package installed elsewhere."""
+    if start is None:
+        return []
+    roots, recursive = search_roots(start, index.packages)
+    inside = []
+    for file in document.includes:
+        folder = Path(file).resolve().parent
+        if any(folder == root or (recursive and root in folder.parents) for root in roots):
+            inside.append(file)
+    return inside
+
 
 class Target(NamedTuple):
     """One expansion to run: a model with an argument set, or a library on its own."""

@@ -301,7 +301,7 @@ class _Scanner:
             self.value(value, Place(at, name), macro, include=include and name == "filename")
 
     def value(self, text: str, place: Place, macro: int | None, include: bool = False) -> None:
-        if "$" not in text:
+        if "$" not in text and "package://" not in text:
             return
         for match in _PACKAGE_URI.finditer(text):
             self.found.packages.append(PackageUse(match.group(1), place._replace(offset=place.offset + match.start()), macro, "run"))
