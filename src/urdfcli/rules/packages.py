@@ -92,8 +92,9 @@ def dependency_undeclared(loaded) -> Iterator[Diagnostic]:
         manifest = index.manifest(owner / "package.xml") if owner is not None else None
         if manifest is None or manifest.name in (None, package) or package in manifest.dependencies:
             continue
-        if loaded.resolver.find(package) is None:
-            continue  # a package that cannot be found: X004 or D005
+        folder = loaded.resolver.find(package)
+        if folder is None or folder.resolve() == owner:
+            continue  # a package that cannot be found (X004 or D005 say so), or its own under another name (-P NAME=DIR)
         more = f" (and {others} more use{'s' if others > 1 else ''} in this file)" if others else ""
         yield Diagnostic(
             "P001",
