@@ -148,6 +148,26 @@ def make_repository(root: Path, config: bool = True) -> Path:
     return root
 
 
+def make_colcon_workspace(root: Path) -> tuple[Path, Path]:
+    """A colcon workspace ``root/ws/src`` of two repositories: repo_b's package
+    acme_wheels holds the wheel and inertia libraries, repo_a's acme_robot (declaring
+    no dependency) is empty. Returns (repo_a, repo_b)."""
+    src = root / "ws" / "src"
+    repo_a, repo_b = src / "repo_a", src / "repo_b"
+    for repo in (repo_a, repo_b):
+        (repo / ".git").mkdir(parents=True)
+    files = {
+        repo_b / "wheels" / "package.xml": package_xml("acme_wheels"),
+        repo_b / "wheels" / "urdf" / "wheel.xacro": WHEEL.replace("$(find acme_common)/urdf/inertia.xacro", "inertia.xacro"),
+        repo_b / "wheels" / "urdf" / "inertia.xacro": INERTIA,
+        repo_a / "robot" / "package.xml": package_xml("acme_robot"),
+    }
+    for path, text in files.items():
+        path.parent.mkdir(parents=True, exist_ok=True)
+        path.write_text(text)
+    return repo_a, repo_b
+
+
 def edit(path: Path, old: str, new: str) -> None:
     text = path.read_text()
     assert old in text, f"{old!r} not in {path}"

@@ -9,7 +9,7 @@ from pathlib import Path
 
 import pytest
 from conftest import run_cli
-from ros_workspace import INERTIA, WHEEL, XACRO, edit, line_of, make_repository, package_xml
+from ros_workspace import WHEEL, XACRO, edit, line_of, make_colcon_workspace, make_repository, package_xml
 
 from urdfcli.project.workspace import Index, read_source, resolve_include
 from urdfcli.read.packages import PackageIndex, PackageResolver
@@ -215,14 +215,7 @@ def test_a_library_its_models_include_only_with_an_argument_is_a_gap_the_models_
 
 
 def test_a_colcon_workspace_resolves_packages_across_repositories(tmp_path):
-    src = tmp_path / "ws" / "src"
-    repo_a, repo_b = src / "repo_a", src / "repo_b"
-    for repo in (repo_a, repo_b):
-        (repo / ".git").mkdir(parents=True)
-    write(repo_b / "wheels" / "package.xml", package_xml("acme_wheels"))
-    write(repo_b / "wheels" / "urdf" / "wheel.xacro", WHEEL.replace("$(find acme_common)/urdf/inertia.xacro", "inertia.xacro"))
-    write(repo_b / "wheels" / "urdf" / "inertia.xacro", INERTIA)
-    write(repo_a / "robot" / "package.xml", package_xml("acme_robot"))
+    repo_a, repo_b = make_colcon_workspace(tmp_path)
     model = write(
         repo_a / "robot" / "urdf" / "robot.urdf.xacro",
         f"""\

@@ -13,7 +13,7 @@ from pathlib import Path
 
 import pytest
 from conftest import require_tool, run_cli
-from ros_workspace import INERTIA, WHEEL, XACRO, edit, line_of, make_repository, package_xml
+from ros_workspace import XACRO, edit, line_of, make_colcon_workspace, make_repository, package_xml
 
 import urdfcli
 from urdfcli.project.config import Config
@@ -151,14 +151,7 @@ def test_a_plain_urdf_is_checked_through_its_meshes(packages):
 
 
 def test_a_package_of_another_repository_of_a_colcon_workspace(tmp_path):
-    src = tmp_path / "ws" / "src"
-    repo_a, repo_b = src / "repo_a", src / "repo_b"
-    for repo in (repo_a, repo_b):
-        (repo / ".git").mkdir(parents=True)
-    write(repo_b / "wheels" / "package.xml", package_xml("acme_wheels"))
-    write(repo_b / "wheels" / "urdf" / "wheel.xacro", WHEEL.replace("$(find acme_common)/urdf/inertia.xacro", "inertia.xacro"))
-    write(repo_b / "wheels" / "urdf" / "inertia.xacro", INERTIA)
-    write(repo_a / "robot" / "package.xml", package_xml("acme_robot"))
+    repo_a, repo_b = make_colcon_workspace(tmp_path)
     model = write(repo_a / "robot" / "urdf" / "robot.urdf.xacro", robot("""
         <xacro:include filename="$(find acme_wheels)/urdf/wheel.xacro"/>
         <link name="base_link"/>

@@ -43,7 +43,6 @@ class PackageIndex:
     manifest or folder that changes on disk is read again."""
 
     def __init__(self) -> None:
-        self._names: dict[tuple[str, int, int], str | None] = {}
         self._scans: dict[tuple[Path, int], list[tuple[str, Path]]] = {}
         self._enclosing: dict[Path, Path | None] = {}
         self._roots: dict[Path, list[Path]] = {}
@@ -51,14 +50,8 @@ class PackageIndex:
 
     def package_name(self, manifest: Path) -> str | None:
         """The ``<name>`` declared in a package.xml, or None when unreadable."""
-        try:
-            state = os.stat(manifest)
-        except OSError:
-            return None
-        key = (str(manifest), state.st_mtime_ns, state.st_size)
-        if key not in self._names:
-            self._names[key] = read_package_name(manifest)
-        return self._names[key]
+        read = self.manifest(manifest)
+        return read.name if read is not None else None
 
     def manifest(self, manifest: Path) -> Manifest | None:
         """What a package.xml declares (its name and dependencies), or None when unreadable."""
@@ -99,16 +92,6 @@ class PackageIndex:
 
 def _holds_package(folder: Path) -> Path | None:
     return folder if (folder / "package.xml").is_file() else None
-
-
-def read_package_name(manifest: Path) -> str | None:
-    """The ``<name>`` declared in a package.xml, or None when unreadable."""
-    try:
-        root = parse(manifest.read_bytes())
-    except (OSError, XmlError):
-        return None
-    name = root.findtext("name")
-    return name.strip() if name and name.strip() else None
 
 
 # The dependencies that make a package available where this one is built, run or

@@ -301,34 +301,22 @@ def macro_name_fixed(loaded) -> Iterator[Diagnostic]:
     ## Example
     ```xml
     <robot name="r" xmlns:xacro="http://www.ros.org/wiki/xacro">
-      <xacro:macro name="wheel" params="side y">
+      <xacro:macro name="wheel" params="side">
         <link name="wheel_link"/>
-        <joint name="${side}_wheel_joint" type="continuous">
-          <parent link="base_link"/>
-          <child link="wheel_link"/>
-          <origin xyz="0 ${y} 0"/>
-        </joint>
       </xacro:macro>
-      <link name="base_link"/>
-      <xacro:wheel side="left" y="0.2"/>
-      <xacro:wheel side="right" y="-0.2"/>
+      <xacro:wheel side="left"/>
+      <xacro:wheel side="right"/>
     </robot>
     ```
 
     ## Use instead
     ```xml
     <robot name="r" xmlns:xacro="http://www.ros.org/wiki/xacro">
-      <xacro:macro name="wheel" params="side y">
+      <xacro:macro name="wheel" params="side">
         <link name="${side}_wheel_link"/>
-        <joint name="${side}_wheel_joint" type="continuous">
-          <parent link="base_link"/>
-          <child link="${side}_wheel_link"/>
-          <origin xyz="0 ${y} 0"/>
-        </joint>
       </xacro:macro>
-      <link name="base_link"/>
-      <xacro:wheel side="left" y="0.2"/>
-      <xacro:wheel side="right" y="-0.2"/>
+      <xacro:wheel side="left"/>
+      <xacro:wheel side="right"/>
     </robot>
     ```
     """
