@@ -140,6 +140,21 @@ def test_its_own_package_a_variable_and_a_package_found_nowhere_draw_nothing(pac
     assert found(model, codes=("P001",)) == []
 
 
+def test_a_package_a_macro_parameter_names_is_judged_at_each_call_when_every_call_names_it(packages):
+    model = model_using(packages, """
+        <xacro:macro name="part" params="name pkg:=my_robot">
+          <link name="${name}"><visual><geometry><mesh filename="package://${pkg}/meshes/arm.stl"/></geometry></visual></link>
+        </xacro:macro>
+        <xacro:part name="base_link"/>
+        <xacro:part name="arm" pkg="acme_meshes"/>
+        <joint name="j" type="fixed"><parent link="base_link"/><child link="arm"/></joint>
+        """)
+    [warning] = diagnostics(model, "P001")
+    assert (warning.line, warning.column) == column_of(model, "acme_meshes", 'pkg="')  # the call that names it
+    edit(model, "<xacro:part name=\"base_link\"/>", "<xacro:property name=\"own\" value=\"my_robot\"/><xacro:part name=\"base_link\" pkg=\"${own}\"/>")
+    assert diagnostics(model, "P001") == []  # one call computes it: nothing is certain
+
+
 def test_a_plain_urdf_is_checked_through_its_meshes(packages):
     model = write(packages / "my_robot" / "urdf" / "robot.urdf", """\
         <robot name="r">

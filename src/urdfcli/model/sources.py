@@ -13,11 +13,12 @@ finding must be certain.
 
 from __future__ import annotations
 
+import re
 from collections.abc import Callable, Iterable
 from functools import cached_property
 from typing import NamedTuple
 
-from ..read.xacro_scan import Parameter, XacroFile, XacroGlobals, free_names, literal_calls, macro_parameters, xacro_globals
+from ..read.xacro_scan import Parameter, Place, XacroFile, XacroGlobals, free_names, literal_calls, macro_parameters, xacro_globals
 
 
 class Facts(NamedTuple):
@@ -129,6 +130,7 @@ class MacroCall(NamedTuple):
     file: XacroFile
     macro: int | None  # the macro whose body holds the call (None: the top level)
     attributes: dict[str, str]
+    place: Place
 
 
 class XacroSources:
@@ -189,7 +191,26 @@ class XacroSources:
         found: dict[str, list[MacroCall]] = {}
         for file in self.universe:
             for call in file.calls:
-                found.setdefault(call.name.rpartition(".")[2], []).append(MacroCall(file, call.macro, dict(call.attributes)))
+                found.setdefault(call.name.rpartition(".")[2], []).append(MacroCall(file, call.macro, dict(call.attributes), call.place))
+        return found
+
+    def given_by_calls(self, file: XacroFile, macro: int, name: str) -> list[tuple[str, XacroFile, Place]] | None:
+        """The plain values every call of a macro gives its parameter ``name`` (its
+        default where a call gives none), each with the file and place it is written
+        in; None when a call gives an expression, or nothing calls the macro."""
+        parameter = next((p for p in parameters(file, macro) if p.name == name and not p.block), None)
+        calls = self.calls(file.macros[macro].name)
+        if parameter is None or not calls:
+            return None
+        found = []
+        for call in calls:
+            if name in call.attributes:
+                value, where = call.attributes[name], (call.file, call.place._replace(within=name))
+            else:
+                value, where = parameter.default, (file, parameter_place(file, macro, name))
+            if value is None or "$" in value or parameter.forward:
+                return None
+            found.append((value.strip("'"), *where))
         return found
 
     def defined_for_calls(self, file: XacroFile, macro: int, name: str, visiting: frozenset = frozenset()) -> bool:
@@ -212,6 +233,13 @@ class XacroSources:
         return True
 
 
+def parameter_place(file: XacroFile, macro: int, name: str) -> Place:
+    """Where a parameter is written in its macro's params attribute."""
+    place = file.macros[macro].place
+    found = re.search(rf"(?<![\w*])\*{{0,2}}{re.escape(name)}(?![\w])", file.macros[macro].params)
+    return Place(place.element, "params", found.start() if found else 0)
+
+
 def _unique(files: list[XacroFile]) -> list[XacroFile]:
     seen, found = set(), []
     for file in files:
@@ -221,4 +249,4 @@ def _unique(files: list[XacroFile]) -> list[XacroFile]:
     return found
 
 
-__all__ = ["Facts", "MacroCall", "XacroSources", "bound", "chain", "file_facts", "merged", "parameters"]
+__all__ = ["Facts", "MacroCall", "XacroSources", "bound", "chain", "file_facts", "merged", "parameter_place", "parameters"]

@@ -17,7 +17,7 @@ import re
 from collections.abc import Iterator
 
 from ..diagnostics import Diagnostic, Location
-from ..model.sources import XacroSources, bound, parameters
+from ..model.sources import XacroSources, bound, parameter_place, parameters
 from ..read.xacro_scan import Place, XacroFile, free_names
 from .base import ERROR, INFO, WARNING, check
 from .suggestions import close_matches
@@ -125,14 +125,6 @@ def property_unused(loaded) -> Iterator[Diagnostic]:
             yield _diagnostic("X102", f"property '{name}' is used nowhere", file, definition.place, f"use it as ${{{name}}}, or remove it")
 
 
-def _parameter_place(file: XacroFile, macro: int, name: str) -> Place:
-    """Where a parameter is written in its macro's params attribute."""
-    place = file.macros[macro].place
-    params = file.macros[macro].params
-    found = re.search(rf"(?<![\w*])\*{{0,2}}{re.escape(name)}(?![\w])", params)
-    return Place(place.element, "params", found.start() if found else 0)
-
-
 def _read_in_body(file: XacroFile, macro: int, name: str) -> bool:
     for expression in file.expressions:
         if file.within(expression.macro, macro):
@@ -207,7 +199,7 @@ def parameter_unused(loaded) -> Iterator[Diagnostic]:
                 else:
                     message = f"parameter '{name}' of macro '{definition.name}' is never used in its body: the value each call gives changes nothing"
                     hint = f"use it as ${{{name}}}, or remove it from params"
-                yield _diagnostic("X103", message, file, _parameter_place(file, macro, name), hint)
+                yield _diagnostic("X103", message, file, parameter_place(file, macro, name), hint)
 
 
 @check("X104", "macro-unused", INFO, "A macro that nothing calls.", in_check=False, sources=True)
