@@ -12,11 +12,13 @@ import textwrap
 from pathlib import Path
 
 import pytest
+import xacro
 from conftest import require_tool, run_cli
 from ros_workspace import XACRO, edit, line_of, make_colcon_workspace, make_repository, package_xml
 
 import urdfcli
 from urdfcli.project.config import Config
+from urdfcli.read.xacro_scan import macro_parameters
 
 SOURCE_CODES = ("P001", "X101", "X102", "X103", "X104", "X105", "X106", "X107")
 
@@ -412,6 +414,30 @@ def test_the_undefined_names_are_those_xacro_cannot_evaluate(tmp_path):
         xacro = subprocess.run([require_tool("xacro"), str(model)], capture_output=True, text=True)
         failed += [name] if xacro.returncode != 0 and f"name '{name}' is not defined" in xacro.stderr else []
     assert flagged == failed == ["undefined_thing", "Pi"]
+
+
+@pytest.mark.parametrize("params", [
+    "prefix parent *origin **content",
+    "x:=1 y:=^ z:=^|d w:=${a * 2} v:='a b' u:=\"c d\" t:=$(arg t)",
+    "\n    name\n    tf_prefix\n    initial_positions:=${dict(a=0.0,b=-1.57)}\n    keep_alive_count:=2",
+    "a= b:=1 c",
+])
+def test_macro_parameters_are_split_as_xacro_splits_them(params):
+    expected, rest = [], params
+    while rest and rest.strip():
+        name, value, rest = xacro.parse_macro_arg(rest)
+        forward, default = value if value is not None else (None, None)
+        expected.append((name.lstrip("*"), name.startswith("*"), default, forward is not None))
+    assert [tuple(p) for p in macro_parameters(params)] == expected
+
+
+def test_the_names_xacro_provides_come_from_xacro_in_the_worker():
+    from urdfcli.session import Session
+
+    with Session() as session:
+        names = session.expander.global_names()
+    assert {"pi", "radians", "load_yaml", "xacro", "python", "math", "cos"} <= names.names
+    assert {"load_yaml", "arg"} <= names.members["xacro"] and "vars" not in names.members["python"]  # as the guard leaves them
 
 
 # -- X107, X005: what xacro does not read, and its warnings ------------------------------

@@ -237,7 +237,7 @@ def check_target(target: Target, mappings: dict[str, str], checks: str, session:
             if target.unchecked:
                 found.append(unchecked_library(path, target.unchecked))
             loaded = Loaded(document, diagnostics=found, resolver=resolver, meshes=session.meshes)
-            loaded.sources = xacro_sources(document, session.index)
+            loaded.sources = xacro_sources(document, session.index, session.expander.global_names)
             diagnostics = linter.lint(loaded, config, checks)
             return Result(path, diagnostics, None, dict(target.arguments), includes=tuple(document.includes))
         loaded = load(path, session.inputs, resolver, arguments, vocabulary=checks == "all", meshes=session.meshes)
@@ -246,7 +246,7 @@ def check_target(target: Target, mappings: dict[str, str], checks: str, session:
     except PackageError as error:
         raise UsageError(str(error)) from None
     document = loaded.document
-    loaded.sources = xacro_sources(document, session.index)
+    loaded.sources = xacro_sources(document, session.index, session.expander.global_names)
     if document.missing_argument is not None:
         loaded.diagnostics = [needs_argument(d, document.missing_argument, path) if d.code == "X003" else d for d in loaded.diagnostics]
     diagnostics = linter.lint(loaded, config, checks)

@@ -18,7 +18,7 @@ from collections.abc import Callable, Iterable
 from functools import cached_property
 from typing import NamedTuple
 
-from ..read.xacro_scan import Parameter, Place, XacroFile, XacroGlobals, free_names, literal_calls, macro_parameters, xacro_globals
+from ..read.xacro_scan import Parameter, Place, XacroFile, XacroGlobals, free_names, literal_calls, macro_parameters
 
 
 class Facts(NamedTuple):
@@ -141,11 +141,16 @@ class XacroSources:
     where to look)."""
 
     def __init__(
-        self, files: list[XacroFile], reach: Callable[[], tuple[list[XacroFile], bool]], around: Callable[[], list[XacroFile]],
+        self,
+        files: list[XacroFile],
+        reach: Callable[[], tuple[list[XacroFile], bool]],
+        around: Callable[[], list[XacroFile]],
+        xacro: Callable[[], XacroGlobals | None] = lambda: None,
     ) -> None:
         self.files = files
         self._reach = reach
         self._around = around
+        self._xacro = xacro
 
     @cached_property
     def _reached(self) -> tuple[list[XacroFile], bool]:
@@ -178,9 +183,10 @@ class XacroSources:
         """What the universe reads and defines."""
         return merged(file_facts(f) for f in self.universe)
 
-    @property
-    def xacro(self) -> XacroGlobals:
-        return xacro_globals()
+    @cached_property
+    def xacro(self) -> XacroGlobals | None:
+        """The names xacro gives every expression (None when they cannot be known)."""
+        return self._xacro()
 
     def calls(self, name: str) -> list[MacroCall]:
         """Every call of macro ``name`` in the universe."""

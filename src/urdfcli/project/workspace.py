@@ -35,7 +35,7 @@ from ..diagnostics import Diagnostic, Location, Severity
 from ..model.sources import XacroSources
 from ..read.document import STDIN, Document
 from ..read.packages import MAX_SCAN_DIRS, SKIP_DIRS, PackageIndex, PackageResolver
-from ..read.xacro_scan import Scans, XacroFile, scan, shown
+from ..read.xacro_scan import Scans, XacroFile, XacroGlobals, scan, shown
 from ..report.result import Library, Result
 
 XACRO_SUFFIXES = (".xacro", ".urdf")
@@ -326,7 +326,7 @@ class Index:
         return False
 
 
-def xacro_sources(document: Document, index: Index) -> XacroSources:
+def xacro_sources(document: Document, index: Index, xacro_names: Callable[[], XacroGlobals | None] = lambda: None) -> XacroSources:
     """The xacro files behind a read document, for the source rules: those its
     expansion read (none for a plain URDF), then, when a rule asks, those its
     includes may reach and those of the repository or workspace around it."""
@@ -349,7 +349,7 @@ def xacro_sources(document: Document, index: Index) -> XacroSources:
             return []
         return scanned(index.scan(*search_roots(start, index.packages)))
 
-    return XacroSources(files, reach, around)
+    return XacroSources(files, reach, around, xacro_names)
 
 def _own(document: Document, start: Path | None, index: Index) -> list[str]:
     """The files a document's expansion included that belong to its repository or

@@ -106,6 +106,12 @@ class Manifest(NamedTuple):
     dependencies: frozenset[str]
 
 
+def read_package_name(manifest: Path) -> str | None:
+    """The ``<name>`` declared in a package.xml, or None when unreadable."""
+    read = read_manifest(manifest)
+    return read.name if read is not None else None
+
+
 def read_manifest(manifest: Path) -> Manifest | None:
     """What a package.xml declares, or None when it cannot be read."""
     try:

@@ -10,9 +10,9 @@ written inside macros, the packages it names (``$(find pkg)``,
 them counts. A place is kept as (element, attribute, offset) and turned into a
 line and column only when a diagnostic needs one (:meth:`XacroFile.position`).
 
-What xacro itself provides (``pi``, ``radians``, ``xacro.load_yaml``...) and
-how it splits a macro's ``params`` come from the real xacro package
-(:func:`xacro_globals`, :func:`macro_parameters`), imported only when asked.
+What xacro itself provides (``pi``, ``radians``, ``xacro.load_yaml``...) is read
+from the real xacro package, in the worker that runs it (:class:`XacroGlobals`);
+a macro's ``params`` are split with xacro's own grammar (:func:`macro_parameters`).
 """
 
 from __future__ import annotations
@@ -464,36 +464,36 @@ class Parameter(NamedTuple):
     forward: bool  # ``name:=^``: taken from the caller's scope
 
 
+# xacro's grammar of a macro's params (xacro/__init__.py, re_macro_arg and parse_macro_arg),
+# repeated here so that only the worker imports xacro; tests compare the two.
+_DEFAULT = r"""\$\{.*?\}|\$\(.*?\)|(?:'.*?'|\".*?\"|[^\s'\"]+)+|"""
+_MACRO_PARAMETER = re.compile(r"^\s*([^\s:=]+?)\s*:?=\s*(\^\|?)?(" + _DEFAULT + r")(?:\s+|$)(.*)")
+
+
 @functools.lru_cache(maxsize=1024)
 def macro_parameters(params: str) -> tuple[Parameter, ...]:
-    """A macro's ``params`` split as xacro splits them (``xacro.parse_macro_arg``)."""
-    import xacro  # the real rules for defaults, ^ and blocks
-
+    """A macro's ``params`` split as xacro splits them."""
     found = []
     rest = params
     while rest and rest.strip():
-        try:
-            param, value, rest = xacro.parse_macro_arg(rest)
-        except Exception:  # xacro refuses the macro when it is defined: loading says so
-            break
-        forward, default = value if value is not None else (None, None)
-        found.append(Parameter(param.lstrip("*"), param.startswith("*"), default, forward is not None))
+        match = _MACRO_PARAMETER.match(rest)
+        if match:
+            param, forward, default, rest = match.groups()
+            found.append(Parameter(param.lstrip("*"), param.startswith("*"), default or None, bool(forward)))
+        else:  # no default
+            param, *more = rest.lstrip().split(None, 1)
+            rest = more[0] if more else ""
+            found.append(Parameter(param.lstrip("*"), param.startswith("*"), None, False))
     return tuple(found)
 
 
 class XacroGlobals(NamedTuple):
-    names: frozenset[str]  # usable directly: pi, radians, load_yaml, xacro, python, math...
-    members: dict[str, frozenset[str]]  # a namespace's members: xacro -> load_yaml, arg...
+    """The names xacro puts in every expression's scope (pi, radians, load_yaml, xacro,
+    python, math...), and each namespace's members; read from xacro in the worker
+    (:meth:`urdfcli.read.xacro.Expander.global_names`)."""
 
-
-@functools.lru_cache(maxsize=1)
-def xacro_globals() -> XacroGlobals:
-    """The names xacro puts in every expression's scope, from its own table."""
-    import xacro
-
-    table = xacro._global_symbols
-    members = {name: frozenset(value) for name, value in table.items() if isinstance(value, dict)}
-    return XacroGlobals(frozenset(table), members)
+    names: frozenset[str]
+    members: dict[str, frozenset[str]]
 
 
 # -- a session's scans ---------------------------------------------------------------

@@ -382,7 +382,6 @@ def name_undefined(loaded) -> Iterator[Diagnostic]:
     ```
     """
     sources = loaded.sources
-    builtins = sources.xacro.names
     failed = {(d.path, d.line) for d in loaded.diagnostics if d.code == "X003"}
     for file in sources.files:
         for expression in file.expressions:
@@ -390,7 +389,12 @@ def name_undefined(loaded) -> Iterator[Diagnostic]:
                 continue
             for name in free_names(expression.text) or ():
                 known = bound(file, expression.macro)
-                if name.name in known or name.name in builtins:
+                if name.name in known:
+                    continue
+                if sources.xacro is None:
+                    return  # without xacro's own names, any name may be one of them
+                builtins = sources.xacro.names
+                if name.name in builtins:
                     continue
                 if _used(sources, lambda f: f.any_global or name.name in f.globals):
                     continue
