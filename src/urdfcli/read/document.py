@@ -21,6 +21,7 @@ from .expanded import ExpansionError, Origins
 from .packages import PackageIndex, PackageResolver
 from .positions import Source, Sources
 from .xacro import Expander
+from .xacro_scan import XACRO_NAMESPACES
 from .xml import Element, XmlError, parse
 
 NAMED = {"link", "joint", "material", "transmission", "gazebo"}
@@ -154,7 +155,6 @@ class Document:
 
 
 # -- reading an input ---------------------------------------------------------------
-XACRO_NAMESPACES = {"http://www.ros.org/wiki/xacro", "http://ros.org/wiki/xacro", "http://wiki.ros.org/xacro"}
 STDIN = "-"
 
 

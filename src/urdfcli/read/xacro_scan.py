@@ -26,6 +26,7 @@ from functools import cached_property
 from pathlib import Path
 from typing import NamedTuple
 
+from .expanded import display_path
 from .positions import Source, decode
 from .xml import XmlError, parse
 
@@ -529,9 +530,4 @@ def _stamp(path: str) -> tuple[int, int]:
 
 def shown(path: Path | str) -> str:
     """A path as diagnostics name files: relative to the working directory when below it."""
-    path = str(path)
-    try:
-        relative = os.path.relpath(path)
-    except ValueError:
-        return path
-    return path if relative.startswith("..") else relative
+    return display_path(str(path))
