@@ -10,12 +10,14 @@ from pathlib import Path
 XACRO = 'xmlns:xacro="http://www.ros.org/wiki/xacro"'
 
 
-def package_xml(name: str) -> str:
+def package_xml(name: str, depends: tuple[str, ...] = ()) -> str:
     return (
         '<?xml version="1.0"?>\n<package format="3">\n'
         f"  <name>{name}</name>\n  <version>0.1.0</version>\n  <description>{name}</description>\n"
         '  <maintainer email="dev@example.invalid">dev</maintainer>\n  <license>BSD</license>\n'
-        "  <buildtool_depend>ament_cmake</buildtool_depend>\n</package>\n"
+        "  <buildtool_depend>ament_cmake</buildtool_depend>\n"
+        + "".join(f"  <depend>{depend}</depend>\n" for depend in depends)
+        + "</package>\n"
     )
 
 
@@ -69,7 +71,10 @@ SENSOR = f"""<?xml version="1.0"?>
 <robot {XACRO}>
   <xacro:property name="sensor_size" value="0.05"/>
   <xacro:macro name="sensor" params="parent">
-    <link name="sensor_link"/>
+    <link name="sensor_link">
+      <visual><geometry><box size="${{sensor_size}} ${{sensor_size}} ${{sensor_size}}"/></geometry></visual>
+    </link>
+    <joint name="sensor_joint" type="fixed"><parent link="${{parent}}"/><child link="sensor_link"/></joint>
   </xacro:macro>
 </robot>
 """
@@ -129,7 +134,7 @@ def make_repository(root: Path, config: bool = True) -> Path:
         "common/urdf/inertia.xacro": INERTIA,
         "common/urdf/wheel.xacro": WHEEL,
         "common/urdf/sensor.xacro": SENSOR,
-        "description/package.xml": package_xml("acme_rover_description"),
+        "description/package.xml": package_xml("acme_rover_description", depends=("acme_common",)),
         "description/urdf/rover.urdf.xacro": ROVER,
         "description/urdf/arm.urdf.xacro": ARM,
         "description/README.md": "# acme rover\n",
@@ -141,6 +146,26 @@ def make_repository(root: Path, config: bool = True) -> Path:
         path.parent.mkdir(parents=True, exist_ok=True)
         path.write_text(text)
     return root
+
+
+def make_colcon_workspace(root: Path) -> tuple[Path, Path]:
+    """A colcon workspace ``root/ws/src`` of two repositories: repo_b's package
+    acme_wheels holds the wheel and inertia libraries, repo_a's acme_robot (declaring
+    no dependency) is empty. Returns (repo_a, repo_b)."""
+    src = root / "ws" / "src"
+    repo_a, repo_b = src / "repo_a", src / "repo_b"
+    for repo in (repo_a, repo_b):
+        (repo / ".git").mkdir(parents=True)
+    files = {
+        repo_b / "wheels" / "package.xml": package_xml("acme_wheels"),
+        repo_b / "wheels" / "urdf" / "wheel.xacro": WHEEL.replace("$(find acme_common)/urdf/inertia.xacro", "inertia.xacro"),
+        repo_b / "wheels" / "urdf" / "inertia.xacro": INERTIA,
+        repo_a / "robot" / "package.xml": package_xml("acme_robot"),
+    }
+    for path, text in files.items():
+        path.parent.mkdir(parents=True, exist_ok=True)
+        path.write_text(text)
+    return repo_a, repo_b
 
 
 def edit(path: Path, old: str, new: str) -> None:

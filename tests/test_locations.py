@@ -260,7 +260,7 @@ def test_xacro_warnings_name_the_element_that_caused_them(tmp_path):
     report = json.loads(run("check", "top.urdf.xacro", "--format", "json", cwd=tmp_path).stdout)
     (warning,) = [d for d in report["files"][0]["diagnostics"] if d["code"] == "X005"]
     assert "range() directly is deprecated" in warning["message"]
-    assert (warning["path"], warning["line"], warning["column"]) == ("inc.xacro", 4, 15)
+    assert (warning["path"], warning["line"], warning["column"]) == ("inc.xacro", 4, 34)  # the deprecated call itself, range(
     assert warning["trace"] == [{"path": "top.urdf.xacro", "line": 3, "column": 3, "macro": "m"}]
 
 
@@ -282,7 +282,7 @@ def test_what_a_lazy_property_reports_is_located_at_its_definition(tmp_path):
     (tmp_path / "fails.urdf.xacro").write_text(model.replace("VALUE", "missing"))
     report = json.loads(run("check", "warns.urdf.xacro", "fails.urdf.xacro", "--format", "json", cwd=tmp_path).stdout)
     (warning,), (error,) = (file["diagnostics"] for file in report["files"])
-    assert (warning["code"], warning["path"], warning["line"], warning["column"], warning["trace"]) == ("X005", "warns.urdf.xacro", 2, 3, [])
+    assert (warning["code"], warning["path"], warning["line"], warning["column"], warning["trace"]) == ("X005", "warns.urdf.xacro", 2, 41, [])
     assert "range() directly is deprecated" in warning["message"]
     assert (error["code"], error["path"], error["line"], error["column"]) == ("X003", "fails.urdf.xacro", 4, 5)
     assert "name 'missing' is not defined" in error["message"]

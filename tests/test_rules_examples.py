@@ -17,8 +17,9 @@ from urdfcli.rules import REGISTRY, example_code
 
 ROBOT_CHILDREN = {"link", "joint", "material", "gazebo", "transmission"}
 # X006 is about a library and the models of its repository that include it: its Example and
-# Use instead are a pyproject.toml, tested in tests/test_workspace.py.
-NEEDS_A_REPOSITORY = {"X006"}
+# Use instead are a pyproject.toml, tested in tests/test_workspace.py. P001 is about a package.xml
+# and the files of its package: tested in tests/test_xacro_sources.py.
+NEEDS_A_REPOSITORY = {"X006", "P001"}
 RULES = sorted((r for r in REGISTRY.values() if r.code not in NEEDS_A_REPOSITORY), key=lambda r: r.code)
 
 

@@ -76,14 +76,14 @@ def test_each_package_is_looked_up_once_found_or_not(tmp_path, monkeypatch):
     sibling.mkdir()
     (sibling / "package.xml").write_text("<package><name>sibling</name></package>")
     parsed = []
-    real = packages.read_package_name
-    monkeypatch.setattr(packages, "read_package_name", lambda manifest: parsed.append(manifest) or real(manifest))
+    real = packages.read_manifest
+    monkeypatch.setattr(packages, "read_manifest", lambda manifest: parsed.append(manifest) or real(manifest))
     resolver = PackageResolver((), own / "urdf" / "robot.urdf", env={})
     for _ in range(3):
         assert resolver.find("missing") is None
         assert resolver.find("sibling") == sibling
         assert resolver.find("own") == own
-    assert len(parsed) == len(set(parsed))  # no manifest read twice
+    assert parsed and len(parsed) == len(set(parsed))  # no manifest read twice
 
 
 @pytest.mark.parametrize("command", ["check", "expand"])

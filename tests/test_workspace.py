@@ -9,7 +9,7 @@ from pathlib import Path
 
 import pytest
 from conftest import run_cli
-from ros_workspace import INERTIA, WHEEL, XACRO, edit, line_of, make_repository, package_xml
+from ros_workspace import WHEEL, XACRO, edit, line_of, make_colcon_workspace, make_repository, package_xml
 
 from urdfcli.project.workspace import Index, read_source, resolve_include
 from urdfcli.read.packages import PackageIndex, PackageResolver
@@ -140,7 +140,8 @@ def test_an_unused_library_is_expanded_alone_and_named_once(repository):
     done = run_cli("lint", "common/urdf/sensor.xacro", cwd=repository)
     err = done.stdout.decode()  # lint reports on standard output
     assert done.returncode == 0, err
-    assert err.count("sensor.xacro") == 1 and "no model includes" in err
+    assert err.count("sensor.xacro: a xacro library") == 1 and "no model includes" in err
+    assert "X104 info: macro 'sensor' is called nowhere" in err  # a library's macro nothing calls is only noted
     edit(repository / "common/urdf/sensor.xacro", '<xacro:property name="sensor_size" value="0.05"/>', '<xacro:include filename="camera.xacro"/>')
     done, report = check_json("common/urdf/sensor.xacro", cwd=repository)
     assert done.returncode == 1
@@ -214,14 +215,7 @@ def test_a_library_its_models_include_only_with_an_argument_is_a_gap_the_models_
 
 
 def test_a_colcon_workspace_resolves_packages_across_repositories(tmp_path):
-    src = tmp_path / "ws" / "src"
-    repo_a, repo_b = src / "repo_a", src / "repo_b"
-    for repo in (repo_a, repo_b):
-        (repo / ".git").mkdir(parents=True)
-    write(repo_b / "wheels" / "package.xml", package_xml("acme_wheels"))
-    write(repo_b / "wheels" / "urdf" / "wheel.xacro", WHEEL.replace("$(find acme_common)/urdf/inertia.xacro", "inertia.xacro"))
-    write(repo_b / "wheels" / "urdf" / "inertia.xacro", INERTIA)
-    write(repo_a / "robot" / "package.xml", package_xml("acme_robot"))
+    repo_a, repo_b = make_colcon_workspace(tmp_path)
     model = write(
         repo_a / "robot" / "urdf" / "robot.urdf.xacro",
         f"""\

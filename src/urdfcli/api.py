@@ -25,7 +25,7 @@ from .model import massprops
 from .model.load import Loaded, load
 from .project import linter
 from .project.config import Config, ConfigError
-from .project.workspace import Target, assemble, model_targets, models_below, plan, unchecked_library
+from .project.workspace import Target, assemble, model_targets, models_below, plan, unchecked_library, xacro_sources
 from .read.document import STDIN, InputError, read_document
 from .read.packages import PackageError
 from .report import inertia
@@ -108,7 +108,7 @@ def find_models(paths: list[str], session: Session) -> list[str]:
     files: list[str] = []
     for path in paths:
         if path != STDIN and Path(path).is_dir():
-            found = models_below(Path(path), session.package_paths, session.packages)
+            found = models_below(Path(path), session.index)
             if not found:
                 raise UsageError(f"{path}: no robot model in this folder (*.urdf, *.urdf.xacro, or a *.xacro file that makes a robot)")
             files.extend(str(f) for f in found)
@@ -136,7 +136,7 @@ def run(
     config_for = configured(session)
     try:
         if libraries:
-            entries = plan(paths, config_for, session.package_paths, session.packages, session.sources.data)
+            entries = plan(paths, config_for, session.package_paths, session.packages, session.scans)
         else:
             entries = [_model_entry(path, config_for) for path in paths]
     except PackageError as error:
@@ -212,12 +212,13 @@ def check_target(target: Target, mappings: dict[str, str], checks: str, session:
     arguments = {**config.mappings_for(path), **mappings, **dict(target.arguments)}
     try:
         resolver = session.resolver(config.package_paths, None if path == STDIN else Path(path))
-        if target.alone:
+        if target.alone:  # a library: its own xacro, and what the source rules find in it
             document, found = read_document(path, session.inputs, resolver, arguments)
             if target.unchecked:
                 found.append(unchecked_library(path, target.unchecked))
             loaded = Loaded(document, diagnostics=found, resolver=resolver, meshes=session.meshes)
-            diagnostics = linter.configure(loaded, found, config, checks)
+            loaded.sources = xacro_sources(document, session.index, session.expander.global_names)
+            diagnostics = linter.lint(loaded, config, checks)
             return Result(path, diagnostics, None, dict(target.arguments), includes=tuple(document.includes))
         loaded = load(path, session.inputs, resolver, arguments, vocabulary=checks == "all", meshes=session.meshes)
     except InputError as error:
@@ -225,6 +226,7 @@ def check_target(target: Target, mappings: dict[str, str], checks: str, session:
     except PackageError as error:
         raise UsageError(str(error)) from None
     document = loaded.document
+    loaded.sources = xacro_sources(document, session.index, session.expander.global_names)
     if document.missing_argument is not None:
         loaded.diagnostics = [needs_argument(d, document.missing_argument, path) if d.code == "X003" else d for d in loaded.diagnostics]
     diagnostics = linter.lint(loaded, config, checks)

@@ -14,10 +14,12 @@ from pathlib import Path
 
 from .model.meshes import MeshSummaries
 from .project.config import Config, Configurations
+from .project.workspace import Index
 from .read.document import Inputs
 from .read.packages import PackageIndex, PackageResolver
 from .read.positions import Sources
 from .read.xacro import Expander
+from .read.xacro_scan import Scans
 
 
 class Session:
@@ -45,6 +47,7 @@ class Session:
         self.packages = PackageIndex()
         self.expander = Expander()
         self.meshes = MeshSummaries()
+        self._forget_sources()
         overrides = {"select": select, "ignore": ignore, "extend_select": extend_select}
         self.configs = Configurations(Path(config) if isinstance(config, (str, Path)) else config, isolated, overrides)
         PackageResolver(self.package_paths)  # a -P that is not NAME=DIR or a folder: said now (PackageError)
@@ -52,6 +55,12 @@ class Session:
     @property
     def inputs(self) -> Inputs:
         return Inputs(self.sources, self.packages, self.expander)
+
+    def _forget_sources(self) -> None:
+        """The xacro files read statically (each once, for the workspace search and the
+        source rules), and the includes and folders found between them."""
+        self.scans = Scans(lambda name: self.sources.data(name), lambda: self.sources.given())
+        self.index = Index(self.package_paths, self.packages, self.scans)
 
     def resolver(self, extra: Iterable[str], input_file: Path | None) -> PackageResolver:
         """The package look-up for one input: its configuration's package paths, then the session's."""
@@ -70,6 +79,7 @@ class Session:
         self.sources = Sources()
         self.packages = PackageIndex()
         self.meshes = MeshSummaries()
+        self._forget_sources()
 
     def __enter__(self) -> Session:
         return self

@@ -22,6 +22,7 @@ def expand(
     deps: Annotated[bool, typer.Option("--deps", help="List the files the input includes, one per line, instead of expanding.")] = False,
     package_path: PackagePathOption = None,
     color: ColorOption = "auto",
+    in_order: Annotated[bool, typer.Option("--inorder", "-i", hidden=True, help="Accepted for old scripts; does nothing.")] = False,
 ) -> None:
     """Expand a xacro file to URDF, exactly as the xacro tool does.
 
@@ -33,6 +34,8 @@ def expand(
         raise fail(f"expand takes one input file, got {len(paths)}")
     path = paths[0]
     console = Output.standard(color)
+    if in_order:  # what xacro says of it, with the fix (xacro's --inorder became its only mode in ROS Melodic)
+        console.err.file.write("urdfcli: warning: --inorder does nothing: in-order processing is xacro's only mode since ROS Melodic; drop the option\n")
     with session(package_path) as run:
         text, includes, diagnostics = api.expand(path, mappings, run)
     write(console.err, (line for d in diagnostics for line in diagnostic_lines(d, None)))

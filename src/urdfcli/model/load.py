@@ -22,6 +22,8 @@ from .robot import Joint, Robot, read
 if TYPE_CHECKING:
     import networkx as nx
 
+    from .sources import XacroSources
+
 
 class Loaded:
     """A document, the robot read from it (None when unreadable, ``robot.at`` None
@@ -43,6 +45,7 @@ class Loaded:
         self.resolver = resolver if resolver is not None else PackageResolver((), document.file)
         self.meshes = meshes if meshes is not None else MeshSummaries()
         self.derived: dict = {}  # worked out from the rest, once
+        self.sources: XacroSources | None = None  # the xacro files behind it, for the source rules (set by the caller)
 
     def remembered(self, key, compute):
         """``compute()``, once for this model: for a costly step several rules share."""

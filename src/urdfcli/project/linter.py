@@ -36,13 +36,14 @@ def ran(code: str, checks: str) -> bool:
 
 def run_rules(loaded: Loaded, config: Config, checks: str) -> list[Diagnostic]:
     """What the rules find, each with the options the configuration gives it. A rule
-    the configuration turns off everywhere does not run."""
-    if not loaded.modelled:
-        return []
+    the configuration turns off everywhere does not run. The rules on the xacro
+    sources run when the caller gave them (``loaded.sources``), whether or not a
+    robot could be read; the others need a robot."""
     options = config.rule_options()
     found: list[Diagnostic] = []
     for rule in REGISTRY.values():
-        if runs(rule, checks) and (rule.always or config.enabled(rule)):
+        ready = loaded.sources is not None if rule.sources else loaded.modelled
+        if ready and runs(rule, checks) and (rule.always or config.enabled(rule)):
             found.extend(rule.run(loaded, options.get(rule.code)))
     return found
 
@@ -62,9 +63,12 @@ def configure(loaded: Loaded, diagnostics: list[Diagnostic], config: Config, che
     def enabled(code: str, file: str) -> bool:
         return config.enabled(REGISTRY[code], path, file)
 
-    unreadable = not document.readable  # why nothing was checked is never selected away, nor silenced
-    selected = [d for d in diagnostics if unreadable or enabled(d.code, d.path)]
-    if unreadable:
+    # Why nothing was checked (an unreadable model) is never selected away, nor silenced;
+    # what the source rules found in its files is configured as anywhere.
+    unreadable = not document.readable
+    always = [d for d in diagnostics if unreadable and not _on_sources(d.code)]
+    selected = [d for d in diagnostics if not (unreadable and not _on_sources(d.code)) and enabled(d.code, d.path)]
+    if unreadable and not selected:
         found = []
     else:
         # each file once, named as the diagnostics name it (the includes are named absolutely)
@@ -77,10 +81,17 @@ def configure(loaded: Loaded, diagnostics: list[Diagnostic], config: Config, che
         found = [s for file, text in texts if text is not None for s in suppressions.parse(file, text)]
     written = document.origins.written() if found and document.origins is not None else None
     kept = suppressions.apply(selected, found, lambda code: ran(code, checks) and enabled(code, path), written)
+    if unreadable:  # whether a comment silences anything is known only when every rule ran
+        kept = [d for d in kept if d.code not in ("U001", "U002")] + always
     kept = [d for d in kept if d.code not in ("U001", "U002") or enabled(d.code, d.path)]
     kept = [with_severity(d, config) for d in kept]
     kept.sort(key=Diagnostic.sort_key)
     return kept
+
+
+def _on_sources(code: str) -> bool:
+    rule = REGISTRY.get(code)
+    return rule is not None and rule.sources
 
 
 def with_severity(diagnostic: Diagnostic, config: Config) -> Diagnostic:

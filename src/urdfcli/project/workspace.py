@@ -23,6 +23,7 @@ computed, taken to include anything. Only the models found are expanded.
 from __future__ import annotations
 
 import functools
+import glob
 import os
 import re
 from collections.abc import Callable, Iterable
@@ -31,16 +32,13 @@ from pathlib import Path
 from typing import NamedTuple
 
 from ..diagnostics import Diagnostic, Location, Severity
-from ..read.document import STDIN, XACRO_NAMESPACES, local_name, namespace_of
+from ..model.sources import XacroSources
+from ..read.document import STDIN, Document
 from ..read.packages import MAX_SCAN_DIRS, SKIP_DIRS, PackageIndex, PackageResolver
-from ..read.xml import XmlError, parse
+from ..read.xacro_scan import Scans, XacroFile, XacroGlobals, scan, shown
 from ..report.result import Library, Result
 
 XACRO_SUFFIXES = (".xacro", ".urdf")
-# xacro elements that make nothing by themselves; any other one (a macro call,
-# xacro:element, xacro:insert_block, xacro:call) makes part of a robot
-_DECLARATIONS = {"include", "property", "arg", "macro"}
-_BLOCKS = {"if", "unless"}
 _SUBSTITUTION = re.compile(r"\$\(\s*(\w+)\s*([^()]*?)\s*\)|\$\{\s*([A-Za-z_]\w*)\s*\}")
 
 
@@ -54,59 +52,24 @@ class Source(NamedTuple):
     properties: tuple[tuple[str, str], ...] = ()  # xacro:property values written as attributes
 
 
-def _is_xacro(element) -> bool:
-    return element.prefix == "xacro" or namespace_of(element.tag) in XACRO_NAMESPACES
-
-
-def _parsed(data: bytes):
-    """The root element of ``data``, or None when it cannot be read (loading it says why)."""
+def read_source(path: Path, data: bytes | None = None) -> Source:
+    """Read a file's kind and includes. Never raises: an unreadable file is a model."""
     try:
-        return parse(data)
-    except XmlError:
-        return None
-
-
-def read_source(path: Path, data: bytes | None = None, read: Callable[[Path], bytes] = Path.read_bytes) -> Source:
-    """Read a file's kind and includes (its bytes: ``data``, else ``read(path)``). Never
-    raises: an unreadable file is a model."""
-    try:
-        data = read(path) if data is None else data
+        data = path.read_bytes() if data is None else data
     except OSError:
         return Source(path, "model")
     named_xacro = path.name.endswith(".xacro")
     if not named_xacro and b"xacro" not in data:
         return Source(path, "model")  # plain URDF
-    root = _parsed(data)
-    if root is None:
-        return Source(path, "model")  # loading it reports the syntax error
-    elements = list(root.iter())
-    if not named_xacro and not any(_is_xacro(e) for e in elements) and not set(root.nsmap.values()) & XACRO_NAMESPACES:
+    return source_of(path, scan(data, shown(path)), named_xacro)
+
+
+def source_of(path: Path, found: XacroFile | None, named_xacro: bool = True) -> Source:
+    """A file's kind and includes, from its scan (None: not XML, so a model: loading it says why)."""
+    if found is None or (not named_xacro and not found.uses_xacro):
         return Source(path, "model")
-    makes = False
-    stack = list(root)
-    while stack and not makes:
-        element = stack.pop()
-        local = local_name(element.tag)
-        if _is_xacro(element):
-            if local in _BLOCKS:
-                stack.extend(element)
-            elif local not in _DECLARATIONS:
-                makes = True
-        elif local in ("link", "joint"):
-            makes = True
-    includes, arguments, properties = [], [], []
-    for element in elements:
-        if not _is_xacro(element):
-            continue
-        local = local_name(element.tag)
-        name = element.get("name")
-        if local == "include" and element.get("filename"):
-            includes.append(element.get("filename"))
-        elif local == "arg" and name and element.get("default") is not None:
-            arguments.append((name, element.get("default")))
-        elif local == "property" and name and element.get("value") is not None:
-            properties.append((name, element.get("value")))
-    return Source(path, "model" if makes else "library", tuple(includes), tuple(arguments), tuple(properties))
+    kind = "model" if found.makes else "library"
+    return Source(path, kind, tuple(found.includes), tuple(found.arguments), tuple(found.properties))
 
 
 class Include(NamedTuple):
@@ -230,38 +193,47 @@ class Index:
     """Sources read once each (the files of the folders searched, and any file an
     include leads to), and the includes between them."""
 
-    def __init__(self, package_paths: tuple[str, ...] = (), packages: PackageIndex | None = None, read: Callable[[Path], bytes] = Path.read_bytes):
+    def __init__(self, package_paths: tuple[str, ...] = (), packages: PackageIndex | None = None, scans: Scans | None = None):
         self.sources: dict[Path, Source] = {}
-        self.read = read  # a file's bytes: an editor's unsaved text stands for the file
         self.scanned: dict[Path, list[Path]] = {}  # a searched folder -> its files
         self._package_paths = package_paths
         self.packages = packages if packages is not None else PackageIndex()
+        self.scans = scans  # a session's scans: each xacro file parsed once for the search and the source rules
         self._resolvers: dict[Path | None, PackageResolver] = {}
-        self._edges: dict[tuple[Path, tuple], list[Include]] = {}
-        self._kinds: dict[Path, str] = {}
+        self._edges: dict[tuple[Path, tuple], tuple[Source, list[Include]]] = {}
+        self._kinds: dict[Path, tuple[Source, str]] = {}
+        self._listed: dict[tuple[Path, bool], tuple[int, list[Path]]] = {}
 
     def scan(self, roots: list[Path], recursive: bool = True) -> list[Path]:
-        """The source files below the folders (read once per folder)."""
+        """The source files below the folders (listed again when a folder changes)."""
         files: list[Path] = []
         for root in roots:
-            if root not in self.scanned:
-                self.scanned[root] = [file.resolve() for file in source_files(root, recursive)]
-            files += self.scanned[root]
+            try:
+                stamp = os.stat(root).st_mtime_ns
+            except OSError:
+                stamp = 0
+            listed = self._listed.get((root, recursive))
+            if listed is None or listed[0] != stamp:
+                listed = self._listed[(root, recursive)] = (stamp, [file.resolve() for file in source_files(root, recursive)])
+            self.scanned[root] = listed[1]
+            files += listed[1]
         return list(dict.fromkeys(files))
 
     def kind(self, file: Path, visiting: frozenset = frozenset()) -> str:
         """"model" or "library": a file that makes nothing itself but includes a
         model (a robot assembled from included files) is a model too."""
-        if file not in self._kinds:
-            kind = self.source(file).kind
+        source = self.source(file)
+        known = self._kinds.get(file)
+        if known is None or known[0] != source:
+            kind = source.kind
             if kind == "library" and file not in visiting:
                 for include in self.includes(file):
                     target = Path(include.value)
                     if include.kind == "path" and target.is_file() and self.kind(target, visiting | {file}) == "model":
                         kind = "model"
                         break
-            self._kinds[file] = kind
-        return self._kinds[file]
+            known = self._kinds[file] = (source, kind)
+        return known[1]
 
     def _find(self, file: Path) -> Callable[[str], Path | None]:
         """The package look-up the expansion of ``file`` would make (shared per package)."""
@@ -274,16 +246,59 @@ class Index:
         return self._resolvers[package].find
 
     def source(self, file: Path) -> Source:
+        """What reading ``file`` tells; through the session's scans (read again when the
+        file changes) when there are some."""
+        if self.scans is not None and file.name.endswith(".xacro"):
+            return source_of(file, self.scans.get(shown(file)))
         if file not in self.sources:
-            self.sources[file] = read_source(file, read=self.read)
+            self.sources[file] = read_source(file)
         return self.sources[file]
+
+    def xacro_file(self, file: Path) -> XacroFile | None:
+        """The scan of a xacro file (None: unreadable, not XML, or a plain URDF)."""
+        if self.scans is None:
+            return None
+        if not file.name.endswith(".xacro"):
+            source = self.source(file)
+            if source.kind == "model" and not (source.includes or source.arguments or source.properties):
+                return None  # a plain URDF, or near enough: read whole only by the model's own run
+        return self.scans.get(shown(file))
+
+    def reach(self, files: list[Path]) -> tuple[list[Path], bool]:
+        """The files the includes of ``files`` may lead to, under any condition, and
+        whether each include could be followed to a file (not one whose path is
+        computed, or that does not exist)."""
+        seen = dict.fromkeys(files)
+        stack = list(files)
+        complete = True
+        while stack:
+            file = stack.pop()
+            for include in self.includes(file):
+                if include.kind == "path":
+                    targets = [Path(include.value)]
+                elif include.kind == "glob":
+                    targets = [Path(p) for p in sorted(glob.glob(include.value))]
+                else:
+                    complete = False
+                    continue
+                for target in targets:
+                    if target in seen:
+                        continue
+                    if not target.is_file():
+                        complete = False
+                        continue
+                    seen[target] = None
+                    stack.append(target)
+        return list(seen), complete
+
 
     def includes(self, file: Path, arguments: dict[str, str] | None = None) -> list[Include]:
         key = (file, tuple(sorted((arguments or {}).items())))
-        if key not in self._edges:
-            source = self.source(file)
-            self._edges[key] = [resolve_include(text, source, self._find(file), arguments) for text in source.includes]
-        return self._edges[key]
+        source = self.source(file)
+        known = self._edges.get(key)
+        if known is None or known[0] != source:
+            known = self._edges[key] = (source, [resolve_include(text, source, self._find(file), arguments) for text in source.includes])
+        return known[1]
 
     def top_level_models(self, files: list[Path]) -> list[Path]:
         """The models among ``files`` that none of them includes (by a resolved path)."""
@@ -309,6 +324,45 @@ class Index:
                         seen.add(nxt)
                         stack.append((nxt, None))  # arguments reach included files too, but rarely name includes there
         return False
+
+
+def xacro_sources(document: Document, index: Index, xacro_names: Callable[[], XacroGlobals | None] = lambda: None) -> XacroSources:
+    """The xacro files behind a read document, for the source rules: those its
+    expansion read (none for a plain URDF), then, when a rule asks, those its
+    includes may reach and those of the repository or workspace around it."""
+    start = document.file.resolve() if document.file is not None else None
+    names = [document.shown, *(shown(file) for file in _own(document, start, index))] if document.is_xacro else []
+    files = [found for name in dict.fromkeys(names) if (found := index.scans.get(name)) is not None]
+
+    def scanned(paths: list[Path]) -> list[XacroFile]:
+        return [found for path in paths if (found := index.xacro_file(path)) is not None]
+
+    def reach() -> tuple[list[XacroFile], bool]:
+        if start is None or not document.is_xacro:
+            return [], document.is_xacro is False
+        paths, complete = index.reach([start, *(Path(file).resolve() for file in document.includes)])
+        found = scanned(paths)
+        return found, complete and len(found) == len(paths)
+
+    def around() -> list[XacroFile]:
+        if start is None or not document.is_xacro:
+            return []
+        return scanned(index.scan(*search_roots(start, index.packages)))
+
+    return XacroSources(files, reach, around, xacro_names)
+
+def _own(document: Document, start: Path | None, index: Index) -> list[str]:
+    """The files a document's expansion included that belong to its repository or
+    workspace: the source rules say nothing of a package installed elsewhere."""
+    if start is None:
+        return []
+    roots, recursive = search_roots(start, index.packages)
+    inside = []
+    for file in document.includes:
+        folder = Path(file).resolve().parent
+        if any(folder == root or (recursive and root in folder.parents) for root in roots):
+            inside.append(file)
+    return inside
 
 
 class Target(NamedTuple):
@@ -337,12 +391,11 @@ class Entry(NamedTuple):
 MODEL_SUFFIXES = (".urdf", ".urdf.xacro")
 
 
-def models_below(folder: Path, package_paths: tuple[str, ...] = (), packages: PackageIndex | None = None) -> list[Path]:
+def models_below(folder: Path, index: Index) -> list[Path]:
     """The robot models below a folder, as ``check`` and ``lint`` find them: every
     ``*.urdf`` and ``*.urdf.xacro`` file, and each other ``*.xacro`` file that is a
     model (ROS 1's ``ur5.xacro``) and that no file there includes. Libraries are
-    checked through the models that include them."""
-    index = Index(package_paths, packages)
+    checked through the models that include them. ``index`` is the session's."""
     files = list(source_files(folder))
     resolved = {file: file.resolve() for file in files}
     included = {Path(i.value) for file in files if file.name.endswith(".xacro") for i in index.includes(resolved[file]) if i.kind == "path"}
@@ -353,28 +406,19 @@ def models_below(folder: Path, package_paths: tuple[str, ...] = (), packages: Pa
     )
 
 
-def shown(path: Path) -> str:
-    """A path as diagnostics name files: relative to the working directory when below it."""
-    try:
-        relative = os.path.relpath(path)
-    except ValueError:
-        return str(path)
-    return str(path) if relative.startswith("..") else relative
-
-
 def model_targets(path: str, argument_sets: list[dict[str, str]] | None) -> list[Target]:
     return [Target(path, tuple(arguments.items())) for arguments in (argument_sets or [{}])]
 
 
 def plan(
-    paths: list[str], config_for, package_paths: tuple[str, ...] = (), packages: PackageIndex | None = None, read: Callable[[Path], bytes] = Path.read_bytes
+    paths: list[str], config_for, package_paths: tuple[str, ...] = (), packages: PackageIndex | None = None, scans: Scans | None = None,
 ) -> list[Entry]:
     """What to run for the given files: each model once per argument set, each
     library through the models that may include it (none: on its own).
 
     ``config_for(path)`` gives the configuration of a file (for ``models`` and
-    package paths); ``read(path)`` the bytes of a file (an editor's unsaved text
-    stands for it). Raises what ``config_for`` raises.
+    package paths). ``scans`` are the session's (each file read once for this
+    search and the source rules). Raises what ``config_for`` raises.
     """
     packages = packages if packages is not None else PackageIndex()
     entries: list[Entry] = []
@@ -383,8 +427,9 @@ def plan(
         config = config_for(path)
         # only a file named .xacro can be a library: a plain URDF is never read twice
         library = Path(path).resolve() if path != STDIN and path.endswith(".xacro") else None
-        if library is not None and read_source(library, read=read).kind == "library":  # else no look-up at all
-            index = index or Index(config.package_paths + package_paths, packages, read)
+        alone = (source_of(library, scans.get(shown(library))) if scans is not None else read_source(library)) if library is not None else None
+        if alone is not None and alone.kind == "library":  # else no look-up at all
+            index = index or Index(config.package_paths + package_paths, packages, scans)
             if index.kind(library) == "model":
                 library = None
         else:
@@ -545,8 +590,8 @@ def _library_result(entry: Entry, outcome, shown_keys: set, unreadable: list[str
             unreadable.append(alone)
         else:
             found += alone.diagnostics
-            if not entry.targets and not alone.diagnostics:  # its own mistakes say enough
-                notes.append("a xacro library that no model includes: only its own xacro was checked")
+            if not entry.targets and all(d.severity is Severity.INFO for d in alone.diagnostics):  # its own mistakes say enough
+                notes.append("a xacro library that no model includes: checked on its own (its xacro, and its macros as written)")
     # One mistake written in a macro shows once, however many calls and models
     # made copies of it (the messages differ only by the names the calls gave).
     places = set()
@@ -570,4 +615,7 @@ def unchecked_library(path: str, unchecked: str) -> Diagnostic:
     )
 
 
-__all__ = ["Entry", "Index", "Source", "Target", "assemble", "plan", "read_source", "resolve_include", "search_roots", "unchecked_library"]
+__all__ = [
+    "Entry", "Index", "Source", "Target", "assemble", "plan", "read_source", "resolve_include", "search_roots", "source_of",
+    "unchecked_library", "xacro_sources",
+]

@@ -16,11 +16,12 @@ from pathlib import Path
 from typing import NamedTuple
 
 from ..diagnostics import Diagnostic, Location
-from . import positions
+from . import positions, xacro_warnings
 from .expanded import ExpansionError, Origins
 from .packages import PackageIndex, PackageResolver
 from .positions import Source, Sources
 from .xacro import Expander
+from .xacro_scan import XACRO_NAMESPACES
 from .xml import Element, XmlError, parse
 
 NAMED = {"link", "joint", "material", "transmission", "gazebo"}
@@ -154,7 +155,6 @@ class Document:
 
 
 # -- reading an input ---------------------------------------------------------------
-XACRO_NAMESPACES = {"http://www.ros.org/wiki/xacro", "http://ros.org/wiki/xacro", "http://wiki.ros.org/xacro"}
 STDIN = "-"
 
 
@@ -247,6 +247,6 @@ def read_document(
         document.missing_argument = error.missing_argument
         return document, [Diagnostic(error.code, error.message, location)]
     document = Document(path, result.text.encode("utf-8"), file, True, result.text, result.includes, result.origins, sources)
-    warnings = [Diagnostic("X005", text, origin.location() if origin is not None else Location(shown)) for text, origin in result.warnings]
+    warnings = [xacro_warnings.warning(text, origin.location() if origin is not None else Location(shown), sources) for text, origin in result.warnings]
     return document, warnings
 

@@ -407,6 +407,14 @@ class _Stderr(io.StringIO):
         return len(text)
 
 
+def global_names() -> tuple[list[str], dict[str, list[str]]]:
+    """The names xacro gives every expression, as an expansion here sees them (after
+    :func:`guard.restrict`), and the members of those that are namespaces."""
+    table = xacro._global_symbols
+    guard.restrict(table)
+    return sorted(table), {name: sorted(value) for name, value in table.items() if isinstance(value, dict)}
+
+
 _UNDEFINED_ARGUMENT = re.compile(r"\bUndefined substitution argument (\w+)")  # xacro's words for $(arg NAME) without a value
 
 

@@ -24,6 +24,7 @@ import re
 from collections.abc import Iterable, Iterator
 from functools import cached_property
 from pathlib import Path
+from typing import NamedTuple
 
 from .folders import nearest
 from .xml import XmlError, parse
@@ -48,10 +49,10 @@ class PackageIndex:
     manifest or folder that changes on disk is read again."""
 
     def __init__(self) -> None:
-        self._names: dict[tuple[str, int, int], str | None] = {}
         self._scans: dict[tuple[Path, int], list[tuple[str, Path]]] = {}
         self._enclosing: dict[Path, Path | None] = {}
         self._roots: dict[Path, list[Path]] = {}
+        self._manifests: dict[tuple[str, int, int], Manifest | None] = {}
 
     def forget(self) -> None:
         """Look at the folders again: packages added, moved or removed on disk (each
@@ -62,14 +63,19 @@ class PackageIndex:
 
     def package_name(self, manifest: Path) -> str | None:
         """The ``<name>`` declared in a package.xml, or None when unreadable."""
+        read = self.manifest(manifest)
+        return read.name if read is not None else None
+
+    def manifest(self, manifest: Path) -> Manifest | None:
+        """What a package.xml declares (its name and dependencies), or None when unreadable."""
         try:
             state = os.stat(manifest)
         except OSError:
             return None
         key = (str(manifest), state.st_mtime_ns, state.st_size)
-        if key not in self._names:
-            self._names[key] = read_package_name(manifest)
-        return self._names[key]
+        if key not in self._manifests:
+            self._manifests[key] = read_manifest(manifest)
+        return self._manifests[key]
 
     def scan(self, root: Path) -> list[tuple[str, Path]]:
         """(name, dir) for every package below root, without entering a package."""
@@ -112,14 +118,33 @@ def _holds_package(folder: Path) -> Path | None:
     return folder if (folder / "package.xml").is_file() else None
 
 
+# The dependencies that make a package available where this one is built, run or
+# tested (format 1 says run_depend for exec_depend). doc_depend and buildtool_depend do not.
+DEPENDENCY_KINDS = ("depend", "exec_depend", "build_export_depend", "build_depend", "test_depend", "run_depend")
+
+
+class Manifest(NamedTuple):
+    """A package.xml: the package's name and the packages it declares it depends on."""
+
+    name: str | None
+    dependencies: frozenset[str]
+
+
 def read_package_name(manifest: Path) -> str | None:
     """The ``<name>`` declared in a package.xml, or None when unreadable."""
+    read = read_manifest(manifest)
+    return read.name if read is not None else None
+
+
+def read_manifest(manifest: Path) -> Manifest | None:
+    """What a package.xml declares, or None when it cannot be read."""
     try:
         root = parse(manifest.read_bytes())
     except (OSError, XmlError):
         return None
-    name = root.findtext("name")
-    return name.strip() if name and name.strip() else None
+    name = (root.findtext("name") or "").strip() or None
+    dependencies = {(element.text or "").strip() for kind in DEPENDENCY_KINDS for element in root.findall(kind)}
+    return Manifest(name, frozenset(d for d in dependencies if d))
 
 
 def _walk(root: Path, package_name) -> Iterator[tuple[str, Path]]:

@@ -11,6 +11,7 @@ from typing import TYPE_CHECKING
 
 from . import sandbox
 from .expanded import Expansion, ExpansionError, display_path
+from .xacro_scan import XacroGlobals
 
 if TYPE_CHECKING:
     from .packages import PackageResolver
@@ -25,6 +26,18 @@ class Expander:
 
     def __init__(self) -> None:
         self.worker = sandbox.Worker(_EXPANSION)
+        self._globals: XacroGlobals | None = None
+
+    def global_names(self) -> XacroGlobals | None:
+        """The names xacro gives every expression, asked of the worker once (None when
+        it cannot answer)."""
+        if self._globals is None:
+            try:
+                names, members = self.worker.run("global_names")
+            except (sandbox.LimitExceeded, OSError, EOFError):
+                return None
+            self._globals = XacroGlobals(frozenset(names), {name: frozenset(found) for name, found in members.items()})
+        return self._globals
 
     def expand(
         self, data: bytes, file: str | None, mappings: dict[str, str], resolver: PackageResolver, given: dict[str, bytes] | None = None

@@ -71,6 +71,7 @@ class Rule(NamedTuple):
     function: Callable[..., Iterator["Diagnostic"]] | None = None
     always: bool = False  # runs on every model read, whatever the command (the tree's structure)
     inertial_fix: bool = False  # a new <inertial> fixes what it finds (`inertia --suggest` prints one)
+    sources: bool = False  # judges the xacro sources (``loaded.sources``), so runs even when no robot was read
 
     @property
     def defaults(self) -> dict[str, Any]:

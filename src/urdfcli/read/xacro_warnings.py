@@ -1,0 +1,60 @@
+"""xacro's warnings, each with its fix and, where the words name it, the column of
+what it is about.
+
+xacro prints its warnings as text (``xacro.color.warning``); the expansion keeps
+each with the element xacro was at (:mod:`urdfcli.read.expansion`). This module
+knows what each of xacro 2's warnings means and says how to fix it.
+"""
+
+from __future__ import annotations
+
+import re
+
+from ..diagnostics import Diagnostic, Location
+from .positions import Sources
+
+# xacro's own words (xacro/__init__.py), and the fix for each
+_FIXES = (
+    (re.compile(r"Using (\w+)\(\) directly is deprecated\. Use (\w+)\.\1\(\) instead\."), "write {1}.{0}(...): xacro keeps the bare {0}() only for old files, with this warning"),
+    (re.compile(r"redefining global symbol: (\w+)"), "rename the property: '{0}' is a name xacro gives every expression, and redefining it changes them all"),
+    (re.compile(r"([\w:]+): unknown attribute\(s\): (.+)"), "remove {1} from <{0}>, or correct the spelling: xacro ignores it"),
+    (re.compile(r"Include tag's filename spec \"(.*)\" matched no files\."), "no file matches {0}: correct the pattern, or remove the <xacro:include>"),
+    (re.compile(r"Child elements of a <xacro:include> tag are ignored"), "move the elements out of <xacro:include>: it reads only its filename"),
+    (re.compile(r"macro names must not contain prefix 'xacro:': xacro:(\w+)"), 'write name="{0}": a macro is called as <xacro:{0}>, named without the prefix'),
+    (re.compile(r"(\w+): default property value can only be defined on local scope"), "remove scope= from property '{0}', or give it value= instead of default="),
+    (re.compile(r"(\w+): no parent scope at global scope"), "remove scope=\"parent\" from property '{0}': at the top level it defines nothing"),
+    (re.compile(r"inconsistent namespace redefinitions for ([\w:]+)"), "declare {0} with the same namespace in every file of the model"),
+)
+_DEPRECATED_CALL = re.compile(r"Using (\w+)\(\) directly is deprecated")
+_START_TAG = re.compile(r"""<[^\s/>]+(?:[^>"']|"[^"]*"|'[^']*')*>""")  # quoted values may hold '>'
+
+
+def fix(text: str) -> str | None:
+    """The fix for one of xacro's warnings (None for words this module does not know)."""
+    for pattern, hint in _FIXES:
+        found = pattern.search(text)
+        if found:
+            return hint.format(*found.groups())
+    return None
+
+
+def warning(text: str, location: Location, sources: Sources) -> Diagnostic:
+    """X005 for one of xacro's warnings, at the element xacro was at (at the deprecated
+    call itself, when the element's start tag holds it), with its fix."""
+    found = _DEPRECATED_CALL.search(text)
+    if found is not None and location.line and location.column:
+        location = _at_call(found.group(1), location, sources)
+    return Diagnostic("X005", text, location, hint=fix(text))
+
+
+def _at_call(name: str, location: Location, sources: Sources) -> Location:
+    source = sources.source(location.file)
+    start = source.offset(location.line, location.column) if source is not None else None
+    if start is None:
+        return location
+    tag = _START_TAG.match(source.text, start)
+    call = re.compile(rf"(?<![\w.]){re.escape(name)}\s*\(").search(source.text, start, tag.end()) if tag else None
+    if call is None:
+        return location
+    line, column = source.position(call.start())
+    return location._replace(line=line, column=column)

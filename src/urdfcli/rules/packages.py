@@ -1,0 +1,135 @@
+"""Rules on the package around a model: what its files use and its package.xml declares."""
+
+from __future__ import annotations
+
+import functools
+import re
+from collections.abc import Callable, Iterator
+from pathlib import Path
+
+from ..diagnostics import Diagnostic, Location
+from ..model.sources import chain, parameters
+from ..read.xacro_scan import shown
+from .base import WARNING, check
+
+# what to declare for a package used at build time (an included file, a YAML file read
+# while expanding) and for one used at run time (a mesh, a texture, a parameter file)
+BUILD, RUN = "depend", "exec_depend"
+_VARIABLE = re.compile(r"\$\{\s*(\w+)\s*\}")
+
+
+def _package_of(uri: str) -> str | None:
+    match = re.match(r"package://([^/]*)", uri)
+    return match.group(1) if match else None
+
+
+def _uses(loaded) -> Iterator[tuple[str, str, str, Callable[[], Location]]]:
+    """(file, package, what to declare, where) for every package a file of the model
+    names with a plain name: the xacro sources read statically (conditions and
+    uncalled macros included), or a plain URDF's meshes and textures. ``where`` is
+    worked out only for the use reported."""
+    if loaded.document.is_xacro:
+        sources = loaded.sources
+        own = {file.name for file in sources.files}
+        for file in sources.files:
+            for use in file.packages:
+                kind = RUN if use.when == "run" else BUILD
+                if use.package and "$" not in use.package:
+                    yield file.name, use.package, kind, functools.partial(_at, file, use.place)
+                else:  # a macro's parameter: each call names the package, where every call gives a plain name
+                    for package, where, place in _given(sources, file, use):
+                        if where.name in own:
+                            yield where.name, package, kind, functools.partial(_at, where, place)
+    elif loaded.modelled:
+        for at, _, uri in loaded.robot.resources:
+            package = _package_of(uri)
+            if package:
+                yield loaded.document.shown, package, RUN, functools.partial(loaded.document.locate, at)
+
+
+def _given(sources, file, use) -> list:
+    """For ``$(find ${name})`` or ``package://${name}/`` in a macro whose parameter
+    ``name`` every call gives as a plain name: (package, file, place) for each call
+    (empty when one call computes it, or nothing calls the macro)."""
+    variable = _VARIABLE.fullmatch(use.package)
+    if variable is None or use.macro is None or not sources.complete:
+        return []
+    name = variable.group(1)
+    macro = next((m for m in chain(file, use.macro) if any(p.name == name for p in parameters(file, m))), None)
+    return (sources.given_by_calls(file, macro, name) or []) if macro is not None else []
+
+
+def _at(file, place) -> Location:
+    line, column = file.position(place)
+    return Location(file.name, line, column)
+
+
+@check("P001", "package-dependency-undeclared", WARNING, "A file uses a package that its package.xml does not declare.", in_check=False, sources=True)
+def dependency_undeclared(loaded) -> Iterator[Diagnostic]:
+    """## What it does
+    For each file of the model that belongs to a package (a `package.xml` in
+    its folder or above), reads every `$(find NAME)`, `file://$(find NAME)` and
+    `package://NAME/` it writes, under `xacro:if` and `xacro:unless` too (a
+    condition does not install a package), and flags a package that is
+    neither the file's own nor declared in its `package.xml` as `depend`,
+    `exec_depend`, `build_export_depend`, `build_depend`, `test_depend` (or
+    format 1's `run_depend`). The hint gives the line to add: `<depend>` for a
+    file included or read while expanding, `<exec_depend>` for a mesh or any
+    other file used at run time. One diagnostic per file and package, at its
+    first use. A package named by a macro's parameter (`$(find ${pkg})`,
+    `package://${pkg}/`) is named by each call: when every call in the
+    workspace gives a plain name (or leaves the plain default), each is judged
+    where it is written. Any other variable, and a package that cannot be found
+    at all (X004, D005 say so), are left alone.
+
+    ## Why is this bad?
+    It works where the package happens to be installed, and breaks in a fresh
+    workspace, on the build farm, in a Docker image: rosdep installs only the
+    dependencies a package declares.
+
+    ## Example
+    ```xml
+    <!-- my_robot/package.xml -->
+    <package format="3">
+      <name>my_robot</name>
+    </package>
+    <!-- my_robot/urdf/robot.urdf.xacro -->
+    <mesh filename="package://robot_meshes/meshes/arm.stl"/>
+    ```
+
+    ## Use instead
+    ```xml
+    <!-- my_robot/package.xml -->
+    <package format="3">
+      <name>my_robot</name>
+      <exec_depend>robot_meshes</exec_depend>
+    </package>
+    ```
+    """
+    index = loaded.resolver.index
+    reported: dict[tuple[str, str], list] = {}
+    for file, package, kind, where in _uses(loaded):
+        key = (file, package)
+        if key in reported:
+            reported[key][0] += 1
+            reported[key][1] = BUILD if BUILD in (kind, reported[key][1]) else RUN
+            continue
+        reported[key] = [0, kind, where]
+    for (file, package), (others, kind, where) in reported.items():
+        owner = index.enclosing_package(Path(file).resolve().parent) if not file.startswith("<") else None
+        manifest = index.manifest(owner / "package.xml") if owner is not None else None
+        if manifest is None or manifest.name in (None, package) or package in manifest.dependencies:
+            continue
+        folder = loaded.resolver.find(package)
+        if folder is None or folder.resolve() == owner:
+            continue  # a package that cannot be found (X004 or D005 say so), or its own under another name (-P NAME=DIR)
+        more = f" (and {others} more use{'s' if others > 1 else ''} in this file)" if others else ""
+        yield Diagnostic(
+            "P001",
+            f"package '{package}' is used here{more} but {manifest.name}'s package.xml does not declare it",
+            where(),
+            hint=f"add <{kind}>{package}</{kind}> to {shown(owner / 'package.xml')}: rosdep installs only declared dependencies",
+        )
+
+
+__all__ = ["dependency_undeclared"]

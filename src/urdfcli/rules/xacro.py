@@ -1,0 +1,455 @@
+"""Rules on the xacro sources: definitions nothing uses, names nothing defines,
+macros that can only be called once, and xacro tags xacro no longer reads.
+
+They judge the files a model's expansion read (``loaded.sources.files``), each
+finding located at the definition or use in its file. Whether a definition is
+used elsewhere, or a name defined elsewhere, is looked up in every file the
+includes may reach (under any condition) and in the xacro files of the
+repository or workspace around the model; a name read or defined by an
+expression urdfcli cannot follow (``$(arg ${x})``, ``<xacro:call
+macro="${m}"/>``, a property whose name is computed) counts as any name, so
+that nothing uncertain is reported.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterator
+
+from ..diagnostics import Diagnostic, Location
+from ..model.sources import XacroSources, bound, parameter_place, parameters
+from ..read.xacro_scan import Place, XacroFile, free_names
+from .base import ERROR, INFO, WARNING, check
+from .suggestions import close_matches
+
+
+def _at(file: XacroFile, place: Place) -> Location:
+    line, column = file.position(place)
+    return Location(file.name, line, column)
+
+
+def _diagnostic(code: str, message: str, file: XacroFile, place: Place, hint: str | None = None, severity=None) -> Diagnostic:
+    return Diagnostic(code, message, _at(file, place), hint=hint, severity=severity)
+
+
+def _used(sources: XacroSources, test) -> bool:
+    """Whether ``test(facts)`` holds for what the model's files reach, else for the
+    whole workspace around it (read only then); true when an include could not be
+    followed, since the file it leads to may hold anything."""
+    return not sources.complete or test(sources.reached_facts) or test(sources.facts)
+
+
+@check("X101", "xacro-argument-unused", WARNING, "A `xacro:arg` that nothing reads.", in_check=False, sources=True)
+def argument_unused(loaded) -> Iterator[Diagnostic]:
+    """## What it does
+    Flags a `<xacro:arg>` that no `$(arg NAME)`, `$(eval ...)` or
+    `xacro.arg('NAME')` reads: not in the model's files, not in any file their
+    includes may reach (under any `xacro:if`), not in any xacro file of the
+    repository or workspace around it. An argument read through a computed
+    name (`$(arg ${name})`) counts as read, whatever its name.
+
+    ## Why is this bad?
+    A user passes `NAME:=VALUE` (on the command line, in a launch file) and
+    nothing changes: the argument was renamed, or the code that read it was
+    removed, and the launch file still sets it.
+
+    ## Example
+    ```xml
+    <robot name="r" xmlns:xacro="http://www.ros.org/wiki/xacro">
+      <xacro:arg name="use_gpu" default="false"/>
+      <link name="base_link"/>
+    </robot>
+    ```
+
+    ## Use instead
+    ```xml
+    <robot name="r" xmlns:xacro="http://www.ros.org/wiki/xacro">
+      <xacro:arg name="use_gpu" default="false"/>
+      <link name="base_link"/>
+      <xacro:if value="$(arg use_gpu)"><link name="gpu_lidar_link"/></xacro:if>
+    </robot>
+    ```
+    """
+    sources = loaded.sources
+    for file in sources.files:
+        for definition in file.definitions:
+            name = definition.name
+            if definition.kind != "argument" or not name or _used(sources, lambda f: f.any_argument or name in f.arguments):
+                continue
+            yield _diagnostic(
+                "X101", f"xacro argument '{name}' is read nowhere: {name}:=VALUE changes nothing", file, definition.place,
+                f"read it with $(arg {name}), or remove the <xacro:arg>",
+            )
+
+
+@check("X102", "xacro-property-unused", INFO, "A `xacro:property` that nothing uses.", in_check=False, sources=True)
+def property_unused(loaded) -> Iterator[Diagnostic]:
+    """## What it does
+    Notes a `<xacro:property>` whose name no `${...}` reads (and, for a block
+    property, no `<xacro:insert_block>` inserts) in the model's files, the
+    files their includes may reach, or the xacro files of the repository or
+    workspace around it. Info: a library's property may serve a package
+    outside the workspace.
+
+    ## Why is this bad?
+    A property nobody reads is a value that looks like it sets something and
+    does not: often the old name of one that was renamed, so that a change to
+    it is silently lost.
+
+    ## Example
+    ```xml
+    <robot name="r" xmlns:xacro="http://www.ros.org/wiki/xacro">
+      <xacro:property name="wheel_width" value="0.04"/>
+      <link name="base_link"/>
+    </robot>
+    ```
+
+    ## Use instead
+    ```xml
+    <robot name="r" xmlns:xacro="http://www.ros.org/wiki/xacro">
+      <xacro:property name="wheel_width" value="0.04"/>
+      <link name="base_link">
+        <visual><geometry><cylinder radius="0.1" length="${wheel_width}"/></geometry></visual>
+      </link>
+    </robot>
+    ```
+    """
+    sources = loaded.sources
+    for file in sources.files:
+        for definition in file.definitions:
+            name = definition.name
+            if definition.kind != "property" or not name or "$" in name:
+                continue
+            if _used(sources, lambda f: name in f.names or name in f.blocks or name in f.forwarded):
+                continue
+            yield _diagnostic("X102", f"property '{name}' is used nowhere", file, definition.place, f"use it as ${{{name}}}, or remove it")
+
+
+def _read_in_body(file: XacroFile, macro: int, name: str) -> bool:
+    for expression in file.expressions:
+        if file.within(expression.macro, macro):
+            names = free_names(expression.text)
+            if names is None or any(n.name == name for n in names):
+                return True
+    return False
+
+
+def _inserted_in_body(file: XacroFile, macro: int, name: str) -> bool:
+    return any(block.name == name and file.within(block.macro, macro) for block in file.blocks)
+
+
+@check("X103", "macro-parameter-unused", WARNING, "A macro parameter its body never uses.", in_check=False, sources=True)
+def parameter_unused(loaded) -> Iterator[Diagnostic]:
+    """## What it does
+    Flags a parameter of a `<xacro:macro>` that its body (nested macros
+    included) never reads as `${NAME}`, and a block parameter (`*NAME`,
+    `**NAME`) it never inserts with `<xacro:insert_block name="NAME"/>`.
+    xacro evaluates a macro's body in its caller's scope, so a parameter also
+    counts as used when a macro body anywhere in the workspace reads that name
+    without defining it, or forwards it (`NAME:=^`).
+
+    ## Why is this bad?
+    Every call passes a value that changes nothing: an `xyz` meant for the
+    `<origin>`, a `*origin` block never inserted, stack every part at the
+    parent's origin, and the model still expands without a word.
+
+    ## Example
+    ```xml
+    <robot name="r" xmlns:xacro="http://www.ros.org/wiki/xacro">
+      <xacro:macro name="wheel" params="prefix *origin">
+        <link name="${prefix}_wheel"/>
+        <joint name="${prefix}_wheel_joint" type="continuous">
+          <parent link="base_link"/>
+          <child link="${prefix}_wheel"/>
+        </joint>
+      </xacro:macro>
+      <link name="base_link"/>
+      <xacro:wheel prefix="left"><origin xyz="0 0.2 0"/></xacro:wheel>
+    </robot>
+    ```
+
+    ## Use instead
+    ```xml
+    <robot name="r" xmlns:xacro="http://www.ros.org/wiki/xacro">
+      <xacro:macro name="wheel" params="prefix *origin">
+        <link name="${prefix}_wheel"/>
+        <joint name="${prefix}_wheel_joint" type="continuous">
+          <parent link="base_link"/>
+          <child link="${prefix}_wheel"/>
+          <xacro:insert_block name="origin"/>
+        </joint>
+      </xacro:macro>
+      <link name="base_link"/>
+      <xacro:wheel prefix="left"><origin xyz="0 0.2 0"/></xacro:wheel>
+    </robot>
+    ```
+    """
+    sources = loaded.sources
+    for file in sources.files:
+        for macro, definition in enumerate(file.macros):
+            for parameter in parameters(file, macro):
+                name = parameter.name
+                if parameter.block:
+                    if _inserted_in_body(file, macro, name) or _used(sources, lambda f: name in f.free_blocks):
+                        continue
+                    message = f"block parameter '*{name}' of macro '{definition.name}' is never inserted: the block each call gives is dropped"
+                    hint = f'insert it with <xacro:insert_block name="{name}"/>, or remove *{name} from params'
+                elif _read_in_body(file, macro, name) or _used(sources, lambda f: name in f.free or name in f.forwarded):
+                    continue
+                else:
+                    message = f"parameter '{name}' of macro '{definition.name}' is never used in its body: the value each call gives changes nothing"
+                    hint = f"use it as ${{{name}}}, or remove it from params"
+                yield _diagnostic("X103", message, file, parameter_place(file, macro, name), hint)
+
+
+@check("X104", "macro-unused", INFO, "A macro that nothing calls.", in_check=False, sources=True)
+def macro_unused(loaded) -> Iterator[Diagnostic]:
+    """## What it does
+    Notes a `<xacro:macro>` that no `<xacro:NAME>` (nor `<xacro:call
+    macro="NAME">`) calls in the model's files, the files their includes may
+    reach, or any xacro file of the repository or workspace around it. Info
+    only: a library's macros serve packages this workspace may not hold. A
+    workspace with a computed call (`<xacro:call macro="${name}"/>`) draws
+    nothing.
+
+    ## Why is this bad?
+    A macro nothing calls is checked by nothing: its mistakes show only the
+    day someone calls it. Often it is dead code left after a refactoring.
+
+    ## Example
+    ```xml
+    <robot name="r" xmlns:xacro="http://www.ros.org/wiki/xacro">
+      <xacro:macro name="bumper" params="parent">
+        <link name="bumper_link"/>
+      </xacro:macro>
+      <link name="base_link"/>
+    </robot>
+    ```
+
+    ## Use instead
+    ```xml
+    <robot name="r" xmlns:xacro="http://www.ros.org/wiki/xacro">
+      <xacro:macro name="bumper" params="parent">
+        <link name="bumper_link"/>
+        <joint name="bumper_joint" type="fixed"><parent link="${parent}"/><child link="bumper_link"/></joint>
+      </xacro:macro>
+      <link name="base_link"/>
+      <xacro:bumper parent="base_link"/>
+    </robot>
+    ```
+    """
+    sources = loaded.sources
+    for file in sources.files:
+        for definition in file.macros:
+            name = definition.name.removeprefix("xacro:")
+            if not name or _used(sources, lambda f: f.any_call or name in f.calls):
+                continue
+            where = "in this file, the files it includes, nor any other file of the workspace" if file.makes else "by any file of the workspace"
+            yield _diagnostic("X104", f"macro '{name}' is called nowhere: not {where}", file, definition.place, "call it, or remove it")
+
+
+def _made_by_macros(origins) -> dict[tuple[int, int, int], list[int]]:
+    """For each place of the sources (file index, line, column) that macro calls made
+    elements from, the call chains (trace indices) of those elements."""
+    places = origins.places
+    found: dict = {}
+    for at in range(0, len(places), 4):
+        trace = places[at + 3]
+        if trace:  # trace 0 is no call at all
+            found.setdefault((places[at], places[at + 1], places[at + 2]), []).append(trace)
+    return found
+
+
+def _call_site(origins, call: int) -> str:
+    file, line, column, _ = origins.calls[call]
+    return f"{file}:{line}:{column}" if line else file
+
+
+def _differing(origins, first: int, second: int) -> tuple[str, str]:
+    """The two call sites that tell two call chains apart (the outermost that differ)."""
+    a, b = origins.traces[first], origins.traces[second]
+    for one, other in zip(reversed(a), reversed(b)):
+        if one != other:
+            return _call_site(origins, one), _call_site(origins, other)
+    return _call_site(origins, a[0]), _call_site(origins, b[0])
+
+
+@check("X105", "macro-name-fixed", ERROR, "A macro that names a link, joint or transmission the same whatever its parameters.", in_check=False, sources=True)
+def macro_name_fixed(loaded) -> Iterator[Diagnostic]:
+    """## What it does
+    Looks at each `<link>`, `<joint>` and `<transmission>` written in a macro's
+    body with a fixed name (no `${...}`, no `$(...)`) and counts the calls of
+    the macro that made one in the expanded model: two calls or more make two
+    elements of one name, an error, which names the two calls; one call is
+    info, since the macro can then be used only once per robot. A name built
+    from a parameter or a property (`${prefix}wheel`) is never flagged: the
+    duplicate-name rules (N004, N005) judge what it expands to.
+
+    ## Why is this bad?
+    The second call of the macro defines the link or joint again: check_urdf
+    and every tool built on urdfdom reject the model ("link defined twice"),
+    and a transmission named twice drives one joint only.
+
+    ## Example
+    ```xml
+    <robot name="r" xmlns:xacro="http://www.ros.org/wiki/xacro">
+      <xacro:macro name="wheel" params="side">
+        <link name="wheel_link"/>
+      </xacro:macro>
+      <xacro:wheel side="left"/>
+      <xacro:wheel side="right"/>
+    </robot>
+    ```
+
+    ## Use instead
+    ```xml
+    <robot name="r" xmlns:xacro="http://www.ros.org/wiki/xacro">
+      <xacro:macro name="wheel" params="side">
+        <link name="${side}_wheel_link"/>
+      </xacro:macro>
+      <xacro:wheel side="left"/>
+      <xacro:wheel side="right"/>
+    </robot>
+    ```
+    """
+    origins = loaded.document.origins
+    if origins is None:
+        return
+    files = {name: index for index, name in enumerate(origins.files)}
+    made = None
+    for file in loaded.sources.files:
+        for element in file.made:
+            if "$" in element.name or file.name not in files:
+                continue
+            made = made if made is not None else _made_by_macros(origins)
+            line, column = file.position(Place(element.place.element))
+            traces = list(dict.fromkeys(made.get((files[file.name], line, column), [])))
+            if not traces:
+                continue
+            macro = file.macros[element.macro].name
+            what = f"macro '{macro}' names {element.tag} '{element.name}' whatever its parameters"
+            hint = f'build the name from a parameter, such as name="${{prefix}}{element.name}"'
+            if len(traces) > 1:
+                first, second = _differing(origins, traces[0], traces[1])
+                calls = f"{len(traces)} calls" if len(traces) > 2 else "two calls"
+                yield _diagnostic("X105", f"{what}: its {calls} (at {first} and {second}) make {element.tag} '{element.name}' twice", file, element.place, hint)
+            else:
+                yield _diagnostic("X105", f"{what}: it can be called once per robot", file, element.place, hint, severity=INFO)
+
+
+@check("X106", "xacro-name-undefined", ERROR, "A name in a macro body that nothing defines.", sources=True)
+def name_undefined(loaded) -> Iterator[Diagnostic]:
+    """## What it does
+    Reads every `${...}` in every macro body of the model's files, called or
+    not, and flags a name that is none of: a parameter of the macro (or of a
+    macro around it), a property defined in its body, a property or include
+    namespace defined for the whole document in any file the model may read or
+    any xacro file of the workspace, a name xacro provides (`pi`, `radians`,
+    `xacro.load_yaml`, math functions, read from xacro itself). A name defined
+    only where the macro is called counts as defined when every call, in the
+    whole workspace, defines it (a parameter of the calling macro, say). Names
+    a comprehension or lambda binds, and expressions Python cannot parse, are
+    left alone. The error is at the name's line and column, with the closest
+    name in scope.
+
+    ## Why is this bad?
+    xacro evaluates a macro's body only when it is called: a misspelt name in
+    a library passes every check until a model calls the macro, then the
+    expansion fails (or, for a macro nobody calls yet, the day someone does).
+
+    ## Example
+    ```xml
+    <robot name="r" xmlns:xacro="http://www.ros.org/wiki/xacro">
+      <xacro:macro name="wheel" params="prefix radius">
+        <link name="${prefix}_wheel">
+          <visual><geometry><cylinder radius="${raduis}" length="0.05"/></geometry></visual>
+        </link>
+      </xacro:macro>
+      <link name="base_link"/>
+    </robot>
+    ```
+
+    ## Use instead
+    ```xml
+    <robot name="r" xmlns:xacro="http://www.ros.org/wiki/xacro">
+      <xacro:macro name="wheel" params="prefix radius">
+        <link name="${prefix}_wheel">
+          <visual><geometry><cylinder radius="${radius}" length="0.05"/></geometry></visual>
+        </link>
+      </xacro:macro>
+      <link name="base_link"/>
+    </robot>
+    ```
+    """
+    sources = loaded.sources
+    failed = {(d.path, d.line) for d in loaded.diagnostics if d.code == "X003"}
+    for file in sources.files:
+        for expression in file.expressions:
+            if expression.macro is None:
+                continue
+            for name in free_names(expression.text) or ():
+                known = bound(file, expression.macro)
+                if name.name in known:
+                    continue
+                if sources.xacro is None:
+                    return  # without xacro's own names, any name may be one of them
+                builtins = sources.xacro.names
+                if name.name in builtins:
+                    continue
+                if _used(sources, lambda f: f.any_global or name.name in f.globals):
+                    continue
+                if sources.defined_for_calls(file, expression.macro, name.name):
+                    continue
+                place = expression.place._replace(offset=expression.place.offset + name.offset)
+                location = _at(file, place)
+                if (location.file, location.line) in failed:
+                    continue  # xacro's own error (X003) says it there
+                macro = file.macros[expression.macro].name
+                called = " nor by every call of it" if sources.calls(macro) else ""
+                scope = sorted(known | sources.facts.globals | builtins)
+                close = close_matches(name.name, scope)
+                hint = f"did you mean '{close[0]}'?" if close else f"add it to the params of macro '{macro}', or define it with <xacro:property>"
+                yield Diagnostic("X106", f"name '{name.name}' is defined neither in macro '{macro}'{called}", location, hint=hint)
+
+
+@check("X107", "xacro-tag-unprefixed", WARNING, "A xacro tag written without `xacro:`, which xacro leaves in the output unread.", in_check=False, sources=True)
+def tag_unprefixed(loaded) -> Iterator[Diagnostic]:
+    """## What it does
+    Flags `<include filename=...>`, `<property name=...>`, `<macro name=...>`,
+    `<arg name=...>`, `<insert_block name=...>`, `<if value=...>` and
+    `<unless value=...>` written without the `xacro:` prefix, at the top
+    level of a xacro file or in a xacro element's body (not inside a link or a
+    plugin, where such tags may be someone else's).
+
+    ## Why is this bad?
+    xacro 1 read these with a deprecation warning; xacro 2 (ROS 2, and the
+    `xacro` on PyPI) does not read them at all: the `<include>` is copied into
+    the URDF, which every consumer ignores, and the file it names is never
+    included.
+
+    ## Example
+    ```xml
+    <robot name="r" xmlns:xacro="http://www.ros.org/wiki/xacro">
+      <include filename="arm.xacro"/>
+      <xacro:property name="size" value="0.1"/>
+      <link name="base_link"><visual><geometry><box size="${size} ${size} ${size}"/></geometry></visual></link>
+    </robot>
+    ```
+
+    ## Use instead
+    ```xml
+    <robot name="r" xmlns:xacro="http://www.ros.org/wiki/xacro">
+      <xacro:include filename="arm.xacro"/>
+      <xacro:property name="size" value="0.1"/>
+      <link name="base_link"><visual><geometry><box size="${size} ${size} ${size}"/></geometry></visual></link>
+    </robot>
+    ```
+    """
+    for file in loaded.sources.files:
+        for old in file.old:
+            yield _diagnostic(
+                "X107", f"<{old.tag}> without the xacro: prefix is not read by xacro: it is copied into the URDF and does nothing",
+                file, old.place, f"write <xacro:{old.tag} ...> (with xmlns:xacro=\"http://www.ros.org/wiki/xacro\" on <robot>)",
+            )
+
+
+__all__ = ["argument_unused", "macro_name_fixed", "macro_unused", "name_undefined", "parameter_unused", "property_unused", "tag_unprefixed"]

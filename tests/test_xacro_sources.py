@@ -1,0 +1,521 @@
+"""The rules on the xacro sources and the package (P001, X101-X107) and xacro's warnings
+with their fix (X005), on small workspaces written here: each finding, and its clean
+counterpart. The layouts are those real repositories have (tests/ros_workspace.py):
+package names that differ from their folders, libraries in another repository of a
+colcon ``src/``."""
+
+from __future__ import annotations
+
+import json
+import subprocess
+import textwrap
+from pathlib import Path
+
+import pytest
+import xacro
+from conftest import require_tool, run_cli
+from ros_workspace import XACRO, edit, line_of, make_colcon_workspace, make_repository, package_xml
+
+import urdfcli
+from urdfcli.project.config import Config
+from urdfcli.read.xacro_scan import macro_parameters
+
+SOURCE_CODES = ("P001", "X101", "X102", "X103", "X104", "X105", "X106", "X107")
+
+
+def write(path: Path, text: str) -> Path:
+    path.parent.mkdir(parents=True, exist_ok=True)
+    path.write_text(textwrap.dedent(text))
+    return path
+
+
+def robot(body: str, name: str = "r") -> str:
+    return f'<?xml version="1.0"?>\n<robot name="{name}" {XACRO}>\n{textwrap.dedent(body).strip()}\n</robot>\n'
+
+
+def library(body: str) -> str:
+    return f'<?xml version="1.0"?>\n<robot {XACRO}>\n{textwrap.dedent(body).strip()}\n</robot>\n'
+
+
+def found(*paths: Path, codes=SOURCE_CODES, **settings) -> list[tuple[str, str, int, int | None]]:
+    """(code, file name, line, column) of the source findings of linting ``paths``."""
+    results = urdfcli.lint([str(p) for p in paths], config=Config.everything(), **settings)
+    return sorted(
+        (d.code, Path(d.path).name, d.line, d.column)
+        for result in results for d in result.diagnostics if d.code in codes
+    )
+
+
+def diagnostics(path: Path, code: str, **settings):
+    results = urdfcli.lint([str(path)], config=Config.everything(), **settings)
+    return [d for result in results for d in result.diagnostics if d.code == code]
+
+
+def column_of(path: Path, needle: str, after: str = "") -> tuple[int, int]:
+    """Line and column (1-based) of ``needle`` on the first line holding ``after`` and it."""
+    for number, line in enumerate(path.read_text().splitlines(), 1):
+        if needle in line and after in line:
+            return number, line.index(needle, line.index(after) if after else 0) + 1
+    raise AssertionError(f"{needle!r} not in {path}")
+
+
+# -- P001: the packages a package uses and declares ------------------------------------
+@pytest.fixture
+def packages(tmp_path):
+    """A repository: my_robot uses meshes of acme_meshes (in folder meshes_pkg) and
+    macros of acme_parts; both can be found, neither is declared yet."""
+    root = tmp_path / "repo"
+    (root / ".git").mkdir(parents=True)
+    write(root / "meshes_pkg" / "package.xml", package_xml("acme_meshes"))
+    write(root / "meshes_pkg" / "meshes" / "arm.stl", "solid arm\nendsolid arm\n")
+    write(root / "parts" / "package.xml", package_xml("acme_parts"))
+    write(root / "parts" / "urdf" / "arm.xacro", library('<xacro:macro name="arm" params="parent"><link name="arm"/><joint name="arm_joint" type="fixed"><parent link="${parent}"/><child link="arm"/></joint></xacro:macro>'))
+    write(root / "my_robot" / "package.xml", package_xml("my_robot"))
+    return root
+
+
+def model_using(root: Path, body: str) -> Path:
+    return write(root / "my_robot" / "urdf" / "robot.urdf.xacro", robot(body))
+
+
+def test_a_mesh_of_an_undeclared_package_is_a_warning_at_its_use_with_the_line_to_add(packages):
+    model = model_using(packages, """
+        <xacro:arg name="arm" default="false"/>
+        <link name="base_link"/>
+        <xacro:if value="$(arg arm)">
+          <link name="arm_link"><visual><geometry><mesh filename="package://acme_meshes/meshes/arm.stl"/></geometry></visual></link>
+          <joint name="arm_joint" type="fixed"><parent link="base_link"/><child link="arm_link"/></joint>
+        </xacro:if>
+        """)
+    [warning] = diagnostics(model, "P001")
+    assert (warning.line, warning.column) == column_of(model, "package://acme_meshes")  # in a branch not taken: a condition installs nothing
+    assert warning.severity.value == "warning"
+    assert "package 'acme_meshes'" in warning.message and "my_robot's package.xml does not declare it" in warning.message
+    assert warning.hint.startswith("add <exec_depend>acme_meshes</exec_depend> to ")
+    assert warning.hint.split(" to ")[1].split(":")[0].endswith("my_robot/package.xml")
+
+
+@pytest.mark.parametrize("kind", ["depend", "exec_depend", "build_export_depend", "build_depend", "test_depend", "run_depend"])
+def test_each_kind_of_dependency_declares_a_package(packages, kind):
+    model = model_using(packages, '<link name="base_link"><visual><geometry><mesh filename="package://acme_meshes/meshes/arm.stl"/></geometry></visual></link>')
+    assert [c for c, *_ in found(model)] == ["P001"]
+    edit(packages / "my_robot" / "package.xml", "</package>", f"  <{kind}>acme_meshes</{kind}>\n</package>")
+    assert found(model) == []
+
+
+def test_a_doc_depend_does_not_declare_a_package(packages):
+    model = model_using(packages, '<link name="base_link"><visual><geometry><mesh filename="package://acme_meshes/meshes/arm.stl"/></geometry></visual></link>')
+    edit(packages / "my_robot" / "package.xml", "</package>", "  <doc_depend>acme_meshes</doc_depend>\n</package>")
+    assert [c for c, *_ in found(model)] == ["P001"]
+
+
+def test_an_included_package_is_a_build_dependency_and_file_find_counts(packages):
+    model = model_using(packages, """
+        <xacro:include filename="$(find acme_parts)/urdf/arm.xacro"/>
+        <link name="base_link"><visual><geometry><mesh filename="file://$(find acme_meshes)/meshes/arm.stl"/></geometry></visual></link>
+        <xacro:arm parent="base_link"/>
+        """)
+    warnings = {d.message.split("'")[1]: d for d in diagnostics(model, "P001")}
+    assert warnings["acme_parts"].hint.startswith("add <depend>acme_parts</depend>")
+    assert (warnings["acme_parts"].line, warnings["acme_parts"].column) == column_of(model, "$(find acme_parts)")
+    assert warnings["acme_meshes"].hint.startswith("add <exec_depend>acme_meshes</exec_depend>")
+
+
+def test_one_warning_per_file_and_package_at_the_first_use(packages):
+    mesh = '<mesh filename="package://acme_meshes/meshes/arm.stl"/>'
+    model = model_using(packages, f"""
+        <link name="base_link"><visual><geometry>{mesh}</geometry></visual><collision><geometry>{mesh}</geometry></collision></link>
+        """)
+    [warning] = diagnostics(model, "P001")
+    assert "(and 1 more use in this file)" in warning.message
+
+
+def test_its_own_package_a_variable_and_a_package_found_nowhere_draw_nothing(packages):
+    model = model_using(packages, """
+        <xacro:property name="pkg" value="acme_meshes"/>
+        <link name="base_link"><visual><geometry><mesh filename="package://my_robot/meshes/base.stl"/></geometry></visual></link>
+        <xacro:if value="false">
+          <xacro:include filename="$(find ${pkg})/urdf/x.xacro"/>
+          <xacro:include filename="$(find no_such_package)/urdf/x.xacro"/>
+        </xacro:if>
+        """)
+    assert found(model, codes=("P001",)) == []
+
+
+def test_a_package_a_macro_parameter_names_is_judged_at_each_call_when_every_call_names_it(packages):
+    model = model_using(packages, """
+        <xacro:macro name="part" params="name pkg:=my_robot">
+          <link name="${name}"><visual><geometry><mesh filename="package://${pkg}/meshes/arm.stl"/></geometry></visual></link>
+        </xacro:macro>
+        <xacro:part name="base_link"/>
+        <xacro:part name="arm" pkg="acme_meshes"/>
+        <joint name="j" type="fixed"><parent link="base_link"/><child link="arm"/></joint>
+        """)
+    [warning] = diagnostics(model, "P001")
+    assert (warning.line, warning.column) == column_of(model, "acme_meshes", 'pkg="')  # the call that names it
+    edit(model, "<xacro:part name=\"base_link\"/>", "<xacro:property name=\"own\" value=\"my_robot\"/><xacro:part name=\"base_link\" pkg=\"${own}\"/>")
+    assert diagnostics(model, "P001") == []  # one call computes it: nothing is certain
+
+
+def test_a_plain_urdf_is_checked_through_its_meshes(packages):
+    model = write(packages / "my_robot" / "urdf" / "robot.urdf", """\
+        <robot name="r">
+          <link name="base_link"><visual><geometry><mesh filename="package://acme_meshes/meshes/arm.stl"/></geometry></visual></link>
+        </robot>
+        """)
+    [warning] = diagnostics(model, "P001")
+    assert warning.line == 2 and warning.hint.startswith("add <exec_depend>acme_meshes</exec_depend>")
+
+
+def test_a_package_of_another_repository_of_a_colcon_workspace(tmp_path):
+    repo_a, repo_b = make_colcon_workspace(tmp_path)
+    model = write(repo_a / "robot" / "urdf" / "robot.urdf.xacro", robot("""
+        <xacro:include filename="$(find acme_wheels)/urdf/wheel.xacro"/>
+        <link name="base_link"/>
+        <xacro:wheel prefix="left" parent="base_link" radius="0.1"><origin xyz="0 0 0"/></xacro:wheel>
+        """))
+    assert found(model, codes=("P001",)) == [("P001", "robot.urdf.xacro", *column_of(model, "$(find acme_wheels)"))]
+    edit(repo_a / "robot" / "package.xml", "</package>", "  <depend>acme_wheels</depend>\n</package>")
+    assert found(model, codes=("P001",)) == []
+    # repo_b's box_inertial serves no model of this workspace: noted, in repo_b's file
+    assert found(model) == [("X104", "inertia.xacro", *column_of(repo_b / "wheels" / "urdf" / "inertia.xacro", 'box_inertial"'))]
+
+
+# -- X101, X102, X104: definitions nothing uses ---------------------------------------
+def test_an_argument_read_nowhere_is_a_warning_at_its_definition(tmp_path):
+    model = write(tmp_path / "robot.urdf.xacro", robot("""
+        <xacro:arg name="use_gpu" default="false"/>
+        <link name="base_link"/>
+        """))
+    [warning] = diagnostics(model, "X101")
+    assert (warning.line, warning.column, warning.severity.value) == (*column_of(model, "use_gpu"), "warning")  # at the name
+    assert "use_gpu:=VALUE changes nothing" in warning.message
+
+
+@pytest.mark.parametrize("reading", [
+    '<xacro:if value="$(arg use_gpu)"><link name="gpu"/></xacro:if>',
+    '<xacro:if value="$(eval use_gpu == \'true\')"><link name="gpu"/></xacro:if>',
+    '<xacro:if value="${xacro.arg(\'use_gpu\') == \'true\'}"><link name="gpu"/></xacro:if>',
+    '<xacro:if value="$(arg ${\'use_\' + \'gpu\'})"><link name="gpu"/></xacro:if>',  # a computed name: any argument may be read
+])
+def test_an_argument_read_any_way_xacro_reads_one_is_clean(tmp_path, reading):
+    model = write(tmp_path / "robot.urdf.xacro", robot(f"""
+        <xacro:arg name="use_gpu" default="false"/>
+        <link name="base_link"/>
+        {reading}
+        """))
+    assert found(model, codes=("X101",)) == []
+
+
+def test_an_argument_read_in_a_file_included_under_a_condition_is_clean(tmp_path):
+    write(tmp_path / "gpu.xacro", library('<xacro:property name="gpu_name" value="$(arg gpu_name)"/>'))
+    model = write(tmp_path / "robot.urdf.xacro", robot("""
+        <xacro:arg name="gpu_name" default="none"/>
+        <xacro:arg name="gpu" default="false"/>
+        <link name="base_link"/>
+        <xacro:if value="$(arg gpu)"><xacro:include filename="gpu.xacro"/></xacro:if>
+        """))
+    assert found(model, codes=("X101",)) == []  # the expansion never read gpu.xacro; its includes may
+
+
+def test_a_property_used_nowhere_is_info_and_one_used_anywhere_is_not(tmp_path):
+    model = write(tmp_path / "robot.urdf.xacro", robot("""
+        <xacro:property name="wheel_width" value="0.04"/>
+        <xacro:property name="wheel_radius" value="0.1"/>
+        <xacro:property name="wheel_origin"><origin xyz="0 0 0"/></xacro:property>
+        <link name="base_link"/>
+        <link name="wheel"><visual><geometry><cylinder radius="${wheel_radius}" length="0.1"/></geometry></visual></link>
+        <joint name="wheel_joint" type="fixed"><parent link="base_link"/><child link="wheel"/><xacro:insert_block name="wheel_origin"/></joint>
+        """))
+    [info] = diagnostics(model, "X102")
+    assert info.severity.value == "info" and "'wheel_width'" in info.message and info.line == line_of(model, "wheel_width")
+
+
+def test_a_library_property_another_model_of_the_workspace_uses_is_clean(tmp_path):
+    (tmp_path / ".git").mkdir()
+    write(tmp_path / "sizes.xacro", library('<xacro:property name="base_size" value="0.4"/><xacro:property name="mast_height" value="1.2"/>'))
+    rover = write(tmp_path / "rover.urdf.xacro", robot('<xacro:include filename="sizes.xacro"/><link name="base"><visual><geometry><box size="${base_size} 1 1"/></geometry></visual></link>'))
+    assert [(c, f) for c, f, *_ in found(rover, codes=("X102",))] == [("X102", "sizes.xacro")]
+    write(tmp_path / "mast.urdf.xacro", robot('<xacro:include filename="sizes.xacro"/><link name="mast"><visual><geometry><box size="1 1 ${mast_height}"/></geometry></visual></link>'))
+    assert found(rover, codes=("X102",)) == []
+
+
+def test_a_macro_of_a_model_nothing_calls_is_info(tmp_path):
+    model = write(tmp_path / "robot.urdf.xacro", robot("""
+        <xacro:macro name="bumper" params="">
+          <link name="bumper_link"/>
+        </xacro:macro>
+        <link name="base_link"/>
+        """))
+    [info] = diagnostics(model, "X104")
+    assert info.severity.value == "info" and "'bumper'" in info.message and info.line == line_of(model, "bumper")
+
+
+def test_a_library_macro_is_noted_only_when_no_model_of_the_workspace_calls_it(tmp_path):
+    root = make_repository(tmp_path / "acme")
+    (root / ".git").mkdir()
+    sensor = root / "common" / "urdf" / "sensor.xacro"
+    assert found(sensor) == [("X104", "sensor.xacro", *column_of(sensor, 'sensor"', "xacro:macro"))]
+    edit(root / "description" / "urdf" / "rover.urdf.xacro", '<link name="base_footprint"/>',
+         '<link name="base_footprint"/>\n  <xacro:include filename="$(find acme_common)/urdf/sensor.xacro"/>\n  <xacro:sensor parent="base_footprint"/>')
+    assert found(sensor, codes=("X104",)) == []
+
+
+def test_a_computed_macro_call_counts_as_a_call_of_any_macro(tmp_path):
+    model = write(tmp_path / "robot.urdf.xacro", robot("""
+        <xacro:property name="part" value="bumper"/>
+        <xacro:macro name="bumper" params=""><link name="bumper_link"/></xacro:macro>
+        <xacro:macro name="mast" params=""><link name="mast_link"/></xacro:macro>
+        <xacro:call macro="${part}"/>
+        """))
+    assert found(model, codes=("X104",)) == []
+
+
+# -- X103: parameters a macro never uses ------------------------------------------------
+def test_an_unused_parameter_and_a_block_never_inserted_are_warnings_where_params_names_them(tmp_path):
+    model = write(tmp_path / "robot.urdf.xacro", robot("""
+        <xacro:macro name="wheel" params="prefix xyz *origin">
+          <link name="${prefix}_wheel"/>
+          <joint name="${prefix}_joint" type="fixed"><parent link="base_link"/><child link="${prefix}_wheel"/></joint>
+        </xacro:macro>
+        <link name="base_link"/>
+        <xacro:wheel prefix="left" xyz="0 0.2 0"><origin xyz="0 0.2 0"/></xacro:wheel>
+        """))
+    warnings = diagnostics(model, "X103")
+    assert [(d.line, d.column) for d in warnings] == [column_of(model, "xyz", "params="), column_of(model, "*origin", "params=")]
+    assert "parameter 'xyz' of macro 'wheel'" in warnings[0].message and "*origin" in warnings[1].message
+    assert warnings[1].hint.startswith('insert it with <xacro:insert_block name="origin"/>')
+
+
+def test_parameters_used_in_nested_macros_by_callees_or_forwarded_are_clean(tmp_path):
+    model = write(tmp_path / "robot.urdf.xacro", robot("""
+        <xacro:macro name="hub" params=""><link name="${prefix}_hub"/></xacro:macro>
+        <xacro:macro name="tyre" params="prefix:=^ width"><link name="${prefix}_tyre_${width}"/></xacro:macro>
+        <xacro:macro name="wheel" params="prefix size *origin">
+          <xacro:macro name="rim" params=""><link name="${prefix}_rim_${size}"/></xacro:macro>
+          <xacro:rim/>
+          <xacro:hub/>
+          <xacro:tyre width="1"/>
+          <joint name="${prefix}_joint" type="fixed"><parent link="base_link"/><child link="${prefix}_hub"/><xacro:insert_block name="origin"/></joint>
+        </xacro:macro>
+        <link name="base_link"/>
+        <xacro:wheel prefix="left" size="2"><origin xyz="0 0 0"/></xacro:wheel>
+        """))
+    assert found(model, codes=("X103",)) == []
+
+
+# -- X105: names that do not depend on a parameter --------------------------------------
+NAMED_MACRO = """
+    <xacro:macro name="wheel" params="side y">
+      <link name="{link}"/>
+      <joint name="${{side}}_wheel_joint" type="continuous">
+        <parent link="base_link"/><child link="{link}"/><origin xyz="0 ${{y}} 0"/>
+      </joint>
+    </xacro:macro>
+    <link name="base_link"/>
+"""
+
+
+def test_a_fixed_name_made_by_two_calls_is_an_error_naming_both_calls(tmp_path):
+    model = write(tmp_path / "robot.urdf.xacro", robot(NAMED_MACRO.format(link="wheel_link") + """
+        <xacro:wheel side="left" y="0.2"/>
+        <xacro:wheel side="right" y="-0.2"/>
+        """))
+    [error] = diagnostics(model, "X105")
+    calls = ["{}:{}:{}".format(model.name, *column_of(model, f'<xacro:wheel side="{side}"')) for side in ("left", "right")]
+    assert error.severity.value == "error" and (error.line, error.column) == column_of(model, 'wheel_link"', "<link")
+    assert f"its two calls (at {calls[0]} and {calls[1]})" in error.message.replace(str(tmp_path) + "/", "")
+    assert "N004" in [d.code for d in urdfcli.lint([str(model)])[0].diagnostics]  # the duplicate link, as urdfdom sees it
+
+
+def test_a_fixed_name_made_by_one_call_is_info(tmp_path):
+    model = write(tmp_path / "robot.urdf.xacro", robot(NAMED_MACRO.format(link="wheel_link") + '<xacro:wheel side="left" y="0.2"/>'))
+    [info] = diagnostics(model, "X105")
+    assert info.severity.value == "info" and "can be called once per robot" in info.message and "${" in info.hint
+
+
+@pytest.mark.parametrize("link", ["${side}_wheel_link", "${prefix}wheel_link"])
+def test_a_name_built_from_a_parameter_or_a_property_that_differs_between_calls_is_clean(tmp_path, link):
+    model = write(tmp_path / "robot.urdf.xacro", robot(NAMED_MACRO.format(link=link) + """
+        <xacro:property name="prefix" value="left_"/>
+        <xacro:wheel side="left" y="0.2"/>
+        <xacro:property name="prefix" value="right_"/>
+        <xacro:wheel side="right" y="-0.2"/>
+        """))
+    assert found(model, codes=("X105", "N004", "N005")) == []
+
+
+# -- X106: names in macro bodies --------------------------------------------------------
+def test_an_undefined_name_in_a_library_nothing_includes_fails_check_at_its_column(tmp_path):
+    (tmp_path / ".git").mkdir()
+    lib = write(tmp_path / "parts.xacro", library("""
+        <xacro:property name="wheel_radius" value="0.1"/>
+        <xacro:macro name="wheel" params="prefix">
+          <link name="${prefix}_wheel"><visual><geometry><cylinder radius="${wheel_raduis}" length="${y}"/></geometry></visual></link>
+        </xacro:macro>
+        """))
+    done = run_cli("check", "--format", "json", str(lib), cwd=tmp_path)
+    assert done.returncode == 1, done.stderr.decode()
+    report = json.loads(done.stdout)
+    errors = [d for d in report["files"][0]["diagnostics"] if d["code"] == "X106"]
+    line, column = column_of(lib, "${y}")
+    assert [(d["line"], d["column"], d["severity"]) for d in errors] == [(*column_of(lib, "wheel_raduis"), "error"), (line, column + 2, "error")]
+    [api] = diagnostics(lib, "X106")[:1]
+    assert api.hint == "did you mean 'wheel_radius'?"
+
+
+def test_names_xacro_provides_and_names_an_expression_binds_are_clean(tmp_path):
+    lib = write(tmp_path / "parts.xacro", library("""
+        <xacro:macro name="part" params="n">
+          <link name="p${n}"><visual><origin rpy="${pi/2} ${radians(90)} ${math.cos(0)}"/><geometry><box size="${' '.join(str(x) for x in [1, 2, 3])}"/></geometry></visual></link>
+          <xacro:property name="half" value="${python.len([1]) / 2}"/>
+          <link name="q${half}"/>
+          <link name="r${(lambda v: v * 2)(n)}"/>
+        </xacro:macro>
+        """))
+    assert found(lib, codes=("X106",)) == []
+
+
+def test_a_name_every_call_defines_is_clean_and_one_a_call_lacks_is_an_error(tmp_path):
+    (tmp_path / ".git").mkdir()
+    write(tmp_path / "parts.xacro", library('<xacro:macro name="hub" params=""><link name="${side}_hub"/></xacro:macro>'))
+    model = write(tmp_path / "robot.urdf.xacro", robot("""
+        <xacro:include filename="parts.xacro"/>
+        <xacro:macro name="wheel" params="side"><xacro:hub/></xacro:macro>
+        <link name="base_link"/>
+        <xacro:wheel side="left"/>
+        """))
+    assert found(model, codes=("X106",)) == []
+    write(tmp_path / "other.urdf.xacro", robot('<xacro:include filename="parts.xacro"/><xacro:macro name="caster" params=""><xacro:hub/></xacro:macro>'))
+    assert found(model, codes=("X106",)) == [("X106", "parts.xacro", *column_of(tmp_path / "parts.xacro", "side"))]
+
+
+def test_an_include_that_cannot_be_followed_leaves_names_alone(tmp_path):
+    lib = write(tmp_path / "parts.xacro", library("""
+        <xacro:include filename="$(arg config_file)"/>
+        <xacro:macro name="part" params=""><link name="${configured_name}"/></xacro:macro>
+        """))
+    assert found(lib, codes=("X106", "X104", "X102")) == []
+
+
+def test_the_undefined_names_are_those_xacro_cannot_evaluate(tmp_path):
+    """Each name judged by X106 against the real xacro: a call of the macro fails
+    with NameError exactly when X106 flags the name."""
+    names = ["pi", "radians", "load_yaml", "python", "xacro", "math", "sorted", "wheel_size", "prefix", "undefined_thing", "Pi", "cos", "inf"]
+    flagged, failed = [], []
+    for name in names:
+        macro = f"""
+            <xacro:property name="wheel_size" value="1"/>
+            <xacro:macro name="part" params="prefix"><link name="l"><visual><geometry><box size="${{str({name})[0:1]}} 1 1"/></geometry></visual></link></xacro:macro>
+            """
+        lib = write(tmp_path / name / "lib" / "parts.xacro", library(macro))  # nothing calls it: only X106 can tell
+        flagged += [name] if found(lib, codes=("X106",)) else []
+        model = write(tmp_path / name / "model" / "robot.urdf.xacro", robot(macro + '<xacro:part prefix="a"/>'))
+        xacro = subprocess.run([require_tool("xacro"), str(model)], capture_output=True, text=True)
+        failed += [name] if xacro.returncode != 0 and f"name '{name}' is not defined" in xacro.stderr else []
+    assert flagged == failed == ["undefined_thing", "Pi"]
+
+
+@pytest.mark.parametrize("params", [
+    "prefix parent *origin **content",
+    "x:=1 y:=^ z:=^|d w:=${a * 2} v:='a b' u:=\"c d\" t:=$(arg t)",
+    "\n    name\n    tf_prefix\n    initial_positions:=${dict(a=0.0,b=-1.57)}\n    keep_alive_count:=2",
+    "a= b:=1 c",
+])
+def test_macro_parameters_are_split_as_xacro_splits_them(params):
+    expected, rest = [], params
+    while rest and rest.strip():
+        name, value, rest = xacro.parse_macro_arg(rest)
+        forward, default = value if value is not None else (None, None)
+        expected.append((name.lstrip("*"), name.startswith("*"), default, forward is not None))
+    assert [tuple(p) for p in macro_parameters(params)] == expected
+
+
+def test_the_names_xacro_provides_come_from_xacro_in_the_worker():
+    from urdfcli.session import Session
+
+    with Session() as session:
+        names = session.expander.global_names()
+    assert {"pi", "radians", "load_yaml", "xacro", "python", "math", "cos"} <= names.names
+    assert {"load_yaml", "arg"} <= names.members["xacro"] and "vars" not in names.members["python"]  # as the guard leaves them
+
+
+# -- X107, X005: what xacro does not read, and its warnings ------------------------------
+def test_an_unprefixed_include_is_a_warning_and_a_prefixed_one_or_a_plugin_tag_is_not(tmp_path):
+    write(tmp_path / "arm.xacro", library('<xacro:property name="size" value="1"/>'))
+    model = write(tmp_path / "robot.urdf.xacro", robot("""
+        <include filename="arm.xacro"/>
+        <link name="base_link"/>
+        <gazebo><plugin name="p" filename="libp.so"><include filename="x"/></plugin></gazebo>
+        """))
+    [warning] = diagnostics(model, "X107")
+    assert (warning.line, warning.column) == column_of(model, "<include")
+    assert warning.hint.startswith("write <xacro:include")
+    edit(model, "<include filename", "<xacro:include filename")
+    assert found(model, codes=("X107",)) == []
+
+
+def test_xacros_deprecation_is_located_at_the_call_with_its_fix(tmp_path):
+    write(tmp_path / "c.yaml", "a: 1\n")
+    model = write(tmp_path / "robot.urdf.xacro", robot("""
+        <xacro:property name="cfg" value="${load_yaml('c.yaml')}"/>
+        <link name="base_link"><visual><geometry><box size="${cfg['a']} 1 1"/></geometry></visual></link>
+        """))
+    [warning] = [d for d in diagnostics(model, "X005") if "load_yaml" in d.message]
+    real = subprocess.run([require_tool("xacro"), str(model)], capture_output=True, text=True, cwd=tmp_path)
+    assert warning.message in real.stderr  # xacro's own words
+    assert (warning.line, warning.column) == column_of(model, "load_yaml(")
+    assert warning.hint.startswith("write xacro.load_yaml(...)")
+
+
+def test_expand_takes_inorder_and_says_it_does_nothing(tmp_path):
+    model = write(tmp_path / "robot.urdf.xacro", robot('<link name="base_link"/>'))
+    plain, inorder = run_cli("expand", str(model)), run_cli("expand", "--inorder", str(model))
+    assert inorder.returncode == 0 and inorder.stdout == plain.stdout
+    assert "--inorder does nothing" in inorder.stderr.decode() and "drop the option" in inorder.stderr.decode()
+
+
+# -- selection, configuration and noqa apply as to any rule ------------------------------
+def test_select_noqa_and_per_file_ignores_apply_to_source_rules(tmp_path):
+    model = write(tmp_path / "robot.urdf.xacro", robot("""
+        <xacro:property name="unused_a" value="1"/>
+        <xacro:property name="unused_b" value="2"/>  <!-- urdfcli: noqa: X102 -->
+        <xacro:arg name="unused_arg" default="1"/>
+        <link name="base_link"/>
+        """))
+    done = run_cli("lint", "--format", "json", "--select", "X102", str(model), cwd=tmp_path)
+    codes = [(d["code"], d["line"]) for d in json.loads(done.stdout)["files"][0]["diagnostics"]]
+    assert codes == [("X102", line_of(model, "unused_a"))]
+    done = run_cli("lint", "--format", "json", "--select", "X101,X102", str(model), cwd=tmp_path)
+    assert done.returncode == 1 and {d["code"] for d in json.loads(done.stdout)["files"][0]["diagnostics"]} == {"X101", "X102"}
+    write(tmp_path / "pyproject.toml", '[tool.urdfcli.per-file-ignores]\n"robot.urdf.xacro" = ["X101"]\n')
+    done = run_cli("lint", "--format", "json", "--select", "X101,X102", str(model), cwd=tmp_path)
+    assert done.returncode == 0 and {d["code"] for d in json.loads(done.stdout)["files"][0]["diagnostics"]} == {"X102"}
+
+
+def test_a_model_that_does_not_expand_still_has_its_sources_linted_and_configured(tmp_path):
+    model = write(tmp_path / "robot.urdf.xacro", robot("""
+        <xacro:arg name="unused_arg" default="1"/>
+        <xacro:macro name="m" params=""><link name="${nowhere}"/></xacro:macro>
+        <link name="${undefined_at_top}"/>
+        """))
+    codes = [d.code for d in urdfcli.lint([str(model)], config=Config.everything())[0].diagnostics]
+    assert codes.count("X003") == 1 and "X101" in codes and "X106" in codes
+    codes = [d.code for d in urdfcli.lint([str(model)], select=["X003"])[0].diagnostics]
+    assert codes == ["X003"]  # why nothing was checked is always said; the source rules are selected away
+
+
+# -- the real layouts of the suite ---------------------------------------------------------
+def test_the_repository_layouts_draw_no_source_finding_until_a_mistake_is_made(tmp_path):
+    root = make_repository(tmp_path / "acme_robots")
+    (root / ".git").mkdir()
+    models = [root / "description/urdf/rover.urdf.xacro"]
+    wheel = root / "common/urdf/wheel.xacro"
+    before = found(*models, wheel)
+    assert before == [], before
+    edit(wheel, 'params="prefix parent radius *origin"', 'params="prefix parent radius offset *origin"')
+    edit(wheel, '<axis xyz="0 0 1"/>', '<axis xyz="0 0 1"/>\n      <limit effort="${max_effort}" velocity="1"/>')
+    assert found(wheel) == [
+        ("X103", "wheel.xacro", *column_of(wheel, "offset", "params=")),
+        ("X106", "wheel.xacro", *column_of(wheel, "max_effort")),
+    ]
