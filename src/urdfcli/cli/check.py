@@ -17,6 +17,7 @@ from .common import (
     InputsArgument,
     IsolatedOption,
     PackagePathOption,
+    TargetOption,
     choose,
     format_option,
     report_unreadable,
@@ -35,6 +36,7 @@ def check(
     inputs: InputsArgument,
     output_format: FormatOption = "auto",
     strict: Annotated[bool, typer.Option("--strict", help="Fail (exit 1) on warnings too.")] = False,
+    target: TargetOption = None,
     package_path: PackagePathOption = None,
     config: ConfigOption = None,
     isolated: IsolatedOption = False,
@@ -52,7 +54,7 @@ def check(
     output_format = choose(output_format, FORMATS)
     paths, mappings = split_inputs(inputs)
     output = Output.standard(color)
-    with session(package_path, config=config, isolated=isolated) as run:
+    with session(package_path, config=config, isolated=isolated, targets=target) as run:
         found = api.run(paths, mappings, "check", run)
         report_unreadable(output, found.unreadable)
         report.reporter(output_format)(found.results, output, "check", run.sources)

@@ -71,6 +71,12 @@ class Rule(NamedTuple):
     function: Callable[..., Iterator["Diagnostic"]] | None = None
     always: bool = False  # runs on every model read, whatever the command (the tree's structure)
     inertial_fix: bool = False  # a new <inertial> fixes what it finds (`inertia --suggest` prints one)
+    target: str | None = None  # a consumer's rule (``mujoco``, or the profile its examples use, ``pinocchio:mimic``): runs only for --target
+
+    @property
+    def consumer(self) -> str | None:
+        """The consumer a target rule is about (None for the other rules)."""
+        return self.target.split(":")[0] if self.target else None
 
     @property
     def defaults(self) -> dict[str, Any]:
@@ -83,10 +89,13 @@ class Rule(NamedTuple):
         known = [o.name for o in self.options]
         raise KeyError(f"rule {self.code} ({self.name}) has no option '{name}'" + _did_you_mean(name, known) + (f"; its options are {', '.join(known)}" if known else "; it has no options"))
 
-    def run(self, loaded: "Loaded", options: dict[str, Any] | None = None) -> Iterator["Diagnostic"]:
-        """The rule's diagnostics on a loaded model, with options over the defaults."""
+    def run(self, loaded: "Loaded", options: dict[str, Any] | None = None, profile: Any = None) -> Iterator["Diagnostic"]:
+        """The rule's diagnostics on a loaded model, with options over the defaults; a
+        target rule's for the consumer's ``profile`` (a :class:`urdfcli.model.targets.Profile`)."""
         if self.function is None:
             return iter(())
+        if self.target is not None:
+            return self.function(loaded, profile)
         return self.function(loaded, options) if self.options else self.function(loaded)
 
     def sections(self) -> dict[str, str]:

@@ -1,0 +1,187 @@
+"""Loading a model into a real consumer (MuJoCo, Drake, Pinocchio, PyBullet), for
+``check --target NAME --load`` and the differential tests.
+
+The consumer runs in a child process (``python -m urdfcli.project.consumers NAME
+VARIANTS FILE``): PyBullet segfaults on some models and Drake turns some inputs
+into ``SystemExit``, neither of which may take urdfcli down. The child prints
+one JSON object: whether the consumer accepted the model, its error, what it
+printed, and what it built (bodies with their mass and principal moments,
+joints with their kind and range, degrees of freedom). Nothing here is
+imported by a prediction: only the child imports the consumer.
+"""
+
+from __future__ import annotations
+
+import contextlib
+import json
+import math
+import os
+import subprocess
+import sys
+import tempfile
+from collections.abc import Iterator
+from typing import Any, NamedTuple
+
+PACKAGES = {"mujoco": "mujoco", "drake": "pydrake", "pinocchio": "pinocchio", "pybullet": "pybullet"}
+INSTALL = {"mujoco": "mujoco", "drake": "drake", "pinocchio": "pin", "pybullet": "pybullet"}
+TIMEOUT = 120.0  # seconds a consumer may take to load one model
+
+
+class Loaded(NamedTuple):
+    """What a consumer did with a model. ``crashed`` is the signal that killed it."""
+
+    accepted: bool
+    error: str = ""
+    printed: str = ""  # what the consumer wrote to its standard output and error
+    built: dict[str, Any] = {}
+    crashed: int | None = None
+
+
+def installed(target: str) -> bool:
+    """Whether the consumer's Python package can be imported here (without importing it)."""
+    import importlib.util
+
+    return importlib.util.find_spec(PACKAGES[target]) is not None
+
+
+def install_hint(target: str) -> str:
+    return f"pip install {INSTALL[target]}"
+
+
+def load(target: str, path: str, variants: tuple[str, ...] = ()) -> Loaded:
+    """Load ``path`` (a plain URDF file) into ``target`` in a child process."""
+    command = [sys.executable, "-m", "urdfcli.project.consumers", target, ",".join(variants), path]
+    try:
+        done = subprocess.run(command, capture_output=True, text=True, timeout=TIMEOUT, errors="replace")
+    except subprocess.TimeoutExpired:
+        return Loaded(False, f"{target} did not finish loading in {TIMEOUT:.0f} s")
+    if done.returncode < 0:
+        return Loaded(False, f"{target} crashed (signal {-done.returncode})", done.stderr[-2000:], crashed=-done.returncode)
+    lines = done.stdout.strip().splitlines()
+    if not lines:
+        return Loaded(False, f"{target} exited with status {done.returncode}: {done.stderr.strip()[-500:]}")
+    answer = json.loads(lines[-1])
+    return Loaded(answer["accepted"], answer.get("error", ""), answer.get("printed", ""), answer.get("built", {}))
+
+
+# -- in the child process ----------------------------------------------------------------
+
+
+@contextlib.contextmanager
+def captured() -> Iterator[list[str]]:
+    """What C and Python code write to file descriptors 1 and 2 while the block runs."""
+    found: list[str] = []
+    sys.stdout.flush()
+    sys.stderr.flush()
+    saved = os.dup(1), os.dup(2)
+    with tempfile.TemporaryFile() as sink:
+        os.dup2(sink.fileno(), 1)
+        os.dup2(sink.fileno(), 2)
+        try:
+            yield found
+        finally:
+            sys.stdout.flush()
+            sys.stderr.flush()
+            os.dup2(saved[0], 1)
+            os.dup2(saved[1], 2)
+            os.close(saved[0])
+            os.close(saved[1])
+            sink.seek(0)
+            found.append(sink.read().decode(errors="replace"))
+
+
+def _finite(value: float) -> float | None:
+    return float(value) if math.isfinite(value) else None
+
+
+def _mujoco(path: str, variants: tuple[str, ...]) -> dict:
+    import mujoco
+
+    model = mujoco.MjModel.from_xml_path(path)
+    name = lambda kind, i: mujoco.mj_id2name(model, kind, i)  # noqa: E731
+    bodies = [
+        {"name": name(mujoco.mjtObj.mjOBJ_BODY, i), "mass": float(model.body_mass[i]), "inertia": [float(v) for v in model.body_inertia[i]],
+         "parent": name(mujoco.mjtObj.mjOBJ_BODY, int(model.body_parentid[i]))}
+        for i in range(model.nbody)
+    ]
+    kinds = {0: "free", 1: "ball", 2: "slide", 3: "hinge"}
+    joints = [
+        {"name": name(mujoco.mjtObj.mjOBJ_JOINT, i), "type": kinds[int(model.jnt_type[i])], "limited": bool(model.jnt_limited[i]),
+         "range": [float(v) for v in model.jnt_range[i]]}
+        for i in range(model.njnt)
+    ]
+    return {"bodies": bodies, "joints": joints, "nq": model.nq, "nv": model.nv, "ngeom": model.ngeom, "equalities": model.neq}
+
+
+def _drake(path: str, variants: tuple[str, ...]) -> dict:
+    from pydrake.multibody.parsing import Parser
+    from pydrake.multibody.plant import AddMultibodyPlantSceneGraph
+    from pydrake.multibody.tree import BodyIndex, JointIndex
+    from pydrake.systems.framework import DiagramBuilder
+
+    builder = DiagramBuilder()
+    plant, _ = AddMultibodyPlantSceneGraph(builder, 1e-3)
+    Parser(plant).AddModels(path)
+    plant.Finalize()
+    bodies = []
+    for i in range(1, plant.num_bodies()):
+        body = plant.get_body(BodyIndex(i))
+        inertia = body.default_spatial_inertia()
+        moments = inertia.CalcRotationalInertia().CalcPrincipalMomentsOfInertia()
+        bodies.append({"name": body.name(), "mass": float(body.default_mass()), "inertia": [float(m) for m in moments]})
+    joints = []
+    for i in range(plant.num_joints()):
+        joint = plant.get_joint(JointIndex(i))
+        lower, upper = joint.position_lower_limits(), joint.position_upper_limits()
+        joints.append({"name": joint.name(), "type": joint.type_name(), "lower": [_finite(v) for v in lower], "upper": [_finite(v) for v in upper]})
+    return {"bodies": bodies, "joints": joints, "nq": plant.num_positions(), "nv": plant.num_velocities()}
+
+
+def _pinocchio(path: str, variants: tuple[str, ...]) -> dict:
+    import pinocchio
+
+    arguments: list = [path]
+    if "free-flyer" in variants:
+        arguments.append(pinocchio.JointModelFreeFlyer())
+    model = pinocchio.buildModelFromUrdf(*arguments, mimic="mimic" in variants) if "mimic" in variants else pinocchio.buildModelFromUrdf(*arguments)
+    joints = [{"name": model.names[i], "type": model.joints[i].shortname(), "nq": model.joints[i].nq, "nv": model.joints[i].nv,
+               "mass": float(model.inertias[i].mass)} for i in range(1, model.njoints)]
+    frames = [{"name": f.name, "type": str(f.type).rsplit(".", 1)[-1]} for f in model.frames]
+    return {"joints": joints, "frames": frames, "nq": model.nq, "nv": model.nv, "mass": float(sum(i.mass for i in model.inertias))}
+
+
+def _pybullet(path: str, variants: tuple[str, ...]) -> dict:
+    import pybullet
+
+    client = pybullet.connect(pybullet.DIRECT)
+    flags = pybullet.URDF_USE_INERTIA_FROM_FILE if "inertia-from-file" in variants else 0
+    body = pybullet.loadURDF(path, flags=flags, useFixedBase="fixed-base" in variants, physicsClientId=client)
+    base = pybullet.getDynamicsInfo(body, -1, physicsClientId=client)
+    links = [{"name": pybullet.getBodyInfo(body, physicsClientId=client)[0].decode(), "mass": base[0], "inertia": list(base[2])}]
+    joints = []
+    for i in range(pybullet.getNumJoints(body, physicsClientId=client)):
+        info = pybullet.getJointInfo(body, i, physicsClientId=client)
+        dynamics = pybullet.getDynamicsInfo(body, i, physicsClientId=client)
+        links.append({"name": info[12].decode(), "mass": dynamics[0], "inertia": list(dynamics[2])})
+        joints.append({"name": info[1].decode(), "type": int(info[2]), "lower": info[8], "upper": info[9]})
+    return {"links": links, "joints": joints}
+
+
+LOADERS = {"mujoco": _mujoco, "drake": _drake, "pinocchio": _pinocchio, "pybullet": _pybullet}
+
+
+def main(argv: list[str]) -> int:
+    target, variants, path = argv[0], tuple(v for v in argv[1].split(",") if v), argv[2]
+    answer: dict[str, Any] = {"accepted": True}
+    with captured() as printed:
+        try:
+            answer["built"] = LOADERS[target](path, variants)
+        except BaseException as error:  # noqa: BLE001 -- Drake's asserts raise SystemExit
+            answer = {"accepted": False, "error": f"{type(error).__name__}: {error}".strip()}
+    answer["printed"] = printed[0] if printed else ""
+    print(json.dumps(answer))
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv[1:]))

@@ -1,0 +1,181 @@
+"""Gazebo's URDF conversion by sdformat 12 (``sdf::Root::Load``, ``ign sdf -p``): src/parser_urdf.cc
+(CreateSDF, CreateLink, ReduceFixedJoints). sdformat 13 and 14 print as warnings what 12 writes
+only to ~/.sdformat/sdformat.log, and can turn massless fixed links into frames
+(gazebosim/sdformat pull request 1238)."""
+
+from __future__ import annotations
+
+from ...model import massprops
+from ...model.targets import build
+from ..base import ERROR, INFO, WARNING, check
+from .common import limit_at, link_at, names, number
+
+
+@check("C501", "gazebo-drops-link", WARNING, "Gazebo drops a massless link with its joint and subtree.", target="gazebo")
+def drops_link(loaded, profile):
+    """## What it does
+    With `--target gazebo`: finds a link with no `<inertial>` or no positive mass that
+    Gazebo does not lump into a parent (its joint moves, or its fixed joint is kept
+    with `preserveFixedJoint`), and says which links below it go with it.
+
+    ## Why is this bad?
+    sdformat leaves such a link out of the SDF "not modeled in sdf", with its parent
+    joint and every link below it (parser_urdf.cc, `CreateSDF`); sdformat 12 writes
+    this only to a debug log. A massless root empties the model.
+
+    ## Example
+    ```xml
+    <robot name="rover">
+      <link name="chassis"><inertial><mass value="5"/><inertia ixx="1" ixy="0" ixz="0" iyy="1" iyz="0" izz="1"/></inertial></link>
+      <link name="pan"/>
+      <joint name="pan_joint" type="continuous"><parent link="chassis"/><child link="pan"/></joint>
+    </robot>
+    ```
+
+    ## Use instead
+    ```xml
+    <robot name="rover">
+      <link name="chassis"><inertial><mass value="5"/><inertia ixx="1" ixy="0" ixz="0" iyy="1" iyz="0" izz="1"/></inertial></link>
+      <link name="pan"><inertial><mass value="0.1"/><inertia ixx="1e-4" ixy="0" ixz="0" iyy="1e-4" iyz="0" izz="1e-4"/></inertial></link>
+      <joint name="pan_joint" type="continuous"><parent link="chassis"/><child link="pan"/></joint>
+    </robot>
+    ```
+    """
+    dropped = build(loaded, profile).dropped
+    for link, why in dropped.items():
+        if why.startswith("below "):
+            continue
+        below = [name for name, reason in dropped.items() if reason == f"below {link}, which is dropped"]
+        also = f" and the {len(below)} link{'s' if len(below) > 1 else ''} below it ({names(below)})" if below else ""
+        yield loaded.diagnostic(
+            "C501",
+            f"Gazebo drops link '{link}'{also}: {why}",
+            link_at(loaded, link),
+            "give it an <inertial> with a small positive mass and tensor",
+            subjects=(link, *below),
+        )
+
+
+@check("C502", "gazebo-invalid-inertia", ERROR, "Gazebo refuses a body whose inertia is not physical.", target="gazebo")
+def invalid_inertia(loaded, profile):
+    """## What it does
+    With `--target gazebo`: finds a body (a link with the fixed links lumped into it)
+    whose mass is negative or whose combined tensor has a negative principal moment
+    or breaks the triangle inequality.
+
+    ## Why is this bad?
+    sdformat reports "A link named NAME has invalid inertia" (`MassMatrix3::IsValid`)
+    and Gazebo refuses to spawn the model.
+
+    ## Example
+    ```xml
+    <link name="wrist">
+      <inertial><mass value="1"/><inertia ixx="0.001" ixy="0" ixz="0" iyy="0.001" iyz="0" izz="0.01"/></inertial>
+    </link>
+    ```
+
+    ## Use instead
+    ```xml
+    <link name="wrist">
+      <inertial><mass value="1"/><inertia ixx="0.006" ixy="0" ixz="0" iyy="0.006" iyz="0" izz="0.01"/></inertial>
+    </link>
+    ```
+    """
+    for body in build(loaded, profile).bodies:
+        if body.mass is None:
+            continue
+        if body.mass < 0:
+            why = f"its mass is {number(body.mass)}"
+        elif body.moments is not None and min(body.moments) < 0:
+            why = f"a principal moment is {number(min(body.moments))}"
+        elif body.moments is not None and massprops.triangle_violation(massprops.diagonal(*body.moments)) is not None:
+            why = "its principal moments break the triangle inequality"
+        else:
+            continue
+        lumped = f" (with {names(body.links[1:])} lumped into it)" if len(body.links) > 1 else ""
+        yield loaded.diagnostic(
+            "C502",
+            f"Gazebo rejects link '{body.top}'{lumped}: {why}",
+            link_at(loaded, body.top),
+            "fix the <inertial> (inertia --suggest prints one for its geometry)",
+            subjects=body.links,
+        )
+
+
+@check("C503", "gazebo-swaps-limits", WARNING, "Gazebo swaps limits given lower > upper.", target="gazebo")
+def swaps_limits(loaded, profile):
+    """## What it does
+    With `--target gazebo`: finds a revolute or prismatic joint whose lower limit is
+    above its upper one.
+
+    ## Why is this bad?
+    sdformat swaps them (parser_urdf.cc), where MuJoCo and PyBullet make the joint
+    unlimited and Drake aborts: the same model moves differently in each.
+
+    ## Example
+    ```xml
+    <joint name="elbow" type="revolute">
+      <parent link="upper_arm"/><child link="forearm"/>
+      <limit lower="1.5" upper="-1.5" effort="10" velocity="1"/>
+    </joint>
+    ```
+
+    ## Use instead
+    ```xml
+    <joint name="elbow" type="revolute">
+      <parent link="upper_arm"/><child link="forearm"/>
+      <limit lower="-1.5" upper="1.5" effort="10" velocity="1"/>
+    </joint>
+    ```
+    """
+    for joint in loaded.robot.joints.values():
+        limit = joint.limit
+        if joint.type in ("revolute", "prismatic") and limit is not None and limit.lower > limit.upper:
+            yield loaded.diagnostic(
+                "C503",
+                f"Gazebo swaps the limits of joint '{joint.name}' ({number(limit.lower)} > {number(limit.upper)})",
+                limit_at(joint),
+                "swap lower and upper",
+                subjects=(joint.name,),
+            )
+
+
+@check("C504", "gazebo-lumps-fixed-links", INFO, "Gazebo lumps links on fixed joints into their parents.", target="gazebo")
+def lumps_fixed_links(loaded, profile):
+    """## What it does
+    With `--target gazebo`: says, once per model, which links Gazebo lumps into their
+    parents (fixed joints without `preserveFixedJoint`).
+
+    ## Why is this bad?
+    sdformat merges such a link's mass, inertia, visuals and collisions into its
+    parent and removes the link and its joint (`ReduceFixedJoints`): a plugin or
+    `<gazebo reference>` naming the link finds nothing, and sensors move to the parent.
+
+    ## Example
+    ```xml
+    <robot name="rover">
+      <link name="chassis"><inertial><mass value="5"/><inertia ixx="1" ixy="0" ixz="0" iyy="1" iyz="0" izz="1"/></inertial></link>
+      <link name="camera"><inertial><mass value="0.1"/><inertia ixx="1e-4" ixy="0" ixz="0" iyy="1e-4" iyz="0" izz="1e-4"/></inertial></link>
+      <joint name="camera_joint" type="fixed"><parent link="chassis"/><child link="camera"/></joint>
+    </robot>
+    ```
+
+    ## Use instead
+    ```xml
+    <robot name="rover">
+      <link name="chassis"><inertial><mass value="5"/><inertia ixx="1" ixy="0" ixz="0" iyy="1" iyz="0" izz="1"/></inertial></link>
+      <link name="camera"><inertial><mass value="0.1"/><inertia ixx="1e-4" ixy="0" ixz="0" iyy="1e-4" iyz="0" izz="1e-4"/></inertial></link>
+      <joint name="camera_joint" type="fixed"><parent link="chassis"/><child link="camera"/></joint>
+      <gazebo reference="camera_joint"><preserveFixedJoint>true</preserveFixedJoint></gazebo>
+    </robot>
+    ```
+    """
+    lumped = [link for body in build(loaded, profile).bodies for link in body.links[1:]]
+    if lumped:
+        yield loaded.diagnostic(
+            "C504",
+            f"Gazebo lumps {len(lumped)} link{'s' if len(lumped) > 1 else ''} into their parents on fixed joints: {names(lumped)}",
+            loaded.robot.at,
+            'keep one with <gazebo reference="JOINT"><preserveFixedJoint>true</preserveFixedJoint></gazebo>',
+            subjects=tuple(lumped),
+        )

@@ -1,0 +1,81 @@
+"""Isaac Sim 6's URDF importer, stage 1: urdf-usd-converter 0.3.4 (_impl/urdf_parser/parser.py,
+_impl/link.py, _impl/joint.py). Isaac Sim's Kit post-processing (merging fixed joints, fixing the
+base, drives) is not modelled; Isaac Sim 5.1 stopped merging fixed joints by default."""
+
+from __future__ import annotations
+
+from ..base import WARNING, check
+from .common import link_at
+
+
+@check("C701", "isaac-locks-joint", WARNING, "Isaac Sim locks a revolute joint without <limit>.", target="isaac")
+def locks_joint(loaded, profile):
+    """## What it does
+    With `--target isaac`: finds a revolute joint without `<limit>`.
+
+    ## Why is this bad?
+    urdfdom rejects it (J003), but Isaac Sim's importer takes it, writes its limits
+    as lower = upper = 0, and the joint cannot move (urdf-usd-converter, _impl/joint.py).
+
+    ## Example
+    ```xml
+    <joint name="elbow" type="revolute">
+      <parent link="upper_arm"/><child link="forearm"/><axis xyz="0 0 1"/>
+    </joint>
+    ```
+
+    ## Use instead
+    ```xml
+    <joint name="elbow" type="revolute">
+      <parent link="upper_arm"/><child link="forearm"/><axis xyz="0 0 1"/>
+      <limit lower="-1.5" upper="1.5" effort="10" velocity="1"/>
+    </joint>
+    ```
+    """
+    for joint in loaded.robot.joints.values():
+        if joint.type == "revolute" and joint.limit is None:
+            yield loaded.diagnostic(
+                "C701",
+                f"Isaac Sim locks joint '{joint.name}': without <limit> it writes lower = upper = 0",
+                joint.at,
+                'add <limit lower="..." upper="..." effort="..." velocity="..."/>, or make it continuous',
+                subjects=(joint.name,),
+            )
+
+
+@check("C702", "isaac-mass-from-colliders", WARNING, "Isaac Sim weighs a massless link with colliders by their volume.", target="isaac")
+def mass_from_colliders(loaded, profile):
+    """## What it does
+    With `--target isaac`: finds a link with collision shapes but without `<inertial>`
+    or with mass 0.
+
+    ## Why is this bad?
+    A mass of 0 is "unset" in USD physics: the physics engine gives the rigid body the
+    mass of its colliders at the default density, which the model never states
+    (urdf-usd-converter, _impl/link.py).
+
+    ## Example
+    ```xml
+    <link name="bumper">
+      <collision><geometry><box size="0.5 0.1 0.1"/></geometry></collision>
+    </link>
+    ```
+
+    ## Use instead
+    ```xml
+    <link name="bumper">
+      <inertial><mass value="0.4"/><inertia ixx="7e-4" ixy="0" ixz="0" iyy="8.7e-3" iyz="0" izz="8.7e-3"/></inertial>
+      <collision><geometry><box size="0.5 0.1 0.1"/></geometry></collision>
+    </link>
+    ```
+    """
+    for name, link in loaded.robot.links.items():
+        mass = link.inertial.mass if link.inertial is not None else None
+        if link.collisions and not mass:
+            yield loaded.diagnostic(
+                "C702",
+                f"Isaac Sim gives link '{name}' the mass of its colliders at the default density: it has {'mass 0' if link.inertial is not None else 'no <inertial>'}",
+                link_at(loaded, name),
+                "give it an <inertial> with its real mass and tensor",
+                subjects=(name,),
+            )

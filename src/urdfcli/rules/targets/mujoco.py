@@ -1,0 +1,365 @@
+"""MuJoCo 4.0's URDF reader (``mujoco.MjModel.from_xml_path``): src/xml/xml_urdf.cc, its
+URDF defaults (fusestatic, discardvisual) in src/xml/xml.cc, the mass checks in
+src/user/user_model.cc and user_objects.cc."""
+
+from __future__ import annotations
+
+from ...model import massprops
+from ...model.targets import MJMINVAL, build, mesh_extension, mujoco_options
+from ..base import ERROR, INFO, WARNING, check
+from .common import inertial_at, limit_at, link_at, names, number
+
+DECODED = (".stl", ".obj", ".msh")  # the mesh files MuJoCo 4.0 decodes without a plugin
+
+
+@check("C101", "mujoco-massless-body", ERROR, "MuJoCo rejects a moving body without mass or inertia.", target="mujoco")
+def massless_body(loaded, profile):
+    """## What it does
+    With `--target mujoco`: finds a body moved by a joint whose mass, or one of
+    whose principal moments, is below MuJoCo's `mjMINVAL` (1e-15). The body is the
+    child link of the moving joint with every link fixed below it (MuJoCo fuses
+    them, `fusestatic`); a link without `<inertial>` but with collision shapes gets
+    their mass at 1000 kg/m³. Measures the declared masses and tensors; leaves alone
+    links whose mass comes from a mesh (its volume is not read).
+
+    ## Why is this bad?
+    MuJoCo refuses to load the model: "mass and inertia of moving bodies must be
+    larger than mjMINVAL" (src/user/user_model.cc).
+
+    ## Example
+    ```xml
+    <robot name="arm">
+      <link name="base"/>
+      <link name="wrist"/>
+      <joint name="roll" type="continuous"><parent link="base"/><child link="wrist"/></joint>
+    </robot>
+    ```
+
+    ## Use instead
+    ```xml
+    <robot name="arm">
+      <link name="base"/>
+      <link name="wrist">
+        <inertial><mass value="0.5"/><inertia ixx="1e-3" ixy="0" ixz="0" iyy="1e-3" iyz="0" izz="1e-3"/></inertial>
+      </link>
+      <joint name="roll" type="continuous"><parent link="base"/><child link="wrist"/></joint>
+    </robot>
+    ```
+    """
+    for body in build(loaded, profile).bodies:
+        if body.joint is None or body.mass is None:
+            continue
+        if body.mass < MJMINVAL:
+            why = f"its mass is {number(body.mass)}" if body.mass else "it has no mass"
+        elif body.moments is not None and min(body.moments) < MJMINVAL:
+            why = "its inertia tensor is zero" if max(body.moments) < MJMINVAL else "a principal moment of its inertia is zero"
+        else:
+            continue
+        fused = f" (with {names(body.links[1:])} fused into it)" if len(body.links) > 1 else ""
+        yield loaded.diagnostic(
+            "C101",
+            f"MuJoCo rejects link '{body.top}'{fused}, moved by joint '{body.joint.name}': {why}",
+            inertial_at(loaded, body.top),
+            "give it an <inertial> with a positive mass and tensor, or collision shapes MuJoCo can weigh",
+            subjects=(*body.links, body.joint.name),
+        )
+
+
+@check("C102", "mujoco-triangle-inequality", ERROR, "MuJoCo rejects an inertia breaking A + B >= C.", target="mujoco")
+def triangle_inequality(loaded, profile):
+    """## What it does
+    With `--target mujoco`: finds a declared inertia whose principal moments break
+    the triangle inequality (A + B >= C), unless the model sets
+    `<mujoco><compiler balanceinertia="true"/></mujoco>`.
+
+    ## Why is this bad?
+    MuJoCo refuses to load the model: "inertia must satisfy A + B >= C; use
+    'balanceinertia' to fix" (src/user/user_objects.cc). No body of that shape exists.
+
+    ## Example
+    ```xml
+    <link name="wrist">
+      <inertial><mass value="1"/><inertia ixx="0.001" ixy="0" ixz="0" iyy="0.001" iyz="0" izz="0.01"/></inertial>
+    </link>
+    ```
+
+    ## Use instead
+    ```xml
+    <link name="wrist">
+      <inertial><mass value="1"/><inertia ixx="0.006" ixy="0" ixz="0" iyy="0.006" iyz="0" izz="0.01"/></inertial>
+    </link>
+    ```
+    """
+    if mujoco_options(loaded).balanceinertia:
+        return
+    for name, link in loaded.robot.links.items():
+        inertial = link.inertial
+        if inertial is None or inertial.inertia is None:
+            continue
+        tensor = massprops.matrix(inertial.inertia)
+        broken = massprops.triangle_violation(tensor) if massprops.is_positive_semidefinite(tensor) else None
+        if broken is not None:
+            a, b, c = broken
+            yield loaded.diagnostic(
+                "C102",
+                f"MuJoCo rejects link '{name}': its inertia breaks the triangle inequality A + B >= C ({number(a)} + {number(b)} < {number(c)})",
+                inertial.inertia_at or inertial.at,
+                'fix the tensor, or let MuJoCo raise the small moments: <mujoco><compiler balanceinertia="true"/></mujoco>',
+                subjects=(name,),
+            )
+
+
+@check("C103", "mujoco-inertia-not-positive", ERROR, "MuJoCo rejects a full inertia without positive eigenvalues.", target="mujoco")
+def inertia_not_positive(loaded, profile):
+    """## What it does
+    With `--target mujoco`: finds a declared inertia with products of inertia
+    (ixy, ixz or iyz not zero) whose principal moments are not all positive.
+    (A diagonal tensor of zeros is C101's.)
+
+    ## Why is this bad?
+    MuJoCo reads such a tensor as `fullinertia` and refuses to load the model:
+    "inertia must have positive eigenvalues" (src/user/user_objects.cc).
+
+    ## Example
+    ```xml
+    <link name="wrist">
+      <inertial><mass value="1"/><inertia ixx="0.01" ixy="0.02" ixz="0" iyy="0.01" iyz="0" izz="0.01"/></inertial>
+    </link>
+    ```
+
+    ## Use instead
+    ```xml
+    <link name="wrist">
+      <inertial><mass value="1"/><inertia ixx="0.01" ixy="0.002" ixz="0" iyy="0.01" iyz="0" izz="0.01"/></inertial>
+    </link>
+    ```
+    """
+    for name, link in loaded.robot.links.items():
+        inertial = link.inertial
+        if inertial is None or inertial.inertia is None:
+            continue
+        values = inertial.inertia
+        if not any(values[k] for k in ("ixy", "ixz", "iyz")):
+            continue
+        smallest = massprops.principal_moments(massprops.matrix(values))[0]
+        if smallest <= 0:
+            yield loaded.diagnostic(
+                "C103",
+                f"MuJoCo rejects link '{name}': its inertia has a principal moment of {number(smallest)}; all must be positive",
+                inertial.inertia_at or inertial.at,
+                "recompute the tensor (inertia --suggest prints one for its geometry)",
+                subjects=(name,),
+            )
+
+
+def _meshes(loaded, discardvisual: bool):
+    for name, link in loaded.robot.links.items():
+        shapes = link.collisions if discardvisual else (*link.visuals, *link.collisions)
+        for shape in shapes:
+            geometry = shape.geometry
+            if geometry is not None and geometry.kind == "mesh" and geometry.filename:
+                yield name, geometry
+
+
+@check("C104", "mujoco-mesh-format", ERROR, "MuJoCo cannot decode a mesh file of this format.", target="mujoco")
+def mesh_format(loaded, profile):
+    """## What it does
+    With `--target mujoco`: finds a collision mesh (and a visual one when the model
+    sets `discardvisual="false"`) whose file extension is not one MuJoCo decodes:
+    `.stl`, `.obj` or `.msh`. Judged by the extension; the file is not read.
+
+    ## Why is this bad?
+    MuJoCo refuses to load the model: "no decoder found for mesh file" (src/user/user_mesh.cc).
+    COLLADA (`.dae`) meshes, common in ROS packages, are not read.
+
+    ## Example
+    ```xml
+    <link name="base">
+      <collision><geometry><mesh filename="base.dae"/></geometry></collision>
+    </link>
+    ```
+
+    ## Use instead
+    ```xml
+    <link name="base">
+      <collision><geometry><mesh filename="base.stl"/></geometry></collision>
+    </link>
+    ```
+    """
+    for name, geometry in _meshes(loaded, mujoco_options(loaded).discardvisual):
+        extension = mesh_extension(geometry.filename)
+        if extension not in DECODED:
+            yield loaded.diagnostic(
+                "C104",
+                f"MuJoCo rejects link '{name}': it has no decoder for {extension or 'extension-less'} mesh '{geometry.filename}'",
+                geometry.at,
+                "convert the mesh to .stl or .obj for MuJoCo",
+                subjects=(name,),
+            )
+
+
+@check("C105", "mujoco-package-uri", ERROR, "MuJoCo does not resolve package:// mesh paths.", target="mujoco")
+def package_uri(loaded, profile):
+    """## What it does
+    With `--target mujoco`: finds a collision mesh (and a visual one when the model
+    sets `discardvisual="false"`) named by a `package://` URI.
+
+    ## Why is this bad?
+    MuJoCo's URDF reader takes a mesh filename as a path relative to the model's
+    folder (`strippath` is false in 4.0) and never resolves `package://`: loading
+    fails on a file that does not exist (src/xml/xml_urdf.cc).
+
+    ## Example
+    ```xml
+    <link name="base">
+      <collision><geometry><mesh filename="package://my_robot/meshes/arm.stl"/></geometry></collision>
+    </link>
+    ```
+
+    ## Use instead
+    ```xml
+    <link name="base">
+      <collision><geometry><mesh filename="../meshes/arm.stl"/></geometry></collision>
+    </link>
+    ```
+    """
+    for name, geometry in _meshes(loaded, mujoco_options(loaded).discardvisual):
+        if geometry.filename.startswith("package://"):
+            yield loaded.diagnostic(
+                "C105",
+                f"MuJoCo rejects link '{name}': it does not resolve '{geometry.filename}'",
+                geometry.at,
+                "give MuJoCo a copy with paths relative to the model (`urdfcli expand` then replace package://PKG/ by the package's path), or set <mujoco><compiler meshdir=.../></mujoco>",
+                subjects=(name,),
+            )
+
+
+@check("C106", "mujoco-unlimited-joint", WARNING, "MuJoCo drops a joint's limits when lower >= upper.", target="mujoco")
+def unlimited_joint(loaded, profile):
+    """## What it does
+    With `--target mujoco`: finds a revolute or prismatic joint whose lower limit is
+    not below its upper one.
+
+    ## Why is this bad?
+    MuJoCo makes the joint unlimited: without a word when lower > upper, with the
+    warning "equal lower and upper limits, limit ignored" when they are equal
+    (src/xml/xml_urdf.cc). A joint meant to be stopped turns freely.
+
+    ## Example
+    ```xml
+    <joint name="elbow" type="revolute">
+      <parent link="upper_arm"/><child link="forearm"/>
+      <limit lower="1.5" upper="-1.5" effort="10" velocity="1"/>
+    </joint>
+    ```
+
+    ## Use instead
+    ```xml
+    <joint name="elbow" type="revolute">
+      <parent link="upper_arm"/><child link="forearm"/>
+      <limit lower="-1.5" upper="1.5" effort="10" velocity="1"/>
+    </joint>
+    ```
+    """
+    for joint in loaded.robot.joints.values():
+        limit = joint.limit
+        if joint.type in ("revolute", "prismatic") and limit is not None and limit.lower >= limit.upper:
+            how = "they are equal" if limit.lower == limit.upper else "lower is above upper"
+            yield loaded.diagnostic(
+                "C106",
+                f"MuJoCo makes joint '{joint.name}' unlimited: its limits are {number(limit.lower)} and {number(limit.upper)}, and {how}",
+                limit_at(joint),
+                "give lower < upper; a joint that must not move is a fixed joint",
+                subjects=(joint.name,),
+            )
+
+
+@check("C107", "mujoco-mass-from-geometry", WARNING, "MuJoCo weighs a moving link without <inertial> by its collision shapes.", target="mujoco")
+def mass_from_geometry(loaded, profile):
+    """## What it does
+    With `--target mujoco`: finds a moving body none of whose links has an
+    `<inertial>`, but which has collision shapes, while `inertiafromgeom` is `auto`
+    (the URDF default) or `true`.
+
+    ## Why is this bad?
+    MuJoCo gives the body the mass and inertia of its collision shapes filled at
+    1000 kg/m³ (src/user/user_objects.cc, `inertiafromgeom`): a 10 cm box weighs
+    1 kg, a hollow shell as much as a solid. Other consumers see no mass at all.
+
+    ## Example
+    ```xml
+    <robot name="arm">
+      <link name="base"/>
+      <link name="wrist"><collision><geometry><box size="0.1 0.1 0.1"/></geometry></collision></link>
+      <joint name="roll" type="continuous"><parent link="base"/><child link="wrist"/></joint>
+    </robot>
+    ```
+
+    ## Use instead
+    ```xml
+    <robot name="arm">
+      <link name="base"/>
+      <link name="wrist">
+        <inertial><mass value="0.3"/><inertia ixx="5e-4" ixy="0" ixz="0" iyy="5e-4" iyz="0" izz="5e-4"/></inertial>
+        <collision><geometry><box size="0.1 0.1 0.1"/></geometry></collision>
+      </link>
+      <joint name="roll" type="continuous"><parent link="base"/><child link="wrist"/></joint>
+    </robot>
+    ```
+    """
+    for body in build(loaded, profile).bodies:
+        if body.joint is None or not body.source.startswith("collision geometry"):
+            continue
+        weight = f"{number(body.mass)} kg" if body.mass is not None else "the mass of its meshes"
+        yield loaded.diagnostic(
+            "C107",
+            f"MuJoCo gives link '{body.top}' {weight}: it has no <inertial>, so its collision shapes are filled at 1000 kg/m³",
+            link_at(loaded, body.top),
+            "give the link an <inertial> with its real mass and tensor",
+            subjects=body.links,
+        )
+
+
+@check("C108", "mujoco-fixed-base", INFO, "MuJoCo welds the root link to the world.", target="mujoco")
+def fixed_base(loaded, profile):
+    """## What it does
+    With `--target mujoco`: says, once per model, that the root link is welded to the
+    world and fused into the world body, and names the links fused into their
+    moving parents (fixed joints, `fusestatic`).
+
+    ## Why is this bad?
+    `from_xml_path` adds no free joint: a mobile robot or a humanoid loaded from its
+    URDF cannot move its base, and the root's mass leaves the model. A fused link's
+    name no longer exists in the model, so code asking MuJoCo for that body fails
+    (src/xml/xml.cc sets `fusestatic` for URDF).
+
+    ## Example
+    ```xml
+    <robot name="rover">
+      <link name="chassis"><inertial><mass value="5"/><inertia ixx="1" ixy="0" ixz="0" iyy="1" iyz="0" izz="1"/></inertial></link>
+    </robot>
+    ```
+
+    ## Use instead
+    ```xml
+    <robot name="rover">
+      <link name="world"/>
+      <link name="chassis"><inertial><mass value="5"/><inertia ixx="1" ixy="0" ixz="0" iyy="1" iyz="0" izz="1"/></inertial></link>
+      <joint name="free" type="floating"><parent link="world"/><child link="chassis"/></joint>
+    </robot>
+    ```
+    """
+    root = loaded.root
+    if root is None or root == "world":
+        return
+    built = build(loaded, profile)
+    fused = [link for body in built.bodies for link in body.links[1:]]
+    also = f"; links {names(fused)} are fused into their moving parents" if fused else ""
+    yield loaded.diagnostic(
+        "C108",
+        f"MuJoCo welds root link '{root}' to the world and fuses it into the world body{also}",
+        link_at(loaded, root),
+        "for a free base, join the root to a massless 'world' link by a floating joint; "
+        'keep fused links with <mujoco><compiler fusestatic="false"/></mujoco>',
+        subjects=(root, *fused),
+    )
