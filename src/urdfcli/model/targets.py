@@ -499,8 +499,8 @@ def gazebo_build(loaded: Loaded, chosen: Profile) -> Build:
             joint = loaded.parent_joint(link)
             if link == "world" and joint is None:
                 continue
-            if not any(has_mass(robot.links[n]) for n in links):
-                why = "it has no <inertial>" if robot.links[link].inertial is None else "its mass is not positive"
+            if sum(declared_mass(robot.links[n]) or 0.0 for n in links) == 0:  # sdformat: no inertial, or a mass equal to 0
+                why = "it has no <inertial>" if robot.links[link].inertial is None else "its mass is 0"
                 dropped[link] = why
                 for below in subtree(loaded, link)[1:]:
                     dropped.setdefault(below, f"below {link}, which is dropped")

@@ -18,6 +18,7 @@ PREFIXES = {
     "T": "Tree",
     "I": "Inertia and mass",
     "D": "Description",
+    "C": "Targets (with --target NAME: C1 MuJoCo, C2 Drake, C3 Pinocchio, C4 PyBullet, C5 Gazebo, C6 KDL, C7 Isaac Sim)",
     "S": "Style (off by default)",
     "U": "Suppression comments",
 }
@@ -33,6 +34,8 @@ def facts(rule: Rule) -> str:
     """One line: severity, on or off by default, and where it is reported."""
     where = "check and lint" if rule.in_check else "lint"
     parts = [f"severity {rule.severity.value}", "on by default" if rule.default else "off by default (select it)", f"reported by {where}"]
+    if rule.target is not None:
+        parts[1:2] = [f"runs with --target {rule.consumer}" + (f" (examples: --target {rule.target})" if rule.target != rule.consumer else "")]
     if rule.urdfdom:
         parts.append("check_urdf rejects it too")
     return "; ".join(parts)

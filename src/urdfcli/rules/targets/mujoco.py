@@ -354,7 +354,7 @@ def fixed_base(loaded, profile):
         return
     built = build(loaded, profile)
     fused = [link for body in built.bodies for link in body.links[1:]]
-    also = f"; links {names(fused)} are fused into their moving parents" if fused else ""
+    also = f"; {'links' if len(fused) > 1 else 'link'} {names(fused)} {'are' if len(fused) > 1 else 'is'} fused into {'their' if len(fused) > 1 else 'its'} moving parent" if fused else ""
     yield loaded.diagnostic(
         "C108",
         f"MuJoCo welds root link '{root}' to the world and fuses it into the world body{also}",

@@ -41,11 +41,12 @@ def default_inertial(loaded, profile):
     </robot>
     ```
     """
+    tensor = " and a unit inertia tensor" if "inertia-from-file" in profile.variants else ""
     for name, link in loaded.robot.links.items():
         if link.inertial is None and name != "world":
             yield loaded.diagnostic(
                 "C401",
-                f"PyBullet gives link '{name}' 1 kg and a unit inertia tensor: it has no <inertial>",
+                f"PyBullet gives link '{name}' a mass of 1 kg{tensor}: it has no <inertial>",
                 link.at,
                 'give it an <inertial> (a frame: <mass value="0"/> and a zero tensor)',
                 subjects=(name,),
