@@ -42,6 +42,7 @@ VARIANTS = {
     "kdl": (),
     "isaac": (),
 }
+CODES = {"mujoco": "C1", "drake": "C2", "pinocchio": "C3", "pybullet": "C4", "gazebo": "C5", "kdl": "C6", "isaac": "C7"}  # the rules' prefixes
 DOF = {"fixed": 0, "revolute": 1, "continuous": 1, "prismatic": 1, "planar": 3, "floating": 6}
 MJMINVAL = 1e-15  # MuJoCo's mjMINVAL: a moving body's mass and moments must exceed it
 WATER = 1000.0  # kg/m³: MuJoCo's default geom density, and Drake's replacement sphere
@@ -262,15 +263,40 @@ def mujoco_options(loaded: Loaded) -> MujocoOptions:
     return found
 
 
-def mujoco_part(link: Link, options: MujocoOptions):
+def mujoco_part(link: Link, options: MujocoOptions, fusing: bool = False):
     """A link's mass properties in MuJoCo: declared, or with no ``<inertial>`` (inertiafromgeom
-    auto) those of its collision shapes at 1000 kg/m³ (unknown for a mesh)."""
-    if link.inertial is None and options.inertiafromgeom != "false" and link.collisions:
-        mass = geometry_mass(link)
-        if mass is None:
+    auto) those of its collision shapes at 1000 kg/m³ (unknown for a mesh). Fusing static
+    bodies (``fusestatic``), MuJoCo counts a negative mass as none, its tensor kept (measured)."""
+    if weighed_by_geometry(link, options):
+        return geometry_body(link)
+    found = declared_part(link)
+    if fusing and found is not None and found[0] < 0:
+        return 0.0, found[1], found[2]
+    return found
+
+
+def weighed_by_geometry(link: Link, options: MujocoOptions) -> bool:
+    """Whether MuJoCo takes a link's mass from its collision shapes (no ``<inertial>``)."""
+    return link.inertial is None and options.inertiafromgeom != "false" and bool(link.collisions)
+
+
+def geometry_body(link: Link, density: float = WATER):
+    """(mass, com, tensor) of a link's collision primitives filled at ``density``; None with a mesh."""
+    parts = []
+    for shape in link.collisions:
+        volume = primitive_volume(shape.geometry)
+        if volume is None:
             return None
-        return mass, (0.0, 0.0, 0.0), massprops.diagonal(mass, mass, mass)  # a stand-in: only its size matters
-    return declared_part(link)
+        mass = density * volume
+        geometry = shape.geometry
+        if geometry.kind == "box":
+            tensor = massprops.box(mass, geometry.size)
+        elif geometry.kind == "cylinder":
+            tensor = massprops.cylinder(mass, geometry.radius, geometry.length)
+        else:
+            tensor = massprops.sphere(mass, geometry.radius)
+        parts.append((mass, shape.origin.xyz, massprops.rotate(tensor, massprops.rotation(shape.origin.rpy))))
+    return massprops.combine(parts)
 
 
 def mujoco_build(loaded: Loaded, chosen: Profile) -> Build:
@@ -284,8 +310,9 @@ def mujoco_build(loaded: Loaded, chosen: Profile) -> Build:
             for link in links:
                 dropped[link] = "fused into the world body"
             continue
-        mass, moments = combined(loaded, links, lambda link: mujoco_part(link, options))
-        source = "collision geometry at 1000 kg/m³" if all(loaded.robot.links[n].inertial is None for n in links) and mass else "declared"
+        mass, moments = combined(loaded, links, lambda link: mujoco_part(link, options, fusing=len(links) > 1))
+        weighed = [n for n in links if weighed_by_geometry(loaded.robot.links[n], options)]
+        source = f"{', '.join(weighed)}: collision geometry at 1000 kg/m³" if weighed else "declared"
         bodies.append(Body(tuple(links), joint if moving(joint) else None, mass, moments, source))
     changed = {}
     for joint in tree_joints(loaded):
@@ -384,8 +411,9 @@ def pybullet_box_moments(loaded: Loaded, link: Link, mass: float) -> Vector | No
     """The tensor PyBullet computes without URDF_USE_INERTIA_FROM_FILE: a box filling the
     axis-aligned bounding box of the collision shapes in the inertial frame (exact for
     boxes; cylinders and spheres are hulls with a margin, so approximately; None for meshes)."""
-    if not link.collisions:
-        return (0.0, 0.0, 0.0)
+    if not link.collisions:  # an empty compound shape: PyBullet's bounding box is a 2 mm cube (measured)
+        side = massprops.box(mass, (0.002, 0.002, 0.002))[0][0]
+        return (side, side, side)
     inertial = link.inertial
     frame = massprops.transform(inertial.origin.xyz, inertial.origin.rpy) if inertial is not None else massprops.ORIGIN
     back = (massprops.transpose(frame[0]), tuple(-v for v in massprops.apply(massprops.transpose(frame[0]), frame[1])))

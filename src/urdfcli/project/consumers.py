@@ -50,18 +50,26 @@ def install_hint(target: str) -> str:
 
 def load(target: str, path: str, variants: tuple[str, ...] = ()) -> Loaded:
     """Load ``path`` (a plain URDF file) into ``target`` in a child process."""
-    command = [sys.executable, "-m", "urdfcli.project.consumers", target, ",".join(variants), path]
+    return load_many(target, [path], variants)[0]
+
+
+def load_many(target: str, paths: list[str], variants: tuple[str, ...] = ()) -> list[Loaded]:
+    """Load each of ``paths`` into ``target``, in one child process (PyBullet: one per
+    file, since it may crash): one :class:`Loaded` per path, in order."""
+    if target == "pybullet" and len(paths) > 1:
+        return [load(target, path, variants) for path in paths]
+    command = [sys.executable, "-m", "urdfcli.project.consumers", target, ",".join(variants), *paths]
     try:
-        done = subprocess.run(command, capture_output=True, text=True, timeout=TIMEOUT, errors="replace")
+        done = subprocess.run(command, capture_output=True, text=True, timeout=TIMEOUT * len(paths), errors="replace")
     except subprocess.TimeoutExpired:
-        return Loaded(False, f"{target} did not finish loading in {TIMEOUT:.0f} s")
-    if done.returncode < 0:
-        return Loaded(False, f"{target} crashed (signal {-done.returncode})", done.stderr[-2000:], crashed=-done.returncode)
-    lines = done.stdout.strip().splitlines()
-    if not lines:
-        return Loaded(False, f"{target} exited with status {done.returncode}: {done.stderr.strip()[-500:]}")
-    answer = json.loads(lines[-1])
-    return Loaded(answer["accepted"], answer.get("error", ""), answer.get("printed", ""), answer.get("built", {}))
+        return [Loaded(False, f"{target} did not finish loading in {TIMEOUT:.0f} s")] * len(paths)
+    answers = [json.loads(line) for line in done.stdout.splitlines() if line.startswith("{")]
+    found = [Loaded(a["accepted"], a.get("error", ""), a.get("printed", ""), a.get("built", {})) for a in answers]
+    if len(found) < len(paths):  # the child died on the next one
+        why = f"{target} crashed (signal {-done.returncode})" if done.returncode < 0 else f"{target} exited with status {done.returncode}"
+        found.append(Loaded(False, why, done.stderr[-2000:], crashed=-done.returncode if done.returncode < 0 else None))
+        found += load_many(target, paths[len(found):], variants) if len(found) < len(paths) else []
+    return found
 
 
 # -- in the child process ----------------------------------------------------------------
@@ -171,15 +179,17 @@ LOADERS = {"mujoco": _mujoco, "drake": _drake, "pinocchio": _pinocchio, "pybulle
 
 
 def main(argv: list[str]) -> int:
-    target, variants, path = argv[0], tuple(v for v in argv[1].split(",") if v), argv[2]
-    answer: dict[str, Any] = {"accepted": True}
-    with captured() as printed:
-        try:
-            answer["built"] = LOADERS[target](path, variants)
-        except BaseException as error:  # noqa: BLE001 -- Drake's asserts raise SystemExit
-            answer = {"accepted": False, "error": f"{type(error).__name__}: {error}".strip()}
-    answer["printed"] = printed[0] if printed else ""
-    print(json.dumps(answer))
+    """Load each file named after the target and its variants; one JSON line per file."""
+    target, variants = argv[0], tuple(v for v in argv[1].split(",") if v)
+    for path in argv[2:]:
+        answer: dict[str, Any] = {"accepted": True}
+        with captured() as printed:
+            try:
+                answer["built"] = LOADERS[target](path, variants)
+            except BaseException as error:  # noqa: BLE001 -- Drake's asserts raise SystemExit
+                answer = {"accepted": False, "error": f"{type(error).__name__}: {error}".strip()}
+        answer["printed"] = printed[0] if printed else ""
+        print(json.dumps(answer), flush=True)
     return 0
 
 

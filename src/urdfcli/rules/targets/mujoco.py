@@ -5,7 +5,7 @@ src/user/user_model.cc and user_objects.cc."""
 from __future__ import annotations
 
 from ...model import massprops
-from ...model.targets import MJMINVAL, build, mesh_extension, mujoco_options
+from ...model.targets import MJMINVAL, build, geometry_body, mesh_extension, mujoco_options, weighed_by_geometry
 from ..base import ERROR, INFO, WARNING, check
 from .common import inertial_at, limit_at, link_at, names, number
 
@@ -307,17 +307,23 @@ def mass_from_geometry(loaded, profile):
     </robot>
     ```
     """
+    options = mujoco_options(loaded)
     for body in build(loaded, profile).bodies:
-        if body.joint is None or not body.source.startswith("collision geometry"):
+        if body.joint is None:
             continue
-        weight = f"{number(body.mass)} kg" if body.mass is not None else "the mass of its meshes"
-        yield loaded.diagnostic(
-            "C107",
-            f"MuJoCo gives link '{body.top}' {weight}: it has no <inertial>, so its collision shapes are filled at 1000 kg/m³",
-            link_at(loaded, body.top),
-            "give the link an <inertial> with its real mass and tensor",
-            subjects=body.links,
-        )
+        for name in body.links:
+            link = loaded.robot.links[name]
+            if not weighed_by_geometry(link, options):
+                continue
+            found = geometry_body(link)
+            weight = f"{number(found[0])} kg" if found is not None else "the mass of its meshes"
+            yield loaded.diagnostic(
+                "C107",
+                f"MuJoCo gives link '{name}' {weight}: it has no <inertial>, so its collision shapes are filled at 1000 kg/m³",
+                link.at,
+                "give the link an <inertial> with its real mass and tensor",
+                subjects=(name,),
+            )
 
 
 @check("C108", "mujoco-fixed-base", INFO, "MuJoCo welds the root link to the world.", target="mujoco")
@@ -350,14 +356,18 @@ def fixed_base(loaded, profile):
     ```
     """
     root = loaded.root
-    if root is None or root == "world":
+    if root is None:
         return
     built = build(loaded, profile)
-    fused = [link for body in built.bodies for link in body.links[1:]]
-    also = f"; {'links' if len(fused) > 1 else 'link'} {names(fused)} {'are' if len(fused) > 1 else 'is'} fused into {'their' if len(fused) > 1 else 'its'} moving parent" if fused else ""
+    fused = [link for body in built.bodies for link in body.links[1:]] + [link for link in built.dropped if link not in (root, "world")]
+    if root == "world" and not fused:
+        return
+    several = len(fused) > 1
+    also = f"{'links' if several else 'link'} {names(fused)} {'are' if several else 'is'} fused into {'their' if several else 'its'} parent body" if fused else ""
+    welds = f"MuJoCo welds root link '{root}' to the world and fuses it into the world body" if root != "world" else "In MuJoCo, "
     yield loaded.diagnostic(
         "C108",
-        f"MuJoCo welds root link '{root}' to the world and fuses it into the world body{also}",
+        welds + ("; " if fused and root != "world" else "") + also,
         link_at(loaded, root),
         "for a free base, join the root to a massless 'world' link by a floating joint; "
         'keep fused links with <mujoco><compiler fusestatic="false"/></mujoco>',

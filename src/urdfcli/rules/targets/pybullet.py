@@ -89,19 +89,22 @@ def recomputes_inertia(loaded, profile):
     for body in build(loaded, profile).bodies:
         link = loaded.robot.links[body.top]
         declared = declared_matrix(link)
-        if declared is None or body.moments is None or not body.mass:
+        if declared is None or not body.mass:
             continue
         moments = massprops.principal_moments(declared)
+        if body.moments is None:  # from a mesh's bounding box: changed, by how much the mesh says
+            changed.append((body.top, moments, moments))
+            continue
         scale = max(abs(m) for m in (*moments, *body.moments)) or 1.0
         if max(abs(a - b) for a, b in zip(sorted(moments), sorted(body.moments))) > RECOMPUTED_APART * scale:
             changed.append((body.top, moments, body.moments))
     if not changed:
         return
-    first, declared, computed = changed[0]
-    example = f"link '{first}': principal moments {' '.join(number(m) for m in declared)} become {' '.join(number(m) for m in sorted(computed))}"
+    first, declared, computed = next((c for c in changed if c[1] != c[2]), changed[0])
+    example = f"; link '{first}': principal moments {' '.join(number(m) for m in declared)} become {' '.join(number(m) for m in sorted(computed))}" if declared != computed else ""
     yield loaded.diagnostic(
         "C402",
-        f"PyBullet ignores the <inertia> of {len(changed)} link{'s' if len(changed) > 1 else ''} ({names(n for n, _, _ in changed)}) and recomputes it from the collision shapes ({example})",
+        f"PyBullet ignores the <inertia> of {len(changed)} link{'s' if len(changed) > 1 else ''} ({names(n for n, _, _ in changed)}) and recomputes it from the bounding box of the collision shapes{example}",
         loaded.robot.at,
         "load with pybullet.loadURDF(path, flags=pybullet.URDF_USE_INERTIA_FROM_FILE) (check it with --target pybullet:inertia-from-file)",
         subjects=tuple(n for n, _, _ in changed),

@@ -1,0 +1,263 @@
+"""urdfcli's --target predictions against the real consumers (the differential test).
+
+Every case of tests/target_cases.py is loaded into MuJoCo, Drake, Pinocchio and
+PyBullet (each in a child process: urdfcli.project.consumers), and urdfcli checks
+it with ``--target``. For each consumer:
+
+- urdfcli reports an error of that target's rules exactly when the consumer
+  rejects the model (Pinocchio reads URDF with urdfdom: check_urdf's errors count too);
+- each element the consumer drops or changes (a joint left unlimited, a body's mass
+  or tensor replaced, a mimic joint made free, a floating joint made fixed) is
+  named by a diagnostic of that target's rules;
+- the masses and principal moments ``inertia --target`` predicts are those the
+  consumer built.
+
+The published example-robot-data models go through MuJoCo and Pinocchio too,
+with package:// rewritten to the same absolute paths for both.
+
+The consumers are test dependencies (the ``targets`` extra, which ``make test``
+installs); locally a missing one skips with a message, in CI it fails.
+"""
+
+from __future__ import annotations
+
+import importlib.util
+import math
+import re
+from functools import cache
+from pathlib import Path
+
+import pytest
+from conftest import IN_CI, example_robot_data, lint_file
+from target_cases import CASES, write_cases
+
+from urdfcli.diagnostics import Severity
+from urdfcli.model.targets import CODES, Profile, build, profile
+from urdfcli.project import consumers
+from urdfcli.project.config import Config
+from urdfcli.rules import rule
+
+PROFILES = ["mujoco", "drake", "pinocchio", "pinocchio:mimic", "pybullet", "pybullet:inertia-from-file"]
+# The .dae stand-in is not a real COLLADA file: PyBullet, which reads it, segfaults on its content,
+# which urdfcli does not read (MuJoCo and Drake judge the extension alone).
+CONTENT_READ = {("pybullet", "dae-collision")}
+
+
+def require_consumer(target: str) -> None:
+    if importlib.util.find_spec(consumers.PACKAGES[target]) is not None:
+        return
+    message = f"{target} is not installed ({consumers.install_hint(target)}): its differential test cannot run"
+    if IN_CI:
+        pytest.fail(message)
+    pytest.skip(message)
+
+
+@pytest.fixture(scope="module")
+def cases(tmp_path_factory) -> dict[str, Path]:
+    return write_cases(tmp_path_factory.mktemp("target-cases"))
+
+
+@cache
+def real_loads(text: str, folder: str) -> dict[str, consumers.Loaded]:
+    """Every case loaded into one consumer profile, once per test run."""
+    chosen = profile(text)
+    paths = [str(Path(folder) / f"{name}.urdf") for name in CASES]
+    return dict(zip(CASES, consumers.load_many(chosen.target, paths, tuple(sorted(chosen.variants)))))
+
+
+def predicted(path: Path, chosen: Profile):
+    """urdfcli's result on one file with the target's rules on (and every other rule)."""
+    return lint_file(str(path), Config.everything()._replace(targets=(chosen,)))
+
+
+def target_diagnostics(result, chosen: Profile):
+    return [d for d in result.diagnostics if d.code.startswith(CODES[chosen.target])]
+
+
+def predicted_rejection(result, chosen: Profile) -> bool:
+    errors = [d for d in result.diagnostics if d.severity is Severity.ERROR]
+    if any(d.code.startswith(CODES[chosen.target]) for d in errors):
+        return True
+    return chosen.target == "pinocchio" and any(rule(d.code).urdfdom for d in errors)
+
+
+@pytest.mark.parametrize("case", list(CASES))
+@pytest.mark.parametrize("text", PROFILES)
+def test_error_exactly_when_the_consumer_rejects(text, case, cases):
+    chosen = profile(text)
+    require_consumer(chosen.target)
+    if (chosen.target, case) in CONTENT_READ:
+        pytest.skip(f"{text} reads the stand-in mesh of {case}")
+    real = real_loads(text, str(cases[case].parent))[case]
+    result = predicted(cases[case], chosen)
+    said = [(d.code, d.message) for d in target_diagnostics(result, chosen)]
+    assert predicted_rejection(result, chosen) == (not real.accepted), (real.error or "accepted", said)
+
+
+# -- what each consumer changed, read from what it built -----------------------------------------
+
+
+def declared(path: Path):
+    return lint_file(str(path), Config()).robot
+
+
+def moments_of(link) -> tuple[float, ...] | None:
+    from urdfcli.model import massprops
+    from urdfcli.model.targets import declared_matrix
+
+    tensor = declared_matrix(link)
+    return tuple(sorted(massprops.principal_moments(tensor))) if tensor is not None else None
+
+
+def apart(a, b, tolerance: float) -> bool:
+    scale = max([abs(v) for v in (*a, *b)] + [1e-12])
+    return any(abs(x - y) > tolerance * scale for x, y in zip(sorted(a), sorted(b)))
+
+
+def mujoco_changes(robot, built: dict) -> set[str]:
+    changed = set()
+    bodies = {b["name"] for b in built["bodies"]}
+    changed |= {name for name in robot.links if name not in bodies}  # fused away
+    for joint in built["joints"]:
+        urdf = robot.joints.get(joint["name"])
+        if urdf is not None and urdf.type in ("revolute", "prismatic") and urdf.limit is not None and not joint["limited"]:
+            changed.add(urdf.name)
+    for body in built["bodies"]:
+        link = robot.links.get(body["name"])
+        if link is not None and link.inertial is None and link.collisions:  # weighed by its geometry
+            changed.add(link.name)
+    return changed
+
+
+def drake_changes(robot, built: dict) -> set[str]:
+    changed = set()
+    for body in built["bodies"]:
+        link = robot.links.get(body["name"])
+        if link is None or link.inertial is None:
+            continue
+        if abs(body["mass"] - link.inertial.mass) > 1e-12 or apart(body["inertia"], moments_of(link), 1e-6):
+            changed.add(link.name)
+    for joint in built["joints"]:
+        urdf = robot.joints.get(joint["name"])
+        if urdf is not None and urdf.type == "continuous" and any(v is not None for v in joint["lower"]):
+            changed.add(urdf.name)
+    return changed
+
+
+def pinocchio_changes(robot, built: dict) -> set[str]:
+    return {j["name"] for j in built["joints"] if robot.joints[j["name"]].mimic is not None and j["type"] != "JointModelMimic"}
+
+
+def pybullet_changes(robot, built: dict, from_file: bool) -> set[str]:
+    changed = set()
+    for entry in built["links"]:
+        link = robot.links[entry["name"]]
+        mass = link.inertial.mass if link.inertial is not None else (0.0 if link.name == "world" else None)  # world: the fixed base
+        if mass is None or abs(entry["mass"] - mass) > 1e-12:
+            changed.add(link.name)
+        moments = moments_of(link)
+        if moments is not None and link.inertial.mass and apart(entry["inertia"], moments, 0.1 if not from_file else 1e-6):
+            changed.add(link.name)
+    for joint in built["joints"]:
+        urdf = robot.joints[joint["name"]]
+        if joint["type"] == 4 and urdf.type != "fixed":  # JOINT_FIXED
+            changed.add(urdf.name)
+    return changed
+
+
+def changes(chosen: Profile, robot, built: dict) -> set[str]:
+    if chosen.target == "mujoco":
+        return mujoco_changes(robot, built)
+    if chosen.target == "drake":
+        return drake_changes(robot, built)
+    if chosen.target == "pinocchio":
+        return pinocchio_changes(robot, built)
+    return pybullet_changes(robot, built, "inertia-from-file" in chosen.variants)
+
+
+@pytest.mark.parametrize("case", list(CASES))
+@pytest.mark.parametrize("text", PROFILES)
+def test_each_change_is_named(text, case, cases):
+    chosen = profile(text)
+    require_consumer(chosen.target)
+    real = real_loads(text, str(cases[case].parent))[case]
+    if not real.accepted:
+        pytest.skip(f"{text} rejects {case}: nothing built to compare")
+    result = predicted(cases[case], chosen)
+    named = {subject for d in target_diagnostics(result, chosen) for subject in d.subjects}
+    missing = changes(chosen, declared(cases[case]), real.built) - named
+    assert not missing, (missing, [(d.code, d.message) for d in target_diagnostics(result, chosen)])
+
+
+def test_a_clean_model_draws_no_warning_for_the_elements_kept(cases):
+    """The baseline's changes are the conventions each consumer applies to every model
+    (info); nothing there is a warning or an error."""
+    for text in PROFILES:
+        result = predicted(cases["baseline"], profile(text))
+        serious = [d for d in target_diagnostics(result, profile(text)) if d.severity is not Severity.INFO and d.code not in ("C402", "C401")]
+        assert not serious, (text, serious)
+
+
+# -- the masses and tensors inertia --target predicts ------------------------------------------------
+
+EXACT = {"baseline", "zero-mass", "no-inertial-box", "triangle", "negative-mass", "mass-zero-with-tensor", "not-positive-definite",
+         "massless-with-fixed-mass", "no-collision", "world-root"}
+
+
+@pytest.mark.parametrize("case", sorted(EXACT))
+@pytest.mark.parametrize("text", ["mujoco", "drake", "pybullet", "pybullet:inertia-from-file"])
+def test_predicted_mass_properties_are_those_built(text, case, cases):
+    chosen = profile(text)
+    require_consumer(chosen.target)
+    real = real_loads(text, str(cases[case].parent))[case]
+    if not real.accepted:
+        pytest.skip(f"{text} rejects {case}")
+    loaded = lint_file(str(cases[case]), Config()).loaded
+    built = {b["name"]: b for b in real.built.get("bodies", real.built.get("links", []))}
+    compared = 0
+    for body in build(loaded, chosen).bodies:
+        found = built.get(body.top)
+        if found is None or body.mass is None or body.moments is None:
+            continue
+        compared += 1
+        assert math.isclose(found["mass"], body.mass, rel_tol=1e-9, abs_tol=1e-12), (body.top, found, body)
+        if text != "mujoco" or loaded.robot.links[body.top].inertial is not None:  # MuJoCo's geometry tensor is not predicted
+            assert not apart(found["inertia"], body.moments, 1e-6), (body.top, found["inertia"], body.moments)
+    assert compared
+
+
+# -- published models ------------------------------------------------------------------------------
+
+
+def published(tmp_path_factory) -> list[Path]:
+    """example-robot-data's URDFs, with package://example-robot-data/ made an absolute path."""
+    folder = example_robot_data()
+    out = tmp_path_factory.mktemp("published")
+    found = []
+    for model in sorted((folder / "robots").rglob("*.urdf")):
+        text = model.read_text(errors="replace")
+        text = re.sub(r"package:///?example-robot-data/", str(folder) + "/", text)
+        copy = out / f"{model.parent.parent.name}__{model.name}"
+        copy.write_text(text)
+        found.append(copy)
+    return found
+
+
+@pytest.fixture(scope="module")
+def published_models(tmp_path_factory):
+    return published(tmp_path_factory)
+
+
+@pytest.mark.parametrize("text", ["mujoco", "pinocchio"])
+def test_published_models_verdicts_match(text, published_models):
+    chosen = profile(text)
+    require_consumer(chosen.target)
+    reals = consumers.load_many(chosen.target, [str(p) for p in published_models])
+    disagreements = []
+    for path, real in zip(published_models, reals):
+        result = predicted(path, chosen)
+        if predicted_rejection(result, chosen) != (not real.accepted):
+            said = [(d.code, d.message) for d in target_diagnostics(result, chosen) if d.severity is Severity.ERROR]
+            disagreements.append((path.name, real.error[:200] or "accepted", said[:2]))
+    assert len(published_models) >= 60
+    assert not disagreements, disagreements
