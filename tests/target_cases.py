@@ -73,6 +73,7 @@ CASES = {
                                 base=link("base_link", extra=BOX + '<visual><geometry><box size="0.1 0.1 0.1"/></geometry>'
                                           '<material name="paint"><color rgba="0 1 0 1"/></material></visual>')),
     "zero-size-box": arm(link("link1", extra='<visual><geometry><box size="0.1 0 0.1"/></geometry></visual>' + BOX)),
+    "root-zero-moment": arm(base=link("base_link", inertia='ixx="0.01" iyy="0.01" izz="0" ixy="0" ixz="0" iyz="0"')),
     "world-root": robot('<link name="world"/>', link("base_link"), joint("mount", "world", "base_link", "fixed", limit="", axis=""),
                         link("link1"), joint("j1", "base_link", "link1"), TOOL, TOOL_JOINT),
     "balanced-triangle": arm(link("link1", inertia='ixx="0.001" iyy="0.001" izz="0.01" ixy="0" ixz="0" iyz="0"'), None,

@@ -248,6 +248,14 @@ def published_models(tmp_path_factory):
     return published(tmp_path_factory)
 
 
+# MuJoCo rejects these for what is inside their mesh files, which urdfcli does not read:
+# the rejection must be for that reason, and every other model must agree.
+MESH_CONTENT = {
+    "alex_description__alex_nub_hands.urdf": "mesh volume is too small",
+    "simple_humanoid_description__simple_humanoid.urdf": "perhaps this is an ASCII file",
+}
+
+
 @pytest.mark.parametrize("text", ["mujoco", "pinocchio"])
 def test_published_models_verdicts_match(text, published_models):
     chosen = profile(text)
@@ -255,6 +263,9 @@ def test_published_models_verdicts_match(text, published_models):
     reals = consumers.load_many(chosen.target, [str(p) for p in published_models])
     disagreements = []
     for path, real in zip(published_models, reals):
+        if chosen.target == "mujoco" and path.name in MESH_CONTENT:
+            assert MESH_CONTENT[path.name] in real.error, (path.name, real.error)
+            continue
         result = predicted(path, chosen)
         if predicted_rejection(result, chosen) != (not real.accepted):
             said = [(d.code, d.message) for d in target_diagnostics(result, chosen) if d.severity is Severity.ERROR]

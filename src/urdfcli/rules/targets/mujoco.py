@@ -97,7 +97,8 @@ def triangle_inequality(loaded, profile):
         if inertial is None or inertial.inertia is None:
             continue
         tensor = massprops.matrix(inertial.inertia)
-        broken = massprops.triangle_violation(tensor) if massprops.is_positive_semidefinite(tensor) else None
+        positive = not massprops.is_zero(tensor) and massprops.principal_moments(tensor)[0] > 0  # else C103's
+        broken = massprops.triangle_violation(tensor, rel_tol=1e-9) if positive else None  # MuJoCo compares without a margin
         if broken is not None:
             a, b, c = broken
             yield loaded.diagnostic(
@@ -109,15 +110,15 @@ def triangle_inequality(loaded, profile):
             )
 
 
-@check("C103", "mujoco-inertia-not-positive", ERROR, "MuJoCo rejects a full inertia without positive eigenvalues.", target="mujoco")
+@check("C103", "mujoco-inertia-not-positive", ERROR, "MuJoCo rejects an inertia without positive eigenvalues.", target="mujoco")
 def inertia_not_positive(loaded, profile):
     """## What it does
-    With `--target mujoco`: finds a declared inertia with products of inertia
-    (ixy, ixz or iyz not zero) whose principal moments are not all positive.
-    (A diagonal tensor of zeros is C101's.)
+    With `--target mujoco`: finds a declared inertia, on any link (the root and fixed
+    links too), that is not all zero but has a principal moment that is zero or
+    negative (`izz="0"` on a rod included). An all-zero tensor is C101's.
 
     ## Why is this bad?
-    MuJoCo reads such a tensor as `fullinertia` and refuses to load the model:
+    MuJoCo reads every URDF tensor as `fullinertia` and refuses to load the model:
     "inertia must have positive eigenvalues" (src/user/user_objects.cc).
 
     ## Example
@@ -138,10 +139,10 @@ def inertia_not_positive(loaded, profile):
         inertial = link.inertial
         if inertial is None or inertial.inertia is None:
             continue
-        values = inertial.inertia
-        if not any(values[k] for k in ("ixy", "ixz", "iyz")):
+        tensor = massprops.matrix(inertial.inertia)
+        if massprops.is_zero(tensor):
             continue
-        smallest = massprops.principal_moments(massprops.matrix(values))[0]
+        smallest = massprops.principal_moments(tensor)[0]
         if smallest <= 0:
             yield loaded.diagnostic(
                 "C103",
