@@ -29,9 +29,10 @@ $(VENV)/.installed: pyproject.toml
 	$(BIN)/python -m pip install --quiet -e .
 	touch $@
 
-# the test extras too: pytest, the published models, the programs urdfcli is compared with
+# the test extras too: pytest, the published models, the programs urdfcli is compared with,
+# and the consumers --target is checked against (MuJoCo, Drake, Pinocchio, PyBullet)
 $(VENV)/.tested: $(VENV)/.installed
-	$(BIN)/python -m pip install --quiet -e '.[test]'
+	$(BIN)/python -m pip install --quiet -e '.[test,targets]'
 	touch $@
 
 # apt-get only when a program is missing; `apt-get update` once before it.

@@ -24,11 +24,13 @@ from __future__ import annotations
 import importlib.util
 import math
 import re
+import subprocess
+import sys
 from functools import cache
 from pathlib import Path
 
 import pytest
-from conftest import IN_CI, example_robot_data, lint_file
+from conftest import IN_CI, example_robot_data, lint_file, run_cli
 from target_cases import CASES, write_cases
 
 from urdfcli.diagnostics import Severity
@@ -272,3 +274,59 @@ def test_published_models_verdicts_match(text, published_models):
             disagreements.append((path.name, real.error[:200] or "accepted", said[:2]))
     assert len(published_models) >= 60
     assert not disagreements, disagreements
+
+
+# -- check --load ----------------------------------------------------------------------------------
+
+
+def test_load_reports_the_consumers_own_error_at_the_element_it_names(cases):
+    require_consumer("mujoco")
+    done = run_cli("check", "--format", "concise", "--target", "mujoco", "--load", str(cases["triangle"]))
+    lines = done.stdout.decode().splitlines()
+    rejected = [line for line in lines if " C001 error: MuJoCo refuses the model" in line]
+    assert rejected and "A + B >= C" in rejected[0], lines
+    link1 = next(n for n, line in enumerate(cases["triangle"].read_text().splitlines(), 1) if 'name="link1"' in line)
+    assert rejected[0].split(":")[1] == str(link1)  # where link1 was written
+    assert not any(" C002 " in line for line in lines)  # the prediction agreed
+    assert done.returncode == 1
+
+
+def test_load_says_what_the_consumer_warned(cases):
+    require_consumer("mujoco")
+    done = run_cli("check", "--format", "concise", "--target", "mujoco", "--load", str(cases["lower-equals-upper"]))
+    warned = [line for line in done.stdout.decode().splitlines() if " C003 " in line]
+    assert warned and "equal lower and upper limits" in warned[0]
+
+
+def test_load_without_a_target_is_one_line_and_exit_2(cases):
+    done = run_cli("check", "--load", str(cases["baseline"]))
+    assert done.returncode == 2
+    assert done.stderr.decode().strip().splitlines() == ["urdfcli: --load loads the model into the --target consumers: name one, such as --target mujoco"]
+
+
+def test_unknown_target_is_one_line_and_exit_2(cases):
+    done = run_cli("check", "--target", "mujoko", str(cases["baseline"]))
+    assert done.returncode == 2
+    assert "unknown target 'mujoko'" in done.stderr.decode() and len(done.stderr.decode().strip().splitlines()) == 1
+
+
+def test_predictions_import_no_consumer(cases):
+    """--target costs no import of any consumer: predictions are urdfcli's own."""
+    code = (
+        "import sys, urdfcli\n"
+        f"urdfcli.check({str(cases['triangle'])!r}, targets=['mujoco', 'drake', 'pinocchio', 'pybullet'])\n"
+        "print(sorted(m for m in ('mujoco', 'pydrake', 'pinocchio', 'pybullet') if m in sys.modules))"
+    )
+    done = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=120)
+    assert done.stdout.strip() == "[]", done.stderr
+
+
+def test_targets_in_the_configuration(tmp_path):
+    model = tmp_path / "arm.urdf"
+    model.write_text(CASES["lower-above-upper"])
+    (tmp_path / "urdfcli.toml").write_text('targets = ["drake"]\n')
+    done = run_cli("check", "--format", "concise", str(model))
+    assert " C204 error: Drake aborts" in done.stdout.decode() + done.stderr.decode()
+    (tmp_path / "urdfcli.toml").write_text('targets = ["drak"]\n')
+    done = run_cli("check", str(model))
+    assert done.returncode == 2 and "unknown target 'drak'" in done.stderr.decode()

@@ -19,6 +19,7 @@ from .common import (
     PackagePathOption,
     TargetOption,
     choose,
+    fail,
     format_option,
     report_unreadable,
     session,
@@ -37,6 +38,7 @@ def check(
     output_format: FormatOption = "auto",
     strict: Annotated[bool, typer.Option("--strict", help="Fail (exit 1) on warnings too.")] = False,
     target: TargetOption = None,
+    load: Annotated[bool, typer.Option("--load", help="Also load each model into the --target consumers' own Python packages (mujoco, pydrake, pinocchio, pybullet) and report what they say.")] = False,
     package_path: PackagePathOption = None,
     config: ConfigOption = None,
     isolated: IsolatedOption = False,
@@ -56,6 +58,11 @@ def check(
     output = Output.standard(color)
     with session(package_path, config=config, isolated=isolated, targets=target) as run:
         found = api.run(paths, mappings, "check", run)
+        if load:
+            try:
+                api.load_into_targets(found.results, run)
+            except api.UsageError as error:
+                raise fail(str(error)) from None
         report_unreadable(output, found.unreadable)
         report.reporter(output_format)(found.results, output, "check", run.sources)
     failing = Severity.WARNING.rank if strict else Severity.ERROR.rank

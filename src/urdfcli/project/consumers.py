@@ -195,3 +195,62 @@ def main(argv: list[str]) -> int:
 
 if __name__ == "__main__":
     sys.exit(main(sys.argv[1:]))
+
+
+# -- --load: the real load beside the prediction -------------------------------------------------
+
+WARNING_LINE = ("warning", "b3warning")
+
+
+def verify(loaded_model, diagnostics: list, chosen) -> list:
+    """Load a model into ``chosen``'s consumer and say what it did: its error (C001) and
+    warnings (C003), placed at the link or joint they name, and C002 when its verdict is
+    not urdfcli's (an error of the target's rules). ``loaded_model`` is a model.load.Loaded."""
+    from ..model.targets import CODES
+
+    document = loaded_model.document
+    with _as_file(document) as path:
+        real = load(chosen.target, path, tuple(sorted(chosen.variants)))
+    found = []
+    robot = loaded_model.robot
+    if not real.accepted:
+        first = real.error.splitlines()[0] if real.error else "refused the model"
+        found.append(_placed(loaded_model, "C001", f"{chosen.name} refuses the model: {first}", real.error))
+    for line in real.printed.splitlines():
+        if line.lower().lstrip().startswith(WARNING_LINE) or ": warning:" in line.lower():
+            found.append(_placed(loaded_model, "C003", f"{chosen.name} warns: {line.strip()[:300]}", line))
+    predicted = any(d.code.startswith(CODES[chosen.target]) and d.severity is not None and d.severity.value == "error" for d in diagnostics)
+    if predicted == real.accepted:
+        said = "rejects" if predicted else "accepts"
+        did = "accepted it" if real.accepted else "refused it"
+        found.append(loaded_model.diagnostic("C002", f"urdfcli predicted that {chosen.name} {said} the model, but {did}", robot.at))
+    return found
+
+
+def _placed(loaded_model, code: str, message: str, text: str):
+    """A diagnostic at the first link or joint the consumer's text names ('link1'), else at <robot>."""
+    import re
+
+    robot = loaded_model.robot
+    for name in re.findall(r"'([^']+)'", text):
+        element = robot.links.get(name) or robot.joints.get(name)
+        if element is not None:
+            return loaded_model.diagnostic(code, message, element.at, subjects=(name,))
+    return loaded_model.diagnostic(code, message, robot.at)
+
+
+@contextlib.contextmanager
+def _as_file(document) -> Iterator[str]:
+    """The model as a file the consumer can read: the input itself, or a xacro input's
+    expansion written beside it (so that relative mesh paths still resolve), removed after."""
+    if not document.is_xacro and document.file is not None:
+        yield str(document.file)
+        return
+    folder = os.path.dirname(os.path.abspath(document.file)) if document.file is not None else None
+    handle, path = tempfile.mkstemp(prefix=".urdfcli-load-", suffix=".urdf", dir=folder)
+    try:
+        with os.fdopen(handle, "w", encoding="utf-8") as out:
+            out.write(document.expanded_text or "")
+        yield path
+    finally:
+        os.unlink(path)

@@ -68,6 +68,7 @@ def as_json(rules: list[Rule]) -> str:
                 "default": r.default,
                 "in_check": r.in_check,
                 "urdfdom": r.urdfdom,
+                "target": r.target,
                 "summary": r.summary,
                 "options": [{"name": o.name, "type": o.kind, "default": o.default, "doc": o.doc} for o in r.options],
                 "doc": r.doc,
