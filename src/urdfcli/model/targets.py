@@ -116,6 +116,8 @@ def declared_matrix(link: Link) -> Matrix | None:
     if inertial is None or inertial.inertia is None:
         return None
     tensor = massprops.matrix(inertial.inertia)
+    if not any(inertial.origin.rpy):  # most inertials are not turned: no rotation to apply
+        return tensor
     return massprops.rotate(tensor, massprops.rotation(inertial.origin.rpy))
 
 
@@ -315,7 +317,8 @@ def mujoco_build(loaded: Loaded, chosen: Profile) -> Build:
         source = f"{', '.join(weighed)}: collision geometry at 1000 kg/m³" if weighed else "declared"
         bodies.append(Body(tuple(links), joint if moving(joint) else None, mass, moments, source))
     changed = {}
-    for joint in tree_joints(loaded):
+    joints = tree_joints(loaded)
+    for joint in joints:
         limit = joint.limit
         if joint.type == "revolute" and limit is not None and limit.lower >= limit.upper:
             changed[joint.name] = "unlimited"
@@ -323,8 +326,7 @@ def mujoco_build(loaded: Loaded, chosen: Profile) -> Build:
             changed[joint.name] = "three joints (_TX, _TY, _RZ)"
         elif joint.mimic is not None:
             changed[joint.name] = f"an equality constraint on {joint.mimic.joint}"
-    dof = sum(joint_dof(j) for j in tree_joints(loaded))
-    return Build(chosen, tuple(bodies), dropped, "fixed", dof, changed)
+    return Build(chosen, tuple(bodies), dropped, "fixed", sum(joint_dof(j) for j in joints), changed)
 
 
 # -- Drake 1.51 (multibody/parsing/detail_urdf_parser.cc, detail_common.cc) ---------------

@@ -187,16 +187,21 @@ def mesh_format(loaded, profile):
     </link>
     ```
     """
+    found: dict[str, list] = {}  # extension -> the links and meshes: said once per extension
     for name, geometry in _meshes(loaded, mujoco_options(loaded).discardvisual):
         extension = mesh_extension(geometry.filename)
         if extension not in DECODED:
-            yield loaded.diagnostic(
-                "C104",
-                f"MuJoCo rejects link '{name}': it has no decoder for {extension or 'extension-less'} mesh '{geometry.filename}'",
-                geometry.at,
-                "convert the mesh to .stl or .obj for MuJoCo",
-                subjects=(name,),
-            )
+            found.setdefault(extension, []).append((name, geometry))
+    for extension, meshes in found.items():
+        name, geometry = meshes[0]
+        more = f" (and {len(meshes) - 1} more {extension or 'extension-less'} meshes)" if len(meshes) > 1 else ""
+        yield loaded.diagnostic(
+            "C104",
+            f"MuJoCo rejects link '{name}': it has no decoder for {extension or 'extension-less'} mesh '{geometry.filename}'{more}",
+            geometry.at,
+            "convert the meshes to .stl or .obj for MuJoCo",
+            subjects=tuple(dict.fromkeys(n for n, _ in meshes)),
+        )
 
 
 @check("C105", "mujoco-package-uri", ERROR, "MuJoCo does not resolve package:// mesh paths.", target="mujoco")
@@ -224,15 +229,17 @@ def package_uri(loaded, profile):
     </link>
     ```
     """
-    for name, geometry in _meshes(loaded, mujoco_options(loaded).discardvisual):
-        if geometry.filename.startswith("package://"):
-            yield loaded.diagnostic(
-                "C105",
-                f"MuJoCo rejects link '{name}': it does not resolve '{geometry.filename}'",
-                geometry.at,
-                "give MuJoCo a copy with paths relative to the model (`urdfcli expand` then replace package://PKG/ by the package's path), or set <mujoco><compiler meshdir=.../></mujoco>",
-                subjects=(name,),
-            )
+    meshes = [(name, g) for name, g in _meshes(loaded, mujoco_options(loaded).discardvisual) if g.filename.startswith("package://")]
+    if meshes:  # said once per model
+        name, geometry = meshes[0]
+        more = f" (and {len(meshes) - 1} more package:// meshes)" if len(meshes) > 1 else ""
+        yield loaded.diagnostic(
+            "C105",
+            f"MuJoCo rejects link '{name}': it does not resolve '{geometry.filename}'{more}",
+            geometry.at,
+            "give MuJoCo a copy with paths relative to the model (`urdfcli expand` then replace package://PKG/ by the package's path), or set <mujoco><compiler meshdir=.../></mujoco>",
+            subjects=tuple(dict.fromkeys(n for n, _ in meshes)),
+        )
 
 
 @check("C106", "mujoco-unlimited-joint", WARNING, "MuJoCo drops a joint's limits when lower >= upper.", target="mujoco")
