@@ -60,6 +60,8 @@ CASES = {
                                       link("link2"), joint("j2", "link1", "link2", "fixed", limit="", axis="")),
     "lower-above-upper": arm(j1=joint("j1", "base_link", "link1", limit='<limit lower="1" upper="-1" effort="1" velocity="1"/>')),
     "lower-equals-upper": arm(j1=joint("j1", "base_link", "link1", limit='<limit lower="0.5" upper="0.5" effort="1" velocity="1"/>')),
+    "revolute-no-limit": arm(j1=joint("j1", "base_link", "link1", limit="")),
+    "prismatic-no-limit": arm(j1=joint("j1", "base_link", "link1", "prismatic", limit="")),
     "continuous-with-limits": arm(j1=joint("j1", "base_link", "link1", "continuous")),
     "continuous-effort-only": arm(j1=joint("j1", "base_link", "link1", "continuous", limit='<limit effort="1" velocity="1"/>')),
     "mimic": arm(None, None, link("link2"), joint("j2", "link1", "link2", extra='<mimic joint="j1"/>')),

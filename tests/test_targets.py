@@ -1,22 +1,27 @@
 """urdfcli's --target predictions against the real consumers (the differential test).
 
-Every case of tests/target_cases.py is loaded into MuJoCo, Drake, Pinocchio and
-PyBullet (each in a child process: urdfcli.project.consumers), and urdfcli checks
-it with ``--target``. For each consumer:
+Every case of tests/target_cases.py is loaded into MuJoCo, Drake, Pinocchio,
+PyBullet and Isaac Sim's converter (each in a child process: urdfcli.project.consumers),
+converted by sdformat for Gazebo (``ign sdf -p`` and ``-k``) and made a KDL tree by
+kdl_parser (tests/support/kdl_tree.cpp; both in tests/consumer_programs.py), and
+urdfcli checks it with ``--target``. For each consumer:
 
 - urdfcli reports an error of that target's rules exactly when the consumer
-  rejects the model (Pinocchio reads URDF with urdfdom: check_urdf's errors count too);
-- each element the consumer drops or changes (a joint left unlimited, a body's mass
-  or tensor replaced, a mimic joint made free, a floating joint made fixed) is
-  named by a diagnostic of that target's rules;
+  rejects the model (Pinocchio, sdformat and kdl_parser read URDF with urdfdom:
+  check_urdf's errors count too);
+- each element the consumer drops or changes (a joint left unlimited, locked or made
+  fixed, its limits swapped, a body's mass or tensor replaced, a link dropped or
+  lumped, a mimic joint made free, a root's inertia dropped) is named by a
+  diagnostic of that target's rules;
 - the masses and principal moments ``inertia --target`` predicts are those the
   consumer built.
 
 The published example-robot-data models go through MuJoCo and Pinocchio too,
 with package:// rewritten to the same absolute paths for both.
 
-The consumers are test dependencies (the ``targets`` extra, which ``make test``
-installs); locally a missing one skips with a message, in CI it fails.
+The consumers are test dependencies (the ``targets`` extra and the Debian packages
+of the Makefile's ``system-test``, which ``make test`` installs); locally a missing
+one skips with a message, in CI it fails.
 """
 
 from __future__ import annotations
@@ -26,9 +31,11 @@ import math
 import re
 import subprocess
 import sys
+import tempfile
 from functools import cache
 from pathlib import Path
 
+import consumer_programs
 import pytest
 from conftest import IN_CI, example_robot_data, lint_file, run_cli
 from target_cases import CASES, write_cases
@@ -39,14 +46,16 @@ from urdfcli.project import consumers
 from urdfcli.project.config import Config
 from urdfcli.rules import rule
 
-PROFILES = ["mujoco", "drake", "pinocchio", "pinocchio:mimic", "pybullet", "pybullet:inertia-from-file"]
+PROFILES = ["mujoco", "drake", "pinocchio", "pinocchio:mimic", "pybullet", "pybullet:inertia-from-file", "gazebo", "kdl", "isaac"]
+URDFDOM_READS = {"pinocchio", "gazebo", "kdl"}  # consumers that read URDF with urdfdom: check_urdf's errors are theirs
 # The .dae stand-in is not a real COLLADA file: PyBullet, which reads it, segfaults on its content,
 # which urdfcli does not read (MuJoCo and Drake judge the extension alone).
 CONTENT_READ = {("pybullet", "dae-collision")}
 
 
 def require_consumer(target: str) -> None:
-    if importlib.util.find_spec(consumers.PACKAGES[target]) is not None:
+    """A Python consumer must be importable; a program is looked for when it is first run."""
+    if target not in consumers.PACKAGES or importlib.util.find_spec(consumers.PACKAGES[target]) is not None:
         return
     message = f"{target} is not installed ({consumers.install_hint(target)}): its differential test cannot run"
     if IN_CI:
@@ -60,11 +69,26 @@ def cases(tmp_path_factory) -> dict[str, Path]:
 
 
 @cache
+def kdl_tree() -> str:
+    """tests/support/kdl_tree.cpp compiled, once per test run."""
+    return consumer_programs.kdl_program(Path(tempfile.mkdtemp(prefix="urdfcli-kdl-")))
+
+
+def load_all(chosen: Profile, paths: list[str]) -> list[consumers.Loaded]:
+    if chosen.target == "gazebo":
+        command = consumer_programs.sdformat()
+        return [consumer_programs.gazebo(command, path) for path in paths]
+    if chosen.target == "kdl":
+        program = kdl_tree()
+        return [consumer_programs.kdl(program, path) for path in paths]
+    return consumers.load_many(chosen.target, paths, tuple(sorted(chosen.variants)))
+
+
+@cache
 def real_loads(text: str, folder: str) -> dict[str, consumers.Loaded]:
     """Every case loaded into one consumer profile, once per test run."""
-    chosen = profile(text)
     paths = [str(Path(folder) / f"{name}.urdf") for name in CASES]
-    return dict(zip(CASES, consumers.load_many(chosen.target, paths, tuple(sorted(chosen.variants)))))
+    return dict(zip(CASES, load_all(profile(text), paths)))
 
 
 def predicted(path: Path, chosen: Profile):
@@ -80,7 +104,7 @@ def predicted_rejection(result, chosen: Profile) -> bool:
     errors = [d for d in result.diagnostics if d.severity is Severity.ERROR]
     if any(d.code.startswith(CODES[chosen.target]) for d in errors):
         return True
-    return chosen.target == "pinocchio" and any(rule(d.code).urdfdom for d in errors)
+    return chosen.target in URDFDOM_READS and any(rule(d.code).urdfdom for d in errors)
 
 
 @pytest.mark.parametrize("case", list(CASES))
@@ -164,17 +188,60 @@ def pybullet_changes(robot, built: dict, from_file: bool) -> set[str]:
         urdf = robot.joints[joint["name"]]
         if joint["type"] == 4 and urdf.type != "fixed":  # JOINT_FIXED
             changed.add(urdf.name)
+        if urdf.type in ("revolute", "prismatic") and joint["lower"] > joint["upper"]:  # Bullet's "no limit"
+            changed.add(urdf.name)
+    return changed
+
+
+def gazebo_changes(robot, built: dict) -> set[str]:
+    """Links left out of the SDF (dropped or lumped; a link named world is the world itself),
+    joints whose limits or mimic changed."""
+    links = {b["name"] for b in built["bodies"]}
+    changed = {name for name in robot.links if name not in links and name != "world"}
+    for joint in built["joints"]:
+        urdf = robot.joints.get(joint["name"])
+        if urdf is None:
+            continue
+        if urdf.type in ("revolute", "prismatic") and (joint["lower"], joint["upper"]) != (urdf.limit.lower, urdf.limit.upper):
+            changed.add(urdf.name)
+        if urdf.mimic is not None and not joint["mimic"]:
+            changed.add(urdf.name)
+    return changed
+
+
+def kdl_changes(robot, built: dict) -> set[str]:
+    """Joints made fixed, and a root whose mass the tree has no place for."""
+    changed = {s["joint"] for s in built["bodies"] if s["type"] in ("Fixed", "None") and robot.joints[s["joint"]].type != "fixed"}
+    root = robot.links[built["root"]]
+    if root.inertial is not None and root.inertial.mass:
+        changed.add(root.name)
+    return changed
+
+
+def isaac_changes(robot, built: dict) -> set[str]:
+    """Joints whose limits are not the declared ones, bodies left to be weighed by their colliders."""
+    changed = set()
+    for joint in built["joints"]:
+        urdf = robot.joints.get(joint["name"])
+        if urdf is None or urdf.type not in ("revolute", "prismatic"):
+            continue
+        declared = (urdf.limit.lower, urdf.limit.upper) if urdf.limit is not None else (None, None)
+        if any(a is None or b is None or abs(a - b) > 1e-6 for a, b in zip(declared, (joint["lower"], joint["upper"]))):
+            changed.add(urdf.name)
+    for body in built["bodies"]:
+        if not body["mass"] and robot.links[body["name"]].collisions:
+            changed.add(body["name"])
     return changed
 
 
 def changes(chosen: Profile, robot, built: dict) -> set[str]:
-    if chosen.target == "mujoco":
-        return mujoco_changes(robot, built)
-    if chosen.target == "drake":
-        return drake_changes(robot, built)
-    if chosen.target == "pinocchio":
-        return pinocchio_changes(robot, built)
-    return pybullet_changes(robot, built, "inertia-from-file" in chosen.variants)
+    if chosen.target == "pybullet":
+        return pybullet_changes(robot, built, "inertia-from-file" in chosen.variants)
+    return CHANGES[chosen.target](robot, built)
+
+
+CHANGES = {"mujoco": mujoco_changes, "drake": drake_changes, "pinocchio": pinocchio_changes, "gazebo": gazebo_changes,
+           "kdl": kdl_changes, "isaac": isaac_changes}
 
 
 @pytest.mark.parametrize("case", list(CASES))
@@ -189,6 +256,21 @@ def test_each_change_is_named(text, case, cases):
     named = {subject for d in target_diagnostics(result, chosen) for subject in d.subjects}
     missing = changes(chosen, declared(cases[case]), real.built) - named
     assert not missing, (missing, [(d.code, d.message) for d in target_diagnostics(result, chosen)])
+
+
+@pytest.mark.parametrize("case", list(CASES))
+@pytest.mark.parametrize("text", PROFILES)
+def test_each_warning_names_a_change(text, case, cases):
+    """The converse: a warning of the target's rules names only elements the consumer changed."""
+    chosen = profile(text)
+    require_consumer(chosen.target)
+    real = real_loads(text, str(cases[case].parent))[case]
+    if not real.accepted:
+        pytest.skip(f"{text} rejects {case}: nothing built to compare")
+    changed = changes(chosen, declared(cases[case]), real.built)
+    result = predicted(cases[case], chosen)
+    unfounded = [(d.code, d.message) for d in target_diagnostics(result, chosen) if d.severity is Severity.WARNING and not set(d.subjects) & changed]
+    assert not unfounded, (unfounded, changed)
 
 
 def test_a_clean_model_draws_no_warning_for_the_elements_kept(cases):
@@ -206,8 +288,11 @@ EXACT = {"baseline", "zero-mass", "no-inertial-box", "triangle", "negative-mass"
          "massless-with-fixed-mass", "no-collision", "world-root"}
 
 
+SINGLE_PRECISION = {"isaac"}  # USD keeps masses and moments as 32-bit floats
+
+
 @pytest.mark.parametrize("case", sorted(EXACT))
-@pytest.mark.parametrize("text", ["mujoco", "drake", "pybullet", "pybullet:inertia-from-file"])
+@pytest.mark.parametrize("text", ["mujoco", "drake", "pybullet", "pybullet:inertia-from-file", "gazebo", "kdl", "isaac"])
 def test_predicted_mass_properties_are_those_built(text, case, cases):
     chosen = profile(text)
     require_consumer(chosen.target)
@@ -217,12 +302,13 @@ def test_predicted_mass_properties_are_those_built(text, case, cases):
     loaded = lint_file(str(cases[case]), Config()).loaded
     built = {b["name"]: b for b in real.built.get("bodies", real.built.get("links", []))}
     compared = 0
+    tolerance = 1e-6 if chosen.target in SINGLE_PRECISION else 1e-9
     for body in build(loaded, chosen).bodies:
         found = built.get(body.top)
         if found is None or body.mass is None or body.moments is None:
             continue
         compared += 1
-        assert math.isclose(found["mass"], body.mass, rel_tol=1e-9, abs_tol=1e-12), (body.top, found, body)
+        assert math.isclose(found["mass"], body.mass, rel_tol=tolerance, abs_tol=1e-12), (body.top, found, body)
         if text != "mujoco" or loaded.robot.links[body.top].inertial is not None:  # MuJoCo's geometry tensor is not predicted
             assert not apart(found["inertia"], body.moments, 1e-6), (body.top, found["inertia"], body.moments)
     assert compared

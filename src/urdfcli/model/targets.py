@@ -588,23 +588,51 @@ def kdl_build(loaded: Loaded, chosen: Profile) -> Build:
     return Build(chosen, tuple(bodies), dropped, "fixed", dof, changed)
 
 
-# -- Isaac Sim 6 importer, stage 1: urdf-usd-converter 0.3.4 -------------------------------
+# -- Isaac Sim 6 importer, stage 1: urdf-usd-converter 0.3.4 (_impl/link.py, _impl/link_hierarchy.py) --
+
+
+def zero_equivalent(link: Link) -> bool:
+    """urdf-usd-converter's "no inertial data": no <inertial> or mass, or a mass <= 0 with
+    no tensor or a zero diagonal (``_is_zero_equivalent_inertial``)."""
+    inertial = link.inertial
+    if inertial is None or inertial.mass is None:
+        return True
+    if inertial.mass > 0:
+        return False
+    tensor = inertial.inertia
+    return tensor is None or all(tensor[key] == 0 for key in ("ixx", "iyy", "izz"))
+
+
+def isaac_merged_child(loaded: Loaded, link: Link) -> str | None:
+    """The inertial-only child whose inertia the converter writes onto ``link`` (a link with
+    shapes but no inertial data): the first one on a fixed joint (``_fixed_dummy_inertia_children``)."""
+    if not zero_equivalent(link) or not (link.visuals or link.collisions):
+        return None
+    for joint in loaded.robot.joints.values():
+        child = loaded.robot.links.get(joint.child)
+        if joint.parent == link.name and joint.type == "fixed" and child is not None:
+            if not zero_equivalent(child) and not (child.visuals or child.collisions):
+                return child.name
+    return None
 
 
 def isaac_build(loaded: Loaded, chosen: Profile) -> Build:
     bodies, changed, dof = [], {}, 0
+    merged = {name: child for name, link in loaded.robot.links.items() if (child := isaac_merged_child(loaded, link))}
     for name, link in loaded.robot.links.items():
+        if name in merged.values():
+            continue
         joint = loaded.parent_joint(name)
-        mass = declared_mass(link)
-        if link.inertial is None or not mass:
-            source = "derived by the physics engine from the collision shapes (mass 0 is unset in USD)"
-            mass = None
+        written = loaded.robot.links[merged[name]] if name in merged else link
+        mass = declared_mass(written)
+        if mass:
+            source = f"declared by {written.name} (written unchecked)" if name in merged else "declared (written unchecked)"
+            moments = combined(loaded, [written.name], declared_part)[1]
         else:
-            source = "declared (written unchecked)"
-        moments = None if mass is None else combined(loaded, [name], declared_part)[1]
-        bodies.append(Body((name,), joint if moving(joint) else None, mass, moments, source))
+            source, mass, moments = "derived by the physics engine from the collision shapes (mass 0 is unset in USD)", None, None
+        bodies.append(Body((name, merged[name]) if name in merged else (name,), joint if moving(joint) else None, mass, moments, source))
     for joint in tree_joints(loaded):
-        if joint.type == "revolute" and joint.limit is None:
+        if joint.type in ("revolute", "prismatic") and joint.limit is None:
             changed[joint.name] = "locked (no <limit>: lower = upper = 0)"
             continue
         if joint.type == "floating":

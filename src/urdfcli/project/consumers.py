@@ -1,5 +1,5 @@
-"""Loading a model into a real consumer (MuJoCo, Drake, Pinocchio, PyBullet), for
-``check --target NAME --load`` and the differential tests.
+"""Loading a model into a real consumer (MuJoCo, Drake, Pinocchio, PyBullet, Isaac Sim's
+converter), for ``check --target NAME --load`` and the differential tests.
 
 The consumer runs in a child process (``python -m urdfcli.project.consumers NAME
 VARIANTS FILE``): PyBullet segfaults on some models and Drake turns some inputs
@@ -22,8 +22,8 @@ import tempfile
 from collections.abc import Iterator
 from typing import Any, NamedTuple
 
-PACKAGES = {"mujoco": "mujoco", "drake": "pydrake", "pinocchio": "pinocchio", "pybullet": "pybullet"}
-INSTALL = {"mujoco": "mujoco", "drake": "drake", "pinocchio": "pin", "pybullet": "pybullet"}
+PACKAGES = {"mujoco": "mujoco", "drake": "pydrake", "pinocchio": "pinocchio", "pybullet": "pybullet", "isaac": "urdf_usd_converter"}
+INSTALL = {"mujoco": "mujoco", "drake": "drake", "pinocchio": "pin", "pybullet": "pybullet", "isaac": "urdf-usd-converter"}
 TIMEOUT = 120.0  # seconds a consumer may take to load one model
 
 
@@ -58,9 +58,10 @@ def load_many(target: str, paths: list[str], variants: tuple[str, ...] = ()) -> 
     file, since it may crash): one :class:`Loaded` per path, in order."""
     if target == "pybullet" and len(paths) > 1:
         return [load(target, path, variants) for path in paths]
-    command = [sys.executable, "-m", "urdfcli.project.consumers", target, ",".join(variants), *paths]
+    command = [sys.executable, "-m", "urdfcli.project.consumers", target, ",".join(variants), *map(os.path.abspath, paths)]
     try:
-        done = subprocess.run(command, capture_output=True, text=True, timeout=TIMEOUT * len(paths), errors="replace")
+        with tempfile.TemporaryDirectory(prefix="urdfcli-load-") as folder:  # where MuJoCo writes MUJOCO_LOG.TXT
+            done = subprocess.run(command, capture_output=True, text=True, timeout=TIMEOUT * len(paths), errors="replace", cwd=folder)
     except subprocess.TimeoutExpired:
         return [Loaded(False, f"{target} did not finish loading in {TIMEOUT:.0f} s")] * len(paths)
     answers = [json.loads(line) for line in done.stdout.splitlines() if line.startswith("{")]
@@ -175,7 +176,43 @@ def _pybullet(path: str, variants: tuple[str, ...]) -> dict:
     return {"links": links, "joints": joints}
 
 
-LOADERS = {"mujoco": _mujoco, "drake": _drake, "pinocchio": _pinocchio, "pybullet": _pybullet}
+def _isaac(path: str, variants: tuple[str, ...]) -> dict:
+    """Isaac Sim 6's importer, stage 1: the USD stage urdf-usd-converter writes, read back:
+    its rigid bodies (mass None where none is authored: the physics engine weighs the
+    colliders) and its joints (limits in radians or metres, None where there is none)."""
+    from pxr import Usd, UsdPhysics
+    from urdf_usd_converter import Converter
+
+    with tempfile.TemporaryDirectory() as folder:
+        stage = Usd.Stage.Open(Converter(layer_structure=False, scene=False).convert(path, folder).path)
+        bodies, joints = [], []
+        for prim in stage.Traverse():
+            name = prim.GetDisplayName() or prim.GetName()  # a name USD cannot hold is kept as the display name
+            if prim.HasAPI(UsdPhysics.RigidBodyAPI):
+                bodies.append({"name": name, "mass": _authored(UsdPhysics.MassAPI(prim).GetMassAttr()),
+                               "inertia": _authored(UsdPhysics.MassAPI(prim).GetDiagonalInertiaAttr())})
+            elif prim.IsA(UsdPhysics.Joint):
+                joints.append({"name": name, "type": prim.GetTypeName(), **_usd_limits(prim)})
+        return {"bodies": bodies, "joints": joints}
+
+
+def _authored(attribute) -> Any:
+    """An attribute's value as JSON, None where the converter wrote none."""
+    if not attribute.HasAuthoredValue():
+        return None
+    value = attribute.Get()
+    return [float(v) for v in value] if hasattr(value, "__len__") else float(value)
+
+
+def _usd_limits(prim) -> dict:
+    """A revolute joint's limits back in radians (USD keeps degrees), a prismatic one's in metres."""
+    lower, upper = (prim.GetAttribute(f"physics:{side}Limit") for side in ("lower", "upper"))
+    scale = math.radians(1.0) if prim.GetTypeName() == "PhysicsRevoluteJoint" else 1.0
+    found = {side: _authored(attribute) for side, attribute in (("lower", lower), ("upper", upper)) if attribute}
+    return {side: None if value is None or not math.isfinite(value) else value * scale for side, value in found.items()}
+
+
+LOADERS = {"mujoco": _mujoco, "drake": _drake, "pinocchio": _pinocchio, "pybullet": _pybullet, "isaac": _isaac}
 
 
 def main(argv: list[str]) -> int:

@@ -179,3 +179,74 @@ def lumps_fixed_links(loaded, profile):
             'keep one with <gazebo reference="JOINT"><preserveFixedJoint>true</preserveFixedJoint></gazebo>',
             subjects=tuple(lumped),
         )
+
+
+@check("C505", "gazebo-floating-joint", ERROR, "Gazebo cannot load a floating or planar joint.", target="gazebo")
+def floating_joint(loaded, profile):
+    """## What it does
+    With `--target gazebo`: finds a floating or planar joint.
+
+    ## Why is this bad?
+    SDFormat has neither: sdformat 12 leaves the joint out of the SDF but still places
+    the child link relative to it, and the model fails to load ("relative_to name[j1]
+    specified by link with name[link1] does not match a nested model, link, joint, or
+    frame name", then "PoseRelativeToGraph error"; parser_urdf.cc, `CreateJoint`).
+
+    ## Example
+    ```xml
+    <joint name="object" type="floating"><parent link="world"/><child link="box"/></joint>
+    ```
+
+    ## Use instead
+    ```xml
+    <joint name="object" type="fixed"><parent link="world"/><child link="box"/></joint>
+    ```
+    """
+    for joint in loaded.robot.joints.values():
+        if joint.type in ("floating", "planar"):
+            yield loaded.diagnostic(
+                "C505",
+                f"Gazebo cannot load {joint.type} joint '{joint.name}': sdformat leaves it out but places '{joint.child}' relative to it",
+                joint.at,
+                "spawn the free body as a model of its own; for a planar base use a Gazebo plugin (such as a planar move plugin)",
+                subjects=(joint.name,),
+            )
+
+
+@check("C506", "gazebo-drops-mimic", WARNING, "Gazebo (sdformat 12) drops <mimic>.", target="gazebo")
+def drops_mimic(loaded, profile):
+    """## What it does
+    With `--target gazebo`: finds a joint with a `<mimic>`.
+
+    ## Why is this bad?
+    sdformat 12 does not convert `<mimic>` (SDFormat 1.9 has no mimic): the joint moves on
+    its own, so a gripper's second finger does not follow the first. sdformat 14 (Gazebo
+    Harmonic) converts it to `<axis><mimic>` (gazebosim/sdformat pull request 1333).
+
+    ## Example
+    ```xml
+    <robot name="gripper">
+      <link name="palm"/><link name="left"/><link name="right"/>
+      <joint name="left_joint" type="prismatic"><parent link="palm"/><child link="left"/><limit lower="0" upper="0.04" effort="10" velocity="0.1"/></joint>
+      <joint name="right_joint" type="prismatic"><parent link="palm"/><child link="right"/><limit lower="0" upper="0.04" effort="10" velocity="0.1"/>
+        <mimic joint="left_joint"/></joint>
+    </robot>
+    ```
+
+    ## Use instead
+    ```xml
+    <robot name="gripper">
+      <link name="palm"/><link name="left"/>
+      <joint name="left_joint" type="prismatic"><parent link="palm"/><child link="left"/><limit lower="0" upper="0.04" effort="10" velocity="0.1"/></joint>
+    </robot>
+    ```
+    """
+    for joint in loaded.robot.joints.values():
+        if joint.mimic is not None and joint.type not in (None, "fixed"):
+            yield loaded.diagnostic(
+                "C506",
+                f"Gazebo (sdformat 12) drops the <mimic> of joint '{joint.name}': it moves on its own, not with '{joint.mimic.joint}'",
+                joint.part("mimic") or joint.at,
+                "drive it with a mimic joint plugin, or use Gazebo Harmonic (sdformat 14), which converts <mimic>",
+                subjects=(joint.name,),
+            )

@@ -1,21 +1,23 @@
 """Isaac Sim 6's URDF importer, stage 1: urdf-usd-converter 0.3.4 (_impl/urdf_parser/parser.py,
-_impl/link.py, _impl/joint.py). Isaac Sim's Kit post-processing (merging fixed joints, fixing the
+_impl/link.py, _impl/link_hierarchy.py). Isaac Sim's Kit post-processing (merging fixed joints, fixing the
 base, drives) is not modelled; Isaac Sim 5.1 stopped merging fixed joints by default."""
 
 from __future__ import annotations
 
+from ...model.targets import isaac_merged_child
 from ..base import WARNING, check
 from .common import link_at
 
 
-@check("C701", "isaac-locks-joint", WARNING, "Isaac Sim locks a revolute joint without <limit>.", target="isaac")
+@check("C701", "isaac-locks-joint", WARNING, "Isaac Sim locks a revolute or prismatic joint without <limit>.", target="isaac")
 def locks_joint(loaded, profile):
     """## What it does
-    With `--target isaac`: finds a revolute joint without `<limit>`.
+    With `--target isaac`: finds a revolute or prismatic joint without `<limit>`.
 
     ## Why is this bad?
     urdfdom rejects it (J003), but Isaac Sim's importer takes it, writes its limits
-    as lower = upper = 0, and the joint cannot move (urdf-usd-converter, _impl/joint.py).
+    as lower = upper = 0 ("If limit is omitted, set to 0.0": urdf-usd-converter,
+    _impl/link.py, `physics_joints`), and the joint cannot move.
 
     ## Example
     ```xml
@@ -33,12 +35,12 @@ def locks_joint(loaded, profile):
     ```
     """
     for joint in loaded.robot.joints.values():
-        if joint.type == "revolute" and joint.limit is None:
+        if joint.type in ("revolute", "prismatic") and joint.limit is None:
             yield loaded.diagnostic(
                 "C701",
                 f"Isaac Sim locks joint '{joint.name}': without <limit> it writes lower = upper = 0",
                 joint.at,
-                'add <limit lower="..." upper="..." effort="..." velocity="..."/>, or make it continuous',
+                'add <limit lower="..." upper="..." effort="..." velocity="..."/>' + (", or make it continuous" if joint.type == "revolute" else ""),
                 subjects=(joint.name,),
             )
 
@@ -47,12 +49,14 @@ def locks_joint(loaded, profile):
 def mass_from_colliders(loaded, profile):
     """## What it does
     With `--target isaac`: finds a link with collision shapes but without `<inertial>`
-    or with mass 0.
+    or with mass 0, unless the importer writes onto it the inertia of a child that has
+    only an `<inertial>`, on a fixed joint (the KDL workaround for a root's inertia).
 
     ## Why is this bad?
     A mass of 0 is "unset" in USD physics: the physics engine gives the rigid body the
     mass of its colliders at the default density, which the model never states
-    (urdf-usd-converter, _impl/link.py).
+    (urdf-usd-converter, _impl/link.py: `apply_inertial` writes no mass then;
+    `_fixed_dummy_inertia_children` finds the child it writes instead).
 
     ## Example
     ```xml
@@ -71,7 +75,7 @@ def mass_from_colliders(loaded, profile):
     """
     for name, link in loaded.robot.links.items():
         mass = link.inertial.mass if link.inertial is not None else None
-        if link.collisions and not mass:
+        if link.collisions and not mass and isaac_merged_child(loaded, link) is None:
             yield loaded.diagnostic(
                 "C702",
                 f"Isaac Sim gives link '{name}' the mass of its colliders at the default density: it has {'mass 0' if link.inertial is not None else 'no <inertial>'}",

@@ -10,7 +10,7 @@ LOAD_REJECTED = declare(
     "C001", "target-load-rejected", ERROR, "The consumer itself refused the model (--load).",
     explain(
         """With `--target NAME --load`: the model was loaded into the consumer's own Python package
-        (mujoco, pydrake, pinocchio, pybullet) in a child process, and it refused it; the message
+        (mujoco, pydrake, pinocchio, pybullet, urdf_usd_converter) in a child process, and it refused it; the message
         is the consumer's, placed at the link or joint it names.""",
         "The consumer cannot use the model as written.",
         '<robot name="r">\n  <link name="base"/>\n  ' + _EXAMPLE + "\n  <joint name=\"j\" type=\"continuous\"><parent link=\"base\"/><child link=\"wrist\"/></joint>\n</robot>",

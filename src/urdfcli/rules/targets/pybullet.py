@@ -5,7 +5,7 @@ from __future__ import annotations
 
 from ...model import massprops
 from ...model.targets import build, declared_matrix, valid_tensor
-from ..base import INFO, WARNING, check
+from ..base import ERROR, INFO, WARNING, check
 from .common import limit_at, link_at, names, number
 
 RECOMPUTED_APART = 0.1  # a recomputed tensor further than this (relative) from the declared one is a change worth saying
@@ -255,3 +255,40 @@ def floating_base(loaded, profile):
             "load with useFixedBase=True for a fixed robot (check it with --target pybullet:fixed-base)",
             subjects=(root,),
         )
+
+
+@check("C407", "pybullet-joint-without-limit", ERROR, "PyBullet refuses a revolute or prismatic joint without <limit>.", target="pybullet")
+def joint_without_limit(loaded, profile):
+    """## What it does
+    With `--target pybullet`: finds a revolute or prismatic joint without `<limit>`.
+
+    ## Why is this bad?
+    PyBullet's own URDF parser, like urdfdom's (J003), refuses it: "Joint is of type
+    REVOLUTE but it does not specify limits" (UrdfParser.cpp, `parseJoint`), and
+    `loadURDF` raises "Cannot load URDF file.". MuJoCo, Drake and Isaac Sim take the
+    same file, so a model checked only with them fails here.
+
+    ## Example
+    ```xml
+    <joint name="elbow" type="revolute">
+      <parent link="upper_arm"/><child link="forearm"/><axis xyz="0 0 1"/>
+    </joint>
+    ```
+
+    ## Use instead
+    ```xml
+    <joint name="elbow" type="revolute">
+      <parent link="upper_arm"/><child link="forearm"/><axis xyz="0 0 1"/>
+      <limit lower="-1.5" upper="1.5" effort="10" velocity="1"/>
+    </joint>
+    ```
+    """
+    for joint in loaded.robot.joints.values():
+        if joint.type in ("revolute", "prismatic") and joint.limit is None:
+            yield loaded.diagnostic(
+                "C407",
+                f"PyBullet refuses joint '{joint.name}': a {joint.type} joint without <limit>",
+                joint.at,
+                'add <limit lower="..." upper="..." effort="..." velocity="..."/>' + (", or make it continuous" if joint.type == "revolute" else ""),
+                subjects=(joint.name,),
+            )
