@@ -107,9 +107,10 @@ def declare(code: str, name: str, severity: Severity, summary: str, doc: str = "
     return Rule(code, name, severity, summary, cleandoc(doc), **kwargs)
 
 
-def check(code: str, name: str, severity: Severity, summary: str, options: tuple[Option, ...] = (), **kwargs):
+def check(code: str, name: str, severity: Severity, summary: str, options: tuple[Option, ...] = (), doc: str | None = None, **kwargs):
     """Make a function over a loaded model a rule (its ``rule`` attribute); its
-    docstring is the rule's documentation.
+    docstring is the rule's documentation, unless ``doc`` gives it (made with
+    :func:`explain` where rules share their examples).
 
     A rule with options gets them as a second argument, a dict holding every
     option (defaults filled in); called with the model alone it uses the defaults.
@@ -124,7 +125,8 @@ def check(code: str, name: str, severity: Severity, summary: str, options: tuple
             def registered(loaded, values=None):
                 return function(loaded, {**defaults, **(values or {})})
 
-        function.rule = Rule(code, name, severity, summary, cleandoc(function.__doc__ or ""), function=registered, options=tuple(options), **kwargs)
+        text = doc if doc is not None else function.__doc__
+        function.rule = Rule(code, name, severity, summary, cleandoc(text or ""), function=registered, options=tuple(options), **kwargs)
         return function
 
     return register

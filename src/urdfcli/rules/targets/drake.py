@@ -5,39 +5,28 @@ from __future__ import annotations
 
 from ...model import massprops
 from ...model.targets import declared_mass, drake_replaces, mesh_extension
-from ..base import ERROR, INFO, WARNING, check
+from ..base import ERROR, INFO, WARNING, check, explain
 from .common import limit_at, link_at, number
+from .examples import INVERTED_LIMITS, ORDERED_LIMITS, TRIANGLE_BROKEN, TRIANGLE_KEPT, meshed
 
 CONVEX = (".obj", ".vtk", ".gltf")  # the collision meshes Drake 1.51 makes a convex hull of
 
 
-@check("C201", "drake-replaces-inertia", WARNING, "Drake replaces an invalid inertia with a water sphere.", target="drake")
+@check(
+    "C201", "drake-replaces-inertia", WARNING, "Drake replaces an invalid inertia with a water sphere.", target="drake",
+    doc=explain(
+        """With `--target drake`: finds a link whose `<inertial>` fails Drake's validity
+        test (a negative mass, a zero mass with a tensor, a tensor with a negative
+        principal moment or breaking the triangle inequality).""",
+        """Drake warns and replaces the inertia with that of a solid sphere of water of the
+        declared mass, or of 1 kg when the mass is not positive (`ParseSpatialInertia`:
+        "return a prepared plausible inertia"): a negative mass becomes +1 kg, and the
+        simulation runs on a body the model does not describe.""",
+        TRIANGLE_BROKEN,
+        TRIANGLE_KEPT,
+    ),
+)
 def replaces_inertia(loaded, profile):
-    """## What it does
-    With `--target drake`: finds a link whose `<inertial>` fails Drake's validity
-    test (a negative mass, a zero mass with a tensor, a tensor with a negative
-    principal moment or breaking the triangle inequality).
-
-    ## Why is this bad?
-    Drake warns and replaces the inertia with that of a solid sphere of water of the
-    declared mass, or of 1 kg when the mass is not positive (`ParseSpatialInertia`:
-    "return a prepared plausible inertia"): a negative mass becomes +1 kg, and the
-    simulation runs on a body the model does not describe.
-
-    ## Example
-    ```xml
-    <link name="wrist">
-      <inertial><mass value="1"/><inertia ixx="0.001" ixy="0" ixz="0" iyy="0.001" iyz="0" izz="0.01"/></inertial>
-    </link>
-    ```
-
-    ## Use instead
-    ```xml
-    <link name="wrist">
-      <inertial><mass value="1"/><inertia ixx="0.006" ixy="0" ixz="0" iyy="0.006" iyz="0" izz="0.01"/></inertial>
-    </link>
-    ```
-    """
     for name, link in loaded.robot.links.items():
         if not drake_replaces(link):
             continue
@@ -55,31 +44,19 @@ def replaces_inertia(loaded, profile):
         )
 
 
-@check("C202", "drake-collision-mesh-format", ERROR, "Drake rejects collision meshes other than .obj, .vtk and .gltf.", target="drake")
+@check(
+    "C202", "drake-collision-mesh-format", ERROR, "Drake rejects collision meshes other than .obj, .vtk and .gltf.", target="drake",
+    doc=explain(
+        """With `--target drake`: finds a collision mesh whose file extension is not `.obj`,
+        `.vtk` or `.gltf`. Judged by the extension; the file is not read.""",
+        """Drake 1.51 makes a convex hull of each collision mesh and refuses others:
+        "MakeConvexHull only applies to .obj, .vtk, and .gltf meshes" — the `.stl` and
+        `.dae` meshes of most ROS packages included.""",
+        meshed("base.stl"),
+        meshed("base.obj"),
+    ),
+)
 def collision_mesh_format(loaded, profile):
-    """## What it does
-    With `--target drake`: finds a collision mesh whose file extension is not `.obj`,
-    `.vtk` or `.gltf`. Judged by the extension; the file is not read.
-
-    ## Why is this bad?
-    Drake 1.51 makes a convex hull of each collision mesh and refuses others:
-    "MakeConvexHull only applies to .obj, .vtk, and .gltf meshes" — the `.stl` and
-    `.dae` meshes of most ROS packages included.
-
-    ## Example
-    ```xml
-    <link name="base">
-      <collision><geometry><mesh filename="base.stl"/></geometry></collision>
-    </link>
-    ```
-
-    ## Use instead
-    ```xml
-    <link name="base">
-      <collision><geometry><mesh filename="base.obj"/></geometry></collision>
-    </link>
-    ```
-    """
     for name, link in loaded.robot.links.items():
         for shape in link.collisions:
             geometry = shape.geometry
@@ -149,34 +126,20 @@ def _materials(loaded):
     return sorted((*robot.materials.values(), *robot.visual_materials), key=lambda m: m.at)
 
 
-@check("C204", "drake-aborts", ERROR, "Drake aborts (SystemExit) on lower > upper or a zero-size shape.", target="drake")
+@check(
+    "C204", "drake-aborts", ERROR, "Drake aborts (SystemExit) on lower > upper or a zero-size shape.", target="drake",
+    doc=explain(
+        """With `--target drake`: finds what trips an assertion in Drake's parser: a joint
+        whose lower limit is above its upper one (revolute, prismatic, or continuous
+        with both), and a box or cylinder with a zero size.""",
+        """The assertion ends in `SystemExit` in Python ("condition
+        '(pos_lower_limits.array() <= pos_upper_limits.array()).all()' failed",
+        multibody/tree/joint.h): a script that only catches `Exception` dies.""",
+        INVERTED_LIMITS,
+        ORDERED_LIMITS,
+    ),
+)
 def aborts(loaded, profile):
-    """## What it does
-    With `--target drake`: finds what trips an assertion in Drake's parser: a joint
-    whose lower limit is above its upper one (revolute, prismatic, or continuous
-    with both), and a box or cylinder with a zero size.
-
-    ## Why is this bad?
-    The assertion ends in `SystemExit` in Python ("condition
-    '(pos_lower_limits.array() <= pos_upper_limits.array()).all()' failed",
-    multibody/tree/joint.h): a script that only catches `Exception` dies.
-
-    ## Example
-    ```xml
-    <joint name="elbow" type="revolute">
-      <parent link="upper_arm"/><child link="forearm"/>
-      <limit lower="1.5" upper="-1.5" effort="10" velocity="1"/>
-    </joint>
-    ```
-
-    ## Use instead
-    ```xml
-    <joint name="elbow" type="revolute">
-      <parent link="upper_arm"/><child link="forearm"/>
-      <limit lower="-1.5" upper="1.5" effort="10" velocity="1"/>
-    </joint>
-    ```
-    """
     for joint in loaded.robot.joints.values():
         limit = joint.limit
         kept = joint.type in ("revolute", "prismatic") or (joint.type == "continuous" and limit is not None and limit.has_lower and limit.has_upper)

@@ -7,40 +7,25 @@ from __future__ import annotations
 
 from ...model import massprops
 from ...model.targets import build
-from ..base import ERROR, INFO, WARNING, check
-from .common import limit_at, link_at, names, number
+from ..base import ERROR, INFO, WARNING, check, explain
+from .common import about_joint, inverted_limits, joints_of, limit_at, link_at, mimic_at, mimic_joints, names, number
+from .examples import FIXED_JOINT, FLOATING_JOINT, INVERTED_LIMITS, MIMIC_GRIPPER, ONE_FINGER, ORDERED_LIMITS, TRIANGLE_BROKEN, TRIANGLE_KEPT, rover
 
 
-@check("C501", "gazebo-drops-link", WARNING, "Gazebo drops a massless link with its joint and subtree.", target="gazebo")
+@check(
+    "C501", "gazebo-drops-link", WARNING, "Gazebo drops a massless link with its joint and subtree.", target="gazebo",
+    doc=explain(
+        """With `--target gazebo`: finds a link with no `<inertial>` or no positive mass that
+        Gazebo does not lump into a parent (its joint moves, or its fixed joint is kept
+        with `preserveFixedJoint`), and says which links below it go with it.""",
+        """sdformat leaves such a link out of the SDF "not modeled in sdf", with its parent
+        joint and every link below it (parser_urdf.cc, `CreateSDF`); sdformat 12 writes
+        this only to a debug log. A massless root empties the model.""",
+        rover("pan", "continuous", inertial=False),
+        rover("pan", "continuous"),
+    ),
+)
 def drops_link(loaded, profile):
-    """## What it does
-    With `--target gazebo`: finds a link with no `<inertial>` or no positive mass that
-    Gazebo does not lump into a parent (its joint moves, or its fixed joint is kept
-    with `preserveFixedJoint`), and says which links below it go with it.
-
-    ## Why is this bad?
-    sdformat leaves such a link out of the SDF "not modeled in sdf", with its parent
-    joint and every link below it (parser_urdf.cc, `CreateSDF`); sdformat 12 writes
-    this only to a debug log. A massless root empties the model.
-
-    ## Example
-    ```xml
-    <robot name="rover">
-      <link name="chassis"><inertial><mass value="5"/><inertia ixx="1" ixy="0" ixz="0" iyy="1" iyz="0" izz="1"/></inertial></link>
-      <link name="pan"/>
-      <joint name="pan_joint" type="continuous"><parent link="chassis"/><child link="pan"/></joint>
-    </robot>
-    ```
-
-    ## Use instead
-    ```xml
-    <robot name="rover">
-      <link name="chassis"><inertial><mass value="5"/><inertia ixx="1" ixy="0" ixz="0" iyy="1" iyz="0" izz="1"/></inertial></link>
-      <link name="pan"><inertial><mass value="0.1"/><inertia ixx="1e-4" ixy="0" ixz="0" iyy="1e-4" iyz="0" izz="1e-4"/></inertial></link>
-      <joint name="pan_joint" type="continuous"><parent link="chassis"/><child link="pan"/></joint>
-    </robot>
-    ```
-    """
     dropped = build(loaded, profile).dropped
     for link, why in dropped.items():
         if why.startswith("below "):
@@ -56,31 +41,19 @@ def drops_link(loaded, profile):
         )
 
 
-@check("C502", "gazebo-invalid-inertia", ERROR, "Gazebo refuses a body whose inertia is not physical.", target="gazebo")
+@check(
+    "C502", "gazebo-invalid-inertia", ERROR, "Gazebo refuses a body whose inertia is not physical.", target="gazebo",
+    doc=explain(
+        """With `--target gazebo`: finds a body (a link with the fixed links lumped into it)
+        whose mass is negative or whose combined tensor has a negative principal moment
+        or breaks the triangle inequality.""",
+        """sdformat reports "A link named NAME has invalid inertia" (`MassMatrix3::IsValid`)
+        and Gazebo refuses to spawn the model.""",
+        TRIANGLE_BROKEN,
+        TRIANGLE_KEPT,
+    ),
+)
 def invalid_inertia(loaded, profile):
-    """## What it does
-    With `--target gazebo`: finds a body (a link with the fixed links lumped into it)
-    whose mass is negative or whose combined tensor has a negative principal moment
-    or breaks the triangle inequality.
-
-    ## Why is this bad?
-    sdformat reports "A link named NAME has invalid inertia" (`MassMatrix3::IsValid`)
-    and Gazebo refuses to spawn the model.
-
-    ## Example
-    ```xml
-    <link name="wrist">
-      <inertial><mass value="1"/><inertia ixx="0.001" ixy="0" ixz="0" iyy="0.001" iyz="0" izz="0.01"/></inertial>
-    </link>
-    ```
-
-    ## Use instead
-    ```xml
-    <link name="wrist">
-      <inertial><mass value="1"/><inertia ixx="0.006" ixy="0" ixz="0" iyy="0.006" iyz="0" izz="0.01"/></inertial>
-    </link>
-    ```
-    """
     for body in build(loaded, profile).bodies:
         if body.mass is None:
             continue
@@ -102,74 +75,40 @@ def invalid_inertia(loaded, profile):
         )
 
 
-@check("C503", "gazebo-swaps-limits", WARNING, "Gazebo swaps limits given lower > upper.", target="gazebo")
+@check(
+    "C503", "gazebo-swaps-limits", WARNING, "Gazebo swaps limits given lower > upper.", target="gazebo",
+    doc=explain(
+        """With `--target gazebo`: finds a revolute or prismatic joint whose lower limit is
+        above its upper one.""",
+        """sdformat swaps them (parser_urdf.cc), where MuJoCo and PyBullet make the joint
+        unlimited and Drake aborts: the same model moves differently in each.""",
+        INVERTED_LIMITS,
+        ORDERED_LIMITS,
+    ),
+)
 def swaps_limits(loaded, profile):
-    """## What it does
-    With `--target gazebo`: finds a revolute or prismatic joint whose lower limit is
-    above its upper one.
-
-    ## Why is this bad?
-    sdformat swaps them (parser_urdf.cc), where MuJoCo and PyBullet make the joint
-    unlimited and Drake aborts: the same model moves differently in each.
-
-    ## Example
-    ```xml
-    <joint name="elbow" type="revolute">
-      <parent link="upper_arm"/><child link="forearm"/>
-      <limit lower="1.5" upper="-1.5" effort="10" velocity="1"/>
-    </joint>
-    ```
-
-    ## Use instead
-    ```xml
-    <joint name="elbow" type="revolute">
-      <parent link="upper_arm"/><child link="forearm"/>
-      <limit lower="-1.5" upper="1.5" effort="10" velocity="1"/>
-    </joint>
-    ```
-    """
-    for joint in loaded.robot.joints.values():
+    for joint in inverted_limits(loaded):
         limit = joint.limit
-        if joint.type in ("revolute", "prismatic") and limit is not None and limit.lower > limit.upper:
-            yield loaded.diagnostic(
-                "C503",
-                f"Gazebo swaps the limits of joint '{joint.name}' ({number(limit.lower)} > {number(limit.upper)})",
-                limit_at(joint),
-                "swap lower and upper",
-                subjects=(joint.name,),
-            )
+        yield about_joint(
+            loaded, "C503", joint,
+            f"Gazebo swaps the limits of joint '{joint.name}' ({number(limit.lower)} > {number(limit.upper)})",
+            "swap lower and upper", at=limit_at(joint),
+        )
 
 
-@check("C504", "gazebo-lumps-fixed-links", INFO, "Gazebo lumps links on fixed joints into their parents.", target="gazebo")
+@check(
+    "C504", "gazebo-lumps-fixed-links", INFO, "Gazebo lumps links on fixed joints into their parents.", target="gazebo",
+    doc=explain(
+        """With `--target gazebo`: says, once per model, which links Gazebo lumps into their
+        parents (fixed joints without `preserveFixedJoint`).""",
+        """sdformat merges such a link's mass, inertia, visuals and collisions into its
+        parent and removes the link and its joint (`ReduceFixedJoints`): a plugin or
+        `<gazebo reference>` naming the link finds nothing, and sensors move to the parent.""",
+        rover("camera", "fixed"),
+        rover("camera", "fixed", more='<gazebo reference="camera_joint"><preserveFixedJoint>true</preserveFixedJoint></gazebo>'),
+    ),
+)
 def lumps_fixed_links(loaded, profile):
-    """## What it does
-    With `--target gazebo`: says, once per model, which links Gazebo lumps into their
-    parents (fixed joints without `preserveFixedJoint`).
-
-    ## Why is this bad?
-    sdformat merges such a link's mass, inertia, visuals and collisions into its
-    parent and removes the link and its joint (`ReduceFixedJoints`): a plugin or
-    `<gazebo reference>` naming the link finds nothing, and sensors move to the parent.
-
-    ## Example
-    ```xml
-    <robot name="rover">
-      <link name="chassis"><inertial><mass value="5"/><inertia ixx="1" ixy="0" ixz="0" iyy="1" iyz="0" izz="1"/></inertial></link>
-      <link name="camera"><inertial><mass value="0.1"/><inertia ixx="1e-4" ixy="0" ixz="0" iyy="1e-4" iyz="0" izz="1e-4"/></inertial></link>
-      <joint name="camera_joint" type="fixed"><parent link="chassis"/><child link="camera"/></joint>
-    </robot>
-    ```
-
-    ## Use instead
-    ```xml
-    <robot name="rover">
-      <link name="chassis"><inertial><mass value="5"/><inertia ixx="1" ixy="0" ixz="0" iyy="1" iyz="0" izz="1"/></inertial></link>
-      <link name="camera"><inertial><mass value="0.1"/><inertia ixx="1e-4" ixy="0" ixz="0" iyy="1e-4" iyz="0" izz="1e-4"/></inertial></link>
-      <joint name="camera_joint" type="fixed"><parent link="chassis"/><child link="camera"/></joint>
-      <gazebo reference="camera_joint"><preserveFixedJoint>true</preserveFixedJoint></gazebo>
-    </robot>
-    ```
-    """
     lumped = [link for body in build(loaded, profile).bodies for link in body.links[1:]]
     if lumped:
         yield loaded.diagnostic(
@@ -181,72 +120,42 @@ def lumps_fixed_links(loaded, profile):
         )
 
 
-@check("C505", "gazebo-floating-joint", ERROR, "Gazebo cannot load a floating or planar joint.", target="gazebo")
+@check(
+    "C505", "gazebo-floating-joint", ERROR, "Gazebo cannot load a floating or planar joint.", target="gazebo",
+    doc=explain(
+        """With `--target gazebo`: finds a floating or planar joint.""",
+        """SDFormat has neither: sdformat 12 leaves the joint out of the SDF but still places
+        the child link relative to it, and the model fails to load ("relative_to name[j1]
+        specified by link with name[link1] does not match a nested model, link, joint, or
+        frame name", then "PoseRelativeToGraph error"; parser_urdf.cc, `CreateJoint`).""",
+        FLOATING_JOINT,
+        FIXED_JOINT,
+    ),
+)
 def floating_joint(loaded, profile):
-    """## What it does
-    With `--target gazebo`: finds a floating or planar joint.
-
-    ## Why is this bad?
-    SDFormat has neither: sdformat 12 leaves the joint out of the SDF but still places
-    the child link relative to it, and the model fails to load ("relative_to name[j1]
-    specified by link with name[link1] does not match a nested model, link, joint, or
-    frame name", then "PoseRelativeToGraph error"; parser_urdf.cc, `CreateJoint`).
-
-    ## Example
-    ```xml
-    <joint name="object" type="floating"><parent link="world"/><child link="box"/></joint>
-    ```
-
-    ## Use instead
-    ```xml
-    <joint name="object" type="fixed"><parent link="world"/><child link="box"/></joint>
-    ```
-    """
-    for joint in loaded.robot.joints.values():
-        if joint.type in ("floating", "planar"):
-            yield loaded.diagnostic(
-                "C505",
-                f"Gazebo cannot load {joint.type} joint '{joint.name}': sdformat leaves it out but places '{joint.child}' relative to it",
-                joint.at,
-                "spawn the free body as a model of its own; for a planar base use a Gazebo plugin (such as a planar move plugin)",
-                subjects=(joint.name,),
-            )
+    for joint in joints_of(loaded, ("floating", "planar")):
+        yield about_joint(
+            loaded, "C505", joint,
+            f"Gazebo cannot load {joint.type} joint '{joint.name}': sdformat leaves it out but places '{joint.child}' relative to it",
+            "spawn the free body as a model of its own; for a planar base use a Gazebo plugin (such as a planar move plugin)",
+        )
 
 
-@check("C506", "gazebo-drops-mimic", WARNING, "Gazebo (sdformat 12) drops <mimic>.", target="gazebo")
+@check(
+    "C506", "gazebo-drops-mimic", WARNING, "Gazebo (sdformat 12) drops <mimic>.", target="gazebo",
+    doc=explain(
+        """With `--target gazebo`: finds a joint with a `<mimic>`.""",
+        """sdformat 12 does not convert `<mimic>` (SDFormat 1.9 has no mimic): the joint moves on
+        its own, so a gripper's second finger does not follow the first. sdformat 14 (Gazebo
+        Harmonic) converts it to `<axis><mimic>` (gazebosim/sdformat pull request 1333).""",
+        MIMIC_GRIPPER,
+        ONE_FINGER,
+    ),
+)
 def drops_mimic(loaded, profile):
-    """## What it does
-    With `--target gazebo`: finds a joint with a `<mimic>`.
-
-    ## Why is this bad?
-    sdformat 12 does not convert `<mimic>` (SDFormat 1.9 has no mimic): the joint moves on
-    its own, so a gripper's second finger does not follow the first. sdformat 14 (Gazebo
-    Harmonic) converts it to `<axis><mimic>` (gazebosim/sdformat pull request 1333).
-
-    ## Example
-    ```xml
-    <robot name="gripper">
-      <link name="palm"/><link name="left"/><link name="right"/>
-      <joint name="left_joint" type="prismatic"><parent link="palm"/><child link="left"/><limit lower="0" upper="0.04" effort="10" velocity="0.1"/></joint>
-      <joint name="right_joint" type="prismatic"><parent link="palm"/><child link="right"/><limit lower="0" upper="0.04" effort="10" velocity="0.1"/>
-        <mimic joint="left_joint"/></joint>
-    </robot>
-    ```
-
-    ## Use instead
-    ```xml
-    <robot name="gripper">
-      <link name="palm"/><link name="left"/>
-      <joint name="left_joint" type="prismatic"><parent link="palm"/><child link="left"/><limit lower="0" upper="0.04" effort="10" velocity="0.1"/></joint>
-    </robot>
-    ```
-    """
-    for joint in loaded.robot.joints.values():
-        if joint.mimic is not None and joint.type not in (None, "fixed"):
-            yield loaded.diagnostic(
-                "C506",
-                f"Gazebo (sdformat 12) drops the <mimic> of joint '{joint.name}': it moves on its own, not with '{joint.mimic.joint}'",
-                joint.part("mimic") or joint.at,
-                "drive it with a mimic joint plugin, or use Gazebo Harmonic (sdformat 14), which converts <mimic>",
-                subjects=(joint.name,),
-            )
+    for joint in mimic_joints(loaded):
+        yield about_joint(
+            loaded, "C506", joint,
+            f"Gazebo (sdformat 12) drops the <mimic> of joint '{joint.name}': it moves on its own, not with '{joint.mimic.joint}'",
+            "drive it with a mimic joint plugin, or use Gazebo Harmonic (sdformat 14), which converts <mimic>", at=mimic_at(joint),
+        )

@@ -5,44 +5,29 @@ base, drives) is not modelled; Isaac Sim 5.1 stopped merging fixed joints by def
 from __future__ import annotations
 
 from ...model.targets import isaac_merged_child
-from ..base import WARNING, check
-from .common import link_at
+from ..base import WARNING, check, explain
+from .common import about_joint, add_limit, link_at, without_limit
+from .examples import NO_LIMIT, WITH_LIMIT
 
 
-@check("C701", "isaac-locks-joint", WARNING, "Isaac Sim locks a revolute or prismatic joint without <limit>.", target="isaac")
+@check(
+    "C701", "isaac-locks-joint", WARNING, "Isaac Sim locks a revolute or prismatic joint without <limit>.", target="isaac",
+    doc=explain(
+        """With `--target isaac`: finds a revolute or prismatic joint without `<limit>`.""",
+        """urdfdom rejects it (J003), but Isaac Sim's importer takes it, writes its limits
+        as lower = upper = 0 ("If limit is omitted, set to 0.0": urdf-usd-converter,
+        _impl/link.py, `physics_joints`), and the joint cannot move.""",
+        NO_LIMIT,
+        WITH_LIMIT,
+    ),
+)
 def locks_joint(loaded, profile):
-    """## What it does
-    With `--target isaac`: finds a revolute or prismatic joint without `<limit>`.
-
-    ## Why is this bad?
-    urdfdom rejects it (J003), but Isaac Sim's importer takes it, writes its limits
-    as lower = upper = 0 ("If limit is omitted, set to 0.0": urdf-usd-converter,
-    _impl/link.py, `physics_joints`), and the joint cannot move.
-
-    ## Example
-    ```xml
-    <joint name="elbow" type="revolute">
-      <parent link="upper_arm"/><child link="forearm"/><axis xyz="0 0 1"/>
-    </joint>
-    ```
-
-    ## Use instead
-    ```xml
-    <joint name="elbow" type="revolute">
-      <parent link="upper_arm"/><child link="forearm"/><axis xyz="0 0 1"/>
-      <limit lower="-1.5" upper="1.5" effort="10" velocity="1"/>
-    </joint>
-    ```
-    """
-    for joint in loaded.robot.joints.values():
-        if joint.type in ("revolute", "prismatic") and joint.limit is None:
-            yield loaded.diagnostic(
-                "C701",
-                f"Isaac Sim locks joint '{joint.name}': without <limit> it writes lower = upper = 0",
-                joint.at,
-                'add <limit lower="..." upper="..." effort="..." velocity="..."/>' + (", or make it continuous" if joint.type == "revolute" else ""),
-                subjects=(joint.name,),
-            )
+    for joint in without_limit(loaded):
+        yield about_joint(
+            loaded, "C701", joint,
+            f"Isaac Sim locks joint '{joint.name}': without <limit> it writes lower = upper = 0",
+            add_limit(joint),
+        )
 
 
 @check("C702", "isaac-mass-from-colliders", WARNING, "Isaac Sim weighs a massless link with colliders by their volume.", target="isaac")

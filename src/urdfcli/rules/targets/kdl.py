@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 from ..base import INFO, WARNING, check
-from .common import inertial_at
+from .common import about_joint, inertial_at, joints_of
 
 
 @check("C601", "kdl-fixed-floating-joint", WARNING, "KDL turns floating and planar joints into fixed ones.", target="kdl")
@@ -30,15 +30,12 @@ def fixed_floating_joint(loaded, profile):
     </joint>
     ```
     """
-    for joint in loaded.robot.joints.values():
-        if joint.type in ("floating", "planar"):
-            yield loaded.diagnostic(
-                "C601",
-                f"KDL makes {joint.type} joint '{joint.name}' fixed: robot_state_publisher will never move '{joint.child}'",
-                joint.at,
-                "publish the base's motion from odometry or a joint_state of your own; KDL models joints of one degree of freedom",
-                subjects=(joint.name,),
-            )
+    for joint in joints_of(loaded, ("floating", "planar")):
+        yield about_joint(
+            loaded, "C601", joint,
+            f"KDL makes {joint.type} joint '{joint.name}' fixed: robot_state_publisher will never move '{joint.child}'",
+            "publish the base's motion from odometry or a joint_state of your own; KDL models joints of one degree of freedom",
+        )
 
 
 @check("C602", "kdl-root-inertia", INFO, "KDL drops the root link's inertia.", target="kdl")

@@ -6,46 +6,29 @@ from __future__ import annotations
 
 from ...model import massprops
 from ...model.targets import MJMINVAL, build, geometry_body, mesh_extension, mujoco_options, weighed_by_geometry
-from ..base import ERROR, INFO, WARNING, check
-from .common import inertial_at, limit_at, link_at, names, number
+from ..base import ERROR, INFO, WARNING, check, explain
+from .common import BOUNDED, inertial_at, joints_of, limit_at, link_at, names, number
+from .examples import INVERTED_LIMITS, ORDERED_LIMITS, TRIANGLE_BROKEN, TRIANGLE_KEPT, WRIST_BOX, arm, meshed, wrist_inertial
 
 DECODED = (".stl", ".obj", ".msh")  # the mesh files MuJoCo 4.0 decodes without a plugin
 
 
-@check("C101", "mujoco-massless-body", ERROR, "MuJoCo rejects a moving body without mass or inertia.", target="mujoco")
+@check(
+    "C101", "mujoco-massless-body", ERROR, "MuJoCo rejects a moving body without mass or inertia.", target="mujoco",
+    doc=explain(
+        """With `--target mujoco`: finds a body moved by a joint whose mass, or one of
+        whose principal moments, is below MuJoCo's `mjMINVAL` (1e-15). The body is the
+        child link of the moving joint with every link fixed below it (MuJoCo fuses
+        them, `fusestatic`); a link without `<inertial>` but with collision shapes gets
+        their mass at 1000 kg/m³. Measures the declared masses and tensors; leaves alone
+        links whose mass comes from a mesh (its volume is not read).""",
+        """MuJoCo refuses to load the model: "mass and inertia of moving bodies must be
+        larger than mjMINVAL" (src/user/user_model.cc).""",
+        arm(),
+        arm(wrist_inertial("0.5", "1e-3")),
+    ),
+)
 def massless_body(loaded, profile):
-    """## What it does
-    With `--target mujoco`: finds a body moved by a joint whose mass, or one of
-    whose principal moments, is below MuJoCo's `mjMINVAL` (1e-15). The body is the
-    child link of the moving joint with every link fixed below it (MuJoCo fuses
-    them, `fusestatic`); a link without `<inertial>` but with collision shapes gets
-    their mass at 1000 kg/m³. Measures the declared masses and tensors; leaves alone
-    links whose mass comes from a mesh (its volume is not read).
-
-    ## Why is this bad?
-    MuJoCo refuses to load the model: "mass and inertia of moving bodies must be
-    larger than mjMINVAL" (src/user/user_model.cc).
-
-    ## Example
-    ```xml
-    <robot name="arm">
-      <link name="base"/>
-      <link name="wrist"/>
-      <joint name="roll" type="continuous"><parent link="base"/><child link="wrist"/></joint>
-    </robot>
-    ```
-
-    ## Use instead
-    ```xml
-    <robot name="arm">
-      <link name="base"/>
-      <link name="wrist">
-        <inertial><mass value="0.5"/><inertia ixx="1e-3" ixy="0" ixz="0" iyy="1e-3" iyz="0" izz="1e-3"/></inertial>
-      </link>
-      <joint name="roll" type="continuous"><parent link="base"/><child link="wrist"/></joint>
-    </robot>
-    ```
-    """
     for body in build(loaded, profile).bodies:
         if body.joint is None or body.mass is None:
             continue
@@ -65,31 +48,19 @@ def massless_body(loaded, profile):
         )
 
 
-@check("C102", "mujoco-triangle-inequality", ERROR, "MuJoCo rejects an inertia breaking A + B >= C.", target="mujoco")
+@check(
+    "C102", "mujoco-triangle-inequality", ERROR, "MuJoCo rejects an inertia breaking A + B >= C.", target="mujoco",
+    doc=explain(
+        """With `--target mujoco`: finds a declared inertia whose principal moments break
+        the triangle inequality (A + B >= C), unless the model sets
+        `<mujoco><compiler balanceinertia="true"/></mujoco>`.""",
+        """MuJoCo refuses to load the model: "inertia must satisfy A + B >= C; use
+        'balanceinertia' to fix" (src/user/user_objects.cc). No body of that shape exists.""",
+        TRIANGLE_BROKEN,
+        TRIANGLE_KEPT,
+    ),
+)
 def triangle_inequality(loaded, profile):
-    """## What it does
-    With `--target mujoco`: finds a declared inertia whose principal moments break
-    the triangle inequality (A + B >= C), unless the model sets
-    `<mujoco><compiler balanceinertia="true"/></mujoco>`.
-
-    ## Why is this bad?
-    MuJoCo refuses to load the model: "inertia must satisfy A + B >= C; use
-    'balanceinertia' to fix" (src/user/user_objects.cc). No body of that shape exists.
-
-    ## Example
-    ```xml
-    <link name="wrist">
-      <inertial><mass value="1"/><inertia ixx="0.001" ixy="0" ixz="0" iyy="0.001" iyz="0" izz="0.01"/></inertial>
-    </link>
-    ```
-
-    ## Use instead
-    ```xml
-    <link name="wrist">
-      <inertial><mass value="1"/><inertia ixx="0.006" ixy="0" ixz="0" iyy="0.006" iyz="0" izz="0.01"/></inertial>
-    </link>
-    ```
-    """
     if mujoco_options(loaded).balanceinertia:
         return
     for name, link in loaded.robot.links.items():
@@ -162,116 +133,75 @@ def _meshes(loaded, discardvisual: bool):
                 yield name, geometry
 
 
-@check("C104", "mujoco-mesh-format", ERROR, "MuJoCo cannot decode a mesh file of this format.", target="mujoco")
+def _once(loaded, code: str, meshes: list, kind: str, why: str, hint: str):
+    """One diagnostic for every mesh of a kind: placed at the first, about every link that has one."""
+    name, geometry = meshes[0]
+    more = f" (and {len(meshes) - 1} more {kind} meshes)" if len(meshes) > 1 else ""
+    return loaded.diagnostic(
+        code, f"MuJoCo rejects link '{name}': {why} '{geometry.filename}'{more}", geometry.at, hint, subjects=tuple(dict.fromkeys(n for n, _ in meshes))
+    )
+
+
+@check(
+    "C104", "mujoco-mesh-format", ERROR, "MuJoCo cannot decode a mesh file of this format.", target="mujoco",
+    doc=explain(
+        """With `--target mujoco`: finds a collision mesh (and a visual one when the model
+        sets `discardvisual="false"`) whose file extension is not one MuJoCo decodes:
+        `.stl`, `.obj` or `.msh`. Judged by the extension; the file is not read.""",
+        """MuJoCo refuses to load the model: "no decoder found for mesh file" (src/user/user_mesh.cc).
+        COLLADA (`.dae`) meshes, common in ROS packages, are not read.""",
+        meshed("base.dae"),
+        meshed("base.stl"),
+    ),
+)
 def mesh_format(loaded, profile):
-    """## What it does
-    With `--target mujoco`: finds a collision mesh (and a visual one when the model
-    sets `discardvisual="false"`) whose file extension is not one MuJoCo decodes:
-    `.stl`, `.obj` or `.msh`. Judged by the extension; the file is not read.
-
-    ## Why is this bad?
-    MuJoCo refuses to load the model: "no decoder found for mesh file" (src/user/user_mesh.cc).
-    COLLADA (`.dae`) meshes, common in ROS packages, are not read.
-
-    ## Example
-    ```xml
-    <link name="base">
-      <collision><geometry><mesh filename="base.dae"/></geometry></collision>
-    </link>
-    ```
-
-    ## Use instead
-    ```xml
-    <link name="base">
-      <collision><geometry><mesh filename="base.stl"/></geometry></collision>
-    </link>
-    ```
-    """
     found: dict[str, list] = {}  # extension -> the links and meshes: said once per extension
     for name, geometry in _meshes(loaded, mujoco_options(loaded).discardvisual):
         extension = mesh_extension(geometry.filename)
         if extension not in DECODED:
             found.setdefault(extension, []).append((name, geometry))
     for extension, meshes in found.items():
-        name, geometry = meshes[0]
-        more = f" (and {len(meshes) - 1} more {extension or 'extension-less'} meshes)" if len(meshes) > 1 else ""
-        yield loaded.diagnostic(
-            "C104",
-            f"MuJoCo rejects link '{name}': it has no decoder for {extension or 'extension-less'} mesh '{geometry.filename}'{more}",
-            geometry.at,
-            "convert the meshes to .stl or .obj for MuJoCo",
-            subjects=tuple(dict.fromkeys(n for n, _ in meshes)),
-        )
+        kind = extension or "extension-less"
+        yield _once(loaded, "C104", meshes, kind, f"it has no decoder for {kind} mesh", "convert the meshes to .stl or .obj for MuJoCo")
 
 
-@check("C105", "mujoco-package-uri", ERROR, "MuJoCo does not resolve package:// mesh paths.", target="mujoco")
+@check(
+    "C105", "mujoco-package-uri", ERROR, "MuJoCo does not resolve package:// mesh paths.", target="mujoco",
+    doc=explain(
+        """With `--target mujoco`: finds a collision mesh (and a visual one when the model
+        sets `discardvisual="false"`) named by a `package://` URI.""",
+        """MuJoCo's URDF reader takes a mesh filename as a path relative to the model's
+        folder (`strippath` is false in 4.0) and never resolves `package://`: loading
+        fails on a file that does not exist (src/xml/xml_urdf.cc).""",
+        meshed("package://my_robot/meshes/arm.stl"),
+        meshed("../meshes/arm.stl"),
+    ),
+)
 def package_uri(loaded, profile):
-    """## What it does
-    With `--target mujoco`: finds a collision mesh (and a visual one when the model
-    sets `discardvisual="false"`) named by a `package://` URI.
-
-    ## Why is this bad?
-    MuJoCo's URDF reader takes a mesh filename as a path relative to the model's
-    folder (`strippath` is false in 4.0) and never resolves `package://`: loading
-    fails on a file that does not exist (src/xml/xml_urdf.cc).
-
-    ## Example
-    ```xml
-    <link name="base">
-      <collision><geometry><mesh filename="package://my_robot/meshes/arm.stl"/></geometry></collision>
-    </link>
-    ```
-
-    ## Use instead
-    ```xml
-    <link name="base">
-      <collision><geometry><mesh filename="../meshes/arm.stl"/></geometry></collision>
-    </link>
-    ```
-    """
     meshes = [(name, g) for name, g in _meshes(loaded, mujoco_options(loaded).discardvisual) if g.filename.startswith("package://")]
     if meshes:  # said once per model
-        name, geometry = meshes[0]
-        more = f" (and {len(meshes) - 1} more package:// meshes)" if len(meshes) > 1 else ""
-        yield loaded.diagnostic(
-            "C105",
-            f"MuJoCo rejects link '{name}': it does not resolve '{geometry.filename}'{more}",
-            geometry.at,
+        yield _once(
+            loaded, "C105", meshes, "package://", "it does not resolve",
             "give MuJoCo a copy with paths relative to the model (`urdfcli expand` then replace package://PKG/ by the package's path), or set <mujoco><compiler meshdir=.../></mujoco>",
-            subjects=tuple(dict.fromkeys(n for n, _ in meshes)),
         )
 
 
-@check("C106", "mujoco-unlimited-joint", WARNING, "MuJoCo drops a joint's limits when lower >= upper.", target="mujoco")
+@check(
+    "C106", "mujoco-unlimited-joint", WARNING, "MuJoCo drops a joint's limits when lower >= upper.", target="mujoco",
+    doc=explain(
+        """With `--target mujoco`: finds a revolute or prismatic joint whose lower limit is
+        not below its upper one.""",
+        """MuJoCo makes the joint unlimited: without a word when lower > upper, with the
+        warning "equal lower and upper limits, limit ignored" when they are equal
+        (src/xml/xml_urdf.cc). A joint meant to be stopped turns freely.""",
+        INVERTED_LIMITS,
+        ORDERED_LIMITS,
+    ),
+)
 def unlimited_joint(loaded, profile):
-    """## What it does
-    With `--target mujoco`: finds a revolute or prismatic joint whose lower limit is
-    not below its upper one.
-
-    ## Why is this bad?
-    MuJoCo makes the joint unlimited: without a word when lower > upper, with the
-    warning "equal lower and upper limits, limit ignored" when they are equal
-    (src/xml/xml_urdf.cc). A joint meant to be stopped turns freely.
-
-    ## Example
-    ```xml
-    <joint name="elbow" type="revolute">
-      <parent link="upper_arm"/><child link="forearm"/>
-      <limit lower="1.5" upper="-1.5" effort="10" velocity="1"/>
-    </joint>
-    ```
-
-    ## Use instead
-    ```xml
-    <joint name="elbow" type="revolute">
-      <parent link="upper_arm"/><child link="forearm"/>
-      <limit lower="-1.5" upper="1.5" effort="10" velocity="1"/>
-    </joint>
-    ```
-    """
-    for joint in loaded.robot.joints.values():
+    for joint in joints_of(loaded, BOUNDED):
         limit = joint.limit
-        if joint.type in ("revolute", "prismatic") and limit is not None and limit.lower >= limit.upper:
+        if limit is not None and limit.lower >= limit.upper:
             how = "they are equal" if limit.lower == limit.upper else "lower is above upper"
             yield loaded.diagnostic(
                 "C106",
@@ -282,39 +212,20 @@ def unlimited_joint(loaded, profile):
             )
 
 
-@check("C107", "mujoco-mass-from-geometry", WARNING, "MuJoCo weighs a moving link without <inertial> by its collision shapes.", target="mujoco")
+@check(
+    "C107", "mujoco-mass-from-geometry", WARNING, "MuJoCo weighs a moving link without <inertial> by its collision shapes.", target="mujoco",
+    doc=explain(
+        """With `--target mujoco`: finds a moving body none of whose links has an
+        `<inertial>`, but which has collision shapes, while `inertiafromgeom` is `auto`
+        (the URDF default) or `true`.""",
+        """MuJoCo gives the body the mass and inertia of its collision shapes filled at
+        1000 kg/m³ (src/user/user_objects.cc, `inertiafromgeom`): a 10 cm box weighs
+        1 kg, a hollow shell as much as a solid. Other consumers see no mass at all.""",
+        arm(WRIST_BOX),
+        arm(wrist_inertial("0.3", "5e-4"), WRIST_BOX),
+    ),
+)
 def mass_from_geometry(loaded, profile):
-    """## What it does
-    With `--target mujoco`: finds a moving body none of whose links has an
-    `<inertial>`, but which has collision shapes, while `inertiafromgeom` is `auto`
-    (the URDF default) or `true`.
-
-    ## Why is this bad?
-    MuJoCo gives the body the mass and inertia of its collision shapes filled at
-    1000 kg/m³ (src/user/user_objects.cc, `inertiafromgeom`): a 10 cm box weighs
-    1 kg, a hollow shell as much as a solid. Other consumers see no mass at all.
-
-    ## Example
-    ```xml
-    <robot name="arm">
-      <link name="base"/>
-      <link name="wrist"><collision><geometry><box size="0.1 0.1 0.1"/></geometry></collision></link>
-      <joint name="roll" type="continuous"><parent link="base"/><child link="wrist"/></joint>
-    </robot>
-    ```
-
-    ## Use instead
-    ```xml
-    <robot name="arm">
-      <link name="base"/>
-      <link name="wrist">
-        <inertial><mass value="0.3"/><inertia ixx="5e-4" ixy="0" ixz="0" iyy="5e-4" iyz="0" izz="5e-4"/></inertial>
-        <collision><geometry><box size="0.1 0.1 0.1"/></geometry></collision>
-      </link>
-      <joint name="roll" type="continuous"><parent link="base"/><child link="wrist"/></joint>
-    </robot>
-    ```
-    """
     options = mujoco_options(loaded)
     for body in build(loaded, profile).bodies:
         if body.joint is None:

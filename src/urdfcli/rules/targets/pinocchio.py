@@ -3,50 +3,32 @@ include/pinocchio/parsers/urdf/model.hxx (the tree walk), include/pinocchio/mult
 
 from __future__ import annotations
 
-from ..base import ERROR, WARNING, check
+from ..base import ERROR, WARNING, check, explain
+from .common import MIMICKED, about_joint, mimic_at, mimic_joints
+from .examples import MIMIC_GRIPPER, ONE_FINGER
 
-MIMICKED = ("revolute", "continuous", "prismatic")
 
 
-@check("C301", "pinocchio-ignores-mimic", WARNING, "Pinocchio ignores <mimic> unless built with mimic=True.", target="pinocchio")
+@check(
+    "C301", "pinocchio-ignores-mimic", WARNING, "Pinocchio ignores <mimic> unless built with mimic=True.", target="pinocchio",
+    doc=explain(
+        """With `--target pinocchio` (not `pinocchio:mimic`): finds a joint with a `<mimic>`.""",
+        """`buildModelFromUrdf(path)` reads `<mimic>` only when called with `mimic=True`
+        (src/parsers/urdf/model.cpp): by default the mimic joint is one more free degree
+        of freedom, so a gripper's second finger moves on its own and `model.nq` counts it.""",
+        MIMIC_GRIPPER,
+        ONE_FINGER,
+    ),
+)
 def ignores_mimic(loaded, profile):
-    """## What it does
-    With `--target pinocchio` (not `pinocchio:mimic`): finds a joint with a `<mimic>`.
-
-    ## Why is this bad?
-    `buildModelFromUrdf(path)` reads `<mimic>` only when called with `mimic=True`
-    (src/parsers/urdf/model.cpp): by default the mimic joint is one more free degree
-    of freedom, so a gripper's second finger moves on its own and `model.nq` counts it.
-
-    ## Example
-    ```xml
-    <robot name="gripper">
-      <link name="palm"/><link name="left"/><link name="right"/>
-      <joint name="left_joint" type="prismatic"><parent link="palm"/><child link="left"/><limit lower="0" upper="0.04" effort="10" velocity="0.1"/></joint>
-      <joint name="right_joint" type="prismatic"><parent link="palm"/><child link="right"/><limit lower="0" upper="0.04" effort="10" velocity="0.1"/>
-        <mimic joint="left_joint"/></joint>
-    </robot>
-    ```
-
-    ## Use instead
-    ```xml
-    <robot name="gripper">
-      <link name="palm"/><link name="left"/>
-      <joint name="left_joint" type="prismatic"><parent link="palm"/><child link="left"/><limit lower="0" upper="0.04" effort="10" velocity="0.1"/></joint>
-    </robot>
-    ```
-    """
     if "mimic" in profile.variants:
         return
-    for joint in loaded.robot.joints.values():
-        if joint.mimic is not None and joint.type in MIMICKED:
-            yield loaded.diagnostic(
-                "C301",
-                f"Pinocchio makes joint '{joint.name}' a free degree of freedom: it ignores its <mimic> of '{joint.mimic.joint}' by default",
-                joint.part("mimic") or joint.at,
-                "build the model with pinocchio.buildModelFromUrdf(path, mimic=True) (and check it with --target pinocchio:mimic)",
-                subjects=(joint.name,),
-            )
+    for joint in mimic_joints(loaded):
+        yield about_joint(
+            loaded, "C301", joint,
+            f"Pinocchio makes joint '{joint.name}' a free degree of freedom: it ignores its <mimic> of '{joint.mimic.joint}' by default",
+            "build the model with pinocchio.buildModelFromUrdf(path, mimic=True) (and check it with --target pinocchio:mimic)", at=mimic_at(joint),
+        )
 
 
 @check("C302", "pinocchio-mimic-unsupported", ERROR, "Pinocchio's mimic=True rejects mimic chains and mixed joint kinds.", target="pinocchio:mimic")

@@ -5,8 +5,9 @@ from __future__ import annotations
 
 from ...model import massprops
 from ...model.targets import build, declared_matrix, valid_tensor
-from ..base import ERROR, INFO, WARNING, check
-from .common import limit_at, link_at, names, number
+from ..base import ERROR, INFO, WARNING, check, explain
+from .common import about_joint, add_limit, inverted_limits, joints_of, limit_at, link_at, names, number, without_limit
+from .examples import FIXED_JOINT, FLOATING_JOINT, INVERTED_LIMITS, NO_LIMIT, ORDERED_LIMITS, TRIANGLE_BROKEN, TRIANGLE_KEPT, WITH_LIMIT
 
 RECOMPUTED_APART = 0.1  # a recomputed tensor further than this (relative) from the declared one is a change worth saying
 
@@ -111,98 +112,58 @@ def recomputes_inertia(loaded, profile):
     )
 
 
-@check("C403", "pybullet-unlimited-joint", WARNING, "PyBullet treats lower > upper as no limit.", target="pybullet")
+@check(
+    "C403", "pybullet-unlimited-joint", WARNING, "PyBullet treats lower > upper as no limit.", target="pybullet",
+    doc=explain(
+        """With `--target pybullet`: finds a revolute or prismatic joint whose lower limit is
+        above its upper one.""",
+        """Bullet reads lower > upper as "no limit" (URDF2Bullet.cpp): the joint turns freely,
+        without a word.""",
+        INVERTED_LIMITS,
+        ORDERED_LIMITS,
+    ),
+)
 def unlimited_joint(loaded, profile):
-    """## What it does
-    With `--target pybullet`: finds a revolute or prismatic joint whose lower limit is
-    above its upper one.
-
-    ## Why is this bad?
-    Bullet reads lower > upper as "no limit" (URDF2Bullet.cpp): the joint turns freely,
-    without a word.
-
-    ## Example
-    ```xml
-    <joint name="elbow" type="revolute">
-      <parent link="upper_arm"/><child link="forearm"/>
-      <limit lower="1.5" upper="-1.5" effort="10" velocity="1"/>
-    </joint>
-    ```
-
-    ## Use instead
-    ```xml
-    <joint name="elbow" type="revolute">
-      <parent link="upper_arm"/><child link="forearm"/>
-      <limit lower="-1.5" upper="1.5" effort="10" velocity="1"/>
-    </joint>
-    ```
-    """
-    for joint in loaded.robot.joints.values():
+    for joint in inverted_limits(loaded):
         limit = joint.limit
-        if joint.type in ("revolute", "prismatic") and limit is not None and limit.lower > limit.upper:
-            yield loaded.diagnostic(
-                "C403",
-                f"PyBullet leaves joint '{joint.name}' unlimited: its lower limit {number(limit.lower)} is above its upper {number(limit.upper)}",
-                limit_at(joint),
-                "swap lower and upper",
-                subjects=(joint.name,),
-            )
+        yield about_joint(
+            loaded, "C403", joint,
+            f"PyBullet leaves joint '{joint.name}' unlimited: its lower limit {number(limit.lower)} is above its upper {number(limit.upper)}",
+            "swap lower and upper", at=limit_at(joint),
+        )
 
 
-@check("C404", "pybullet-floating-joint", WARNING, "PyBullet makes a floating joint fixed.", target="pybullet")
+@check(
+    "C404", "pybullet-floating-joint", WARNING, "PyBullet makes a floating joint fixed.", target="pybullet",
+    doc=explain(
+        """With `--target pybullet`: finds a floating joint.""",
+        """PyBullet has no floating joint inside a multibody: it prints "joint unsupported,
+        creating a fixed joint instead" (URDF2Bullet.cpp) and the child is welded to its parent.""",
+        FLOATING_JOINT,
+        FIXED_JOINT,
+    ),
+)
 def floating_joint(loaded, profile):
-    """## What it does
-    With `--target pybullet`: finds a floating joint.
-
-    ## Why is this bad?
-    PyBullet has no floating joint inside a multibody: it prints "joint unsupported,
-    creating a fixed joint instead" (URDF2Bullet.cpp) and the child is welded to its parent.
-
-    ## Example
-    ```xml
-    <joint name="object" type="floating"><parent link="world"/><child link="box"/></joint>
-    ```
-
-    ## Use instead
-    ```xml
-    <joint name="object" type="fixed"><parent link="world"/><child link="box"/></joint>
-    ```
-    """
-    for joint in loaded.robot.joints.values():
-        if joint.type == "floating":
-            yield loaded.diagnostic(
-                "C404",
-                f"PyBullet makes floating joint '{joint.name}' fixed: '{joint.child}' is welded to '{joint.parent}'",
-                joint.at,
-                "load the free body as a model of its own (its own URDF, loaded with loadURDF)",
-                subjects=(joint.name,),
-            )
+    for joint in joints_of(loaded, ("floating",)):
+        yield about_joint(
+            loaded, "C404", joint,
+            f"PyBullet makes floating joint '{joint.name}' fixed: '{joint.child}' is welded to '{joint.parent}'",
+            "load the free body as a model of its own (its own URDF, loaded with loadURDF)",
+        )
 
 
-@check("C405", "pybullet-zeroes-inertia", WARNING, "PyBullet zeroes a tensor it finds invalid.", target="pybullet:inertia-from-file")
+@check(
+    "C405", "pybullet-zeroes-inertia", WARNING, "PyBullet zeroes a tensor it finds invalid.", target="pybullet:inertia-from-file",
+    doc=explain(
+        """With `--target pybullet:inertia-from-file`: finds a declared tensor that is not
+        positive semi-definite or breaks the triangle inequality.""",
+        """With `URDF_USE_INERTIA_FROM_FILE`, PyBullet prints "Bad inertia tensor properties,
+        setting inertia to zero" (BulletUrdfImporter.cpp) and the link turns as a point mass.""",
+        TRIANGLE_BROKEN,
+        TRIANGLE_KEPT,
+    ),
+)
 def zeroes_inertia(loaded, profile):
-    """## What it does
-    With `--target pybullet:inertia-from-file`: finds a declared tensor that is not
-    positive semi-definite or breaks the triangle inequality.
-
-    ## Why is this bad?
-    With `URDF_USE_INERTIA_FROM_FILE`, PyBullet prints "Bad inertia tensor properties,
-    setting inertia to zero" (BulletUrdfImporter.cpp) and the link turns as a point mass.
-
-    ## Example
-    ```xml
-    <link name="wrist">
-      <inertial><mass value="1"/><inertia ixx="0.001" ixy="0" ixz="0" iyy="0.001" iyz="0" izz="0.01"/></inertial>
-    </link>
-    ```
-
-    ## Use instead
-    ```xml
-    <link name="wrist">
-      <inertial><mass value="1"/><inertia ixx="0.006" ixy="0" ixz="0" iyy="0.006" iyz="0" izz="0.01"/></inertial>
-    </link>
-    ```
-    """
     if "inertia-from-file" not in profile.variants:
         return
     for name, link in loaded.robot.links.items():
@@ -257,38 +218,22 @@ def floating_base(loaded, profile):
         )
 
 
-@check("C407", "pybullet-joint-without-limit", ERROR, "PyBullet refuses a revolute or prismatic joint without <limit>.", target="pybullet")
+@check(
+    "C407", "pybullet-joint-without-limit", ERROR, "PyBullet refuses a revolute or prismatic joint without <limit>.", target="pybullet",
+    doc=explain(
+        """With `--target pybullet`: finds a revolute or prismatic joint without `<limit>`.""",
+        """PyBullet's own URDF parser, like urdfdom's (J003), refuses it: "Joint is of type
+        REVOLUTE but it does not specify limits" (UrdfParser.cpp, `parseJoint`), and
+        `loadURDF` raises "Cannot load URDF file.". MuJoCo, Drake and Isaac Sim take the
+        same file, so a model checked only with them fails here.""",
+        NO_LIMIT,
+        WITH_LIMIT,
+    ),
+)
 def joint_without_limit(loaded, profile):
-    """## What it does
-    With `--target pybullet`: finds a revolute or prismatic joint without `<limit>`.
-
-    ## Why is this bad?
-    PyBullet's own URDF parser, like urdfdom's (J003), refuses it: "Joint is of type
-    REVOLUTE but it does not specify limits" (UrdfParser.cpp, `parseJoint`), and
-    `loadURDF` raises "Cannot load URDF file.". MuJoCo, Drake and Isaac Sim take the
-    same file, so a model checked only with them fails here.
-
-    ## Example
-    ```xml
-    <joint name="elbow" type="revolute">
-      <parent link="upper_arm"/><child link="forearm"/><axis xyz="0 0 1"/>
-    </joint>
-    ```
-
-    ## Use instead
-    ```xml
-    <joint name="elbow" type="revolute">
-      <parent link="upper_arm"/><child link="forearm"/><axis xyz="0 0 1"/>
-      <limit lower="-1.5" upper="1.5" effort="10" velocity="1"/>
-    </joint>
-    ```
-    """
-    for joint in loaded.robot.joints.values():
-        if joint.type in ("revolute", "prismatic") and joint.limit is None:
-            yield loaded.diagnostic(
-                "C407",
-                f"PyBullet refuses joint '{joint.name}': a {joint.type} joint without <limit>",
-                joint.at,
-                'add <limit lower="..." upper="..." effort="..." velocity="..."/>' + (", or make it continuous" if joint.type == "revolute" else ""),
-                subjects=(joint.name,),
-            )
+    for joint in without_limit(loaded):
+        yield about_joint(
+            loaded, "C407", joint,
+            f"PyBullet refuses joint '{joint.name}': a {joint.type} joint without <limit>",
+            add_limit(joint),
+        )
