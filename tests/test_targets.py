@@ -12,7 +12,8 @@ urdfcli checks it with ``--target``. For each consumer:
 - each element the consumer drops or changes (a joint left unlimited, locked or made
   fixed, its limits swapped, a body's mass or tensor replaced, a link dropped or
   lumped, a mimic joint made free, a root's inertia dropped) is named by a
-  diagnostic of that target's rules;
+  diagnostic of that target's rules, and each warning of those rules names such
+  an element;
 - the masses and principal moments ``inertia --target`` predicts are those the
   consumer built.
 
