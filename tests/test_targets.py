@@ -27,7 +27,10 @@ one skips with a message, in CI it fails.
 
 from __future__ import annotations
 
+import contextlib
+import fcntl
 import importlib.util
+import json
 import math
 import re
 import subprocess
@@ -65,8 +68,29 @@ def require_consumer(target: str) -> None:
 
 
 @pytest.fixture(scope="module")
-def cases(tmp_path_factory) -> dict[str, Path]:
-    return write_cases(tmp_path_factory.mktemp("target-cases"))
+def cases(tmp_path_factory, worker_id) -> dict[str, Path]:
+    """The cases, written once per test run into a folder every xdist worker shares, so
+    that each consumer loads them once (the loads are kept there too: real_loads)."""
+    shared = tmp_path_factory.getbasetemp() if worker_id == "master" else tmp_path_factory.getbasetemp().parent
+    folder = shared / "target-cases"
+    with locked(shared / "target-cases.lock"):
+        if (folder / "written").exists():
+            return {name: folder / f"{name}.urdf" for name in CASES}
+        folder.mkdir(exist_ok=True)
+        paths = write_cases(folder)
+        (folder / "written").touch()
+        return paths
+
+
+@contextlib.contextmanager
+def locked(path: Path):
+    """Hold an exclusive lock on ``path`` (created if missing) while the block runs."""
+    with open(path, "a") as handle:
+        fcntl.flock(handle, fcntl.LOCK_EX)
+        try:
+            yield
+        finally:
+            fcntl.flock(handle, fcntl.LOCK_UN)
 
 
 @cache
@@ -87,9 +111,22 @@ def load_all(chosen: Profile, paths: list[str]) -> list[consumers.Loaded]:
 
 @cache
 def real_loads(text: str, folder: str) -> dict[str, consumers.Loaded]:
-    """Every case loaded into one consumer profile, once per test run."""
-    paths = [str(Path(folder) / f"{name}.urdf") for name in CASES]
-    return dict(zip(CASES, load_all(profile(text), paths)))
+    """Every case loaded into one consumer profile, once per test run: the first worker
+    to ask loads them and leaves the answers beside the cases for the others."""
+    kept = Path(folder) / f"loaded-{text.replace(':', '-')}.json"
+    with locked(kept.with_suffix(".lock")):
+        if kept.exists():
+            return {name: consumers.Loaded(**answer) for name, answer in json.loads(kept.read_text()).items()}
+        paths = [str(Path(folder) / f"{name}.urdf") for name in CASES]
+        found = dict(zip(CASES, load_all(profile(text), paths)))
+        kept.write_text(json.dumps({name: loaded._asdict() for name, loaded in found.items()}))
+        return found
+
+
+@cache
+def predicted_for(text: str, path: str):
+    """urdfcli's result on one case for one profile, once per worker."""
+    return predicted(Path(path), profile(text))
 
 
 def predicted(path: Path, chosen: Profile):
@@ -116,7 +153,7 @@ def test_error_exactly_when_the_consumer_rejects(text, case, cases):
     if (chosen.target, case) in CONTENT_READ:
         pytest.skip(f"{text} reads the stand-in mesh of {case}")
     real = real_loads(text, str(cases[case].parent))[case]
-    result = predicted(cases[case], chosen)
+    result = predicted_for(text, str(cases[case]))
     said = [(d.code, d.message) for d in target_diagnostics(result, chosen)]
     assert predicted_rejection(result, chosen) == (not real.accepted), (real.error or "accepted", said)
 
@@ -253,7 +290,7 @@ def test_each_change_is_named(text, case, cases):
     real = real_loads(text, str(cases[case].parent))[case]
     if not real.accepted:
         pytest.skip(f"{text} rejects {case}: nothing built to compare")
-    result = predicted(cases[case], chosen)
+    result = predicted_for(text, str(cases[case]))
     named = {subject for d in target_diagnostics(result, chosen) for subject in d.subjects}
     missing = changes(chosen, declared(cases[case]), real.built) - named
     assert not missing, (missing, [(d.code, d.message) for d in target_diagnostics(result, chosen)])
@@ -269,7 +306,7 @@ def test_each_warning_names_a_change(text, case, cases):
     if not real.accepted:
         pytest.skip(f"{text} rejects {case}: nothing built to compare")
     changed = changes(chosen, declared(cases[case]), real.built)
-    result = predicted(cases[case], chosen)
+    result = predicted_for(text, str(cases[case]))
     unfounded = [(d.code, d.message) for d in target_diagnostics(result, chosen) if d.severity is Severity.WARNING and not set(d.subjects) & changed]
     assert not unfounded, (unfounded, changed)
 
