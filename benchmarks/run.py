@@ -6,6 +6,7 @@ It measures every target of "What must hold" in one run:
 
 1. ``check`` (and ``lint``) on the 69 URDFs of the installed
    ``example-robot-data`` package in one call, against a ``check_urdf`` shell loop;
+   ``check --target mujoco`` on them against plain ``check`` (issue 29: within 1.2x);
 2. ``check``, ``tree`` and ``expand`` on one small file, against
    ``python -c 'import lxml.etree'``, the floor of any Python tool;
 3. the bundled xacro fixtures that the ``xacro`` tool expands on its own (no
@@ -265,6 +266,8 @@ def corpus_cases(rows: list[Row], check_urdf: str) -> None:
     check, lint, theirs = measure(urdfcli("check", *files), urdfcli("lint", *files), loop, runs=runs)
     compare(rows, f"check, the {len(files)} example-robot-data URDFs in one call", check, "check_urdf loop", theirs, 1.0)
     compare(rows, f"lint, the same {len(files)} URDFs (meshes absent)", lint, "check_urdf loop", theirs, 2.0)
+    targeted, plain = measure(urdfcli("check", "--target", "mujoco", *files), urdfcli("check", *files), runs=runs)
+    compare(rows, f"check --target mujoco, the same {len(files)} URDFs", targeted, "plain check", plain, 1.2)
 
 
 def small_file_cases(rows: list[Row]) -> None:

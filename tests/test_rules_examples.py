@@ -12,6 +12,7 @@ import re
 import pytest
 from conftest import lint_file
 
+from urdfcli.model.targets import profile
 from urdfcli.project.config import Config
 from urdfcli.rules import REGISTRY, example_code
 
@@ -20,7 +21,9 @@ ROBOT_CHILDREN = {"link", "joint", "material", "gazebo", "transmission"}
 # Use instead are a pyproject.toml, tested in tests/test_workspace.py. P001 is about a package.xml
 # and the files of its package: tested in tests/test_xacro_sources.py.
 NEEDS_A_REPOSITORY = {"X006", "P001"}
-RULES = sorted((r for r in REGISTRY.values() if r.code not in NEEDS_A_REPOSITORY), key=lambda r: r.code)
+# C001-C003 report what a consumer said on a real load (check --target NAME --load): tests/test_targets.py.
+NEEDS_A_LOAD = {"C001", "C002", "C003"}
+RULES = sorted((r for r in REGISTRY.values() if r.code not in NEEDS_A_REPOSITORY | NEEDS_A_LOAD), key=lambda r: r.code)
 
 
 def first_tag(snippet: str) -> str:
@@ -50,8 +53,12 @@ def package(tmp_path):
     return root
 
 
-def codes(path: str) -> list[str]:
-    return [d.code for d in lint_file(path, Config.everything()).diagnostics]
+def codes(path: str, target: str | None = None) -> list[str]:
+    """What every rule finds; a target rule's examples are linted for its target (--target)."""
+    config = Config.everything()
+    if target is not None:
+        config = config._replace(targets=(profile(target),))
+    return [d.code for d in lint_file(path, config).diagnostics]
 
 
 @pytest.mark.parametrize("rule", RULES, ids=lambda r: r.code)
@@ -61,5 +68,5 @@ def test_example_is_flagged_and_use_instead_is_clean(rule, package, monkeypatch)
     sections = rule.sections()
     bad, good = example_code(sections.get("Example", "")), example_code(sections.get("Use instead", ""))
     assert bad and good, f"{rule.code} needs an xml code block in Example and in Use instead"
-    assert rule.code in codes(materialise(bad, package)), f"{rule.code}'s Example is not flagged"
-    assert rule.code not in codes(materialise(good, package)), f"{rule.code}'s Use instead is flagged"
+    assert rule.code in codes(materialise(bad, package), rule.target), f"{rule.code}'s Example is not flagged"
+    assert rule.code not in codes(materialise(good, package), rule.target), f"{rule.code}'s Use instead is flagged"

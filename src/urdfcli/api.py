@@ -251,6 +251,31 @@ def audit(result: Result, session: Session, tolerance: float = massprops.TOLERAN
     return inertia.build(loaded, problems, tolerance, density)
 
 
+def load_into_targets(results: list[Result], session: Session) -> None:
+    """``check --load``: load each model into the consumers of its targets that have a
+    Python package, and add what they said (C001-C003) to its diagnostics. Raises
+    UsageError when no target is asked for, or a consumer's package is not installed."""
+    from .project import consumers
+
+    for result in results:
+        loaded = result.loaded
+        if loaded is None or not loaded.modelled:
+            continue
+        config = configured(session)(result.path)
+        if not config.targets:
+            raise UsageError("--load loads the model into the --target consumers: name one, such as --target mujoco")
+        if loaded.document.file is None and not loaded.document.is_xacro:
+            raise UsageError("--load needs the model in a file, not standard input")
+        found = []
+        for chosen in config.targets:
+            if chosen.target not in consumers.PACKAGES:
+                continue  # Gazebo, KDL and Isaac Sim have no Python package to load into here
+            if not consumers.installed(chosen.target):
+                raise UsageError(f"--load --target {chosen.target} needs {chosen.name}'s Python package: {consumers.install_hint(chosen.target)}")
+            found += consumers.verify(loaded, result.diagnostics, chosen)
+        result.diagnostics = sorted([*result.diagnostics, *(linter.with_severity(d, config) for d in found)], key=Diagnostic.sort_key)
+
+
 def needs_argument(diagnostic: Diagnostic, name: str, path: str) -> Diagnostic:
     """xacro's 'Undefined substitution argument NAME', said so that it names the fix for the input ``path``."""
     message = (f"needs xacro argument '{name}': it has no value where it is used (no default, or used before its "

@@ -29,7 +29,8 @@ class Session:
     ``package_paths`` are ``-P`` options (``NAME=DIR`` or a folder to scan);
     ``config`` names a configuration file to use instead of the nearest one above
     each input (or is a :class:`~urdfcli.project.config.Config`), ``isolated`` reads none; ``select``, ``ignore`` and ``extend_select``
-    are the command line's rule selections over the configuration's.
+    are the command line's rule selections over the configuration's; ``targets``
+    (``["mujoco", "pinocchio:mimic"]``) replaces the configuration's targets.
     """
 
     def __init__(
@@ -40,15 +41,16 @@ class Session:
         select: list[str] | None = None,
         ignore: list[str] | None = None,
         extend_select: list[str] | None = None,
+        targets: list[str] | None = None,
     ) -> None:
         self.package_paths = tuple(package_paths)
-        self.settings = dict(package_paths=self.package_paths, config=config, isolated=isolated, select=select, ignore=ignore, extend_select=extend_select)
+        self.settings = dict(package_paths=self.package_paths, config=config, isolated=isolated, select=select, ignore=ignore, extend_select=extend_select, targets=targets)
         self.sources = Sources()
         self.packages = PackageIndex()
         self.expander = Expander()
         self.meshes = MeshSummaries()
         self._forget_sources()
-        overrides = {"select": select, "ignore": ignore, "extend_select": extend_select}
+        overrides = {"select": select, "ignore": ignore, "extend_select": extend_select, "targets": targets}
         self.configs = Configurations(Path(config) if isinstance(config, (str, Path)) else config, isolated, overrides)
         PackageResolver(self.package_paths)  # a -P that is not NAME=DIR or a folder: said now (PackageError)
 

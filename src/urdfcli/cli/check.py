@@ -19,7 +19,9 @@ from .common import (
     IsolatedOption,
     QuietOption,
     PackagePathOption,
+    TargetOption,
     choose,
+    fail,
     format_option,
     report_unreadable,
     session,
@@ -37,6 +39,8 @@ def check(
     inputs: InputsArgument,
     output_format: FormatOption = "auto",
     strict: Annotated[bool, typer.Option("--strict", help="Fail (exit 1) on warnings too.")] = False,
+    target: TargetOption = None,
+    load: Annotated[bool, typer.Option("--load", help="Also load each model into the --target consumers' own Python packages (mujoco, pydrake, pinocchio, pybullet) and report what they say.")] = False,
     package_path: PackagePathOption = None,
     config: ConfigOption = None,
     isolated: IsolatedOption = False,
@@ -55,8 +59,13 @@ def check(
     output_format = choose(output_format, FORMATS)
     paths, mappings = split_inputs(inputs)
     output = Output.standard(color, quiet)
-    with session(package_path, config=config, isolated=isolated) as run:
+    with session(package_path, config=config, isolated=isolated, targets=target) as run:
         found = api.run(api.find_models(paths, run), mappings, "check", run, progress=CtrlC.stop_if_pressed)
+        if load:
+            try:
+                api.load_into_targets(found.results, run)
+            except api.UsageError as error:
+                raise fail(str(error)) from None
         report_unreadable(output, found.unreadable)
         report.reporter(output_format)(found.results, output, "check", run.sources)
     failing = Severity.WARNING.rank if strict else Severity.ERROR.rank

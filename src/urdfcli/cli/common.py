@@ -72,6 +72,32 @@ QuietOption = Annotated[
     bool,
     typer.Option("--quiet", "-q", help="Print only the diagnostics and the summary: no tree, no notes on libraries, no progress bar."),
 ]
+
+
+def _targets(values: list[str] | None) -> list[str] | None:
+    from ..model.targets import profile
+
+    for value in values or ():
+        for text in value.split(","):
+            try:
+                profile(text)
+            except ValueError as error:
+                raise typer.BadParameter(str(error)) from None
+    return values
+
+
+TargetOption = Annotated[
+    list[str] | None,
+    typer.Option(
+        "--target",
+        "-t",
+        metavar="NAME",
+        callback=_targets,
+        help="Also say what this consumer rejects, changes or warns about: mujoco, drake, pinocchio, pybullet, gazebo, kdl, isaac; "
+        "variants pinocchio:mimic, pinocchio:free-flyer, pybullet:inertia-from-file, pybullet:fixed-base. Repeatable; replaces `targets` of the configuration.",
+        show_default=False,
+    ),
+]
 LIBRARIES_HELP = (
     "A xacro file (*.xacro) that only defines macros and properties (no link, joint or macro call outside its macros) "
     "is a library: it is checked through the models of its repository or workspace that include it, "

@@ -13,7 +13,22 @@ from ..report.console import Output, write
 from ..report.inertia import Audit, flagged, problem_count
 from ..report.lines import diagnostic_lines
 from ..session import Session
-from .common import ColorOption, ConfigOption, Exit, InputsArgument, IsolatedOption, PackagePathOption, choose, fail, format_option, report_unreadable, session, split_inputs
+from ..model.targets import build, profile
+from .common import (
+    ColorOption,
+    ConfigOption,
+    Exit,
+    InputsArgument,
+    IsolatedOption,
+    PackagePathOption,
+    TargetOption,
+    choose,
+    fail,
+    format_option,
+    report_unreadable,
+    session,
+    split_inputs,
+)
 
 
 def inertia(
@@ -31,6 +46,7 @@ def inertia(
     xacro: Annotated[bool, typer.Option("--xacro", help="Implies --suggest: name the xacro macro that wrote each flagged <inertial>, and print the call of it that gives the right values.")] = False,
     density: Annotated[float | None, typer.Option("--density", metavar="KG_PER_M3", help="Compute masses from the geometry's volume at this density instead of using the declared masses.")] = None,
     output_format: format_option("text, or json (one object per file; a list of them for several files).") = "text",
+    target: TargetOption = None,
     package_path: PackagePathOption = None,
     config: ConfigOption = None,
     isolated: IsolatedOption = False,
@@ -60,6 +76,9 @@ def inertia(
             result.audit = api.audit(result, run, tolerance, density)
             if result.audit is not None and (suggest or xacro):
                 result.audit = result.audit._replace(suggestions=suggestions(result.audit, run, density, xacro))
+            if result.audit is not None and target:
+                chosen = [profile(text) for value in target for text in value.split(",")]
+                result.audit = result.audit._replace(targets=tuple(build(result.loaded, p) for p in chosen))
         write(output.err, (line for result in found.results for d in result.errors for line in diagnostic_lines(d, None)))
         report.reporter(output_format)(found.results, output, "inertia", run.sources)
     if found.unreadable:

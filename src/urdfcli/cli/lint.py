@@ -19,6 +19,7 @@ from .common import (
     IsolatedOption,
     QuietOption,
     PackagePathOption,
+    TargetOption,
     choose,
     format_option,
     report_unreadable,
@@ -43,6 +44,7 @@ def lint(
     select: Annotated[list[str] | None, typer.Option("--select", metavar="CODES", help="Only these rule codes or prefixes (comma-separated; replaces the configuration's select). ALL selects every rule.", show_default=False)] = None,
     ignore: Annotated[list[str] | None, typer.Option("--ignore", metavar="CODES", help="Also ignore these codes or prefixes.", show_default=False)] = None,
     extend_select: Annotated[list[str] | None, typer.Option("--extend-select", metavar="CODES", help="Also select these codes or prefixes (e.g. S for the style rules).", show_default=False)] = None,
+    target: TargetOption = None,
     config: ConfigOption = None,
     isolated: IsolatedOption = False,
     exit_zero: Annotated[bool, typer.Option("--exit-zero", help="Exit 0 even when problems remain (2 still means it could not run).")] = False,
@@ -60,7 +62,7 @@ def lint(
     output_format = choose(output_format, FORMATS)
     paths, mappings = split_inputs(inputs)
     output = Output.standard(color, quiet)
-    with session(package_path, config=config, isolated=isolated, select=select, ignore=ignore, extend_select=extend_select) as run:
+    with session(package_path, config=config, isolated=isolated, select=select, ignore=ignore, extend_select=extend_select, targets=target) as run:
         files = api.find_models(paths, run)
         with Progress(output) as progress:
             found = api.run(files, mappings, "all", run, jobs=jobs, progress=progress.update)

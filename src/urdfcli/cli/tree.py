@@ -8,13 +8,30 @@ import typer
 
 from .. import api
 from ..model.kinematics import roots
+from ..model.targets import build, profile
+from ..report.escape import escape
 from ..report.console import Output, write
 from ..report.lines import diagnostic_lines
 from ..report.result import Result
+from ..report.targets import build_dict, joint_notes, link_notes
+from ..report.targets import summary as target_summary
 from ..report.tree import cut, summarise, text_lines, tree_json, tree_rows
 from ..rules.suggestions import close_matches
 from ..session import Session
-from .common import ColorOption, ConfigOption, Exit, FileArgument, IsolatedOption, PackagePathOption, choose, fail, format_option, session, split_inputs
+from .common import (
+    ColorOption,
+    ConfigOption,
+    Exit,
+    FileArgument,
+    IsolatedOption,
+    PackagePathOption,
+    TargetOption,
+    choose,
+    fail,
+    format_option,
+    session,
+    split_inputs,
+)
 
 
 def tree(
@@ -24,6 +41,7 @@ def tree(
     no_joints: Annotated[bool, typer.Option("--no-joints", help="Show link names only.")] = False,
     ascii_only: Annotated[bool, typer.Option("--ascii", help="Plain ASCII characters (for logs).")] = False,
     output_format: format_option("text, or json (nested: each link with its children as {joint, link}).") = "text",
+    target: TargetOption = None,
     package_path: PackagePathOption = None,
     config: ConfigOption = None,
     isolated: IsolatedOption = False,
@@ -59,13 +77,31 @@ def tree(
         rows = tree_rows(robot, start)
         summary = summarise(robot, rows)
         shown = cut(rows, max_depth)
+        builds = [build(result.loaded, profile(text)) for value in target or () for text in value.split(",")]
+        notes = target_notes(builds)
         if output_format == "json":
-            output.out.file.write(tree_json(robot, shown, summary) + "\n")
+            text = tree_json(robot, shown, summary)
+            if builds:
+                import json
+
+                text = text[:-1] + f', "targets": {json.dumps([build_dict(b) for b in builds])}}}'
+            output.out.file.write(text + "\n")
         else:
-            write(output.out, text_lines(robot, shown, joints=not no_joints, ascii_only=ascii_only))
+            write(output.out, text_lines(robot, shown, joints=not no_joints, ascii_only=ascii_only, notes=notes))
             write(output.out, [[(summary.text(), "bold")]])
+            write(output.out, [[(escape(target_summary(b)), "bold")] for b in builds])
     if has_errors:
         raise SystemExit(Exit.PROBLEMS)
+
+
+def target_notes(builds) -> dict[str, str]:
+    """What the targets make of each link and joint, each said by its target when there are several."""
+    notes: dict[str, list[str]] = {}
+    for built in builds:
+        prefix = f"{built.profile.name}: " if len(builds) > 1 else ""
+        for name, note in (link_notes(built) | joint_notes(built)).items():
+            notes.setdefault(name, []).append(prefix + note)
+    return {name: "; ".join(found) for name, found in notes.items()}
 
 
 def load_model(path: str, mappings: dict[str, str], run: Session) -> Result:

@@ -142,6 +142,7 @@ class Robot:
         self.resources: list[Resource] = resources if resources is not None else []
         self.unknown: list[Unknown] = []  # read only when asked for
         self.extensions: list[Element] = []  # top-level blocks of other formats
+        self.visual_materials: list[Material] = []  # the materials written inside <visual>s, in order
         self._placed: dict[Element, int] = {}
         self.derived: dict = {}  # worked out from the rest, once
 
@@ -522,6 +523,7 @@ class Reader:
                 robot.unknown.extend(vocabulary.unknown_markup(element, index.__getitem__))
         if not robot.links:
             self.report("R004", "the robot has no <link>", root)
+        robot.visual_materials = self._inline_materials
         self.check_materials(robot)
         return robot
 

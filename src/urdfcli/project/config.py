@@ -21,6 +21,7 @@ Keys::
     exempt = ["base_footprint", "*_frame"]
     [xacro-args]                   # glob -> xacro arguments for the files it matches
     "urdf/*.urdf.xacro" = { use_gpu = "false" }
+    targets = ["mujoco"]           # consumers whose target rules run (--target), with variants: "pinocchio:mimic"
     [models]                       # model -> the argument sets it is checked with
     "ur_description/urdf/ur.urdf.xacro" = [["ur_type:=ur5e", "name:=ur"]]
 
@@ -37,12 +38,13 @@ from pathlib import Path
 from typing import Any, NamedTuple
 
 from ..diagnostics import Severity
+from ..model.targets import Profile, profile
 from ..read.folders import nearest
 from ..rules import REGISTRY, Rule, UnknownRule, lookup
 from ..rules.suggestions import close_matches
 
 CONFIG_NAMES = ("urdfcli.toml", ".urdfcli.toml")
-KEYS = ("select", "ignore", "extend-select", "per-file-ignores", "severity", "options", "package-paths", "xacro-args", "models")
+KEYS = ("select", "ignore", "extend-select", "per-file-ignores", "severity", "options", "package-paths", "xacro-args", "models", "targets")
 ALL = "ALL"
 
 
@@ -64,14 +66,17 @@ class Config(NamedTuple):
     package_paths: tuple[str, ...] = ()
     xacro_args: tuple[tuple[str, tuple[tuple[str, str], ...]], ...] = ()
     models: tuple[tuple[Path, tuple[tuple[tuple[str, str], ...], ...]], ...] = ()  # absolute model -> argument sets
+    targets: tuple[Profile, ...] = ()  # the consumers whose rules run (--target)
 
     @classmethod
     def everything(cls) -> "Config":
         """Every rule on, with default severities and options."""
         return cls(select=(ALL,))
 
-    def overridden(self, select: list[str] | None = None, ignore: list[str] | None = None, extend_select: list[str] | None = None) -> "Config":
-        """The command line over the file: --select replaces, --ignore and --extend-select add."""
+    def overridden(
+        self, select: list[str] | None = None, ignore: list[str] | None = None, extend_select: list[str] | None = None, targets: list[str] | None = None
+    ) -> "Config":
+        """The command line over the file: --select and --target replace, --ignore and --extend-select add."""
         where = "on the command line"
         changes: dict[str, Any] = {}
         if select:
@@ -80,6 +85,8 @@ class Config(NamedTuple):
             changes["ignore"] = self.ignore + _selectors(",".join(ignore), where)
         if extend_select:
             changes["extend_select"] = self.extend_select + _selectors(",".join(extend_select), where)
+        if targets:
+            changes["targets"] = _profiles(targets, where)
         return self._replace(**changes)
 
     # -- questions asked while linting -----------------------------------------
@@ -181,6 +188,16 @@ def _selectors(values: Any, where: str) -> tuple[str, ...]:
     return tuple(out)
 
 
+def _profiles(values: Any, where: str) -> tuple[Profile, ...]:
+    """Validated target profiles (``mujoco``, ``pybullet:inertia-from-file``), each once."""
+    if not isinstance(values, list) or not all(isinstance(v, str) for v in values):
+        raise ConfigError(f"{where}: expected a list of targets such as [\"mujoco\", \"pinocchio:mimic\"], not {values!r}")
+    try:
+        return tuple(dict.fromkeys(profile(v) for text in values for v in text.split(",") if v.strip()))
+    except ValueError as error:
+        raise ConfigError(f"{where}: {error}") from None
+
+
 # -- reading ---------------------------------------------------------------------
 def parse(table: dict[str, Any], source: str, root: Path) -> Config:
     """A Config from the urdfcli table of a TOML file; every mistake is a ConfigError."""
@@ -245,6 +262,7 @@ def parse(table: dict[str, Any], source: str, root: Path) -> Config:
         package_paths=tuple(_absolute_package_path(p, root) for p in paths),
         xacro_args=tuple(xacro_args),
         models=tuple(models),
+        targets=_profiles(table.get("targets", []), where("targets")),
     )
 
 

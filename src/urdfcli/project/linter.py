@@ -24,7 +24,9 @@ those of ``check``, or every rule ("all")."""
 
 
 def runs(rule: Rule, checks: str) -> bool:
-    """Whether a command running ``checks`` runs the check ``rule``."""
+    """Whether a command running ``checks`` runs the check ``rule`` (a target rule: for the targets asked for)."""
+    if rule.target is not None:
+        return checks != "none"
     return rule.function is not None and (rule.always or checks == "all" or (checks == "check" and rule.in_check))
 
 
@@ -43,8 +45,14 @@ def run_rules(loaded: Loaded, config: Config, checks: str) -> list[Diagnostic]:
     found: list[Diagnostic] = []
     for rule in REGISTRY.values():
         ready = loaded.sources is not None if rule.sources else loaded.modelled
-        if ready and runs(rule, checks) and (rule.always or config.enabled(rule)):
+        if not ready or not runs(rule, checks) or not (rule.always or config.enabled(rule)):
+            continue
+        if rule.target is None:
             found.extend(rule.run(loaded, options.get(rule.code)))
+            continue
+        for profile in config.targets:
+            if profile.target == rule.consumer:
+                found.extend(rule.run(loaded, profile=profile))
     return found
 
 

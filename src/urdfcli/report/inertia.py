@@ -16,6 +16,7 @@ from ..rules import REGISTRY
 from .console import Line, Output, write
 from .escape import escape
 from .lines import diagnostic_dict, diagnostic_lines, plural
+from .targets import build_dict, inertia_lines
 
 if TYPE_CHECKING:
     from .result import Result
@@ -37,6 +38,7 @@ class Audit(NamedTuple):
     problems: tuple[Diagnostic, ...]  # every mass-property diagnostic, in file order
     tolerance: float = massprops.TOLERANCE
     suggestions: tuple[str, ...] = ()  # XML for the flagged links (``--suggest``), printed after the table
+    targets: tuple = ()  # what each consumer of ``--target`` builds (model.targets.Build), printed after the total
 
 
 def build(loaded: Loaded, problems: list[Diagnostic], tolerance: float = massprops.TOLERANCE, density: float | None = None) -> Audit:
@@ -107,6 +109,7 @@ def audit_dict(result: Result) -> dict:
         "robot": audit.loaded.robot.name,
         "links": [link_dict(entry, audit.loaded) for entry in audit.links],
         "total": None if body is None else {"mass": body.mass, "com": _vector(body.com), "inertia": _tensor(body.tensor)},
+        **({"targets": [build_dict(built) for built in audit.targets]} if audit.targets else {}),
     }
 
 
@@ -150,6 +153,8 @@ def audit_lines(audit: Audit, show_name: bool) -> list[Line]:
     if body is not None:
         lines.append([("total", "bold"), (f"  mass {number(body.mass)}  com {' '.join(map(number, body.com))} (in '{escape(loaded.root or '')}' frame, joints at zero)", "")])
         lines.append(_row("inertia", tensor_text(body.tensor) + "  about the centre of mass"))
+    for built in audit.targets:
+        lines.extend(inertia_lines(built))
     return lines
 
 

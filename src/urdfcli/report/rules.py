@@ -19,6 +19,7 @@ PREFIXES = {
     "T": "Tree",
     "I": "Inertia and mass",
     "D": "Description",
+    "C": "Targets (with --target NAME: C1 MuJoCo, C2 Drake, C3 Pinocchio, C4 PyBullet, C5 Gazebo, C6 KDL, C7 Isaac Sim)",
     "S": "Style (off by default)",
     "U": "Suppression comments",
 }
@@ -34,6 +35,8 @@ def facts(rule: Rule) -> str:
     """One line: severity, on or off by default, and where it is reported."""
     where = "check and lint" if rule.in_check else "lint"
     parts = [f"severity {rule.severity.value}", "on by default" if rule.default else "off by default (select it)", f"reported by {where}"]
+    if rule.target is not None:
+        parts[1:2] = [f"runs with --target {rule.consumer}" + (f" (examples: --target {rule.target})" if rule.target != rule.consumer else "")]
     if rule.urdfdom:
         parts.append("check_urdf rejects it too")
     return "; ".join(parts)
@@ -67,6 +70,7 @@ def as_json(rules: list[Rule]) -> str:
                 "default": r.default,
                 "in_check": r.in_check,
                 "urdfdom": r.urdfdom,
+                "target": r.target,
                 "summary": r.summary,
                 "options": [{"name": o.name, "type": o.kind, "default": o.default, "doc": o.doc} for o in r.options],
                 "doc": r.doc,

@@ -178,8 +178,12 @@ def cut(rows: list[Row], max_depth: int | None) -> list[Row]:
 # -- text -------------------------------------------------------------------------
 
 
-def text_lines(robot: Robot, rows: list[Row], joints: bool = True, ascii_only: bool = False) -> Iterator[list[tuple[str, str]]]:
-    """One line per row, with tree guides and joint details, as (text, rich style) pieces."""
+def text_lines(
+    robot: Robot, rows: list[Row], joints: bool = True, ascii_only: bool = False, notes: dict[str, str] | None = None
+) -> Iterator[list[tuple[str, str]]]:
+    """One line per row, with tree guides and joint details, as (text, rich style) pieces;
+    ``notes`` adds a remark after a link or joint, by name (what a consumer makes of it)."""
+    notes = notes or {}
     branch, corner, through, blank, arrow, more, _, again = ASCII_GUIDES if ascii_only else UNICODE_GUIDES
     open_levels: list[bool] = []  # per depth: does the ancestor there have siblings after it?
     for row in rows:
@@ -197,6 +201,9 @@ def text_lines(robot: Robot, rows: list[Row], joints: bool = True, ascii_only: b
             line.append((escape(row.joint.type or "unknown type"), TYPE_STYLES.get(row.joint.type or "", "red")))
             line.append((escape("".join(", " + part for part in joint_details(row.joint, ascii_only))), "bright_black"))
             line.append((")", "bright_black"))
+        for name in (row.link, row.joint.name if row.joint is not None else None):
+            if name in notes:
+                line.append((f"  [{escape(notes[name])}]", "yellow"))
         if row.repeat:
             line.append((f"  {again}", "red"))
         if row.hidden:

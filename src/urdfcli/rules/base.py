@@ -72,6 +72,12 @@ class Rule(NamedTuple):
     always: bool = False  # runs on every model read, whatever the command (the tree's structure)
     inertial_fix: bool = False  # a new <inertial> fixes what it finds (`inertia --suggest` prints one)
     sources: bool = False  # judges the xacro sources (``loaded.sources``), so runs even when no robot was read
+    target: str | None = None  # a consumer's rule (``mujoco``, or the profile its examples use, ``pinocchio:mimic``): runs only for --target
+
+    @property
+    def consumer(self) -> str | None:
+        """The consumer a target rule is about (None for the other rules)."""
+        return self.target.split(":")[0] if self.target else None
 
     @property
     def defaults(self) -> dict[str, Any]:
@@ -84,10 +90,13 @@ class Rule(NamedTuple):
         known = [o.name for o in self.options]
         raise KeyError(f"rule {self.code} ({self.name}) has no option '{name}'" + _did_you_mean(name, known) + (f"; its options are {', '.join(known)}" if known else "; it has no options"))
 
-    def run(self, loaded: "Loaded", options: dict[str, Any] | None = None) -> Iterator["Diagnostic"]:
-        """The rule's diagnostics on a loaded model, with options over the defaults."""
+    def run(self, loaded: "Loaded", options: dict[str, Any] | None = None, profile: Any = None) -> Iterator["Diagnostic"]:
+        """The rule's diagnostics on a loaded model, with options over the defaults; a
+        target rule's for the consumer's ``profile`` (a :class:`urdfcli.model.targets.Profile`)."""
         if self.function is None:
             return iter(())
+        if self.target is not None:
+            return self.function(loaded, profile)
         return self.function(loaded, options) if self.options else self.function(loaded)
 
     def sections(self) -> dict[str, str]:
@@ -99,9 +108,10 @@ def declare(code: str, name: str, severity: Severity, summary: str, doc: str = "
     return Rule(code, name, severity, summary, cleandoc(doc), **kwargs)
 
 
-def check(code: str, name: str, severity: Severity, summary: str, options: tuple[Option, ...] = (), **kwargs):
+def check(code: str, name: str, severity: Severity, summary: str, options: tuple[Option, ...] = (), doc: str | None = None, **kwargs):
     """Make a function over a loaded model a rule (its ``rule`` attribute); its
-    docstring is the rule's documentation.
+    docstring is the rule's documentation, unless ``doc`` gives it (made with
+    :func:`explain` where rules share their examples).
 
     A rule with options gets them as a second argument, a dict holding every
     option (defaults filled in); called with the model alone it uses the defaults.
@@ -116,7 +126,8 @@ def check(code: str, name: str, severity: Severity, summary: str, options: tuple
             def registered(loaded, values=None):
                 return function(loaded, {**defaults, **(values or {})})
 
-        function.rule = Rule(code, name, severity, summary, cleandoc(function.__doc__ or ""), function=registered, options=tuple(options), **kwargs)
+        text = doc if doc is not None else function.__doc__
+        function.rule = Rule(code, name, severity, summary, cleandoc(text or ""), function=registered, options=tuple(options), **kwargs)
         return function
 
     return register

@@ -1,0 +1,70 @@
+"""What the target rules share: where a link or joint was written, the joints several
+consumers treat alike, and how to say a number."""
+
+from __future__ import annotations
+
+from ...model.load import Loaded
+from ...model.massprops import number
+
+
+def link_at(loaded: Loaded, name: str) -> int | None:
+    link = loaded.robot.links.get(name)
+    return link.at if link is not None else None
+
+
+def inertial_at(loaded: Loaded, name: str) -> int | None:
+    """Where a link's ``<inertial>`` is, else the link itself."""
+    link = loaded.robot.links[name]
+    return link.inertial.at if link.inertial is not None else link.at
+
+
+def mimic_at(joint) -> int:
+    found = joint.part("mimic")
+    return found if found is not None else joint.at
+
+
+def about_joint(loaded: Loaded, code: str, joint, message: str, hint: str, at: int | None = None):
+    """A diagnostic about one joint, at ``at`` (else where the joint was written)."""
+    return loaded.diagnostic(code, message, at if at is not None else joint.at, hint, subjects=(joint.name,))
+
+
+def limit_at(joint) -> int:
+    found = joint.part("limit")
+    return found if found is not None else joint.at
+
+
+BOUNDED = ("revolute", "prismatic")  # the joints URDF gives a <limit> with a lower and an upper
+MIMICKED = ("revolute", "continuous", "prismatic")  # the joints a <mimic> makes follow another
+
+
+def joints_of(loaded: Loaded, kinds: tuple[str, ...]) -> list:
+    return [joint for joint in loaded.robot.joints.values() if joint.type in kinds]
+
+
+def inverted_limits(loaded: Loaded) -> list:
+    """Revolute and prismatic joints whose lower limit is above the upper one."""
+    return [joint for joint in joints_of(loaded, BOUNDED) if joint.limit is not None and joint.limit.lower > joint.limit.upper]
+
+
+def without_limit(loaded: Loaded) -> list:
+    """Revolute and prismatic joints without a ``<limit>`` (urdfdom rejects them: J003)."""
+    return [joint for joint in joints_of(loaded, BOUNDED) if joint.limit is None]
+
+
+def add_limit(joint) -> str:
+    """The hint for a joint without ``<limit>``."""
+    return 'add <limit lower="..." upper="..." effort="..." velocity="..."/>' + (", or make it continuous" if joint.type == "revolute" else "")
+
+
+def mimic_joints(loaded: Loaded) -> list:
+    return [joint for joint in joints_of(loaded, MIMICKED) if joint.mimic is not None]
+
+
+def names(items, most: int = 3) -> str:
+    """``'a', 'b', 'c' and 2 more``."""
+    items = list(items)
+    shown = ", ".join(f"'{item}'" for item in items[:most])
+    return shown + (f" and {len(items) - most} more" if len(items) > most else "")
+
+
+__all__ = ["BOUNDED", "MIMICKED", "about_joint", "add_limit", "inertial_at", "inverted_limits", "joints_of", "limit_at", "link_at", "mimic_at", "mimic_joints", "names", "number", "without_limit"]

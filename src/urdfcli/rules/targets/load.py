@@ -1,0 +1,38 @@
+"""What ``check --target NAME --load`` reports from a real load into the consumer."""
+
+from __future__ import annotations
+
+from ..base import ERROR, INFO, WARNING, declare, explain
+
+_EXAMPLE = '<link name="wrist"><inertial><mass value="0"/><inertia ixx="0" ixy="0" ixz="0" iyy="0" iyz="0" izz="0"/></inertial></link>'
+
+LOAD_REJECTED = declare(
+    "C001", "target-load-rejected", ERROR, "The consumer itself refused the model (--load).",
+    explain(
+        """With `--target NAME --load`: the model was loaded into the consumer's own Python package
+        (mujoco, pydrake, pinocchio, pybullet, urdf_usd_converter) in a child process, and it refused it; the message
+        is the consumer's, placed at the link or joint it names.""",
+        "The consumer cannot use the model as written.",
+        '<robot name="r">\n  <link name="base"/>\n  ' + _EXAMPLE + "\n  <joint name=\"j\" type=\"continuous\"><parent link=\"base\"/><child link=\"wrist\"/></joint>\n</robot>",
+        '<robot name="r">\n  <link name="base"/>\n</robot>',
+    ),
+)
+LOAD_DISAGREES = declare(
+    "C002", "target-load-disagrees", WARNING, "The consumer's verdict differs from urdfcli's prediction (--load).",
+    explain(
+        """With `--target NAME --load`: urdfcli predicted that the consumer would reject the model
+        and it did not, or the other way round.""",
+        "Either the model depends on something urdfcli does not read (a mesh file's content), or the consumer's version behaves otherwise: please report it.",
+        '<robot name="r">\n  <link name="base"/>\n</robot>',
+        '<robot name="r">\n  <link name="base"/>\n</robot>',
+    ),
+)
+LOAD_SAYS = declare(
+    "C003", "target-load-warning", INFO, "A warning the consumer printed while loading (--load).",
+    explain(
+        "With `--target NAME --load`: a warning the consumer printed while loading the model, placed at the link or joint it names.",
+        "The consumer changed or ignored something it warns about.",
+        '<robot name="r">\n  <link name="base"/>\n</robot>',
+        '<robot name="r">\n  <link name="base"/>\n</robot>',
+    ),
+)

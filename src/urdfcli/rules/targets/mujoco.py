@@ -1,0 +1,294 @@
+"""MuJoCo 4.0's URDF reader (``mujoco.MjModel.from_xml_path``): src/xml/xml_urdf.cc, its
+URDF defaults (fusestatic, discardvisual) in src/xml/xml.cc, the mass checks in
+src/user/user_model.cc and user_objects.cc."""
+
+from __future__ import annotations
+
+from ...model import massprops
+from ...model.targets import MJMINVAL, build, geometry_body, mesh_extension, mujoco_options, weighed_by_geometry
+from ..base import ERROR, INFO, WARNING, check, explain
+from .common import BOUNDED, inertial_at, joints_of, limit_at, link_at, names, number
+from .examples import INVERTED_LIMITS, ORDERED_LIMITS, TRIANGLE_BROKEN, TRIANGLE_KEPT, WRIST_BOX, arm, meshed, wrist_inertial
+
+DECODED = (".stl", ".obj", ".msh")  # the mesh files MuJoCo 4.0 decodes without a plugin
+
+
+@check(
+    "C101", "mujoco-massless-body", ERROR, "MuJoCo rejects a moving body without mass or inertia.", target="mujoco",
+    doc=explain(
+        """With `--target mujoco`: finds a body moved by a joint whose mass, or one of
+        whose principal moments, is below MuJoCo's `mjMINVAL` (1e-15). The body is the
+        child link of the moving joint with every link fixed below it (MuJoCo fuses
+        them, `fusestatic`); a link without `<inertial>` but with collision shapes gets
+        their mass at 1000 kg/m³. Measures the declared masses and tensors; leaves alone
+        links whose mass comes from a mesh (its volume is not read).""",
+        """MuJoCo refuses to load the model: "mass and inertia of moving bodies must be
+        larger than mjMINVAL" (src/user/user_model.cc).""",
+        arm(),
+        arm(wrist_inertial("0.5", "1e-3")),
+    ),
+)
+def massless_body(loaded, profile):
+    for body in build(loaded, profile).bodies:
+        if body.joint is None or body.mass is None:
+            continue
+        if body.mass < MJMINVAL:
+            why = f"its mass is {number(body.mass)}" if body.mass else "it has no mass"
+        elif body.moments is not None and min(body.moments) < MJMINVAL:
+            why = "its inertia tensor is zero" if max(body.moments) < MJMINVAL else "a principal moment of its inertia is zero"
+        else:
+            continue
+        fused = f" (with {names(body.links[1:])} fused into it)" if len(body.links) > 1 else ""
+        yield loaded.diagnostic(
+            "C101",
+            f"MuJoCo rejects link '{body.top}'{fused}, moved by joint '{body.joint.name}': {why}",
+            inertial_at(loaded, body.top),
+            "give it an <inertial> with a positive mass and tensor, or collision shapes MuJoCo can weigh",
+            subjects=(*body.links, body.joint.name),
+        )
+
+
+@check(
+    "C102", "mujoco-triangle-inequality", ERROR, "MuJoCo rejects an inertia breaking A + B >= C.", target="mujoco",
+    doc=explain(
+        """With `--target mujoco`: finds a declared inertia whose principal moments break
+        the triangle inequality (A + B >= C), unless the model sets
+        `<mujoco><compiler balanceinertia="true"/></mujoco>`.""",
+        """MuJoCo refuses to load the model: "inertia must satisfy A + B >= C; use
+        'balanceinertia' to fix" (src/user/user_objects.cc). No body of that shape exists.""",
+        TRIANGLE_BROKEN,
+        TRIANGLE_KEPT,
+    ),
+)
+def triangle_inequality(loaded, profile):
+    if mujoco_options(loaded).balanceinertia:
+        return
+    for name, link in loaded.robot.links.items():
+        inertial = link.inertial
+        if inertial is None or inertial.inertia is None:
+            continue
+        tensor = massprops.matrix(inertial.inertia)
+        positive = not massprops.is_zero(tensor) and massprops.principal_moments(tensor)[0] > 0  # else C103's
+        broken = massprops.triangle_violation(tensor, rel_tol=1e-9) if positive else None  # MuJoCo compares without a margin
+        if broken is not None:
+            a, b, c = broken
+            yield loaded.diagnostic(
+                "C102",
+                f"MuJoCo rejects link '{name}': its inertia breaks the triangle inequality A + B >= C ({number(a)} + {number(b)} < {number(c)})",
+                inertial.inertia_at or inertial.at,
+                'fix the tensor, or let MuJoCo raise the small moments: <mujoco><compiler balanceinertia="true"/></mujoco>',
+                subjects=(name,),
+            )
+
+
+@check("C103", "mujoco-inertia-not-positive", ERROR, "MuJoCo rejects an inertia without positive eigenvalues.", target="mujoco")
+def inertia_not_positive(loaded, profile):
+    """## What it does
+    With `--target mujoco`: finds a declared inertia, on any link (the root and fixed
+    links too), that is not all zero but has a principal moment that is zero or
+    negative (`izz="0"` on a rod included). An all-zero tensor is C101's.
+
+    ## Why is this bad?
+    MuJoCo reads every URDF tensor as `fullinertia` and refuses to load the model:
+    "inertia must have positive eigenvalues" (src/user/user_objects.cc).
+
+    ## Example
+    ```xml
+    <link name="wrist">
+      <inertial><mass value="1"/><inertia ixx="0.01" ixy="0.02" ixz="0" iyy="0.01" iyz="0" izz="0.01"/></inertial>
+    </link>
+    ```
+
+    ## Use instead
+    ```xml
+    <link name="wrist">
+      <inertial><mass value="1"/><inertia ixx="0.01" ixy="0.002" ixz="0" iyy="0.01" iyz="0" izz="0.01"/></inertial>
+    </link>
+    ```
+    """
+    for name, link in loaded.robot.links.items():
+        inertial = link.inertial
+        if inertial is None or inertial.inertia is None:
+            continue
+        tensor = massprops.matrix(inertial.inertia)
+        if massprops.is_zero(tensor):
+            continue
+        smallest = massprops.principal_moments(tensor)[0]
+        if smallest <= 0:
+            yield loaded.diagnostic(
+                "C103",
+                f"MuJoCo rejects link '{name}': its inertia has a principal moment of {number(smallest)}; all must be positive",
+                inertial.inertia_at or inertial.at,
+                "recompute the tensor (inertia --suggest prints one for its geometry)",
+                subjects=(name,),
+            )
+
+
+def _meshes(loaded, discardvisual: bool):
+    for name, link in loaded.robot.links.items():
+        shapes = link.collisions if discardvisual else (*link.visuals, *link.collisions)
+        for shape in shapes:
+            geometry = shape.geometry
+            if geometry is not None and geometry.kind == "mesh" and geometry.filename:
+                yield name, geometry
+
+
+def _once(loaded, code: str, meshes: list, kind: str, why: str, hint: str):
+    """One diagnostic for every mesh of a kind: placed at the first, about every link that has one."""
+    name, geometry = meshes[0]
+    more = f" (and {len(meshes) - 1} more {kind} meshes)" if len(meshes) > 1 else ""
+    return loaded.diagnostic(
+        code, f"MuJoCo rejects link '{name}': {why} '{geometry.filename}'{more}", geometry.at, hint, subjects=tuple(dict.fromkeys(n for n, _ in meshes))
+    )
+
+
+@check(
+    "C104", "mujoco-mesh-format", ERROR, "MuJoCo cannot decode a mesh file of this format.", target="mujoco",
+    doc=explain(
+        """With `--target mujoco`: finds a collision mesh (and a visual one when the model
+        sets `discardvisual="false"`) whose file extension is not one MuJoCo decodes:
+        `.stl`, `.obj` or `.msh`. Judged by the extension; the file is not read.""",
+        """MuJoCo refuses to load the model: "no decoder found for mesh file" (src/user/user_mesh.cc).
+        COLLADA (`.dae`) meshes, common in ROS packages, are not read.""",
+        meshed("base.dae"),
+        meshed("base.stl"),
+    ),
+)
+def mesh_format(loaded, profile):
+    found: dict[str, list] = {}  # extension -> the links and meshes: said once per extension
+    for name, geometry in _meshes(loaded, mujoco_options(loaded).discardvisual):
+        extension = mesh_extension(geometry.filename)
+        if extension not in DECODED:
+            found.setdefault(extension, []).append((name, geometry))
+    for extension, meshes in found.items():
+        kind = extension or "extension-less"
+        yield _once(loaded, "C104", meshes, kind, f"it has no decoder for {kind} mesh", "convert the meshes to .stl or .obj for MuJoCo")
+
+
+@check(
+    "C105", "mujoco-package-uri", ERROR, "MuJoCo does not resolve package:// mesh paths.", target="mujoco",
+    doc=explain(
+        """With `--target mujoco`: finds a collision mesh (and a visual one when the model
+        sets `discardvisual="false"`) named by a `package://` URI.""",
+        """MuJoCo's URDF reader takes a mesh filename as a path relative to the model's
+        folder (`strippath` is false in 4.0) and never resolves `package://`: loading
+        fails on a file that does not exist (src/xml/xml_urdf.cc).""",
+        meshed("package://my_robot/meshes/arm.stl"),
+        meshed("../meshes/arm.stl"),
+    ),
+)
+def package_uri(loaded, profile):
+    meshes = [(name, g) for name, g in _meshes(loaded, mujoco_options(loaded).discardvisual) if g.filename.startswith("package://")]
+    if meshes:  # said once per model
+        yield _once(
+            loaded, "C105", meshes, "package://", "it does not resolve",
+            "give MuJoCo a copy with paths relative to the model (`urdfcli expand` then replace package://PKG/ by the package's path), or set <mujoco><compiler meshdir=.../></mujoco>",
+        )
+
+
+@check(
+    "C106", "mujoco-unlimited-joint", WARNING, "MuJoCo drops a joint's limits when lower >= upper.", target="mujoco",
+    doc=explain(
+        """With `--target mujoco`: finds a revolute or prismatic joint whose lower limit is
+        not below its upper one.""",
+        """MuJoCo makes the joint unlimited: without a word when lower > upper, with the
+        warning "equal lower and upper limits, limit ignored" when they are equal
+        (src/xml/xml_urdf.cc). A joint meant to be stopped turns freely.""",
+        INVERTED_LIMITS,
+        ORDERED_LIMITS,
+    ),
+)
+def unlimited_joint(loaded, profile):
+    for joint in joints_of(loaded, BOUNDED):
+        limit = joint.limit
+        if limit is not None and limit.lower >= limit.upper:
+            how = "they are equal" if limit.lower == limit.upper else "lower is above upper"
+            yield loaded.diagnostic(
+                "C106",
+                f"MuJoCo makes joint '{joint.name}' unlimited: its limits are {number(limit.lower)} and {number(limit.upper)}, and {how}",
+                limit_at(joint),
+                "give lower < upper; a joint that must not move is a fixed joint",
+                subjects=(joint.name,),
+            )
+
+
+@check(
+    "C107", "mujoco-mass-from-geometry", WARNING, "MuJoCo weighs a moving link without <inertial> by its collision shapes.", target="mujoco",
+    doc=explain(
+        """With `--target mujoco`: finds a moving body none of whose links has an
+        `<inertial>`, but which has collision shapes, while `inertiafromgeom` is `auto`
+        (the URDF default) or `true`.""",
+        """MuJoCo gives the body the mass and inertia of its collision shapes filled at
+        1000 kg/m³ (src/user/user_objects.cc, `inertiafromgeom`): a 10 cm box weighs
+        1 kg, a hollow shell as much as a solid. Other consumers see no mass at all.""",
+        arm(WRIST_BOX),
+        arm(wrist_inertial("0.3", "5e-4"), WRIST_BOX),
+    ),
+)
+def mass_from_geometry(loaded, profile):
+    options = mujoco_options(loaded)
+    for body in build(loaded, profile).bodies:
+        if body.joint is None:
+            continue
+        for name in body.links:
+            link = loaded.robot.links[name]
+            if not weighed_by_geometry(link, options):
+                continue
+            found = geometry_body(link)
+            weight = f"{number(found[0])} kg" if found is not None else "the mass of its meshes"
+            yield loaded.diagnostic(
+                "C107",
+                f"MuJoCo gives link '{name}' {weight}: it has no <inertial>, so its collision shapes are filled at 1000 kg/m³",
+                link.at,
+                "give the link an <inertial> with its real mass and tensor",
+                subjects=(name,),
+            )
+
+
+@check("C108", "mujoco-fixed-base", INFO, "MuJoCo welds the root link to the world.", target="mujoco")
+def fixed_base(loaded, profile):
+    """## What it does
+    With `--target mujoco`: says, once per model, that the root link is welded to the
+    world and fused into the world body, and names the links fused into their
+    moving parents (fixed joints, `fusestatic`).
+
+    ## Why is this bad?
+    `from_xml_path` adds no free joint: a mobile robot or a humanoid loaded from its
+    URDF cannot move its base, and the root's mass leaves the model. A fused link's
+    name no longer exists in the model, so code asking MuJoCo for that body fails
+    (src/xml/xml.cc sets `fusestatic` for URDF).
+
+    ## Example
+    ```xml
+    <robot name="rover">
+      <link name="chassis"><inertial><mass value="5"/><inertia ixx="1" ixy="0" ixz="0" iyy="1" iyz="0" izz="1"/></inertial></link>
+    </robot>
+    ```
+
+    ## Use instead
+    ```xml
+    <robot name="rover">
+      <link name="world"/>
+      <link name="chassis"><inertial><mass value="5"/><inertia ixx="1" ixy="0" ixz="0" iyy="1" iyz="0" izz="1"/></inertial></link>
+      <joint name="free" type="floating"><parent link="world"/><child link="chassis"/></joint>
+    </robot>
+    ```
+    """
+    root = loaded.root
+    if root is None:
+        return
+    built = build(loaded, profile)
+    fused = [link for body in built.bodies for link in body.links[1:]] + [link for link in built.dropped if link not in (root, "world")]
+    if root == "world" and not fused:
+        return
+    several = len(fused) > 1
+    also = f"{'links' if several else 'link'} {names(fused)} {'are' if several else 'is'} fused into {'their' if several else 'its'} parent body" if fused else ""
+    welds = f"MuJoCo welds root link '{root}' to the world and fuses it into the world body" if root != "world" else "In MuJoCo, "
+    yield loaded.diagnostic(
+        "C108",
+        welds + ("; " if fused and root != "world" else "") + also,
+        link_at(loaded, root),
+        "for a free base, join the root to a massless 'world' link by a floating joint; "
+        'keep fused links with <mujoco><compiler fusestatic="false"/></mujoco>',
+        subjects=(root, *fused),
+    )

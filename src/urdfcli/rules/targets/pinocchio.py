@@ -1,0 +1,86 @@
+"""Pinocchio 4.1's URDF parser (``pinocchio.buildModelFromUrdf``): src/parsers/urdf/model.cpp and
+include/pinocchio/parsers/urdf/model.hxx (the tree walk), include/pinocchio/multibody/joint/joint-mimic.hxx."""
+
+from __future__ import annotations
+
+from ..base import ERROR, WARNING, check, explain
+from .common import MIMICKED, about_joint, mimic_at, mimic_joints
+from .examples import MIMIC_GRIPPER, ONE_FINGER
+
+
+
+@check(
+    "C301", "pinocchio-ignores-mimic", WARNING, "Pinocchio ignores <mimic> unless built with mimic=True.", target="pinocchio",
+    doc=explain(
+        """With `--target pinocchio` (not `pinocchio:mimic`): finds a joint with a `<mimic>`.""",
+        """`buildModelFromUrdf(path)` reads `<mimic>` only when called with `mimic=True`
+        (src/parsers/urdf/model.cpp): by default the mimic joint is one more free degree
+        of freedom, so a gripper's second finger moves on its own and `model.nq` counts it.""",
+        MIMIC_GRIPPER,
+        ONE_FINGER,
+    ),
+)
+def ignores_mimic(loaded, profile):
+    if "mimic" in profile.variants:
+        return
+    for joint in mimic_joints(loaded):
+        yield about_joint(
+            loaded, "C301", joint,
+            f"Pinocchio makes joint '{joint.name}' a free degree of freedom: it ignores its <mimic> of '{joint.mimic.joint}' by default",
+            "build the model with pinocchio.buildModelFromUrdf(path, mimic=True) (and check it with --target pinocchio:mimic)", at=mimic_at(joint),
+        )
+
+
+@check("C302", "pinocchio-mimic-unsupported", ERROR, "Pinocchio's mimic=True rejects mimic chains and mixed joint kinds.", target="pinocchio:mimic")
+def mimic_unsupported(loaded, profile):
+    """## What it does
+    With `--target pinocchio:mimic`: finds a mimic joint whose mimicked joint itself
+    mimics another (a chain), or is of another kind (a prismatic joint mimicking a
+    revolute one; revolute and continuous count as one kind).
+
+    ## Why is this bad?
+    With `mimic=True`, Pinocchio builds each mimic joint on the joint it follows, and
+    asserts both are of one kind and the followed one is not a mimic itself
+    (joint-mimic.hxx): the model does not build.
+
+    ## Example
+    ```xml
+    <robot name="hand">
+      <link name="palm"/><link name="a"/><link name="b"/>
+      <joint name="slide" type="prismatic"><parent link="palm"/><child link="a"/><limit lower="0" upper="0.04" effort="10" velocity="0.1"/></joint>
+      <joint name="turn" type="revolute"><parent link="palm"/><child link="b"/><limit lower="0" upper="1" effort="10" velocity="1"/>
+        <mimic joint="slide"/></joint>
+    </robot>
+    ```
+
+    ## Use instead
+    ```xml
+    <robot name="hand">
+      <link name="palm"/><link name="a"/><link name="b"/>
+      <joint name="slide" type="prismatic"><parent link="palm"/><child link="a"/><limit lower="0" upper="0.04" effort="10" velocity="0.1"/></joint>
+      <joint name="slide2" type="prismatic"><parent link="palm"/><child link="b"/><limit lower="0" upper="0.04" effort="10" velocity="0.1"/>
+        <mimic joint="slide"/></joint>
+    </robot>
+    ```
+    """
+    if "mimic" not in profile.variants:
+        return
+    joints = loaded.robot.joints
+    kind = {"revolute": "revolute", "continuous": "revolute", "prismatic": "prismatic"}
+    for joint in joints.values():
+        followed = joints.get(joint.mimic.joint) if joint.mimic is not None else None
+        if followed is None or joint.type not in MIMICKED:
+            continue
+        if followed.mimic is not None:
+            why = f"'{followed.name}' is itself a mimic joint"
+        elif kind.get(followed.type or "") != kind[joint.type]:
+            why = f"it is {joint.type} and '{followed.name}' is {followed.type}"
+        else:
+            continue
+        yield loaded.diagnostic(
+            "C302",
+            f"Pinocchio (mimic=True) rejects joint '{joint.name}': {why}",
+            joint.part("mimic") or joint.at,
+            "make the joint mimic the first joint of the chain, of its own kind",
+            subjects=(joint.name, followed.name),
+        )

@@ -1,0 +1,106 @@
+"""Small models, one per consumer behaviour: a baseline arm with one change each.
+
+The baseline: ``base_link`` (1 kg, a 10 cm box) -> revolute ``j1`` -> ``link1``
+(the same) -> fixed ``tool_joint`` -> ``tool0`` (1 g frame with a small tensor).
+Each case changes one thing; tests/test_targets.py loads every case into the
+real consumers and compares their verdicts with urdfcli's.
+"""
+
+from __future__ import annotations
+
+import struct
+from pathlib import Path
+
+BOX = '<collision><geometry><box size="0.1 0.1 0.1"/></geometry></collision>'
+UNIT = 'ixx="0.01" iyy="0.01" izz="0.01" ixy="0" ixz="0" iyz="0"'
+ZERO = 'ixx="0" iyy="0" izz="0" ixy="0" ixz="0" iyz="0"'
+LIMIT = '<limit lower="-1" upper="1" effort="1" velocity="1"/>'
+AXIS = '<axis xyz="0 0 1"/>'
+
+
+def link(name: str, mass: str = "1", inertia: str = UNIT, extra: str = BOX, inertial: bool = True) -> str:
+    found = f'<inertial><mass value="{mass}"/><inertia {inertia}/></inertial>' if inertial else ""
+    return f'<link name="{name}">{found}{extra}</link>'
+
+
+def joint(name: str, parent: str, child: str, kind: str = "revolute", limit: str = LIMIT, axis: str = AXIS, extra: str = "") -> str:
+    return (f'<joint name="{name}" type="{kind}"><parent link="{parent}"/><child link="{child}"/>'
+            f'<origin xyz="0 0 0.2"/>{axis}{limit}{extra}</joint>')
+
+
+def robot(*parts: str) -> str:
+    return '<robot name="r">' + "\n".join(parts) + "</robot>\n"
+
+
+TOOL = link("tool0", "0.001", 'ixx="1e-6" iyy="1e-6" izz="1e-6" ixy="0" ixz="0" iyz="0"', extra="")
+TOOL_JOINT = joint("tool_joint", "link1", "tool0", "fixed", limit="", axis="")
+
+
+def arm(link1: str | None = None, j1: str | None = None, *more: str, base: str | None = None) -> str:
+    return robot(base or link("base_link"), link1 or link("link1"), j1 or joint("j1", "base_link", "link1"), TOOL, TOOL_JOINT, *more)
+
+
+def mesh(name: str) -> str:
+    return f'<collision><geometry><mesh filename="{name}"/></geometry></collision>'
+
+
+CASES = {
+    "baseline": arm(),
+    "zero-mass": arm(link("link1", "0", ZERO, extra="")),
+    "no-inertial-no-geometry": arm(link("link1", inertial=False, extra="")),
+    "no-inertial-box": arm(link("link1", inertial=False)),
+    "zero-tensor": arm(link("link1", inertia=ZERO)),
+    "mass-zero-with-tensor": arm(link("link1", "0")),
+    "negative-mass": arm(link("link1", "-1")),
+    "triangle": arm(link("link1", inertia='ixx="0.001" iyy="0.001" izz="0.01" ixy="0" ixz="0" iyz="0"')),
+    "not-positive-definite": arm(link("link1", inertia='ixx="0.01" iyy="0.01" izz="0.01" ixy="0.02" ixz="0" iyz="0"')),
+    "massless-middle": robot(link("base_link"), link("link1", inertial=False, extra=""), joint("j1", "base_link", "link1"),
+                             link("link2"), joint("j2", "link1", "link2")),
+    "massless-with-fixed-mass": robot(link("base_link"), link("link1", "0", ZERO, extra=""), joint("j1", "base_link", "link1"),
+                                      link("link2"), joint("j2", "link1", "link2", "fixed", limit="", axis="")),
+    "lower-above-upper": arm(j1=joint("j1", "base_link", "link1", limit='<limit lower="1" upper="-1" effort="1" velocity="1"/>')),
+    "lower-equals-upper": arm(j1=joint("j1", "base_link", "link1", limit='<limit lower="0.5" upper="0.5" effort="1" velocity="1"/>')),
+    "revolute-no-limit": arm(j1=joint("j1", "base_link", "link1", limit="")),
+    "prismatic-no-limit": arm(j1=joint("j1", "base_link", "link1", "prismatic", limit="")),
+    "continuous-with-limits": arm(j1=joint("j1", "base_link", "link1", "continuous")),
+    "continuous-effort-only": arm(j1=joint("j1", "base_link", "link1", "continuous", limit='<limit effort="1" velocity="1"/>')),
+    "mimic": arm(None, None, link("link2"), joint("j2", "link1", "link2", extra='<mimic joint="j1"/>')),
+    "floating": arm(j1=joint("j1", "base_link", "link1", "floating", limit="", axis="")),
+    "no-collision": arm(link("link1", extra="")),
+    "cylinder": arm(link("link1", extra='<collision><geometry><cylinder radius="0.05" length="0.2"/></geometry></collision>')),
+    "stl-collision": arm(link("link1", extra=mesh("part.stl"))),
+    "obj-collision": arm(link("link1", extra=mesh("part.obj"))),
+    "dae-collision": arm(link("link1", extra=mesh("part.dae"))),
+    "material-two-colours": arm(None, None, '<material name="paint"><color rgba="1 0 0 1"/></material>',
+                                base=link("base_link", extra=BOX + '<visual><geometry><box size="0.1 0.1 0.1"/></geometry>'
+                                          '<material name="paint"><color rgba="0 1 0 1"/></material></visual>')),
+    "zero-size-box": arm(link("link1", extra='<visual><geometry><box size="0.1 0 0.1"/></geometry></visual>' + BOX)),
+    "root-zero-moment": arm(base=link("base_link", inertia='ixx="0.01" iyy="0.01" izz="0" ixy="0" ixz="0" iyz="0"')),
+    "world-root": robot('<link name="world"/>', link("base_link"), joint("mount", "world", "base_link", "fixed", limit="", axis=""),
+                        link("link1"), joint("j1", "base_link", "link1"), TOOL, TOOL_JOINT),
+    "balanced-triangle": arm(link("link1", inertia='ixx="0.001" iyy="0.001" izz="0.01" ixy="0" ixz="0" iyz="0"'), None,
+                             '<mujoco><compiler balanceinertia="true"/></mujoco>'),
+}
+
+TETRAHEDRON = ((0, 0, 0), (0.05, 0, 0), (0, 0.05, 0), (0, 0, 0.05))
+FACES = ((0, 2, 1), (0, 1, 3), (0, 3, 2), (1, 2, 3))
+
+
+def write_meshes(folder: Path) -> None:
+    """part.stl (binary), part.obj and part.dae (a stand-in: only its extension is judged)."""
+    triangles = b"".join(
+        struct.pack("<12fH", 0, 0, 0, *TETRAHEDRON[a], *TETRAHEDRON[b], *TETRAHEDRON[c], 0) for a, b, c in FACES
+    )
+    (folder / "part.stl").write_bytes(b"\0" * 80 + struct.pack("<I", len(FACES)) + triangles)
+    vertices = "".join(f"v {x} {y} {z}\n" for x, y, z in TETRAHEDRON)
+    (folder / "part.obj").write_text(vertices + "".join(f"f {a + 1} {b + 1} {c + 1}\n" for a, b, c in FACES))
+    (folder / "part.dae").write_text('<?xml version="1.0"?><COLLADA xmlns="http://www.collada.org/2005/11/COLLADASchema" version="1.4.1"/>\n')
+
+
+def write_cases(folder: Path) -> dict[str, Path]:
+    write_meshes(folder)
+    paths = {}
+    for name, text in CASES.items():
+        paths[name] = folder / f"{name}.urdf"
+        paths[name].write_text(text)
+    return paths
