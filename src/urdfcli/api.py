@@ -239,7 +239,7 @@ def check_target(target: Target, mappings: dict[str, str], checks: str, session:
             loaded = Loaded(document, diagnostics=found, resolver=resolver, meshes=session.meshes)
             diagnostics = linter.configure(loaded, found, config, checks)
             return Result(path, diagnostics, None, dict(target.arguments), includes=tuple(document.includes))
-        loaded = load(path, session.inputs, resolver, arguments, vocabulary=checks == "all", meshes=session.meshes)
+        loaded = load(path, session.inputs, resolver, arguments, vocabulary=checks == "all", meshes=session.meshes, reads_meshes=checks != "check")
     except InputError as error:
         return str(error)
     except PackageError as error:

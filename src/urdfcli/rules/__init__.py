@@ -9,11 +9,11 @@ from __future__ import annotations
 from types import MappingProxyType, ModuleType
 
 from ..diagnostics import Severity
-from . import description, inertia, joints, physics, structure, style, suppression, tree
+from . import description, inertia, joints, meshes, physics, structure, style, suppression, tree
 from .base import SECTIONS, Option, Rule, UnknownRule, cleandoc, example_code, explain, sections
 from .suggestions import close_matches
 
-MODULES = (structure, tree, joints, physics, description, style, inertia, suppression)
+MODULES = (structure, tree, joints, physics, description, meshes, style, inertia, suppression)
 
 
 def _rules_of(module: ModuleType) -> list[Rule]:
