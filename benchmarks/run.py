@@ -13,7 +13,10 @@ It measures every target of "What must hold" in one run:
    ``xacro``; the same on a generated model of 1,500 macro calls;
 4. ``check`` on a generated tree of 100,000 links (each with an inertial, a
    visual and a collision) against ``check_urdf``, time and peak memory; and
-   ``check``, ``tree`` and ``lint`` on it against the 10,000-link tree.
+   ``check``, ``tree`` and ``lint`` on it against the 10,000-link tree;
+5. ``lint`` on the 69 URDFs with their meshes (``-P example-robot-data=...``, every
+   mesh read) against loading each model once with ``yourdfpy.URDF.load(...,
+   load_meshes=True)`` in one process, what a Python user would write.
 
 Models are written under ``benchmarks/generated/``. Every measurement is a
 separate process with its output discarded; the two commands of a comparison
@@ -187,14 +190,19 @@ def generate_macro_model(calls: int) -> Path:
     return path
 
 
-def corpus() -> list[Path]:
-    """The URDFs of the installed example-robot-data package (pip install -e '.[test]')."""
+def corpus_package() -> Path | None:
+    """The installed example-robot-data folder (pip install -e '.[test]'): package.xml, robots/."""
     try:
         distribution = importlib.metadata.distribution("example-robot-data")
     except importlib.metadata.PackageNotFoundError:
-        return []
-    robots = Path(distribution.locate_file("cmeel.prefix/share/example-robot-data/robots"))
-    return sorted(robots.rglob("*.urdf"))
+        return None
+    return Path(distribution.locate_file("cmeel.prefix/share/example-robot-data"))
+
+
+def corpus() -> list[Path]:
+    """The URDFs of the installed example-robot-data package."""
+    package = corpus_package()
+    return sorted((package / "robots").rglob("*.urdf")) if package is not None else []
 
 
 def xacro_fixtures(xacro: str) -> list[Path]:
@@ -262,6 +270,21 @@ def corpus_cases(rows: list[Row], check_urdf: str) -> None:
     check, lint, theirs = measure(urdfcli("check", *files), urdfcli("lint", *files), loop, runs=runs)
     compare(rows, f"check, the {len(files)} example-robot-data URDFs in one call", check, "check_urdf loop", theirs, 1.0)
     compare(rows, f"lint, the same {len(files)} URDFs (meshes absent)", lint, "check_urdf loop", theirs, 2.0)
+
+
+MESH_MEMORY_MIB = 500
+
+
+def mesh_cases(rows: list[Row]) -> None:
+    """lint reading every mesh of the corpus, against yourdfpy loading every model with its meshes."""
+    files, package = [str(p) for p in corpus()], str(corpus_package())
+    if not files:
+        return
+    runs = 1 if QUICK else 3
+    ours, theirs = measure(urdfcli("lint", "--isolated", "-P", f"example-robot-data={package}", *files), [sys.executable, str(ROOT / "benchmarks" / "yourdfpy_load.py"), package, *files], runs=runs)
+    compare(rows, f"lint, the {len(files)} URDFs with their meshes (-P)", ours, "yourdfpy.URDF.load(load_meshes=True), one process", theirs, 0.5)
+    rows[-1].target += f", peak ≤ {MESH_MEMORY_MIB} MiB"
+    rows[-1].met += f", peak {verdict(ours.mib <= MESH_MEMORY_MIB)}"
 
 
 def small_file_cases(rows: list[Row]) -> None:
@@ -355,6 +378,7 @@ def main() -> int:
     rows: list[Row] = []
     print("measuring ...", flush=True)
     corpus_cases(rows, check_urdf)
+    mesh_cases(rows)
     small_file_cases(rows)
     xacro_cases(rows, check_urdf, xacro)
     if not QUICK:
