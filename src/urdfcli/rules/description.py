@@ -325,29 +325,31 @@ def file_not_found(loaded):
         if path is None or path.exists():
             continue
         if not path.parent.is_dir():
-            missing_folders.setdefault(path.parent, []).append((at, kind, uri))
+            missing_folders.setdefault(path.parent, []).append((at, kind, uri, path))
             continue
         looked = f" (looked for {path})" if str(path) != uri else ""
-        found = loaded.diagnostic("D004", f"{kind} '{uri}' not found{looked}", at, _meant(loaded, uri, path, base))
+        found = loaded.diagnostic("D004", f"{kind} '{uri}' not found{looked}", at, _meant(loaded, uri, path, base) or "file names are case-sensitive")
         yield found.with_severity(WARNING) if kind == "texture" else found
     for folder, uses in missing_folders.items():  # a missing folder is one cause: one diagnostic
-        at, kind, uri = uses[0]
-        files = len({u for _, _, u in uses})
+        at, kind, uri, path = uses[0]
+        files = len({u for _, _, u, _ in uses})
         others = f" and {files - 1} other {'files' if files > 2 else 'file'} there" if files > 1 else ""
-        hint = "a path of another machine: put the files in a ROS package and write package://PACKAGE/..." if _absolute(uri) else None
+        hint = _meant(loaded, uri, path, base)
+        if hint is None and _absolute(uri):
+            hint = "a path of another machine: put the files in a ROS package and write package://PACKAGE/..."
         found = loaded.diagnostic("D004", f"{kind} '{uri}'{others}: folder {folder} does not exist", at, hint)
-        yield found.with_severity(WARNING) if all(kind == "texture" for _, kind, _ in uses) else found
+        yield found.with_severity(WARNING) if all(kind == "texture" for _, kind, _, _ in uses) else found
 
 
 def _absolute(uri: str) -> bool:
     return uri.startswith(("file://", "/")) or re.match(r"[A-Za-z]:[\\/]", uri) is not None
 
 
-def _meant(loaded, uri: str, path, base) -> str:
-    """The hint for a missing file: the file it probably meant, written as ``uri`` is."""
+def _meant(loaded, uri: str, path, base) -> str | None:
+    """The hint for a missing file: the file it probably meant, written as ``uri`` is (None: none)."""
     found = near_misses(path)
     if not found:
-        return "file names are case-sensitive"
+        return None
     written = uri_like(loaded, uri, found[0], base)
     if found[0].parent == path.parent and found[0].name.lower() == path.name.lower():
         return f"did you mean '{written}'? file names are case-sensitive on Linux (it loads on macOS and Windows only)"

@@ -16,7 +16,6 @@ from ..model import massprops
 from ..model.inertia import shape_bounds
 from ..model.kinematics import bodies
 from ..model.meshes import GeometryUnknown, MeshUse, mesh_uses, stat_problem, summary_of
-from ..model.numbers import format_number
 from ..model.units import PLACEHOLDER, mis_scaled, unit_verdict
 from .base import ERROR, INFO, WARNING, check
 
@@ -131,7 +130,8 @@ def path_not_portable(loaded):
             groups[(style, path.parent)].append((at, kind, uri, path))
     for (style, _), found in groups.items():
         at, kind, uri, path = found[0]
-        extra = f" and {len(found) - 1} other {'files' if len(found) > 2 else 'file'} there" if len(found) > 1 else ""
+        files = len({u for _, _, u, _ in found})
+        extra = f" and {files - 1} other {'files' if files > 2 else 'file'} there" if files > 1 else ""
         portable = _package_uri(loaded, path)
         fix = f"write {portable}" if portable else "put the files in a ROS package (a folder with a package.xml) and write package://PACKAGE/..."
         if style == "relative":
@@ -210,7 +210,7 @@ def mesh_units(loaded):
     groups = _grouped(flagged, lambda found: (found[0].path, found[0].scale, found[1].unit))
     for group in groups.values():
         use, verdict = group[0]
-        scale = " ".join(format_number(s) for s in verdict.scale)
+        scale = " ".join(f"{s:.6g}" for s in verdict.scale)
         if verdict.too_large:
             message = f"mesh '{use.name}' looks like {verdict.unit}: {verdict.size:.3g} m across on {verdict.evidence}{_others(group)}"
             hint = f'add scale="{scale}"' if use.scale == (1.0, 1.0, 1.0) else f'make its scale "{scale}"'
