@@ -47,8 +47,13 @@ def tree_lines(loaded: Loaded) -> list[str]:
     return lines
 
 
+# check_urdf never opens the files a model names: a missing or unreadable mesh is an error
+# of `urdfcli check` (its exit status says so), not a line of check_urdf's output.
+FILES_NAMED = ("D004", "F001")
+
+
 def error_lines(result: Result) -> list[str]:
-    lines = [f"Error:   {escape(d.message)}" for d in result.diagnostics if d.severity is Severity.ERROR]
+    lines = [f"Error:   {escape(d.message)}" for d in result.diagnostics if d.severity is Severity.ERROR and d.code not in FILES_NAMED]
     return lines + ["ERROR: Model Parsing the xml failed"] if lines else []
 
 
