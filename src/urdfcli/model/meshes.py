@@ -243,6 +243,21 @@ class MeshFiles:
         return self._found[uri]
 
 
+def input_folder(loaded: Loaded) -> Path | None:
+    """The folder relative paths are taken from: the input's."""
+    return loaded.document.file.parent if loaded.document.file else None
+
+
+def resolved_resources(loaded: Loaded):
+    """(at, kind, uri, path) for each mesh and texture the model names; ``path`` is None when
+    the URI cannot be resolved (a package not found, a network address)."""
+    if loaded.resolver is None:
+        return
+    base = input_folder(loaded)
+    for at, kind, uri in loaded.robot.resources:
+        yield at, kind, uri, loaded.resolver.resolve_uri(uri, base)
+
+
 class MeshUse(NamedTuple):
     """One ``<mesh>`` of a link's visual or collision, and the file it names."""
 

@@ -8,6 +8,7 @@ from typing import TYPE_CHECKING
 from ..diagnostics import Severity
 from ..model.kinematics import children_by_joint_name
 from ..model.load import Loaded
+from ..rules import REGISTRY
 from .console import Output, write
 from .escape import escape
 
@@ -47,13 +48,10 @@ def tree_lines(loaded: Loaded) -> list[str]:
     return lines
 
 
-# check_urdf never opens the files a model names: a missing or unreadable mesh is an error
-# of `urdfcli check` (its exit status says so), not a line of check_urdf's output.
-FILES_NAMED = ("D004", "F001")
-
-
 def error_lines(result: Result) -> list[str]:
-    lines = [f"Error:   {escape(d.message)}" for d in result.diagnostics if d.severity is Severity.ERROR and d.code not in FILES_NAMED]
+    # check_urdf never opens the files a model names: a missing or unreadable mesh is an
+    # error of `urdfcli check` (its exit status says so), not a line of check_urdf's output
+    lines = [f"Error:   {escape(d.message)}" for d in result.diagnostics if d.severity is Severity.ERROR and not REGISTRY[d.code].files]
     return lines + ["ERROR: Model Parsing the xml failed"] if lines else []
 
 

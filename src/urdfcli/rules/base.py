@@ -71,6 +71,7 @@ class Rule(NamedTuple):
     function: Callable[..., Iterator["Diagnostic"]] | None = None
     always: bool = False  # runs on every model read, whatever the command (the tree's structure)
     inertial_fix: bool = False  # a new <inertial> fixes what it finds (`inertia --suggest` prints one)
+    files: bool = False  # judges a file the model names (a mesh), not the model: tree, graph and check_urdf's format leave it out
 
     @property
     def defaults(self) -> dict[str, Any]:

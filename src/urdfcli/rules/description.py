@@ -6,7 +6,7 @@ import os
 import re
 
 from ..model.kinematics import bodies
-from ..model.meshes import near_misses
+from ..model.meshes import input_folder, near_misses, resolved_resources
 from ..model.vocabulary import SCHEMA
 from .base import ERROR, INFO, WARNING, check
 from .suggestions import close_matches
@@ -279,7 +279,7 @@ def _package_of(uri: str) -> str | None:
     return match.group(1) if match else None
 
 
-@check("D004", "resource-not-found", ERROR, "A mesh or texture file that does not exist.")
+@check("D004", "resource-not-found", ERROR, "A mesh or texture file that does not exist.", files=True)
 def file_not_found(loaded):
     """## What it does
     Resolves each `<mesh filename>` and `<texture filename>` (`package://`,
@@ -313,16 +313,10 @@ def file_not_found(loaded):
     </link>
     ```
     """
-    if loaded.resolver is None:
-        return
-    base = loaded.document.file.parent if loaded.document.file else None
+    base = input_folder(loaded)
     missing_folders: dict = {}
-    for at, kind, uri in loaded.robot.resources:
-        package = _package_of(uri)
-        if package is not None and loaded.resolver.find(package) is None:
-            continue  # D005
-        path = loaded.resolver.resolve_uri(uri, base)
-        if path is None or path.exists():
+    for at, kind, uri, path in resolved_resources(loaded):
+        if path is None or path.exists():  # None: a package not found (D005), a network address
             continue
         if not path.parent.is_dir():
             missing_folders.setdefault(path.parent, []).append((at, kind, uri, path))

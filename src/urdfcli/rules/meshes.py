@@ -15,7 +15,7 @@ from pathlib import Path
 from ..model import massprops
 from ..model.inertia import shape_bounds
 from ..model.kinematics import bodies
-from ..model.meshes import GeometryUnknown, MeshUse, mesh_uses, stat_problem, summary_of
+from ..model.meshes import GeometryUnknown, MeshUse, mesh_uses, resolved_resources, stat_problem, summary_of
 from ..model.units import PLACEHOLDER, mis_scaled, unit_verdict
 from .base import ERROR, INFO, WARNING, check
 
@@ -43,7 +43,7 @@ def _others(uses: list, what: str = "use") -> str:
     return f" (and {extra} other {what}{'s' if extra > 1 else ''})" if extra else ""
 
 
-@check("F001", "mesh-unreadable", ERROR, "A mesh file that is not a mesh its format can read: empty, a Git LFS pointer, truncated or undecodable.")
+@check("F001", "mesh-unreadable", ERROR, "A mesh file that is not a mesh its format can read: empty, a Git LFS pointer, truncated or undecodable.", files=True)
 def mesh_unreadable(loaded):
     """## What it does
     Flags a mesh file that exists but that no consumer can read: an empty file, a
@@ -119,14 +119,10 @@ def path_not_portable(loaded):
     </link>
     ```
     """
-    if loaded.resolver is None:
-        return
-    base = loaded.document.file.parent if loaded.document.file else None
     groups: dict = defaultdict(list)
-    for at, kind, uri in loaded.robot.resources:
+    for at, kind, uri, path in resolved_resources(loaded):
         style = _style(uri)
-        path = loaded.resolver.resolve_uri(uri, base) if style else None
-        if path is not None and path.is_file():
+        if style is not None and path is not None and path.is_file():
             groups[(style, path.parent)].append((at, kind, uri, path))
     for (style, _), found in groups.items():
         at, kind, uri, path = found[0]
@@ -396,10 +392,6 @@ def collision_mesh_open(loaded):
     ## Example
     ```xml
     <link name="arm">
-      <inertial>
-        <mass value="5"/>
-        <inertia ixx="0.0708" ixy="0" ixz="0" iyy="0.0708" iyz="0" izz="0.0083"/>
-      </inertial>
       <collision><geometry><mesh filename="package://my_robot/meshes/arm_open.stl"/></geometry></collision>
     </link>
     ```
@@ -407,10 +399,6 @@ def collision_mesh_open(loaded):
     ## Use instead
     ```xml
     <link name="arm">
-      <inertial>
-        <mass value="5"/>
-        <inertia ixx="0.0708" ixy="0" ixz="0" iyy="0.0708" iyz="0" izz="0.0083"/>
-      </inertial>
       <collision><geometry><mesh filename="package://my_robot/meshes/arm.stl"/></geometry></collision>
     </link>
     ```
