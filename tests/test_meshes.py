@@ -279,8 +279,10 @@ def test_lint_json_names_format_triangles_unit_and_size(robot):
     links += link("arm", visual=mesh("package://my_robot/meshes/arm.stl"), collision=mesh("package://my_robot/meshes/arm.stl"), mass=2.0, i=0.03)
     joint = '<joint name="j" type="fixed"><parent link="base"/><child link="arm"/><origin xyz="0 0 0.1"/></joint>'
     path = model(robot, links, joint)
-    for jobs in ("1", "2"):
-        done = run_cli("lint", "--format", "json", "--jobs", jobs, path, path)
+    other = robot / "urdf" / "other.urdf"
+    other.write_text('<robot name="o"><link name="a"/></robot>')
+    for jobs in ("1", "2"):  # results sent back from other processes keep their meshes
+        done = run_cli("lint", "--format", "json", "--jobs", jobs, path, str(other))
         facts = json.loads(done.stdout)["files"][0]["meshes"]
         base, arm = facts
         assert base["format"] == "dae" and base["triangles"] == 12 and base["unit"] == 0.001 and base["size"] == [0.4, 0.3, 0.1]

@@ -231,7 +231,10 @@ def collision_visual_mismatch(loaded):
     alone: placeholder shapes of 2 cm or less in every direction (a dot that keeps
     Gazebo from dropping a link, or a collision-only link), meshes in a wrong unit
     (F003), shapes that cannot be measured (a missing mesh), and simplified
-    collisions within 2.5 times of the visual.
+    collisions within 2.5 times of the visual (the published Panda's reach 2.4).
+    Displaced means farther than the visual is large too: Baxter carries part of
+    a rolling link's collision on its parent, 1.3 times the collision's own size
+    from the visual, on purpose.
 
     ## Why is this bad?
     The simulator and the planner see the collision, people see the visual. A
