@@ -6,9 +6,10 @@ mesh in a wrong unit out."""
 from __future__ import annotations
 
 import json
+import re
 
 import pytest
-from conftest import lint_file, run_cli
+from conftest import example_robot_data, lint_file, run_cli
 from support.meshes import LFS_POINTER, box, fine, open_box, write
 
 from urdfcli.api import Target, check_target
@@ -150,12 +151,12 @@ def test_the_same_mesh_as_a_visual_is_reported_too(robot):
 
 @pytest.mark.parametrize("factor, unit", [(100, "centimetres"), (25.4, "inches")])
 def test_centimetres_and_inches_are_told_apart(robot, factor, unit):
-    # a 0.4 m arm of 2 kg hung 5 cm from its base: mass and joint find the mesh too large, the
-    # tensor rules out the units that would make it too small to hold it
+    # a 0.4 m arm of 2 kg hung 5 cm from its base, its collision a box of the right size:
+    # its visual mesh, exported in another unit, is too large for each, and fits all once converted
     write(robot / "meshes" / "arm.stl", box((0.1, 0.1, 0.4)), scale=factor)
-    links = link("base", collision='<geometry><box size="0.3 0.3 0.1"/></geometry>') + link("arm", visual=mesh("package://my_robot/meshes/arm.stl"), mass=2.0, i=0.03)
+    arm = link("arm", visual=mesh("package://my_robot/meshes/arm.stl"), collision='<geometry><box size="0.1 0.1 0.4"/></geometry>', mass=2.0, i=0.03)
     joints = '<joint name="shoulder" type="fixed"><parent link="base"/><child link="arm"/><origin xyz="0 0 0.05"/></joint>'
-    [warning] = found(model(robot, links, joints), "F003")
+    [warning] = found(model(robot, link("base") + arm, joints), "F003")
     assert f"looks like {unit}" in warning.message
     assert warning.hint == f'add scale="{1 / factor:.6g} {1 / factor:.6g} {1 / factor:.6g}"'
 
@@ -192,7 +193,7 @@ def test_a_collada_unit_is_applied_before_judging(robot):
 def test_a_scale_applied_to_a_mesh_already_in_metres_is_too_small(robot):
     write(robot / "meshes" / "base.stl", box((0.4, 0.3, 0.1)))
     [warning] = found(model(robot, link("base", visual=mesh("package://my_robot/meshes/base.stl", "0.001 0.001 0.001"), **BODY)), "F003")
-    assert warning.message == "mesh 'base.stl' is 1e+03 times too small: 0.0004 m across on a 5 kg link"
+    assert warning.message == "mesh 'base.stl' is 1000 times too small: 0.0004 m across on a 5 kg link"
     assert warning.hint.endswith('make its scale "1 1 1"')
     write(robot / "meshes" / "declared.dae", box((0.4, 0.3, 0.1)), scale=1000, unit=0.001)  # the unit and a scale: converted twice
     [warning] = found(model(robot, link("base", visual=mesh("package://my_robot/meshes/declared.dae", "0.001 0.001 0.001"), **BODY)), "F003")
@@ -291,3 +292,36 @@ def test_lint_json_names_format_triangles_unit_and_size(robot):
         assert [use["looks_like"] for use in arm["uses"]] == ["millimetres", "millimetres"]
     checked = json.loads(run_cli("check", "--format", "json", path).stdout)["files"][0]
     assert "meshes" not in checked  # check reads no mesh
+
+
+# -- on the published models: none in metres reported, millimetres found -----------------
+
+
+def as_if_in_millimetres(text: str) -> str:
+    """A URDF whose every mesh is a thousand times larger, as if exported in millimetres
+    and used without a scale: each ``<mesh>`` given (or its scale multiplied by) 1000."""
+
+    def thousandfold(match: re.Match) -> str:
+        attributes = match.group(1)
+        scale = re.search(r'scale\s*=\s*"([^"]*)"', attributes)
+        if scale is None:
+            return f'<mesh{attributes} scale="1000 1000 1000"/>'
+        values = " ".join(str(float(v) * 1000) for v in scale.group(1).split())
+        return f"<mesh{attributes[:scale.start()]}scale=\"{values}\"{attributes[scale.end():]}/>"
+
+    return re.sub(r"<mesh\b([^>]*?)/>", thousandfold, text)
+
+
+def test_published_meshes_read_in_millimetres_are_found_and_named(tmp_path):
+    package = example_robot_data()
+    models = sorted((package / "robots").rglob("*.urdf"))[::3]  # a third of the 69, every mesh of each
+    written = []
+    for index, path in enumerate(models):
+        written.append(tmp_path / f"{index}_{path.name}")
+        written[-1].write_text(as_if_in_millimetres(path.read_text()))
+    done = run_cli("lint", "--isolated", "--format", "json", "-P", f"example-robot-data={package}", *map(str, written))
+    uses = [use for file in json.loads(done.stdout)["files"] for mesh in file.get("meshes", []) if mesh["size"] for use in mesh["uses"]]
+    named = [use["looks_like"] for use in uses if use["looks_like"]]
+    assert len(uses) > 300
+    assert len(named) >= 0.9 * len(uses)  # measured on all 69 models: 95 %
+    assert named.count("millimetres") >= 0.98 * len(named)  # measured: 99.4 %

@@ -167,8 +167,8 @@ def mesh_units(loaded):
     spheres; each gives a band of plausible sizes, set from the 69 published
     example-robot-data models with a wide margin (see `urdfcli.model.units`). It is
     reported only when every piece of evidence finds the mesh too large (the mass
-    alone when it would be a thousand times lighter than air), the mesh divided by
-    the unit fits every band and still holds the declared inertia. A mesh that fits
+    alone when it would be a thousand times lighter than air) and the mesh divided
+    by the unit fits every band. A mesh that fits
     any band is never reported; other meshes are no evidence (exported together,
     they share a unit). Too small is said only when a `scale` or `<unit>` shrank it
     that much (a scale of 0.001 on a mesh already in metres). The inertia rules and
@@ -211,7 +211,7 @@ def mesh_units(loaded):
             message = f"mesh '{use.name}' looks like {verdict.unit}: {verdict.size:.3g} m across on {verdict.evidence}{_others(group)}"
             hint = f'add scale="{scale}"' if use.scale == (1.0, 1.0, 1.0) else f'make its scale "{scale}"'
         else:
-            message = f"mesh '{use.name}' is {1 / verdict.factor:.3g} times too small: {verdict.size:.3g} m across on {verdict.evidence}{_others(group)}"
+            message = f"mesh '{use.name}' is {1 / verdict.factor:.4g} times too small: {verdict.size:.3g} m across on {verdict.evidence}{_others(group)}"
             hint = f'its scale or <unit> converts from {verdict.unit} a mesh already in metres: make its scale "{scale}"'
         yield loaded.diagnostic("F003", message, use.shape.geometry.at, hint, subjects=tuple(dict.fromkeys(u.link.name for u, _ in group)))
 
