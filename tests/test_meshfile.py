@@ -113,7 +113,7 @@ def test_watertightness_agrees_with_trimesh_on_published_meshes():
         ("cut.stl", binary_stl(box().vertices, box().faces)[:-70], "truncated", "header says 12 triangles"),
         ("cut_ascii.stl", ascii_stl(box().vertices, box().faces)[:300].encode(), "truncated", "without 'endsolid'"),
         ("cut.obj", b"v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\nf 1 3 4\n", "truncated", "names a vertex it does not have (3 vertices)"),
-        ("words.obj", b"v 0 0 zero\nf 1 2 3\n", "malformed", "not numbers"),
+        ("words.obj", b"v 0 0 zero\nf 1 2 3\n", "malformed", "not a number"),
         ("bad.dae", b"<COLLADA><asset></COLLADA>", "malformed", "not well-formed XML (line 1)"),
         ("other.dae", b"<robot name='r'/>", "malformed", "not COLLADA: its root is <robot>"),
         ("tiny.stl", b"GARBAGE", "malformed", "not an STL"),

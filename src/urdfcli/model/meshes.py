@@ -109,10 +109,11 @@ def summarise(kind: str, found: Triangles) -> MeshSummary:
     faces = found.faces
     used = numpy.zeros(len(vertices), dtype=bool)
     used[faces.reshape(-1)] = True
-    points = vertices[used]
+    points = vertices if used.all() else vertices[used]
     if not numpy.isfinite(points).all():
         raise MeshError("malformed", "some vertex coordinates are not finite numbers")
-    low, high = points.min(axis=0), points.max(axis=0)
+    low, high = points.min(axis=0).astype(float), points.max(axis=0).astype(float)
+    del used, points
     kept, corners, closed = _welded(vertices, faces, low, high)
     solid = _solid(vertices, kept, (low + high) / 2) if closed else _hull(vertices[corners])
     return MeshSummary(kind, len(faces), _vector(low), _vector(high), found.unit, closed, solid)
@@ -132,20 +133,26 @@ def _welded(vertices, faces, low, high):
     extent = float((high - low).max()) or 1.0
     # corners within WELD of the extent are one (trimesh welds within 1e-8 m): cells with their edges
     # off the round numbers coordinates often are, each hashed into one 64-bit key
-    grid = numpy.floor((vertices - low) * (1 / (WELD * extent)) + 0.3719).astype(numpy.uint64)
-    keys = (grid[:, 0] * numpy.uint64(0x9E3779B97F4A7C15)) ^ (grid[:, 1] * numpy.uint64(0xC2B2AE3D27D4EB4F)) ^ (grid[:, 2] * numpy.uint64(0x165667B19E3779F9))
+    keys = numpy.zeros(len(vertices), dtype=numpy.uint64)
+    for axis, mixer in enumerate((0x9E3779B97F4A7C15, 0xC2B2AE3D27D4EB4F, 0x165667B19E3779F9)):  # a column at a time: bounded memory
+        cell = numpy.floor((vertices[:, axis] - low[axis]) * (1 / (WELD * extent)) + 0.3719).astype(numpy.uint64)
+        keys ^= cell * numpy.uint64(mixer)
     _, first, same = numpy.unique(keys, return_index=True, return_inverse=True)
+    del keys  # (a large mesh's arrays are let go as soon as they are used: the peak is what counts)
+    count = len(first)
     welded = same.reshape(-1)[faces]
+    del same
     a, b, c = welded[:, 0], welded[:, 1], welded[:, 2]
     kept = (a != b) & (b != c) & (a != c)
     if not kept.any():
         return faces[kept], first, False
     a, b, c = a[kept], b[kept], c[kept]
+    del welded
     # each edge as its two ends, lower first, and a last bit for the way it runs: a closed
     # surface has every edge twice, once each way, and no third time
-    count = int(same.max()) + 1
-    ends = [(numpy.minimum(x, y) * count + numpy.maximum(x, y)) * 2 + (x < y) for x, y in ((a, b), (b, c), (c, a))]
-    edges = numpy.sort(numpy.concatenate(ends))
+    edges = numpy.concatenate([(numpy.minimum(x, y) * count + numpy.maximum(x, y)) * 2 + (x < y) for x, y in ((a, b), (b, c), (c, a))])
+    del a, b, c
+    edges.sort()
     pairs = edges[0::2] // 2
     closed = bool(
         len(edges) % 2 == 0 and (pairs == edges[1::2] // 2).all() and (edges[0::2] % 2 == 0).all() and (edges[1::2] % 2 == 1).all()

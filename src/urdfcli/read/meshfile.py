@@ -56,7 +56,7 @@ class TooLarge(Exception):
 
 
 class Triangles(NamedTuple):
-    vertices: numpy.ndarray  # (n, 3) float64, in the file's units
+    vertices: numpy.ndarray  # (n, 3) floats (float32 for a binary STL), in the file's units
     faces: numpy.ndarray  # (m, 3) int64 indices into vertices
     unit: float | None  # metres per unit the file declares (COLLADA <unit meter>), None when it declares none
 
@@ -117,7 +117,7 @@ def read_stl(data: bytes) -> Triangles:
             raise MeshError("malformed", "the binary STL holds no triangles (its header says 0)")
         record = numpy.dtype([("normal", "<f4", 3), ("corners", "<f4", (3, 3)), ("attribute", "<u2")])
         corners = numpy.frombuffer(data, record, count, 84)["corners"]
-        return _soup(corners.reshape(-1, 3).astype(numpy.float64))
+        return _soup(numpy.ascontiguousarray(corners).reshape(-1, 3))  # float32 as written: half the memory of float64
     if data.lstrip()[:5].lower() == b"solid":
         return _read_ascii_stl(data)
     if count is not None:
@@ -128,31 +128,39 @@ def read_stl(data: bytes) -> Triangles:
     raise MeshError("malformed", f"the file is not an STL: {len(data)} bytes, shorter than a binary STL's 84-byte header, and no 'solid' line")
 
 
-_STL_VERTEX = re.compile(rb"^\s*vertex\s+(\S+)\s+(\S+)\s+(\S+)", re.MULTILINE)
+_STL_VERTEX = re.compile(rb"^[ \t]*vertex[ \t]+([^\r\n]*)", re.MULTILINE)
 
 
 def _read_ascii_stl(data: bytes) -> Triangles:
-    import numpy
-
-    found = _STL_VERTEX.findall(data)
-    if not found:
+    lines = _STL_VERTEX.findall(data)
+    if not lines:
         raise MeshError("malformed", "the ASCII STL holds no 'vertex' lines")
-    try:
-        corners = numpy.array(found, dtype=numpy.float64)
-    except ValueError:
-        bad = next(v for v in (x for row in found for x in row) if not _is_number(v))
-        raise MeshError("malformed", f"the ASCII STL has a vertex coordinate that is not a number: {bad[:40]!r}") from None
-    if len(corners) % 3 or not data.rstrip().splitlines()[-1].lstrip().lower().startswith(b"endsolid"):
+    corners = numbers(b" ".join(lines), "the ASCII STL's vertices").reshape(-1, 3) if _holds(lines, 3) else None
+    if corners is None or len(corners) != len(lines):
+        raise MeshError("malformed", "the ASCII STL has a 'vertex' line that is not three numbers")
+    if len(corners) % 3 or not data.rstrip().rsplit(b"\n", 1)[-1].lstrip().lower().startswith(b"endsolid"):
         raise MeshError("truncated", f"the ASCII STL is truncated: it ends after {len(corners)} vertices, without 'endsolid'")
     return _soup(corners)
 
 
-def _is_number(text: bytes) -> bool:
+def _holds(lines: list[bytes], count: int) -> bool:
+    """Whether the lines hold ``count`` numbers in all (a quick test of their words)."""
+    return sum(len(line.split()) for line in lines) == count * len(lines)
+
+
+def numbers(text: bytes | str, what: str, dtype=float):
+    """The numbers of a text, parsed by numpy's C loop (no list of words: a large mesh's
+    text would take several times its size as Python strings). Raises MeshError."""
+    import warnings
+
+    import numpy
+
     try:
-        float(text)
-    except ValueError:
-        return False
-    return True
+        with warnings.catch_warnings():
+            warnings.simplefilter("error", DeprecationWarning)  # numpy stops, and warns, at a word that is no number
+            return numpy.fromstring(text, dtype=numpy.float64 if dtype is float else numpy.int64, sep=" ")
+    except (ValueError, DeprecationWarning):
+        raise MeshError("malformed", f"{what} hold something that is not a number") from None
 
 
 def _soup(corners: numpy.ndarray) -> Triangles:
@@ -163,8 +171,7 @@ def _soup(corners: numpy.ndarray) -> Triangles:
 
 
 # -- OBJ -------------------------------------------------------------------------------
-_OBJ_VERTEX = re.compile(rb"^[ \t]*v[ \t]+(\S+)[ \t]+(\S+)[ \t]+(\S+)", re.MULTILINE)
-_OBJ_VERTEX_LINE = re.compile(rb"^[ \t]*v[ \t]", re.MULTILINE)
+_OBJ_VERTEX = re.compile(rb"^[ \t]*v[ \t]+([^\r\n]*)", re.MULTILINE)
 _OBJ_FACE = re.compile(rb"^[ \t]*f[ \t]+([^\r\n]*)", re.MULTILINE)
 _OBJ_SLASHES = re.compile(rb"/\S*")
 
@@ -174,23 +181,18 @@ def read_obj(data: bytes) -> Triangles:
     indices as the format defines them); every other line is left alone."""
     import numpy
 
-    try:
-        vertices = numpy.array(_OBJ_VERTEX.findall(data), dtype=numpy.float64).reshape(-1, 3)
-    except ValueError:
-        raise MeshError("malformed", "the OBJ file has a 'v' line whose coordinates are not numbers") from None
-    faces = _OBJ_FACE.findall(data)
+    vertices = _obj_vertices(_OBJ_VERTEX.findall(data))
+    faces = [_OBJ_SLASHES.sub(b"", face) for face in _OBJ_FACE.findall(data)]
     if not faces:
         raise MeshError("malformed", f"the OBJ file has no faces ('f' lines; {len(vertices)} vertices)")
-    corners = [_OBJ_SLASHES.sub(b"", face).split() for face in faces]
-    counts = numpy.array([len(c) for c in corners])
+    counts = numpy.array([len(face.split()) for face in faces])
     if (counts < 3).any():
         raise MeshError("malformed", f"the OBJ file has a face with fewer than 3 vertices: 'f {faces[int(numpy.argmax(counts < 3))].decode(errors='replace')}'")
-    try:
-        indices = numpy.array([i for c in corners for i in c], dtype=numpy.int64)
-    except ValueError:
-        raise MeshError("malformed", "the OBJ file has an 'f' line whose vertices are not numbers") from None
+    indices = numbers(b" ".join(faces), "the OBJ file's faces", int)
+    if len(indices) != counts.sum():
+        raise MeshError("malformed", "the OBJ file has an 'f' line whose vertices are not whole numbers")
     if (indices < 0).any():  # a negative index counts back from the vertices written before its face
-        written = numpy.array([m.start() for m in _OBJ_VERTEX_LINE.finditer(data)])
+        written = numpy.array([m.start() for m in _OBJ_VERTEX.finditer(data)])
         before = numpy.searchsorted(written, [m.start() for m in _OBJ_FACE.finditer(data)])
         indices = numpy.where(indices < 0, numpy.repeat(before, counts) + indices + 1, indices)
     indices -= 1
@@ -202,6 +204,18 @@ def read_obj(data: bytes) -> Triangles:
             f"the OBJ file is truncated or broken: face 'f {face.decode(errors='replace')}' names a vertex it does not have ({len(vertices)} vertices)",
         )
     return Triangles(vertices, _fans(indices, counts), None)
+
+
+def _obj_vertices(lines: list[bytes]):
+    """The x y z of each ``v`` line (a fourth weight or colours after them left out)."""
+    import numpy
+
+    if _holds(lines, 3):  # the usual case, parsed in one go
+        return numbers(b" ".join(lines), "the OBJ file's vertices").reshape(-1, 3)
+    try:
+        return numpy.array([line.split()[:3] for line in lines], dtype=numpy.float64).reshape(-1, 3)
+    except ValueError:
+        raise MeshError("malformed", "the OBJ file has a 'v' line whose coordinates are not three numbers") from None
 
 
 def _fans(indices: numpy.ndarray, counts: numpy.ndarray) -> numpy.ndarray:
@@ -308,19 +322,7 @@ class _Collada:
         return matrix
 
     def numbers(self, text: str | None, what: str, dtype=float):
-        """The numbers of an element's text (integers parsed by numpy's C loop, the faster one for them)."""
-        import warnings
-
-        import numpy
-
-        try:
-            if dtype is float:
-                return numpy.array((text or "").split(), dtype=numpy.float64)
-            with warnings.catch_warnings():
-                warnings.simplefilter("error", DeprecationWarning)  # numpy warns, and stops, at a word that is no number
-                return numpy.fromstring(text or "", dtype=numpy.int64, sep=" ")
-        except (ValueError, DeprecationWarning):
-            raise MeshError("malformed", f"a COLLADA {what} holds something that is not a number") from None
+        return numbers(text or "", f"a COLLADA {what}", dtype)
 
     def positions(self, source_id: str):
         """A source's points (x, y, z), read once however many primitives use them."""
