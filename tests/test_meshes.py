@@ -6,6 +6,7 @@ mesh in a wrong unit out."""
 from __future__ import annotations
 
 import json
+import os
 import re
 
 import pytest
@@ -325,3 +326,10 @@ def test_published_meshes_read_in_millimetres_are_found_and_named(tmp_path):
     assert len(uses) > 300
     assert len(named) >= 0.9 * len(uses)  # measured on all 69 models: 95 %
     assert named.count("millimetres") >= 0.98 * len(named)  # measured: 99.4 %
+
+
+def test_a_mesh_that_is_a_pipe_is_not_waited_for(robot):
+    os.mkfifo(robot / "meshes" / "arm.stl")  # reading it would wait for a writer for ever
+    path = model(robot, link("arm", mesh("package://my_robot/meshes/arm.stl"), mesh("package://my_robot/meshes/arm.stl"), mass=1.0))
+    done = run_cli("lint", "--format", "json", path)
+    assert done.returncode in (0, 1) and json.loads(done.stdout)["files"][0]["meshes"][0]["triangles"] is None

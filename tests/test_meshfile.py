@@ -151,3 +151,17 @@ def test_a_file_is_read_once_per_session_and_again_when_it_changes(tmp_path):
     assert summaries.summary(path) is first and summaries.reads == 1
     write(path, box((0.2, 0.2, 0.2)), kind="ascii")
     assert numpy.allclose(summaries.summary(path).size, (0.2, 0.2, 0.2)) and summaries.reads == 2
+
+
+def test_hostile_files_are_not_expanded_nor_waited_for(tmp_path):
+    entities = tmp_path / "bomb.dae"
+    entities.write_text('<?xml version="1.0"?><!DOCTYPE c [<!ENTITY a "aaaaaaaaaa"><!ENTITY b "&a;&a;&a;&a;">]><COLLADA>&b;</COLLADA>')
+    assert summarise_file(entities).problem.kind == "malformed"  # entities are refused, never expanded
+    loop = write(tmp_path / "loop.dae", box())
+    loop.write_text(loop.read_text().replace('<instance_geometry url="#part-mesh" name="part"/>', '<instance_node url="#part"/>'))
+    assert "nests nodes more than 64 deep" in summarise_file(loop).problem.message
+    large = tmp_path / "large.stl"
+    with large.open("wb") as file:  # sparse: 65 MiB that cost nothing to write
+        file.truncate(65 << 20)
+    found = summarise_file(large)
+    assert found.problem is None and found.skipped == "not read: 65 MiB, larger than urdfcli reads"
