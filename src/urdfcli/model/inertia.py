@@ -160,6 +160,9 @@ def shape_bounds(loaded: Loaded, shape: Shape) -> tuple[Vector, Vector]:
         else:
             half = (geometry.radius,) * 3
         low, high = tuple(-h for h in half), half
+    if not any(shape.origin.rpy):  # not turned: moved only (most shapes; a tenth of the time)
+        xyz = shape.origin.xyz
+        return tuple(v + d for v, d in zip(low, xyz)), tuple(v + d for v, d in zip(high, xyz))  # type: ignore[return-value]
     pose = massprops.transform(shape.origin.xyz, shape.origin.rpy)
     corners = [massprops.place(pose, (x, y, z)) for x in (low[0], high[0]) for y in (low[1], high[1]) for z in (low[2], high[2])]
     return tuple(min(c[i] for c in corners) for i in range(3)), tuple(max(c[i] for c in corners) for i in range(3))  # type: ignore[return-value]

@@ -38,6 +38,7 @@ import math
 from typing import NamedTuple
 
 from . import massprops
+from .kinematics import children_by_joint_name
 from .load import Loaded
 from .meshes import MeshSummary, MeshUse, mesh_uses, scaled_bounds, summary_of
 from .robot import Link
@@ -145,7 +146,7 @@ def evidence(loaded: Loaded, link: Link, sides: list[float]) -> list[Band]:
         size = max(sides)
         bands.append(Band(size * (density / DENSITY[1]) ** (1 / 3), size * (density / DENSITY[0]) ** (1 / 3),
                           size * (density / TYPICAL_DENSITY) ** (1 / 3), f"a {massprops.number(link.inertial.mass)} kg link"))
-    children = [j for j in loaded.robot.joints.values() if j.parent == link.name and j.child != link.name]
+    children = [j for j in children_by_joint_name(loaded.robot).get(link.name, ()) if j.child != link.name]
     farthest = max(children, key=lambda j: math.hypot(*j.origin.xyz), default=None)
     if farthest is not None and math.hypot(*farthest.origin.xyz) > NEAR:
         d = math.hypot(*farthest.origin.xyz)

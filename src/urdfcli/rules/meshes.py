@@ -259,11 +259,11 @@ def collision_visual_mismatch(loaded):
     ```
     """
     skipped = mis_scaled(loaded)
+    boxes = {name: (_link_box(loaded, link.visuals, skipped), _link_box(loaded, link.collisions, skipped)) for name, link in loaded.robot.links.items()}
     displaced = set()
     for link in loaded.robot.links.values():
-        pose = {link.name: massprops.ORIGIN}
-        visual, collision = _box(loaded, [link.name], pose, "visuals", skipped), _box(loaded, [link.name], pose, "collisions", skipped)
-        if visual is None or collision is None:
+        visual, collision = boxes[link.name]
+        if not visual or not collision:
             continue
         apart = math.dist(_centre(visual), _centre(collision))
         if apart > max(_diagonal(visual), _diagonal(collision)):
@@ -279,9 +279,12 @@ def collision_visual_mismatch(loaded):
         if body.top in seen or displaced.intersection(body.links):
             continue
         seen.add(body.top)
-        poses = _body_poses(loaded, body.links)
-        visual, collision = _box(loaded, body.links, poses, "visuals", skipped), _box(loaded, body.links, poses, "collisions", skipped)
-        if visual is None or collision is None:
+        if len(body.links) == 1:
+            visual, collision = boxes[body.top]
+        else:
+            poses = _body_poses(loaded, body.links)
+            visual, collision = (_placed([(boxes[name][role], poses[name]) for name in body.links]) for role in (0, 1))
+        if not visual or not collision:
             continue
         ratio = _diagonal(collision) / _diagonal(visual)
         if ratio > SIZE_RATIO or ratio < 1 / SIZE_RATIO:
@@ -296,24 +299,36 @@ def collision_visual_mismatch(loaded):
             )
 
 
-def _box(loaded, names, poses, role: str, skipped: set[int]):
-    """The box (body-top frame) holding the shapes of ``role`` of the links ``names``, placeholders
-    and mis-scaled meshes left out; None when there is none, or one cannot be measured."""
-    corners = []
-    for name in names:
-        for shape in getattr(loaded.robot.links[name], role):
-            if shape.geometry is None or shape.at in skipped:
-                continue
-            try:
-                low, high = shape_bounds(loaded, shape)
-            except GeometryUnknown:
-                return None
-            if max(h - lo for lo, h in zip(low, high)) <= PLACEHOLDER:
-                continue
-            corners += [massprops.place(poses[name], (x, y, z)) for x in (low[0], high[0]) for y in (low[1], high[1]) for z in (low[2], high[2])]
+UNMEASURED = ()  # a box that cannot be known: some shape cannot be measured (a missing mesh)
+
+
+def _link_box(loaded, shapes, skipped: set[int]):
+    """The box (link frame) holding the shapes, placeholders and mis-scaled meshes left out:
+    None when none is left, UNMEASURED when one cannot be measured."""
+    lows, highs = [], []
+    for shape in shapes:
+        if shape.geometry is None or shape.at in skipped:
+            continue
+        try:
+            low, high = shape_bounds(loaded, shape)
+        except GeometryUnknown:
+            return UNMEASURED
+        if max(h - lo for lo, h in zip(low, high)) > PLACEHOLDER:
+            lows.append(low)
+            highs.append(high)
+    if not lows:
+        return None
+    return tuple(map(min, zip(*lows))), tuple(map(max, zip(*highs)))
+
+
+def _placed(boxes):
+    """The box (body-top frame) holding each (link box, link pose): UNMEASURED if one is."""
+    if any(box == UNMEASURED for box, _ in boxes):
+        return UNMEASURED
+    corners = [massprops.place(pose, (x, y, z)) for (low, high), pose in ((b, p) for b, p in boxes if b) for x in (low[0], high[0]) for y in (low[1], high[1]) for z in (low[2], high[2])]
     if not corners:
         return None
-    return tuple(min(c[i] for c in corners) for i in range(3)), tuple(max(c[i] for c in corners) for i in range(3))
+    return tuple(map(min, zip(*corners))), tuple(map(max, zip(*corners)))
 
 
 def _centre(box) -> tuple[float, ...]:
