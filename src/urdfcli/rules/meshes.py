@@ -160,19 +160,30 @@ def _package_uri(loaded, path: Path) -> str | None:
 def mesh_units(loaded):
     """## What it does
     Flags a mesh whose size, after its `scale` and COLLADA's `<unit meter>` (which
-    RViz and Gazebo apply), is about 1000, 100 or 25.4 times off the size the rest of
-    its link implies, and names the likely unit and the `scale` that fixes it. The
-    evidence is the link's mass in the mesh's bounding box (20 g or more), the
-    offsets of its child joints and of its own joint, and its boxes, cylinders and
-    spheres; each gives a band of plausible sizes, set from the 69 published
-    example-robot-data models with a wide margin (see `urdfcli.model.units`). It is
-    reported only when every piece of evidence finds the mesh too large (the mass
-    alone when it would be a thousand times lighter than air) and the mesh divided
-    by the unit fits every band. A mesh that fits
-    any band is never reported; other meshes are no evidence (exported together,
-    they share a unit). Too small is said only when a `scale` or `<unit>` shrank it
-    that much (a scale of 0.001 on a mesh already in metres). The inertia rules and
-    `inertia --suggest` leave such a mesh out.
+    RViz and Gazebo apply: assimp's `ColladaLoader::InternReadFile` scales the root
+    node by it, gz-common's `ColladaLoader::Load` the mesh), is about 1000, 100 or
+    25.4 times off the size the rest of its link implies, and names the likely unit
+    and the `scale` that fixes it. Each piece of evidence gives a band for the
+    mesh's largest side, set from the 2,141 mesh uses of the 69 published
+    example-robot-data models (all in metres) with a margin of three to ten:
+
+    - the link's mass (20 g or more) in the mesh's bounding box: 1 to 1,000,000 kg/m³
+      (the corpus spans 10 to 50,000);
+    - the farthest child joint, `d` from the link's origin: 0.05 d to 50 d (corpus 0.16 d to 17 d);
+    - the link's own joint, `p` from its parent: 0.02 p to 100 p (corpus 0.13 p to 35 p);
+    - its boxes, cylinders and spheres (larger than 2 cm): 1/20 to 20 times their size.
+
+    It is reported only when every band finds the mesh too large (the mass alone
+    when the mesh would make the link a thousand times lighter than air, else two
+    pieces of evidence) and the mesh divided by the unit fits every band; the unit
+    nearest the middle of the bands is named. A mesh that fits any band is never
+    reported. Other meshes are no evidence (exported together, they share a unit),
+    nor is the declared tensor (too often wrong: I009). Too small is said only when
+    a `scale` or `<unit>` shrank the mesh that much (a scale of 0.001 on a mesh
+    already in metres). The inertia rules and `inertia --suggest` leave such a mesh
+    out. On the corpus read as if in millimetres, 95 % of the meshes are found,
+    99.4 % of those named millimetres; inches are seldom found (the bands are wider
+    than 25.4 times).
 
     ## Why is this bad?
     CAD tools export millimetres by default. Used as metres, the mesh is a thousand
@@ -397,10 +408,12 @@ def collision_mesh_heavy(loaded):
 def collision_mesh_open(loaded):
     """## What it does
     Notes (info) a collision mesh that is not watertight (an edge not shared by
-    exactly two faces wound opposite ways, corners welded by position) on a link
-    whose mass properties come from it: a link with mass (urdfcli's inertia
-    estimate, and PyBullet, which recomputes inertia from collision shapes) or a link
-    without `<inertial>` (MuJoCo then infers its mass from the collision geoms).
+    exactly two faces wound opposite ways, corners within 2e-8 of the mesh's size
+    welded, as trimesh's `is_watertight` after `merge_vertices`) on a link whose
+    mass properties come from it: a link with mass (urdfcli's inertia estimate,
+    and PyBullet, which recomputes inertia from collision shapes unless
+    `URDF_USE_INERTIA_FROM_FILE`) or a link without `<inertial>` (MuJoCo's URDF
+    reader then infers its mass from the collision geoms, `inertiafromgeom`).
 
     ## Why is this bad?
     An open surface has no inside: its volume, and every inertia computed from it,
