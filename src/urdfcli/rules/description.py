@@ -9,6 +9,7 @@ from ..model.kinematics import bodies
 from ..model.meshes import input_folder, near_misses, resolved_resources
 from ..model.vocabulary import SCHEMA
 from .base import ERROR, INFO, WARNING, check
+from .meshes import others_there
 from .suggestions import close_matches
 
 # Gazebo plugin parameters that name a joint or a link (ROS 1 and ROS 2 spellings).
@@ -326,8 +327,7 @@ def file_not_found(loaded):
         yield found.with_severity(WARNING) if kind == "texture" else found
     for folder, uses in missing_folders.items():  # a missing folder is one cause: one diagnostic
         at, kind, uri, path = uses[0]
-        files = len({u for _, _, u, _ in uses})
-        others = f" and {files - 1} other {'files' if files > 2 else 'file'} there" if files > 1 else ""
+        others = others_there(u for _, _, u, _ in uses)
         hint = _meant(loaded, uri, path, base)
         if hint is None and _absolute(uri):
             hint = "a path of another machine: put the files in a ROS package and write package://PACKAGE/..."

@@ -38,6 +38,12 @@ def _grouped(uses, key):
     return groups
 
 
+def others_there(uris) -> str:
+    """' and N other files there' for the URIs of one folder besides the first ('' for one)."""
+    extra = len(set(uris)) - 1
+    return f" and {extra} other {'files' if extra > 1 else 'file'} there" if extra else ""
+
+
 def _others(uses: list, what: str = "use") -> str:
     extra = len(uses) - 1
     return f" (and {extra} other {what}{'s' if extra > 1 else ''})" if extra else ""
@@ -126,8 +132,7 @@ def path_not_portable(loaded):
             groups[(style, path.parent)].append((at, kind, uri, path))
     for (style, _), found in groups.items():
         at, kind, uri, path = found[0]
-        files = len({u for _, _, u, _ in found})
-        extra = f" and {files - 1} other {'files' if files > 2 else 'file'} there" if files > 1 else ""
+        extra = others_there(u for _, _, u, _ in found)
         portable = _package_uri(loaded, path)
         fix = f"write {portable}" if portable else "put the files in a ROS package (a folder with a package.xml) and write package://PACKAGE/..."
         if style == "relative":
