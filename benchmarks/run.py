@@ -17,7 +17,10 @@ It measures every target of "What must hold" in one run:
    ``check``, ``tree`` and ``lint`` on it against the 10,000-link tree;
 5. ``urdfcli lsp``: the time from an edit of a 50-link xacro model (a
    ``didChange`` sent) to its diagnostics published, over a series of edits
-   made as keystrokes are, one at a time.
+   made as keystrokes are, one at a time;
+6. ``lint`` on the 69 URDFs with their meshes (``-P example-robot-data=...``, every
+   mesh read) against loading each model once with ``yourdfpy.URDF.load(...,
+   load_meshes=True)`` in one process, what a Python user would write.
 
 Models are written under ``benchmarks/generated/``. Every measurement is a
 separate process with its output discarded; the two commands of a comparison
@@ -191,14 +194,19 @@ def generate_macro_model(calls: int) -> Path:
     return path
 
 
-def corpus() -> list[Path]:
-    """The URDFs of the installed example-robot-data package (pip install -e '.[test]')."""
+def corpus_package() -> Path | None:
+    """The installed example-robot-data folder (pip install -e '.[test]'): package.xml, robots/."""
     try:
         distribution = importlib.metadata.distribution("example-robot-data")
     except importlib.metadata.PackageNotFoundError:
-        return []
-    robots = Path(distribution.locate_file("cmeel.prefix/share/example-robot-data/robots"))
-    return sorted(robots.rglob("*.urdf"))
+        return None
+    return Path(distribution.locate_file("cmeel.prefix/share/example-robot-data"))
+
+
+def corpus() -> list[Path]:
+    """The URDFs of the installed example-robot-data package."""
+    package = corpus_package()
+    return sorted((package / "robots").rglob("*.urdf")) if package is not None else []
 
 
 def xacro_fixtures(xacro: str) -> list[Path]:
@@ -268,6 +276,21 @@ def corpus_cases(rows: list[Row], check_urdf: str) -> None:
     compare(rows, f"lint, the same {len(files)} URDFs (meshes absent)", lint, "check_urdf loop", theirs, 2.0)
     targeted, plain = measure(urdfcli("check", "--target", "mujoco", *files), urdfcli("check", *files), runs=runs)
     compare(rows, f"check --target mujoco, the same {len(files)} URDFs", targeted, "plain check", plain, 1.2)
+
+
+MESH_MEMORY_MIB = 500
+
+
+def mesh_cases(rows: list[Row]) -> None:
+    """lint reading every mesh of the corpus, against yourdfpy loading every model with its meshes."""
+    files, package = [str(p) for p in corpus()], str(corpus_package())
+    if not files:
+        return
+    runs = 1 if QUICK else 3
+    ours, theirs = measure(urdfcli("lint", "--isolated", "-P", f"example-robot-data={package}", *files), [sys.executable, str(ROOT / "benchmarks" / "yourdfpy_load.py"), package, *files], runs=runs)
+    compare(rows, f"lint, the {len(files)} URDFs with their meshes (-P)", ours, "yourdfpy.URDF.load(load_meshes=True), one process", theirs, 0.5)
+    rows[-1].target += f", peak ≤ {MESH_MEMORY_MIB} MiB"
+    rows[-1].met += f", peak {verdict(ours.mib <= MESH_MEMORY_MIB)}"
 
 
 def small_file_cases(rows: list[Row]) -> None:
@@ -448,6 +471,7 @@ def main() -> int:
     rows: list[Row] = []
     print("measuring ...", flush=True)
     corpus_cases(rows, check_urdf)
+    mesh_cases(rows)
     small_file_cases(rows)
     xacro_cases(rows, check_urdf, xacro)
     editor_cases(rows)

@@ -7,6 +7,8 @@ import textwrap
 
 import pytest
 from conftest import lint_file, run_cli
+from support.meshes import box
+from support.meshes import write as write_mesh
 
 from urdfcli.project.config import Config, ConfigError, Configurations, parse
 from urdfcli.rules import REGISTRY
@@ -145,7 +147,7 @@ def test_rule_options_change_what_the_style_rules_accept(tmp_path):
 
 def test_package_paths_are_relative_to_the_config(tmp_path):
     write(tmp_path, "vendor/arm_pkg/package.xml", "<package><name>arm_pkg</name></package>")
-    write(tmp_path, "vendor/arm_pkg/meshes/arm.stl", "solid a\nendsolid a\n")
+    write_mesh(tmp_path / "vendor/arm_pkg/meshes/arm.stl", box())
     model = write(tmp_path, "urdf/robot.urdf", '<robot name="r"><link name="a"><visual><geometry><mesh filename="package://arm_pkg/meshes/arm.stl"/></geometry></visual></link></robot>')
     assert "D005" in codes(model)
     write(tmp_path, "urdfcli.toml", 'package-paths = ["vendor"]\n')

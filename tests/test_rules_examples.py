@@ -1,8 +1,9 @@
 """Every rule's documented Example is flagged with its code; its Use instead is not.
 
 The examples in the documentation are the test table: each is written into a
-small ROS package (``my_robot``, with ``meshes/arm.stl`` and ``urdf/arm.xacro``)
-and linted with every rule selected.
+small ROS package (``my_robot``, with ``urdf/arm.xacro`` and real meshes: ``meshes/arm.stl``,
+a 0.1 x 0.1 x 0.4 m box, and its variants from tests/support/meshes.py) and linted with
+every rule selected.
 """
 
 from __future__ import annotations
@@ -11,6 +12,7 @@ import re
 
 import pytest
 from conftest import lint_file
+from support.meshes import example_package
 
 from urdfcli.model.targets import profile
 from urdfcli.project.config import Config
@@ -48,7 +50,7 @@ def package(tmp_path):
     (root / "meshes").mkdir(parents=True)
     (root / "urdf").mkdir()
     (root / "package.xml").write_text('<package format="2"><name>my_robot</name></package>\n')
-    (root / "meshes" / "arm.stl").write_text("solid arm\nendsolid arm\n")
+    example_package(root)
     (root / "urdf" / "arm.xacro").write_text('<robot xmlns:xacro="http://www.ros.org/wiki/xacro"/>\n')
     return root
 

@@ -165,7 +165,7 @@ def test_a_report_redirected_to_a_file_holds_the_diagnostics(tmp_path, command):
     report = tmp_path / "report.txt"
     with report.open("wb") as stream:
         done = subprocess.run([sys.executable, "-m", "urdfcli", command, str(BROKEN)], stdout=stream, stderr=subprocess.PIPE)
-    assert done.returncode == (1 if command == "lint" else 0)  # warnings fail lint only
+    assert done.returncode == 1  # warnings fail lint; the crane's meshes, of another machine, fail check too
     written = report.read_text()
     if command == "lint":
         assert "I00" in written and "file checked:" in written

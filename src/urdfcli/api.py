@@ -17,12 +17,15 @@ from __future__ import annotations
 
 import os
 from collections.abc import Callable, Iterable
+from functools import partial
 from pathlib import Path
 from typing import NamedTuple
 
 from .diagnostics import Diagnostic
 from .model import massprops
 from .model.load import Loaded, load
+from .model.meshes import mesh_facts
+from .model.units import unit_verdict
 from .project import linter
 from .project.config import Config, ConfigError
 from .project.workspace import Target, assemble, model_targets, models_below, plan, unchecked_library, xacro_sources
@@ -220,7 +223,7 @@ def check_target(target: Target, mappings: dict[str, str], checks: str, session:
             loaded.sources = xacro_sources(document, session.index, session.expander.global_names)
             diagnostics = linter.lint(loaded, config, checks)
             return Result(path, diagnostics, None, dict(target.arguments), includes=tuple(document.includes))
-        loaded = load(path, session.inputs, resolver, arguments, vocabulary=checks == "all", meshes=session.meshes)
+        loaded = load(path, session.inputs, resolver, arguments, vocabulary=checks == "all", meshes=session.meshes, reads_meshes=checks != "check")
     except InputError as error:
         return str(error)
     except PackageError as error:
@@ -230,7 +233,8 @@ def check_target(target: Target, mappings: dict[str, str], checks: str, session:
     if document.missing_argument is not None:
         loaded.diagnostics = [needs_argument(d, document.missing_argument, path) if d.code == "X003" else d for d in loaded.diagnostics]
     diagnostics = linter.lint(loaded, config, checks)
-    return Result(path, diagnostics, loaded, dict(target.arguments), includes=tuple(document.includes), needs_argument=document.missing_argument)
+    meshes = tuple(mesh_facts(loaded, partial(unit_verdict, loaded))) if checks == "all" and loaded.modelled else ()
+    return Result(path, diagnostics, loaded, dict(target.arguments), includes=tuple(document.includes), needs_argument=document.missing_argument, meshes=meshes)
 
 
 def audit(result: Result, session: Session, tolerance: float = massprops.TOLERANCE, density: float | None = None):

@@ -16,6 +16,7 @@ from ..report.result import Result
 from ..report.targets import build_dict, joint_notes, link_notes
 from ..report.targets import summary as target_summary
 from ..report.tree import cut, summarise, text_lines, tree_json, tree_rows
+from ..rules import REGISTRY
 from ..rules.suggestions import close_matches
 from ..session import Session
 from .common import (
@@ -117,8 +118,9 @@ def load_model(path: str, mappings: dict[str, str], run: Session) -> Result:
 
 
 def report_errors(result: Result, output: Output, run: Session) -> bool:
-    """Print the model's errors on stderr as `check` prints them; whether there were any."""
-    errors = result.errors
+    """Print the model's errors on stderr as `check` prints them; whether there were any.
+    A missing or unreadable mesh is no error of the tree: it is left to `check`."""
+    errors = [d for d in result.errors if not REGISTRY[d.code].files]
     write(output.err, (line for d in errors for line in diagnostic_lines(d, run.sources)))
     loaded = result.loaded
     return bool(errors) or loaded is None or not loaded.modelled

@@ -21,6 +21,7 @@ from .massprops import Matrix, Vector
 from .meshes import GeometryUnknown, mesh_properties
 from .poses import link_poses
 from .robot import Link, Shape
+from .units import mis_scaled
 
 TOLERANCE = massprops.TOLERANCE
 
@@ -98,6 +99,8 @@ def _implied(loaded: Loaded, link: Link, density: float | None) -> Implied:
         return Implied(None, "no collision or visual geometry")
     names = ", ".join(s.geometry.kind for s in shapes)
     source = f"{kind} {names}" if len(shapes) == 1 else f"{kind} shapes ({names})"
+    if _mis_scaled(loaded, shapes):
+        return Implied(None, f"a {kind} mesh is in a wrong unit (F003)", shapes=shapes)
     try:
         parts = [shape_part(loaded, shape) for shape in shapes]
     except GeometryUnknown as error:
@@ -157,6 +160,9 @@ def shape_bounds(loaded: Loaded, shape: Shape) -> tuple[Vector, Vector]:
         else:
             half = (geometry.radius,) * 3
         low, high = tuple(-h for h in half), half
+    if not any(shape.origin.rpy):  # not turned: moved only (most shapes; a tenth of the time)
+        xyz = shape.origin.xyz
+        return tuple(v + d for v, d in zip(low, xyz)), tuple(v + d for v, d in zip(high, xyz))  # type: ignore[return-value]
     pose = massprops.transform(shape.origin.xyz, shape.origin.rpy)
     corners = [massprops.place(pose, (x, y, z)) for x in (low[0], high[0]) for y in (low[1], high[1]) for z in (low[2], high[2])]
     return tuple(min(c[i] for c in corners) for i in range(3)), tuple(max(c[i] for c in corners) for i in range(3))  # type: ignore[return-value]
@@ -168,7 +174,7 @@ def extent(loaded: Loaded, link: Link, shapes=None) -> tuple[Vector, Vector] | N
     if shapes is None:
         shapes = (*link.visuals, *link.collisions)
     shapes = [s for s in shapes if s.geometry is not None]
-    if not shapes:
+    if not shapes or _mis_scaled(loaded, shapes):
         return None
     try:
         boxes = [shape_bounds(loaded, shape) for shape in shapes]
@@ -178,6 +184,11 @@ def extent(loaded: Loaded, link: Link, shapes=None) -> tuple[Vector, Vector] | N
         tuple(min(b[0][i] for b in boxes) for i in range(3)),  # type: ignore[return-value]
         tuple(max(b[1][i] for b in boxes) for i in range(3)),
     )
+
+
+def _mis_scaled(loaded: Loaded, shapes) -> bool:
+    """Whether a shape is a mesh in a wrong unit (F003 reports it; its volume and size prove nothing)."""
+    return any(s.geometry.kind == "mesh" for s in shapes) and any(s.at in mis_scaled(loaded) for s in shapes)
 
 
 # -- comparison ------------------------------------------------------------------------

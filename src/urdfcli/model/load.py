@@ -28,8 +28,9 @@ if TYPE_CHECKING:
 class Loaded:
     """A document, the robot read from it (None when unreadable, ``robot.at`` None
     when its root is not ``<robot>``), what reading and expanding it found, and
-    what the rules need to look further: the package resolver of its run (meshes)
-    and the session's mesh summaries."""
+    what the rules need to look further: the package resolver of its run (meshes),
+    the session's mesh summaries, and whether this run reads mesh files at all
+    (``check`` does not: it judges what a ``stat`` shows)."""
 
     def __init__(
         self,
@@ -38,12 +39,14 @@ class Loaded:
         diagnostics: list[Diagnostic] | None = None,
         resolver: PackageResolver | None = None,
         meshes: MeshSummaries | None = None,
+        reads_meshes: bool = True,
     ) -> None:
         self.document = document
         self.robot = robot
         self.diagnostics = diagnostics if diagnostics is not None else []
         self.resolver = resolver if resolver is not None else PackageResolver((), document.file)
         self.meshes = meshes if meshes is not None else MeshSummaries()
+        self.reads_meshes = reads_meshes
         self.derived: dict = {}  # worked out from the rest, once
         self.sources: XacroSources | None = None  # the xacro files behind it, for the source rules (set by the caller)
 
@@ -108,11 +111,13 @@ def load(
     vocabulary: bool = False,
     meshes: MeshSummaries | None = None,
     force_xacro: bool = False,
+    reads_meshes: bool = True,
 ) -> Loaded:
     """Read one input and its robot. With ``vocabulary``, markup URDF does not define
-    is classified too (for the description rules). Raises InputError."""
+    is classified too (for the description rules); without ``reads_meshes``, the rules
+    open no mesh file. Raises InputError."""
     document, diagnostics = read_document(path, inputs, resolver, mappings, force_xacro)
-    loaded = Loaded(document, diagnostics=diagnostics, resolver=resolver, meshes=meshes)
+    loaded = Loaded(document, diagnostics=diagnostics, resolver=resolver, meshes=meshes, reads_meshes=reads_meshes)
     if not document.readable:
         return loaded
     try:

@@ -3,11 +3,13 @@
 
 from __future__ import annotations
 
+import contextlib
+import warnings
+
 from . import massprops
 from .kinematics import walk
 from .load import Loaded
 from .massprops import Transform
-from .meshes import quiet_libraries
 from .robot import Joint
 
 
@@ -57,3 +59,22 @@ def kinematic_scene(name: str, root: str, joints: list[Joint]):
     links = [yourdfpy.Link(name=root)] + [yourdfpy.Link(name=joint.child) for joint in joints]
     with quiet_libraries():
         return yourdfpy.URDF(yourdfpy.Robot(name=name, links=links, joints=[joint_of(j) for j in joints]), load_meshes=False)
+
+
+@contextlib.contextmanager
+def quiet_libraries():
+    """yourdfpy and trimesh log warnings to stderr (and yourdfpy calls a deprecated trimesh
+    function); urdfcli reports the problems itself."""
+    import logging  # only where a pose is worked out
+
+    loggers = [logging.getLogger(name) for name in ("yourdfpy", "trimesh")]
+    levels = [logger.level for logger in loggers]
+    for logger in loggers:
+        logger.setLevel(logging.CRITICAL)
+    try:
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore", DeprecationWarning)
+            yield
+    finally:
+        for logger, level in zip(loggers, levels):
+            logger.setLevel(level)

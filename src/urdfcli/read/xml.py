@@ -51,17 +51,18 @@ class XmlError(ValueError):
         self.code = code
 
 
-def parse(data: bytes, as_written: bool = False) -> Element:
+def parse(data: bytes, as_written: bool = False, huge: bool = False) -> Element:
     """The root element of ``data``; raises XmlError with a line on any problem.
 
     By default the tree holds elements only: the white space between elements
     (a fifth of the memory of a large model), comments and processing
     instructions are dropped. ``as_written`` keeps them all, for xacro, which
-    prints them."""
+    prints them. ``huge`` lifts libxml2's limit of 10 MB on one text node, which
+    a COLLADA mesh's coordinates exceed (entities stay refused)."""
     if not data or data.isspace():  # (strip() would copy a large document)
         raise XmlError("the document is empty", 1, 1)
     dropped = not as_written
-    options = dict(_PARSER_OPTIONS, remove_blank_text=dropped, remove_comments=dropped, remove_pis=dropped)
+    options = dict(_PARSER_OPTIONS, remove_blank_text=dropped, remove_comments=dropped, remove_pis=dropped, huge_tree=huge)
     try:
         try:
             root = etree.fromstring(data, etree.XMLParser(**options))

@@ -26,6 +26,8 @@ def file_dict(result: Result) -> dict:
         entry["notes"] = list(result.library.notes)
     if result.arguments:  # a model run with an argument set from [tool.urdfcli] models
         entry["arguments"] = result.arguments
+    if result.meshes:  # lint: each mesh file as read (format, triangles, unit, size...)
+        entry["meshes"] = list(result.meshes)
     return entry
 
 

@@ -28,7 +28,7 @@ class Result:
     listed in ``[tool.urdfcli] models``. ``loaded`` (the document and robot read)
     is None for a library, an unreadable input, and a result sent back from
     another process (``robot_name`` is kept). ``audit`` is the mass-property
-    audit of ``urdfcli inertia``.
+    audit of ``urdfcli inertia``; ``meshes`` what ``lint`` read of each mesh file.
     """
 
     def __init__(
@@ -40,6 +40,7 @@ class Result:
         library: Library | None = None,
         includes: tuple[str, ...] = (),
         needs_argument: str | None = None,
+        meshes: tuple[dict, ...] = (),
     ) -> None:
         self.path = path
         self.diagnostics = diagnostics
@@ -48,6 +49,7 @@ class Result:
         self.library = library
         self.includes = includes  # every file the xacro expansion read
         self.needs_argument = needs_argument  # a xacro argument the model needs and was not given
+        self.meshes = meshes  # what lint read of each mesh file (model.meshes.mesh_facts), for JSON
         robot = loaded.robot if loaded is not None else None
         self.robot_name: str | None = robot.name if robot is not None else None
         self.audit: Any = None
@@ -96,7 +98,7 @@ class Result:
 
     def detached(self) -> Result:
         """The same result without the model read (to send to another process)."""
-        result = Result(self.path, self.diagnostics, None, self.arguments, self.library, self.includes, self.needs_argument)
+        result = Result(self.path, self.diagnostics, None, self.arguments, self.library, self.includes, self.needs_argument, self.meshes)
         result.robot_name = self.robot_name
         return result
 

@@ -72,6 +72,7 @@ class Rule(NamedTuple):
     always: bool = False  # runs on every model read, whatever the command (the tree's structure)
     inertial_fix: bool = False  # a new <inertial> fixes what it finds (`inertia --suggest` prints one)
     sources: bool = False  # judges the xacro sources (``loaded.sources``), so runs even when no robot was read
+    files: bool = False  # judges a file the model names (a mesh), not the model: tree, graph and check_urdf's format leave it out
     target: str | None = None  # a consumer's rule (``mujoco``, or the profile its examples use, ``pinocchio:mimic``): runs only for --target
 
     @property

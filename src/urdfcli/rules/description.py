@@ -2,12 +2,15 @@
 
 from __future__ import annotations
 
+import os
 import re
 
 from ..model.kinematics import bodies
+from ..model.meshes import input_folder, near_misses, resolved_resources
 from ..model.vocabulary import SCHEMA
 from ..read.packages import cmake_project
 from .base import ERROR, INFO, WARNING, check
+from .meshes import others_there
 from .suggestions import close_matches
 
 # Gazebo plugin parameters that name a joint or a link (ROS 1 and ROS 2 spellings).
@@ -278,18 +281,25 @@ def _package_of(uri: str) -> str | None:
     return match.group(1) if match else None
 
 
-@check("D004", "resource-not-found", WARNING, "A mesh or texture file that does not exist.", in_check=False)
+@check("D004", "resource-not-found", ERROR, "A mesh or texture file that does not exist.", files=True)
 def file_not_found(loaded):
     """## What it does
     Resolves each `<mesh filename>` and `<texture filename>` (`package://`,
     `file://`, absolute or relative paths; never a network address) and flags
-    a file that does not exist. Relative paths are taken from the input's folder.
-    Files in a folder that does not exist at all (an absolute path from another
-    machine) are one diagnostic per folder.
+    a file that does not exist: an error for a mesh, a warning for a texture.
+    Relative paths are taken from the input's folder. Files in a folder that
+    does not exist at all (an absolute path from another machine) are one
+    diagnostic per folder. Where a file differs only in case or extension (it
+    loads on macOS and Windows, not on Linux), or has the name in a `meshes/`
+    folder beside a folder above it, the hint names it. `check` reports it too:
+    whether a file exists is a `stat`, no mesh is opened. A package that
+    cannot be found is D005's.
 
     ## Why is this bad?
-    RViz, Gazebo and MoveIt show nothing, or refuse to load the robot, when a
-    mesh is missing; collision checking silently loses the shape.
+    RViz shows the link without it and logs an error, MuJoCo, PyBullet and
+    Drake refuse to load the robot, and MoveIt and Gazebo lose the collision
+    shape: the model cannot be used as written. A missing texture only loses
+    the picture.
 
     ## Example
     ```xml
@@ -305,25 +315,54 @@ def file_not_found(loaded):
     </link>
     ```
     """
-    if loaded.resolver is None:
-        return
-    base = loaded.document.file.parent if loaded.document.file else None
+    base = input_folder(loaded)
     missing_folders: dict = {}
-    for at, kind, uri in loaded.robot.resources:
-        package = _package_of(uri)
-        if package is not None and loaded.resolver.find(package) is None:
-            continue  # D005
-        path = loaded.resolver.resolve_uri(uri, base)
-        if path is not None and not path.exists():
-            if path.parent.is_dir():
-                looked = f" (looked for {path})" if str(path) != uri else ""
-                yield loaded.diagnostic("D004", f"{kind} '{uri}' not found{looked}", at, "file names are case-sensitive")
-            else:
-                missing_folders.setdefault(path.parent, []).append((at, kind, uri))
+    for at, kind, uri, path in resolved_resources(loaded):
+        if path is None or path.exists():  # None: a package not found (D005), a network address
+            continue
+        if not path.parent.is_dir():
+            missing_folders.setdefault(path.parent, []).append((at, kind, uri, path))
+            continue
+        looked = f" (looked for {path})" if str(path) != uri else ""
+        found = loaded.diagnostic("D004", f"{kind} '{uri}' not found{looked}", at, _meant(loaded, uri, path, base) or "file names are case-sensitive")
+        yield found.with_severity(WARNING) if kind == "texture" else found
     for folder, uses in missing_folders.items():  # a missing folder is one cause: one diagnostic
-        at, kind, uri = uses[0]
-        others = f" and {len(uses) - 1} other {'files' if len(uses) > 2 else 'file'} there" if len(uses) > 1 else ""
-        yield loaded.diagnostic("D004", f"{kind} '{uri}'{others}: folder {folder} does not exist", at, None)
+        at, kind, uri, path = uses[0]
+        others = others_there(u for _, _, u, _ in uses)
+        hint = _meant(loaded, uri, path, base)
+        if hint is None and _absolute(uri):
+            hint = "a path of another machine: put the files in a ROS package and write package://PACKAGE/..."
+        found = loaded.diagnostic("D004", f"{kind} '{uri}'{others}: folder {folder} does not exist", at, hint)
+        yield found.with_severity(WARNING) if all(kind == "texture" for _, kind, _, _ in uses) else found
+
+
+def _absolute(uri: str) -> bool:
+    return uri.startswith(("file://", "/")) or re.match(r"[A-Za-z]:[\\/]", uri) is not None
+
+
+def _meant(loaded, uri: str, path, base) -> str | None:
+    """The hint for a missing file: the file it probably meant, written as ``uri`` is (None: none)."""
+    found = near_misses(path)
+    if not found:
+        return None
+    written = uri_like(loaded, uri, found[0], base)
+    if found[0].parent == path.parent and found[0].name.lower() == path.name.lower():
+        return f"did you mean '{written}'? file names are case-sensitive on Linux (it loads on macOS and Windows only)"
+    return f"did you mean '{written}'?"
+
+
+def uri_like(loaded, uri: str, path, base) -> str:
+    """``path`` written the way ``uri`` is: package://, file://, or a path from the input's folder."""
+    package = _package_of(uri)
+    if package:
+        folder = loaded.resolver.find(package)
+        if folder is not None and path.is_relative_to(folder):
+            return f"package://{package}/{path.relative_to(folder).as_posix()}"
+    if uri.startswith("file://"):
+        return f"file://{path}"
+    if not _absolute(uri) and base is not None:
+        return os.path.relpath(path, base)
+    return str(path)
 
 
 @check("D005", "package-uri-not-found", WARNING, "A `package://` URI names a package that cannot be found.", in_check=False)
