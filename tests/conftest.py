@@ -125,5 +125,9 @@ def audited(path, **options):
 
 
 def has_errors(path) -> bool:
-    """Whether `urdfcli check` finds an error in one file (its exit code is then 1)."""
-    return bool(load(path).errors)
+    """Whether `urdfcli tree` and `graph` report an error in one file (their exit code is
+    then 1): check's errors, apart from a missing or unreadable mesh, which is no error of
+    the model's structure."""
+    from urdfcli.rules import REGISTRY
+
+    return any(not REGISTRY[d.code].files for d in load(path).errors)

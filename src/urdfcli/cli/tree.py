@@ -59,9 +59,9 @@ def tree(
     parents, or a loop) is shown again, marked, and not followed. The summary
     covers the whole tree below the start link, also what --max-depth hides.
 
-    Exit 0; 1 when the model has errors, the ones `check` reports (printed on
-    stderr; the tree is still shown when there is one); 2 when the input
-    cannot be read.
+    Exit 0; 1 when the model has errors, the ones `check` reports apart from a
+    missing or unreadable mesh (printed on stderr; the tree is still shown when
+    there is one); 2 when the input cannot be read.
     """
     output_format = choose(output_format, ("text", "json"))
     paths, mappings = split_inputs(inputs)
