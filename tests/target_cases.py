@@ -69,6 +69,7 @@ CASES = {
     "no-collision": arm(link("link1", extra="")),
     "cylinder": arm(link("link1", extra='<collision><geometry><cylinder radius="0.05" length="0.2"/></geometry></collision>')),
     "stl-collision": arm(link("link1", extra=mesh("part.stl"))),
+    "ascii-stl-collision": arm(link("link1", extra=mesh("part_ascii.stl"))),
     "obj-collision": arm(link("link1", extra=mesh("part.obj"))),
     "dae-collision": arm(link("link1", extra=mesh("part.dae"))),
     "material-two-colours": arm(None, None, '<material name="paint"><color rgba="1 0 0 1"/></material>',
@@ -87,11 +88,16 @@ FACES = ((0, 2, 1), (0, 1, 3), (0, 3, 2), (1, 2, 3))
 
 
 def write_meshes(folder: Path) -> None:
-    """part.stl (binary), part.obj and part.dae (a stand-in: only its extension is judged)."""
+    """part.stl (binary), part_ascii.stl, part.obj and part.dae (a stand-in: only its extension is judged)."""
     triangles = b"".join(
         struct.pack("<12fH", 0, 0, 0, *TETRAHEDRON[a], *TETRAHEDRON[b], *TETRAHEDRON[c], 0) for a, b, c in FACES
     )
     (folder / "part.stl").write_bytes(b"\0" * 80 + struct.pack("<I", len(FACES)) + triangles)
+    facets = "".join(
+        "facet normal 0 0 0\nouter loop\n" + "".join("vertex {} {} {}\n".format(*TETRAHEDRON[i]) for i in face) + "endloop\nendfacet\n"
+        for face in FACES
+    )
+    (folder / "part_ascii.stl").write_text(f"solid part\n{facets}endsolid part\n")
     vertices = "".join(f"v {x} {y} {z}\n" for x, y, z in TETRAHEDRON)
     (folder / "part.obj").write_text(vertices + "".join(f"f {a + 1} {b + 1} {c + 1}\n" for a, b, c in FACES))
     (folder / "part.dae").write_text('<?xml version="1.0"?><COLLADA xmlns="http://www.collada.org/2005/11/COLLADASchema" version="1.4.1"/>\n')

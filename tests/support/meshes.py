@@ -115,6 +115,7 @@ def example_package(root: Path) -> Path:
     meshes = root / "meshes"
     write(meshes / "arm.stl", box())
     write(meshes / "arm_mm.stl", box(), scale=1000)
+    write(meshes / "arm_ascii.stl", box(), "ascii")
     write(meshes / "arm_open.stl", open_box())
     write(meshes / "arm_fine.stl", fine())
     (meshes / "arm_lfs.stl").write_text(LFS_POINTER)

@@ -92,7 +92,7 @@ def read_mesh(path: Path) -> Triangles:
     if found is not None:
         raise found
     if size > MAX_BYTES:
-        raise TooLarge(size, _stl_header_count(path) if kind == "stl" else None)
+        raise TooLarge(size, _binary_count(stl_header(path)) if kind == "stl" else None)
     if kind in THROUGH_TRIMESH:
         return _through_trimesh(path, kind)
     data = path.read_bytes()
@@ -100,10 +100,29 @@ def read_mesh(path: Path) -> Triangles:
 
 
 # -- STL -------------------------------------------------------------------------------
-def _stl_header_count(path: Path) -> int | None:
+class StlHeader(NamedTuple):
+    """What a ``stat`` and the first 84 bytes of an STL file say."""
+
+    size: int  # bytes
+    triangles: int | None  # the count a binary STL's header holds; None when the file is shorter than the header
+    solid: bool  # it starts with 'solid', as an ASCII STL does (and some binary headers)
+
+    @property
+    def binary(self) -> bool:
+        """A binary STL: the file is as long as its header's count says."""
+        return self.triangles is not None and self.size == 84 + 50 * self.triangles
+
+
+def stl_header(path: Path) -> StlHeader:
+    """Reads 84 bytes. Raises OSError."""
     with open(path, "rb") as file:
         header = file.read(84)
-    return int.from_bytes(header[80:84], "little") if len(header) == 84 and not header.startswith(b"solid") else None
+    triangles = int.from_bytes(header[80:84], "little") if len(header) == 84 else None
+    return StlHeader(os.stat(path).st_size, triangles, header.startswith(b"solid"))
+
+
+def _binary_count(header: StlHeader) -> int | None:
+    return header.triangles if header.triangles is not None and not header.solid else None
 
 
 def read_stl(data: bytes) -> Triangles:

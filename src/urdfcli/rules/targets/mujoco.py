@@ -5,12 +5,15 @@ src/user/user_model.cc and user_objects.cc."""
 from __future__ import annotations
 
 from ...model import massprops
+from ...model.meshes import mesh_uses
 from ...model.targets import MJMINVAL, build, geometry_body, mesh_extension, mujoco_options, weighed_by_geometry
 from ..base import ERROR, INFO, WARNING, check, explain
 from .common import BOUNDED, inertial_at, joints_of, limit_at, link_at, names, number
+from ...read.meshfile import stl_header
 from .examples import INVERTED_LIMITS, ORDERED_LIMITS, TRIANGLE_BROKEN, TRIANGLE_KEPT, WRIST_BOX, arm, meshed, wrist_inertial
 
 DECODED = (".stl", ".obj", ".msh")  # the mesh files MuJoCo 4.0 decodes without a plugin
+STL_TRIANGLES = 200_000  # the most MuJoCo's STL decoder takes (src/user/user_mesh.cc)
 
 
 @check(
@@ -184,6 +187,52 @@ def package_uri(loaded, profile):
             loaded, "C105", meshes, "package://", "it does not resolve",
             "give MuJoCo a copy with paths relative to the model (`urdfcli expand` then replace package://PKG/ by the package's path), or set <mujoco><compiler meshdir=.../></mujoco>",
         )
+
+
+@check(
+    "C109", "mujoco-stl-decoder", ERROR, "MuJoCo reads only binary STL files of at most 200,000 triangles.", target="mujoco",
+    doc=explain(
+        """With `--target mujoco`: finds a collision mesh (and a visual one when the model
+        sets `discardvisual="false"`) whose `.stl` file is not a binary STL (an ASCII STL,
+        or a file shorter or longer than its header's triangle count says), or holds more
+        than 200,000 triangles. Reads the file's size and its first 84 bytes, as MuJoCo
+        does before decoding; a file that cannot be found is left to D004.""",
+        """MuJoCo refuses to load the model: "number of faces should be between 1 and
+        200000 in STL file; perhaps this is an ASCII file?" (src/user/user_mesh.cc).
+        CAD exports and older ROS packages often write ASCII STL, which RViz, Gazebo
+        and PyBullet read.""",
+        meshed("../meshes/arm_ascii.stl"),
+        meshed("../meshes/arm.stl"),
+    ),
+)
+def stl_decoder(loaded, profile):
+    discardvisual = mujoco_options(loaded).discardvisual
+    found: dict[str, list] = {}  # problem -> the links and meshes: said once per problem
+    for use in mesh_uses(loaded):
+        if (discardvisual and use.role == "visual") or mesh_extension(use.uri) != ".stl" or use.path is None or not use.path.is_file():
+            continue
+        try:
+            header = stl_header(use.path)
+        except OSError:
+            continue
+        problem = _stl_problem(header)
+        if problem is not None:
+            found.setdefault(problem, []).append((use.link.name, use.shape.geometry))
+    for (why, hint), meshes in found.items():
+        yield _once(loaded, "C109", meshes, "such", why, hint)
+
+
+def _stl_problem(header) -> tuple[str, str] | None:
+    """Why MuJoCo's STL decoder refuses a file, and the fix; None when it reads it."""
+    if header.binary and 1 <= header.triangles <= STL_TRIANGLES:
+        return None
+    if header.binary:
+        return (f"its STL decoder takes at most {STL_TRIANGLES:,} triangles per file, exceeded by",
+                "decimate the mesh (a collision mesh needs a few thousand triangles, or use a convex hull)")
+    if header.solid:
+        return ("it reads only binary STL, not the ASCII STL",
+                "convert the file to binary STL (for example: trimesh.load(path).export(path), or MeshLab)")
+    return ("it reads only binary STL whose size matches its header, unlike", "re-export the mesh as binary STL")
 
 
 @check(
