@@ -271,6 +271,18 @@ def test_an_open_collision_mesh_where_its_volume_is_needed(robot):
     assert found(model(robot, link("arm", collision=mesh(uri), mass=2.0)), "F006") == []
 
 
+def test_the_open_collision_meshes_of_a_model_are_one_note(robot):
+    write(robot / "meshes" / "open.stl", open_box())
+    write(robot / "meshes" / "open_too.stl", open_box((0.1, 0.1, 0.3)))
+    links = link("arm", collision=mesh("package://my_robot/meshes/open.stl"), mass=2.0) + link(
+        "hand", collision=mesh("package://my_robot/meshes/open_too.stl"), mass=1.0
+    )
+    joint = '<joint name="j" type="fixed"><parent link="arm"/><child link="hand"/></joint>'
+    [note] = found(model(robot, links, joint), "F006")
+    assert note.message.startswith("collision mesh 'open.stl' and 1 other collision mesh are not watertight"), note.message
+    assert note.subjects == ("arm", "hand")
+
+
 # -- what lint's JSON tells of each mesh -------------------------------------------------
 
 

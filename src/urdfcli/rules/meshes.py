@@ -416,9 +416,12 @@ def collision_mesh_open(loaded):
     exactly two faces wound opposite ways, corners within 2e-8 of the mesh's size
     welded, as trimesh's `is_watertight` after `merge_vertices`) on a link whose
     mass properties come from it: a link with mass (urdfcli's inertia estimate,
-    and PyBullet, which recomputes inertia from collision shapes unless
-    `URDF_USE_INERTIA_FROM_FILE`) or a link without `<inertial>` (MuJoCo's URDF
-    reader then infers its mass from the collision geoms, `inertiafromgeom`).
+    which the inertia rules and `inertia --suggest` use) or a link without
+    `<inertial>` (MuJoCo's URDF reader then infers its mass from the collision
+    geoms, `inertiafromgeom`). Said once per model, at the first such mesh,
+    naming the links of all of them: a CAD export often leaves every mesh open.
+    PyBullet's inertia from collision shapes uses a mesh's bounding box, so an
+    open mesh changes nothing there.
 
     ## Why is this bad?
     An open surface has no inside: its volume, and every inertia computed from it,
@@ -440,11 +443,18 @@ def collision_mesh_open(loaded):
     ```
     """
     needed = [use for use in mesh_uses(loaded) if use.role == "collision" and (use.link.inertial is None or (use.link.inertial.mass or 0) > 0)]
-    for group in _grouped(needed, lambda use: use.path).values():
-        found = summary_of(loaded, group[0])
-        if found is not None and found.watertight is False:
-            yield loaded.diagnostic(
-                "F006", f"collision mesh '{group[0].name}'{_others(group)} is not watertight: its volume and inertia are the convex hull's",
-                group[0].shape.geometry.at, "close the mesh (or use a convex one) where mass properties are computed from it",
-                subjects=tuple(dict.fromkeys(use.link.name for use in group)),
-            )
+    open_meshes = [group for group in _grouped(needed, lambda use: use.path).values() if _is_open(loaded, group[0])]
+    if open_meshes:  # one note per model: a CAD export often leaves every mesh open
+        first = open_meshes[0][0]
+        others = len(open_meshes) - 1
+        more = f" and {others} other collision mesh{'es' if others > 1 else ''}" if others else ""
+        yield loaded.diagnostic(
+            "F006", f"collision mesh '{first.name}'{more} {'are' if others else 'is'} not watertight: volume and inertia are taken from the convex hull",
+            first.shape.geometry.at, "close the meshes (or use convex ones) where mass properties are computed from them",
+            subjects=tuple(dict.fromkeys(use.link.name for group in open_meshes for use in group)),
+        )
+
+
+def _is_open(loaded, use) -> bool:
+    found = summary_of(loaded, use)
+    return found is not None and found.watertight is False

@@ -5,7 +5,7 @@ src/user/user_model.cc and user_objects.cc."""
 from __future__ import annotations
 
 from ...model import massprops
-from ...model.meshes import mesh_uses
+from ...model.meshes import MeshFiles
 from ...model.targets import MJMINVAL, build, geometry_body, mesh_extension, mujoco_options, weighed_by_geometry
 from ..base import ERROR, INFO, WARNING, check, explain
 from .common import BOUNDED, inertial_at, joints_of, limit_at, link_at, names, number
@@ -206,18 +206,18 @@ def package_uri(loaded, profile):
     ),
 )
 def stl_decoder(loaded, profile):
-    discardvisual = mujoco_options(loaded).discardvisual
-    found: dict[str, list] = {}  # problem -> the links and meshes: said once per problem
-    for use in mesh_uses(loaded):
-        if (discardvisual and use.role == "visual") or mesh_extension(use.uri) != ".stl" or use.path is None or not use.path.is_file():
+    files = MeshFiles.of(loaded)
+    found: dict[tuple, list] = {}  # problem -> the links and meshes: said once per problem
+    for name, geometry in _meshes(loaded, mujoco_options(loaded).discardvisual):
+        if mesh_extension(geometry.filename) != ".stl" or geometry.filename.startswith("package://"):  # C105 says package://
             continue
+        path = files.path(geometry.filename)
         try:
-            header = stl_header(use.path)
+            problem = _stl_problem(stl_header(path)) if path is not None and path.is_file() else None
         except OSError:
             continue
-        problem = _stl_problem(header)
         if problem is not None:
-            found.setdefault(problem, []).append((use.link.name, use.shape.geometry))
+            found.setdefault(problem, []).append((name, geometry))
     for (why, hint), meshes in found.items():
         yield _once(loaded, "C109", meshes, "such", why, hint)
 
