@@ -387,11 +387,14 @@ def test_published_models_verdicts_match(text, published_models):
     assert not disagreements, disagreements
 
 
-def test_an_stl_of_more_triangles_than_mujoco_decodes_is_rejected_by_both(tmp_path):
+@pytest.mark.parametrize(("count", "said"), [
+    (200_001, "its STL decoder takes at most 200,000 triangles per file, exceeded by 'dense.stl'"),
+    (0, "its STL decoder needs at least one triangle, and there is none in 'dense.stl'"),
+])
+def test_an_stl_of_a_triangle_count_mujoco_refuses_is_rejected_by_both(tmp_path, count, said):
     """Only the header and the size are read, by urdfcli as by MuJoCo: a binary STL of
     200,001 zero triangles (10 MB) stands for a dense CAD export."""
     require_consumer("mujoco")
-    count = 200_001
     with open(tmp_path / "dense.stl", "wb") as file:
         file.write(b"\0" * 80 + count.to_bytes(4, "little"))
         file.truncate(84 + 50 * count)
@@ -405,8 +408,8 @@ def test_an_stl_of_more_triangles_than_mujoco_decodes_is_rejected_by_both(tmp_pa
     )
     [real] = consumers.load_many("mujoco", [str(model)])
     assert not real.accepted and "200000" in real.error, real
-    said = [d.message for d in predicted(model, profile("mujoco")).diagnostics if d.code == "C109"]
-    assert said == ["MuJoCo rejects link 'l': its STL decoder takes at most 200,000 triangles per file, exceeded by 'dense.stl'"]
+    found = [d.message for d in predicted(model, profile("mujoco")).diagnostics if d.code == "C109"]
+    assert found == [f"MuJoCo rejects link 'l': {said}"]
 
 
 # -- check --load ----------------------------------------------------------------------------------

@@ -58,11 +58,11 @@ def graph(
 
     The model's errors are those `check` reports (J007 zero axis, J008 mimic
     of a missing joint...) apart from a missing or unreadable mesh, printed on
-    stderr. Exit 0; 1 when the model has
-    errors: the graph is drawn all the same when urdfdom reads the model (as
-    urdf_to_graphviz would), and otherwise only with --force; 2 when the input
-    cannot be read, an output cannot be written, or dot is missing or fails
-    (the DOT file is still written).
+    stderr. Exit 0; 1 when the model has errors: the graph is drawn all the
+    same when urdfdom reads the model (as urdf_to_graphviz would), and
+    otherwise only with --force; 2 when the input cannot be read, an output
+    cannot be written, or dot is missing or fails (the DOT file is still
+    written).
     """
     paths, mappings = split_inputs(inputs)
     if len(paths) > 2:

@@ -7,9 +7,9 @@ from __future__ import annotations
 from ...model import massprops
 from ...model.meshes import MeshFiles
 from ...model.targets import MJMINVAL, build, geometry_body, mesh_extension, mujoco_options, weighed_by_geometry
+from ...read.meshfile import stl_header
 from ..base import ERROR, INFO, WARNING, check, explain
 from .common import BOUNDED, inertial_at, joints_of, limit_at, link_at, names, number
-from ...read.meshfile import stl_header
 from .examples import INVERTED_LIMITS, ORDERED_LIMITS, TRIANGLE_BROKEN, TRIANGLE_KEPT, WRIST_BOX, arm, meshed, wrist_inertial
 
 DECODED = (".stl", ".obj", ".msh")  # the mesh files MuJoCo 4.0 decodes without a plugin
@@ -226,9 +226,11 @@ def _stl_problem(header) -> tuple[str, str] | None:
     """Why MuJoCo's STL decoder refuses a file, and the fix; None when it reads it."""
     if header.binary and 1 <= header.triangles <= STL_TRIANGLES:
         return None
-    if header.binary:
+    if header.binary and header.triangles > STL_TRIANGLES:
         return (f"its STL decoder takes at most {STL_TRIANGLES:,} triangles per file, exceeded by",
                 "decimate the mesh (a collision mesh needs a few thousand triangles, or use a convex hull)")
+    if header.binary:
+        return ("its STL decoder needs at least one triangle, and there is none in", "re-export the mesh")
     if header.solid:
         return ("it reads only binary STL, not the ASCII STL",
                 "convert the file to binary STL (for example: trimesh.load(path).export(path), or MeshLab)")
