@@ -68,7 +68,7 @@ class MeshSummaries:
     """A session's mesh summaries, one per file (read again when the file changes)."""
 
     def __init__(self) -> None:
-        self._found: dict[tuple, MeshSummary] = {}
+        self._found: dict[str, tuple[tuple[int, int], MeshSummary]] = {}  # path -> (its stamp when read, summary)
         self.reads = 0  # files read, for the tests that hold it to once per file
 
     def summary(self, path: Path) -> MeshSummary:
@@ -76,11 +76,12 @@ class MeshSummaries:
             status = os.stat(path)
         except OSError as error:
             return MeshSummary(format_of(path), problem=MeshError("missing", f"cannot be read: {error.strerror}"))
-        key = (str(path), status.st_mtime_ns, status.st_size)
-        if key not in self._found:
+        stamp = (status.st_mtime_ns, status.st_size)
+        kept = self._found.get(str(path))
+        if kept is None or kept[0] != stamp:  # a changed file replaces its summary: one per file, however long the session
             self.reads += 1
-            self._found[key] = summarise_file(path)
-        return self._found[key]
+            kept = self._found[str(path)] = (stamp, summarise_file(path))
+        return kept[1]
 
 
 def summarise_file(path: Path) -> MeshSummary:
@@ -115,7 +116,7 @@ def summarise(kind: str, found: Triangles) -> MeshSummary:
     low, high = points.min(axis=0).astype(float), points.max(axis=0).astype(float)
     del used, points
     kept, corners, closed = _welded(vertices, faces, low, high)
-    solid = _solid(vertices, kept, (low + high) / 2) if closed else _hull(vertices[corners])
+    solid = _tetrahedra(vertices, kept, (low + high) / 2, hull=False) if closed else _hull(vertices[corners])
     return MeshSummary(kind, len(faces), _vector(low), _vector(high), found.unit, closed, solid)
 
 
@@ -161,12 +162,6 @@ def _welded(vertices, faces, low, high):
     return faces[kept], first, closed
 
 
-def _solid(vertices, faces, reference) -> Solid | None:
-    """The body a closed surface encloses: each triangle with a reference point makes a
-    tetrahedron of signed volume; their sums give volume, centre and second moments."""
-    return _tetrahedra(vertices, faces, reference, signed=True, hull=False)
-
-
 def _hull(points) -> Solid | None:
     """The convex hull's body (qhull): what an open mesh is taken to enclose. None when the
     points are flat or too few to enclose anything."""
@@ -177,13 +172,14 @@ def _hull(points) -> Solid | None:
     except (QhullError, ValueError):
         return None
     inside = hull.points[hull.vertices].mean(axis=0)
-    return _tetrahedra(hull.points, hull.simplices, inside, signed=False, hull=True)
+    return _tetrahedra(hull.points, hull.simplices, inside, hull=True)
 
 
-def _tetrahedra(vertices, faces, reference, signed: bool, hull: bool) -> Solid | None:
-    """Volume, centre and covariance of the tetrahedra each face makes with ``reference``
-    (inside for a hull, where the faces are not wound consistently: volumes taken as
-    positive). Worked in chunks, so that memory stays bounded on large meshes."""
+def _tetrahedra(vertices, faces, reference, hull: bool) -> Solid | None:
+    """Volume, centre and covariance of the body the faces enclose: each face with
+    ``reference`` makes a tetrahedron, of signed volume for a closed surface, of positive
+    volume for a hull (``reference`` inside; qhull does not wind its faces consistently).
+    Worked in chunks, so that memory stays bounded on large meshes."""
     import numpy
 
     volume, first, second = 0.0, numpy.zeros(3), numpy.zeros((3, 3))
@@ -191,7 +187,7 @@ def _tetrahedra(vertices, faces, reference, signed: bool, hull: bool) -> Solid |
         corners = vertices[faces[start:start + CHUNK]] - reference  # (m, 3, 3)
         p, q, r = corners[:, 0], corners[:, 1], corners[:, 2]
         six = numpy.einsum("ij,ij->i", p, numpy.cross(q, r))  # six times each signed volume
-        if not signed:
+        if hull:
             six = numpy.abs(six)
         total = p + q + r
         volume += six.sum() / 6
@@ -239,9 +235,7 @@ class MeshFiles:
 
     @classmethod
     def of(cls, loaded: Loaded) -> MeshFiles:
-        return loaded.remembered(
-            "mesh files", lambda: cls(loaded.resolver, loaded.document.file.resolve().parent if loaded.document.file else None)
-        )
+        return loaded.remembered("mesh files", lambda: cls(loaded.resolver, input_folder(loaded)))
 
     def path(self, uri: str) -> Path | None:
         """The file a URI names (which may not exist), or None when it cannot be resolved."""
@@ -258,11 +252,19 @@ def input_folder(loaded: Loaded) -> Path | None:
 def resolved_resources(loaded: Loaded):
     """(at, kind, uri, path) for each mesh and texture the model names; ``path`` is None when
     the URI cannot be resolved (a package not found, a network address)."""
-    if loaded.resolver is None:
-        return
-    base = input_folder(loaded)
+    files = MeshFiles.of(loaded)
     for at, kind, uri in loaded.robot.resources:
-        yield at, kind, uri, loaded.resolver.resolve_uri(uri, base)
+        yield at, kind, uri, files.path(uri)
+
+
+def uri_style(uri: str) -> str | None:
+    """How a URI names a local file: "file" (file://), "absolute" or "relative"; None for
+    package:// and network addresses."""
+    if uri.startswith("file://"):
+        return "file"
+    if "://" in uri or not uri:
+        return None
+    return "absolute" if os.path.isabs(uri) or (len(uri) > 2 and uri[1] == ":" and uri[2] in "/\\") else "relative"
 
 
 class MeshUse(NamedTuple):

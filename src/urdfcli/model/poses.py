@@ -35,6 +35,18 @@ def link_poses(loaded: Loaded) -> dict[str, Transform]:
     return poses
 
 
+def relative_pose(loaded: Loaded, link: str, top: str) -> massprops.Transform:
+    """The pose of ``link`` in the frame of ``top``, an ancestor, through the joints' origins."""
+    pose = massprops.ORIGIN
+    while link != top:
+        joint = loaded.parent_joint(link)
+        if joint is None:
+            break
+        pose = massprops.compose(massprops.transform(joint.origin.xyz, joint.origin.rpy), pose)
+        link = joint.parent
+    return pose
+
+
 def kinematic_scene(name: str, root: str, joints: list[Joint]):
     """A yourdfpy model of the kinematic tree alone (no geometry), at zero joint positions.
 

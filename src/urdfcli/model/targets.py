@@ -22,6 +22,7 @@ from . import massprops
 from .kinematics import children_by_joint_name, roots, walks
 from .load import Loaded
 from .massprops import Matrix, Vector
+from .poses import relative_pose
 from .robot import Geometry, Joint, Link
 
 NAMES = {
@@ -178,18 +179,6 @@ def fused(loaded: Loaded, keeps_joint) -> dict[str, list[str]]:
                 members[link] = []
             members[top[link]].append(link)
     return members
-
-
-def relative_pose(loaded: Loaded, link: str, top: str) -> massprops.Transform:
-    """The pose of ``link`` in the frame of ``top``, an ancestor, through the joints' origins."""
-    pose = massprops.ORIGIN
-    while link != top:
-        joint = loaded.parent_joint(link)
-        if joint is None:
-            break
-        pose = massprops.compose(massprops.transform(joint.origin.xyz, joint.origin.rpy), pose)
-        link = joint.parent
-    return pose
 
 
 def combined(loaded: Loaded, links: list[str], part) -> tuple[float | None, Vector | None]:

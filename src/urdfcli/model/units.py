@@ -100,8 +100,8 @@ def _verdict(loaded: Loaded, use: MeshUse) -> UnitVerdict | None:
     size = max(sides)
     if not size > 0:
         return None
-    bands = evidence(loaded, use.link, sides)
     density = _density(use.link, sides)
+    bands = evidence(loaded, use.link, sides, density)
     judged = [band.judge(size) for band in bands]
     for direction in (1, -1):
         if not judged or any(j != direction for j in judged):
@@ -138,10 +138,10 @@ def _density(link: Link, sides: list[float]) -> float | None:
     return mass / math.prod(max(s, size / 100) for s in sides)
 
 
-def evidence(loaded: Loaded, link: Link, sides: list[float]) -> list[Band]:
-    """The bands of plausible sizes the rest of the link gives, the strongest first."""
+def evidence(loaded: Loaded, link: Link, sides: list[float], density: float | None) -> list[Band]:
+    """The bands of plausible sizes the rest of the link gives, the strongest first
+    (``density``: the link's mass in the mesh's box, None when it is too light to tell)."""
     bands = []
-    density = _density(link, sides)
     if density is not None:
         size = max(sides)
         bands.append(Band(size * (density / DENSITY[1]) ** (1 / 3), size * (density / DENSITY[0]) ** (1 / 3),

@@ -6,12 +6,14 @@ import os
 import re
 
 from ..model.kinematics import bodies
-from ..model.meshes import input_folder, near_misses, resolved_resources
+from ..model.meshes import input_folder, near_misses, resolved_resources, uri_style
 from ..model.vocabulary import SCHEMA
 from ..read.packages import cmake_project
 from .base import ERROR, INFO, WARNING, check
 from .meshes import others_there
 from .suggestions import close_matches
+
+ABSOLUTE = ("file", "absolute")  # the uri_style of a path of one machine
 
 # Gazebo plugin parameters that name a joint or a link (ROS 1 and ROS 2 spellings).
 PLUGIN_JOINT_TAGS = {
@@ -330,14 +332,10 @@ def file_not_found(loaded):
         at, kind, uri, path = uses[0]
         others = others_there(u for _, _, u, _ in uses)
         hint = _meant(loaded, uri, path, base)
-        if hint is None and _absolute(uri):
+        if hint is None and uri_style(uri) in ABSOLUTE:
             hint = "a path of another machine: put the files in a ROS package and write package://PACKAGE/..."
         found = loaded.diagnostic("D004", f"{kind} '{uri}'{others}: folder {folder} does not exist", at, hint)
         yield found.with_severity(WARNING) if all(kind == "texture" for _, kind, _, _ in uses) else found
-
-
-def _absolute(uri: str) -> bool:
-    return uri.startswith(("file://", "/")) or re.match(r"[A-Za-z]:[\\/]", uri) is not None
 
 
 def _meant(loaded, uri: str, path, base) -> str | None:
@@ -360,7 +358,7 @@ def uri_like(loaded, uri: str, path, base) -> str:
             return f"package://{package}/{path.relative_to(folder).as_posix()}"
     if uri.startswith("file://"):
         return f"file://{path}"
-    if not _absolute(uri) and base is not None:
+    if uri_style(uri) not in ABSOLUTE and base is not None:
         return os.path.relpath(path, base)
     return str(path)
 

@@ -8,14 +8,14 @@ found D005.
 from __future__ import annotations
 
 import math
-import os
 from collections import defaultdict
 from pathlib import Path
 
 from ..model import massprops
 from ..model.inertia import shape_bounds
 from ..model.kinematics import bodies
-from ..model.meshes import GeometryUnknown, MeshUse, mesh_uses, resolved_resources, stat_problem, summary_of
+from ..model.meshes import GeometryUnknown, MeshUse, mesh_uses, resolved_resources, stat_problem, summary_of, uri_style
+from ..model.poses import relative_pose
 from ..model.units import PLACEHOLDER, mis_scaled, unit_verdict
 from .base import ERROR, INFO, WARNING, check
 
@@ -127,7 +127,7 @@ def path_not_portable(loaded):
     """
     groups: dict = defaultdict(list)
     for at, kind, uri, path in resolved_resources(loaded):
-        style = _style(uri)
+        style = uri_style(uri)
         if style is not None and path is not None and path.is_file():
             groups[(style, path.parent)].append((at, kind, uri, path))
     for (style, _), found in groups.items():
@@ -142,15 +142,6 @@ def path_not_portable(loaded):
         else:
             message = f"{kind} '{uri}'{extra}: an absolute path works on this machine only, and RViz reads only package:// and file:// URIs"
         yield loaded.diagnostic("F002", message, at, fix)
-
-
-def _style(uri: str) -> str | None:
-    """How a URI names a local file: file, absolute or relative (None: package:// or a network)."""
-    if uri.startswith("file://"):
-        return "file"
-    if "://" in uri or not uri:
-        return None
-    return "absolute" if os.path.isabs(uri) or (len(uri) > 2 and uri[1] == ":" and uri[2] in "/\\") else "relative"
 
 
 def _package_uri(loaded, path: Path) -> str | None:
@@ -298,7 +289,7 @@ def collision_visual_mismatch(loaded):
         if len(body.links) == 1:
             visual, collision = boxes[body.top]
         else:
-            poses = _body_poses(loaded, body.links)
+            poses = {name: relative_pose(loaded, name, body.top) for name in body.links}
             visual, collision = (_placed([(boxes[name][role], poses[name]) for name in body.links]) for role in (0, 1))
         if not visual or not collision:
             continue
@@ -353,21 +344,6 @@ def _centre(box) -> tuple[float, ...]:
 
 def _diagonal(box) -> float:
     return math.dist(*box)
-
-
-def _body_poses(loaded, names) -> dict:
-    """Each link of a rigid body placed in its top link's frame (the fixed joints composed)."""
-    poses = {names[0]: massprops.ORIGIN}
-
-    def pose(name: str):
-        if name not in poses:
-            joint = loaded.parent_joint(name)
-            poses[name] = massprops.compose(pose(joint.parent), massprops.transform(joint.origin.xyz, joint.origin.rpy))
-        return poses[name]
-
-    for name in names:
-        pose(name)
-    return poses
 
 
 @check("F005", "collision-mesh-heavy", INFO, "A visual mesh of more than 20,000 triangles reused as the collision mesh.", in_check=False)
