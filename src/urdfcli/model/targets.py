@@ -22,7 +22,7 @@ from . import massprops
 from .kinematics import children_by_joint_name, roots, walks
 from .load import Loaded
 from .massprops import Matrix, Vector
-from .poses import relative_pose
+from .poses import body_poses
 from .robot import Geometry, Joint, Link
 
 NAMES = {
@@ -185,7 +185,7 @@ def combined(loaded: Loaded, links: list[str], part) -> tuple[float | None, Vect
     """Total mass and principal moments of links joined rigidly, each link's
     (mass, com, tensor in link axes) from ``part(link)`` (None: unknown)."""
     parts = []
-    top = links[0]
+    poses = body_poses(loaded, links)
     for name in links:
         found = part(loaded.robot.links[name])
         if found is None:
@@ -193,7 +193,7 @@ def combined(loaded: Loaded, links: list[str], part) -> tuple[float | None, Vect
         mass, com, tensor = found
         if mass == 0 and massprops.is_zero(tensor):
             continue
-        pose = relative_pose(loaded, name, top)
+        pose = poses[name]
         parts.append((mass, massprops.place(pose, com), massprops.rotate(tensor, pose[0])))
     if not parts:
         return 0.0, (0.0, 0.0, 0.0)

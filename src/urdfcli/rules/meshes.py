@@ -15,7 +15,7 @@ from ..model import massprops
 from ..model.inertia import shape_bounds
 from ..model.kinematics import bodies
 from ..model.meshes import GeometryUnknown, MeshUse, mesh_uses, resolved_resources, stat_problem, summary_of, uri_style
-from ..model.poses import relative_pose
+from ..model.poses import body_poses
 from ..model.units import PLACEHOLDER, mis_scaled, unit_verdict
 from .base import ERROR, INFO, WARNING, check
 
@@ -289,7 +289,7 @@ def collision_visual_mismatch(loaded):
         if len(body.links) == 1:
             visual, collision = boxes[body.top]
         else:
-            poses = {name: relative_pose(loaded, name, body.top) for name in body.links}
+            poses = body_poses(loaded, body.links)
             visual, collision = (_placed([(boxes[name][role], poses[name]) for name in body.links]) for role in (0, 1))
         if not visual or not collision:
             continue
