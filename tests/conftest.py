@@ -91,36 +91,43 @@ def is_complete(path: Path) -> bool:
     return path.relative_to(FIXTURES).as_posix() not in PARTIAL
 
 
-def lint_file(path, config=None, checks: str = "all"):
+def lint_file(path, config=None, rule_set=None):
     """One file linted with ``config`` (a urdfcli Config; the defaults when None), as
-    `lint` would: the Result."""
+    `lint` would (or with the rules of another rule set): the Result."""
     from urdfcli.api import Target, check_target
+    from urdfcli.options import Options, RuleSet
     from urdfcli.project.config import Config
     from urdfcli.session import Session
 
-    with Session(config=config if config is not None else Config()) as session:
-        return check_target(Target(str(path)), {}, checks, session)
+    options = Options(rule_set or RuleSet.LINT, config=config if config is not None else Config())
+    with Session(options) as session:
+        return check_target(Target(str(path)), session)
 
 
-def load(path, checks: str = "check"):
-    """One file checked with the default configuration and the rules ``checks`` names
-    ("check", "all", or "none": those of the tree only): the Result."""
-    return lint_file(path, None, checks)
+def load(path, rule_set=None):
+    """One file checked with the default configuration and the rules of ``rule_set``
+    (those of check when None): the Result."""
+    from urdfcli.options import RuleSet
+
+    return lint_file(path, None, rule_set or RuleSet.CHECK)
 
 
 def model(path):
     """The model read from one file, with the tree's rules only: the Loaded."""
-    return load(path, "none").loaded
+    from urdfcli.options import RuleSet
+
+    return load(path, RuleSet.TREE).loaded
 
 
 def audited(path, **options):
     """The mass-property audit of one file, as `urdfcli inertia` makes it."""
     from urdfcli import api
+    from urdfcli.options import Options, RuleSet
     from urdfcli.project.config import Config
     from urdfcli.session import Session
 
-    with Session(config=Config()) as session:
-        result = api.check_target(api.Target(str(path)), {}, "none", session)
+    with Session(Options(RuleSet.TREE, config=Config())) as session:
+        result = api.check_target(api.Target(str(path)), session)
         return api.audit(result, session, **options)
 
 
@@ -128,6 +135,6 @@ def has_errors(path) -> bool:
     """Whether `urdfcli tree` and `graph` report an error in one file (their exit code is
     then 1): check's errors, apart from a missing or unreadable mesh, which is no error of
     the model's structure."""
-    from urdfcli.rules import REGISTRY
+    from urdfcli.rules import REGISTRY, Kind
 
-    return any(not REGISTRY[d.code].files for d in load(path).errors)
+    return any(REGISTRY[d.code].kind is not Kind.FILES for d in load(path).errors)

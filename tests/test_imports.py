@@ -21,7 +21,7 @@ import urdfcli
 PACKAGE = Path(urdfcli.__file__).parent
 LAYERS = ("read", "model", "rules", "report", "project", "library", "lsp", "cli")
 FOUNDATION = ("urdfcli.diagnostics", "urdfcli.version")  # imported by every layer, importing none
-LIBRARY = ("urdfcli.api", "urdfcli.session")  # what a program calls; the command line is a shell over it
+LIBRARY = ("urdfcli.api", "urdfcli.options", "urdfcli.session")  # what a program calls; the command line is a shell over it
 ENTRY_POINTS = ("urdfcli", "urdfcli.__main__")
 
 

@@ -7,6 +7,7 @@ import textwrap
 
 from conftest import FIXTURES, lint_file, run_cli
 
+from urdfcli.options import Options
 from urdfcli.project.config import Config
 
 CLEAN = FIXTURES / "urdf01_rviz/urdf/urdf/demo01_helloworld.urdf"
@@ -179,11 +180,11 @@ def test_progress_bar_only_on_a_terminal_for_a_long_run(monkeypatch):
     paths = [str(path) for path in sorted(FIXTURES.rglob("*.urdf"))[:3]]
     monkeypatch.setattr(lint_command, "PROGRESS_AFTER", 0.0)
     terminal = io.StringIO()
-    with Session(config=Config()) as session, lint_command.Progress(Output(Console(), Console(file=terminal, force_terminal=True, width=100))) as progress:
-        found = api.run(paths, {}, "all", session, progress=progress.update)
+    with Session(Options(config=Config())) as session, lint_command.Progress(Output(Console(), Console(file=terminal, force_terminal=True, width=100))) as progress:
+        found = api.run(paths, session, progress=progress.update)
     assert [r.path for r in found.results] == paths
     assert "linting" in terminal.getvalue()
     piped = io.StringIO()
-    with Session(config=Config()) as session, lint_command.Progress(Output(Console(), Console(file=piped, force_terminal=False))) as progress:
-        api.run(paths, {}, "all", session, progress=progress.update)
+    with Session(Options(config=Config())) as session, lint_command.Progress(Output(Console(), Console(file=piped, force_terminal=False))) as progress:
+        api.run(paths, session, progress=progress.update)
     assert piped.getvalue() == ""

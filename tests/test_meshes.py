@@ -14,6 +14,7 @@ from conftest import example_robot_data, lint_file, run_cli
 from support.meshes import LFS_POINTER, box, fine, open_box, write
 
 from urdfcli.api import Target, check_target
+from urdfcli.options import Options, RuleSet
 from urdfcli.session import Session
 
 INERTIAL = '<inertial><mass value="{mass}"/><inertia ixx="{i}" ixy="0" ixz="0" iyy="{i}" iyz="0" izz="{i}"/></inertial>'
@@ -44,8 +45,8 @@ def link(name: str, visual: str = "", collision: str = "", mass: float | None = 
     return f'<link name="{name}">{"".join(parts)}</link>'
 
 
-def found(path, code: str, checks: str = "all"):
-    return [d for d in lint_file(path, checks=checks).diagnostics if d.code == code]
+def found(path, code: str, rule_set: RuleSet = RuleSet.LINT):
+    return [d for d in lint_file(path, rule_set=rule_set).diagnostics if d.code == code]
 
 
 # -- missing, empty, LFS pointer, truncated: errors, check and lint ---------------------
@@ -59,26 +60,26 @@ def robot(tmp_path):
 def test_a_missing_mesh_is_an_error_in_check_naming_the_file_that_differs_in_case(robot):
     write(robot / "meshes" / "Arm.STL", box())
     path = model(robot, link("arm", mesh("package://my_robot/meshes/arm.stl")))
-    [error] = found(path, "D004", "check")
+    [error] = found(path, "D004", RuleSet.CHECK)
     assert error.severity.value == "error"
     assert error.hint.startswith("did you mean 'package://my_robot/meshes/Arm.STL'? file names are case-sensitive on Linux")
     done = run_cli("check", path)
     assert done.returncode == 1 and "D004 error" in done.stderr.decode()
     clean = model(robot, link("arm", mesh("package://my_robot/meshes/Arm.STL")))
-    assert found(clean, "D004", "check") == [] and run_cli("check", clean).returncode == 0
+    assert found(clean, "D004", RuleSet.CHECK) == [] and run_cli("check", clean).returncode == 0
 
 
 def test_a_missing_mesh_names_another_extension_or_the_meshes_folder(robot):
     write(robot / "meshes" / "arm.dae", box())
-    [error] = found(model(robot, link("arm", mesh("package://my_robot/meshes/arm.stl"))), "D004", "check")
+    [error] = found(model(robot, link("arm", mesh("package://my_robot/meshes/arm.stl"))), "D004", RuleSet.CHECK)
     assert error.hint == "did you mean 'package://my_robot/meshes/arm.dae'?"
-    [error] = found(model(robot, link("arm", mesh("meshes/arm.dae"))), "D004", "check")  # relative to urdf/
+    [error] = found(model(robot, link("arm", mesh("meshes/arm.dae"))), "D004", RuleSet.CHECK)  # relative to urdf/
     assert error.hint == "did you mean '../meshes/arm.dae'?"
 
 
 def test_a_missing_texture_is_a_warning(robot):
     path = model(robot, '<material name="m"><texture filename="package://my_robot/meshes/skin.png"/></material><link name="a"/>')
-    [warning] = found(path, "D004", "check")
+    [warning] = found(path, "D004", RuleSet.CHECK)
     assert warning.severity.value == "warning"
 
 
@@ -86,11 +87,11 @@ def test_a_missing_texture_is_a_warning(robot):
 def test_an_empty_file_or_an_lfs_pointer_is_an_error_in_check(robot, content, said, checked):
     (robot / "meshes" / "arm.stl").write_bytes(content)
     path = model(robot, link("arm", mesh("package://my_robot/meshes/arm.stl")))
-    [error] = found(path, "F001", "check")
+    [error] = found(path, "F001", RuleSet.CHECK)
     assert said in error.message and error.severity.value == "error"
     assert ("git lfs pull" in error.hint) == (said == "Git LFS pointer")
     write(robot / "meshes" / "arm.stl", box())
-    assert found(path, "F001", "check") == [] and found(path, "F001") == []
+    assert found(path, "F001", RuleSet.CHECK) == [] and found(path, "F001") == []
 
 
 def test_check_opens_no_mesh_and_lint_reads_each_once(robot):
@@ -98,13 +99,13 @@ def test_check_opens_no_mesh_and_lint_reads_each_once(robot):
     whole.write_bytes(whole.read_bytes()[:-100])  # truncated: only reading it tells
     path = model(robot, link("arm", mesh("package://my_robot/meshes/arm.stl"), mesh("package://my_robot/meshes/arm.stl"), mass=1.0))
     with Session() as session:
-        checked = check_target(Target(path), {}, "check", session)
+        checked = check_target(Target(path), session.using(Options(RuleSet.CHECK)))
         assert session.meshes.reads == 0 and not [d for d in checked.diagnostics if d.code == "F001"]
-        linted = check_target(Target(path), {}, "all", session)
+        linted = check_target(Target(path), session)
         assert session.meshes.reads == 1  # one file, used twice, read once
         [error] = [d for d in linted.diagnostics if d.code == "F001"]
         assert "binary STL is truncated: its header says 12 triangles (684 bytes), the file has 584 bytes" in error.message
-        check_target(Target(path), {}, "all", session)
+        check_target(Target(path), session)
         assert session.meshes.reads == 1  # the next model reads it no more
 
 

@@ -9,6 +9,7 @@ import pytest
 from conftest import all_fixture_models, example_robot_data, load
 from test_malformed import MALFORMED
 
+from urdfcli.options import RuleSet
 from urdfcli.read import xml
 
 
@@ -18,7 +19,7 @@ def readings(path: Path, monkeypatch) -> list:
     found = []
     for whole_up_to in (xml.WHOLE_UP_TO, 0):
         monkeypatch.setattr(xml, "WHOLE_UP_TO", whole_up_to)
-        result = load(str(path), "all")
+        result = load(str(path), RuleSet.LINT)
         robot = result.robot
         model = (robot.links, robot.joints, robot.materials, robot.resources, list(result.loaded.document.tops)) if robot else None
         found.append(([(d.code, d.line, d.location.column, d.message, d.element) for d in result.diagnostics], model))
@@ -56,6 +57,6 @@ def test_a_kept_block_holds_only_itself(tmp_path, monkeypatch):
     path.write_text('<robot name="r"><link name="a"/><gazebo reference="a"><mu1>1</mu1></gazebo><link name="b"/></robot>')
     for whole_up_to in (xml.WHOLE_UP_TO, 0):
         monkeypatch.setattr(xml, "WHOLE_UP_TO", whole_up_to)
-        (block,) = load(str(path), "none").robot.extensions
+        (block,) = load(str(path), RuleSet.TREE).robot.extensions
         assert block.tag == "gazebo"
         assert block.getparent() is None

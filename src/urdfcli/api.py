@@ -28,12 +28,13 @@ from .model.meshes import mesh_facts
 from .model.units import unit_verdict
 from .project import linter
 from .project.config import Config, ConfigError
-from .project.workspace import Target, assemble, model_targets, models_below, plan, unchecked_library, xacro_sources
+from .project.workspace import Entry, Target, assemble, model_targets, models_below, plan, unchecked_library, xacro_sources
 from .read.document import STDIN, InputError, read_document
 from .read.packages import PackageError
 from .report import inertia
 from .report.result import Result
-from .rules import REGISTRY
+from .options import Options
+from .rules import REGISTRY, Kind, RuleSet
 from .session import Session
 
 
@@ -57,9 +58,9 @@ Progress = Callable[[int, int], None]  # (done, total)
 def check(path: str | os.PathLike, *arguments: str, session: Session | None = None, **settings) -> Result:
     """Check one model (or xacro library) as ``urdfcli check`` does: every error, and
     the warnings of check's rules. ``arguments`` are xacro arguments ``NAME:=VALUE``;
-    ``settings`` are those of :class:`Session` (``package_paths``, ``config``...)
-    when no session is given."""
-    return _single(run_api([os.fspath(path)], arguments, "check", session, settings))
+    ``settings`` are those of :class:`~urdfcli.options.Options` (``package_paths``,
+    ``config``...) when no session is given."""
+    return _single(_run_api([os.fspath(path)], RuleSet.CHECK, arguments, session, settings))
 
 
 def lint(paths: Iterable[str | os.PathLike], *arguments: str, session: Session | None = None, **settings) -> list[Result]:
@@ -67,18 +68,21 @@ def lint(paths: Iterable[str | os.PathLike], *arguments: str, session: Session |
     (a model listed in ``[tool.urdfcli] models`` once per argument set)."""
     if isinstance(paths, (str, os.PathLike)):
         paths = [paths]
-    return run_api([os.fspath(p) for p in paths], arguments, "all", session, settings).results
+    return _run_api([os.fspath(p) for p in paths], RuleSet.LINT, arguments, session, settings).results
 
 
-def run_api(paths: list[str], arguments: Iterable[str], checks: str, session: Session | None, settings: dict) -> Run:
-    mappings = xacro_arguments(arguments)
+def _run_api(paths: list[str], rule_set: RuleSet, arguments: Iterable[str], session: Session | None, settings: dict) -> Run:
+    given = xacro_arguments(arguments)
     own = session is None
     try:
-        session = session or Session(**settings)
-    except PackageError as error:
+        if own:
+            session = Session(Options(**settings, rule_set=rule_set, arguments=given))
+        else:
+            session = session.using(session.options.but(rule_set=rule_set, arguments=tuple(given.items())))
+    except (PackageError, ValueError) as error:
         raise UsageError(str(error)) from None
     try:
-        found = run(find_models(paths, session), mappings, checks, session)
+        found = run(find_models(paths, session), session)
     finally:
         if own:
             session.close()
@@ -120,46 +124,31 @@ def find_models(paths: list[str], session: Session) -> list[str]:
     return files
 
 
-def run(
-    paths: list[str],
-    mappings: dict[str, str],
-    checks: str,
-    session: Session,
-    libraries: bool = True,
-    jobs: int = 1,
-    progress: Progress | None = None,
-) -> Run:
-    """Check each input with the rules ``checks`` names (see :data:`linter.CHECKS`).
+def run(paths: list[str], session: Session, progress: Progress | None = None) -> Run:
+    """Check each input as the session's options ask (see :class:`~urdfcli.options.Options`).
 
     With ``libraries``, a xacro library is checked through the models that include
     it (see :mod:`urdfcli.project.workspace`); a model listed in ``[tool.urdfcli]
-    models`` is checked once per argument set. ``jobs`` other than 1 checks models
-    in that many processes (0: one per CPU). Raises UsageError for a bad
+    models`` is checked once per argument set. Raises UsageError for a bad
     configuration or package path."""
     config_for = configured(session)
     try:
-        if libraries:
+        if session.options.libraries:
             entries = plan(paths, config_for, session.package_paths, session.packages, session.scans)
         else:
-            entries = [_model_entry(path, config_for) for path in paths]
+            entries = [Entry(path, model_targets(path, config_for(path).argument_sets(path))) for path in paths]
     except PackageError as error:
         raise UsageError(str(error)) from None
     targets = list(dict.fromkeys(t for entry in entries for t in entry.targets))
-    done = dict(zip(targets, _outcomes(targets, mappings, checks, session, jobs, progress)))
+    done = dict(zip(targets, _outcomes(targets, session, progress)))
 
     def outcome(target: Target) -> Result | str:
         if target not in done:  # a library no model could check, expanded on its own
-            done[target] = check_target(target, mappings, checks, session)
+            done[target] = check_target(target, session)
         return done[target]
 
     results, unreadable = assemble(entries, outcome)
     return Run(results, unreadable, tuple(r for r in done.values() if isinstance(r, Result) and r.loaded is not None))
-
-
-def _model_entry(path: str, config_for):
-    from .project.workspace import Entry
-
-    return Entry(path, model_targets(path, config_for(path).argument_sets(path)))
 
 
 def configured(session: Session):
@@ -174,19 +163,20 @@ def configured(session: Session):
     return config_for
 
 
-def _outcomes(targets: list[Target], mappings: dict[str, str], checks: str, session: Session, jobs: int, progress: Progress | None):
-    """Each target's result, in order: here, or in ``jobs`` processes."""
+def _outcomes(targets: list[Target], session: Session, progress: Progress | None):
+    """Each target's result, in order: here, or in the options' ``jobs`` processes."""
+    jobs = session.options.jobs
     parallel = jobs != 1 and len(targets) > 1 and not any(t.path == STDIN for t in targets)
     if not parallel:
         for done, target in enumerate(targets, 1):
-            yield check_target(target, mappings, checks, session)
+            yield check_target(target, session)
             if progress is not None:
                 progress(done, len(targets))
         return
     from concurrent.futures import ProcessPoolExecutor
 
-    with ProcessPoolExecutor(max_workers=jobs or None, initializer=_start_process, initargs=(session.settings,)) as pool:
-        for done, found in enumerate(pool.map(_check_in_process, targets, [mappings] * len(targets), [checks] * len(targets)), 1):
+    with ProcessPoolExecutor(max_workers=jobs or None, initializer=_start_process, initargs=(session.options,)) as pool:
+        for done, found in enumerate(pool.map(_check_in_process, targets), 1):
             yield found
             if progress is not None:
                 progress(done, len(targets))
@@ -198,21 +188,23 @@ class _ProcessSession:
     current: Session | None = None
 
 
-def _start_process(settings: dict) -> None:
-    _ProcessSession.current = Session(**settings)
+def _start_process(options: Options) -> None:
+    _ProcessSession.current = Session(options)
 
 
-def _check_in_process(target: Target, mappings: dict[str, str], checks: str) -> Result | str:
-    found = check_target(target, mappings, checks, _ProcessSession.current)
+def _check_in_process(target: Target) -> Result | str:
+    found = check_target(target, _ProcessSession.current)
     return found if isinstance(found, str) else found.detached()
 
 
-def check_target(target: Target, mappings: dict[str, str], checks: str, session: Session) -> Result | str:
+def check_target(target: Target, session: Session) -> Result | str:
     """One model with one argument set (or a library on its own): its result, or
     the one-line reason it cannot be read. Raises UsageError (configuration, package path)."""
     path = target.path
+    options = session.options
+    rule_set = options.rule_set
     config = configured(session)(path)
-    arguments = {**config.mappings_for(path), **mappings, **dict(target.arguments)}
+    arguments = {**config.mappings_for(path), **options.mappings, **dict(target.arguments)}
     try:
         resolver = session.resolver(config.package_paths, None if path == STDIN else Path(path))
         if target.alone:  # a library: its own xacro, and what the source rules find in it
@@ -221,9 +213,9 @@ def check_target(target: Target, mappings: dict[str, str], checks: str, session:
                 found.append(unchecked_library(path, target.unchecked))
             loaded = Loaded(document, diagnostics=found, resolver=resolver, meshes=session.meshes)
             loaded.sources = xacro_sources(document, session.index, session.expander.global_names)
-            diagnostics = linter.lint(loaded, config, checks)
+            diagnostics = linter.lint(loaded, config, rule_set)
             return Result(path, diagnostics, None, dict(target.arguments), includes=tuple(document.includes))
-        loaded = load(path, session.inputs, resolver, arguments, vocabulary=checks == "all", meshes=session.meshes, reads_meshes=checks != "check")
+        loaded = load(path, session.inputs, resolver, arguments, vocabulary=rule_set is RuleSet.LINT, meshes=session.meshes, reads_meshes=rule_set is not RuleSet.CHECK)
     except InputError as error:
         return str(error)
     except PackageError as error:
@@ -232,26 +224,26 @@ def check_target(target: Target, mappings: dict[str, str], checks: str, session:
     loaded.sources = xacro_sources(document, session.index, session.expander.global_names)
     if document.missing_argument is not None:
         loaded.diagnostics = [needs_argument(d, document.missing_argument, path) if d.code == "X003" else d for d in loaded.diagnostics]
-    diagnostics = linter.lint(loaded, config, checks)
-    meshes = tuple(mesh_facts(loaded, partial(unit_verdict, loaded))) if checks == "all" and loaded.modelled else ()
+    diagnostics = linter.lint(loaded, config, rule_set)
+    meshes = tuple(mesh_facts(loaded, partial(unit_verdict, loaded))) if rule_set is RuleSet.LINT and loaded.modelled else ()
     return Result(path, diagnostics, loaded, dict(target.arguments), includes=tuple(document.includes), needs_argument=document.missing_argument, meshes=meshes)
 
 
 def audit(result: Result, session: Session, tolerance: float = massprops.TOLERANCE, density: float | None = None):
     """The mass-property audit of a model (None when there is no robot): every
-    mass-property rule (codes I...) run with this tolerance and density, what
-    the configuration and suppressions leave of them, and the per-link table."""
+    mass-property rule run with this tolerance and density, what the configuration
+    and suppressions leave of them, and the per-link table."""
     loaded = result.loaded
     if loaded is None or not loaded.modelled:
         return None
-    given = {"tolerance": tolerance, "density": density or 0.0}
+    chosen = {"tolerance": tolerance, "density": density or 0.0}
     found = [
         diagnostic
-        for rule in REGISTRY.values() if rule.code.startswith("I") and rule.function is not None
-        for diagnostic in rule.run(loaded, {k: v for k, v in given.items() if k in rule.defaults})
+        for rule in REGISTRY.values() if rule.kind is Kind.MASS
+        for diagnostic in rule.run(loaded, rule.given({k: v for k, v in chosen.items() if k in rule.defaults}))
     ]
     config = configured(session)(result.path)
-    problems = [d for d in linter.configure(loaded, found, config, "all") if d.code not in ("U001", "U002")]
+    problems = [d for d in linter.configure(loaded, found, config, RuleSet.LINT) if REGISTRY[d.code].kind is not Kind.SUPPRESSIONS]
     return inertia.build(loaded, problems, tolerance, density)
 
 
@@ -289,17 +281,17 @@ def needs_argument(diagnostic: Diagnostic, name: str, path: str) -> Diagnostic:
     return diagnostic._replace(message=message, hint=diagnostic.hint or hint)
 
 
-def expand(path: str, mappings: dict[str, str], session: Session) -> tuple[str | None, list[str], list[Diagnostic]]:
-    """The xacro expansion of one file, as the ``xacro`` tool prints it (None when it
-    fails), the files it read, and what xacro said (each with its severity). Raises
-    UsageError when the file cannot be read."""
+def expand(path: str, session: Session) -> tuple[str | None, list[str], list[Diagnostic]]:
+    """The xacro expansion of one file with the options' arguments, as the ``xacro`` tool
+    prints it (None when it fails), the files it read, and what xacro said (each with its
+    severity). Raises UsageError when the file cannot be read."""
     try:
         resolver = session.resolver((), None if path == STDIN else Path(path))
-        document, found = read_document(path, session.inputs, resolver, mappings, force_xacro=True)
+        document, found = read_document(path, session.inputs, resolver, session.options.mappings, force_xacro=True)
     except (InputError, PackageError) as error:
         raise UsageError(str(error)) from None
     diagnostics = [linter.with_severity(d, Config()) for d in found]
     return document.expanded_text, list(document.includes), diagnostics
 
 
-__all__ = ["Run", "Session", "UsageError", "check", "check_target", "expand", "find_models", "lint", "run", "xacro_arguments"]
+__all__ = ["Options", "Run", "RuleSet", "Session", "UsageError", "check", "check_target", "expand", "find_models", "lint", "run", "xacro_arguments"]

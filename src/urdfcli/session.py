@@ -9,11 +9,13 @@ that change on disk are read again within a session.
 
 from __future__ import annotations
 
+import copy
 from collections.abc import Iterable
 from pathlib import Path
 
 from .model.meshes import MeshSummaries
-from .project.config import Config, Configurations
+from .options import Options
+from .project.config import Configurations
 from .project.workspace import Index
 from .read.document import Inputs
 from .read.packages import PackageIndex, PackageResolver
@@ -23,36 +25,38 @@ from .read.xacro_scan import Scans
 
 
 class Session:
-    """What a run shares: give it the command line's settings, use it for any
-    number of inputs, and close it (or use it in a ``with`` block).
+    """What the runs of one set of :class:`~urdfcli.options.Options` share: make one,
+    use it for any number of inputs, and close it (or use it in a ``with`` block)."""
 
-    ``package_paths`` are ``-P`` options (``NAME=DIR`` or a folder to scan);
-    ``config`` names a configuration file to use instead of the nearest one above
-    each input (or is a :class:`~urdfcli.project.config.Config`), ``isolated`` reads none; ``select``, ``ignore`` and ``extend_select``
-    are the command line's rule selections over the configuration's; ``targets``
-    (``["mujoco", "pinocchio:mimic"]``) replaces the configuration's targets.
-    """
-
-    def __init__(
-        self,
-        package_paths: Iterable[str] = (),
-        config: str | Path | Config | None = None,
-        isolated: bool = False,
-        select: list[str] | None = None,
-        ignore: list[str] | None = None,
-        extend_select: list[str] | None = None,
-        targets: list[str] | None = None,
-    ) -> None:
-        self.package_paths = tuple(package_paths)
-        self.settings = dict(package_paths=self.package_paths, config=config, isolated=isolated, select=select, ignore=ignore, extend_select=extend_select, targets=targets)
+    def __init__(self, options: Options | None = None) -> None:
+        self.options = options if options is not None else Options()
         self.sources = Sources()
         self.packages = PackageIndex()
         self.expander = Expander()
         self.meshes = MeshSummaries()
         self._forget_sources()
-        overrides = {"select": select, "ignore": ignore, "extend_select": extend_select, "targets": targets}
-        self.configs = Configurations(Path(config) if isinstance(config, (str, Path)) else config, isolated, overrides)
+        self.configs = self._configurations()
         PackageResolver(self.package_paths)  # a -P that is not NAME=DIR or a folder: said now (PackageError)
+
+    @property
+    def package_paths(self) -> tuple[str, ...]:
+        return self.options.package_paths
+
+    def _configurations(self) -> Configurations:
+        return Configurations(self.options.config, self.options.isolated, self.options.overrides)
+
+    def using(self, options: Options) -> Session:
+        """A session for other options that shares this one's texts, look-ups, summaries
+        and xacro worker (closing either closes both)."""
+        other = copy.copy(self)
+        other.options = options
+        same = self.options
+        if (options.config, options.isolated, options.overrides) != (same.config, same.isolated, same.overrides):
+            other.configs = other._configurations()
+        if options.package_paths != same.package_paths:
+            PackageResolver(options.package_paths)
+            other.index = Index(options.package_paths, other.packages, other.scans)
+        return other
 
     @property
     def inputs(self) -> Inputs:

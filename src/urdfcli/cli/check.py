@@ -8,6 +8,7 @@ import typer
 
 from .. import api, report
 from ..diagnostics import Severity
+from ..options import Options, RuleSet
 from ..report.console import Output
 from .common import (
     LIBRARIES_HELP,
@@ -24,7 +25,7 @@ from .common import (
     fail,
     format_option,
     report_unreadable,
-    session,
+    session_for,
     split_inputs,
 )
 
@@ -56,18 +57,21 @@ def check(
     Configuration (the tool.urdfcli table of the nearest pyproject.toml, or urdfcli.toml)
     and noqa comments apply as they do for lint.
     """
-    output_format = choose(output_format, FORMATS)
     paths, mappings = split_inputs(inputs)
+    options = Options(
+        RuleSet.CHECK, tuple(mappings.items()), tuple(package_path or ()), config, isolated, targets=tuple(target or ()),
+        format=choose(output_format, FORMATS),
+    )
     output = Output.standard(color, quiet)
-    with session(package_path, config=config, isolated=isolated, targets=target) as run:
-        found = api.run(api.find_models(paths, run), mappings, "check", run, progress=CtrlC.stop_if_pressed)
+    with session_for(options) as session:
+        found = api.run(api.find_models(paths, session), session, progress=CtrlC.stop_if_pressed)
         if load:
             try:
-                api.load_into_targets(found.results, run)
+                api.load_into_targets(found.results, session)
             except api.UsageError as error:
                 raise fail(str(error)) from None
         report_unreadable(output, found.unreadable)
-        report.reporter(output_format)(found.results, output, "check", run.sources)
+        report.reporter(options.format)(found.results, output, "check", session.sources)
     failing = Severity.WARNING.rank if strict else Severity.ERROR.rank
     if found.unreadable:
         raise SystemExit(Exit.CANNOT_RUN)

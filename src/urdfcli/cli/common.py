@@ -13,6 +13,7 @@ from typing import Annotated
 import typer
 
 from ..api import UsageError, xacro_arguments
+from ..options import Options
 from ..read.packages import PackageError
 from ..report.console import COLOR_MODES, Output
 from ..report.escape import escape
@@ -83,7 +84,7 @@ def _targets(values: list[str] | None) -> list[str] | None:
                 profile(text)
             except ValueError as error:
                 raise typer.BadParameter(str(error)) from None
-    return values
+    return values or []
 
 
 TargetOption = Annotated[
@@ -168,11 +169,11 @@ def split_inputs(arguments: list[str]) -> tuple[list[str], dict[str, str]]:
 
 
 @contextlib.contextmanager
-def session(package_path: list[str] | None = None, **settings) -> Iterator[Session]:
+def session_for(options: Options) -> Iterator[Session]:
     """The command's session, closed when it ends; a bad -P or configuration, or an
     input that cannot be read, ends the command with exit code 2."""
     try:
-        opened = Session(package_path or (), **settings)
+        opened = Session(options)
     except PackageError as error:
         raise fail(str(error)) from None
     try:

@@ -13,7 +13,8 @@ from ..report.console import Output, write
 from ..report.escape import escape
 from ..report.lines import diagnostic_lines
 from ..report.output import OutputError, write_atomic
-from .common import ColorOption, Exit, FileArgument, PackagePathOption, fail, session, split_inputs
+from ..options import Options
+from .common import ColorOption, Exit, FileArgument, PackagePathOption, fail, session_for, split_inputs
 
 
 def expand(
@@ -36,8 +37,8 @@ def expand(
     console = Output.standard(color)
     if in_order:  # what xacro says of it, with the fix (xacro's --inorder became its only mode in ROS Melodic)
         console.err.file.write("urdfcli: warning: --inorder does nothing: in-order processing is xacro's only mode since ROS Melodic; drop the option\n")
-    with session(package_path) as run:
-        text, includes, diagnostics = api.expand(path, mappings, run)
+    with session_for(Options(arguments=tuple(mappings.items()), package_paths=tuple(package_path or ()))) as session:
+        text, includes, diagnostics = api.expand(path, session)
     write(console.err, (line for d in diagnostics for line in diagnostic_lines(d, None)))
     if text is None or any(d.severity is Severity.ERROR for d in diagnostics):
         raise SystemExit(Exit.PROBLEMS)

@@ -14,7 +14,8 @@ from ..report.escape import escape
 from ..report.output import OutputError, write_atomic
 from ..report.result import Result
 from ..rules import REGISTRY
-from .common import ColorOption, ConfigOption, Exit, IsolatedOption, PackagePathOption, fail, session, split_inputs
+from ..options import Options, RuleSet
+from .common import ColorOption, ConfigOption, Exit, IsolatedOption, PackagePathOption, fail, session_for, split_inputs
 from .tree import load_model, report_errors, start_link
 
 EXTENSIONS = {".pdf": "pdf", ".svg": "svg", ".png": "png", ".gv": "dot", ".dot": "dot"}
@@ -75,9 +76,10 @@ def graph(
     if output is not None and output_kind is None:
         raise fail(f"{output}: unknown extension; use one of {' '.join(EXTENSIONS)}")
     console = Output.standard(color)
-    with session(package_path, config=config, isolated=isolated) as run:
-        result = load_model(paths[0], mappings, run)
-        has_errors = report_errors(result, console, run)
+    options = Options(RuleSet.CHECK, tuple(mappings.items()), tuple(package_path or ()), config, isolated)
+    with session_for(options) as session:
+        result = load_model(paths[0], session)
+        has_errors = report_errors(result, console, session)
         start = start_link(result, None, console) if force or not stops_drawing(result) else None
     if start is None:
         raise SystemExit(Exit.PROBLEMS)

@@ -13,7 +13,8 @@ from ..report.console import Output, write
 from ..report.inertia import Audit, flagged, problem_count
 from ..report.lines import diagnostic_lines
 from ..session import Session
-from ..model.targets import build, profile
+from ..model.targets import build
+from ..options import Options, RuleSet
 from .common import (
     ColorOption,
     ConfigOption,
@@ -26,7 +27,7 @@ from .common import (
     fail,
     format_option,
     report_unreadable,
-    session,
+    session_for,
     split_inputs,
 )
 
@@ -66,28 +67,31 @@ def inertia(
     if output_format == "json" and (suggest or xacro):
         raise fail("--suggest and --xacro print XML; use them with the text format")
     paths, mappings = split_inputs(inputs)
+    options = Options(
+        RuleSet.TREE, tuple(mappings.items()), tuple(package_path or ()), config, isolated, targets=tuple(target or ()), libraries=False,
+        format=output_format,
+    )
     output = Output.standard(color)
-    with session(package_path, config=config, isolated=isolated) as run:
-        found = api.run(paths, mappings, "none", run, libraries=False)
+    with session_for(options) as session:
+        found = api.run(paths, session)
         report_unreadable(output, found.unreadable)
         if not found.results:
             raise SystemExit(Exit.CANNOT_RUN)
         for result in found.results:
-            result.audit = api.audit(result, run, tolerance, density)
+            result.audit = api.audit(result, session, tolerance, density)
             if result.audit is not None and (suggest or xacro):
-                result.audit = result.audit._replace(suggestions=suggestions(result.audit, run, density, xacro))
-            if result.audit is not None and target:
-                chosen = [profile(text) for value in target for text in value.split(",")]
-                result.audit = result.audit._replace(targets=tuple(build(result.loaded, p) for p in chosen))
+                result.audit = result.audit._replace(suggestions=suggestions(result.audit, session, density, xacro))
+            if result.audit is not None and options.targets:
+                result.audit = result.audit._replace(targets=tuple(build(result.loaded, p) for p in options.targets))
         write(output.err, (line for result in found.results for d in result.errors for line in diagnostic_lines(d, None)))
-        report.reporter(output_format)(found.results, output, "inertia", run.sources)
+        report.reporter(options.format)(found.results, output, "inertia", session.sources)
     if found.unreadable:
         raise SystemExit(Exit.CANNOT_RUN)
     if problem_count(found.results):
         raise SystemExit(Exit.PROBLEMS)
 
 
-def suggestions(audit: Audit, run: Session, density: float | None, xacro: bool) -> tuple[str, ...]:
+def suggestions(audit: Audit, session: Session, density: float | None, xacro: bool) -> tuple[str, ...]:
     """For each flagged link, the <inertial> of a uniform body filling its geometry;
     with ``xacro``, the macro that wrote the link's <inertial> and the call of it that gives those values."""
     found = []
@@ -97,7 +101,7 @@ def suggestions(audit: Audit, run: Session, density: float | None, xacro: bool) 
         if use is not None:
             called = f", called at {use.called_at} as {use.call}" if use.call else ""
             found.append(f"<!-- link '{entry.link.name}': its <inertial> comes from xacro macro '{use.name}' ({use.defined_at}){called} -->")
-            call = fixes.matching_call(loaded, entry.link, use, run.expander) if density is None else None
+            call = fixes.matching_call(loaded, entry.link, use, session.expander) if density is None else None
             if call is not None:
                 found.append(f"<!-- the call that gives the geometry's values: -->\n{call}")
                 continue

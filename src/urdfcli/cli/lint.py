@@ -9,6 +9,7 @@ import typer
 
 from .. import api, report
 from ..diagnostics import Severity
+from ..options import Options, RuleSet
 from ..report.console import Output
 from .common import (
     LIBRARIES_HELP,
@@ -23,7 +24,7 @@ from .common import (
     choose,
     format_option,
     report_unreadable,
-    session,
+    session_for,
     split_inputs,
 )
 
@@ -59,15 +60,18 @@ def lint(
     pyproject.toml, or from urdfcli.toml; `urdfcli rules` lists the rules. Exit 0 when nothing remains,
     1 when a warning or error remains, 2 when it cannot run.
     """
-    output_format = choose(output_format, FORMATS)
     paths, mappings = split_inputs(inputs)
+    options = Options(
+        RuleSet.LINT, tuple(mappings.items()), tuple(package_path or ()), config, isolated, tuple(select or ()), tuple(ignore or ()),
+        tuple(extend_select or ()), tuple(target or ()), jobs=jobs, format=choose(output_format, FORMATS),
+    )
     output = Output.standard(color, quiet)
-    with session(package_path, config=config, isolated=isolated, select=select, ignore=ignore, extend_select=extend_select, targets=target) as run:
-        files = api.find_models(paths, run)
+    with session_for(options) as session:
+        files = api.find_models(paths, session)
         with Progress(output) as progress:
-            found = api.run(files, mappings, "all", run, jobs=jobs, progress=progress.update)
+            found = api.run(files, session, progress=progress.update)
         report_unreadable(output, found.unreadable)
-        report.reporter(output_format)(found.results, output, "lint", run.sources)
+        report.reporter(options.format)(found.results, output, "lint", session.sources)
     if found.unreadable:
         raise SystemExit(Exit.CANNOT_RUN)
     if not exit_zero and any(d.severity.rank >= Severity.WARNING.rank for r in found.results for d in r.diagnostics):

@@ -31,7 +31,7 @@ def rules(
     else:
         table = Table("Code", "Name", "Severity", "Default", "In check", "Summary", box=None, pad_edge=False, header_style="bold")
         for rule in registry:
-            cells = (rule.code, rule.name, rule.severity.value, "on" if rule.default else "off", "yes" if rule.in_check else "no", rule.summary)
+            cells = (rule.code, rule.name, rule.severity.value, "on" if rule.default else "off", "yes" if rules_format.in_check(rule) else "no", rule.summary)
             table.add_row(*(Text(cell) for cell in cells))
         output.out.print(table)
 

@@ -9,6 +9,7 @@ import typer
 from .. import api
 from ..model.kinematics import roots
 from ..model.targets import build, profile
+from ..options import Options, RuleSet
 from ..report.escape import escape
 from ..report.console import Output, write
 from ..report.lines import diagnostic_lines
@@ -16,7 +17,7 @@ from ..report.result import Result
 from ..report.targets import build_dict, joint_notes, link_notes
 from ..report.targets import summary as target_summary
 from ..report.tree import cut, summarise, text_lines, tree_json, tree_rows
-from ..rules import REGISTRY
+from ..rules import REGISTRY, Kind
 from ..rules.suggestions import close_matches
 from ..session import Session
 from .common import (
@@ -30,7 +31,7 @@ from .common import (
     choose,
     fail,
     format_option,
-    session,
+    session_for,
     split_inputs,
 )
 
@@ -68,9 +69,10 @@ def tree(
     if len(paths) != 1:
         raise fail(f"tree takes one input file, got {len(paths)}")
     output = Output.standard(color)
-    with session(package_path, config=config, isolated=isolated) as run:
-        result = load_model(paths[0], mappings, run)
-        has_errors = report_errors(result, output, run)
+    options = Options(RuleSet.CHECK, tuple(mappings.items()), tuple(package_path or ()), config, isolated, format=output_format)
+    with session_for(options) as session:
+        result = load_model(paths[0], session)
+        has_errors = report_errors(result, output, session)
         start = start_link(result, from_link, output)
         if start is None:
             raise SystemExit(Exit.PROBLEMS)
@@ -80,7 +82,7 @@ def tree(
         shown = cut(rows, max_depth)
         builds = [build(result.loaded, profile(text)) for value in target or () for text in value.split(",")]
         notes = target_notes(builds)
-        if output_format == "json":
+        if options.format == "json":
             text = tree_json(robot, shown, summary)
             if builds:
                 import json
@@ -105,23 +107,23 @@ def target_notes(builds) -> dict[str, str]:
     return {name: "; ".join(found) for name, found in notes.items()}
 
 
-def load_model(path: str, mappings: dict[str, str], run: Session) -> Result:
+def load_model(path: str, session: Session) -> Result:
     """One input to draw, with its configuration and the rules `check` runs (its
     errors are the model's errors, as `check` reports them): the first argument
-    set ``[tool.urdfcli] models`` lists for it."""
-    config = api.configured(run)(path)
+    set ``[tool.urdfcli] models`` lists for it, under the command line's."""
+    config = api.configured(session)(path)
     first_set = (config.argument_sets(path) or [{}])[0]
-    found = api.check_target(api.Target(path), {**first_set, **mappings}, "check", run)
+    found = api.check_target(api.Target(path), session.using(session.options.but(arguments=tuple({**first_set, **session.options.mappings}.items()))))
     if isinstance(found, str):
         raise fail(found)
     return found
 
 
-def report_errors(result: Result, output: Output, run: Session) -> bool:
+def report_errors(result: Result, output: Output, session: Session) -> bool:
     """Print the model's errors on stderr as `check` prints them; whether there were any.
     A missing or unreadable mesh is no error of the tree: it is left to `check`."""
-    errors = [d for d in result.errors if not REGISTRY[d.code].files]
-    write(output.err, (line for d in errors for line in diagnostic_lines(d, run.sources)))
+    errors = [d for d in result.errors if REGISTRY[d.code].kind is not Kind.FILES]
+    write(output.err, (line for d in errors for line in diagnostic_lines(d, session.sources)))
     loaded = result.loaded
     return bool(errors) or loaded is None or not loaded.modelled
 

@@ -28,13 +28,12 @@ from ..report import fixes
 from ..report.escape import escape
 from ..report.inertia import LinkReport
 from ..report.result import Result
-from ..rules import REGISTRY
+from ..rules import REGISTRY, Remedy
+from ..options import Options, RuleSet
 from ..session import Session
 from . import actions, navigation
 from .outline import Outline, encoded, outline
 from .places import Place, offset, offset_place, token_place
-
-CHECKS = "all"  # what `urdfcli lint` runs: an editor shows every rule the configuration selects
 
 
 class Mark(NamedTuple):
@@ -63,7 +62,7 @@ class Fix(NamedTuple):
 
 class Engine:
     def __init__(self, package_paths: tuple[str, ...] = ()) -> None:
-        self.session = Session(package_paths)
+        self.session = Session(Options(RuleSet.LINT, package_paths=package_paths))  # an editor shows every rule the configuration selects
         self.texts: dict[str, str] = {}  # the editor's texts given to the session
         self.runs: dict[str, api.Run] = {}  # each open file's last check
         self._outlines: dict[str, tuple[str, Outline]] = {}  # file -> (text, its last well-formed outline)
@@ -96,7 +95,7 @@ class Engine:
         """Check one open file with the editor's texts standing for their files."""
         self.sync(texts)
         try:
-            run = api.run([path], {}, CHECKS, self.session)
+            run = api.run([path], self.session)
         except api.UsageError as error:
             self.runs.pop(path, None)
             return Checked({path: [self._problem(path, f"urdfcli cannot check this file: {error}")]}, frozenset({path}))
@@ -228,7 +227,7 @@ class Engine:
         if edit is not None:
             found.append(Fix(f"Silence {code} on this element (noqa comment)", ((offset_place(path, source, edit.start, edit.end), edit.text),)))
         rule = REGISTRY.get(code)
-        if rule is not None and rule.inertial_fix:
+        if rule is not None and rule.remedy is Remedy.INERTIAL:
             found += [fix for link in subjects if (fix := self._inertial_fix(path, code, link)) is not None]
         return found
 

@@ -74,7 +74,7 @@ class Config(NamedTuple):
         return cls(select=(ALL,))
 
     def overridden(
-        self, select: list[str] | None = None, ignore: list[str] | None = None, extend_select: list[str] | None = None, targets: list[str] | None = None
+        self, select: tuple[str, ...] = (), ignore: tuple[str, ...] = (), extend_select: tuple[str, ...] = (), targets: tuple[Profile, ...] = ()
     ) -> "Config":
         """The command line over the file: --select and --target replace, --ignore and --extend-select add."""
         where = "on the command line"
@@ -86,7 +86,7 @@ class Config(NamedTuple):
         if extend_select:
             changes["extend_select"] = self.extend_select + _selectors(",".join(extend_select), where)
         if targets:
-            changes["targets"] = _profiles(targets, where)
+            changes["targets"] = tuple(targets)
         return self._replace(**changes)
 
     # -- questions asked while linting -----------------------------------------

@@ -1,12 +1,12 @@
 """The rules on a loaded model, and what configuration and suppressions leave of them.
 
-:func:`lint` runs the rules a command asks for (``checks``), with the options
-the configuration gives; keeps what the configuration selects for each file;
-drops what suppression comments silence (reporting the comments that silence
-nothing); and gives each diagnostic its severity: the configured one, else the
-one its rule chose, else its rule's default. ``check``, ``lint``, ``inertia``,
-``tree`` and ``graph`` all go through it, so that configuration and ``noqa``
-comments mean the same everywhere.
+:func:`lint` runs the rules of a rule set, with the options the configuration
+gives; keeps what the configuration selects for each file; drops what
+suppression comments silence (reporting the comments that silence nothing); and
+gives each diagnostic its severity: the configured one, else the one its rule
+chose, else its rule's default. ``check``, ``lint``, ``inertia``, ``tree`` and
+``graph`` all go through it, so that configuration and ``noqa`` comments mean
+the same everywhere.
 """
 
 from __future__ import annotations
@@ -14,29 +14,23 @@ from __future__ import annotations
 from ..diagnostics import Diagnostic
 from ..model.load import Loaded
 from ..read.document import SUPPRESSION_MARK
-from ..rules import REGISTRY, Rule
+from ..rules import REGISTRY, Kind, Rule, RuleSet
 from . import suppressions
 from .config import Config
 
-CHECKS = ("none", "check", "all")
-"""Which rules a command runs: only those that judge the tree's structure ("none"),
-those of ``check``, or every rule ("all")."""
+
+def runs(rule: Rule, rule_set: RuleSet) -> bool:
+    """Whether a run of ``rule_set`` runs the check ``rule`` (a target rule: for the targets asked for)."""
+    return rule.function is not None and rule_set.holds(rule.rule_set)
 
 
-def runs(rule: Rule, checks: str) -> bool:
-    """Whether a command running ``checks`` runs the check ``rule`` (a target rule: for the targets asked for)."""
-    if rule.target is not None:
-        return checks != "none"
-    return rule.function is not None and (rule.always or checks == "all" or (checks == "check" and rule.in_check))
-
-
-def ran(code: str, checks: str) -> bool:
-    """Whether the diagnostics of ``code`` can be there (a rule reported while reading always can)."""
+def ran(code: str, rule_set: RuleSet) -> bool:
+    """Whether the diagnostics of ``code`` can be there (a rule said while reading always can)."""
     rule = REGISTRY.get(code)
-    return rule is None or rule.function is None or runs(rule, checks)
+    return rule is None or rule.function is None or runs(rule, rule_set)
 
 
-def run_rules(loaded: Loaded, config: Config, checks: str) -> list[Diagnostic]:
+def run_rules(loaded: Loaded, config: Config, rule_set: RuleSet) -> list[Diagnostic]:
     """What the rules find, each with the options the configuration gives it. A rule
     the configuration turns off everywhere does not run. The rules on the xacro
     sources run when the caller gave them (``loaded.sources``), whether or not a
@@ -44,27 +38,29 @@ def run_rules(loaded: Loaded, config: Config, checks: str) -> list[Diagnostic]:
     options = config.rule_options()
     found: list[Diagnostic] = []
     for rule in REGISTRY.values():
-        ready = loaded.sources is not None if rule.sources else loaded.modelled
-        if not ready or not runs(rule, checks) or not (rule.always or config.enabled(rule)):
+        if not runs(rule, rule_set):
             continue
-        if rule.target is None:
-            found.extend(rule.run(loaded, options.get(rule.code)))
+        ready = loaded.sources is not None if rule.kind is Kind.SOURCES else loaded.modelled
+        if not ready or not (rule.kind is Kind.TREE or config.enabled(rule)):
+            continue
+        if rule.kind is not Kind.TARGET:
+            found.extend(rule.run(loaded, rule.given(options.get(rule.code))))
             continue
         for profile in config.targets:
             if profile.target == rule.consumer:
-                found.extend(rule.run(loaded, profile=profile))
+                found.extend(rule.run(loaded, rule.given(profile=profile)))
     return found
 
 
-def lint(loaded: Loaded, config: Config, checks: str = "all") -> list[Diagnostic]:
+def lint(loaded: Loaded, config: Config, rule_set: RuleSet = RuleSet.LINT) -> list[Diagnostic]:
     """Every diagnostic of a loaded model that its configuration and suppressions leave."""
-    return configure(loaded, [*loaded.diagnostics, *run_rules(loaded, config, checks)], config, checks)
+    return configure(loaded, [*loaded.diagnostics, *run_rules(loaded, config, rule_set)], config, rule_set)
 
 
-def configure(loaded: Loaded, diagnostics: list[Diagnostic], config: Config, checks: str = "all") -> list[Diagnostic]:
+def configure(loaded: Loaded, diagnostics: list[Diagnostic], config: Config, rule_set: RuleSet = RuleSet.LINT) -> list[Diagnostic]:
     """``diagnostics`` found on ``loaded``, after configuration and suppression comments,
     each with its severity, in file order. A suppression naming a rule that did not
-    run under ``checks`` is not reported as unused."""
+    run in ``rule_set`` is not reported as unused."""
     path = loaded.path
     document = loaded.document
 
@@ -74,8 +70,8 @@ def configure(loaded: Loaded, diagnostics: list[Diagnostic], config: Config, che
     # Why nothing was checked (an unreadable model) is never selected away, nor silenced;
     # what the source rules found in its files is configured as anywhere.
     unreadable = not document.readable
-    always = [d for d in diagnostics if unreadable and not _on_sources(d.code)]
-    selected = [d for d in diagnostics if not (unreadable and not _on_sources(d.code)) and enabled(d.code, d.path)]
+    always = [d for d in diagnostics if unreadable and not _is(d, Kind.SOURCES)]
+    selected = [d for d in diagnostics if not (unreadable and not _is(d, Kind.SOURCES)) and enabled(d.code, d.path)]
     if unreadable and not selected:
         found = []
     else:
@@ -88,18 +84,19 @@ def configure(loaded: Loaded, diagnostics: list[Diagnostic], config: Config, che
         texts = ((file, document.sources.text(file, containing=SUPPRESSION_MARK)) for file in sorted(named.values()))
         found = [s for file, text in texts if text is not None for s in suppressions.parse(file, text)]
     written = document.origins.written() if found and document.origins is not None else None
-    kept = suppressions.apply(selected, found, lambda code: ran(code, checks) and enabled(code, path), written)
+    kept = suppressions.apply(selected, found, lambda code: ran(code, rule_set) and enabled(code, path), written)
     if unreadable:  # whether a comment silences anything is known only when every rule ran
-        kept = [d for d in kept if d.code not in ("U001", "U002")] + always
-    kept = [d for d in kept if d.code not in ("U001", "U002") or enabled(d.code, d.path)]
+        kept = [d for d in kept if not _is(d, Kind.SUPPRESSIONS)] + always
+    kept = [d for d in kept if not _is(d, Kind.SUPPRESSIONS) or enabled(d.code, d.path)]
     kept = [with_severity(d, config) for d in kept]
     kept.sort(key=Diagnostic.sort_key)
     return kept
 
 
-def _on_sources(code: str) -> bool:
-    rule = REGISTRY.get(code)
-    return rule is not None and rule.sources
+def _is(diagnostic: Diagnostic, kind: Kind) -> bool:
+    """Whether a diagnostic's rule is of this kind."""
+    rule = REGISTRY.get(diagnostic.code)
+    return rule is not None and rule.kind is kind
 
 
 def with_severity(diagnostic: Diagnostic, config: Config) -> Diagnostic:

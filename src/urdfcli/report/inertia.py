@@ -12,7 +12,7 @@ from ..model.inertia import Assessment, Body, assess, declared_tensor, implied, 
 from ..model.load import Loaded
 from ..model.massprops import number, tensor_text
 from ..model.robot import Link
-from ..rules import REGISTRY
+from ..rules import REGISTRY, Remedy
 from .console import Line, Output, write
 from .escape import escape
 from .lines import diagnostic_dict, diagnostic_lines, plural
@@ -58,7 +58,7 @@ def build(loaded: Loaded, problems: list[Diagnostic], tolerance: float = masspro
 
 def flagged(audit: Audit) -> list[LinkReport]:
     """Links with a problem that a new <inertial> fixes: those a uniform body is suggested for."""
-    return [entry for entry in audit.links if any(REGISTRY[d.code].inertial_fix for d in entry.problems)]
+    return [entry for entry in audit.links if any(REGISTRY[d.code].remedy is Remedy.INERTIAL for d in entry.problems)]
 
 
 # -- JSON ------------------------------------------------------------------------------

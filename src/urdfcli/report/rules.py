@@ -5,7 +5,7 @@ from __future__ import annotations
 import json
 import re
 
-from ..rules import Rule
+from ..rules import Rule, RuleSet
 from ..version import __version__
 
 PREFIXES = {
@@ -31,9 +31,14 @@ def ordered(rules) -> list[Rule]:
     return sorted(rules, key=lambda r: (order.index(r.code[0]) if r.code[0] in order else len(order), r.code))
 
 
+def in_check(rule: Rule) -> bool:
+    """Whether ``urdfcli check`` reports the rule."""
+    return RuleSet.CHECK.holds(rule.rule_set)
+
+
 def facts(rule: Rule) -> str:
     """One line: severity, on or off by default, and where it is reported."""
-    where = "check and lint" if rule.in_check else "lint"
+    where = "check and lint" if in_check(rule) else "lint"
     parts = [f"severity {rule.severity.value}", "on by default" if rule.default else "off by default (select it)", f"reported by {where}"]
     if rule.target is not None:
         parts[1:2] = [f"runs with --target {rule.consumer}" + (f" (examples: --target {rule.target})" if rule.target != rule.consumer else "")]
@@ -68,7 +73,8 @@ def as_json(rules: list[Rule]) -> str:
                 "name": r.name,
                 "severity": r.severity.value,
                 "default": r.default,
-                "in_check": r.in_check,
+                "kind": r.kind.value,
+                "in_check": in_check(r),
                 "urdfdom": r.urdfdom,
                 "target": r.target,
                 "summary": r.summary,

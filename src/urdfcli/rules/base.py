@@ -1,19 +1,23 @@
 """What a rule is: its code, kebab-case name, default severity, whether it is on
-by default, its options and its documentation, in one place.
+by default, its kind, the rule set it belongs to, its options and its
+documentation, in one place.
 
-A rule is either *declared* (:func:`declare`: emitted while the model is read
-or expanded, such as a missing attribute or a malformed number) or a *check*
-(:func:`check`: a function over the loaded model that yields diagnostics).
+A rule's :class:`Kind` says what it reads, and so when it runs. A rule said
+while a model is read or expanded (a missing attribute, a malformed number) is
+*declared* (:func:`declare`); any other is a *check* (:func:`check`): a function
+``rule(loaded, given)`` over the loaded model that yields diagnostics, ``given``
+holding its options and, for a target rule, the consumer's profile.
 Every rule's documentation has the same four sections (see :data:`SECTIONS`);
 :func:`explain` writes them for declared rules, a check's docstring holds them.
 """
 
 from __future__ import annotations
 
-import functools
 import re
-from collections.abc import Callable, Iterator
+from collections.abc import Callable, Iterator, Mapping
+from enum import Enum
 from inspect import cleandoc
+from types import MappingProxyType
 from typing import TYPE_CHECKING, Any, NamedTuple
 
 from ..diagnostics import Severity
@@ -22,9 +26,51 @@ from .suggestions import close_matches
 if TYPE_CHECKING:
     from ..diagnostics import Diagnostic
     from ..model.load import Loaded
+    from ..model.targets import Profile
 
 ERROR, WARNING, INFO = Severity.ERROR, Severity.WARNING, Severity.INFO
 SECTIONS = ("What it does", "Why is this bad?", "Example", "Use instead")
+
+
+class RuleSet(Enum):
+    """Which rules a run runs, each set holding the one before it: the rules on the
+    tree's structure (``tree``, ``graph``, ``inertia``), those of ``check``, or every
+    rule (``lint``)."""
+
+    TREE = "tree"
+    CHECK = "check"
+    LINT = "lint"
+
+    def holds(self, other: RuleSet) -> bool:
+        """Whether this set holds every rule of ``other``."""
+        order = list(RuleSet)
+        return order.index(other) <= order.index(self)
+
+
+class Kind(Enum):
+    """What a rule reads, which decides when it runs."""
+
+    READING = "reading"  # said while the input is read or expanded (declared: no function)
+    SUPPRESSIONS = "suppressions"  # said of the suppression comments, once every other rule has run
+    LOADING = "loading"  # said by a consumer's own loader (``check --load``)
+    TREE = "tree"  # the links and joints as a tree: runs in every command, whatever the selection
+    MODEL = "model"  # the robot model
+    MASS = "mass"  # the mass properties: `inertia` audits them, and a new <inertial> fixes what they find
+    FILES = "files"  # a file the model names (a mesh), not the model: tree, graph and check_urdf's format leave it out
+    SOURCES = "sources"  # the xacro files as written: runs even when no robot was read
+    TARGET = "target"  # what a consumer makes of the model: runs for the targets asked for
+
+    @property
+    def declared(self) -> bool:
+        """Whether rules of this kind are said by reading, suppressions or a load, not by a function."""
+        return self in (Kind.READING, Kind.SUPPRESSIONS, Kind.LOADING)
+
+
+class Remedy(Enum):
+    """What fixes what a rule finds, where urdfcli can offer it."""
+
+    NONE = "none"
+    INERTIAL = "inertial"  # a new <inertial>: a uniform body filling the link's geometry (``inertia --suggest``)
 
 
 class Option(NamedTuple):
@@ -58,22 +104,34 @@ class Option(NamedTuple):
         raise ValueError(f"option '{self.name}' must be a {kind}, not {value!r}")
 
 
+NO_OPTIONS: Mapping[str, Any] = MappingProxyType({})
+
+
+class Given(NamedTuple):
+    """What a check is run with besides the model: its options (every one, the defaults
+    filled in) and, for a target rule, the consumer's profile."""
+
+    options: Mapping[str, Any] = NO_OPTIONS
+    profile: Profile | None = None
+
+
+Function = Callable[["Loaded", Given], Iterator["Diagnostic"]]
+
+
 class Rule(NamedTuple):
     code: str
     name: str
     severity: Severity
     summary: str
     doc: str = ""
-    urdfdom: bool = False  # check_urdf rejects (prints an error for) this too
+    kind: Kind = Kind.READING
+    rule_set: RuleSet = RuleSet.CHECK  # the smallest rule set that reports it
     default: bool = True  # on unless selected explicitly
-    in_check: bool = True  # reported by `urdfcli check` (else `lint`/`inertia` only)
+    urdfdom: bool = False  # check_urdf rejects (prints an error for) this too
+    remedy: Remedy = Remedy.NONE
     options: tuple[Option, ...] = ()
-    function: Callable[..., Iterator["Diagnostic"]] | None = None
-    always: bool = False  # runs on every model read, whatever the command (the tree's structure)
-    inertial_fix: bool = False  # a new <inertial> fixes what it finds (`inertia --suggest` prints one)
-    sources: bool = False  # judges the xacro sources (``loaded.sources``), so runs even when no robot was read
-    files: bool = False  # judges a file the model names (a mesh), not the model: tree, graph and check_urdf's format leave it out
-    target: str | None = None  # a consumer's rule (``mujoco``, or the profile its examples use, ``pinocchio:mimic``): runs only for --target
+    function: Function | None = None
+    target: str | None = None  # a target rule's consumer (``mujoco``), or the profile its examples use (``pinocchio:mimic``)
 
     @property
     def consumer(self) -> str | None:
@@ -91,44 +149,41 @@ class Rule(NamedTuple):
         known = [o.name for o in self.options]
         raise KeyError(f"rule {self.code} ({self.name}) has no option '{name}'" + _did_you_mean(name, known) + (f"; its options are {', '.join(known)}" if known else "; it has no options"))
 
-    def run(self, loaded: "Loaded", options: dict[str, Any] | None = None, profile: Any = None) -> Iterator["Diagnostic"]:
-        """The rule's diagnostics on a loaded model, with options over the defaults; a
-        target rule's for the consumer's ``profile`` (a :class:`urdfcli.model.targets.Profile`)."""
-        if self.function is None:
-            return iter(())
-        if self.target is not None:
-            return self.function(loaded, profile)
-        return self.function(loaded, options) if self.options else self.function(loaded)
+    def given(self, options: Mapping[str, Any] | None = None, profile: Profile | None = None) -> Given:
+        """What the rule is run with: ``options`` over its defaults, and a target rule's profile."""
+        return Given(MappingProxyType({**self.defaults, **(options or {})}) if self.options else NO_OPTIONS, profile)
+
+    def run(self, loaded: Loaded, given: Given) -> Iterator[Diagnostic]:
+        """The rule's diagnostics on a loaded model (none for a declared rule)."""
+        return self.function(loaded, given) if self.function is not None else iter(())
 
     def sections(self) -> dict[str, str]:
         return sections(self.doc)
 
 
-def declare(code: str, name: str, severity: Severity, summary: str, doc: str = "", **kwargs) -> Rule:
-    """A rule whose diagnostics are made while a model is read or expanded."""
-    return Rule(code, name, severity, summary, cleandoc(doc), **kwargs)
+def declare(code: str, name: str, severity: Severity, summary: str, doc: str = "", kind: Kind = Kind.READING, **kwargs) -> Rule:
+    """A rule said while a model is read or expanded (or of its suppressions, or by a consumer's load)."""
+    if not kind.declared:
+        raise ValueError(f"{code}: a declared rule is said by reading, suppressions or a load, not {kind}")
+    return Rule(code, name, severity, summary, cleandoc(doc), kind, **kwargs)
 
 
-def check(code: str, name: str, severity: Severity, summary: str, options: tuple[Option, ...] = (), doc: str | None = None, **kwargs):
-    """Make a function over a loaded model a rule (its ``rule`` attribute); its
+def check(
+    code: str, name: str, severity: Severity, summary: str, kind: Kind = Kind.MODEL, rule_set: RuleSet = RuleSet.CHECK,
+    options: tuple[Option, ...] = (), doc: str | None = None, target: str | None = None, **kwargs,
+):
+    """Make a function ``rule(loaded, given)`` a rule (its ``rule`` attribute); its
     docstring is the rule's documentation, unless ``doc`` gives it (made with
-    :func:`explain` where rules share their examples).
+    :func:`explain` where rules share their examples). A target rule names its
+    consumer (``target``); a rule on the tree's structure belongs to every rule set."""
+    if kind.declared or (kind is Kind.TARGET) != (target is not None):
+        raise ValueError(f"{code}: a check of kind {kind} {'needs' if kind is Kind.TARGET else 'takes no'} target")
+    if kind is Kind.TREE:
+        rule_set = RuleSet.TREE
 
-    A rule with options gets them as a second argument, a dict holding every
-    option (defaults filled in); called with the model alone it uses the defaults.
-    """
-
-    def register(function):
-        registered = function
-        if options:
-            defaults = {option.name: option.default for option in options}
-
-            @functools.wraps(function)
-            def registered(loaded, values=None):
-                return function(loaded, {**defaults, **(values or {})})
-
+    def register(function: Function):
         text = doc if doc is not None else function.__doc__
-        function.rule = Rule(code, name, severity, summary, cleandoc(text or ""), function=registered, options=tuple(options), **kwargs)
+        function.rule = Rule(code, name, severity, summary, cleandoc(text or ""), kind, rule_set, options=tuple(options), function=function, target=target, **kwargs)
         return function
 
     return register

@@ -9,7 +9,7 @@ from ..model.kinematics import bodies
 from ..model.meshes import input_folder, near_misses, resolved_resources, uri_style
 from ..model.vocabulary import SCHEMA
 from ..read.packages import cmake_project
-from .base import ERROR, INFO, WARNING, check
+from .base import ERROR, INFO, WARNING, Kind, RuleSet, check
 from .meshes import others_there
 from .suggestions import close_matches
 
@@ -30,8 +30,8 @@ def _suggestion(word: str, known) -> str | None:
     return close[0] if close else None
 
 
-@check("D001", "unknown-element", WARNING, "A misspelt element: close to a URDF element missing where it is written.", in_check=False)
-def unknown_element(loaded):
+@check("D001", "unknown-element", WARNING, "A misspelt element: close to a URDF element missing where it is written.", rule_set=RuleSet.LINT)
+def unknown_element(loaded, given):
     """## What it does
     Flags a child element that URDF does not define inside its parent and that
     is one or two letters away from an element missing there, such as
@@ -68,8 +68,8 @@ def unknown_element(loaded):
             yield loaded.diagnostic("D001", f"<{unknown.name}> is not a URDF element inside <{unknown.parent}>; it is ignored", unknown.at, f"did you mean <{unknown.typo_of}>?")
 
 
-@check("D002", "unknown-attribute", WARNING, "A misspelt attribute: close to a URDF attribute missing on its element.", in_check=False)
-def unknown_attribute(loaded):
+@check("D002", "unknown-attribute", WARNING, "A misspelt attribute: close to a URDF attribute missing on its element.", rule_set=RuleSet.LINT)
+def unknown_attribute(loaded, given):
     """## What it does
     Flags an attribute that URDF does not define on its element and that is one
     or two letters away from an attribute the element lacks, such as
@@ -106,8 +106,8 @@ def _belongs_in(tag: str) -> list[str]:
     return sorted(parent for parent, (_, children) in SCHEMA.items() if children and tag in children)
 
 
-@check("D010", "unknown-markup", INFO, "Markup that neither URDF nor a known extension defines, and that is no typo.", in_check=False)
-def unknown_markup(loaded):
+@check("D010", "unknown-markup", INFO, "Markup that neither URDF nor a known extension defines, and that is no typo.", rule_set=RuleSet.LINT)
+def unknown_markup(loaded, given):
     """## What it does
     Notes an element or attribute that neither URDF nor a documented extension
     defines where it is written, and that is not close to a URDF name missing
@@ -160,8 +160,8 @@ def unknown_markup(loaded):
         yield loaded.diagnostic("D010", f"<{unknown.name}> is not URDF markup inside <{unknown.parent}>; URDF consumers ignore it", unknown.at, hint)
 
 
-@check("D011", "gazebo-tag-outside-gazebo", WARNING, "Gazebo markup written outside `<gazebo>`, where Gazebo never reads it.", in_check=False)
-def gazebo_outside_gazebo(loaded):
+@check("D011", "gazebo-tag-outside-gazebo", WARNING, "Gazebo markup written outside `<gazebo>`, where Gazebo never reads it.", rule_set=RuleSet.LINT)
+def gazebo_outside_gazebo(loaded, given):
     """## What it does
     Flags Gazebo markup (`<surface>`, `<mu1>`, `<gravity>`, `<kinematic>`,
     `<selfCollide>`, `<sensor>` in a link, `<material>Gazebo/Grey</material>`,
@@ -209,8 +209,8 @@ def gazebo_outside_gazebo(loaded):
         yield loaded.diagnostic("D011", message, unknowns[0].at, hint)
 
 
-@check("D003", "visual-without-collision", WARNING, "A moving body with visuals but no collision on any of its links.", in_check=False)
-def visual_without_collision(loaded):
+@check("D003", "visual-without-collision", WARNING, "A moving body with visuals but no collision on any of its links.", rule_set=RuleSet.LINT)
+def visual_without_collision(loaded, given):
     """## What it does
     Judges rigid bodies, not links: links joined by fixed joints form one body, as
     simulators lump them. Flags a body carried by a moving joint that has a `<visual>`
@@ -283,8 +283,8 @@ def _package_of(uri: str) -> str | None:
     return match.group(1) if match else None
 
 
-@check("D004", "resource-not-found", ERROR, "A mesh or texture file that does not exist.", files=True)
-def file_not_found(loaded):
+@check("D004", "resource-not-found", ERROR, "A mesh or texture file that does not exist.", kind=Kind.FILES)
+def file_not_found(loaded, given):
     """## What it does
     Resolves each `<mesh filename>` and `<texture filename>` (`package://`,
     `file://`, absolute or relative paths; never a network address) and flags
@@ -363,8 +363,8 @@ def uri_like(loaded, uri: str, path, base) -> str:
     return str(path)
 
 
-@check("D005", "package-uri-not-found", WARNING, "A `package://` URI names a package that cannot be found.", in_check=False)
-def package_not_found(loaded):
+@check("D005", "package-uri-not-found", WARNING, "A `package://` URI names a package that cannot be found.", rule_set=RuleSet.LINT)
+def package_not_found(loaded, given):
     """## What it does
     Flags a `package://NAME/...` mesh or texture whose package cannot be found
     with `-P/--package-path`, `ROS_PACKAGE_PATH`, `AMENT_PREFIX_PATH`, or next
@@ -418,8 +418,8 @@ def _known_names(loaded) -> set[str]:
     return set(loaded.robot.links) | set(loaded.robot.joints)
 
 
-@check("D006", "gazebo-reference-not-found", WARNING, "A `<gazebo reference>` naming no link or joint.", in_check=False)
-def gazebo_reference(loaded):
+@check("D006", "gazebo-reference-not-found", WARNING, "A `<gazebo reference>` naming no link or joint.", rule_set=RuleSet.LINT)
+def gazebo_reference(loaded, given):
     """## What it does
     Flags a `<gazebo reference="...">` block whose reference is neither a link
     nor a joint of the robot.
@@ -452,8 +452,8 @@ def gazebo_reference(loaded):
             yield loaded.diagnostic("D006", f"<gazebo reference='{reference}'> names no link or joint", loaded.robot.place(element), f"did you mean '{close}'?" if close else None)
 
 
-@check("D007", "transmission-joint-not-found", WARNING, "A transmission naming a joint that does not exist.", in_check=False)
-def transmission_joint(loaded):
+@check("D007", "transmission-joint-not-found", WARNING, "A transmission naming a joint that does not exist.", rule_set=RuleSet.LINT)
+def transmission_joint(loaded, given):
     """## What it does
     Flags a `<transmission>` whose `<joint name>` is not a joint of the robot.
 
@@ -503,7 +503,7 @@ def transmission_joint(loaded):
 
 
 @check("D013", "ros2-control-joint-not-found", ERROR, "A `<ros2_control>` joint that names no joint of the robot.")
-def ros2_control_joint(loaded):
+def ros2_control_joint(loaded, given):
     """## What it does
     Flags a `<joint name>` inside `<ros2_control>` that is not a joint of the robot.
 
@@ -554,8 +554,8 @@ def ros2_control_joint(loaded):
                 )
 
 
-@check("D012", "transmission-fixed-joint", WARNING, "A transmission or ros2_control command driving a fixed joint.", in_check=False)
-def transmission_fixed_joint(loaded):
+@check("D012", "transmission-fixed-joint", WARNING, "A transmission or ros2_control command driving a fixed joint.", rule_set=RuleSet.LINT)
+def transmission_fixed_joint(loaded, given):
     """## What it does
     Flags a `<transmission>` whose `<joint name>` is a fixed joint, and a
     `<ros2_control>` joint with a command interface that is a fixed joint.
@@ -653,8 +653,8 @@ def _plugin_references(loaded, tags: set[str]):
                     yield element, name.lstrip("/")
 
 
-@check("D008", "plugin-joint-not-found", WARNING, "A Gazebo plugin parameter naming a joint that does not exist.", in_check=False)
-def plugin_joint(loaded):
+@check("D008", "plugin-joint-not-found", WARNING, "A Gazebo plugin parameter naming a joint that does not exist.", rule_set=RuleSet.LINT)
+def plugin_joint(loaded, given):
     """## What it does
     Flags a Gazebo plugin parameter that names a joint (`leftJoint`,
     `right_joint`, `jointName`, `joint_name`...) when no joint has that name.
@@ -700,8 +700,8 @@ def plugin_joint(loaded):
             yield loaded.diagnostic("D008", f"plugin parameter <{element.tag}> names joint '{name}', which does not exist", loaded.robot.place(element), f"did you mean '{close}'?" if close else None)
 
 
-@check("D009", "plugin-link-not-found", WARNING, "A Gazebo plugin parameter naming a link that does not exist.", in_check=False)
-def plugin_link(loaded):
+@check("D009", "plugin-link-not-found", WARNING, "A Gazebo plugin parameter naming a link that does not exist.", rule_set=RuleSet.LINT)
+def plugin_link(loaded, given):
     """## What it does
     Flags a Gazebo plugin parameter that names a link (`robotBaseFrame`,
     `robot_base_frame`, `bodyName`, `frame_name`...) when no link has that

@@ -15,7 +15,7 @@ from ..model import massprops
 from ..model.inertia import OVERREACH, assess, axes_apart, declared_body, reach
 from ..model.massprops import number, tensor_text
 from ..model.numbers import format_number
-from .base import INFO, WARNING, Option, check
+from .base import INFO, WARNING, Kind, Option, Remedy, RuleSet, check
 from .physics import absorbed, has_invalid_tensor
 
 if TYPE_CHECKING:
@@ -59,8 +59,8 @@ def _implies(found) -> str | None:
     return f"its {found.implied.source} implies {tensor_text(found.expected)}" if found and found.expected else None
 
 
-@check("I007", "placeholder-identity", WARNING, "An inertia tensor that is the identity: a placeholder.", in_check=False, options=(TOLERANCE,), inertial_fix=True)
-def placeholder_identity(loaded, options):
+@check("I007", "placeholder-identity", WARNING, "An inertia tensor that is the identity: a placeholder.", rule_set=RuleSet.LINT, options=(TOLERANCE,), kind=Kind.MASS, remedy=Remedy.INERTIAL)
+def placeholder_identity(loaded, given):
     """## What it does
     Flags ``ixx=iyy=izz=1`` without products of inertia, unless the link's geometry really
     implies it; links sharing this placeholder are named in one diagnostic, at the first
@@ -95,11 +95,11 @@ def placeholder_identity(loaded, options):
     ```
     `urdfcli inertia --suggest` prints the values for each link.
     """
-    links = identity_links(loaded, options)
+    links = identity_links(loaded, given.options)
     if len(links) == 1:
         yield loaded.diagnostic(
             "I007", f"inertia of link '{links[0].name}' is the identity, a placeholder", links[0].inertial.inertia_at,
-            _implies(_assess(loaded, links[0], options)), subjects=(links[0].name,),
+            _implies(_assess(loaded, links[0], given.options)), subjects=(links[0].name,),
         )
     elif links:  # one cause: one diagnostic naming every link, at the first
         yield loaded.diagnostic(
@@ -123,8 +123,8 @@ def identity_links(loaded, options) -> list:
     return found
 
 
-@check("I008", "placeholder-repeated", WARNING, "The same inertia tensor on links of very different sizes.", in_check=False, options=(TOLERANCE,), inertial_fix=True)
-def placeholder_repeated(loaded, options):
+@check("I008", "placeholder-repeated", WARNING, "The same inertia tensor on links of very different sizes.", rule_set=RuleSet.LINT, options=(TOLERANCE,), kind=Kind.MASS, remedy=Remedy.INERTIAL)
+def placeholder_repeated(loaded, given):
     """## What it does
     Flags a tensor repeated on links whose masses or geometries differ by more than a
     factor of two: one diagnostic per tensor, naming the links it does not fit, at the
@@ -166,7 +166,7 @@ def placeholder_repeated(loaded, options):
     </link>
     ```
     """
-    for tensor, wrong, others in placeholder_groups(loaded, options):
+    for tensor, wrong, others in placeholder_groups(loaded, given.options):
         masses = [link.inertial.mass for link in wrong + others]
         if others:  # the tensor of a part, copied onto parts it does not fit
             message = (f"{_naming(wrong)} ({_weights(wrong)}) {'has' if len(wrong) == 1 else 'have'} the inertia tensor ({tensor_text(tensor)}) "
@@ -243,8 +243,8 @@ def geometry_signature(link) -> tuple:
 MIRROR_RATIO = 5.0  # copies of one part this many times apart in mass: one mass is wrong
 
 
-@check("I012", "copies-differ-in-mass", WARNING, "Two links with the same geometry and inertia tensor whose masses are five or more times apart.", in_check=False, inertial_fix=True)
-def copies_differ_in_mass(loaded):
+@check("I012", "copies-differ-in-mass", WARNING, "Two links with the same geometry and inertia tensor whose masses are five or more times apart.", rule_set=RuleSet.LINT, kind=Kind.MASS, remedy=Remedy.INERTIAL)
+def copies_differ_in_mass(loaded, given):
     """## What it does
     Flags links that are copies of one part, the same shapes (by kind, mesh file, scale
     and size, wherever they stand) and the same inertia tensor, when their masses are five
@@ -306,8 +306,8 @@ def copies_differ_in_mass(loaded):
         )
 
 
-@check("I009", "inertia-geometry-mismatch", WARNING, "A declared inertia tensor that the link's geometry proves wrong.", in_check=False, options=(TOLERANCE, DENSITY), inertial_fix=True)
-def geometry_mismatch(loaded, options):
+@check("I009", "inertia-geometry-mismatch", WARNING, "A declared inertia tensor that the link's geometry proves wrong.", rule_set=RuleSet.LINT, options=(TOLERANCE, DENSITY), kind=Kind.MASS, remedy=Remedy.INERTIAL)
+def geometry_mismatch(loaded, given):
     """## What it does
     Flags a declared tensor only when the link's geometry proves it wrong, in one of three ways:
 
@@ -370,7 +370,7 @@ def geometry_mismatch(loaded, options):
     ```
     """
     for link in _declaring(loaded):
-        found = _verdict(loaded, link, options)
+        found = _verdict(loaded, link, given.options)
         if found is not None:
             severity = INFO if absorbed(loaded, link) else None  # turned axes of a link lost in its body: a note
             yield loaded.diagnostic("I009", f"inertia of link '{link.name}': {found.message}", link.inertial.inertia_at, found.hint, subjects=(link.name,))._replace(severity=severity)
@@ -398,8 +398,8 @@ def _rotated_with_shapes(loaded, link, options):
     return found, rotated
 
 
-@check("I010", "inertia-frame-rotated", WARNING, "An inertia tensor not rotated with the geometry it was computed for.", in_check=False, options=(TOLERANCE, DENSITY), inertial_fix=True)
-def frame_rotated(loaded, options):
+@check("I010", "inertia-frame-rotated", WARNING, "An inertia tensor not rotated with the geometry it was computed for.", rule_set=RuleSet.LINT, options=(TOLERANCE, DENSITY), kind=Kind.MASS, remedy=Remedy.INERTIAL)
+def frame_rotated(loaded, given):
     """## What it does
     Flags a tensor that is more than ``tolerance`` (0.1) off its geometry's, but fits
     within it once rotated as the link's shapes are (their shared ``<origin rpy>``), or
@@ -440,7 +440,7 @@ def frame_rotated(loaded, options):
     ```
     """
     for link in _declaring(loaded):
-        match = _rotated_with_shapes(loaded, link, options)
+        match = _rotated_with_shapes(loaded, link, given.options)
         if match is None:
             continue
         found, (rpy, left) = match
@@ -456,8 +456,8 @@ def frame_rotated(loaded, options):
         )
 
 
-@check("I011", "root-inertia", INFO, "The root link carries mass, which KDL ignores.", in_check=False)
-def root_inertia(loaded):
+@check("I011", "root-inertia", INFO, "The root link carries mass, which KDL ignores.", kind=Kind.MASS, rule_set=RuleSet.LINT)
+def root_inertia(loaded, given):
     """## What it does
     Notes (info) a root link with a mass of a gram or more. Lighter roots (the usual
     workaround, a dummy root of 1e-6 kg) are left alone.

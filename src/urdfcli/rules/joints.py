@@ -6,14 +6,14 @@ import math
 
 from ..model.numbers import format_number
 from ..model.robot import MOVING_AXIS_TYPES
-from .base import ERROR, INFO, WARNING, check
+from .base import ERROR, INFO, WARNING, RuleSet, check
 
 FULL_TURN = 2 * math.pi - 1e-3  # a range written as -3.1416..3.1416 is a full turn
 UNIT_TOLERANCE = 1e-3  # an axis this close to length 1 is a unit axis written with few decimals
 
 
 @check("J007", "zero-axis", ERROR, "A moving joint whose axis is the zero vector.")
-def zero_axis(loaded):
+def zero_axis(loaded, given):
     """## What it does
     Flags a revolute, continuous, prismatic or planar joint whose `<axis xyz>` is `0 0 0`.
 
@@ -51,7 +51,7 @@ def zero_axis(loaded):
 
 
 @check("J008", "mimic-joint-not-found", ERROR, "A `<mimic joint>` naming no joint.")
-def mimic_not_found(loaded):
+def mimic_not_found(loaded, given):
     """## What it does
     Flags a `<mimic joint>` that names a joint the robot does not have.
 
@@ -95,7 +95,7 @@ def mimic_not_found(loaded):
 
 
 @check("J009", "mimic-self", ERROR, "A joint that mimics itself.")
-def mimic_self(loaded):
+def mimic_self(loaded, given):
     """## What it does
     Flags a joint whose `<mimic joint>` is the joint itself.
 
@@ -131,7 +131,7 @@ def mimic_self(loaded):
 
 
 @check("J010", "limit-lower-above-upper", WARNING, "A joint limit whose lower bound is above its upper bound.")
-def lower_above_upper(loaded):
+def lower_above_upper(loaded, given):
     """## What it does
     Flags a revolute or prismatic joint whose `lower` limit is above its `upper` limit.
 
@@ -172,8 +172,8 @@ def lower_above_upper(loaded):
             )
 
 
-@check("J011", "axis-not-unit", WARNING, "A joint axis that is not a unit vector.", in_check=False)
-def axis_not_unit(loaded):
+@check("J011", "axis-not-unit", WARNING, "A joint axis that is not a unit vector.", rule_set=RuleSet.LINT)
+def axis_not_unit(loaded, given):
     """## What it does
     Flags a moving joint whose axis is not a unit vector: its length is more than
     0.1 % from 1. Axes written with a few decimals (`0.707 0.707 0`, NAO's
@@ -213,8 +213,8 @@ def axis_not_unit(loaded):
             yield loaded.diagnostic("J011", f"axis of joint '{joint.name}' has length {norm:.6g}, not 1", joint.part("axis"), hint)
 
 
-@check("J012", "continuous-with-limits", WARNING, "A continuous joint given a range narrower than a turn.", in_check=False)
-def continuous_with_limits(loaded):
+@check("J012", "continuous-with-limits", WARNING, "A continuous joint given a range narrower than a turn.", rule_set=RuleSet.LINT)
+def continuous_with_limits(loaded, given):
     """## What it does
     Flags a continuous joint whose `<limit>` gives both `lower` and `upper`, spanning
     less than a full turn. Left alone: a range of a turn or more (`-3.14159` to
@@ -261,8 +261,8 @@ def continuous_with_limits(loaded):
             )
 
 
-@check("J013", "limit-without-range", WARNING, "A revolute or prismatic joint whose <limit> gives neither lower nor upper.", in_check=False)
-def limit_without_range(loaded):
+@check("J013", "limit-without-range", WARNING, "A revolute or prismatic joint whose <limit> gives neither lower nor upper.", rule_set=RuleSet.LINT)
+def limit_without_range(loaded, given):
     """## What it does
     Flags a revolute or prismatic joint whose `<limit>` has neither `lower` nor `upper`.
     A limit giving one of the two is left alone (the other is 0, which can be meant).
@@ -308,8 +308,8 @@ def limit_without_range(loaded):
             )
 
 
-@check("J014", "limit-effort-velocity-zero", WARNING, "A moving joint whose effort or velocity limit is zero or negative.", in_check=False)
-def effort_velocity_zero(loaded):
+@check("J014", "limit-effort-velocity-zero", WARNING, "A moving joint whose effort or velocity limit is zero or negative.", rule_set=RuleSet.LINT)
+def effort_velocity_zero(loaded, given):
     """## What it does
     Flags a revolute, continuous or prismatic joint, not a mimic, whose `<limit>` gives
     `effort` or `velocity` as 0 or less. A joint that no `<transmission>` and no
@@ -385,8 +385,8 @@ def driven_joints(loaded) -> set[str]:
     return {element.get("name") for tag in ("transmission", "ros2_control") for block in robot.blocks(tag) for element in block.iterfind("joint")}
 
 
-@check("J015", "soft-limits-outside-limits", WARNING, "A safety controller's soft limits outside the joint's limits.", in_check=False)
-def soft_limits_outside_limits(loaded):
+@check("J015", "soft-limits-outside-limits", WARNING, "A safety controller's soft limits outside the joint's limits.", rule_set=RuleSet.LINT)
+def soft_limits_outside_limits(loaded, given):
     """## What it does
     Flags a revolute or prismatic joint whose `<safety_controller>` sets
     `soft_lower_limit` below its `<limit lower>`, or `soft_upper_limit` above its

@@ -17,7 +17,7 @@ from ..model.kinematics import bodies
 from ..model.meshes import GeometryUnknown, MeshUse, mesh_uses, resolved_resources, stat_problem, summary_of, uri_style
 from ..model.poses import body_poses
 from ..model.units import PLACEHOLDER, mis_scaled, unit_verdict
-from .base import ERROR, INFO, WARNING, check
+from .base import ERROR, INFO, WARNING, Kind, RuleSet, check
 
 HINTS = {
     "lfs": "fetch the LFS files: `git lfs install && git lfs pull` (in CI, check out with LFS, e.g. actions/checkout's `lfs: true`)",
@@ -49,8 +49,8 @@ def _others(uses: list, what: str = "use") -> str:
     return f" (and {extra} other {what}{'s' if extra > 1 else ''})" if extra else ""
 
 
-@check("F001", "mesh-unreadable", ERROR, "A mesh file that is not a mesh its format can read: empty, a Git LFS pointer, truncated or undecodable.", files=True)
-def mesh_unreadable(loaded):
+@check("F001", "mesh-unreadable", ERROR, "A mesh file that is not a mesh its format can read: empty, a Git LFS pointer, truncated or undecodable.", kind=Kind.FILES)
+def mesh_unreadable(loaded, given):
     """## What it does
     Flags a mesh file that exists but that no consumer can read: an empty file, a
     Git LFS pointer (the repository was cloned without its LFS files), a binary STL
@@ -95,8 +95,8 @@ def _problem(loaded, use: MeshUse, path: Path):
     return summary_of(loaded, use).problem
 
 
-@check("F002", "mesh-path-not-portable", WARNING, "A mesh or texture named by an absolute, `file://` or relative path instead of `package://`.", in_check=False)
-def path_not_portable(loaded):
+@check("F002", "mesh-path-not-portable", WARNING, "A mesh or texture named by an absolute, `file://` or relative path instead of `package://`.", rule_set=RuleSet.LINT)
+def path_not_portable(loaded, given):
     """## What it does
     Flags a `<mesh filename>` or `<texture filename>` that names an existing file by
     a `file://` URI, an absolute path or a path relative to the URDF, and names the
@@ -152,8 +152,8 @@ def _package_uri(loaded, path: Path) -> str | None:
     return f"package://{name}/{path.resolve().relative_to(folder).as_posix()}" if name else None
 
 
-@check("F003", "mesh-units", WARNING, "A mesh in millimetres, centimetres or inches used as if in metres (or scaled down twice).", in_check=False)
-def mesh_units(loaded):
+@check("F003", "mesh-units", WARNING, "A mesh in millimetres, centimetres or inches used as if in metres (or scaled down twice).", rule_set=RuleSet.LINT)
+def mesh_units(loaded, given):
     """## What it does
     Flags a mesh whose size, after its `scale` and COLLADA's `<unit meter>` (which
     RViz and Gazebo apply: assimp's `ColladaLoader::InternReadFile` scales the root
@@ -227,8 +227,8 @@ SIZE_RATIO = 2.5  # bounding-box diagonals this many times apart: not a simplifi
 HEAVY = 20_000  # triangles
 
 
-@check("F004", "collision-visual-mismatch", WARNING, "A collision far smaller or larger than its visual, or away from it.", in_check=False)
-def collision_visual_mismatch(loaded):
+@check("F004", "collision-visual-mismatch", WARNING, "A collision far smaller or larger than its visual, or away from it.", rule_set=RuleSet.LINT)
+def collision_visual_mismatch(loaded, given):
     """## What it does
     Compares the bounding box of the collision shapes with that of the visual shapes:
     of each rigid body (links joined by fixed joints, a collision on a fixed child
@@ -346,8 +346,8 @@ def _diagonal(box) -> float:
     return math.dist(*box)
 
 
-@check("F005", "collision-mesh-heavy", INFO, "A visual mesh of more than 20,000 triangles reused as the collision mesh.", in_check=False)
-def collision_mesh_heavy(loaded):
+@check("F005", "collision-mesh-heavy", INFO, "A visual mesh of more than 20,000 triangles reused as the collision mesh.", rule_set=RuleSet.LINT)
+def collision_mesh_heavy(loaded, given):
     """## What it does
     Notes (info) a link whose collision uses the same mesh file as its visual when
     that mesh has more than 20,000 triangles.
@@ -385,8 +385,8 @@ def collision_mesh_heavy(loaded):
                 )
 
 
-@check("F006", "collision-mesh-open", INFO, "A collision mesh that is not watertight where its volume is needed.", in_check=False)
-def collision_mesh_open(loaded):
+@check("F006", "collision-mesh-open", INFO, "A collision mesh that is not watertight where its volume is needed.", rule_set=RuleSet.LINT)
+def collision_mesh_open(loaded, given):
     """## What it does
     Notes (info) a collision mesh that is not watertight (an edge not shared by
     exactly two faces wound opposite ways, corners within 2e-8 of the mesh's size

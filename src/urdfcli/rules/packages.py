@@ -10,7 +10,7 @@ from pathlib import Path
 from ..diagnostics import Diagnostic, Location
 from ..model.sources import chain, parameters
 from ..read.xacro_scan import shown
-from .base import WARNING, check
+from .base import WARNING, Kind, RuleSet, check
 
 # what to declare for a package used at build time (an included file, a YAML file read
 # while expanding) and for one used at run time (a mesh, a texture, a parameter file)
@@ -64,8 +64,8 @@ def _at(file, place) -> Location:
     return Location(file.name, line, column)
 
 
-@check("P001", "package-dependency-undeclared", WARNING, "A file uses a package that its package.xml does not declare.", in_check=False, sources=True)
-def dependency_undeclared(loaded) -> Iterator[Diagnostic]:
+@check("P001", "package-dependency-undeclared", WARNING, "A file uses a package that its package.xml does not declare.", kind=Kind.SOURCES, rule_set=RuleSet.LINT)
+def dependency_undeclared(loaded, given) -> Iterator[Diagnostic]:
     """## What it does
     For each file of the model that belongs to a package (a `package.xml` in
     its folder or above), reads every `$(find NAME)`, `file://$(find NAME)` and

@@ -5,7 +5,7 @@ from __future__ import annotations
 from ..model import massprops
 from ..model.kinematics import bodies, body_mass, link_mass, subtree_masses, walk
 from ..model.numbers import format_number
-from .base import ERROR, WARNING, check
+from .base import ERROR, WARNING, Kind, Remedy, check
 
 
 def _inertials(loaded):
@@ -62,8 +62,8 @@ def moments_text(moments) -> str:
     return ", ".join("0" if abs(m) <= 1e-9 * largest else f"{m:.6g}" for m in moments)
 
 
-@check("I001", "negative-mass", ERROR, "A link with negative mass.", inertial_fix=True)
-def negative_mass(loaded):
+@check("I001", "negative-mass", ERROR, "A link with negative mass.", kind=Kind.MASS, remedy=Remedy.INERTIAL)
+def negative_mass(loaded, given):
     """## What it does
     Flags a link whose `<mass value>` is negative: an error, like a negative size.
 
@@ -91,8 +91,8 @@ def negative_mass(loaded):
             yield loaded.diagnostic("I001", f"link '{link.name}' has negative mass {format_number(inertial.mass)}", inertial.mass_at, subjects=(link.name,))
 
 
-@check("I002", "massless-moving-link", WARNING, "A joint that moves only massless links.", inertial_fix=True)
-def massless_moving_link(loaded):
+@check("I002", "massless-moving-link", WARNING, "A joint that moves only massless links.", kind=Kind.MASS, remedy=Remedy.INERTIAL)
+def massless_moving_link(loaded, given):
     """## What it does
     Flags a moving joint when nothing it moves has mass: the link it carries and every
     link below it are massless (no `<inertial>`, or mass 0). Reported once, at the
@@ -165,8 +165,8 @@ def _branch(robot, top: str) -> list[str]:
     return [link for _, _, link in walk(robot, top)]
 
 
-@check("I003", "massless-with-inertia", WARNING, "A link with zero mass but a non-zero inertia tensor.", inertial_fix=True)
-def massless_with_inertia(loaded):
+@check("I003", "massless-with-inertia", WARNING, "A link with zero mass but a non-zero inertia tensor.", kind=Kind.MASS, remedy=Remedy.INERTIAL)
+def massless_with_inertia(loaded, given):
     """## What it does
     Flags a link with mass 0 and an inertia tensor that is not all zero. A massless
     link fixed to a body with mass, whose tensor adds less than 5 % to the body's
@@ -199,8 +199,8 @@ def massless_with_inertia(loaded):
             yield loaded.diagnostic("I003", f"link '{link.name}' has mass 0 but a non-zero inertia tensor", inertial.inertia_at, subjects=(link.name,))
 
 
-@check("I004", "point-mass", WARNING, "A link with positive mass and an all-zero inertia tensor.", inertial_fix=True)
-def point_mass(loaded):
+@check("I004", "point-mass", WARNING, "A link with positive mass and an all-zero inertia tensor.", kind=Kind.MASS, remedy=Remedy.INERTIAL)
+def point_mass(loaded, given):
     """## What it does
     Flags a link with positive mass and an all-zero inertia tensor. Elements below
     1e-12 kg·m² count as zero (rounding noise such as `2.4e-35`). A link lighter than
@@ -237,8 +237,8 @@ def point_mass(loaded):
             )
 
 
-@check("I005", "inertia-not-positive-semidefinite", ERROR, "An inertia tensor with a negative principal moment.", inertial_fix=True)
-def not_positive_semidefinite(loaded):
+@check("I005", "inertia-not-positive-semidefinite", ERROR, "An inertia tensor with a negative principal moment.", kind=Kind.MASS, remedy=Remedy.INERTIAL)
+def not_positive_semidefinite(loaded, given):
     """## What it does
     Flags an inertia tensor with a negative principal moment (it is not positive
     semi-definite), including ones made so by off-diagonal terms. Elements below
@@ -275,8 +275,8 @@ def not_positive_semidefinite(loaded):
         )
 
 
-@check("I006", "inertia-triangle-inequality", WARNING, "Principal moments that break the triangle inequality.", inertial_fix=True)
-def triangle_inequality(loaded):
+@check("I006", "inertia-triangle-inequality", WARNING, "Principal moments that break the triangle inequality.", kind=Kind.MASS, remedy=Remedy.INERTIAL)
+def triangle_inequality(loaded, given):
     """## What it does
     Flags a tensor whose principal moments break the triangle inequality
     (A + B >= C for any ordering), with a small relative tolerance. Elements below

@@ -5,7 +5,7 @@ from __future__ import annotations
 import re
 from fnmatch import fnmatchcase
 
-from .base import WARNING, Option, check
+from .base import WARNING, Option, RuleSet, check
 
 SNAKE_CASE = re.compile(r"[a-z][a-z0-9]*(_[a-z0-9]+)*")
 FRAME_EXEMPTIONS = ["base_footprint", "world", "*_frame", "*_optical_frame"]
@@ -24,13 +24,13 @@ def _suffix_rule(loaded, code: str, kind: str, names: dict, options: dict):
 
 @check(
     "S001", "link-name-suffix", WARNING, "A link name that does not end in the link suffix (`_link`).",
-    in_check=False, default=False,
+    rule_set=RuleSet.LINT, default=False,
     options=(
         Option("suffix", "_link", "The suffix every link name ends in."),
         Option("exempt", FRAME_EXEMPTIONS, "Glob patterns of link names that need no suffix."),
     ),
 )
-def link_name_suffix(loaded, options):
+def link_name_suffix(loaded, given):
     """## What it does
     Flags a link whose name does not end in `_link` (option `suffix`), except
     names matching the `exempt` patterns (by default `base_footprint`, `world`,
@@ -50,18 +50,18 @@ def link_name_suffix(loaded, options):
     <link name="arm_link"/>
     ```
     """
-    yield from _suffix_rule(loaded, "S001", "link", loaded.robot.links, options)
+    yield from _suffix_rule(loaded, "S001", "link", loaded.robot.links, given.options)
 
 
 @check(
     "S002", "joint-name-suffix", WARNING, "A joint name that does not end in the joint suffix (`_joint`).",
-    in_check=False, default=False,
+    rule_set=RuleSet.LINT, default=False,
     options=(
         Option("suffix", "_joint", "The suffix every joint name ends in."),
         Option("exempt", [], "Glob patterns of joint names that need no suffix."),
     ),
 )
-def joint_name_suffix(loaded, options):
+def joint_name_suffix(loaded, given):
     """## What it does
     Flags a joint whose name does not end in `_joint` (option `suffix`), except
     names matching the `exempt` patterns.
@@ -90,15 +90,15 @@ def joint_name_suffix(loaded, options):
     </joint>
     ```
     """
-    yield from _suffix_rule(loaded, "S002", "joint", loaded.robot.joints, options)
+    yield from _suffix_rule(loaded, "S002", "joint", loaded.robot.joints, given.options)
 
 
 @check(
     "S003", "name-not-snake-case", WARNING, "A link, joint or material name that is not snake_case.",
-    in_check=False, default=False,
+    rule_set=RuleSet.LINT, default=False,
     options=(Option("exempt", [], "Glob patterns of names that need not be snake_case."),),
 )
-def name_not_snake_case(loaded, options):
+def name_not_snake_case(loaded, given):
     """## What it does
     Flags link, joint and material names that are not snake_case (lower-case
     letters and digits, words joined by single underscores), except names
@@ -121,5 +121,5 @@ def name_not_snake_case(loaded, options):
     robot = loaded.robot
     for kind, names in (("link", robot.links), ("joint", robot.joints), ("material", robot.materials)):
         for name, item in names.items():
-            if name and not SNAKE_CASE.fullmatch(name) and not _exempt(name, options["exempt"]):
+            if name and not SNAKE_CASE.fullmatch(name) and not _exempt(name, given.options["exempt"]):
                 yield loaded.diagnostic("S003", f"{kind} name '{name}' is not snake_case", item.at)

@@ -8,7 +8,7 @@ from __future__ import annotations
 
 from ..diagnostics import Severity
 from ..model.kinematics import build_graph, has_loop, joined, roots
-from .base import check
+from .base import Kind, check
 from .suggestions import close_matches
 
 ERROR = Severity.ERROR
@@ -35,8 +35,8 @@ def link_hint(missing: str, robot, other_end: str | None = None) -> str:
     return f'every link a joint names must be defined: add <link name="{missing}"/> or fix the name'
 
 
-@check("J005", "joint-link-not-found", ERROR, "A joint names a parent or child link that does not exist.", urdfdom=True, always=True)
-def joint_link_not_found(loaded):
+@check("J005", "joint-link-not-found", ERROR, "A joint names a parent or child link that does not exist.", urdfdom=True, kind=Kind.TREE)
+def joint_link_not_found(loaded, given):
     """## What it does
     Flags a joint whose parent or child link is not defined.
 
@@ -73,8 +73,8 @@ def joint_link_not_found(loaded):
                 )
 
 
-@check("T003", "multiple-parents", ERROR, "A link is the child of more than one joint.", always=True)
-def multiple_parents(loaded):
+@check("T003", "multiple-parents", ERROR, "A link is the child of more than one joint.", kind=Kind.TREE)
+def multiple_parents(loaded, given):
     """## What it does
     Flags a link that is the child of two or more joints.
 
@@ -113,8 +113,8 @@ def multiple_parents(loaded):
             )
 
 
-@check("T004", "kinematic-loop", ERROR, "The joints form a loop.", always=True)
-def kinematic_loop(loaded):
+@check("T004", "kinematic-loop", ERROR, "The joints form a loop.", kind=Kind.TREE)
+def kinematic_loop(loaded, given):
     """## What it does
     Flags joints that form a closed loop anywhere in the model, even below a proper root.
 
@@ -167,8 +167,8 @@ def _roots(loaded) -> list[str]:
     return [root for root in roots(robot) if root not in cut_off] or roots(robot)
 
 
-@check("T001", "multiple-roots", ERROR, "More than one link has no parent.", urdfdom=True, always=True)
-def multiple_roots(loaded):
+@check("T001", "multiple-roots", ERROR, "More than one link has no parent.", urdfdom=True, kind=Kind.TREE)
+def multiple_roots(loaded, given):
     """## What it does
     Flags a model whose links do not form one tree: more than one link is the child of no joint.
 
@@ -201,8 +201,8 @@ def multiple_roots(loaded):
         )
 
 
-@check("T002", "no-root", ERROR, "Every link has a parent: there is no root.", urdfdom=True, always=True)
-def no_root(loaded):
+@check("T002", "no-root", ERROR, "Every link has a parent: there is no root.", urdfdom=True, kind=Kind.TREE)
+def no_root(loaded, given):
     """## What it does
     Flags a model in which every link is the child of some joint, so no link is the root.
 

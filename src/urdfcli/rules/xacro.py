@@ -18,7 +18,7 @@ from collections.abc import Iterator
 from ..diagnostics import Diagnostic, Location
 from ..model.sources import XacroSources, bound, parameter_place, parameters
 from ..read.xacro_scan import Place, XacroFile, free_names
-from .base import ERROR, INFO, WARNING, check
+from .base import ERROR, INFO, WARNING, Kind, RuleSet, check
 from .suggestions import close_matches
 
 
@@ -38,8 +38,8 @@ def _used(sources: XacroSources, test) -> bool:
     return not sources.complete or test(sources.reached_facts) or test(sources.facts)
 
 
-@check("X101", "xacro-argument-unused", WARNING, "A `xacro:arg` that nothing reads.", in_check=False, sources=True)
-def argument_unused(loaded) -> Iterator[Diagnostic]:
+@check("X101", "xacro-argument-unused", WARNING, "A `xacro:arg` that nothing reads.", kind=Kind.SOURCES, rule_set=RuleSet.LINT)
+def argument_unused(loaded, given) -> Iterator[Diagnostic]:
     """## What it does
     Flags a `<xacro:arg>` that no `$(arg NAME)`, `$(eval ...)` or
     `xacro.arg('NAME')` reads: not in the model's files, not in any file their
@@ -81,8 +81,8 @@ def argument_unused(loaded) -> Iterator[Diagnostic]:
             )
 
 
-@check("X102", "xacro-property-unused", INFO, "A `xacro:property` that nothing uses.", in_check=False, sources=True)
-def property_unused(loaded) -> Iterator[Diagnostic]:
+@check("X102", "xacro-property-unused", INFO, "A `xacro:property` that nothing uses.", kind=Kind.SOURCES, rule_set=RuleSet.LINT)
+def property_unused(loaded, given) -> Iterator[Diagnostic]:
     """## What it does
     Notes a `<xacro:property>` whose name no `${...}` reads (and, for a block
     property, no `<xacro:insert_block>` inserts) in the model's files, the
@@ -137,8 +137,8 @@ def _inserted_in_body(file: XacroFile, macro: int, name: str) -> bool:
     return any(block.name == name and file.within(block.macro, macro) for block in file.blocks)
 
 
-@check("X103", "macro-parameter-unused", WARNING, "A macro parameter its body never uses.", in_check=False, sources=True)
-def parameter_unused(loaded) -> Iterator[Diagnostic]:
+@check("X103", "macro-parameter-unused", WARNING, "A macro parameter its body never uses.", kind=Kind.SOURCES, rule_set=RuleSet.LINT)
+def parameter_unused(loaded, given) -> Iterator[Diagnostic]:
     """## What it does
     Flags a parameter of a `<xacro:macro>` that its body (nested macros
     included) never reads as `${NAME}`, and a block parameter (`*NAME`,
@@ -201,8 +201,8 @@ def parameter_unused(loaded) -> Iterator[Diagnostic]:
                 yield _diagnostic("X103", message, file, parameter_place(file, macro, name), hint)
 
 
-@check("X104", "macro-unused", INFO, "A macro that nothing calls.", in_check=False, sources=True)
-def macro_unused(loaded) -> Iterator[Diagnostic]:
+@check("X104", "macro-unused", INFO, "A macro that nothing calls.", kind=Kind.SOURCES, rule_set=RuleSet.LINT)
+def macro_unused(loaded, given) -> Iterator[Diagnostic]:
     """## What it does
     Notes a `<xacro:macro>` that no `<xacro:NAME>` (nor `<xacro:call
     macro="NAME">`) calls in the model's files, the files their includes may
@@ -273,8 +273,8 @@ def _differing(origins, first: int, second: int) -> tuple[str, str]:
     return _call_site(origins, a[0]), _call_site(origins, b[0])
 
 
-@check("X105", "macro-name-fixed", ERROR, "A macro that names a link, joint or transmission the same whatever its parameters.", in_check=False, sources=True)
-def macro_name_fixed(loaded) -> Iterator[Diagnostic]:
+@check("X105", "macro-name-fixed", ERROR, "A macro that names a link, joint or transmission the same whatever its parameters.", kind=Kind.SOURCES, rule_set=RuleSet.LINT)
+def macro_name_fixed(loaded, given) -> Iterator[Diagnostic]:
     """## What it does
     Looks at each `<link>`, `<joint>` and `<transmission>` written in a macro's
     body with a fixed name (no `${...}`, no `$(...)`) and counts the calls of
@@ -336,8 +336,8 @@ def macro_name_fixed(loaded) -> Iterator[Diagnostic]:
                 yield _diagnostic("X105", f"{what}: it can be called once per robot", file, element.place, hint, severity=INFO)
 
 
-@check("X106", "xacro-name-undefined", ERROR, "A name in a macro body that nothing defines.", sources=True)
-def name_undefined(loaded) -> Iterator[Diagnostic]:
+@check("X106", "xacro-name-undefined", ERROR, "A name in a macro body that nothing defines.", kind=Kind.SOURCES)
+def name_undefined(loaded, given) -> Iterator[Diagnostic]:
     """## What it does
     Reads every `${...}` in every macro body of the model's files, called or
     not, and flags a name that is none of: a parameter of the macro (or of a
@@ -411,8 +411,8 @@ def name_undefined(loaded) -> Iterator[Diagnostic]:
                 yield Diagnostic("X106", f"name '{name.name}' is defined neither in macro '{macro}'{called}", location, hint=hint)
 
 
-@check("X107", "xacro-tag-unprefixed", WARNING, "A xacro tag written without `xacro:`, which xacro leaves in the output unread.", in_check=False, sources=True)
-def tag_unprefixed(loaded) -> Iterator[Diagnostic]:
+@check("X107", "xacro-tag-unprefixed", WARNING, "A xacro tag written without `xacro:`, which xacro leaves in the output unread.", kind=Kind.SOURCES, rule_set=RuleSet.LINT)
+def tag_unprefixed(loaded, given) -> Iterator[Diagnostic]:
     """## What it does
     Flags `<include filename=...>`, `<property name=...>`, `<macro name=...>`,
     `<arg name=...>`, `<insert_block name=...>`, `<if value=...>` and

@@ -5,7 +5,7 @@ from __future__ import annotations
 
 from ...model import massprops
 from ...model.targets import declared_mass, drake_replaces, mesh_extension
-from ..base import ERROR, INFO, WARNING, check, explain
+from ..base import ERROR, INFO, WARNING, Kind, check, explain
 from .common import limit_at, link_at, number
 from .examples import INVERTED_LIMITS, ORDERED_LIMITS, TRIANGLE_BROKEN, TRIANGLE_KEPT, meshed
 
@@ -13,7 +13,7 @@ CONVEX = (".obj", ".vtk", ".gltf")  # the collision meshes Drake 1.51 makes a co
 
 
 @check(
-    "C201", "drake-replaces-inertia", WARNING, "Drake replaces an invalid inertia with a water sphere.", target="drake",
+    "C201", "drake-replaces-inertia", WARNING, "Drake replaces an invalid inertia with a water sphere.", kind=Kind.TARGET, target="drake",
     doc=explain(
         """With `--target drake`: finds a link whose `<inertial>` fails Drake's validity
         test (a negative mass, a zero mass with a tensor, a tensor with a negative
@@ -26,7 +26,7 @@ CONVEX = (".obj", ".vtk", ".gltf")  # the collision meshes Drake 1.51 makes a co
         TRIANGLE_KEPT,
     ),
 )
-def replaces_inertia(loaded, profile):
+def replaces_inertia(loaded, given):
     for name, link in loaded.robot.links.items():
         if not drake_replaces(link):
             continue
@@ -45,7 +45,7 @@ def replaces_inertia(loaded, profile):
 
 
 @check(
-    "C202", "drake-collision-mesh-format", ERROR, "Drake rejects collision meshes other than .obj, .vtk and .gltf.", target="drake",
+    "C202", "drake-collision-mesh-format", ERROR, "Drake rejects collision meshes other than .obj, .vtk and .gltf.", kind=Kind.TARGET, target="drake",
     doc=explain(
         """With `--target drake`: finds a collision mesh whose file extension is not `.obj`,
         `.vtk` or `.gltf`. Judged by the extension; the file is not read.""",
@@ -56,7 +56,7 @@ def replaces_inertia(loaded, profile):
         meshed("base.obj"),
     ),
 )
-def collision_mesh_format(loaded, profile):
+def collision_mesh_format(loaded, given):
     for name, link in loaded.robot.links.items():
         for shape in link.collisions:
             geometry = shape.geometry
@@ -73,8 +73,8 @@ def collision_mesh_format(loaded, profile):
                 )
 
 
-@check("C203", "drake-material-redefined", ERROR, "Drake rejects a material name given two colours.", target="drake")
-def material_redefined(loaded, profile):
+@check("C203", "drake-material-redefined", ERROR, "Drake rejects a material name given two colours.", kind=Kind.TARGET, target="drake")
+def material_redefined(loaded, given):
     """## What it does
     With `--target drake`: finds a material name defined again with another colour
     (at the top level or inside a `<visual>`), compared value for value.
@@ -127,7 +127,7 @@ def _materials(loaded):
 
 
 @check(
-    "C204", "drake-aborts", ERROR, "Drake aborts (SystemExit) on lower > upper or a zero-size shape.", target="drake",
+    "C204", "drake-aborts", ERROR, "Drake aborts (SystemExit) on lower > upper or a zero-size shape.", kind=Kind.TARGET, target="drake",
     doc=explain(
         """With `--target drake`: finds what trips an assertion in Drake's parser: a joint
         whose lower limit is above its upper one (revolute, prismatic, or continuous
@@ -139,7 +139,7 @@ def _materials(loaded):
         ORDERED_LIMITS,
     ),
 )
-def aborts(loaded, profile):
+def aborts(loaded, given):
     for joint in loaded.robot.joints.values():
         limit = joint.limit
         kept = joint.type in ("revolute", "prismatic") or (joint.type == "continuous" and limit is not None and limit.has_lower and limit.has_upper)
@@ -167,8 +167,8 @@ def aborts(loaded, profile):
                 )
 
 
-@check("C205", "drake-continuous-limits", WARNING, "Drake keeps the limits of a continuous joint.", target="drake")
-def continuous_limits(loaded, profile):
+@check("C205", "drake-continuous-limits", WARNING, "Drake keeps the limits of a continuous joint.", kind=Kind.TARGET, target="drake")
+def continuous_limits(loaded, given):
     """## What it does
     With `--target drake`: finds a continuous joint whose `<limit>` has both `lower`
     and `upper`.
@@ -206,8 +206,8 @@ def continuous_limits(loaded, profile):
             )
 
 
-@check("C206", "drake-floating-base", INFO, "Drake lets the root link float.", target="drake")
-def floating_base(loaded, profile):
+@check("C206", "drake-floating-base", INFO, "Drake lets the root link float.", kind=Kind.TARGET, target="drake")
+def floating_base(loaded, given):
     """## What it does
     With `--target drake`: says, once per model, that the root link becomes a free
     body (6 degrees of freedom), unless the model joins it to a link named `world`.

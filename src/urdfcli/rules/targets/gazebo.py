@@ -7,13 +7,13 @@ from __future__ import annotations
 
 from ...model import massprops
 from ...model.targets import build
-from ..base import ERROR, INFO, WARNING, check, explain
+from ..base import ERROR, INFO, WARNING, Kind, check, explain
 from .common import about_joint, inverted_limits, joints_of, limit_at, link_at, mimic_at, mimic_joints, names, number
 from .examples import FIXED_JOINT, FLOATING_JOINT, INVERTED_LIMITS, MIMIC_GRIPPER, ONE_FINGER, ORDERED_LIMITS, TRIANGLE_BROKEN, TRIANGLE_KEPT, rover
 
 
 @check(
-    "C501", "gazebo-drops-link", WARNING, "Gazebo drops a massless link with its joint and subtree.", target="gazebo",
+    "C501", "gazebo-drops-link", WARNING, "Gazebo drops a massless link with its joint and subtree.", kind=Kind.TARGET, target="gazebo",
     doc=explain(
         """With `--target gazebo`: finds a link with no `<inertial>` or no positive mass that
         Gazebo does not lump into a parent (its joint moves, or its fixed joint is kept
@@ -25,8 +25,8 @@ from .examples import FIXED_JOINT, FLOATING_JOINT, INVERTED_LIMITS, MIMIC_GRIPPE
         rover("pan", "continuous"),
     ),
 )
-def drops_link(loaded, profile):
-    dropped = build(loaded, profile).dropped
+def drops_link(loaded, given):
+    dropped = build(loaded, given.profile).dropped
     for link, why in dropped.items():
         if why.startswith("below "):
             continue
@@ -42,7 +42,7 @@ def drops_link(loaded, profile):
 
 
 @check(
-    "C502", "gazebo-invalid-inertia", ERROR, "Gazebo refuses a body whose inertia is not physical.", target="gazebo",
+    "C502", "gazebo-invalid-inertia", ERROR, "Gazebo refuses a body whose inertia is not physical.", kind=Kind.TARGET, target="gazebo",
     doc=explain(
         """With `--target gazebo`: finds a body (a link with the fixed links lumped into it)
         whose mass is negative or whose combined tensor has a negative principal moment
@@ -53,8 +53,8 @@ def drops_link(loaded, profile):
         TRIANGLE_KEPT,
     ),
 )
-def invalid_inertia(loaded, profile):
-    for body in build(loaded, profile).bodies:
+def invalid_inertia(loaded, given):
+    for body in build(loaded, given.profile).bodies:
         if body.mass is None:
             continue
         if body.mass < 0:
@@ -76,7 +76,7 @@ def invalid_inertia(loaded, profile):
 
 
 @check(
-    "C503", "gazebo-swaps-limits", WARNING, "Gazebo swaps limits given lower > upper.", target="gazebo",
+    "C503", "gazebo-swaps-limits", WARNING, "Gazebo swaps limits given lower > upper.", kind=Kind.TARGET, target="gazebo",
     doc=explain(
         """With `--target gazebo`: finds a revolute or prismatic joint whose lower limit is
         above its upper one.""",
@@ -86,7 +86,7 @@ def invalid_inertia(loaded, profile):
         ORDERED_LIMITS,
     ),
 )
-def swaps_limits(loaded, profile):
+def swaps_limits(loaded, given):
     for joint in inverted_limits(loaded):
         limit = joint.limit
         yield about_joint(
@@ -97,7 +97,7 @@ def swaps_limits(loaded, profile):
 
 
 @check(
-    "C504", "gazebo-lumps-fixed-links", INFO, "Gazebo lumps links on fixed joints into their parents.", target="gazebo",
+    "C504", "gazebo-lumps-fixed-links", INFO, "Gazebo lumps links on fixed joints into their parents.", kind=Kind.TARGET, target="gazebo",
     doc=explain(
         """With `--target gazebo`: says, once per model, which links Gazebo lumps into their
         parents (fixed joints without `preserveFixedJoint`).""",
@@ -108,8 +108,8 @@ def swaps_limits(loaded, profile):
         rover("camera", "fixed", more='<gazebo reference="camera_joint"><preserveFixedJoint>true</preserveFixedJoint></gazebo>'),
     ),
 )
-def lumps_fixed_links(loaded, profile):
-    lumped = [link for body in build(loaded, profile).bodies for link in body.links[1:]]
+def lumps_fixed_links(loaded, given):
+    lumped = [link for body in build(loaded, given.profile).bodies for link in body.links[1:]]
     if lumped:
         yield loaded.diagnostic(
             "C504",
@@ -121,7 +121,7 @@ def lumps_fixed_links(loaded, profile):
 
 
 @check(
-    "C505", "gazebo-floating-joint", ERROR, "Gazebo cannot load a floating or planar joint.", target="gazebo",
+    "C505", "gazebo-floating-joint", ERROR, "Gazebo cannot load a floating or planar joint.", kind=Kind.TARGET, target="gazebo",
     doc=explain(
         """With `--target gazebo`: finds a floating or planar joint.""",
         """SDFormat has neither: sdformat 12 leaves the joint out of the SDF but still places
@@ -132,7 +132,7 @@ def lumps_fixed_links(loaded, profile):
         FIXED_JOINT,
     ),
 )
-def floating_joint(loaded, profile):
+def floating_joint(loaded, given):
     for joint in joints_of(loaded, ("floating", "planar")):
         yield about_joint(
             loaded, "C505", joint,
@@ -142,7 +142,7 @@ def floating_joint(loaded, profile):
 
 
 @check(
-    "C506", "gazebo-drops-mimic", WARNING, "Gazebo (sdformat 12) drops <mimic>.", target="gazebo",
+    "C506", "gazebo-drops-mimic", WARNING, "Gazebo (sdformat 12) drops <mimic>.", kind=Kind.TARGET, target="gazebo",
     doc=explain(
         """With `--target gazebo`: finds a joint with a `<mimic>`.""",
         """sdformat 12 does not convert `<mimic>` (SDFormat 1.9 has no mimic): the joint moves on
@@ -152,7 +152,7 @@ def floating_joint(loaded, profile):
         ONE_FINGER,
     ),
 )
-def drops_mimic(loaded, profile):
+def drops_mimic(loaded, given):
     for joint in mimic_joints(loaded):
         yield about_joint(
             loaded, "C506", joint,

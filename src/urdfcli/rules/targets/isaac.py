@@ -5,13 +5,13 @@ base, drives) is not modelled; Isaac Sim 5.1 stopped merging fixed joints by def
 from __future__ import annotations
 
 from ...model.targets import isaac_merged_child
-from ..base import WARNING, check, explain
+from ..base import WARNING, Kind, check, explain
 from .common import about_joint, add_limit, link_at, without_limit
 from .examples import NO_LIMIT, WITH_LIMIT
 
 
 @check(
-    "C701", "isaac-locks-joint", WARNING, "Isaac Sim locks a revolute or prismatic joint without <limit>.", target="isaac",
+    "C701", "isaac-locks-joint", WARNING, "Isaac Sim locks a revolute or prismatic joint without <limit>.", kind=Kind.TARGET, target="isaac",
     doc=explain(
         """With `--target isaac`: finds a revolute or prismatic joint without `<limit>`.""",
         """urdfdom rejects it (J003), but Isaac Sim's importer takes it, writes its limits
@@ -21,7 +21,7 @@ from .examples import NO_LIMIT, WITH_LIMIT
         WITH_LIMIT,
     ),
 )
-def locks_joint(loaded, profile):
+def locks_joint(loaded, given):
     for joint in without_limit(loaded):
         yield about_joint(
             loaded, "C701", joint,
@@ -30,8 +30,8 @@ def locks_joint(loaded, profile):
         )
 
 
-@check("C702", "isaac-mass-from-colliders", WARNING, "Isaac Sim weighs a massless link with colliders by their volume.", target="isaac")
-def mass_from_colliders(loaded, profile):
+@check("C702", "isaac-mass-from-colliders", WARNING, "Isaac Sim weighs a massless link with colliders by their volume.", kind=Kind.TARGET, target="isaac")
+def mass_from_colliders(loaded, given):
     """## What it does
     With `--target isaac`: finds a link with collision shapes but without `<inertial>`
     or with mass 0, unless the importer writes onto it the inertia of a child that has

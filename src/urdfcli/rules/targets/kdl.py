@@ -2,12 +2,12 @@
 
 from __future__ import annotations
 
-from ..base import INFO, WARNING, check
+from ..base import INFO, WARNING, Kind, check
 from .common import about_joint, inertial_at, joints_of
 
 
-@check("C601", "kdl-fixed-floating-joint", WARNING, "KDL turns floating and planar joints into fixed ones.", target="kdl")
-def fixed_floating_joint(loaded, profile):
+@check("C601", "kdl-fixed-floating-joint", WARNING, "KDL turns floating and planar joints into fixed ones.", kind=Kind.TARGET, target="kdl")
+def fixed_floating_joint(loaded, given):
     """## What it does
     With `--target kdl`: finds a floating or planar joint.
 
@@ -38,8 +38,8 @@ def fixed_floating_joint(loaded, profile):
         )
 
 
-@check("C602", "kdl-root-inertia", INFO, "KDL drops the root link's inertia.", target="kdl")
-def root_inertia(loaded, profile):
+@check("C602", "kdl-root-inertia", INFO, "KDL drops the root link's inertia.", kind=Kind.TARGET, target="kdl")
+def root_inertia(loaded, given):
     """## What it does
     With `--target kdl`: finds a root link with a positive mass.
 

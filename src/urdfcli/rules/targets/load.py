@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from ..base import ERROR, INFO, WARNING, declare, explain
+from ..base import ERROR, INFO, WARNING, Kind, declare, explain
 
 _EXAMPLE = '<link name="wrist"><inertial><mass value="0"/><inertia ixx="0" ixy="0" ixz="0" iyy="0" iyz="0" izz="0"/></inertial></link>'
 
@@ -16,6 +16,7 @@ LOAD_REJECTED = declare(
         '<robot name="r">\n  <link name="base"/>\n  ' + _EXAMPLE + "\n  <joint name=\"j\" type=\"continuous\"><parent link=\"base\"/><child link=\"wrist\"/></joint>\n</robot>",
         '<robot name="r">\n  <link name="base"/>\n</robot>',
     ),
+    kind=Kind.LOADING,
 )
 LOAD_DISAGREES = declare(
     "C002", "target-load-disagrees", WARNING, "The consumer's verdict differs from urdfcli's prediction (--load).",
@@ -26,6 +27,7 @@ LOAD_DISAGREES = declare(
         '<robot name="r">\n  <link name="base"/>\n</robot>',
         '<robot name="r">\n  <link name="base"/>\n</robot>',
     ),
+    kind=Kind.LOADING,
 )
 LOAD_SAYS = declare(
     "C003", "target-load-warning", INFO, "A warning the consumer printed while loading (--load).",
@@ -35,4 +37,5 @@ LOAD_SAYS = declare(
         '<robot name="r">\n  <link name="base"/>\n</robot>',
         '<robot name="r">\n  <link name="base"/>\n</robot>',
     ),
+    kind=Kind.LOADING,
 )

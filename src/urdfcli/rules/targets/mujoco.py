@@ -8,7 +8,7 @@ from ...model import massprops
 from ...model.meshes import MeshFiles
 from ...model.targets import MJMINVAL, build, geometry_body, mesh_extension, mujoco_options, weighed_by_geometry
 from ...read.meshfile import stl_header
-from ..base import ERROR, INFO, WARNING, check, explain
+from ..base import ERROR, INFO, WARNING, Kind, check, explain
 from .common import BOUNDED, inertial_at, joints_of, limit_at, link_at, names, number
 from .examples import INVERTED_LIMITS, ORDERED_LIMITS, TRIANGLE_BROKEN, TRIANGLE_KEPT, WRIST_BOX, arm, meshed, wrist_inertial
 
@@ -17,7 +17,7 @@ STL_TRIANGLES = 200_000  # the most MuJoCo's STL decoder takes (src/user/user_me
 
 
 @check(
-    "C101", "mujoco-massless-body", ERROR, "MuJoCo rejects a moving body without mass or inertia.", target="mujoco",
+    "C101", "mujoco-massless-body", ERROR, "MuJoCo rejects a moving body without mass or inertia.", kind=Kind.TARGET, target="mujoco",
     doc=explain(
         """With `--target mujoco`: finds a body moved by a joint whose mass, or one of
         whose principal moments, is below MuJoCo's `mjMINVAL` (1e-15). The body is the
@@ -31,8 +31,8 @@ STL_TRIANGLES = 200_000  # the most MuJoCo's STL decoder takes (src/user/user_me
         arm(wrist_inertial("0.5", "1e-3")),
     ),
 )
-def massless_body(loaded, profile):
-    for body in build(loaded, profile).bodies:
+def massless_body(loaded, given):
+    for body in build(loaded, given.profile).bodies:
         if body.joint is None or body.mass is None:
             continue
         if body.mass < MJMINVAL:
@@ -52,7 +52,7 @@ def massless_body(loaded, profile):
 
 
 @check(
-    "C102", "mujoco-triangle-inequality", ERROR, "MuJoCo rejects an inertia breaking A + B >= C.", target="mujoco",
+    "C102", "mujoco-triangle-inequality", ERROR, "MuJoCo rejects an inertia breaking A + B >= C.", kind=Kind.TARGET, target="mujoco",
     doc=explain(
         """With `--target mujoco`: finds a declared inertia whose principal moments break
         the triangle inequality (A + B >= C), unless the model sets
@@ -63,7 +63,7 @@ def massless_body(loaded, profile):
         TRIANGLE_KEPT,
     ),
 )
-def triangle_inequality(loaded, profile):
+def triangle_inequality(loaded, given):
     if mujoco_options(loaded).balanceinertia:
         return
     for name, link in loaded.robot.links.items():
@@ -84,8 +84,8 @@ def triangle_inequality(loaded, profile):
             )
 
 
-@check("C103", "mujoco-inertia-not-positive", ERROR, "MuJoCo rejects an inertia without positive eigenvalues.", target="mujoco")
-def inertia_not_positive(loaded, profile):
+@check("C103", "mujoco-inertia-not-positive", ERROR, "MuJoCo rejects an inertia without positive eigenvalues.", kind=Kind.TARGET, target="mujoco")
+def inertia_not_positive(loaded, given):
     """## What it does
     With `--target mujoco`: finds a declared inertia, on any link (the root and fixed
     links too), that is not all zero but has a principal moment that is zero or
@@ -146,7 +146,7 @@ def _once(loaded, code: str, meshes: list, kind: str, why: str, hint: str):
 
 
 @check(
-    "C104", "mujoco-mesh-format", ERROR, "MuJoCo cannot decode a mesh file of this format.", target="mujoco",
+    "C104", "mujoco-mesh-format", ERROR, "MuJoCo cannot decode a mesh file of this format.", kind=Kind.TARGET, target="mujoco",
     doc=explain(
         """With `--target mujoco`: finds a collision mesh (and a visual one when the model
         sets `discardvisual="false"`) whose file extension is not one MuJoCo decodes:
@@ -157,7 +157,7 @@ def _once(loaded, code: str, meshes: list, kind: str, why: str, hint: str):
         meshed("base.stl"),
     ),
 )
-def mesh_format(loaded, profile):
+def mesh_format(loaded, given):
     found: dict[str, list] = {}  # extension -> the links and meshes: said once per extension
     for name, geometry in _meshes(loaded, mujoco_options(loaded).discardvisual):
         extension = mesh_extension(geometry.filename)
@@ -169,7 +169,7 @@ def mesh_format(loaded, profile):
 
 
 @check(
-    "C105", "mujoco-package-uri", ERROR, "MuJoCo does not resolve package:// mesh paths.", target="mujoco",
+    "C105", "mujoco-package-uri", ERROR, "MuJoCo does not resolve package:// mesh paths.", kind=Kind.TARGET, target="mujoco",
     doc=explain(
         """With `--target mujoco`: finds a collision mesh (and a visual one when the model
         sets `discardvisual="false"`) named by a `package://` URI.""",
@@ -180,7 +180,7 @@ def mesh_format(loaded, profile):
         meshed("../meshes/arm.stl"),
     ),
 )
-def package_uri(loaded, profile):
+def package_uri(loaded, given):
     meshes = [(name, g) for name, g in _meshes(loaded, mujoco_options(loaded).discardvisual) if g.filename.startswith("package://")]
     if meshes:  # said once per model
         yield _once(
@@ -190,7 +190,7 @@ def package_uri(loaded, profile):
 
 
 @check(
-    "C109", "mujoco-stl-decoder", ERROR, "MuJoCo reads only binary STL files of at most 200,000 triangles.", target="mujoco",
+    "C109", "mujoco-stl-decoder", ERROR, "MuJoCo reads only binary STL files of at most 200,000 triangles.", kind=Kind.TARGET, target="mujoco",
     doc=explain(
         """With `--target mujoco`: finds a collision mesh (and a visual one when the model
         sets `discardvisual="false"`) whose `.stl` file is not a binary STL (an ASCII STL,
@@ -205,7 +205,7 @@ def package_uri(loaded, profile):
         meshed("../meshes/arm.stl"),
     ),
 )
-def stl_decoder(loaded, profile):
+def stl_decoder(loaded, given):
     files = MeshFiles.of(loaded)
     found: dict[tuple, list] = {}  # problem -> the links and meshes: said once per problem
     for name, geometry in _meshes(loaded, mujoco_options(loaded).discardvisual):
@@ -238,7 +238,7 @@ def _stl_problem(header) -> tuple[str, str] | None:
 
 
 @check(
-    "C106", "mujoco-unlimited-joint", WARNING, "MuJoCo drops a joint's limits when lower >= upper.", target="mujoco",
+    "C106", "mujoco-unlimited-joint", WARNING, "MuJoCo drops a joint's limits when lower >= upper.", kind=Kind.TARGET, target="mujoco",
     doc=explain(
         """With `--target mujoco`: finds a revolute or prismatic joint whose lower limit is
         not below its upper one.""",
@@ -249,7 +249,7 @@ def _stl_problem(header) -> tuple[str, str] | None:
         ORDERED_LIMITS,
     ),
 )
-def unlimited_joint(loaded, profile):
+def unlimited_joint(loaded, given):
     for joint in joints_of(loaded, BOUNDED):
         limit = joint.limit
         if limit is not None and limit.lower >= limit.upper:
@@ -264,7 +264,7 @@ def unlimited_joint(loaded, profile):
 
 
 @check(
-    "C107", "mujoco-mass-from-geometry", WARNING, "MuJoCo weighs a moving link without <inertial> by its collision shapes.", target="mujoco",
+    "C107", "mujoco-mass-from-geometry", WARNING, "MuJoCo weighs a moving link without <inertial> by its collision shapes.", kind=Kind.TARGET, target="mujoco",
     doc=explain(
         """With `--target mujoco`: finds a moving body none of whose links has an
         `<inertial>`, but which has collision shapes, while `inertiafromgeom` is `auto`
@@ -276,9 +276,9 @@ def unlimited_joint(loaded, profile):
         arm(wrist_inertial("0.3", "5e-4"), WRIST_BOX),
     ),
 )
-def mass_from_geometry(loaded, profile):
+def mass_from_geometry(loaded, given):
     options = mujoco_options(loaded)
-    for body in build(loaded, profile).bodies:
+    for body in build(loaded, given.profile).bodies:
         if body.joint is None:
             continue
         for name in body.links:
@@ -296,8 +296,8 @@ def mass_from_geometry(loaded, profile):
             )
 
 
-@check("C108", "mujoco-fixed-base", INFO, "MuJoCo welds the root link to the world.", target="mujoco")
-def fixed_base(loaded, profile):
+@check("C108", "mujoco-fixed-base", INFO, "MuJoCo welds the root link to the world.", kind=Kind.TARGET, target="mujoco")
+def fixed_base(loaded, given):
     """## What it does
     With `--target mujoco`: says, once per model, that the root link is welded to the
     world and fused into the world body, and names the links fused into their
@@ -328,7 +328,7 @@ def fixed_base(loaded, profile):
     root = loaded.root
     if root is None:
         return
-    built = build(loaded, profile)
+    built = build(loaded, given.profile)
     fused = [link for body in built.bodies for link in body.links[1:]] + [link for link in built.dropped if link not in (root, "world")]
     if root == "world" and not fused:
         return

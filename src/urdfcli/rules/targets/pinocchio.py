@@ -3,14 +3,14 @@ include/pinocchio/parsers/urdf/model.hxx (the tree walk), include/pinocchio/mult
 
 from __future__ import annotations
 
-from ..base import ERROR, WARNING, check, explain
+from ..base import ERROR, WARNING, Kind, check, explain
 from .common import MIMICKED, about_joint, mimic_at, mimic_joints
 from .examples import MIMIC_GRIPPER, ONE_FINGER
 
 
 
 @check(
-    "C301", "pinocchio-ignores-mimic", WARNING, "Pinocchio ignores <mimic> unless built with mimic=True.", target="pinocchio",
+    "C301", "pinocchio-ignores-mimic", WARNING, "Pinocchio ignores <mimic> unless built with mimic=True.", kind=Kind.TARGET, target="pinocchio",
     doc=explain(
         """With `--target pinocchio` (not `pinocchio:mimic`): finds a joint with a `<mimic>`.""",
         """`buildModelFromUrdf(path)` reads `<mimic>` only when called with `mimic=True`
@@ -20,8 +20,8 @@ from .examples import MIMIC_GRIPPER, ONE_FINGER
         ONE_FINGER,
     ),
 )
-def ignores_mimic(loaded, profile):
-    if "mimic" in profile.variants:
+def ignores_mimic(loaded, given):
+    if "mimic" in given.profile.variants:
         return
     for joint in mimic_joints(loaded):
         yield about_joint(
@@ -31,8 +31,8 @@ def ignores_mimic(loaded, profile):
         )
 
 
-@check("C302", "pinocchio-mimic-unsupported", ERROR, "Pinocchio's mimic=True rejects mimic chains and mixed joint kinds.", target="pinocchio:mimic")
-def mimic_unsupported(loaded, profile):
+@check("C302", "pinocchio-mimic-unsupported", ERROR, "Pinocchio's mimic=True rejects mimic chains and mixed joint kinds.", kind=Kind.TARGET, target="pinocchio:mimic")
+def mimic_unsupported(loaded, given):
     """## What it does
     With `--target pinocchio:mimic`: finds a mimic joint whose mimicked joint itself
     mimics another (a chain), or is of another kind (a prismatic joint mimicking a
@@ -63,7 +63,7 @@ def mimic_unsupported(loaded, profile):
     </robot>
     ```
     """
-    if "mimic" not in profile.variants:
+    if "mimic" not in given.profile.variants:
         return
     joints = loaded.robot.joints
     kind = {"revolute": "revolute", "continuous": "revolute", "prismatic": "prismatic"}

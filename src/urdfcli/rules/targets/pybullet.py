@@ -5,15 +5,15 @@ from __future__ import annotations
 
 from ...model import massprops
 from ...model.targets import build, declared_matrix, valid_tensor
-from ..base import ERROR, INFO, WARNING, check, explain
+from ..base import ERROR, INFO, WARNING, Kind, check, explain
 from .common import about_joint, add_limit, inverted_limits, joints_of, limit_at, link_at, names, number, without_limit
 from .examples import FIXED_JOINT, FLOATING_JOINT, INVERTED_LIMITS, NO_LIMIT, ORDERED_LIMITS, TRIANGLE_BROKEN, TRIANGLE_KEPT, WITH_LIMIT
 
 RECOMPUTED_APART = 0.1  # a recomputed tensor further than this (relative) from the declared one is a change worth saying
 
 
-@check("C401", "pybullet-default-inertial", WARNING, "PyBullet gives a link without <inertial> 1 kg.", target="pybullet")
-def default_inertial(loaded, profile):
+@check("C401", "pybullet-default-inertial", WARNING, "PyBullet gives a link without <inertial> 1 kg.", kind=Kind.TARGET, target="pybullet")
+def default_inertial(loaded, given):
     """## What it does
     With `--target pybullet`: finds a link without `<inertial>` (other than one named
     `world`).
@@ -42,7 +42,7 @@ def default_inertial(loaded, profile):
     </robot>
     ```
     """
-    tensor = " and a unit inertia tensor" if "inertia-from-file" in profile.variants else ""
+    tensor = " and a unit inertia tensor" if "inertia-from-file" in given.profile.variants else ""
     for name, link in loaded.robot.links.items():
         if link.inertial is None and name != "world":
             yield loaded.diagnostic(
@@ -54,8 +54,8 @@ def default_inertial(loaded, profile):
             )
 
 
-@check("C402", "pybullet-recomputes-inertia", WARNING, "PyBullet recomputes inertia tensors from collision shapes.", target="pybullet")
-def recomputes_inertia(loaded, profile):
+@check("C402", "pybullet-recomputes-inertia", WARNING, "PyBullet recomputes inertia tensors from collision shapes.", kind=Kind.TARGET, target="pybullet")
+def recomputes_inertia(loaded, given):
     """## What it does
     With `--target pybullet` (not `pybullet:inertia-from-file`): says, once per model,
     which declared tensors PyBullet will not use, where the tensor it computes
@@ -84,10 +84,10 @@ def recomputes_inertia(loaded, profile):
     </link>
     ```
     """
-    if "inertia-from-file" in profile.variants:
+    if "inertia-from-file" in given.profile.variants:
         return
     changed = []
-    for body in build(loaded, profile).bodies:
+    for body in build(loaded, given.profile).bodies:
         link = loaded.robot.links[body.top]
         declared = declared_matrix(link)
         if declared is None or not body.mass:
@@ -113,7 +113,7 @@ def recomputes_inertia(loaded, profile):
 
 
 @check(
-    "C403", "pybullet-unlimited-joint", WARNING, "PyBullet treats lower > upper as no limit.", target="pybullet",
+    "C403", "pybullet-unlimited-joint", WARNING, "PyBullet treats lower > upper as no limit.", kind=Kind.TARGET, target="pybullet",
     doc=explain(
         """With `--target pybullet`: finds a revolute or prismatic joint whose lower limit is
         above its upper one.""",
@@ -123,7 +123,7 @@ def recomputes_inertia(loaded, profile):
         ORDERED_LIMITS,
     ),
 )
-def unlimited_joint(loaded, profile):
+def unlimited_joint(loaded, given):
     for joint in inverted_limits(loaded):
         limit = joint.limit
         yield about_joint(
@@ -134,7 +134,7 @@ def unlimited_joint(loaded, profile):
 
 
 @check(
-    "C404", "pybullet-floating-joint", WARNING, "PyBullet makes a floating joint fixed.", target="pybullet",
+    "C404", "pybullet-floating-joint", WARNING, "PyBullet makes a floating joint fixed.", kind=Kind.TARGET, target="pybullet",
     doc=explain(
         """With `--target pybullet`: finds a floating joint.""",
         """PyBullet has no floating joint inside a multibody: it prints "joint unsupported,
@@ -143,7 +143,7 @@ def unlimited_joint(loaded, profile):
         FIXED_JOINT,
     ),
 )
-def floating_joint(loaded, profile):
+def floating_joint(loaded, given):
     for joint in joints_of(loaded, ("floating",)):
         yield about_joint(
             loaded, "C404", joint,
@@ -153,7 +153,7 @@ def floating_joint(loaded, profile):
 
 
 @check(
-    "C405", "pybullet-zeroes-inertia", WARNING, "PyBullet zeroes a tensor it finds invalid.", target="pybullet:inertia-from-file",
+    "C405", "pybullet-zeroes-inertia", WARNING, "PyBullet zeroes a tensor it finds invalid.", kind=Kind.TARGET, target="pybullet:inertia-from-file",
     doc=explain(
         """With `--target pybullet:inertia-from-file`: finds a declared tensor that is not
         positive semi-definite or breaks the triangle inequality.""",
@@ -163,8 +163,8 @@ def floating_joint(loaded, profile):
         TRIANGLE_KEPT,
     ),
 )
-def zeroes_inertia(loaded, profile):
-    if "inertia-from-file" not in profile.variants:
+def zeroes_inertia(loaded, given):
+    if "inertia-from-file" not in given.profile.variants:
         return
     for name, link in loaded.robot.links.items():
         tensor = declared_matrix(link)
@@ -180,8 +180,8 @@ def zeroes_inertia(loaded, profile):
             )
 
 
-@check("C406", "pybullet-floating-base", INFO, "PyBullet lets the base link float.", target="pybullet")
-def floating_base(loaded, profile):
+@check("C406", "pybullet-floating-base", INFO, "PyBullet lets the base link float.", kind=Kind.TARGET, target="pybullet")
+def floating_base(loaded, given):
     """## What it does
     With `--target pybullet` (not `pybullet:fixed-base`): says, once per model, that the
     base link is free unless it is named `world` or has mass 0.
@@ -206,7 +206,7 @@ def floating_base(loaded, profile):
     </robot>
     ```
     """
-    built = build(loaded, profile)
+    built = build(loaded, given.profile)
     root = loaded.root
     if root is not None and built.base == "floating":
         yield loaded.diagnostic(
@@ -219,7 +219,7 @@ def floating_base(loaded, profile):
 
 
 @check(
-    "C407", "pybullet-joint-without-limit", ERROR, "PyBullet refuses a revolute or prismatic joint without <limit>.", target="pybullet",
+    "C407", "pybullet-joint-without-limit", ERROR, "PyBullet refuses a revolute or prismatic joint without <limit>.", kind=Kind.TARGET, target="pybullet",
     doc=explain(
         """With `--target pybullet`: finds a revolute or prismatic joint without `<limit>`.""",
         """PyBullet's own URDF parser, like urdfdom's (J003), refuses it: "Joint is of type
@@ -230,7 +230,7 @@ def floating_base(loaded, profile):
         WITH_LIMIT,
     ),
 )
-def joint_without_limit(loaded, profile):
+def joint_without_limit(loaded, given):
     for joint in without_limit(loaded):
         yield about_joint(
             loaded, "C407", joint,

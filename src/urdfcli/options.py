@@ -1,0 +1,72 @@
+"""What a run is asked to do: one frozen value, built once by the command line,
+the library or the editor, and read by everything below.
+
+Nothing below this value asks which command it is in: the rule set, the xacro
+arguments, the targets, the selections over the configuration, the package
+paths, the output format and the number of processes are all here.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, replace
+from pathlib import Path
+
+from .model.targets import Profile, profile
+from .project.config import Config
+from .rules import RuleSet
+
+
+@dataclass(frozen=True)
+class Options:
+    """One run's options. Lists given for the tuples are kept as tuples, and target
+    texts (``"mujoco"``, ``"pinocchio:mimic"``, ``"drake,kdl"``) as profiles: a
+    target that names no consumer raises ValueError.
+
+    ``select`` and ``targets`` replace the configuration's, ``ignore`` and
+    ``extend_select`` add to it; ``config`` is a configuration file to use instead
+    of the nearest one above each input (or a :class:`Config` itself), and
+    ``isolated`` reads none. With ``libraries``, a xacro library is checked through
+    the models that include it. ``jobs`` other than 1 checks models in that many
+    processes (0: one per CPU). ``format`` names the reporter of the command line."""
+
+    rule_set: RuleSet = RuleSet.LINT
+    arguments: tuple[tuple[str, str], ...] = ()  # xacro arguments NAME:=VALUE, over the configuration's
+    package_paths: tuple[str, ...] = ()  # -P: NAME=DIR, or a folder to scan for package.xml
+    config: Path | Config | None = None
+    isolated: bool = False
+    select: tuple[str, ...] = ()
+    ignore: tuple[str, ...] = ()
+    extend_select: tuple[str, ...] = ()
+    targets: tuple[Profile, ...] = ()
+    libraries: bool = True
+    jobs: int = 1
+    format: str = "text"
+
+    def __post_init__(self) -> None:
+        if isinstance(self.arguments, dict):
+            object.__setattr__(self, "arguments", tuple(self.arguments.items()))
+        for name in ("arguments", "package_paths", "select", "ignore", "extend_select"):
+            object.__setattr__(self, name, tuple(getattr(self, name) or ()))
+        if isinstance(self.config, str):
+            object.__setattr__(self, "config", Path(self.config))
+        chosen: list[Profile] = []
+        for target in self.targets or ():
+            chosen += [target] if isinstance(target, Profile) else [profile(text) for text in target.split(",") if text.strip()]
+        object.__setattr__(self, "targets", tuple(dict.fromkeys(chosen)))
+
+    @property
+    def mappings(self) -> dict[str, str]:
+        """The xacro arguments as a mapping."""
+        return dict(self.arguments)
+
+    @property
+    def overrides(self) -> dict:
+        """What the command line changes in each configuration (see :meth:`Config.overridden`)."""
+        return {"select": self.select, "ignore": self.ignore, "extend_select": self.extend_select, "targets": self.targets}
+
+    def but(self, **changes) -> Options:
+        """These options with some changed."""
+        return replace(self, **changes)
+
+
+__all__ = ["Options", "RuleSet"]
