@@ -129,17 +129,28 @@ async def test_configuration_and_noqa_apply_as_on_the_command_line(tmp_path, cac
     assert ("I009", "error") in {(code, severity) for diagnostics in expected.values() for code, severity, *_ in diagnostics}
     severities = {types.DiagnosticSeverity.Error: "error", types.DiagnosticSeverity.Warning: "warning", types.DiagnosticSeverity.Information: "info"}
     async with editing(root, cache) as editor:
-        published: dict[Path, set] = {}
+        published: dict[Path, dict] = {}
         for model in models:
             mark = editor.mark()
             editor.open(model)
             await editor.diagnostics(model)
             for params in editor.published[mark:]:
                 file = path_of(params.uri).resolve()
-                found = {(d.code, severities[d.severity], d.range.start.line + 1, d.message.split("\nhint: ")[0]) for d in params.diagnostics if d.code}
-                published[file] = published.get(file, set()) | found
+                for d in params.diagnostics:
+                    if d.code:
+                        published.setdefault(file, {})[(d.code, severities[d.severity], d.range.start.line + 1)] = d.message.split("\nhint: ")[0]
             editor.close(model)
-    assert {p: s for p, s in published.items() if s} == expected
+    # one diagnostic per rule and line, the others on that line counted in it
+    lines: dict[Path, dict] = {}
+    for file, found in expected.items():
+        for code, severity, line, message in found:
+            lines.setdefault(file, {}).setdefault((code, severity, line), set()).add(message)
+    assert {p: set(found) for p, found in published.items() if found} == {p: set(found) for p, found in lines.items()}
+    for file, found in published.items():
+        for key, message in found.items():
+            first, _, more = message.partition("\n(and ")
+            assert first in lines[file][key]
+            assert len(lines[file][key]) == 1 + (int(more.split()[0]) if more else 0)
 
 
 @pytest.mark.asyncio

@@ -33,7 +33,9 @@ def test_an_outline_lists_definitions_where_they_were_written():
         ("property", "radius", 4, 3, "0.1", None),
         ("macro", "wheel", 5, 3, "side parent *origin length:=0.04", None),
         ("property", "mass", 6, 5, "${2 * radius}", "wheel"),
-        ("link", "hub", 8, 5, "", "wheel"),  # a name made by the macro is the expanded model's to tell
+        ("link", "${side}_wheel", 7, 5, "", "wheel"),  # a name made in a macro's body, as written
+        ("link", "hub", 8, 5, "", "wheel"),
+        ("joint", "${side}_joint", 9, 5, "continuous", "wheel"),
     ]
     assert [(i.value, i.line) for i in found.includes] == [("$(find parts)/urdf/inertia.xacro", 2)]
 

@@ -27,6 +27,7 @@ def lsp(
             raise
         raise fail("urdfcli lsp needs pygls and lsprotocol: pip install 'urdfcli[lsp]'") from None
     try:
-        server.serve(tuple(package_path or ()))
+        code = server.serve(tuple(package_path or ()))
     except PackageError as error:
         raise fail(str(error)) from None
+    raise typer.Exit(code)

@@ -1,39 +1,48 @@
-"""The editor server's work, without the protocol: one session for the server's
-lifetime, the editor's unsaved texts given to it, the checks, and what navigation
-and quick fixes need.
+"""The editor server's work, without the protocol, in two parts that share nothing
+mutable:
 
-Every method runs on one thread (the server's checking thread): the session and
-its caches are used from nowhere else. Paths are absolute.
+- :class:`Checker` runs on the server's checking thread: one session for the
+  server's lifetime, the editor's unsaved texts given to it, the checks, and the
+  quick fixes that need a model's audit. A check is :func:`urdfcli.api.run` on one
+  file, as ``urdfcli lint`` runs it (configuration, ``noqa`` comments, a library
+  checked through the models that include it), each diagnostic placed in the file
+  it points into, and, when a macro call's arguments caused it, at that call too.
+  A check can be given up from another thread (:meth:`Checker.give_up`): it stops
+  at its next expansion, and an expansion running then is stopped.
+- :class:`Navigator` answers hover, definition, completion, document symbols and
+  the ``noqa`` fix on the protocol's thread, at once, from the texts' outlines and
+  the models of the last checks, whatever check is running.
 
-A check is :func:`urdfcli.api.run` on one file, as ``urdfcli lint`` runs it
-(configuration, ``noqa`` comments, a library checked through the models that
-include it), each diagnostic placed in the file it points into.
+Paths are absolute.
 """
 
 from __future__ import annotations
 
 import os
+import threading
 from collections.abc import Iterable
 from pathlib import Path
 from typing import NamedTuple
 
 from .. import api
-from ..diagnostics import Diagnostic, Location, Severity
+from ..diagnostics import Call, Diagnostic, Location, Severity
 from ..project.config import ConfigError
 from ..project.workspace import resolve_include
 from ..read.document import STDIN
 from ..read.packages import PackageResolver
-from ..read.positions import Source
+from ..read.positions import Source, Sources
+from ..read.xacro import Expander
 from ..report import fixes
 from ..report.escape import escape
 from ..report.inertia import LinkReport
 from ..report.result import Result
-from ..rules import REGISTRY, Remedy
 from ..options import Options, RuleSet
+from ..rules import REGISTRY, Remedy
 from ..session import Session
 from . import actions, navigation
 from .outline import Outline, encoded, outline
 from .places import Place, offset, offset_place, token_place
+
 
 
 class Mark(NamedTuple):
@@ -48,6 +57,7 @@ class Mark(NamedTuple):
 class Checked(NamedTuple):
     marks: dict[str, list[Mark]]  # file -> its diagnostics
     reads: frozenset[str]  # the files the check read: a change to any calls for it again
+    run: api.Run | None  # the check's models, for navigation (None: it read none)
 
 
 class Completion(NamedTuple):
@@ -60,12 +70,33 @@ class Fix(NamedTuple):
     edits: tuple[tuple[Place, str], ...]
 
 
-class Engine:
+class GivenUp(BaseException):
+    """A check given up by the server (its texts changed, or another file comes first).
+    Not an Exception: nothing on the way up may take it for a problem of the model."""
+
+
+class _Expander(Expander):
+    """The session's expander, stopping before each expansion of a check given up."""
+
+    def __init__(self, giving_up: threading.Event) -> None:
+        super().__init__()
+        self.giving_up = giving_up
+
+    def expand(self, *args, **kwargs):
+        if self.giving_up.is_set():
+            raise GivenUp
+        return super().expand(*args, **kwargs)
+
+
+class Checker:
+    """The checks, on one thread: every method but :meth:`give_up` runs there."""
+
     def __init__(self, package_paths: tuple[str, ...] = ()) -> None:
         self.session = Session(Options(RuleSet.LINT, package_paths=package_paths))  # an editor shows every rule the configuration selects
+        self.giving_up = threading.Event()
+        self.session.expander = _Expander(self.giving_up)
         self.texts: dict[str, str] = {}  # the editor's texts given to the session
-        self.runs: dict[str, api.Run] = {}  # each open file's last check
-        self._outlines: dict[str, tuple[str, Outline]] = {}  # file -> (text, its last well-formed outline)
+        self.runs: dict[str, api.Run] = {}  # each open file's last check that read models
 
     # -- the editor's texts ---------------------------------------------------------
     def sync(self, texts: dict[str, str]) -> None:
@@ -90,28 +121,42 @@ class Engine:
         """Start the xacro worker now, while the server has one thread, rather than at the first check."""
         self.session.expander.expand(b'<robot name="warm" xmlns:xacro="http://www.ros.org/wiki/xacro"/>', None, {}, PackageResolver())
 
+    def give_up(self) -> None:
+        """From another thread: stop the running check (it raises GivenUp) and the expansion it waits for."""
+        self.giving_up.set()
+        self.session.expander.worker.interrupt()
+
     # -- checking -------------------------------------------------------------------
-    def check(self, path: str, texts: dict[str, str]) -> Checked:
-        """Check one open file with the editor's texts standing for their files."""
+    def check(self, path: str, texts: dict[str, str]) -> Checked | None:
+        """Check one open file with the editor's texts standing for their files; None
+        when :meth:`give_up` was called since the check began."""
+        self.giving_up.clear()
         self.sync(texts)
         try:
             run = api.run([path], self.session)
+        except GivenUp:
+            return None
         except api.UsageError as error:
             self.runs.pop(path, None)
-            return Checked({path: [self._problem(path, f"urdfcli cannot check this file: {error}")]}, frozenset({path}))
+            return Checked({path: [self._problem(path, f"urdfcli cannot check this file: {error}")]}, frozenset({path}), None)
         except Exception as error:  # noqa: BLE001 - a bug of urdfcli's must not stop the server
             self.runs.pop(path, None)
             message = f"urdfcli internal error ({type(error).__name__}: {error}); please report this bug with the file"
-            return Checked({path: [self._problem(path, message)]}, frozenset({path}))
+            return Checked({path: [self._problem(path, message)]}, frozenset({path}), None)
+        if self.giving_up.is_set():  # what an expansion stopped for it found is not the model's
+            return None
         if path not in self.runs or any(m.robot is not None for m in run.models):
             self.runs[path] = run  # navigation keeps the models of the last check that read any
         marks: dict[str, list[Mark]] = {path: []}
         for diagnostic, note in _labelled(run.results):
             mark = self.mark(diagnostic, note)
             marks.setdefault(mark.place.file, []).append(mark)
+            for call in self._calls_that_caused(mark):
+                if call.place.file in texts and call.place.file != mark.place.file:
+                    marks.setdefault(call.place.file, []).append(call)
         for reason in [*run.unreadable, *(n for r in run.results if r.library for n in r.library.notes)]:
             marks[path].append(self._problem(path, reason, Severity.INFO))
-        return Checked(marks, frozenset({path, *_files(run.models)}))
+        return Checked(marks, frozenset({path, *_files(run.models)}), self.runs.get(path))
 
     def mark(self, diagnostic: Diagnostic, note: str = "") -> Mark:
         location = diagnostic.location
@@ -126,6 +171,36 @@ class Engine:
         related = tuple((self.place(_absolute(c.file), c.line, c.column), f"in macro '{escape(c.macro)}' called here") for c in location.trace)
         return Mark(diagnostic, self.place(file, line, location.column if line else None), message, related)
 
+    def _calls_that_caused(self, mark: Mark) -> list[Mark]:
+        """The same diagnostic at each macro call whose arguments made the element it is
+        about: the innermost call when the element uses its macro's parameters, the call
+        around that one when the inner call passes its own macro's parameters on, and
+        so on. The element's own place is the related information."""
+        location = mark.diagnostic.location
+        if location.expanded or not location.line or not location.trace:
+            return []
+        found: list[Mark] = []
+        written = (_absolute(location.file), location.line, location.column)
+        for call in location.trace:
+            if not self._uses_parameters(*written):
+                break
+            found.append(self._at_call(mark, call))
+            written = (_absolute(call.file), call.line, call.column)
+        return found
+
+    def _uses_parameters(self, file: str, line: int | None, column: int | None) -> bool:
+        source = self.session.sources.source(file)
+        if source is None or not line or source.line(line) is None:
+            return False
+        return navigation.uses_parameters(source.text, offset(source, line - 1, (column or 1) - 1))
+
+    def _at_call(self, mark: Mark, call: Call) -> Mark:
+        """``mark`` at a call that caused it, its message saying where the macro wrote it."""
+        macro = escape(call.macro)
+        written = f"{Path(mark.place.file).name}:{mark.place.start.line + 1}"
+        message = f"{mark.message} (in macro '{macro}', {escape(written)})"
+        return Mark(mark.diagnostic, self.place(_absolute(call.file), call.line, call.column), message, ((mark.place, f"written here in macro '{macro}'"),))
+
     def _problem(self, path: str, message: str, severity: Severity = Severity.ERROR) -> Mark:
         """What is not a rule's diagnostic (an unusable configuration, a library's note), at the file's top."""
         return Mark(Diagnostic("", message, Location(path), severity=severity), self.place(path, None, None), escape(message))
@@ -133,109 +208,19 @@ class Engine:
     def place(self, file: str, line: int | None, column: int | None) -> Place:
         return token_place(file, self.session.sources.source(file), line, column)
 
-    # -- navigation -----------------------------------------------------------------
-    def hover(self, path: str, line: int, character: int, texts: dict[str, str]) -> str | None:
-        source, at = self._at(path, line, character, texts)
-        return navigation.hover(source.text, at, self.scope(path))
-
-    def definition(self, path: str, line: int, character: int, texts: dict[str, str]) -> list[Place]:
-        source, at = self._at(path, line, character, texts)
-        return [self.place(_absolute(found.file), found.line, found.column) for found in navigation.definition(source.text, at, self.scope(path))]
-
-    def completion(self, path: str, line: int, character: int, texts: dict[str, str]) -> list[Completion]:
-        source, at = self._at(path, line, character, texts)
-        return [Completion(item, offset_place(path, source, item.start, item.end)) for item in navigation.completion(source.text, at, self.scope(path))]
-
-    def _at(self, path: str, line: int, character: int, texts: dict[str, str]) -> tuple[Source, int]:
-        """The text of ``path`` as the editor has it now, and the offset of a position in it."""
-        self.sync(texts)
-        source = self.session.sources.source(path) or Source("")
-        return source, offset(source, line, character)
-
-    def scope(self, path: str) -> navigation.Scope:
-        """What names the file shares: its outline, then those of the files it includes
-        (statically, and as its last check read them), then the models that include it."""
-        models = self._models_reading(path)
-        files = list(dict.fromkeys([path, *_files(models)]))
-        outlines: list[Outline] = []
-        for file in files:  # grows as includes are found
-            found = self.outline(file)
-            if found is None:
-                continue
-            outlines.append(found)
-            for include in found.includes:
-                target = self._file_named(file, include.value)
-                if target is not None and str(target) not in files:
-                    files.append(str(target))
-        links, joints = _named_places(models)
-        resolver = self._resolver(path)
-        return navigation.Scope(tuple(outlines), links, joints, resolver.find, lambda value: self._file_named(path, value))
-
-    def outline(self, file: str) -> Outline | None:
-        """The file's outline; while its text is not well-formed, the last one that was."""
-        source = self.session.sources.source(file)
-        if source is None:
-            return None
-        known = self._outlines.get(file)
-        if known is not None and known[0] is source.text:
-            return known[1]
-        found = outline(file, source.text)
-        if found is None:
-            return known[1] if known else None
-        self._outlines[file] = (source.text, found)
-        return found
-
-    def _models_reading(self, path: str) -> list[Result]:
-        """The models that the last checks of the open files expanded and that read
-        ``path`` (each once, the latest check's), those of its own check first."""
-        runs = [self.runs[path]] if path in self.runs else []
-        runs += [run for file, run in self.runs.items() if file != path]
-        found: dict[str, Result] = {}
-        for run in runs:
-            for model in run.models:
-                if path in _files([model]):
-                    found.setdefault(model.label, model)
-        return list(found.values())
-
-    def _resolver(self, file: str) -> PackageResolver:
-        try:
-            extra = self.session.configs.for_input(file).package_paths
-        except ConfigError:
-            extra = ()
-        try:
-            return self.session.resolver(extra, Path(file))
-        except ValueError:  # a package path that is no folder: checking says so
-            return PackageResolver((), Path(file), index=self.session.packages)
-
-    def _file_named(self, file: str, value: str) -> Path | None:
-        """The file an include's filename or a mesh's URI in ``file`` leads to."""
-        resolver = self._resolver(file)
-        if value.startswith(("package://", "file://")):
-            return resolver.resolve_uri(value, Path(file).parent)
-        found = self.outline(file)
-        if found is None:
-            return None
-        include = resolve_include(value, found.declared, resolver.find)
-        return Path(include.value) if include.kind == "path" else None
-
-    # -- quick fixes ------------------------------------------------------------------
-    def fixes(self, path: str, code: str, line: int, subjects: Iterable[str]) -> list[Fix]:
-        """The fixes of one diagnostic in ``path`` (its code, its 0-based line, the links it is about)."""
-        found = []
-        source = self.session.sources.source(path)
-        edit = actions.noqa(source, line + 1, code) if source is not None and code in REGISTRY else None
-        if edit is not None:
-            found.append(Fix(f"Silence {code} on this element (noqa comment)", ((offset_place(path, source, edit.start, edit.end), edit.text),)))
+    # -- quick fixes that need the model ---------------------------------------------
+    def inertial_fixes(self, path: str, code: str, subjects: Iterable[str]) -> list[Fix]:
+        """The ``<inertial>`` fixes of one diagnostic in ``path`` (its code, the links it is about)."""
         rule = REGISTRY.get(code)
-        if rule is not None and rule.remedy is Remedy.INERTIAL:
-            found += [fix for link in subjects if (fix := self._inertial_fix(path, code, link)) is not None]
-        return found
+        if rule is None or rule.remedy is not Remedy.INERTIAL:
+            return []
+        return [fix for link in subjects if (fix := self._inertial_fix(path, code, link)) is not None]
 
     def _inertial_fix(self, path: str, code: str, name: str) -> Fix | None:
         """The ``<inertial>`` ``urdfcli inertia --suggest`` gives for a link, in place of the
         one written; for one a macro call wrote, the call that gives those values. From
         the first model whose audit finds ``code`` on that link."""
-        for model in self._models_reading(path):
+        for model in _models_reading(self.runs, path):
             audit = api.audit(model, self.session)
             entry = next((e for e in audit.links if e.link.name == name), None) if audit is not None else None
             if entry is not None and entry.link.inertial is not None and any(d.code == code for d in entry.problems):
@@ -270,6 +255,157 @@ class Engine:
         if edit is None:
             return None
         return Fix(escape(title), ((offset_place(file, source, edit.start, edit.end), edit.text),))
+
+
+class Navigator:
+    """Hover, definition, completion, symbols and the ``noqa`` fix, on the protocol's
+    thread: from the editor's texts (and the files on disk), their outlines, and the
+    models of the last checks handed over by :meth:`keep`."""
+
+    def __init__(self, package_paths: tuple[str, ...] = ()) -> None:
+        self.session = Session(Options(RuleSet.LINT, package_paths=package_paths))  # its configurations and package look-ups; it never expands
+        self.sources = Sources()
+        self.texts: dict[str, str] = {}
+        self.runs: dict[str, api.Run] = {}  # each open file's last check that read models
+        self._outlines: dict[str, tuple[str, Outline]] = {}  # file -> (text, its last well-formed outline)
+        self._places: dict[int, tuple] = {}  # id(run) -> (run, its links' and joints' places)
+
+    def sync(self, texts: dict[str, str]) -> None:
+        for path in [p for p in self.texts if p not in texts]:
+            self.sources.take_back(path)
+            del self.texts[path]
+            self.runs.pop(path, None)
+        for path, text in texts.items():
+            if self.texts.get(path) is not text:
+                self.sources.give(path, encoded(text))
+                self.texts[path] = text
+
+    def keep(self, path: str, run: api.Run | None) -> None:
+        """The models of the last check of ``path`` (None: it read none, the earlier ones stay)."""
+        if run is not None:
+            self.runs[path] = run
+        live = {id(r) for r in self.runs.values()}
+        self._places = {key: value for key, value in self._places.items() if key in live}
+
+    def forget(self) -> None:
+        self.session.forget()
+        self.sources = Sources()
+        for path, text in self.texts.items():
+            self.sources.give(path, encoded(text))
+
+    # -- requests -------------------------------------------------------------------
+    def hover(self, path: str, line: int, character: int) -> str | None:
+        source, at = self._at(path, line, character)
+        return navigation.hover(source.text, at, self.scope(path))
+
+    def definition(self, path: str, line: int, character: int) -> list[Place]:
+        source, at = self._at(path, line, character)
+        return [self.place(_absolute(found.file), found.line, found.column) for found in navigation.definition(source.text, at, self.scope(path))]
+
+    def completion(self, path: str, line: int, character: int) -> list[Completion]:
+        source, at = self._at(path, line, character)
+        return [Completion(item, offset_place(path, source, item.start, item.end)) for item in navigation.completion(source.text, at, self.scope(path))]
+
+    def symbols(self, path: str) -> list[tuple[str, str, str, Place]]:
+        """(kind, name, detail, place) of what the file defines, in its order."""
+        found = self.outline(path)
+        return [(d.kind, d.name, d.detail, self.place(path, d.line, d.column)) for d in found.definitions] if found else []
+
+    def noqa(self, path: str, code: str, line: int) -> Fix | None:
+        """The ``noqa`` comment that silences one diagnostic of ``path`` (its 0-based line)."""
+        source = self.sources.source(path)
+        edit = actions.noqa(source, line + 1, code) if source is not None and code in REGISTRY else None
+        if edit is None:
+            return None
+        return Fix(f"Silence {code} on this element (noqa comment)", ((offset_place(path, source, edit.start, edit.end), edit.text),))
+
+    def place(self, file: str, line: int | None, column: int | None) -> Place:
+        return token_place(file, self.sources.source(file), line, column)
+
+    def _at(self, path: str, line: int, character: int) -> tuple[Source, int]:
+        """The text of ``path`` as the editor has it now, and the offset of a position in it."""
+        source = self.sources.source(path) or Source("")
+        return source, offset(source, line, character)
+
+    def scope(self, path: str) -> navigation.Scope:
+        """What names the file shares: its outline, then those of the files it includes
+        (statically, and as its last check read them), then the models that include it."""
+        models = _models_reading(self.runs, path)
+        files = list(dict.fromkeys([path, *_files(models)]))
+        outlines: list[Outline] = []
+        for file in files:  # grows as includes are found
+            found = self.outline(file)
+            if found is None:
+                continue
+            outlines.append(found)
+            for include in found.includes:
+                target = self._file_named(file, include.value)
+                if target is not None and str(target) not in files:
+                    files.append(str(target))
+        links, joints = self._named_places(models)
+        resolver = self._resolver(path)
+        return navigation.Scope(tuple(outlines), links, joints, resolver.find, lambda value: self._file_named(path, value))
+
+    def _named_places(self, models: list[Result]) -> tuple[dict, dict]:
+        links: dict[str, tuple[Location, ...]] = {}
+        joints: dict[str, tuple[Location, ...]] = {}
+        for model in models:
+            known = self._places.get(id(model))
+            if known is None or known[0] is not model:
+                known = self._places[id(model)] = (model, *_named_places([model]))
+            for name, places in known[1].items():
+                links.setdefault(name, places)
+            for name, places in known[2].items():
+                joints.setdefault(name, places)
+        return links, joints
+
+    def outline(self, file: str) -> Outline | None:
+        """The file's outline; while its text is not well-formed, the last one that was."""
+        source = self.sources.source(file)
+        if source is None:
+            return None
+        known = self._outlines.get(file)
+        if known is not None and known[0] is source.text:
+            return known[1]
+        found = outline(file, source.text)
+        if found is None:
+            return known[1] if known else None
+        self._outlines[file] = (source.text, found)
+        return found
+
+    def _resolver(self, file: str) -> PackageResolver:
+        try:
+            extra = self.session.configs.for_input(file).package_paths
+        except ConfigError:
+            extra = ()
+        try:
+            return self.session.resolver(extra, Path(file))
+        except ValueError:  # a package path that is no folder: checking says so
+            return PackageResolver((), Path(file), index=self.session.packages)
+
+    def _file_named(self, file: str, value: str) -> Path | None:
+        """The file an include's filename or a mesh's URI in ``file`` leads to."""
+        resolver = self._resolver(file)
+        if value.startswith(("package://", "file://")):
+            return resolver.resolve_uri(value, Path(file).parent)
+        found = self.outline(file)
+        if found is None:
+            return None
+        include = resolve_include(value, found.declared, resolver.find)
+        return Path(include.value) if include.kind == "path" else None
+
+
+def _models_reading(runs: dict[str, api.Run], path: str) -> list[Result]:
+    """The models that the last checks of the open files expanded and that read
+    ``path`` (each once, the latest check's), those of its own check first."""
+    ordered = [runs[path]] if path in runs else []
+    ordered += [run for file, run in runs.items() if file != path]
+    found: dict[str, Result] = {}
+    for run in ordered:
+        for model in run.models:
+            if path in _files([model]):
+                found.setdefault(model.label, model)
+    return list(found.values())
 
 
 def _absolute(file: str) -> str:

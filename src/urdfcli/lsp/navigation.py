@@ -17,7 +17,7 @@ from typing import NamedTuple
 from ..diagnostics import Location
 from ..project.workspace import shown
 from ..report.escape import escape
-from .outline import XACRO_KEYWORDS, Cursor, Definition, Outline, cursor, expression_name, macro_parameters, substitution
+from .outline import XACRO_KEYWORDS, Cursor, Definition, Outline, cursor, expression_name, expression_names, macro_parameters, substitution
 
 XACRO = "xacro:"
 _MACRO_START = re.compile(r"<xacro:macro\b")
@@ -27,6 +27,7 @@ _TYPED_TAG = re.compile(r"<xacro:([\w.-]*)$")
 _NAME_CHARACTERS = re.compile(r"[\w.-]*")
 _TYPED_NAME = re.compile(r"\w*$")
 _OPEN_EXPRESSION = re.compile(r"\$\{[^}]*$")
+_LONGEST_TAG = 65_536
 
 
 class Scope(NamedTuple):
@@ -47,8 +48,13 @@ class Scope(NamedTuple):
                     found.setdefault(definition.name, definition)
         return found
 
-    def link_names(self) -> list[str]:
-        return sorted(name for name in set(self.links) | set(self.names("link")) if name.isprintable())
+    def link_names(self, typed: str = "") -> list[str]:
+        """The links' names: of the expanded models and as written; after an expression
+        (``${prefix}sh``), the names written in macros that start with it."""
+        if "${" in typed:
+            written = typed[: typed.rfind("}") + 1]
+            return sorted(name for name in self.names("link") if name.startswith(written) and name.isprintable()) if written else []
+        return sorted(name for name in set(self.links) | set(self.names("link")) if name.isprintable() and "${" not in name)
 
 
 class Item(NamedTuple):
@@ -117,6 +123,18 @@ def _names_link(at: Cursor) -> bool:
 def _preferred(definitions: list[Definition], macro: str | None) -> list[Definition]:
     """Definitions inside the macro being edited first, then those outside any macro."""
     return [d for d in definitions if d.macro == macro and macro] + [d for d in definitions if d.macro is None] or definitions
+
+
+def uses_parameters(text: str, offset: int) -> bool:
+    """Whether the start tag at ``offset`` (or the first one after it) uses a parameter
+    of the macro whose body holds it, in a ``${...}``: what a call's arguments change."""
+    start = text.find("<", offset)
+    macro = _macro_at(text, start) if start >= 0 else None
+    if macro is None:
+        return False
+    end = text.find(">", start, start + _LONGEST_TAG)
+    parameters = {name.lstrip("*^") for name, _ in macro_parameters(macro[1])}
+    return bool(parameters & expression_names(text[start : end if end > 0 else start + _LONGEST_TAG]))
 
 
 # -- hover ------------------------------------------------------------------------------
@@ -232,12 +250,17 @@ def _name_definition(text: str, offset: int, name: str, scope: Scope) -> list[Lo
 
 
 def _link_definition(name: str, scope: Scope) -> list[Location]:
+    """Where a link or joint is written as the texts are now (``${prefix}base_link`` in a
+    macro's body included); else, for one a macro names, the calls of the last check's model."""
+    written = [_location(d) for kind in ("link", "joint") for d in scope.defined(kind, name)]
+    if written:
+        return written
     places = scope.links.get(name) or scope.joints.get(name)
     if places:
         written = places[0]
         calls = [Location(c.file, c.line, c.column) for c in reversed(written.trace)]
         return calls + [Location(written.file, written.line, written.column)]
-    return [_location(d) for kind in ("link", "joint") for d in scope.defined(kind, name)]
+    return []
 
 
 # -- completion -------------------------------------------------------------------------
@@ -256,7 +279,8 @@ def completion(text: str, offset: int, scope: Scope) -> list[Item]:
         start = offset - len(_TYPED_NAME.search(text, at.value_start, offset).group())
         return _name_items(text, offset, scope, start)
     if _names_link(at):
-        return [Item(name, "link", "link", at.value_start, at.value_end) for name in scope.link_names()]
+        typed = at.value[: offset - at.value_start]
+        return [Item(name, "link", "link", at.value_start, at.value_end) for name in scope.link_names(typed)]
     return []
 
 

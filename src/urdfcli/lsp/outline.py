@@ -115,8 +115,8 @@ def _definition(element, file: str, line: int, column: int) -> Definition | None
         if local == "arg":
             return Definition("arg", name, file, line, column, element.get("default", ""), macro)
         return None
-    if "$" in name or element.getparent() is None:
-        return None
+    if element.getparent() is None or ("$" in name and macro is None):
+        return None  # a link named by an expression is named in a macro's body: '${prefix}base_link'
     written_in = element.getparent()
     in_robot = is_xacro_element(written_in) or local_name(written_in.tag) == "robot"
     if local == "link" and in_robot:
@@ -197,6 +197,11 @@ def expression_name(value: str, at: int) -> str | None:
                 if word.start() <= at <= word.end() and (word.start() == 0 or value[word.start() - 1] != "."):
                     return word.group()
     return None
+
+
+def expression_names(text: str) -> set[str]:
+    """The names the ``${...}`` expressions of ``text`` use."""
+    return {word for expression in _EXPRESSION.finditer(text) for word in _IDENTIFIER.findall(expression.group(1))}
 
 
 def substitution(value: str, at: int) -> tuple[str, str] | None:

@@ -1,13 +1,22 @@
 """The Language Server Protocol over standard input and output (pygls): the
-protocol's messages in, :class:`~urdfcli.lsp.engine.Engine` calls on one checking
-thread, diagnostics and answers out.
+protocol's messages in, checks on one checking thread, diagnostics and answers out.
 
 Checks are scheduled, not run per keystroke: a change after a pause starts a
 check at once, one that follows another within ``DEBOUNCE_SECONDS`` waits until
-the changes pause that long, and the changes made while a check runs are checked
-together once it ends, each open file with the editor's latest texts. Requests
-(hover, definition, completion, code actions) queue on the same thread, so they
-see the session as the last check left it; the protocol itself never waits.
+the changes pause that long. The file changed last is checked first, then the
+other open files whose last check read it. A change to what the running check
+reads gives that check up (an expansion it waits for is stopped), as does any
+change once it has run ``PREEMPT_SECONDS``: a runaway expression in one file holds
+up no other.
+
+A file's diagnostics are published only when every open file's check that reads
+it was made with the editor's texts as they are now, with the version checked:
+an editor never sees a list that is not the diagnostics of a version it sent,
+and a list stays shown until the next one is ready.
+
+Requests (hover, definition, completion, symbols, code actions) are answered on
+the protocol's thread from the texts' outlines and the last checks' models
+(:class:`~urdfcli.lsp.engine.Navigator`), never after a check.
 """
 
 from __future__ import annotations
@@ -16,20 +25,25 @@ import asyncio
 import gc
 import logging
 import os
+import queue
 import sys
-from concurrent.futures import ThreadPoolExecutor
+import threading
+from concurrent.futures import Future
+from typing import NamedTuple
 
 import attrs
 from lsprotocol import types
+from pygls.exceptions import JsonRpcInvalidParams
 from pygls.lsp.server import LanguageServer
+from pygls.protocol import LanguageServerProtocol
 from pygls.uris import from_fs_path, to_fs_path
 
 from ..diagnostics import Severity
 from ..report.escape import escape
 from ..report.rules import page
-from ..rules import REGISTRY
+from ..rules import REGISTRY, Remedy
 from ..version import __version__
-from .engine import Engine, Mark
+from .engine import Checked, Checker, Mark, Navigator
 from .places import Place, Point
 from .rulepages import rule_links
 
@@ -37,29 +51,112 @@ from .rulepages import rule_links
 # an auto-indent), short enough not to be felt: changes further apart than this, as
 # keystrokes are, are each checked at once.
 DEBOUNCE_SECONDS = 0.03
+# A check running longer than this is given up for a change to any file (and run again
+# after the files changed since): a runaway expression or a huge model waits its turn.
+PREEMPT_SECONDS = 1.0
+# How long a code action waits for the checking thread to find an <inertial> fix
+# before it answers with what the text alone gives.
+FIX_WAIT_SECONDS = 0.08
 SUFFIXES = (".urdf", ".xacro")  # .urdf.xacro included
 WATCHED = ("**/*.urdf", "**/*.xacro", "**/package.xml", "**/pyproject.toml", "**/urdfcli.toml", "**/.urdfcli.toml")
 SEVERITIES = {Severity.ERROR: types.DiagnosticSeverity.Error, Severity.WARNING: types.DiagnosticSeverity.Warning, Severity.INFO: types.DiagnosticSeverity.Information}
+DOCUMENT_NOTIFICATIONS = (types.TEXT_DOCUMENT_DID_CHANGE, types.TEXT_DOCUMENT_DID_SAVE, types.TEXT_DOCUMENT_DID_CLOSE)
+RELATED_SHOWN = 20  # macro calls listed with one diagnostic
 
 log = logging.getLogger(__name__)
 
 
+class CheckingThread:
+    """One daemon thread running the jobs given to it, in order: the checker's. A
+    daemon, so that the server exits at once whatever check runs."""
+
+    def __init__(self) -> None:
+        self.jobs: queue.SimpleQueue = queue.SimpleQueue()
+        threading.Thread(target=self._serve, name="urdfcli-check", daemon=True).start()
+
+    def submit(self, function, *args) -> Future:
+        future: Future = Future()
+        self.jobs.put((future, function, args))
+        return future
+
+    def _serve(self) -> None:
+        while True:
+            future, function, args = self.jobs.get()
+            if not future.set_running_or_notify_cancel():
+                continue
+            try:
+                future.set_result(function(*args))
+            except Exception as error:  # noqa: BLE001 - given to whoever waits for it
+                future.set_exception(error)
+
+
+class Contribution(NamedTuple):
+    """What the last check of an open file found, file by file."""
+
+    found: dict[str, list[types.Diagnostic]]
+    reads: frozenset[str]
+
+
+class Running(NamedTuple):
+    path: str
+    started: float  # the event loop's time
+    reads: frozenset[str]  # what its last check read: a change to one of them gives it up
+
+
+class Protocol(LanguageServerProtocol):
+    """pygls's protocol, with an error response for a request whose params do not fit
+    its method, and notifications about documents never opened ignored (logged)."""
+
+    _ANSWERED = object()
+
+    def structure_message(self, data):
+        try:
+            return super().structure_message(data)
+        except JsonRpcInvalidParams:
+            method = escape(str(data.get("method", "")))
+            if "id" in data and "method" in data:
+                self._send_response(data["id"], error=types.ResponseError(types.ErrorCodes.InvalidParams, f"invalid params for {method}"))
+            else:
+                log.warning("ignored %s: its params do not fit it", method)
+            return self._ANSWERED
+
+    def handle_message(self, message):
+        if message is self._ANSWERED:
+            return
+        if getattr(message, "method", None) in DOCUMENT_NOTIFICATIONS:
+            uri = message.params.text_document.uri
+            if uri not in self.workspace.text_documents:
+                self._server.window_log_message(types.LogMessageParams(types.MessageType.Log, f"ignored {message.method} for {escape(uri)}: not open"))
+                return
+        super().handle_message(message)
+
+
 class UrdfServer(LanguageServer):
-    """The server's state: the engine and its thread, what each open file's check
+    """The server's state: the checker and its thread, what each open file's check
     found in each file, and the checks waiting to run."""
 
     def __init__(self, package_paths: tuple[str, ...] = ()) -> None:
-        super().__init__("urdfcli", __version__, text_document_sync_kind=types.TextDocumentSyncKind.Incremental)
-        self.engine = Engine(package_paths)
-        self.checking = ThreadPoolExecutor(max_workers=1, thread_name_prefix="urdfcli-check")
-        self.found: dict[str, dict[str, list[types.Diagnostic]]] = {}  # open file -> file -> what its check found there
-        self.reads: dict[str, frozenset[str]] = {}  # open file -> the files its check read
-        self.waiting: set[str] = set()
-        self.stale: set[str] = set()  # open files whose check is to run again: what they found is not shown
+        super().__init__("urdfcli", __version__, protocol_cls=Protocol, text_document_sync_kind=types.TextDocumentSyncKind.Incremental)
+        self.checker = Checker(package_paths)
+        self.navigator = Navigator(package_paths)
+        self.thread = CheckingThread()
+        self.contributions: dict[str, Contribution] = {}  # open file -> what its last check found
+        self.dirty: dict[str, float] = {}  # open file -> when a check of it was asked for (the latest first)
+        self.pending: set[str] = set()  # files to publish once every check reading them is current
+        self.checked: set[str] = set()  # open files checked since their list was last published: published even if unchanged
+        self.shown: dict[str, tuple[int | None, list[types.Diagnostic]]] = {}  # file -> its last published version and list
+        self.uris: dict[str, str] = {}  # open file -> its URI as the client sent it
+        self.running: Running | None = None
         self.timer: asyncio.TimerHandle | None = None
         self.last_change = 0.0  # the event loop's time of the last change
-        self.running: asyncio.Task | None = None
+        self.task: asyncio.Task | None = None
+        self.shut_down = False
+        self.exit_code = 1  # the protocol's: 0 only for an exit after a shutdown
         self.links = rule_links()
+
+    def report_server_error(self, error: Exception, source) -> None:
+        """Logged, never shown in a pop-up: a request gets its error response anyway."""
+        log.error("%s: %s", type(error).__name__, error)
 
     # -- the editor's files ---------------------------------------------------------
     def open_files(self) -> dict[str, str]:
@@ -71,21 +168,32 @@ class UrdfServer(LanguageServer):
                 found[path] = document.source
         return found
 
+    def versions(self) -> dict[str, int | None]:
+        return {path: document.version for uri, document in list(self.workspace.text_documents.items()) if (path := checkable(uri))}
+
     def dependents(self, path: str) -> set[str]:
         """The open files whose last check read ``path``, and ``path`` itself."""
-        return {path} | {file for file, reads in self.reads.items() if path in reads}
+        return {path} | {file for file, found in self.contributions.items() if path in found.reads}
 
-    async def on_engine(self, function, *args):
-        """``function(*args)`` on the checking thread, after what is queued there."""
-        return await asyncio.get_running_loop().run_in_executor(self.checking, function, *args)
+    def navigate(self) -> Navigator:
+        self.navigator.sync(self.open_files())
+        return self.navigator
 
     # -- checks ------------------------------------------------------------------------
-    def schedule(self, paths: set[str]) -> None:
-        self.waiting |= paths
+    def schedule(self, changed: str | None, paths: set[str]) -> None:
+        """Check ``paths`` (``changed`` first), giving up a running check that they outdate."""
         loop = asyncio.get_running_loop()
-        after_a_pause = loop.time() - self.last_change >= DEBOUNCE_SECONDS
-        self.last_change = loop.time()
-        if self.running is not None and not self.running.done():
+        now = loop.time()
+        for path in paths:
+            self.dirty[path] = now
+        if changed in self.dirty:
+            self.dirty[changed] = now + 1e-6  # the file the user works on comes first
+        running = self.running
+        if running is not None and (changed in running.reads or changed == running.path or now - running.started > PREEMPT_SECONDS):
+            self.checker.give_up()
+        after_a_pause = now - self.last_change >= DEBOUNCE_SECONDS
+        self.last_change = now
+        if self.task is not None and not self.task.done():
             return  # taken when the running check ends
         if self.timer is not None:
             self.timer.cancel()
@@ -93,67 +201,84 @@ class UrdfServer(LanguageServer):
 
     def _start(self) -> None:
         self.timer = None
-        self.running = asyncio.ensure_future(self._check_waiting())
+        self.task = asyncio.ensure_future(self._check_waiting())
 
     async def _check_waiting(self) -> None:
-        while self.waiting:
-            paths, self.waiting = self.waiting, set()
-            self.stale = paths & set(self.open_files())
-            for path in sorted(self.stale):
-                texts, versions = self.open_files(), self.versions()  # the latest, and which they are
-                try:
-                    checked = await self.on_engine(self.engine.check, path, texts)
-                except Exception:  # noqa: BLE001 - logged; the server goes on
-                    log.exception("checking %s", escape(path))
-                    continue
-                finally:
-                    self.stale.discard(path)
-                if path in self.open_files():  # not closed while it was checked
-                    self.reads[path] = checked.reads
-                    self.publish(path, {file: [self.diagnostic(m) for m in marks] for file, marks in checked.marks.items()}, versions)
-                    self.checking.submit(self.engine.outline, path)  # after publishing: kept for navigation while the text is half-typed
+        loop = asyncio.get_running_loop()
+        while self.dirty:
+            path = max(self.dirty, key=self.dirty.__getitem__)
+            asked = self.dirty[path]
+            texts, versions = self.open_files(), self.versions()
+            if path not in texts:
+                del self.dirty[path]
+                continue
+            before = self.contributions.get(path)
+            self.running = Running(path, loop.time(), before.reads if before else frozenset())
+            try:
+                checked = await asyncio.wrap_future(self.thread.submit(self.checker.check, path, texts))
+            except Exception:  # noqa: BLE001 - logged; the server goes on
+                log.exception("checking %s", escape(path))
+                self.dirty.pop(path, None)
+                continue
+            finally:
+                self.running = None
+            if checked is None:
+                continue  # given up: checked again, after what changed
+            now = self.versions()
+            if any(now.get(file) != versions.get(file) for file in checked.reads):
+                self.dirty.setdefault(path, asked)  # checked with texts changed since: again
+                continue
+            if self.dirty.get(path) == asked:
+                del self.dirty[path]
+            self.keep(path, checked)
         # The collector runs seldom while a model is read (the command line's setting: a
         # fifth of a check's time otherwise); the garbage of the checks goes now, while idle.
-        self.checking.submit(gc.collect)
+        self.thread.submit(gc.collect)
 
-    def versions(self) -> dict[str, int | None]:
-        return {path: document.version for uri, document in list(self.workspace.text_documents.items()) if (path := checkable(uri))}
+    def keep(self, path: str, checked: Checked) -> None:
+        """Keep what the check of ``path`` found, and publish what is ready."""
+        before = self.contributions.get(path)
+        found = {file: [self.diagnostic(m) for m in marks] for file, marks in checked.marks.items()}
+        self.contributions[path] = Contribution(found, checked.reads)
+        self.navigator.keep(path, checked.run)
+        self.pending |= {path, *found, *(before.found if before else ())}
+        self.checked.add(path)
+        self.publish_ready()
 
-    def publish(self, path: str, found: dict[str, list[types.Diagnostic]], versions: dict[str, int | None]) -> None:
-        """Keep what the check of ``path`` found, and publish ``path`` (its version checked)
-        and every other file whose diagnostics changed."""
-        before = self.found.pop(path, {})
-        if found:
-            self.found[path] = found
-        for file in sorted(set(before) | set(found)):
-            if file == path or before.get(file) != found.get(file):
-                self.publish_file(file, versions.get(file))
+    def publish_ready(self) -> None:
+        """Publish each pending file whose every contributing check is current: when
+        its list or version changed, and an open file just checked in any case."""
+        busy = set(self.dirty) | ({self.running.path} if self.running else set())
+        versions = self.versions()
+        for file in sorted(self.pending):
+            contributors = [c for c, found in self.contributions.items() if file in found.found or file in found.reads]
+            if busy & {*contributors, file}:
+                continue
+            self.pending.discard(file)
+            diagnostics = merged(found.found.get(file, ()) for found in self.contributions.values())
+            shown = (versions.get(file), diagnostics)
+            if self.shown.get(file) == shown and file not in self.checked:
+                continue
+            self.checked.discard(file)
+            self.shown[file] = shown
+            if not diagnostics and file not in versions:
+                del self.shown[file]  # closed, and nothing left to show
+            uri = self.uris.get(file) or from_fs_path(file)
+            self.text_document_publish_diagnostics(types.PublishDiagnosticsParams(uri=uri, diagnostics=diagnostics, version=versions.get(file)))
 
-    def publish_file(self, file: str, version: int | None = None) -> None:
-        """All the open files' checks found in ``file``, each diagnostic once, with the
-        macro calls of every model that made it."""
-        merged: dict[tuple, types.Diagnostic] = {}
-        for checked, found in self.found.items():
-            if checked in self.stale or checked in self.waiting:
-                continue  # to be checked again with the latest texts
-            for diagnostic in found.get(file, ()):
-                start = diagnostic.range.start
-                key = (diagnostic.code, start.line, start.character, diagnostic.message)
-                if key not in merged:
-                    merged[key] = attrs.evolve(diagnostic, related_information=list(diagnostic.related_information or []) or None)
-                    continue
-                known = merged[key].related_information or []
-                more = [r for r in diagnostic.related_information or () if r not in known]
-                if more:
-                    merged[key].related_information = known + more
-        params = types.PublishDiagnosticsParams(uri=from_fs_path(file), diagnostics=list(merged.values()), version=version)
-        self.text_document_publish_diagnostics(params)
+    def close(self, path: str) -> None:
+        found = self.contributions.pop(path, None)
+        self.dirty.pop(path, None)
+        self.uris.pop(path, None)
+        self.pending |= {path, *(found.found if found else ())}
+        self.thread.submit(self.checker.sync, self.open_files())  # its file on disk stands for it again
+        self.publish_ready()
 
     # -- protocol values -----------------------------------------------------------------
     def diagnostic(self, mark: Mark) -> types.Diagnostic:
         found = mark.diagnostic
         link = self.links.get(found.code)
-        related = [types.DiagnosticRelatedInformation(types.Location(from_fs_path(p.file), self.range(p)), message) for p, message in mark.related]
+        related = [types.DiagnosticRelatedInformation(self.location(place), message) for place, message in mark.related]
         return types.Diagnostic(
             range=self.range(mark.place),
             message=mark.message,
@@ -174,20 +299,48 @@ class UrdfServer(LanguageServer):
         return types.Position(point.line, counted.character)
 
     def location(self, place: Place) -> types.Location:
-        return types.Location(from_fs_path(place.file), self.range(place))
+        return types.Location(self.uris.get(place.file) or from_fs_path(place.file), self.range(place))
 
     def cursor(self, uri: str, position: types.Position) -> tuple[str, int, int] | None:
-        """The file, 0-based line and character (in code points) of a request's position."""
+        """The file, 0-based line and character (in code points) of a request's position;
+        None for a document not open (logged) or not a URDF or xacro file."""
         path = checkable(uri)
         if path is None:
             return None
-        document = self.workspace.get_text_document(uri)
+        document = self.workspace.text_documents.get(uri)
+        if document is None:
+            self.window_log_message(types.LogMessageParams(types.MessageType.Log, f"no answer for {escape(uri)}: not open"))
+            return None
         at = document.position_from_client_units(position)
         return path, at.line, at.character
 
     def diagnostics_at(self, path: str, position: types.Position) -> list[types.Diagnostic]:
-        found = [d for contribution in self.found.values() for d in contribution.get(path, ())]
-        return [d for d in found if _within(position, d.range)]
+        shown = self.shown.get(path)
+        return [d for d in (shown[1] if shown else ()) if _within(position, d.range)]
+
+
+def merged(contributions) -> list[types.Diagnostic]:
+    """The diagnostics of one file from every check: each once, with the macro calls of
+    every model that made it; those of one rule starting on one line as one, counted."""
+    by_line: dict[tuple, list[types.Diagnostic]] = {}
+    for found in contributions:
+        for diagnostic in found:
+            by_line.setdefault((diagnostic.code, diagnostic.range.start.line), []).append(diagnostic)
+    result = []
+    for same in by_line.values():
+        messages = list(dict.fromkeys(d.message for d in same))
+        first = same[0]
+        related: list[types.DiagnosticRelatedInformation] = []
+        for r in (r for d in same for r in d.related_information or ()):
+            if r not in related and len(related) < RELATED_SHOWN:
+                related.append(r)
+        message = first.message
+        if len(messages) > 1:
+            head, hint, rest = message.partition("\nhint: ")
+            message = f"{head}\n(and {len(messages) - 1} more like it on this line){hint}{rest}"
+        subjects = list(dict.fromkeys(s for d in same for s in (d.data or {}).get("subjects", ())))
+        result.append(attrs.evolve(first, message=message, related_information=related or None, data={"subjects": subjects}))
+    return result
 
 
 def _within(position: types.Position, range_: types.Range) -> bool:
@@ -201,10 +354,11 @@ def checkable(uri: str) -> str | None:
     return os.path.abspath(path) if path and path.endswith(SUFFIXES) else None
 
 
-def rule_hover(diagnostic: types.Diagnostic) -> str:
-    rule = REGISTRY.get(str(diagnostic.code)) if diagnostic.code else None
-    text = f"**{diagnostic.code or 'urdfcli'}**: {diagnostic.message}"
-    return f"{text}\n\n---\n\n{page(rule, level=3)}" if rule is not None else text
+def rule_hover(diagnostics: list[types.Diagnostic]) -> list[str]:
+    """Each diagnostic's message, then each rule's page once."""
+    parts = [f"**{d.code or 'urdfcli'}**: {d.message}" for d in diagnostics]
+    codes = dict.fromkeys(str(d.code) for d in diagnostics if d.code)
+    return parts + [page(REGISTRY[code], level=3) for code in codes if code in REGISTRY]
 
 
 # -- the handlers ------------------------------------------------------------------------------
@@ -223,56 +377,59 @@ def build(package_paths: tuple[str, ...] = ()) -> UrdfServer:
     def did_open(ls: UrdfServer, params: types.DidOpenTextDocumentParams) -> None:
         path = checkable(params.text_document.uri)
         if path is not None:
-            ls.checking.submit(ls.engine.forget)  # the disk may have changed while it was closed
-            ls.schedule(ls.dependents(path))
+            ls.uris[path] = params.text_document.uri
+            ls.thread.submit(ls.checker.forget)  # the disk may have changed while it was closed
+            ls.navigator.forget()
+            ls.schedule(path, ls.dependents(path))
 
     @server.feature(types.TEXT_DOCUMENT_DID_CHANGE)
     def did_change(ls: UrdfServer, params: types.DidChangeTextDocumentParams) -> None:
         path = checkable(params.text_document.uri)
         if path is not None:
-            ls.schedule(ls.dependents(path))
+            ls.schedule(path, ls.dependents(path))
 
     @server.feature(types.TEXT_DOCUMENT_DID_SAVE)
     def did_save(ls: UrdfServer, params: types.DidSaveTextDocumentParams) -> None:
         path = checkable(params.text_document.uri)
         if path is not None:
-            ls.checking.submit(ls.engine.forget)
-            ls.schedule(ls.dependents(path))
+            ls.thread.submit(ls.checker.forget)
+            ls.navigator.forget()
+            ls.schedule(path, ls.dependents(path))
 
     @server.feature(types.TEXT_DOCUMENT_DID_CLOSE)
     def did_close(ls: UrdfServer, params: types.DidCloseTextDocumentParams) -> None:
         path = checkable(params.text_document.uri)
         if path is None:
             return
-        ls.reads.pop(path, None)
-        ls.publish(path, {}, {})
-        ls.checking.submit(ls.engine.sync, ls.open_files())  # its file on disk stands for it again
-        ls.schedule(ls.dependents(path) - {path})
+        readers = ls.dependents(path) - {path}
+        ls.close(path)
+        ls.schedule(None, readers)
 
     @server.feature(types.WORKSPACE_DID_CHANGE_WATCHED_FILES)
     def changed_on_disk(ls: UrdfServer, params: types.DidChangeWatchedFilesParams) -> None:
-        ls.checking.submit(ls.engine.forget)
-        ls.schedule(set(ls.open_files()))
+        ls.thread.submit(ls.checker.forget)
+        ls.navigator.forget()
+        ls.schedule(None, set(ls.open_files()))
 
     @server.feature(types.TEXT_DOCUMENT_HOVER)
-    async def hover(ls: UrdfServer, params: types.HoverParams) -> types.Hover | None:
+    def hover(ls: UrdfServer, params: types.HoverParams) -> types.Hover | None:
         at = ls.cursor(params.text_document.uri, params.position)
         if at is None:
             return None
-        parts = [rule_hover(d) for d in ls.diagnostics_at(at[0], params.position)]
-        found = await ls.on_engine(ls.engine.hover, *at, ls.open_files())
+        parts = rule_hover(ls.diagnostics_at(at[0], params.position))
+        found = ls.navigate().hover(*at)
         parts += [found] if found else []
         return types.Hover(types.MarkupContent(types.MarkupKind.Markdown, "\n\n---\n\n".join(parts))) if parts else None
 
     @server.feature(types.TEXT_DOCUMENT_DEFINITION)
-    async def definition(ls: UrdfServer, params: types.DefinitionParams) -> list[types.Location] | None:
+    def definition(ls: UrdfServer, params: types.DefinitionParams) -> list[types.Location] | None:
         at = ls.cursor(params.text_document.uri, params.position)
         if at is None:
             return None
-        return [ls.location(place) for place in await ls.on_engine(ls.engine.definition, *at, ls.open_files())] or None
+        return [ls.location(place) for place in ls.navigate().definition(*at)] or None
 
     @server.feature(types.TEXT_DOCUMENT_COMPLETION, types.CompletionOptions(trigger_characters=[":", '"', "'", "{"]))
-    async def completion(ls: UrdfServer, params: types.CompletionParams) -> types.CompletionList | None:
+    def completion(ls: UrdfServer, params: types.CompletionParams) -> types.CompletionList | None:
         at = ls.cursor(params.text_document.uri, params.position)
         if at is None:
             return None
@@ -283,30 +440,56 @@ def build(package_paths: tuple[str, ...] = ()) -> UrdfServer:
                 detail=c.item.detail,
                 text_edit=types.TextEdit(ls.range(c.place), c.item.label),
             )
-            for c in await ls.on_engine(ls.engine.completion, *at, ls.open_files())
+            for c in ls.navigate().completion(*at)
         ]
         return types.CompletionList(is_incomplete=False, items=items)
+
+    @server.feature(types.TEXT_DOCUMENT_DOCUMENT_SYMBOL)
+    def symbols(ls: UrdfServer, params: types.DocumentSymbolParams) -> list[types.DocumentSymbol] | None:
+        path = checkable(params.text_document.uri)
+        if path is None or params.text_document.uri not in ls.workspace.text_documents:
+            return None
+        return [
+            types.DocumentSymbol(escape(name) or '""', SYMBOL_KINDS[kind], ls.range(place), ls.range(place), detail=escape(f"{kind} {detail}".strip()))
+            for kind, name, detail, place in ls.navigate().symbols(path)
+        ]
 
     @server.feature(types.TEXT_DOCUMENT_CODE_ACTION, types.CodeActionOptions(code_action_kinds=[types.CodeActionKind.QuickFix]))
     async def code_action(ls: UrdfServer, params: types.CodeActionParams) -> list[types.CodeAction] | None:
         path = checkable(params.text_document.uri)
-        if path is None:
+        if path is None or params.text_document.uri not in ls.workspace.text_documents:
             return None
         found = []
         for diagnostic in params.context.diagnostics:
             if diagnostic.source != "urdfcli" or not diagnostic.code:
                 continue
+            code = str(diagnostic.code)
             subjects = (diagnostic.data or {}).get("subjects", []) if isinstance(diagnostic.data, dict) else []
-            for fix in await ls.on_engine(ls.engine.fixes, path, str(diagnostic.code), diagnostic.range.start.line, subjects):
+            noqa = ls.navigate().noqa(path, code, diagnostic.range.start.line)
+            fixes = [noqa] if noqa is not None else []
+            if subjects and REGISTRY.get(code) is not None and REGISTRY[code].remedy is Remedy.INERTIAL:
+                # the audit needs the checking thread: while a check runs, waited for a moment, else left out
+                job = ls.thread.submit(ls.checker.inertial_fixes, path, code, subjects)
+                busy = ls.running is not None or bool(ls.dirty)
+                try:
+                    fixes += await asyncio.wait_for(asyncio.shield(asyncio.wrap_future(job)), FIX_WAIT_SECONDS if busy else None)
+                except asyncio.TimeoutError:
+                    job.cancel()
+            for fix in fixes:
                 changes: dict[str, list[types.TextEdit]] = {}
                 for place, text in fix.edits:
-                    changes.setdefault(from_fs_path(place.file), []).append(types.TextEdit(ls.range(place), text))
+                    changes.setdefault(ls.uris.get(place.file) or from_fs_path(place.file), []).append(types.TextEdit(ls.range(place), text))
                 found.append(types.CodeAction(fix.title, kind=types.CodeActionKind.QuickFix, diagnostics=[diagnostic], edit=types.WorkspaceEdit(changes=changes)))
         return found or None
 
     @server.feature(types.SHUTDOWN)
     def shutdown(ls: UrdfServer, params: None) -> None:
-        ls.checking.submit(ls.engine.close)
+        ls.shut_down = True
+        ls.checker.give_up()
+
+    @server.feature(types.EXIT)
+    def exit_(ls: UrdfServer, params: None) -> None:
+        ls.exit_code = 0 if ls.shut_down else 1
 
     return server
 
@@ -318,11 +501,20 @@ COMPLETION_KINDS = {
     "property": types.CompletionItemKind.Constant,
     "parameter": types.CompletionItemKind.Variable,
 }
+SYMBOL_KINDS = {
+    "macro": types.SymbolKind.Function,
+    "property": types.SymbolKind.Constant,
+    "arg": types.SymbolKind.Variable,
+    "link": types.SymbolKind.Struct,
+    "joint": types.SymbolKind.Interface,
+}
 
 
-def serve(package_paths: tuple[str, ...] = ()) -> None:
-    """Run the server on standard input and output until the client ends it; ``package_paths``
-    are ``-P`` options. Raises PackageError for one that is not NAME=DIR or a folder."""
+def serve(package_paths: tuple[str, ...] = ()) -> int:
+    """Run the server on standard input and output until the client ends it (or is
+    gone); ``package_paths`` are ``-P`` options. The exit code, as the protocol says:
+    0 after ``shutdown`` then ``exit``, else 1. Raises PackageError for a ``-P`` that
+    is not NAME=DIR or a folder."""
     server = build(package_paths)
     protocol_out = os.fdopen(os.dup(sys.stdout.fileno()), "wb")
     # Whatever else would write to standard output (a library, the forked xacro worker)
@@ -334,9 +526,11 @@ def serve(package_paths: tuple[str, ...] = ()) -> None:
     # a collection after each check then takes about a millisecond, not 40.
     gc.collect()
     gc.freeze()
-    server.engine.warm()
+    server.checker.warm()
     try:
         server.start_io(sys.stdin.buffer, protocol_out)
     finally:
-        server.checking.shutdown(wait=False, cancel_futures=True)
-        server.engine.close()
+        # the running check is given up (its expansion stopped); the checking thread is a
+        # daemon, so nothing waits for it
+        server.checker.give_up()
+    return server.exit_code

@@ -86,6 +86,14 @@ class Worker:
             process = self._process = _Process(memory_mib)
         return process
 
+    def interrupt(self) -> None:
+        """Kill the process now, from any thread: a job it runs ends in LimitExceeded
+        (its process ended without a result), and the next job starts another."""
+        process = self._process
+        if process is not None and process.owner == os.getpid():
+            with contextlib.suppress(ProcessLookupError):
+                os.kill(process.pid, signal.SIGKILL)
+
     def stop(self) -> None:
         """Stop the process (the next job starts another)."""
         process, self._process = self._process, None
