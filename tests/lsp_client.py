@@ -10,8 +10,12 @@ from __future__ import annotations
 
 import asyncio
 import contextlib
+import json
 import os
+import subprocess
 import sys
+import threading
+import time
 from pathlib import Path
 
 from lsprotocol import types
@@ -182,3 +186,57 @@ def server_memory_kib(editor: Editor) -> int:
     """The server process's resident memory (VmRSS), in KiB."""
     status = Path(f"/proc/{editor.server.pid}/status").read_text()
     return int(next(line.split()[1] for line in status.splitlines() if line.startswith("VmRSS:")))
+
+
+class Wire:
+    """The server driven message by message over its pipes, for what a well-behaved
+    client never sends (invalid params, changes to documents never opened, exit
+    without shutdown): the raw JSON-RPC exchange, read on a thread of its own."""
+
+    def __init__(self, root: Path, cache: Path):
+        environment = {**os.environ, "XDG_CACHE_HOME": str(cache)}
+        self.process = subprocess.Popen(
+            [sys.executable, "-m", "urdfcli", "lsp"], cwd=root, env=environment, stdin=subprocess.PIPE, stdout=subprocess.PIPE, stderr=subprocess.PIPE
+        )
+        self.received: list[dict] = []
+        self.next_id = 0
+        threading.Thread(target=self._read, daemon=True).start()
+
+    def send(self, message: dict) -> None:
+        body = json.dumps({"jsonrpc": "2.0", **message}).encode()
+        self.process.stdin.write(b"Content-Length: %d\r\n\r\n" % len(body) + body)
+        self.process.stdin.flush()
+
+    def request(self, method: str, params) -> dict:
+        """The response to a request (with its result or its error)."""
+        self.next_id += 1
+        asked = self.next_id
+        self.send({"id": asked, "method": method, "params": params})
+        return self.wait(lambda m: m.get("id") == asked and "method" not in m)
+
+    def notify(self, method: str, params) -> None:
+        self.send({"method": method, "params": params})
+
+    def wait(self, wanted, timeout: float = TIMEOUT) -> dict:
+        deadline = time.monotonic() + timeout
+        while time.monotonic() < deadline:
+            found = next((m for m in list(self.received) if wanted(m)), None)
+            if found is not None:
+                return found
+            time.sleep(0.01)
+        raise TimeoutError("no such message")
+
+    def _read(self) -> None:
+        output = self.process.stdout
+        while header := output.readline():
+            length = int(header.split(b":")[1])
+            while output.readline() not in (b"\r\n", b""):
+                pass
+            self.received.append(json.loads(output.read(length)))
+
+    def initialize(self, root: Path) -> None:
+        self.request("initialize", {"processId": None, "rootUri": uri(root), "capabilities": {}})
+        self.notify("initialized", {})
+
+    def exit_code(self, timeout: float = TIMEOUT) -> int:
+        return self.process.wait(timeout)

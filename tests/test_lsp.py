@@ -14,7 +14,7 @@ from urllib.request import url2pathname
 
 import pytest
 from conftest import FIXTURES, run_cli
-from lsp_client import editing, position, server_memory_kib, uri
+from lsp_client import Wire, editing, position, server_memory_kib, uri
 from lsprotocol import types
 from ros_workspace import line_of, make_repository
 
@@ -424,3 +424,31 @@ def test_the_other_commands_never_import_the_server():
     modules = imported("check", str(FIXTURES / "seed000" / "my_robot.urdf"))
     assert "urdfcli.cli.lsp" in modules
     assert not {"pygls", "lsprotocol", "urdfcli.lsp", "urdfcli.lsp.server"} & set(modules)
+
+
+# -- protocol hygiene ----------------------------------------------------------------------------------
+def test_every_request_is_answered_and_unknown_documents_are_ignored(repository, cache):
+    wire = Wire(repository, cache)
+    wire.initialize(repository)
+    invalid = wire.request("textDocument/hover", {"textDocument": {"uri": uri(rover(repository))}})  # no position
+    assert invalid["error"]["code"] == types.ErrorCodes.InvalidParams and "textDocument/hover" in invalid["error"]["message"]
+    never_opened = repository / "never.urdf"
+    wire.notify("textDocument/didChange", {"textDocument": {"uri": uri(never_opened), "version": 3}, "contentChanges": [{"text": "<robot/>"}]})
+    logged = wire.wait(lambda m: m.get("method") == "window/logMessage")
+    assert "not open" in logged["params"]["message"]
+    missing = {"textDocument": {"uri": uri(repository / "missing.urdf")}, "position": {"line": 0, "character": 0}}
+    for method in ("textDocument/completion", "textDocument/hover", "textDocument/definition"):
+        answer = wire.request(method, missing)
+        assert "error" not in answer and answer["result"] is None
+    assert not [m for m in wire.received if m.get("method") == "window/showMessage"]  # no pop-up
+    assert wire.request("shutdown", None)["result"] is None
+    wire.notify("exit", None)
+    assert wire.exit_code() == 0
+    assert b"Traceback" not in wire.process.stderr.read()
+
+
+def test_exit_without_shutdown_is_exit_code_1(repository, cache):
+    wire = Wire(repository, cache)
+    wire.initialize(repository)
+    wire.notify("exit", None)
+    assert wire.exit_code() == 1

@@ -131,6 +131,12 @@ class Protocol(LanguageServerProtocol):
         super().handle_message(message)
 
 
+def _not_deserialization(record: logging.LogRecord) -> bool:
+    """pygls logs a traceback for params that do not fit their method; the server says so
+    in one line (and answers the request with an error)."""
+    return not str(record.msg).startswith("Unable to deserialize message")
+
+
 class UrdfServer(LanguageServer):
     """The server's state: the checker and its thread, what each open file's check
     found in each file, and the checks waiting to run."""
@@ -516,6 +522,7 @@ def serve(package_paths: tuple[str, ...] = ()) -> int:
     0 after ``shutdown`` then ``exit``, else 1. Raises PackageError for a ``-P`` that
     is not NAME=DIR or a folder."""
     server = build(package_paths)
+    logging.getLogger("pygls.protocol.json_rpc").addFilter(_not_deserialization)
     protocol_out = os.fdopen(os.dup(sys.stdout.fileno()), "wb")
     # Whatever else would write to standard output (a library, the forked xacro worker)
     # goes to standard error, never into the protocol's stream.
