@@ -43,6 +43,7 @@ from . import actions, navigation
 from .outline import Outline, encoded, outline
 from .places import Place, offset, offset_place, token_place
 
+OUTLINES_KEPT = 64  # outlines of files not open (included libraries) kept for navigation
 
 
 class Mark(NamedTuple):
@@ -275,6 +276,10 @@ class Navigator:
             self.sources.take_back(path)
             del self.texts[path]
             self.runs.pop(path, None)
+            self._outlines.pop(path, None)
+        if len(self._outlines) > len(texts) + OUTLINES_KEPT:  # of files not open: read again when needed
+            for path in [p for p in self._outlines if p not in texts]:
+                del self._outlines[path]
         for path, text in texts.items():
             if self.texts.get(path) is not text:
                 self.sources.give(path, encoded(text))

@@ -22,6 +22,7 @@ the protocol's thread from the texts' outlines and the last checks' models
 from __future__ import annotations
 
 import asyncio
+import ctypes
 import gc
 import logging
 import os
@@ -239,7 +240,8 @@ class UrdfServer(LanguageServer):
             self.keep(path, checked)
         # The collector runs seldom while a model is read (the command line's setting: a
         # fifth of a check's time otherwise); the garbage of the checks goes now, while idle.
-        self.thread.submit(gc.collect)
+        self.thread.submit(give_back_memory)
+        self.navigator.sync(self.open_files())  # what it holds of texts changed or closed goes too
 
     def keep(self, path: str, checked: Checked) -> None:
         """Keep what the check of ``path`` found, and publish what is ready."""
@@ -277,8 +279,11 @@ class UrdfServer(LanguageServer):
         self.dirty.pop(path, None)
         self.uris.pop(path, None)
         self.pending |= {path, *(found.found if found else ())}
+        self.navigator.sync(self.open_files())
+        self.navigator.keep(path, None)
         self.thread.submit(self.checker.sync, self.open_files())  # its file on disk stands for it again
         self.publish_ready()
+        self.thread.submit(give_back_memory)
 
     # -- protocol values -----------------------------------------------------------------
     def diagnostic(self, mark: Mark) -> types.Diagnostic:
@@ -323,6 +328,17 @@ class UrdfServer(LanguageServer):
     def diagnostics_at(self, path: str, position: types.Position) -> list[types.Diagnostic]:
         shown = self.shown.get(path)
         return [d for d in (shown[1] if shown else ()) if _within(position, d.range)]
+
+
+def give_back_memory() -> None:
+    """Collect the garbage, and give the memory freed back to the system: glibc's
+    allocator keeps what a large file's check freed otherwise (hundreds of MiB after
+    a 50 MB model), though nothing uses it."""
+    gc.collect()
+    try:
+        ctypes.CDLL("libc.so.6").malloc_trim(0)
+    except (OSError, AttributeError):  # not glibc: its allocator decides
+        pass
 
 
 def merged(contributions) -> list[types.Diagnostic]:
