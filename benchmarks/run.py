@@ -22,7 +22,10 @@ It measures every target of "What must hold" in one run:
    URDF of 3,000 links (``--editor`` measures these alone);
 6. ``lint`` on the 69 URDFs with their meshes (``-P example-robot-data=...``, every
    mesh read) against loading each model once with ``yourdfpy.URDF.load(...,
-   load_meshes=True)`` in one process, what a Python user would write.
+   load_meshes=True)`` in one process, what a Python user would write;
+7. ``diff`` of two versions of a 100-link model against one ``check`` of it, and
+   ``lint`` of a repository with no generated URDF (the 69 URDFs, their xacro
+   headers taken out) against the same ``lint`` with the drift rule X110 off.
 
 Models are written under ``benchmarks/generated/``. Every measurement is a
 separate process with its output discarded; the two commands of a comparison
@@ -339,6 +342,32 @@ def large_cases(rows: list[Row], check_urdf: str) -> None:
         )
 
 
+def diff_cases(rows: list[Row]) -> None:
+    """diff of two versions of a 100-link tree (an origin near the root moved, masses and a limit
+    changed, a link renamed), against one check of it; lint with and without the drift rule."""
+    old = generate_tree(100)
+    new = GENERATED / "tree_100_changed.urdf"
+    text = old.read_text(encoding="utf-8").replace('<mass value="1.0"/>', '<mass value="1.1"/>', 20)
+    text = text.replace('<origin xyz="0 0 0.1" rpy="0 0 0"/>', '<origin xyz="0 0.02 0.1" rpy="0 0 0.1"/>', 1)
+    text = text.replace('upper="1.57"', 'upper="1.6"', 5).replace('"link_99"', '"link_ninety_nine"')
+    new.write_text(text, encoding="utf-8")
+    runs = 5 if QUICK else 11
+    diff, check = measure(urdfcli("diff", str(old), str(new)), urdfcli("check", str(old)), runs=runs)
+    compare(rows, "diff, two versions of a 100-link tree", diff, "one check of it", check, 2.5)
+    files = corpus()
+    if not files:
+        return
+    plain, robots = GENERATED / "no_generated_urdf", corpus_package() / "robots"
+    shutil.rmtree(plain, ignore_errors=True)
+    for file in files:  # a repository of URDFs written by hand: no xacro header, no xacro beside them
+        copy = plain / file.relative_to(robots)
+        copy.parent.mkdir(parents=True, exist_ok=True)
+        copy.write_text(re.sub(r"<!--.*?-->", "", file.read_text(encoding="utf-8"), flags=re.DOTALL), encoding="utf-8")
+    runs = 3 if QUICK else 7
+    on, off = measure(urdfcli("lint", "--isolated", str(plain)), urdfcli("lint", "--isolated", "--ignore", "X110", str(plain)), runs=runs)
+    compare(rows, f"lint, a repository of {len(files)} URDFs none generated", on, "the same lint without X110 (drift)", off, 1.1)
+
+
 EDITS = 10 if QUICK else 30
 EDITOR_LINKS = 50
 LIBRARY_MODELS = 9
@@ -564,6 +593,7 @@ def main() -> int:
     small_file_cases(rows)
     xacro_cases(rows, check_urdf, xacro)
     editor_cases(rows)
+    diff_cases(rows)
     if not QUICK:
         large_cases(rows, check_urdf)
     load = os.getloadavg()[0] if hasattr(os, "getloadavg") else None

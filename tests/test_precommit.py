@@ -11,7 +11,10 @@ import subprocess
 import pytest
 import yaml
 from conftest import ROOT, require_tool
+from generated_repos import generate, kuka_package
 from ros_workspace import edit, line_of, make_repository
+
+from urdfcli.project.drift import regenerated
 
 HOOKS = yaml.safe_load((ROOT / ".pre-commit-hooks.yaml").read_text())
 CLEAN = '<robot name="r">\n  <link name="base_link"/>\n</robot>\n'
@@ -23,9 +26,10 @@ FLAGGED = (  # warnings only: lint fails, check passes
 
 def test_hooks_are_declared_as_documented():
     by_id = {hook["id"]: hook for hook in HOOKS}
-    assert set(by_id) == {"urdfcli-check", "urdfcli-lint"}
+    assert set(by_id) == {"urdfcli-check", "urdfcli-lint", "urdfcli-drift"}
     assert by_id["urdfcli-check"]["entry"] == "urdfcli check"
     assert by_id["urdfcli-lint"]["entry"] == "urdfcli lint"
+    assert by_id["urdfcli-drift"]["entry"] == "urdfcli drift"
     assert all(hook["language"] == "python" for hook in HOOKS)
     # every changed file in one run, so that a library and its models are seen together
     assert all(hook["require_serial"] and hook["files"] == r"\.(urdf|xacro)$" for hook in HOOKS)
@@ -174,3 +178,44 @@ def test_commits_to_a_ros_repository_check_libraries_through_their_models(tmp_pa
     assert code == 0, out
     assert re.search(r"urdfcli check\.+\(no files to check\)Skipped", out)
     assert re.search(r"urdfcli lint\.+\(no files to check\)Skipped", out)
+
+
+def test_drift_hook_fails_a_commit_whose_xacro_leaves_the_generated_urdf_behind(tmp_path, hooks):
+    """urdfcli-drift on real commits to a package built like kuka_kr16_support: a change to the
+    macro file alone fails (the URDF generated from the model including it no longer matches);
+    the URDF regenerated and committed with it passes; a change elsewhere checks nothing."""
+    pre_commit, hooks_repo, env = hooks
+    repo = tmp_path / "kuka_experimental"
+    package = kuka_package(repo, generated_with_flange=True)
+    rev = subprocess.run(["git", "rev-parse", "HEAD"], cwd=hooks_repo, capture_output=True, text=True, check=True).stdout.strip()
+    (repo / ".pre-commit-config.yaml").write_text(f"repos:\n  - repo: {hooks_repo}\n    rev: {rev}\n    hooks:\n      - id: urdfcli-drift\n")
+    git("init", "-q", cwd=repo)
+    subprocess.run([pre_commit, "install"], cwd=repo, env=env, check=True, capture_output=True, timeout=120)
+    macro, urdf = package / "urdf" / "kr16_2_macro.xacro", package / "urdf" / "kr16_2.urdf"
+
+    def commit(message, *paths):
+        git("add", *(paths or ("-A",)), cwd=repo)
+        done = subprocess.run(
+            ["git", "-c", "user.name=t", "-c", "user.email=t@urdfcli.invalid", "-c", "commit.gpgsign=false", "commit", "-m", message],
+            cwd=repo, env=env, capture_output=True, timeout=900,
+        )
+        return done.returncode, done.stdout.decode() + done.stderr.decode()
+
+    code, out = commit("the package, its URDF generated from its xacro")
+    assert code == 0, out
+    assert re.search(r"urdfcli drift\.+Passed", out)
+
+    edit(macro, 'upper="${radians(35)}"', 'upper="${radians(40)}"')
+    code, out = commit("joint a2 reaches further", "kuka_kr16_support/urdf/kr16_2_macro.xacro")
+    assert code == 1, out
+    assert re.search(r"urdfcli drift\.+Failed", out)
+    assert ("kuka_kr16_support/urdf/kr16_2.urdf:1:1: X110 warning: kr16_2.urdf does not match kuka_kr16_support/urdf/kr16_2.xacro, "
+            "which generated it: 1 joint differs (joint 'joint_a2' limit upper: 0.6108652381980153 here, 0.6981317007977318 in kr16_2.xacro)") in out
+
+    urdf.write_text(regenerated(urdf.read_text(), generate(package / "urdf" / "kr16_2.xacro", "unused")))
+    code, out = commit("joint a2 reaches further, the URDF regenerated")
+    assert code == 0, out
+
+    (repo / "README.md").write_text("# KUKA KR 16-2\n")
+    code, out = commit("readme", "README.md")
+    assert code == 0 and re.search(r"urdfcli drift\.+\(no files to check\)Skipped", out), out

@@ -21,8 +21,9 @@ from urdfcli.rules import REGISTRY, example_code
 ROBOT_CHILDREN = {"link", "joint", "material", "gazebo", "transmission"}
 # X006 is about a library and the models of its repository that include it: its Example and
 # Use instead are a pyproject.toml, tested in tests/test_workspace.py. P001 is about a package.xml
-# and the files of its package: tested in tests/test_xacro_sources.py.
-NEEDS_A_REPOSITORY = {"X006", "P001"}
+# and the files of its package: tested in tests/test_xacro_sources.py. X110 compares a URDF with the xacro file
+# beside it that generated it: tested in tests/test_drift.py.
+NEEDS_A_REPOSITORY = {"X006", "P001", "X110"}
 # C001-C003 report what a consumer said on a real load (check --target NAME --load): tests/test_targets.py.
 NEEDS_A_LOAD = {"C001", "C002", "C003"}
 RULES = sorted((r for r in REGISTRY.values() if r.code not in NEEDS_A_REPOSITORY | NEEDS_A_LOAD), key=lambda r: r.code)

@@ -13,7 +13,7 @@ from importlib import import_module
 from .version import __version__
 
 _EXPORTS = {
-    "UsageError": "api", "check": "api", "lint": "api",
+    "UsageError": "api", "check": "api", "diff": "api", "lint": "api",
     "Call": "diagnostics", "Diagnostic": "diagnostics", "Location": "diagnostics", "Severity": "diagnostics",
     "Options": "options", "Result": "report.result", "RuleSet": "options", "Session": "session",
 }
@@ -27,4 +27,4 @@ def __getattr__(name: str):
     return getattr(import_module(f".{_EXPORTS[name]}", __name__), name)
 
 
-__all__ = ["Call", "Diagnostic", "Location", "Options", "Result", "RuleSet", "Session", "Severity", "UsageError", "__version__", "check", "lint"]
+__all__ = ["Call", "Diagnostic", "Location", "Options", "Result", "RuleSet", "Session", "Severity", "UsageError", "__version__", "check", "diff", "lint"]

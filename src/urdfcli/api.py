@@ -19,13 +19,14 @@ import os
 from collections.abc import Callable, Iterable
 from functools import partial
 from pathlib import Path
-from typing import NamedTuple
+from typing import TYPE_CHECKING, NamedTuple
 
 from .diagnostics import Diagnostic
 from .model import massprops
 from .model.load import Loaded, load
 from .model.meshes import mesh_facts
 from .model.units import unit_verdict
+from .project import drift as drift_
 from .project import linter
 from .project.config import Config, ConfigError
 from .project.workspace import Entry, Target, assemble, model_targets, models_below, plan, unchecked_library, xacro_sources
@@ -36,6 +37,9 @@ from .report.result import Result
 from .options import Options
 from .rules import REGISTRY, Kind, RuleSet
 from .session import Session
+
+if TYPE_CHECKING:
+    from .report.diff import Difference
 
 
 class UsageError(Exception):
@@ -222,6 +226,8 @@ def check_target(target: Target, session: Session) -> Result | str:
         raise UsageError(str(error)) from None
     document = loaded.document
     loaded.sources = xacro_sources(document, session.index, session.expander.global_names)
+    if rule_set is not RuleSet.TREE and drift_.enabled(config, path):
+        loaded.diagnostics += drift_.drift(loaded, config, session)
     if document.missing_argument is not None:
         loaded.diagnostics = [needs_argument(d, document.missing_argument, path) if d.code == "X003" else d for d in loaded.diagnostics]
     diagnostics = linter.lint(loaded, config, rule_set)
@@ -294,4 +300,64 @@ def expand(path: str, session: Session) -> tuple[str | None, list[str], list[Dia
     return document.expanded_text, list(document.includes), diagnostics
 
 
-__all__ = ["Options", "Run", "RuleSet", "Session", "UsageError", "check", "check_target", "expand", "find_models", "lint", "run", "xacro_arguments"]
+def diff(old: str | os.PathLike, new: str | os.PathLike, *arguments: str, session: Session | None = None, tolerance: float | None = None, **settings) -> Difference:
+    """What changed from the robot ``old`` to ``new`` (``urdfcli diff``): each a file, ``-``
+    for standard input, or ``REV:PATH`` for a file at a git revision. ``arguments`` are
+    xacro arguments for both (over the session's); ``tolerance``, the relative tolerance
+    of numbers (see :data:`urdfcli.model.compare.TOLERANCE`); ``settings`` those of
+    :class:`~urdfcli.options.Options` when no session is given. Raises UsageError when
+    either cannot be read as a robot."""
+    return diff_with_revisions(os.fspath(old), os.fspath(new), xacro_arguments(arguments), session, tolerance, settings)[0]
+
+
+def diff_with_revisions(old: str, new: str, mappings: dict[str, str], session: Session | None, tolerance: float | None, settings: dict) -> tuple[Difference, tuple[str, ...]]:
+    """:func:`diff`, and the git revisions its inputs name."""
+    from .project.versions import Unreadable, compare_versions  # (git and archives: only diff reads them)
+
+    own = session is None
+    try:
+        session = session or Session(Options(**settings))
+    except (PackageError, ValueError) as error:
+        raise UsageError(str(error)) from None
+    try:
+        return compare_versions(old, new, {**session.options.mappings, **mappings}, session.inputs, session.resolver, tolerance)
+    except Unreadable as error:
+        raise UsageError(str(error)) from None
+    except PackageError as error:
+        raise UsageError(str(error)) from None
+    finally:
+        if own:
+            session.close()
+
+
+def drift(paths: Iterable[str | os.PathLike], session: Session | None = None, **settings) -> list[Result]:
+    """The generated URDFs that ``paths`` concern (each given, each below a folder given,
+    each generated from a given xacro file or one including it), each with what rule
+    X110 finds: whether it still matches the xacro file it was generated from.
+    ``settings`` are those of :class:`~urdfcli.options.Options` when no session is given."""
+    own = session is None
+    try:
+        session = session or Session(Options(**settings))
+    except (PackageError, ValueError) as error:
+        raise UsageError(str(error)) from None
+    try:
+        return [_drift_of(path, session) for path in drift_.generated_urdfs([os.fspath(p) for p in paths], session)]
+    finally:
+        if own:
+            session.close()
+
+
+def _drift_of(path: str, session: Session) -> Result:
+    config = configured(session)(path)
+    try:
+        loaded = load(path, session.inputs, session.resolver(config.package_paths, Path(path)), reads_meshes=False)
+    except InputError as error:
+        raise UsageError(str(error)) from None
+    except PackageError as error:
+        raise UsageError(str(error)) from None
+    found = drift_.drift(loaded, config, session) if drift_.enabled(config, path) else []
+    kept = [d for d in linter.configure(loaded, found, config) if d.code == "X110"]
+    return Result(path, kept, loaded)
+
+
+__all__ = ["Difference", "Options", "Run", "RuleSet", "Session", "UsageError", "check", "check_target", "diff", "drift", "expand", "find_models", "lint", "run", "xacro_arguments"]

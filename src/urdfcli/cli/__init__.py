@@ -16,7 +16,7 @@ import sys
 import typer
 
 from ..version import __version__
-from . import check, expand, graph, inertia, lint, lsp, rules, tree
+from . import check, diff, drift, expand, graph, inertia, lint, lsp, rules, tree
 from .common import CtrlC
 
 COMMANDS = {
@@ -26,6 +26,8 @@ COMMANDS = {
     "graph": graph.graph,
     "inertia": inertia.inertia,
     "lint": lint.lint,
+    "diff": diff.diff,
+    "drift": drift.drift,
     "rules": rules.rules,
     "rule": rules.rule,
     "lsp": lsp.lsp,

@@ -7,7 +7,7 @@ import contextlib
 import warnings
 
 from . import massprops
-from .kinematics import walk
+from .kinematics import roots, walk
 from .load import Loaded
 from .massprops import Transform
 from .robot import Joint
@@ -98,3 +98,16 @@ def quiet_libraries():
     finally:
         for logger, level in zip(loggers, levels):
             logger.setLevel(level)
+
+
+def zero_poses(loaded: Loaded) -> dict[str, Transform]:
+    """Each link reached from a root, in that root's frame with every joint at 0 (a mimic
+    joint too: its offset is not applied), composed once each from its parent's along the
+    tree's walk (a link with two parents is placed through the first the walk meets)."""
+    poses: dict[str, Transform] = {}
+    robot = loaded.robot
+    for root in roots(robot):
+        for _, joint, link in walk(robot, root):
+            parent = poses[joint.parent] if joint is not None else massprops.ORIGIN
+            poses[link] = massprops.compose(parent, massprops.transform(joint.origin.xyz, joint.origin.rpy)) if joint is not None else parent
+    return poses

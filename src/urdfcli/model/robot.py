@@ -21,6 +21,7 @@ if TYPE_CHECKING:
     from .vocabulary import Unknown
 
 Vec3 = tuple[float, float, float]
+JOINT_PARTS = ("origin", "parent", "child", "axis", "limit", "mimic", "safety_controller", "dynamics")
 JOINT_TYPES = ("fixed", "revolute", "continuous", "prismatic", "floating", "planar")
 MOVING_AXIS_TYPES = ("revolute", "continuous", "prismatic", "planar")
 INERTIA_KEYS = ("ixx", "ixy", "ixz", "iyy", "iyz", "izz")
@@ -53,6 +54,9 @@ class Shape(NamedTuple):
     origin: Pose
     geometry: Geometry | None
     material: str | None = None
+    colour: tuple[float, ...] | None = None  # the rgba of a material defined in the visual itself
+    origin_at: int | None = None
+    material_at: int | None = None
 
 
 class Inertial(NamedTuple):
@@ -62,6 +66,7 @@ class Inertial(NamedTuple):
     inertia: dict[str, float] | None  # ixx ixy ixz iyy iyz izz
     mass_at: int | None = None
     inertia_at: int | None = None
+    origin_at: int | None = None
 
 
 class Link(NamedTuple):
@@ -88,10 +93,19 @@ class Mimic(NamedTuple):
 
 
 class Safety(NamedTuple):
-    """A joint's ``<safety_controller>``: its soft limits (None when not given)."""
+    """A joint's ``<safety_controller>``: its soft limits and gains (None when not given)."""
 
     soft_lower: float | None
     soft_upper: float | None
+    k_position: float | None = None
+    k_velocity: float | None = None
+
+
+class Dynamics(NamedTuple):
+    """A joint's ``<dynamics>`` (None when not given)."""
+
+    damping: float | None
+    friction: float | None
 
 
 class Joint(NamedTuple):
@@ -104,8 +118,9 @@ class Joint(NamedTuple):
     axis: Vec3
     limit: Limit | None
     mimic: Mimic | None
-    parts: tuple[tuple[str, int], ...] = ()  # where its first <parent>, <child>, <axis>, <limit>, <mimic>, <safety_controller> are
+    parts: tuple[tuple[str, int], ...] = ()  # where its first <origin>, <parent>, <child>, <axis>, <limit>... are (JOINT_PARTS)
     safety: Safety | None = None
+    dynamics: Dynamics | None = None
 
     def part(self, tag: str) -> int | None:
         """Where the joint's first ``<tag>`` is (None when it has none)."""
@@ -352,15 +367,15 @@ class Reader:
         found = first_children(element)
         origin = self.pose(found.get("origin"))
         geometry = self.geometry(element, found.get("geometry"))
-        material_name = None
+        material_name = colour = material_at = None
         if visual:
             material = found.get("material")
             if material is not None:
                 parsed = self.material(material, top_level=False)
-                material_name = parsed.name if parsed else None
                 if parsed is not None:
+                    material_name, colour, material_at = parsed.name, parsed.rgba, parsed.at
                     self._inline_materials.append(parsed)
-        return Shape(self._index[element], origin, geometry, material_name)
+        return Shape(self._index[element], origin, geometry, material_name, colour, self.at(found.get("origin")), material_at)
 
     def inertial(self, element: "Element") -> Inertial:
         found = first_children(element)
@@ -382,7 +397,7 @@ class Reader:
                 values = {key: self.number(inertia_element, key, required=True) for key in INERTIA_KEYS}
                 if None not in values.values():
                     inertia = self._tensors[texts] = values
-        return Inertial(self._index[element], origin, mass, inertia, self.at(mass_element), self.at(inertia_element))  # type: ignore[arg-type]
+        return Inertial(self._index[element], origin, mass, inertia, self.at(mass_element), self.at(inertia_element), self.at(found.get("origin")))  # type: ignore[arg-type]
 
     def link(self, element: "Element") -> Link:
         name = element.get("name")
@@ -450,9 +465,10 @@ class Reader:
         safety = None
         safety_element = found.get("safety_controller")
         if safety_element is not None:
-            safety = Safety(self.number(safety_element, "soft_lower_limit", what=what), self.number(safety_element, "soft_upper_limit", what=what))
-            self.number(safety_element, "k_position", what=what)
-            self.number(safety_element, "k_velocity", required=True, what=what)
+            safety = Safety(
+                self.number(safety_element, "soft_lower_limit", what=what), self.number(safety_element, "soft_upper_limit", what=what),
+                self.number(safety_element, "k_position", what=what), self.number(safety_element, "k_velocity", required=True, what=what),
+            )
         calibration = found.get("calibration")
         if calibration is not None:
             for attribute in ("reference_position", "rising", "falling"):
@@ -467,22 +483,26 @@ class Reader:
                 self.report("V004", f"<mimic> of joint '{shown}' has no 'joint' attribute", mimic_element)
             else:
                 mimic = Mimic(target, 1.0 if multiplier is None else multiplier, offset or 0.0)
-        dynamics = found.get("dynamics")
-        if dynamics is not None:
-            if dynamics.get("damping") is None and dynamics.get("friction") is None:
-                self.report("J006", f"<dynamics> of joint '{shown}' has neither damping nor friction", dynamics)
+        dynamics = None
+        dynamics_element = found.get("dynamics")
+        if dynamics_element is not None:
+            if dynamics_element.get("damping") is None and dynamics_element.get("friction") is None:
+                self.report("J006", f"<dynamics> of joint '{shown}' has neither damping nor friction", dynamics_element)
+            values = []
             for attribute in ("damping", "friction"):
-                value = self.number(dynamics, attribute, what=what)
+                value = self.number(dynamics_element, attribute, what=what)
+                values.append(value)
                 if value is not None and value < 0:
-                    self.report("V010", f"joint '{shown}' has {attribute} {format_number(value)}; it must not be negative", dynamics,
+                    self.report("V010", f"joint '{shown}' has {attribute} {format_number(value)}; it must not be negative", dynamics_element,
                                 f"a {attribute} coefficient is 0 or more", attribute)
+            dynamics = Dynamics(*values)
         parent = self._link_ref(found.get("parent"))
         child = self._link_ref(found.get("child"))
         if parent is None or child is None:
             missing = " and ".join(t for t, v in (("<parent link>", parent), ("<child link>", child)) if v is None)
             self.report("J004", f"joint '{shown}' has no {missing}", element)
-        parts = tuple((tag, self._index[found[tag]]) for tag in ("parent", "child", "axis", "limit", "mimic", "safety_controller") if tag in found)
-        return Joint(name if name is not None else "", self._index[element], joint_type, parent, child, origin, axis, limit, mimic, parts, safety)
+        parts = tuple((tag, self._index[found[tag]]) for tag in JOINT_PARTS if tag in found)
+        return Joint(name if name is not None else "", self._index[element], joint_type, parent, child, origin, axis, limit, mimic, parts, safety, dynamics)
 
     @staticmethod
     def _link_ref(element: "Element | None") -> str | None:

@@ -15,25 +15,25 @@ if TYPE_CHECKING:
 LEVELS = {"error": "error", "warning": "warning", "info": "notice"}
 
 
-def _escape_data(text: str) -> str:
+def escape_data(text: str) -> str:
     """Workflow-command escaping, after the control characters are made visible (the log is a terminal)."""
     return escape(text).replace("%", "%25").replace("\r", "%0D").replace("\n", "%0A")
 
 
-def _escape_property(text: str) -> str:
-    return _escape_data(text).replace(":", "%3A").replace(",", "%2C")
+def escape_property(text: str) -> str:
+    return escape_data(text).replace(":", "%3A").replace(",", "%2C")
 
 
 def line(diagnostic: Diagnostic) -> str:
     location = diagnostic.location
-    props = [f"file={_escape_property(location.file)}"]
+    props = [f"file={escape_property(location.file)}"]
     if location.line:
         props.append(f"line={location.line}")
         if location.column:
             props.append(f"col={location.column}")
-    props.append(f"title={_escape_property(diagnostic.code)}")
+    props.append(f"title={escape_property(diagnostic.code)}")
     calls = [call.phrase for call in location.trace] + ([diagnostic.through] if diagnostic.through else [])
-    return f"::{LEVELS[severity_name(diagnostic)]} {','.join(props)}::" + "%0A".join(map(_escape_data, [diagnostic.message, *calls]))
+    return f"::{LEVELS[severity_name(diagnostic)]} {','.join(props)}::" + "%0A".join(map(escape_data, [diagnostic.message, *calls]))
 
 
 def report(results: list[Result], output: Output, view: str = "lint", sources=None) -> None:

@@ -9,11 +9,11 @@ from __future__ import annotations
 from types import MappingProxyType, ModuleType
 
 from ..diagnostics import Severity
-from . import description, inertia, joints, meshes, packages, physics, structure, style, suppression, targets, tree, xacro
+from . import description, drift, inertia, joints, meshes, packages, physics, structure, style, suppression, targets, tree, xacro
 from .base import SECTIONS, Given, Kind, Option, Remedy, Rule, RuleSet, UnknownRule, cleandoc, example_code, explain, sections
 from .suggestions import close_matches
 
-MODULES = (structure, tree, joints, physics, description, meshes, style, inertia, suppression, xacro, packages, *targets.MODULES)
+MODULES = (structure, tree, joints, physics, description, meshes, style, inertia, suppression, xacro, drift, packages, *targets.MODULES)
 
 
 def _rules_of(module: ModuleType) -> list[Rule]:

@@ -1,0 +1,97 @@
+"""Two versions of a robot read and compared: each a file, standard input, or
+``REV:PATH``, a file at a git revision read with its includes as they were then
+(see :mod:`urdfcli.read.revision`).
+
+A file of a revision is read from a temporary copy of the repository's tree;
+its packages are looked for there first. Every location is worked out before
+the copy is removed, and names its file ``REV:PATH``.
+"""
+
+from __future__ import annotations
+
+import contextlib
+import os
+from collections.abc import Callable, Iterable
+from pathlib import Path
+
+from ..diagnostics import Call, Location
+from ..model.compare import TOLERANCE, Change, Comparison, compare
+from ..model.load import Loaded, load
+from ..read.document import STDIN, InputError, Inputs
+from ..read.packages import PackageResolver
+from ..read.revision import Revision, RevisionError, checkout, revision_of
+from ..report.diff import Difference
+
+ResolverFor = Callable[[Iterable[str], "Path | None"], PackageResolver]  # (extra package paths, input file) -> resolver
+
+
+class Unreadable(Exception):
+    """A version cannot be read as a robot (a one-line reason): exit 2."""
+
+
+def compare_versions(
+    old: str, new: str, mappings: dict[str, str], inputs: Inputs, resolver_for: ResolverFor, tolerance: float | None = None,
+) -> tuple[Difference, tuple[str, ...]]:
+    """What changed from ``old`` to ``new`` (numbers equal within ``tolerance``, relative;
+    TOLERANCE when None), and the revisions named (``REV`` of each ``REV:PATH``). Raises Unreadable."""
+    if old == STDIN and new == STDIN:
+        raise Unreadable("only one of OLD and NEW can be standard input ('-')")
+    with contextlib.ExitStack() as stack:
+        sides = [_open(given, mappings, inputs, resolver_for, stack) for given in (old, new)]
+        comparison = compare(sides[0][0], sides[1][0], TOLERANCE if tolerance is None else tolerance)
+        folders = [(folder, revision) for _, folder, revision in sides if revision is not None]
+        if folders:
+            comparison = Comparison(tuple(_renamed(change, folders) for change in comparison.changes), comparison.old, comparison.new)
+    revisions = tuple(dict.fromkeys(revision.revision for _, _, revision in sides if revision is not None))
+    return Difference(old, new, comparison), revisions
+
+
+def _open(given: str, mappings: dict[str, str], inputs: Inputs, resolver_for: ResolverFor, stack: contextlib.ExitStack) -> tuple[Loaded, Path | None, Revision | None]:
+    """One version loaded (its revision's tree kept until the stack closes)."""
+    try:
+        revision = revision_of(given)
+    except RevisionError as error:
+        raise Unreadable(str(error)) from None
+    folder = None
+    try:
+        if revision is not None:
+            folder = stack.enter_context(checkout(revision))
+            file = folder / revision.path
+            resolver = resolver_for((str(folder),), file)  # its own packages first, as they were
+            loaded = load(str(file), inputs, resolver, mappings, reads_meshes=False)
+        else:
+            resolver = resolver_for((), None if given == STDIN else Path(given))
+            loaded = load(given, inputs, resolver, mappings, reads_meshes=False)
+    except (InputError, RevisionError) as error:
+        raise Unreadable(str(error)) from None
+    if not loaded.modelled:
+        shown = revision.given if revision is not None else loaded.document.shown
+        reason = next((d for d in loaded.diagnostics if d.code in ("X001", "X002", "X003", "X004", "R001")), None)
+        if reason is None and loaded.robot is None:
+            reason = next(iter(loaded.diagnostics), None)
+        said = f"{reason.message}" if reason is not None else "no <robot> read"
+        raise Unreadable(f"{shown}: cannot be read as a robot: {said}")
+    return loaded, folder, revision
+
+
+def _renamed(change: Change, folders: list[tuple[Path, Revision]]) -> Change:
+    """A change whose locations name the files of a revision's copy as ``REV:PATH``."""
+    return change._replace(location=_located(change.location, folders), anchor=_located(change.anchor, folders))
+
+
+def _located(location: Location | None, folders: list[tuple[Path, Revision]]) -> Location | None:
+    if location is None:
+        return None
+    trace = tuple(Call(_named(call.file, folders), call.line, call.column, call.macro) for call in location.trace)
+    return location._replace(file=_named(location.file, folders), trace=trace)
+
+
+def _named(file: str, folders: list[tuple[Path, Revision]]) -> str:
+    path = os.path.abspath(file)
+    for folder, revision in folders:
+        try:
+            inside = Path(path).relative_to(os.path.abspath(folder))
+        except ValueError:
+            continue
+        return f"{revision.revision}:{inside.as_posix()}"
+    return file

@@ -1,0 +1,270 @@
+"""What ``urdfcli diff`` shows: the changes between two robots, in four formats.
+
+``text`` groups the changes by element (``+`` added, ``-`` removed, ``~`` changed
+or renamed), each with where it was written; ``json`` gives each change with its
+kind, element, field, old and new values and location; ``markdown`` is a table
+for a pull-request comment; ``github`` one workflow annotation per change, at
+the new robot's line (a removal at the closest element the new robot has).
+"""
+
+from __future__ import annotations
+
+import re
+from typing import NamedTuple
+
+from ..diagnostics import Location
+from ..model.compare import Change, Comparison, Totals, text
+from .console import Line, Output, write
+from .escape import escape
+from .github import escape_data, escape_property
+from .json import dumps
+from .lines import plural
+
+FORMATS = ("text", "json", "markdown", "github")
+MARKS = {"added": "+", "removed": "-", "renamed": "~", "changed": "~"}
+STYLES = {"+": "green", "-": "red", "~": "yellow"}
+_ELEMENT = re.compile(r"""^(?P<tag>[\w:.-]+)(?:\[@(?P<attribute>name|reference)=(?P<quote>['"])(?P<name>.*)(?P=quote)\])?(?:\[(?P<rank>\d+)\])?$""")
+
+
+class Difference(NamedTuple):
+    """Two robots compared: the inputs as given, and what changed."""
+
+    old: str
+    new: str
+    comparison: Comparison
+
+    @property
+    def same(self) -> bool:
+        return self.comparison.same
+
+
+def element_words(element: str) -> str:
+    """``link[@name='arm']`` as ``link 'arm'``; ``gazebo[@reference='arm']`` as ``gazebo reference 'arm'``."""
+    match = _ELEMENT.match(element)
+    if match is None:
+        return element
+    words = match["tag"]
+    if match["name"] is not None:
+        words += f" '{match['name']}'" if match["attribute"] == "name" else f" reference '{match['name']}'"
+    if match["rank"]:
+        words += f" (#{match['rank']})"
+    return words
+
+
+def where(location: Location | None) -> str:
+    """``PATH:LINE:COL`` of a change ('' when unknown)."""
+    if location is None:
+        return ""
+    parts = [location.file]
+    if location.line:
+        parts += [str(location.line), str(location.column or 1)]
+    return ":".join(parts)
+
+
+def where_made(location: Location | None) -> str:
+    """:func:`where`, and the macro call that made the element: ``PATH:LINE:COL (in macro 'm' called at ...)``."""
+    said = where(location)
+    return f"{said} ({location.trace[0].phrase})" if location is not None and location.trace else said
+
+
+def percent(fraction: float) -> str:
+    value = fraction * 100
+    digits = 2 if abs(value) >= 0.1 else 2 - int(f"{abs(value):e}".split("e")[1]) if value else 0
+    return f"{value:+.{max(digits, 0)}f} %"
+
+
+def describe(change: Change) -> str:
+    """What changed, in words: ``limit upper: 3.1415 -> 3.1416 (+0.0029 %)``."""
+    field = change.field
+    if change.kind == "renamed":
+        return f"renamed from '{change.old}'"
+    if field is None:
+        return change.kind
+    if change.kind == "added":
+        return f"{field} added" + (f": {text(change.new)}" if change.new is not None else "")
+    if change.kind == "removed":
+        return f"{field} removed" + (f" (was {text(change.old)})" if change.old is not None else "")
+    if field == "pose":
+        millimetres, degrees = change.moved or (0.0, 0.0)
+        return f"pose at zero joint positions: moved {millimetres:.3g} mm, turned {degrees:.3g}°"
+    said = f"{field}: {text(change.old)} -> {text(change.new)}"
+    if change.relative is not None:
+        said += f" ({percent(change.relative)})"
+    elif change.moved is not None:
+        millimetres, degrees = change.moved
+        said += f" (moved {millimetres:.3g} mm)" if millimetres else f" (turned {degrees:.3g}°)"
+    return said
+
+
+def groups(changes: tuple[Change, ...]) -> dict[str, list[Change]]:
+    """The changes of each element, the elements in the order the comparison met them."""
+    found: dict[str, list[Change]] = {}
+    for change in changes:
+        found.setdefault(change.element, []).append(change)
+    return found
+
+
+def mark(changes: list[Change]) -> str:
+    whole = next((c for c in changes if c.field is None), None)
+    return MARKS[whole.kind] if whole is not None else "~"
+
+
+def totals_text(totals: Totals) -> str:
+    name = f"robot '{totals.name}'" if totals.name is not None else "robot (no name)"
+    return f"{name}: {plural(totals.links, 'link')}, {plural(totals.joints, 'joint')}, {totals.dof} DOF, {text(round(totals.mass, 9))} kg"
+
+
+def summary_text(comparison: Comparison) -> str:
+    if comparison.same:
+        return "same robot: no change"
+    counts = [f"{count} {kind}" for kind in ("added", "removed", "renamed", "changed") if (count := comparison.count(kind))]
+    old, new = comparison.old, comparison.new
+    follows = []
+    if abs(old.mass - new.mass) > 1e-9 * max(old.mass, new.mass, 1.0):
+        change = f" ({percent((new.mass - old.mass) / old.mass)})" if old.mass else ""
+        follows.append(f"mass {text(round(old.mass, 9))} kg -> {text(round(new.mass, 9))} kg{change}")
+    if old.dof != new.dof:
+        follows.append(f"{old.dof} DOF -> {new.dof}")
+    if comparison.moved:
+        follows.append(f"{plural(comparison.moved, 'link')} moved at zero joint positions")
+    return ", ".join(counts) + (f"; {'; '.join(follows)}" if follows else "")
+
+
+# -- text --------------------------------------------------------------------------------
+def text_lines(difference: Difference) -> list[Line]:
+    comparison = difference.comparison
+    lines: list[Line] = [
+        [("--- ", "red"), (escape(difference.old), "bold"), (f"  {escape(totals_text(comparison.old))}", "dim")],
+        [("+++ ", "green"), (escape(difference.new), "bold"), (f"  {escape(totals_text(comparison.new))}", "dim")],
+    ]
+    poses = [change for change in comparison.changes if change.field == "pose"]
+    for element, changes in groups(tuple(c for c in comparison.changes if c.field != "pose")).items():
+        sign = mark(changes)
+        whole = next((c for c in changes if c.field is None), None)
+        head: Line = [(f"{sign} ", STYLES[sign]), (escape(element_words(element)), "bold")]
+        if whole is not None:
+            head.append((f"  {escape(where_made(whole.location))}", "dim"))
+        lines.append(head)
+        for change in changes:
+            if change is whole:
+                continue
+            style = STYLES[MARKS[change.kind]] if change.kind in ("added", "removed") else ""
+            lines.append([(f"    {escape(describe(change))}", style), (f"  {escape(where_made(change.location))}", "dim")])
+    if poses:
+        lines.append([("at zero joint positions:", "bold")])
+        for change in poses:
+            millimetres, degrees = change.moved or (0.0, 0.0)
+            lines.append([
+                ("~ ", STYLES["~"]), (escape(element_words(change.element)), "bold"),
+                (f" moved {millimetres:.3g} mm, turned {degrees:.3g}°", ""), (f"  {escape(where_made(change.location))}", "dim"),
+            ])
+    lines.append([(summary_text(comparison), "bold")])
+    return lines
+
+
+def report_text(difference: Difference, output: Output) -> None:
+    write(output.out, text_lines(difference))
+
+
+# -- json --------------------------------------------------------------------------------
+def change_dict(change: Change) -> dict:
+    location = change.location
+    entry = {
+        "kind": change.kind,
+        "element": change.element,
+        "field": change.field,
+        "old": change.old,
+        "new": change.new,
+        "path": location.file if location else None,
+        "line": location.line if location else None,
+        "column": location.column if location else None,
+    }
+    if change.relative is not None:
+        entry["relative"] = change.relative
+    if change.moved is not None:
+        entry["moved_mm"], entry["turned_degrees"] = change.moved
+    if location is not None and location.trace:
+        entry["trace"] = [{"path": c.file, "line": c.line, "column": c.column, "macro": c.macro} for c in location.trace]
+    return entry
+
+
+def totals_dict(totals: Totals) -> dict:
+    return {"robot": totals.name, "links": totals.links, "joints": totals.joints, "dof": totals.dof, "mass": totals.mass}
+
+
+def report_json(difference: Difference, output: Output) -> None:
+    comparison = difference.comparison
+    document = {
+        "old": difference.old,
+        "new": difference.new,
+        "changes": [change_dict(change) for change in comparison.changes],
+        "summary": {
+            "same": comparison.same,
+            **{kind: comparison.count(kind) for kind in ("added", "removed", "renamed", "changed")},
+            "moved_links": comparison.moved,
+            "old": totals_dict(comparison.old),
+            "new": totals_dict(comparison.new),
+        },
+    }
+    output.out.file.write(dumps(document) + "\n")
+
+
+# -- markdown ----------------------------------------------------------------------------
+def cell(value: str) -> str:
+    """Text for a table cell: no line breaks, pipes and backticks kept as text."""
+    return escape(value).replace("\\", "\\\\").replace("|", "\\|").replace("`", "\\`").replace("<", "&lt;")
+
+
+def report_markdown(difference: Difference, output: Output) -> None:
+    comparison = difference.comparison
+    lines = [
+        f"### urdfcli diff: {cell(difference.old)} → {cell(difference.new)}",
+        "",
+        f"**{cell(summary_text(comparison))}**",
+        "",
+        f"- old: {cell(totals_text(comparison.old))}",
+        f"- new: {cell(totals_text(comparison.new))}",
+    ]
+    if not comparison.same:
+        lines += ["", "| | element | change | where |", "|---|---|---|---|"]
+        for element, changes in groups(comparison.changes).items():
+            for change in changes:
+                sign = MARKS[change.kind] if change.field is None or change.kind in ("added", "removed") else "~"
+                lines.append(f"| {sign} | {cell(element_words(element))} | {cell(describe(change))} | {cell(where_made(change.location))} |")
+    output.out.file.write("\n".join(lines) + "\n")
+
+
+# -- github ------------------------------------------------------------------------------
+def annotation(change: Change, strip: tuple[str, ...]) -> str:
+    location = change.anchor if change.kind == "removed" else change.location
+    props = []
+    if location is not None:
+        file = location.file
+        for prefix in strip:  # REV:PATH: the file at its path in the repository
+            if file.startswith(prefix):
+                file = file[len(prefix):]
+        props.append(f"file={escape_property(file)}")
+        if location.line:
+            props.append(f"line={location.line}")
+            if location.column:
+                props.append(f"col={location.column}")
+    props.append(f"title={escape_property('urdfcli diff: ' + element_words(change.element))}")
+    return f"::notice {','.join(props)}::" + escape_data(f"{element_words(change.element)}: {describe(change)}")
+
+
+def report_github(difference: Difference, output: Output, revisions: tuple[str, ...] = ()) -> None:
+    strip = tuple(f"{revision}:" for revision in revisions)
+    output.out.file.writelines(annotation(change, strip) + "\n" for change in difference.comparison.changes)
+
+
+def report(difference: Difference, output: Output, name: str, revisions: tuple[str, ...] = ()) -> None:
+    """``difference`` in the format ``name`` (one of FORMATS); ``revisions``: the git revisions
+    whose files are named ``REV:PATH`` (github annotations name them by PATH)."""
+    if name == "json":
+        report_json(difference, output)
+    elif name == "markdown":
+        report_markdown(difference, output)
+    elif name == "github":
+        report_github(difference, output, revisions)
+    else:
+        report_text(difference, output)

@@ -1,0 +1,196 @@
+"""Rule X110: a committed URDF that no longer matches the xacro file it was generated from,
+on packages built as the public ones are (tests/generated_repos.py), and the cases that are
+not drift: a header naming another machine's path, a URDF written another way."""
+
+from __future__ import annotations
+
+import re
+
+import pytest
+from conftest import lint_file, run_cli
+from generated_repos import KUKA_TOOL_NOW, generate, kuka_macro, kuka_package, motoman_package
+from ros_workspace import edit
+
+from urdfcli.project.drift import header_source, regenerated
+
+
+def x110(result):
+    return [d for d in result.diagnostics if d.code == "X110"]
+
+
+def test_kuka_urdf_lacks_the_flange_link_its_xacro_makes_now(tmp_path, monkeypatch):
+    package = kuka_package(tmp_path)
+    monkeypatch.chdir(package / "urdf")
+    (found,) = x110(lint_file("kr16_2.urdf"))
+    assert (found.path, found.line, found.column, found.severity.value) == ("kr16_2.urdf", 1, 1, "warning")
+    assert found.message == (
+        "kr16_2.urdf does not match kr16_2.xacro, which generated it: it lacks link 'flange' and joints "
+        "'joint_a6-flange', 'flange-tool0' that kr16_2.xacro makes; it has joint 'joint_a6-tool0' that kr16_2.xacro does not make"
+    )
+    assert found.hint == "regenerate it: urdfcli expand kr16_2.xacro -o kr16_2.urdf, or `urdfcli diff kr16_2.urdf kr16_2.xacro` lists every difference"
+    # check reports it too
+    done = run_cli("check", "kr16_2.urdf", "--format", "concise", cwd=package / "urdf")
+    assert "kr16_2.urdf:1:1: X110 warning: kr16_2.urdf does not match kr16_2.xacro" in done.stdout.decode() + done.stderr.decode()
+
+
+def test_kuka_urdf_generated_from_the_current_sources_is_no_drift(tmp_path, monkeypatch):
+    package = kuka_package(tmp_path, generated_with_flange=True)
+    monkeypatch.chdir(package / "urdf")
+    assert x110(lint_file("kr16_2.urdf")) == []
+
+
+def test_a_changed_limit_is_summarised_with_its_values(tmp_path, monkeypatch):
+    package = kuka_package(tmp_path, generated_with_flange=True)
+    edit(package / "urdf" / "kr16_2_macro.xacro", "upper=\"${radians(35)}\"", "upper=\"${radians(40)}\"")
+    monkeypatch.chdir(package / "urdf")
+    (found,) = x110(lint_file("kr16_2.urdf"))
+    assert found.message == (
+        "kr16_2.urdf does not match kr16_2.xacro, which generated it: 1 joint differs "
+        "(joint 'joint_a2' limit upper: 0.6108652381980153 here, 0.6981317007977318 in kr16_2.xacro)"
+    )
+
+
+def test_motoman_materials_renamed_since_the_urdf_was_generated(tmp_path, monkeypatch):
+    package = motoman_package(tmp_path)
+    monkeypatch.chdir(package / "urdf")
+    (found,) = x110(lint_file("sia10d.urdf"))
+    assert found.message == (
+        "sia10d.urdf does not match sia10d.xacro, which generated it: it calls material 'blue' what sia10d.xacro "
+        "calls 'motoman_blue' and 1 more"
+    )
+    # the colours are the same: no visual changed colour, only the names did (a collision's material
+    # is no material: urdfdom reads none there)
+    difference = run_cli("diff", "sia10d.urdf", "sia10d.xacro", "--format", "json", cwd=package / "urdf")
+    assert difference.returncode == 1
+    import json
+
+    changes = json.loads(difference.stdout)["changes"]
+    assert {(c["kind"], c["element"], c["old"], c["new"]) for c in changes} == {
+        ("renamed", "material[@name='motoman_blue']", "blue", "motoman_blue"),
+        ("renamed", "material[@name='motoman_silver']", "silver", "motoman_silver"),
+    }
+
+
+def test_header_naming_the_generating_machines_path_and_reformatted_urdf_is_no_drift(tmp_path, monkeypatch):
+    """A URDF generated from the same sources on another machine (the header names its absolute path),
+    then reformatted: attributes reordered, numbers written another way, comments and indentation."""
+    package = kuka_package(tmp_path, generated_with_flange=True)
+    urdf = package / "urdf" / "kr16_2.urdf"
+    text = generate(package / "urdf" / "kr16_2.xacro", "/home/ros/catkin_ws/src/kuka_experimental/kuka_kr16_support/urdf/kr16_2.xacro")
+    text = text.replace('<origin rpy="0 0 0" xyz="0 0 0.675"/>', '<!-- A1 -->\n\t<origin xyz="0.0 0.0 0.6750"  rpy="0 0 0" />')
+    text = text.replace('<mass value="2"/>', '<mass value="2.000"/>').replace('ixx="0.01"', 'ixx="1e-2"')
+    text = text.replace('rpy="0 1.5707963267948966 0"', 'rpy="0 1.57079632679 0"')  # radians(90) as the public URDF writes it
+    urdf.write_text(text)
+    assert "0.6750" in urdf.read_text() and "1.57079632679 0" in urdf.read_text()
+    monkeypatch.chdir(package / "urdf")
+    assert x110(lint_file("kr16_2.urdf")) == []
+
+
+def test_source_is_found_in_the_package_when_not_beside_the_urdf(tmp_path, monkeypatch):
+    package = kuka_package(tmp_path)
+    (package / "robots").mkdir()
+    (package / "urdf" / "kr16_2.urdf").rename(package / "robots" / "kr16_2.urdf")
+    monkeypatch.chdir(package)
+    (found,) = x110(lint_file("robots/kr16_2.urdf"))
+    assert found.message.startswith("kr16_2.urdf does not match urdf/kr16_2.xacro, which generated it: it lacks link 'flange'")
+
+
+def test_a_xacro_of_the_same_name_beside_a_urdf_without_header(tmp_path, monkeypatch):
+    package = kuka_package(tmp_path, generated_with_flange=True)
+    urdf = package / "urdf" / "kr16_2.urdf"
+    urdf.write_text(re.sub(r"<!--.*?-->\n", "", urdf.read_text(), flags=re.DOTALL).replace('<mass value="2"/>', '<mass value="2.5"/>', 1))
+    monkeypatch.chdir(package / "urdf")
+    (found,) = x110(lint_file("kr16_2.urdf"))
+    assert found.message == (
+        "kr16_2.urdf does not match kr16_2.xacro, beside it: 1 link differs (link 'base_link' inertial mass: 2.5 here, 2 in kr16_2.xacro)"
+    )
+
+
+def test_an_argument_that_may_explain_the_difference_is_named(tmp_path, monkeypatch):
+    """Generated with prefix:=left_ from a model whose argument's default is '': every link is
+    renamed, and the hint says the defaults were used and which argument is read there."""
+    package = kuka_package(tmp_path, generated_with_flange=True)
+    model = package / "urdf" / "kr16_2.xacro"
+    edit(model, '<xacro:kuka_kr16_2 prefix=""/>', '<xacro:arg name="prefix" default=""/>\n  <xacro:kuka_kr16_2 prefix="$(arg prefix)"/>')
+    (package / "urdf" / "kr16_2.urdf").write_text(generate(model, "kr16_2.xacro", prefix="left_"))
+    monkeypatch.chdir(package / "urdf")
+    (found,) = x110(lint_file("kr16_2.urdf"))
+    assert found.message.startswith("kr16_2.urdf does not match kr16_2.xacro, which generated it: it calls link 'left_base_link' what kr16_2.xacro calls 'base_link' and ")
+    assert found.hint == (
+        "regenerate it: urdfcli expand kr16_2.xacro -o kr16_2.urdf (it was expanded with the arguments' defaults; "
+        "the URDF may have been generated with other values of prefix:='', read where they differ)"
+    )
+
+
+def test_a_source_that_does_not_expand_is_said_as_info(tmp_path, monkeypatch):
+    package = kuka_package(tmp_path, generated_with_flange=True)
+    edit(package / "urdf" / "kr16_2.xacro", '<xacro:kuka_kr16_2 prefix=""/>', '<xacro:kuka_kr16_2 prefix="$(arg prefix)"/>')
+    monkeypatch.chdir(package / "urdf")
+    (found,) = x110(lint_file("kr16_2.urdf"))
+    assert found.severity.value == "info"
+    assert found.message == (
+        "kr16_2.urdf says it was generated from kr16_2.xacro, which was not compared: its expansion needs xacro "
+        "argument 'prefix'; give it in [tool.urdfcli.xacro-args]"
+    )
+
+
+def test_no_generated_urdf_no_diagnostic(tmp_path):
+    (tmp_path / "robot.urdf").write_text('<robot name="r"><link name="base_link"/></robot>\n')
+    assert x110(lint_file(tmp_path / "robot.urdf")) == []
+
+
+def test_the_rule_can_be_ignored(tmp_path, monkeypatch):
+    package = kuka_package(tmp_path)
+    (package / "pyproject.toml").write_text('[tool.urdfcli]\nignore = ["X110"]\n')
+    done = run_cli("lint", "urdf/kr16_2.urdf", "--format", "concise", cwd=package)
+    assert "X110" not in done.stdout.decode()
+
+
+def test_drift_command_finds_the_urdfs_generated_from_a_changed_library(tmp_path):
+    """What the pre-commit hook runs: given the macro file that changed, the URDF generated from
+    the model that includes it is checked."""
+    package = kuka_package(tmp_path)
+    done = run_cli("drift", "urdf/kr16_2_macro.xacro", cwd=package)
+    out = done.stdout.decode()
+    assert done.returncode == 1, out + done.stderr.decode()
+    assert out.startswith("urdf/kr16_2.urdf:1:1: X110 warning: kr16_2.urdf does not match urdf/kr16_2.xacro, which generated it: it lacks link 'flange'")
+    assert out.rstrip().endswith("1 file checked: 0 errors, 1 warning")
+    # a xacro file no generated URDF comes from: nothing to check
+    (package / "urdf" / "other.xacro").write_text(f'<robot name="o" xmlns:xacro="http://www.ros.org/wiki/xacro"><link name="a"/></robot>\n')
+    done = run_cli("drift", "urdf/other.xacro", cwd=package)
+    assert (done.returncode, done.stdout, done.stderr) == (0, b"", b"")
+    # fixed: the URDF regenerated keeping its header
+    urdf = package / "urdf" / "kr16_2.urdf"
+    expanded = generate(package / "urdf" / "kr16_2.xacro", "ignored")
+    urdf.write_text(regenerated(urdf.read_text(), expanded))
+    done = run_cli("drift", cwd=package)
+    assert done.returncode == 0, done.stdout.decode()
+    assert "1 file checked: 0 errors, 0 warnings" in done.stdout.decode()
+
+
+def test_regenerated_keeps_the_header_and_takes_the_new_robot(tmp_path):
+    package = kuka_package(tmp_path)
+    urdf = (package / "urdf" / "kr16_2.urdf").read_text()
+    expanded = generate(package / "urdf" / "kr16_2.xacro", "/elsewhere/kr16_2.xacro")
+    text = regenerated(urdf, expanded)
+    assert text.split("<robot", 1)[0] == urdf.split("<robot", 1)[0]
+    assert header_source(text.encode()) == "kr16_2.xacro"
+    assert text.split("<robot", 1)[1] == expanded.split("<robot", 1)[1]
+    assert '<link name="flange"/>' in text
+
+
+@pytest.mark.parametrize(
+    ("head", "source"),
+    [
+        ("<!-- |    This document was autogenerated by xacro from kr16_2.xacro                   | -->", "kr16_2.xacro"),
+        ("<!-- |    This document was autogenerated by xacro from /opt/ws/src/p/urdf/a.urdf.xacro | -->", "/opt/ws/src/p/urdf/a.urdf.xacro"),
+        ("<!-- This document was autogenerated by xacro from urdf/panda.urdf.xacro|-->", "urdf/panda.urdf.xacro"),
+        ("<!-- written by hand -->", None),
+    ],
+)
+def test_header_source(head, source):
+    assert header_source(f'<?xml version="1.0"?>\n{head}\n<robot name="r"/>\n'.encode()) == source
+
+
+def test_kuka_macro_fixture_builds_the_flange_as_public_kuka_does():
+    assert '<link name="${prefix}flange"/>' in kuka_macro(KUKA_TOOL_NOW)
