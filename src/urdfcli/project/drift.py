@@ -141,10 +141,11 @@ def enabled(config: Config, path: str) -> bool:
 
 
 def drift(loaded: Loaded, config: Config, session: Session) -> list[Diagnostic]:
-    """X110 for a plain URDF read from a file, when it was generated from a xacro file
-    whose expansion no longer matches it (an info when the source cannot be expanded)."""
+    """X110 for a URDF read from a file (not named .xacro), when it was generated from a
+    xacro file whose expansion no longer matches it (an info when the source cannot be
+    expanded)."""
     document = loaded.document
-    if document.is_xacro or document.file is None or not loaded.modelled:
+    if document.file is None or document.file.name.endswith(".xacro") or not loaded.modelled:
         return []
     source = generated_from(document.file, session)
     if source is None:
