@@ -88,6 +88,28 @@ def hooks(tmp_path_factory):
     return pre_commit, hooks_repo, env
 
 
+def installed(repo, hooks, *hook_ids):
+    """``repo`` made a git repository with these hooks of this checkout installed; the
+    function that commits in it (the paths given, else everything) and gives back the
+    exit code and what the hooks printed."""
+    pre_commit, hooks_repo, env = hooks
+    rev = subprocess.run(["git", "rev-parse", "HEAD"], cwd=hooks_repo, capture_output=True, text=True, check=True).stdout.strip()
+    listed = "".join(f"      - id: {hook}\n" for hook in hook_ids)
+    (repo / ".pre-commit-config.yaml").write_text(f"repos:\n  - repo: {hooks_repo}\n    rev: {rev}\n    hooks:\n{listed}")
+    git("init", "-q", cwd=repo)
+    subprocess.run([pre_commit, "install"], cwd=repo, env=env, check=True, capture_output=True, timeout=120)
+
+    def commit(message, *paths):
+        git("add", *(paths or ("-A",)), cwd=repo)
+        done = subprocess.run(
+            ["git", "-c", "user.name=t", "-c", "user.email=t@urdfcli.invalid", "-c", "commit.gpgsign=false", "commit", "-m", message],
+            cwd=repo, env=env, capture_output=True, timeout=900,
+        )
+        return done.returncode, done.stdout.decode() + done.stderr.decode()
+
+    return commit
+
+
 def test_pre_commit_try_repo_passes_a_clean_model_and_fails_a_flagged_one(tmp_path, hooks):
     pre_commit, hooks_repo, env = hooks
     project = tmp_path / "project"
@@ -119,23 +141,9 @@ def test_commits_to_a_ros_repository_check_libraries_through_their_models(tmp_pa
     """Installed hooks on real commits: a library is checked through the models that include
     it from another package ($(find) of a package.xml name that is not its folder's), one of
     them with the argument sets of [tool.urdfcli] models."""
-    pre_commit, hooks_repo, env = hooks
     repo = make_repository(tmp_path / "acme_robots")
-    rev = subprocess.run(["git", "rev-parse", "HEAD"], cwd=hooks_repo, capture_output=True, text=True, check=True).stdout.strip()
-    (repo / ".pre-commit-config.yaml").write_text(
-        f"repos:\n  - repo: {hooks_repo}\n    rev: {rev}\n    hooks:\n      - id: urdfcli-check\n      - id: urdfcli-lint\n"
-    )
-    git("init", "-q", cwd=repo)
-    subprocess.run([pre_commit, "install"], cwd=repo, env=env, check=True, capture_output=True, timeout=120)
+    commit = installed(repo, hooks, "urdfcli-check", "urdfcli-lint")
     wheel, sensor = repo / "common/urdf/wheel.xacro", repo / "common/urdf/sensor.xacro"
-
-    def commit(message, *paths):
-        git("add", *(paths or ("-A",)), cwd=repo)
-        done = subprocess.run(
-            ["git", "-c", "user.name=t", "-c", "user.email=t@urdfcli.invalid", "-c", "commit.gpgsign=false", "commit", "-m", message],
-            cwd=repo, env=env, capture_output=True, timeout=900,
-        )
-        return done.returncode, done.stdout.decode() + done.stderr.decode()
 
     def undo():
         git("reset", "-q", "--hard", "HEAD", cwd=repo)
@@ -184,22 +192,10 @@ def test_drift_hook_fails_a_commit_whose_xacro_leaves_the_generated_urdf_behind(
     """urdfcli-drift on real commits to a package built like kuka_kr16_support: a change to the
     macro file alone fails (the URDF generated from the model including it no longer matches);
     the URDF regenerated and committed with it passes; a change elsewhere checks nothing."""
-    pre_commit, hooks_repo, env = hooks
     repo = tmp_path / "kuka_experimental"
     package = kuka_package(repo, generated_with_flange=True)
-    rev = subprocess.run(["git", "rev-parse", "HEAD"], cwd=hooks_repo, capture_output=True, text=True, check=True).stdout.strip()
-    (repo / ".pre-commit-config.yaml").write_text(f"repos:\n  - repo: {hooks_repo}\n    rev: {rev}\n    hooks:\n      - id: urdfcli-drift\n")
-    git("init", "-q", cwd=repo)
-    subprocess.run([pre_commit, "install"], cwd=repo, env=env, check=True, capture_output=True, timeout=120)
+    commit = installed(repo, hooks, "urdfcli-drift")
     macro, urdf = package / "urdf" / "kr16_2_macro.xacro", package / "urdf" / "kr16_2.urdf"
-
-    def commit(message, *paths):
-        git("add", *(paths or ("-A",)), cwd=repo)
-        done = subprocess.run(
-            ["git", "-c", "user.name=t", "-c", "user.email=t@urdfcli.invalid", "-c", "commit.gpgsign=false", "commit", "-m", message],
-            cwd=repo, env=env, capture_output=True, timeout=900,
-        )
-        return done.returncode, done.stdout.decode() + done.stderr.decode()
 
     code, out = commit("the package, its URDF generated from its xacro")
     assert code == 0, out

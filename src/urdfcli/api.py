@@ -15,8 +15,9 @@ every problem in a model is a diagnostic of its result.
 
 from __future__ import annotations
 
+import contextlib
 import os
-from collections.abc import Callable, Iterable
+from collections.abc import Callable, Iterable, Iterator
 from functools import partial
 from pathlib import Path
 from typing import TYPE_CHECKING, NamedTuple
@@ -314,20 +315,11 @@ def diff_with_revisions(old: str, new: str, mappings: dict[str, str], session: S
     """:func:`diff`, and the git revisions its inputs name."""
     from .project.versions import Unreadable, compare_versions  # (git and archives: only diff reads them)
 
-    own = session is None
-    try:
-        session = session or Session(Options(**settings))
-    except (PackageError, ValueError) as error:
-        raise UsageError(str(error)) from None
-    try:
-        return compare_versions(old, new, {**session.options.mappings, **mappings}, session.inputs, session.resolver, tolerance)
-    except Unreadable as error:
-        raise UsageError(str(error)) from None
-    except PackageError as error:
-        raise UsageError(str(error)) from None
-    finally:
-        if own:
-            session.close()
+    with _session(session, settings) as session:
+        try:
+            return compare_versions(old, new, {**session.options.mappings, **mappings}, session.inputs, session.resolver, tolerance)
+        except (Unreadable, PackageError) as error:
+            raise UsageError(str(error)) from None
 
 
 def drift(paths: Iterable[str | os.PathLike], session: Session | None = None, **settings) -> list[Result]:
@@ -335,25 +327,31 @@ def drift(paths: Iterable[str | os.PathLike], session: Session | None = None, **
     each generated from a given xacro file or one including it), each with what rule
     X110 finds: whether it still matches the xacro file it was generated from.
     ``settings`` are those of :class:`~urdfcli.options.Options` when no session is given."""
-    own = session is None
+    with _session(session, settings) as session:
+        return [_drift_of(path, session) for path in drift_.generated_urdfs([os.fspath(p) for p in paths], session)]
+
+
+@contextlib.contextmanager
+def _session(session: Session | None, settings: dict) -> Iterator[Session]:
+    """``session``, or one made of ``settings`` (Options) for the call and closed after it."""
+    if session is not None:
+        yield session
+        return
     try:
-        session = session or Session(Options(**settings))
+        session = Session(Options(**settings))
     except (PackageError, ValueError) as error:
         raise UsageError(str(error)) from None
     try:
-        return [_drift_of(path, session) for path in drift_.generated_urdfs([os.fspath(p) for p in paths], session)]
+        yield session
     finally:
-        if own:
-            session.close()
+        session.close()
 
 
 def _drift_of(path: str, session: Session) -> Result:
     config = configured(session)(path)
     try:
         loaded = load(path, session.inputs, session.resolver(config.package_paths, Path(path)), reads_meshes=False)
-    except InputError as error:
-        raise UsageError(str(error)) from None
-    except PackageError as error:
+    except (InputError, PackageError) as error:
         raise UsageError(str(error)) from None
     found = drift_.drift(loaded, config, session) if drift_.enabled(config, path) else []
     kept = [d for d in linter.configure(loaded, found, config) if d.code == "X110"]
