@@ -540,3 +540,10 @@ def test_every_published_model_reformatted_is_the_same_robot(tmp_path):
             copy.write_bytes(reformatted(model.read_bytes()))
             changes = api.diff(model, copy, session=session).comparison.changes
             assert changes == (), (model, changes[:3])
+
+
+def test_a_xacro_argument_needed_is_named(tmp_path):
+    model = write(tmp_path, "needs.urdf.xacro", '<robot name="r" xmlns:xacro="http://www.ros.org/wiki/xacro"><link name="$(arg n)"/></robot>\n')
+    done = run_cli("diff", model, model)
+    assert (done.returncode, done.stderr.decode()) == (2, f"urdfcli: {model}: needs xacro argument 'n': give n:=VALUE after the two files\n")
+    assert run_cli("diff", model, model, "n:=base_link").returncode == 0

@@ -289,6 +289,24 @@ def _shown(path: Path) -> str:
     return path.as_posix() if relative.startswith("..") else relative
 
 
+def regeneration(loaded: Loaded, config: Config, session: Session) -> str | None:
+    """The text a fix writes into a generated URDF that drifted: its source expanded again
+    (as X110 expands it), under the URDF's own header. None when the URDF is not
+    generated, its source does not expand, or it matches its source already."""
+    document = loaded.document
+    source = generated_from(document.file, session) if document.file is not None and loaded.modelled else None
+    if source is None:
+        return None
+    found = expand_source(source.file, config, session)
+    if isinstance(found, str) or found.document.expanded_text is None or compare(loaded, found).same:
+        return None
+    try:
+        text = session.sources.data(str(document.file)).decode("utf-8")
+    except (OSError, UnicodeDecodeError):
+        return None
+    return regenerated(text, found.document.expanded_text)
+
+
 def regenerated(urdf_text: str, expanded_text: str) -> str:
     """The URDF text regenerated from a new expansion, keeping the URDF's own header:
     everything before its ``<robot`` (the XML declaration, xacro's banner, comments)

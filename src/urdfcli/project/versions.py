@@ -66,6 +66,9 @@ def _open(given: str, mappings: dict[str, str], inputs: Inputs, resolver_for: Re
         raise Unreadable(str(error)) from None
     if not loaded.modelled:
         shown = revision.given if revision is not None else loaded.document.shown
+        if loaded.document.missing_argument is not None:
+            name = loaded.document.missing_argument
+            raise Unreadable(f"{shown}: needs xacro argument '{name}': give {name}:=VALUE after the two files")
         reason = next((d for d in loaded.diagnostics if d.code in ("X001", "X002", "X003", "X004", "R001")), None)
         if reason is None and loaded.robot is None:
             reason = next(iter(loaded.diagnostics), None)
