@@ -106,7 +106,8 @@ class Running(NamedTuple):
 
 class Protocol(LanguageServerProtocol):
     """pygls's protocol, with an error response for a request whose params do not fit
-    its method, and notifications about documents never opened ignored (logged)."""
+    its method, notifications about documents never opened ignored (logged), and
+    nothing kept of a notification once handled."""
 
     _ANSWERED = object()
 
@@ -130,6 +131,11 @@ class Protocol(LanguageServerProtocol):
                 self._server.window_log_message(types.LogMessageParams(types.MessageType.Log, f"ignored {message.method} for {escape(uri)}: not open"))
                 return
         super().handle_message(message)
+        if getattr(message, "id", None) is None:
+            # pygls keeps the future of a notification's handler under a key of its own and
+            # never lets go of it: 1 KB for every keystroke, but for this
+            for key in [key for key, future in self._request_futures.items() if future.done()]:
+                del self._request_futures[key]
 
 
 def _not_deserialization(record: logging.LogRecord) -> bool:
