@@ -473,3 +473,44 @@ async def test_completion_and_definition_of_link_names_a_macro_writes_with_its_p
         assert items[0].text_edit.range == types.Range(value, position(editor.texts[library], '${prefix}_wh"', len("${prefix}_wh")))
         plain = await editor.completion(library, '<child link="${prefix}_wh"', len('<child link="'))
         assert "${prefix}_wheel_link" not in {item.label for item in plain} and "base_link" in {item.label for item in plain}
+
+
+def links_urdf(path: Path, links: int) -> Path:
+    """A URDF of ``links`` links in a chain, each with an inertial and a box (270 bytes a link)."""
+    rows = [f'<robot name="{path.stem}">\n  <link name="l0"/>\n']
+    rows += [
+        f'  <link name="l{i}"><inertial><mass value="1"/><inertia ixx="1" ixy="0" ixz="0" iyy="1" iyz="0" izz="1"/></inertial>'
+        f'<collision><geometry><box size="1 1 1"/></geometry></collision></link>\n'
+        f'  <joint name="j{i}" type="fixed"><parent link="l{i - 1}"/><child link="l{i}"/></joint>\n'
+        for i in range(1, links)
+    ]
+    path.write_text("".join(rows) + "</robot>\n")
+    return path
+
+
+@pytest.mark.asyncio
+async def test_memory_is_given_back_when_a_large_file_is_closed(tmp_path, cache):
+    small, large = links_urdf(tmp_path / "small.urdf", 200), links_urdf(tmp_path / "large.urdf", 20_000)  # 5.5 MB
+    async with editing(tmp_path, cache) as editor:
+        editor.open(small)  # what any check of such a model loads, loaded before
+        await editor.diagnostics(small)
+        for _ in range(2):
+            editor.edit(small, 'name="l5"', 'name="l5x"')
+            await editor.diagnostics(small)
+            editor.edit(small, 'name="l5x"', 'name="l5"')
+            await editor.diagnostics(small)
+        await asyncio.sleep(1)
+        before = server_memory_kib(editor)
+        editor.open(large)
+        await editor.diagnostics(large)
+        editor.edit(large, 'name="l5"', 'name="l5x"')
+        await editor.diagnostics(large)
+        opened = server_memory_kib(editor)
+        mark = editor.mark()
+        editor.close(large)
+        assert await editor.diagnostics(large, mark) == []
+        await asyncio.sleep(1)
+        after = server_memory_kib(editor)
+        print(f"server memory before, with and after a 5.5 MB file: {before // 1024}, {opened // 1024}, {after // 1024} MiB")
+        assert opened - before > 50 * 1024  # it was held while open
+        assert after - before < 20 * 1024, (before, after)  # KiB; what stays is the allocator's, not the file's
