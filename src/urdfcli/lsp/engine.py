@@ -18,9 +18,10 @@ Paths are absolute.
 
 from __future__ import annotations
 
+import difflib
 import os
 import threading
-from collections.abc import Iterable
+from collections.abc import Iterable, Mapping
 from pathlib import Path
 from typing import NamedTuple
 
@@ -58,7 +59,8 @@ class Mark(NamedTuple):
 class Checked(NamedTuple):
     marks: dict[str, list[Mark]]  # file -> its diagnostics
     reads: frozenset[str]  # the files the check read: a change to any calls for it again
-    run: api.Run | None  # the check's models, for navigation (None: it read none)
+    run: api.Run | None  # the models navigation keeps (None: none yet)
+    models: frozenset[str] = frozenset()  # the models (with their arguments) this check went through
 
 
 class Completion(NamedTuple):
@@ -157,7 +159,7 @@ class Checker:
                     marks.setdefault(call.place.file, []).append(call)
         for reason in [*run.unreadable, *(n for r in run.results if r.library for n in r.library.notes)]:
             marks[path].append(self._problem(path, reason, Severity.INFO))
-        return Checked(marks, frozenset({path, *_files(run.models)}), self.runs.get(path))
+        return Checked(marks, frozenset({path, *_files(run.models)}), self.runs.get(path), frozenset(m.label for m in run.models))
 
     def mark(self, diagnostic: Diagnostic, note: str = "") -> Mark:
         location = diagnostic.location
@@ -270,6 +272,8 @@ class Navigator:
         self.runs: dict[str, api.Run] = {}  # each open file's last check that read models
         self._outlines: dict[str, tuple[str, Outline]] = {}  # file -> (text, its last well-formed outline)
         self._places: dict[int, tuple] = {}  # id(run) -> (run, its links' and joints' places)
+        self.checked_texts: dict[str, str] = {}  # open file -> its text as the last check of it read it
+        self._moves: dict[str, tuple[str, str, list]] = {}  # file -> (text checked, text now, their diff)
 
     def sync(self, texts: dict[str, str]) -> None:
         for path in [p for p in self.texts if p not in texts]:
@@ -277,6 +281,8 @@ class Navigator:
             del self.texts[path]
             self.runs.pop(path, None)
             self._outlines.pop(path, None)
+            self.checked_texts.pop(path, None)
+            self._moves.pop(path, None)
         if len(self._outlines) > len(texts) + OUTLINES_KEPT:  # of files not open: read again when needed
             for path in [p for p in self._outlines if p not in texts]:
                 del self._outlines[path]
@@ -285,10 +291,13 @@ class Navigator:
                 self.sources.give(path, encoded(text))
                 self.texts[path] = text
 
-    def keep(self, path: str, run: api.Run | None) -> None:
-        """The models of the last check of ``path`` (None: it read none, the earlier ones stay)."""
+    def keep(self, path: str, run: api.Run | None, texts: dict[str, str] | None = None) -> None:
+        """The models of the last check of ``path`` (None: it read none, the earlier ones
+        stay), and the texts it was made with."""
         if run is not None:
             self.runs[path] = run
+        for file, text in (texts or {}).items():
+            self.checked_texts[file] = text
         live = {id(r) for r in self.runs.values()}
         self._places = {key: value for key, value in self._places.items() if key in live}
 
@@ -347,7 +356,7 @@ class Navigator:
                 target = self._file_named(file, include.value)
                 if target is not None and str(target) not in files:
                     files.append(str(target))
-        links, joints = self._named_places(models)
+        links, joints = (_Moved(found, self.line_now) for found in self._named_places(models))
         resolver = self._resolver(path)
         return navigation.Scope(tuple(outlines), links, joints, resolver.find, lambda value: self._file_named(path, value))
 
@@ -363,6 +372,22 @@ class Navigator:
             for name, places in known[2].items():
                 joints.setdefault(name, places)
         return links, joints
+
+    def line_now(self, file: str, line: int | None) -> int | None:
+        """Where a line of ``file`` as the last check read it is in the editor's text now
+        (edits since move it); the line itself when the text is the same or not open."""
+        file = _absolute(file)
+        checked, now = self.checked_texts.get(file), self.texts.get(file)
+        if line is None or checked is None or now is None or checked is now or checked == now:
+            return line
+        known = self._moves.get(file)
+        if known is None or known[0] is not checked or known[1] is not now:
+            opcodes = difflib.SequenceMatcher(None, checked.splitlines(), now.splitlines(), autojunk=False).get_opcodes()
+            known = self._moves[file] = (checked, now, opcodes)
+        for tag, old_start, old_end, new_start, new_end in known[2]:
+            if old_start < line <= old_end:  # 1-based line in this block
+                return new_start + (line - old_start) if tag == "equal" else new_start + 1
+        return line
 
     def outline(self, file: str) -> Outline | None:
         """The file's outline; while its text is not well-formed, the last one that was."""
@@ -398,6 +423,27 @@ class Navigator:
             return None
         include = resolve_include(value, found.declared, resolver.find)
         return Path(include.value) if include.kind == "path" else None
+
+
+class _Moved(Mapping):
+    """Places of links or joints as the last check found them, each line moved to where
+    the editor's text has it now."""
+
+    def __init__(self, places: dict[str, tuple[Location, ...]], line_now) -> None:
+        self.places, self.line_now = places, line_now
+
+    def __getitem__(self, name: str) -> tuple[Location, ...]:
+        return tuple(self._moved(location) for location in self.places[name])
+
+    def __iter__(self):
+        return iter(self.places)
+
+    def __len__(self) -> int:
+        return len(self.places)
+
+    def _moved(self, location: Location) -> Location:
+        trace = tuple(call._replace(line=self.line_now(call.file, call.line)) for call in location.trace)
+        return location._replace(line=self.line_now(location.file, location.line), trace=trace)
 
 
 def _models_reading(runs: dict[str, api.Run], path: str) -> list[Result]:

@@ -96,6 +96,7 @@ class Contribution(NamedTuple):
 
     found: dict[str, list[types.Diagnostic]]
     reads: frozenset[str]
+    models: frozenset[str]  # the models (with their arguments) it went through
 
 
 class Running(NamedTuple):
@@ -243,33 +244,42 @@ class UrdfServer(LanguageServer):
                 continue
             if self.dirty.get(path) == asked:
                 del self.dirty[path]
-            self.keep(path, checked)
+            self.keep(path, checked, texts)
         # The collector runs seldom while a model is read (the command line's setting: a
         # fifth of a check's time otherwise); the garbage of the checks goes now, while idle.
         self.thread.submit(give_back_memory)
         self.navigator.sync(self.open_files())  # what it holds of texts changed or closed goes too
 
-    def keep(self, path: str, checked: Checked) -> None:
+    def keep(self, path: str, checked: Checked, texts: dict[str, str]) -> None:
         """Keep what the check of ``path`` found, and publish what is ready."""
         before = self.contributions.get(path)
         found = {file: [self.diagnostic(m) for m in marks] for file, marks in checked.marks.items()}
-        self.contributions[path] = Contribution(found, checked.reads)
-        self.navigator.keep(path, checked.run)
+        self.contributions[path] = Contribution(found, checked.reads, checked.models)
+        self.navigator.keep(path, checked.run, texts)
         self.pending |= {path, *found, *(before.found if before else ())}
         self.checked.add(path)
         self.publish_ready()
 
     def publish_ready(self) -> None:
         """Publish each pending file whose every contributing check is current: when
-        its list or version changed, and an open file just checked in any case."""
+        its list or version changed, and an open file just checked in any case.
+
+        An open file's own check that went through every model another check went
+        through found all that one finds in it: that one is not waited for."""
         busy = set(self.dirty) | ({self.running.path} if self.running else set())
         versions = self.versions()
         for file in sorted(self.pending):
-            contributors = [c for c, found in self.contributions.items() if file in found.found or file in found.reads]
-            if busy & {*contributors, file}:
+            own = self.contributions.get(file) if file not in busy else None
+            waited = [
+                checked
+                for checked, found in self.contributions.items()
+                if checked in busy and (file in found.found or file in found.reads)
+                and not (own is not None and found.models and found.models <= own.models)
+            ]
+            if waited or file in busy:
                 continue
             self.pending.discard(file)
-            diagnostics = merged(found.found.get(file, ()) for found in self.contributions.values())
+            diagnostics = merged(found.found.get(file, ()) for checked, found in self.contributions.items() if checked not in busy)
             shown = (versions.get(file), diagnostics)
             if self.shown.get(file) == shown and file not in self.checked:
                 continue
