@@ -124,6 +124,10 @@ class Checker:
         """Start the xacro worker now, while the server has one thread, rather than at the first check."""
         self.session.expander.expand(b'<robot name="warm" xmlns:xacro="http://www.ros.org/wiki/xacro"/>', None, {}, PackageResolver())
 
+    def begin(self) -> None:
+        """From the thread that gives checks up: a check is about to be asked for."""
+        self.giving_up.clear()
+
     def give_up(self) -> None:
         """From another thread: stop the running check (it raises GivenUp) and the expansion it waits for."""
         self.giving_up.set()
@@ -132,8 +136,9 @@ class Checker:
     # -- checking -------------------------------------------------------------------
     def check(self, path: str, texts: dict[str, str]) -> Checked | None:
         """Check one open file with the editor's texts standing for their files; None
-        when :meth:`give_up` was called since the check began."""
-        self.giving_up.clear()
+        when :meth:`give_up` was called since :meth:`begin`."""
+        if self.giving_up.is_set():
+            return None  # given up before it began
         self.sync(texts)
         try:
             run = api.run([path], self.session)

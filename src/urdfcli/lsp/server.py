@@ -228,6 +228,7 @@ class UrdfServer(LanguageServer):
                 continue
             before = self.contributions.get(path)
             self.running = Running(path, loop.time(), before.reads if before else frozenset())
+            self.checker.begin()  # here, not on the checking thread: a give-up that comes before the check starts counts
             try:
                 checked = await asyncio.wrap_future(self.thread.submit(self.checker.check, path, texts))
             except Exception:  # noqa: BLE001 - logged; the server goes on
