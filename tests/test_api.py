@@ -53,7 +53,9 @@ def test_a_result_is_what_check_prints(tmp_path, capsys):
 def test_the_report_is_the_text_format():
     result = urdfcli.check(CRANE)
     report = result.report()
-    assert report.endswith(f"1 file checked: {len(result.errors)} error, {len(result.warnings)} warnings\n")
+    summary = f"1 file checked: {len(result.errors)} error, {len(result.warnings)} warnings\n"
+    # then what --fix could do: the crane's inertias, from its geometry (unsafe fixes)
+    assert report.endswith(summary + "2 fixes available with --fix --unsafe-fixes\n")
     assert f"{CRANE}:" in report and "    hint: " in report and "^" in report
     assert report == run_cli("lint", "--select", ",".join(sorted({d.code for d in result.diagnostics})), str(CRANE)).stdout.decode()
 

@@ -26,10 +26,12 @@ FLAGGED = (  # warnings only: lint fails, check passes
 
 def test_hooks_are_declared_as_documented():
     by_id = {hook["id"]: hook for hook in HOOKS}
-    assert set(by_id) == {"urdfcli-check", "urdfcli-lint", "urdfcli-drift"}
+    assert set(by_id) == {"urdfcli-check", "urdfcli-lint", "urdfcli-drift", "urdfcli-fix"}
     assert by_id["urdfcli-check"]["entry"] == "urdfcli check"
     assert by_id["urdfcli-lint"]["entry"] == "urdfcli lint"
     assert by_id["urdfcli-drift"]["entry"] == "urdfcli drift"
+    # the safe fixes; fails when it changed a file, whatever remains (the lint hook judges that)
+    assert by_id["urdfcli-fix"]["entry"] == "urdfcli lint --fix --exit-zero --exit-non-zero-on-fix"
     assert all(hook["language"] == "python" for hook in HOOKS)
     # every changed file in one run, so that a library and its models are seen together
     assert all(hook["require_serial"] and hook["files"] == r"\.(urdf|xacro)$" for hook in HOOKS)
@@ -135,6 +137,36 @@ def test_pre_commit_try_repo_passes_a_clean_model_and_fails_a_flagged_one(tmp_pa
 
     check = try_repo("urdfcli-check")  # warnings only: check passes
     assert check.returncode == 0, check.stdout.decode()
+
+
+FIXABLE = (  # a mesh named in another case than its file: the safe fix names the file
+    '<robot name="r">\n  <link name="base_link">\n    <visual><geometry><mesh filename="meshes/base.STL"/></geometry></visual>\n'
+    '  </link>\n</robot>\n'
+)
+
+
+def test_the_fix_hook_fails_when_it_fixed_a_file_and_passes_once_staged(tmp_path, hooks):
+    pre_commit, hooks_repo, env = hooks
+    project = tmp_path / "project"
+    (project / "meshes").mkdir(parents=True)
+    (project / "meshes" / "base.stl").write_bytes(b"solid base\nendsolid base\n")
+    git("init", "-q", cwd=project)
+    (project / "robot.urdf").write_text(FIXABLE)
+    git("add", "-A", cwd=project)
+
+    def try_fix():
+        return subprocess.run([pre_commit, "try-repo", str(hooks_repo), "urdfcli-fix", "--all-files"], cwd=project, env=env, capture_output=True, timeout=900)
+
+    fixed = try_fix()
+    out = fixed.stdout.decode()
+    assert fixed.returncode == 1, out
+    assert re.search(r"urdfcli fix\.+Failed", out) and "files were modified by this hook" in out
+    assert "1 fixed, " in out
+    assert (project / "robot.urdf").read_text() == FIXABLE.replace("meshes/base.STL", "meshes/base.stl")
+    git("add", "-A", cwd=project)
+    again = try_fix()
+    assert again.returncode == 0, again.stdout.decode()  # what remains is the lint hook's to judge
+    assert re.search(r"urdfcli fix\.+Passed", again.stdout.decode())
 
 
 def test_commits_to_a_ros_repository_check_libraries_through_their_models(tmp_path, hooks):

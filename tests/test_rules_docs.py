@@ -46,11 +46,15 @@ def test_rules_table_lists_every_rule():
     done = run_cli("rules", env={"COLUMNS": "250"})
     assert done.returncode == 0
     lines = done.stdout.decode().splitlines()
-    assert lines[0].split() == ["Code", "Name", "Severity", "Default", "In", "check", "Summary"]
+    assert lines[0].split() == ["Code", "Name", "Severity", "Default", "In", "check", "Fix", "Summary"]
     listed = [line.split()[0] for line in lines[1:]]
     assert sorted(listed) == [rule.code for rule in RULES]
     s001 = next(line for line in lines if line.startswith("S001"))
     assert s001.split()[:5] == ["S001", "link-name-suffix", "warning", "off", "no"]
+    j010 = next(line for line in lines if line.startswith("J010"))
+    assert j010.split()[:6] == ["J010", "limit-lower-above-upper", "warning", "on", "yes", "unsafe"]
+    p001 = next(line for line in lines if line.startswith("P001"))
+    assert p001.split()[:6] == ["P001", "package-dependency-undeclared", "warning", "on", "no", "safe"]
 
 
 def test_rules_json():

@@ -22,16 +22,18 @@ from functools import partial
 from pathlib import Path
 from typing import TYPE_CHECKING, NamedTuple
 
-from .diagnostics import Diagnostic
+from .diagnostics import Diagnostic, Fix
 from .model import massprops
 from .model.load import Loaded, load
 from .model.meshes import mesh_facts
 from .model.units import unit_verdict
 from .project import drift as drift_
-from .project import linter
+from .project import fixing, linter
 from .project.config import Config, ConfigError
 from .project.workspace import Entry, Target, assemble, model_targets, models_below, plan, unchecked_library, xacro_sources
 from .read.document import STDIN, InputError, read_document
+from .read.edits import EditError
+from .read.edits import apply as edit_text
 from .read.packages import PackageError
 from .report import inertia
 from .report.result import Result
@@ -236,6 +238,58 @@ def check_target(target: Target, session: Session) -> Result | str:
     return Result(path, diagnostics, loaded, dict(target.arguments), includes=tuple(document.includes), needs_argument=document.missing_argument, meshes=meshes)
 
 
+class Fixed(NamedTuple):
+    """A run with its fixes applied: ``run`` is what remains (the last check, made
+    with the fixed texts), ``fixed`` the fixes applied, ``changed`` each file they
+    changed (before, after), ``failed`` the files a fix could not be written in, and why."""
+
+    run: Run
+    fixed: list[Fix]
+    changed: dict[str, tuple[bytes, bytes]]
+    failed: list[str]
+
+
+def fix(paths: list[str], session: Session, progress: Progress | None = None) -> Fixed:
+    """Check the inputs as :func:`run` does and apply the fixes found, round after round
+    (a fix may let another be found) until none is left. Nothing is written: the fixed
+    texts are given to the session, and :attr:`Fixed.changed` says what to write. The
+    options' ``fix`` and ``unsafe_fixes`` (None: each input's configuration, ``fix`` and
+    ``unsafe-fixes``) say which fixes apply. Raises UsageError as :func:`run` does."""
+    options = session.options
+    config_for = configured(session)
+    before: dict[str, bytes] = {}
+    applied: list[Fix] = []
+    failed: list[str] = []
+
+    def chosen(result: Result) -> tuple[bool, bool]:
+        config = config_for(result.path)
+        return (config.fix if options.fix is None else options.fix), (config.unsafe_fixes if options.unsafe_fixes is None else options.unsafe_fixes)
+
+    serial = session.using(options.but(jobs=1))  # the fixed texts are this process's: checked here
+    for round_ in range(fixing.MAX_ROUNDS + 1):
+        found = run(paths, serial if before else session, progress if round_ == 0 else None)
+        pairs = [(d, settings[1]) for result in found.results if (settings := chosen(result))[0] for d in result.diagnostics]
+        selection = fixing.select(pairs)
+        if not selection.edits or round_ == fixing.MAX_ROUNDS:
+            break
+        written = False
+        for file, edits in selection.edits.items():
+            try:
+                data = session.sources.data(file)
+                new = edit_text(data, [(e.start, e.end, e.text) for e in edits])
+            except (OSError, EditError) as error:
+                failed.append(f"{file}: {error}")
+                continue
+            before.setdefault(file, data)
+            session.sources.give(file, new)
+            written = True
+        if not written:
+            break
+        applied += selection.fixes
+    changed = {file: (data, session.sources.data(file)) for file, data in before.items()}
+    return Fixed(found, applied, {file: pair for file, pair in changed.items() if pair[0] != pair[1]}, list(dict.fromkeys(failed)))
+
+
 def audit(result: Result, session: Session, tolerance: float = massprops.TOLERANCE, density: float | None = None):
     """The mass-property audit of a model (None when there is no robot): every
     mass-property rule run with this tolerance and density, what the configuration
@@ -358,4 +412,4 @@ def _drift_of(path: str, session: Session) -> Result:
     return Result(path, kept, loaded)
 
 
-__all__ = ["Difference", "Options", "Run", "RuleSet", "Session", "UsageError", "check", "check_target", "diff", "drift", "expand", "find_models", "lint", "run", "xacro_arguments"]
+__all__ = ["Difference", "Fixed", "Options", "Run", "RuleSet", "Session", "UsageError", "check", "check_target", "diff", "drift", "expand", "find_models", "fix", "lint", "run", "xacro_arguments"]

@@ -6,6 +6,10 @@ what it is about (``subjects``: the names of the links or joints). Readers and
 rules make them without a severity; the linter gives each one its rule's
 severity, or the one the configuration sets (see :mod:`urdfcli.project.linter`).
 A rule that knows better than its default (a finding on a 5 g link) gives one.
+
+A diagnostic may carry its ``fix``: what to change in the robot (``changes``,
+about elements of the model as read) or in a file (``edits``, spans of a source's
+text), how safe that is, and, where no edit can be made, why.
 """
 
 from __future__ import annotations
@@ -57,6 +61,67 @@ class Location(NamedTuple):
     trace: tuple[Call, ...] = ()
 
 
+class Applicability(str, Enum):
+    """How safe a fix is, as ruff means it: ``safe`` keeps the robot's meaning (a
+    declaration, a file name, a path, a deprecated form xacro still reads);
+    ``unsafe`` changes a mass, a pose, a limit, a scale, a shape or the expansion."""
+
+    SAFE = "safe"
+    UNSAFE = "unsafe"
+
+
+class Edit(NamedTuple):
+    """Replace ``start:end`` of a source's text (``file`` as diagnostics name it;
+    offsets in characters of the text with its line ends read as ``\\n``, as
+    :class:`urdfcli.read.positions.Source` keeps it) by ``text``."""
+
+    file: str
+    start: int
+    end: int
+    text: str
+
+
+class SetAttribute(NamedTuple):
+    """Give attribute ``attribute`` of the model's element ``at`` (its index in the
+    document read, the xacro expansion for a xacro input) the value ``value``."""
+
+    at: int
+    attribute: str
+    value: str
+
+
+class InsertChild(NamedTuple):
+    """Write ``markup`` as the first child of the model's element ``at``."""
+
+    at: int
+    markup: str
+
+
+Change = SetAttribute | InsertChild
+
+
+class Fix(NamedTuple):
+    """What fixes a diagnostic. A rule gives ``changes`` to the model, or ``edits``
+    of a file directly (what it found in a file as written); the changes are then
+    placed where their values were written (:mod:`urdfcli.model.written`), which
+    turns them into edits, or into the ``reason`` no edit can be made."""
+
+    title: str  # what it does: ``swap lower and upper of joint 'elbow'``
+    applicability: Applicability
+    edits: tuple[Edit, ...] = ()
+    changes: tuple[Change, ...] = ()
+    reason: str | None = None  # why there is no edit (the value is computed by an expression...)
+
+    @property
+    def available(self) -> bool:
+        """Whether the fix can be applied: it has edits, and nothing keeps it from being placed."""
+        return bool(self.edits) and not self.changes and self.reason is None
+
+    @property
+    def safe(self) -> bool:
+        return self.applicability is Applicability.SAFE
+
+
 class Diagnostic(NamedTuple):
     code: str
     message: str
@@ -66,6 +131,7 @@ class Diagnostic(NamedTuple):
     severity: Severity | None = None  # None until the linter gives the rule's or the configured one
     subjects: tuple[str, ...] = ()  # the links or joints it is about
     model: str | None = None  # located in a xacro library: the model (and arguments) whose expansion found it
+    fix: Fix | None = None  # what fixes it, or why nothing can
 
     @property
     def through(self) -> str | None:
@@ -92,6 +158,9 @@ class Diagnostic(NamedTuple):
 
     def with_severity(self, severity: Severity) -> Diagnostic:
         return self._replace(severity=severity)
+
+    def with_fix(self, fix: Fix | None) -> Diagnostic:
+        return self._replace(fix=fix)
 
     def sort_key(self) -> tuple:
         trace = tuple((c.file, c.line or 0, c.column or 0) for c in self.location.trace)

@@ -27,7 +27,8 @@ class Options:
     of the nearest one above each input (or a :class:`Config` itself), and
     ``isolated`` reads none. With ``libraries``, a xacro library is checked through
     the models that include it. ``jobs`` other than 1 checks models in that many
-    processes (0: one per CPU). ``format`` names the reporter of the command line."""
+    processes (0: one per CPU). ``format`` names the reporter of the command line.
+    ``fix`` and ``unsafe_fixes`` say which fixes :func:`urdfcli.api.fix` applies."""
 
     rule_set: RuleSet = RuleSet.LINT
     arguments: tuple[tuple[str, str], ...] = ()  # xacro arguments NAME:=VALUE, over the configuration's
@@ -41,6 +42,8 @@ class Options:
     libraries: bool = True
     jobs: int = 1
     format: str = "text"
+    fix: bool | None = None  # apply the safe fixes (None: the configuration's ``fix``)
+    unsafe_fixes: bool | None = None  # and the unsafe ones (None: the configuration's ``unsafe-fixes``)
 
     def __post_init__(self) -> None:
         if isinstance(self.arguments, dict):

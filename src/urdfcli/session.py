@@ -31,12 +31,15 @@ class Session:
     def __init__(self, options: Options | None = None) -> None:
         self.options = options if options is not None else Options()
         self.sources = Sources()
-        self.packages = PackageIndex()
+        self.packages = PackageIndex(self._given)
         self.expander = Expander()
         self.meshes = MeshSummaries()
         self._forget_sources()
         self.configs = self._configurations()
         PackageResolver(self.package_paths)  # a -P that is not NAME=DIR or a folder: said now (PackageError)
+
+    def _given(self) -> dict[str, bytes]:
+        return self.sources.given()
 
     @property
     def package_paths(self) -> tuple[str, ...]:
@@ -83,7 +86,7 @@ class Session:
         """Stop the xacro worker and let go of what the session learnt."""
         self.expander.close()
         self.sources = Sources()
-        self.packages = PackageIndex()
+        self.packages = PackageIndex(self._given)
         self.meshes = MeshSummaries()
         self._forget_sources()
 

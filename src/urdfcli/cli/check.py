@@ -10,6 +10,7 @@ from .. import api, report
 from ..diagnostics import Severity
 from ..options import Options, RuleSet
 from ..report.console import Output
+from . import fixes
 from .common import (
     LIBRARIES_HELP,
     ColorOption,
@@ -28,6 +29,7 @@ from .common import (
     session_for,
     split_inputs,
 )
+from .fixes import DiffOption, FixOption, UnsafeFixesOption
 
 FORMATS = ("auto", "text", "concise", "json", "sarif", "github", "check_urdf")
 FormatOption = format_option(
@@ -45,6 +47,9 @@ def check(
     package_path: PackagePathOption = None,
     config: ConfigOption = None,
     isolated: IsolatedOption = False,
+    fix: FixOption = None,
+    unsafe_fixes: UnsafeFixesOption = None,
+    diff: DiffOption = False,
     quiet: QuietOption = False,
     color: ColorOption = "auto",
 ) -> None:
@@ -55,16 +60,25 @@ def check(
     1 when one has (or warnings, with --strict), 2 when a file cannot be read.
 
     Configuration (the tool.urdfcli table of the nearest pyproject.toml, or urdfcli.toml)
-    and noqa comments apply as they do for lint.
+    and noqa comments apply as they do for lint; --fix, --unsafe-fixes and --diff fix what
+    check finds as they do for lint.
     """
     paths, mappings = split_inputs(inputs)
+    asked = fixes.Fixing(fix, unsafe_fixes, diff, False)
     options = Options(
         RuleSet.CHECK, tuple(mappings.items()), tuple(package_path or ()), config, isolated, targets=tuple(target or ()),
-        format=choose(output_format, FORMATS),
+        format=choose(output_format, FORMATS), fix=asked.applies, unsafe_fixes=unsafe_fixes,
     )
     output = Output.standard(color, quiet)
     with session_for(options) as session:
-        found = api.run(api.find_models(paths, session), session, progress=CtrlC.stop_if_pressed)
+        outcome = fixes.run(api.find_models(paths, session), session, asked, progress=CtrlC.stop_if_pressed)
+        found = outcome.fixed.run
+        fixes.report_failed(output, outcome.fixed.failed)
+        if diff:
+            report_unreadable(output, found.unreadable)
+            fixes.print_diff(outcome, output)
+            raise SystemExit(Exit.CANNOT_RUN if found.unreadable else Exit.PROBLEMS if outcome.changed else Exit.OK)
+        fixes.report_failed(output, fixes.write_files(outcome))
         if load:
             try:
                 api.load_into_targets(found.results, session)
@@ -72,6 +86,9 @@ def check(
                 raise fail(str(error)) from None
         report_unreadable(output, found.unreadable)
         report.reporter(options.format)(found.results, output, "check", session.sources)
+        line = fixes.summary(outcome, asked)
+        if line is not None and not quiet:
+            output.err.file.write(line + "\n")
     failing = Severity.WARNING.rank if strict else Severity.ERROR.rank
     if found.unreadable:
         raise SystemExit(Exit.CANNOT_RUN)

@@ -11,6 +11,7 @@ from .. import api, report
 from ..diagnostics import Severity
 from ..options import Options, RuleSet
 from ..report.console import Output
+from . import fixes
 from .common import (
     LIBRARIES_HELP,
     ColorOption,
@@ -27,6 +28,7 @@ from .common import (
     session_for,
     split_inputs,
 )
+from .fixes import AddNoqaOption, DiffOption, FixOption, UnsafeFixesOption
 
 FORMATS = ("auto", "text", "concise", "json", "sarif", "github")
 PROGRESS_AFTER = 1.0  # seconds: a run this long shows a progress bar on a terminal
@@ -49,8 +51,13 @@ def lint(
     config: ConfigOption = None,
     isolated: IsolatedOption = False,
     exit_zero: Annotated[bool, typer.Option("--exit-zero", help="Exit 0 even when problems remain (2 still means it could not run).")] = False,
+    exit_non_zero_on_fix: Annotated[bool, typer.Option("--exit-non-zero-on-fix", help="Exit 1 when --fix changed a file, even when nothing remains (a pre-commit hook).")] = False,
     jobs: Annotated[int, typer.Option("--jobs", "-j", min=0, metavar="N", help="Lint files in N processes (0: one per CPU); the output order does not change.")] = 1,
     package_path: PackagePathOption = None,
+    fix: FixOption = None,
+    unsafe_fixes: UnsafeFixesOption = None,
+    diff: DiffOption = False,
+    add_noqa: AddNoqaOption = False,
     quiet: QuietOption = False,
     color: ColorOption = "auto",
 ) -> None:
@@ -59,21 +66,41 @@ def lint(
     Configuration comes from the tool.urdfcli table of the nearest
     pyproject.toml, or from urdfcli.toml; `urdfcli rules` lists the rules. Exit 0 when nothing remains,
     1 when a warning or error remains, 2 when it cannot run.
+
+    With --fix, the safe fixes are written first (with --unsafe-fixes, all of them), and what
+    remains sets the exit status; --diff prints them, writes nothing, and exits 1 when there is
+    something to fix.
     """
     paths, mappings = split_inputs(inputs)
+    asked = fixes.Fixing(fix, unsafe_fixes, diff, add_noqa)
     options = Options(
         RuleSet.LINT, tuple(mappings.items()), tuple(package_path or ()), config, isolated, tuple(select or ()), tuple(ignore or ()),
-        tuple(extend_select or ()), tuple(target or ()), jobs=jobs, format=choose(output_format, FORMATS),
+        tuple(extend_select or ()), tuple(target or ()), jobs=jobs, format=choose(output_format, FORMATS), fix=asked.applies, unsafe_fixes=unsafe_fixes,
     )
     output = Output.standard(color, quiet)
     with session_for(options) as session:
         files = api.find_models(paths, session)
         with Progress(output) as progress:
-            found = api.run(files, session, progress=progress.update)
+            outcome = fixes.run(files, session, asked, progress=progress.update)
+        found = outcome.fixed.run
         report_unreadable(output, found.unreadable)
-        report.reporter(options.format)(found.results, output, "lint", session.sources)
+        fixes.report_failed(output, outcome.fixed.failed)
+        if diff:
+            fixes.print_diff(outcome, output)
+        else:
+            fixes.report_failed(output, fixes.write_files(outcome))
+            report.reporter(options.format)(found.results, output, "lint", session.sources)
+            line = fixes.summary(outcome, asked)
+            if line is not None and not quiet:
+                (output.out if report.resolve(options.format) == "text" else output.err).file.write(line + "\n")
     if found.unreadable:
         raise SystemExit(Exit.CANNOT_RUN)
+    if diff:
+        raise SystemExit(Exit.PROBLEMS if outcome.changed and not exit_zero else Exit.OK)
+    if exit_non_zero_on_fix and outcome.changed:
+        raise SystemExit(Exit.PROBLEMS)
+    if add_noqa:
+        return
     if not exit_zero and any(d.severity.rank >= Severity.WARNING.rank for r in found.results for d in r.diagnostics):
         raise SystemExit(Exit.PROBLEMS)
 

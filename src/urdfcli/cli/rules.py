@@ -20,7 +20,7 @@ def rules(
     output_format: format_option("table, json, or markdown (the text of docs/rules.md).") = "table",
     color: ColorOption = "auto",
 ) -> None:
-    """List every rule: code, name, default severity, on or off by default, summary."""
+    """List every rule: code, name, default severity, on or off by default, fixable (safe or unsafe), summary."""
     output_format = choose(output_format, FORMATS)
     registry = rules_format.ordered(REGISTRY.values())
     output = Output.standard(color)
@@ -29,9 +29,10 @@ def rules(
     elif output_format == "markdown":
         output.out.file.write(rules_format.markdown(registry))
     else:
-        table = Table("Code", "Name", "Severity", "Default", "In check", "Summary", box=None, pad_edge=False, header_style="bold")
+        table = Table("Code", "Name", "Severity", "Default", "In check", "Fix", "Summary", box=None, pad_edge=False, header_style="bold")
         for rule in registry:
-            cells = (rule.code, rule.name, rule.severity.value, "on" if rule.default else "off", "yes" if rules_format.in_check(rule) else "no", rule.summary)
+            fix = rule.fixable.value if rule.fixable is not None else ""
+            cells = (rule.code, rule.name, rule.severity.value, "on" if rule.default else "off", "yes" if rules_format.in_check(rule) else "no", fix, rule.summary)
             table.add_row(*(Text(cell) for cell in cells))
         output.out.print(table)
 

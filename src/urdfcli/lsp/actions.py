@@ -1,5 +1,6 @@
 """Quick fixes as text edits: a ``noqa`` comment that silences one rule on one
-element, and a new ``<inertial>`` (or macro call) in place of the one written.
+element, a new ``<inertial>`` (or macro call) in place of the one written, and the
+fixes the diagnostics carry (one at a time, or every safe one of a file).
 
 An edit is (start offset, end offset, new text) in a source's text; the caller
 turns offsets into places.
@@ -7,15 +8,15 @@ turns offsets into places.
 
 from __future__ import annotations
 
-import re
+import os
+from collections.abc import Iterable
 from typing import NamedTuple
 
-from ..project.suppressions import COMMENT
-from ..read.positions import Source
-
-# codes a comment is not the fix for: a file that cannot be read is reported whatever the
-# comments say, and a comment about the comments (U001 unused, U002 unknown code) wants editing
-UNSILENCEABLE = ("X001", "X002", "U001", "U002")
+from ..diagnostics import Diagnostic, Fix
+from ..project.fixing import select
+from ..project.suppressions import noqa_edit
+from ..read.positions import Source, Sources
+from .places import Place, offset_place
 
 
 class Edit(NamedTuple):
@@ -29,21 +30,8 @@ def noqa(source: Source, line: int, code: str) -> Edit | None:
     (1-based): the code added to a ``noqa`` comment already on that line or alone
     on the line above, else a comment of its own on a new line above, indented
     as the element is."""
-    text = source.line(line)
-    if text is None or code in UNSILENCEABLE:
-        return None
-    line_start = source.offset(line)
-    for number, start in ((line, line_start), (line - 1, source.offset(line - 1) if line > 1 else None)):
-        written = source.line(number) if start is not None else None
-        found = COMMENT.search(written) if written is not None else None
-        if found is None or found.group(1) != "noqa" or (number != line and written.strip() != found.group()):
-            continue
-        codes = [c for c in re.split(r"[,\s]+", found.group(2) or "") if c]
-        if not codes:
-            return None  # a bare noqa silences every rule already
-        return Edit(start + found.start(), start + found.end(), f"<!-- urdfcli: noqa: {', '.join([*codes, code])} -->")
-    indentation = text[: len(text) - len(text.lstrip())]
-    return Edit(line_start, line_start, f"{indentation}<!-- urdfcli: noqa: {code} -->\n")
+    found = noqa_edit(source, line, [code])
+    return Edit(*found) if found is not None else None
 
 
 def replace_element(source: Source, line: int, column: int | None, replacement: str) -> Edit | None:
@@ -61,3 +49,40 @@ def replace_element(source: Source, line: int, column: int | None, replacement: 
     indentation = text[: len(text) - len(text.lstrip())]
     lines = replacement.split("\n")
     return Edit(span[0], span[2], "\n".join([lines[0], *(indentation + rest for rest in lines[1:])]))
+
+
+# -- the fixes diagnostics carry ------------------------------------------------------------
+def fix_edits(fix: Fix, sources: Sources) -> tuple[tuple[Place, str], ...] | None:
+    """A diagnostic's fix as the editor's edits (each file's text as the session has it,
+    the editor's unsaved buffers included); None when it has none or a file cannot be read."""
+    if not fix.available:
+        return None
+    found = []
+    for edit in fix.edits:
+        source = sources.source(edit.file)
+        if source is None:
+            return None
+        found.append((offset_place(os.path.abspath(edit.file), source, edit.start, edit.end), edit.text))
+    return tuple(found)
+
+
+def fix_title(fix: Fix) -> str:
+    return fix.title[:1].upper() + fix.title[1:] + ("" if fix.safe else " (unsafe)")
+
+
+def own_fixes(diagnostics: Iterable[Diagnostic], path: str, code: str, line: int) -> list[Fix]:
+    """The fixes of the diagnostics of ``code`` at ``line`` (0-based) of ``path``, each once."""
+    found = []
+    for diagnostic in diagnostics:
+        location = diagnostic.location
+        if diagnostic.code == code and diagnostic.fix is not None and diagnostic.fix.available and location.line == line + 1 \
+                and not location.expanded and os.path.abspath(location.file) == path and diagnostic.fix not in found:
+            found.append(diagnostic.fix)
+    return found
+
+
+def fix_all(diagnostics: Iterable[Diagnostic], path: str) -> list[Fix]:
+    """The safe fixes of the diagnostics in ``path`` that `urdfcli lint --fix` would apply
+    in one round: each once, none overlapping another."""
+    chosen = [(d, False) for d in diagnostics if not d.location.expanded and os.path.abspath(d.location.file) == path]
+    return select(chosen).fixes

@@ -9,9 +9,10 @@ mutable:
   it points into, and, when a macro call's arguments caused it, at that call too.
   A check can be given up from another thread (:meth:`Checker.give_up`): it stops
   at its next expansion, and an expansion running then is stopped.
-- :class:`Navigator` answers hover, definition, completion, document symbols and
-  the ``noqa`` fix on the protocol's thread, at once, from the texts' outlines and
-  the models of the last checks, whatever check is running.
+- :class:`Navigator` answers hover, definition, completion, document symbols,
+  the ``noqa`` fix and the fixes the diagnostics carry on the protocol's thread,
+  at once, from the texts' outlines and the models of the last checks, whatever
+  check is running.
 
 Paths are absolute.
 """
@@ -278,6 +279,7 @@ class Navigator:
         self._outlines: dict[str, tuple[str, Outline]] = {}  # file -> (text, its last well-formed outline)
         self._places: dict[int, tuple] = {}  # id(run) -> (run, its links' and joints' places)
         self.checked_texts: dict[str, str] = {}  # open file -> its text as the last check of it read it
+        self._run_texts: dict[str, dict[str, str]] = {}  # open file -> the texts its run in ``runs`` was made with
         self._moves: dict[str, tuple[str, str, list]] = {}  # file -> (text checked, text now, their diff)
 
     def sync(self, texts: dict[str, str]) -> None:
@@ -285,6 +287,7 @@ class Navigator:
             self.sources.take_back(path)
             del self.texts[path]
             self.runs.pop(path, None)
+            self._run_texts.pop(path, None)
             self._outlines.pop(path, None)
             self.checked_texts.pop(path, None)
             self._moves.pop(path, None)
@@ -301,6 +304,7 @@ class Navigator:
         stay), and the texts it was made with."""
         if run is not None:
             self.runs[path] = run
+            self._run_texts[path] = dict(texts or {})
         for file, text in (texts or {}).items():
             self.checked_texts[file] = text
         live = {id(r) for r in self.runs.values()}
@@ -337,6 +341,33 @@ class Navigator:
         if edit is None:
             return None
         return Fix(f"Silence {code} on this element (noqa comment)", ((offset_place(path, source, edit.start, edit.end), edit.text),))
+
+    def own_fixes(self, path: str, code: str, line: int) -> list[Fix]:
+        """The fixes the diagnostics of ``code`` at ``line`` (0-based) of ``path`` carry, as
+        `lint --fix` writes them: only while the texts they edit are those checked."""
+        found = []
+        for fix in actions.own_fixes(self._diagnostics(path), path, code, line):
+            edits = actions.fix_edits(fix, self.sources) if self._unchanged(path, fix) else None
+            if edits is not None:
+                found.append(Fix(escape(actions.fix_title(fix)), edits))
+        return found
+
+    def fix_all(self, path: str) -> Fix | None:
+        """Every safe fix of the last check of ``path`` (what `urdfcli lint --fix` applies
+        first), as one change of the files; None when there is none, or the texts changed."""
+        chosen = [fix for fix in actions.fix_all(self._diagnostics(path), path) if self._unchanged(path, fix)]
+        edits = [edit for fix in chosen for edit in actions.fix_edits(fix, self.sources) or ()]
+        return Fix("Fix all safe urdfcli problems", tuple(edits)) if edits else None
+
+    def _diagnostics(self, path: str) -> list[Diagnostic]:
+        run = self.runs.get(path)
+        return [d for result in run.results for d in result.diagnostics] if run is not None else []
+
+    def _unchanged(self, path: str, fix) -> bool:
+        """Whether every file ``fix`` edits has the text the check of ``path`` that found it read
+        (a file not open: as on disk)."""
+        made_with = self._run_texts.get(path, {})
+        return all(self.texts.get(file) == made_with.get(file) for file in {os.path.abspath(e.file) for e in fix.edits})
 
     def place(self, file: str, line: int | None, column: int | None) -> Place:
         return token_place(file, self.sources.source(file), line, column)

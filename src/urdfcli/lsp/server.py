@@ -493,7 +493,10 @@ def build(package_paths: tuple[str, ...] = ()) -> UrdfServer:
             for kind, name, detail, place in ls.navigate().symbols(path)
         ]
 
-    @server.feature(types.TEXT_DOCUMENT_CODE_ACTION, types.CodeActionOptions(code_action_kinds=[types.CodeActionKind.QuickFix]))
+    @server.feature(
+        types.TEXT_DOCUMENT_CODE_ACTION,
+        types.CodeActionOptions(code_action_kinds=[types.CodeActionKind.QuickFix, types.CodeActionKind.SourceFixAll]),
+    )
     async def code_action(ls: UrdfServer, params: types.CodeActionParams) -> list[types.CodeAction] | None:
         path = checkable(params.text_document.uri)
         if path is None or params.text_document.uri not in ls.workspace.text_documents:
@@ -505,7 +508,7 @@ def build(package_paths: tuple[str, ...] = ()) -> UrdfServer:
             code = str(diagnostic.code)
             subjects = (diagnostic.data or {}).get("subjects", []) if isinstance(diagnostic.data, dict) else []
             noqa = ls.navigate().noqa(path, code, diagnostic.range.start.line)
-            fixes = [noqa] if noqa is not None else []
+            fixes = [*ls.navigator.own_fixes(path, code, diagnostic.range.start.line), *([noqa] if noqa is not None else [])]
             if subjects and REGISTRY.get(code) is not None and REGISTRY[code].remedy is Remedy.INERTIAL:
                 # the audit needs the checking thread: while a check runs, waited for a moment, else left out
                 job = ls.thread.submit(ls.checker.inertial_fixes, path, code, subjects)
@@ -519,6 +522,13 @@ def build(package_paths: tuple[str, ...] = ()) -> UrdfServer:
                 for place, text in fix.edits:
                     changes.setdefault(ls.uris.get(place.file) or from_fs_path(place.file), []).append(types.TextEdit(ls.range(place), text))
                 found.append(types.CodeAction(fix.title, kind=types.CodeActionKind.QuickFix, diagnostics=[diagnostic], edit=types.WorkspaceEdit(changes=changes)))
+        only = [str(getattr(kind, "value", kind)) for kind in params.context.only or ()]
+        every = ls.navigate().fix_all(path) if not only or any(types.CodeActionKind.SourceFixAll.value.startswith(kind) for kind in only) else None
+        if every is not None:
+            changes = {}
+            for place, text in every.edits:
+                changes.setdefault(ls.uris.get(place.file) or from_fs_path(place.file), []).append(types.TextEdit(ls.range(place), text))
+            found.append(types.CodeAction(every.title, kind=types.CodeActionKind.SourceFixAll, edit=types.WorkspaceEdit(changes=changes)))
         return found or None
 
     @server.feature(types.SHUTDOWN)

@@ -15,6 +15,7 @@ from __future__ import annotations
 import math
 from typing import NamedTuple
 
+from ..diagnostics import Applicability, Fix, InsertChild, SetAttribute
 from . import massprops
 from .load import Loaded
 from .massprops import Matrix, Vector
@@ -24,6 +25,7 @@ from .robot import Link, Shape
 from .units import mis_scaled
 
 TOLERANCE = massprops.TOLERANCE
+UNSAFE = Applicability.UNSAFE
 
 
 class Body(NamedTuple):
@@ -333,3 +335,59 @@ def total(loaded: Loaded, density: float | None = None) -> Body | None:
     return Body(mass, com, massprops.tidy(tensor))
 
 
+
+
+# -- a suggested inertial ----------------------------------------------------------------
+class Suggested(NamedTuple):
+    """The ``<inertial>`` a uniform body filling a link's geometry gives: in the frame
+    of the link's current ``<inertial><origin>`` rotation (``rpy``), so that only the
+    centre and the tensor change; ``source`` names the shapes it fills."""
+
+    mass: float
+    xyz: Vector
+    rpy: Vector
+    tensor: dict[str, float]
+    source: str
+
+
+def suggested(loaded: Loaded, link: Link, density: float | None = None) -> Suggested | str:
+    """The inertial a uniform body filling the link's geometry gives (an estimate: a
+    part's CAD values are better), or why the geometry cannot tell."""
+    found = implied(loaded, link, density)
+    if found.body is None:
+        return found.source if link.inertial is not None or density else "it declares no mass (give --density)"
+    rpy = link.inertial.origin.rpy if link.inertial is not None else (0.0, 0.0, 0.0)
+    tensor = massprops.tidy(massprops.rotate(found.body.tensor, massprops.transpose(massprops.rotation(rpy))))
+    return Suggested(found.body.mass, found.body.com, rpy, massprops.as_dict(tensor), found.source)
+
+
+def inertial_fix(loaded: Loaded, link: Link) -> Fix:
+    """The fix that writes :func:`suggested`'s tensor and centre of mass into the link's
+    ``<inertial>`` (its mass and the rotation of its frame kept); unsafe: the robot's
+    dynamics change."""
+    found = suggested(loaded, link)
+    title = f"write the tensor and centre of mass of a uniform body filling the geometry of link '{link.name}'"
+    inertial = link.inertial
+    if isinstance(found, str):
+        return Fix(title, UNSAFE, reason=f"the geometry cannot tell: {found}")
+    if inertial is None or inertial.inertia_at is None:
+        return Fix(title, UNSAFE, reason=f"link '{link.name}' has no <inertia> to write it in")
+    declared = inertial.inertia or {}
+    changes: list = [
+        SetAttribute(inertial.inertia_at, key, massprops.number(found.tensor[key]))
+        for key in massprops.KEYS if not _same(declared.get(key), found.tensor[key])
+    ]
+    xyz = " ".join(map(massprops.number, found.xyz))
+    if not all(_same(a, b) for a, b in zip(inertial.origin.xyz, found.xyz)):
+        if inertial.origin_at is not None:
+            changes.append(SetAttribute(inertial.origin_at, "xyz", xyz))
+        else:
+            changes.append(InsertChild(inertial.at, f'<origin xyz="{xyz}" rpy="0 0 0"/>'))
+    if not changes:
+        return Fix(title, UNSAFE, reason="the declared values are those already")
+    return Fix(f"{title}: {found.source}", UNSAFE, changes=tuple(changes))
+
+
+def _same(declared: float | None, value: float) -> bool:
+    """Whether a declared number is the value as a fix would write it (six digits)."""
+    return declared is not None and math.isclose(declared, float(massprops.number(value)), rel_tol=1e-6, abs_tol=1e-15)

@@ -71,6 +71,12 @@ class Loaded:
         """A diagnostic about the element ``at`` (see :class:`Document`)."""
         return self.document.diagnostic(code, message, at, hint, attribute, subjects)
 
+    def value(self, at: int | None, attribute: str) -> str | None:
+        """The value of an attribute of element ``at`` as the model's text has it (the
+        expansion's, for xacro), for a fix that keeps the way a number was written."""
+        text = self.document.model_source
+        return text.value(at, attribute) if text is not None and at is not None else None
+
     @cached_property
     def parent_joints(self) -> dict[str, Joint]:
         """Each link's parent joint: the first written, when a link has several."""

@@ -9,10 +9,11 @@ leaves the field empty, and reads on.
 # No ``from __future__ import annotations`` here: typing.NamedTuple compiles each field's
 # annotation written as a string, which cost 6 ms of every start.
 import math
+import re
 from itertools import count
 from typing import TYPE_CHECKING, NamedTuple
 
-from ..diagnostics import Diagnostic
+from ..diagnostics import Applicability, Diagnostic, Fix, SetAttribute
 from ..read.document import Document, tag_name
 from ..read.xml import Element, top_level
 from .numbers import NumberError, VectorLengthError, format_number, parse_double, parse_vector
@@ -26,6 +27,7 @@ JOINT_TYPES = ("fixed", "revolute", "continuous", "prismatic", "floating", "plan
 MOVING_AXIS_TYPES = ("revolute", "continuous", "prismatic", "planar")
 INERTIA_KEYS = ("ixx", "ixy", "ixz", "iyy", "iyz", "izz")
 FULL_TURN = 2 * math.pi + 1e-3  # radians: no one writes an angle beyond it, everyone writes 90 or 180 in degrees
+UNSAFE = Applicability.UNSAFE
 ZERO_HINT = "a placeholder shape is better left out; give a real shape a positive size"
 
 
@@ -202,8 +204,10 @@ class Reader:
         return self._index[element] if element is not None else None
 
     # -- reporting -------------------------------------------------------------
-    def report(self, code: str, message: str, element: "Element | None", hint: str | None = None, attribute: str | None = None) -> None:
-        self.diagnostics.append(self.document.diagnostic(code, message, self.at(element), hint, attribute))
+    def report(
+        self, code: str, message: str, element: "Element | None", hint: str | None = None, attribute: str | None = None, fix: Fix | None = None
+    ) -> None:
+        self.diagnostics.append(self.document.diagnostic(code, message, self.at(element), hint, attribute).with_fix(fix))
 
     # -- values ----------------------------------------------------------------
     def number(self, element: "Element", attribute: str, required: bool = False, what: str = "") -> float | None:
@@ -258,9 +262,14 @@ class Reader:
         if all(abs(angle) <= FULL_TURN for angle in rpy):
             return
         radians = " ".join(format_number(round(math.radians(a), 6)) if abs(a) > FULL_TURN else format_number(a) for a in rpy)
+        written = origin.get("rpy")
+        angles = iter(rpy)
+        # each angle beyond a turn converted, the others and the spaces kept as written
+        radians_written = re.sub(r"\S+", lambda part: format_number(round(math.radians(a), 6)) if abs(a := next(angles, 0.0)) > FULL_TURN else part.group(), written)
+        fix = Fix(f'write rpy="{radians}" (radians)', UNSAFE, changes=(SetAttribute(self._index[origin], "rpy", radians_written),))
         self.report(
-            "V009", f"origin rpy '{origin.get('rpy')}' has an angle beyond a full turn: degrees, where URDF takes radians",
-            origin, f'in radians: rpy="{radians}"', "rpy",
+            "V009", f"origin rpy '{written}' has an angle beyond a full turn: degrees, where URDF takes radians",
+            origin, f'in radians: rpy="{radians}"', "rpy", fix,
         )
 
     def positive(self, element: "Element", attribute: str, value: float | None) -> None:

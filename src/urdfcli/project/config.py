@@ -22,6 +22,8 @@ Keys::
     [xacro-args]                   # glob -> xacro arguments for the files it matches
     "urdf/*.urdf.xacro" = { use_gpu = "false" }
     targets = ["mujoco"]           # consumers whose target rules run (--target), with variants: "pinocchio:mimic"
+    fix = true                     # `lint` and `check` apply the safe fixes (as --fix)
+    unsafe-fixes = true            # and the unsafe ones (as --unsafe-fixes)
     [models]                       # model -> the argument sets it is checked with
     "ur_description/urdf/ur.urdf.xacro" = [["ur_type:=ur5e", "name:=ur"]]
 
@@ -44,7 +46,7 @@ from ..rules import REGISTRY, Rule, UnknownRule, lookup
 from ..rules.suggestions import close_matches
 
 CONFIG_NAMES = ("urdfcli.toml", ".urdfcli.toml")
-KEYS = ("select", "ignore", "extend-select", "per-file-ignores", "severity", "options", "package-paths", "xacro-args", "models", "targets")
+KEYS = ("select", "ignore", "extend-select", "per-file-ignores", "severity", "options", "package-paths", "xacro-args", "models", "targets", "fix", "unsafe-fixes")
 ALL = "ALL"
 
 
@@ -67,6 +69,8 @@ class Config(NamedTuple):
     xacro_args: tuple[tuple[str, tuple[tuple[str, str], ...]], ...] = ()
     models: tuple[tuple[Path, tuple[tuple[tuple[str, str], ...], ...]], ...] = ()  # absolute model -> argument sets
     targets: tuple[Profile, ...] = ()  # the consumers whose rules run (--target)
+    fix: bool = False  # apply the safe fixes without --fix
+    unsafe_fixes: bool = False  # apply the unsafe fixes too
 
     @classmethod
     def everything(cls) -> "Config":
@@ -263,7 +267,16 @@ def parse(table: dict[str, Any], source: str, root: Path) -> Config:
         xacro_args=tuple(xacro_args),
         models=tuple(models),
         targets=_profiles(table.get("targets", []), where("targets")),
+        fix=_boolean(table, "fix", where("fix")),
+        unsafe_fixes=_boolean(table, "unsafe-fixes", where("unsafe-fixes")),
     )
+
+
+def _boolean(table: dict[str, Any], key: str, where: str) -> bool:
+    value = table.get(key, False)
+    if not isinstance(value, bool):
+        raise ConfigError(f"{where}: expected true or false, not {value!r}")
+    return value
 
 
 def _argument_sets(value: Any, where: str) -> tuple[tuple[tuple[str, str], ...], ...]:

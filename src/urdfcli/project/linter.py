@@ -12,9 +12,11 @@ the same everywhere.
 from __future__ import annotations
 
 from ..diagnostics import Diagnostic
+from ..model.inertia import inertial_fix
 from ..model.load import Loaded
+from ..model.written import place_fixes
 from ..read.document import SUPPRESSION_MARK
-from ..rules import REGISTRY, Kind, Rule, RuleSet
+from ..rules import REGISTRY, Kind, Remedy, Rule, RuleSet
 from . import suppressions
 from .config import Config
 
@@ -53,8 +55,30 @@ def run_rules(loaded: Loaded, config: Config, rule_set: RuleSet) -> list[Diagnos
 
 
 def lint(loaded: Loaded, config: Config, rule_set: RuleSet = RuleSet.LINT) -> list[Diagnostic]:
-    """Every diagnostic of a loaded model that its configuration and suppressions leave."""
-    return configure(loaded, [*loaded.diagnostics, *run_rules(loaded, config, rule_set)], config, rule_set)
+    """Every diagnostic of a loaded model that its configuration and suppressions leave,
+    each with its fix placed in the sources (see :func:`with_fixes`)."""
+    return with_fixes(loaded, configure(loaded, [*loaded.diagnostics, *run_rules(loaded, config, rule_set)], config, rule_set))
+
+
+def with_fixes(loaded: Loaded, diagnostics: list[Diagnostic]) -> list[Diagnostic]:
+    """The diagnostics with their fixes where the sources were written: a rule that a new
+    ``<inertial>`` fixes gets the geometry's (unless it gave a fix of its own), then
+    every change to the model is placed as edits, or as the reason it cannot be."""
+    if loaded.modelled:
+        diagnostics = [_inertial(loaded, d) if d.fix is None and REGISTRY[d.code].remedy is Remedy.INERTIAL else d for d in diagnostics]
+    return place_fixes(loaded, diagnostics)
+
+
+def _inertial(loaded: Loaded, diagnostic: Diagnostic) -> Diagnostic:
+    links = [loaded.robot.links[name] for name in diagnostic.subjects if name in loaded.robot.links]
+    fixes = [inertial_fix(loaded, link) for link in links]
+    if not fixes:
+        return diagnostic
+    blocked = next((f for f in fixes if f.reason is not None), None)
+    if len(fixes) == 1 or blocked is not None:
+        return diagnostic.with_fix(blocked or fixes[0])
+    title = f"write the tensors and centres of mass of uniform bodies filling the geometry of links {', '.join(repr(link.name) for link in links)}"
+    return diagnostic.with_fix(fixes[0]._replace(title=title, changes=tuple(c for f in fixes for c in f.changes)))
 
 
 def configure(loaded: Loaded, diagnostics: list[Diagnostic], config: Config, rule_set: RuleSet = RuleSet.LINT) -> list[Diagnostic]:

@@ -174,3 +174,57 @@ def apply(diagnostics: list[Diagnostic], suppressions: list[Suppression], enable
             if chosen not in suppression.used and any(enabled(code) for code in known if matches(chosen, code)):
                 kept.append(Diagnostic("U001", f"'{kind}: {chosen}' silences nothing: no {chosen} {scope}", where, hint="remove it"))
     return kept
+
+
+# -- writing them -------------------------------------------------------------------------
+# codes a comment is not the fix for: a file that cannot be read is reported whatever the
+# comments say, and a comment about the comments (U001 unused, U002 unknown code) wants editing
+UNSILENCEABLE = ("X001", "X002", "U001", "U002")
+
+
+def noqa_edit(source: Source, line: int, codes: list[str], column: int | None = None) -> tuple[int, int, str] | None:
+    """The edit (start, end, text) of ``source``'s text that silences ``codes`` on the
+    element at ``line`` (and ``column``; the element whose start tag holds that place):
+    the codes added to a ``noqa`` comment already on the element's line or alone on
+    the line above, else a comment of its own on a new line above the element,
+    indented as it is. None when nothing needs writing (a bare ``noqa`` is there
+    already) or no comment can be written there."""
+    codes = [c for c in dict.fromkeys(codes) if c not in UNSILENCEABLE]
+    text = source.line(line)
+    if text is None or not codes:
+        return None
+    line = _element_line(source, line, column)
+    text = source.line(line)
+    if "<?xml" in text:
+        return None  # nothing may come before the XML declaration
+    line_start = source.offset(line)
+    for number, start in ((line, line_start), (line - 1, source.offset(line - 1) if line > 1 else None)):
+        written = source.line(number) if start is not None else None
+        found = COMMENT.search(written) if written is not None else None
+        if found is None or found.group(1) != "noqa" or (number != line and written.strip() != found.group()):
+            continue
+        present = [c for c in re.split(r"[,\s]+", found.group(2) or "") if c]
+        if not present:
+            return None  # a bare noqa silences every rule already
+        added = [c for c in codes if c not in present]
+        if not added:
+            return None
+        return start + found.start(), start + found.end(), f"<!-- urdfcli: noqa: {', '.join([*present, *added])} -->"
+    indentation = text[: len(text) - len(text.lstrip())]
+    return line_start, line_start, f"{indentation}<!-- urdfcli: noqa: {', '.join(codes)} -->\n"
+
+
+def _element_line(source: Source, line: int, column: int | None) -> int:
+    """The line of the ``<`` of the element whose start tag holds ``line``:``column`` (the
+    first non-blank character of the line without a column): a comment may not be
+    written inside a tag written over several lines."""
+    written = source.line(line) or ""
+    offset = source.offset(line, column or (len(written) - len(written.lstrip()) + 1))
+    spans = source.spans
+    if offset is None or not spans:
+        return line
+    starts = [span[0] for span in spans]
+    at = bisect.bisect_right(starts, offset) - 1
+    if at >= 0 and spans[at][0] <= offset < spans[at][1]:
+        return source.position(spans[at][0])[0]
+    return line

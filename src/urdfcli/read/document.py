@@ -111,7 +111,7 @@ class Document:
             origin = self.origins[at] if at < len(self.origins) else None
             if origin is not None:
                 return origin.location()
-        text = self._source
+        text = self.model_source
         start = text.start(at) if text is not None else None
         if start is None:
             return Location(self.shown, expanded=self.is_xacro)
@@ -119,14 +119,14 @@ class Document:
         return Location(self.shown, line, None, expanded=True) if self.is_xacro else Location(self.shown, line, column)
 
     @cached_property
-    def _source(self) -> Source | None:
+    def model_source(self) -> Source | None:
         """The text the model was read from: the file, or xacro's output."""
         return Source(self.expanded_text) if self.expanded_text is not None else self.sources.source(self.shown)
 
     def element_path(self, at: int | None) -> str | None:
         """An XPath-like name such as ``link[@name='arm']/visual[2]/geometry``, worked
         out from the text of the top-level element that holds ``at``."""
-        text = self._source
+        text = self.model_source
         if at is None or text is None or text.start(at) is None:
             return None
         if at == 0 or not self.tops or at < self.tops[0]:
@@ -174,6 +174,9 @@ class Inputs(NamedTuple):
 def read_input(path: str, sources: Sources) -> bytes:
     """The bytes of an input: a file (or the text an editor gave for it), or standard input."""
     if path == STDIN:
+        given = sources.given().get("<stdin>")
+        if given is not None:  # read once a run: checked again (after a fix), it is the text given
+            return given
         data = sys.stdin.buffer.read()
         sources.give("<stdin>", data)  # excerpts and columns, as for a file
         return data

@@ -21,7 +21,7 @@ from __future__ import annotations
 
 import os
 import re
-from collections.abc import Iterable, Iterator
+from collections.abc import Callable, Iterable, Iterator
 from functools import cached_property
 from pathlib import Path
 from typing import NamedTuple
@@ -46,13 +46,20 @@ the name ``package://`` and ``$(find)`` resolve, which may differ from the sourc
 class PackageIndex:
     """What a session learns about packages, learnt once: each manifest's name,
     each folder's packages, each folder's enclosing package and sibling roots. A
-    manifest or folder that changes on disk is read again."""
+    manifest or folder that changes on disk is read again. ``given()`` gives the texts
+    that stand for files (absolute path -> bytes: an editor's unsaved buffers, the
+    fixes not yet written), read for a package.xml instead of its file."""
 
-    def __init__(self) -> None:
+    def __init__(self, given: Callable[[], dict[str, bytes]] = dict) -> None:
+        self._given = given
         self._scans: dict[tuple[Path, int], list[tuple[str, Path]]] = {}
         self._enclosing: dict[Path, Path | None] = {}
         self._roots: dict[Path, list[Path]] = {}
         self._manifests: dict[tuple[str, int, int], Manifest | None] = {}
+
+    def __getstate__(self) -> dict:
+        """What a copy in the xacro worker gets: the texts given stay here (the worker is given them itself)."""
+        return {**self.__dict__, "_given": dict}
 
     def forget(self) -> None:
         """Look at the folders again: packages added, moved or removed on disk (each
@@ -68,6 +75,12 @@ class PackageIndex:
 
     def manifest(self, manifest: Path) -> Manifest | None:
         """What a package.xml declares (its name and dependencies), or None when unreadable."""
+        given = self._given().get(os.path.abspath(manifest))
+        if given is not None:
+            key = (str(manifest), hash(given), -1)
+            if key not in self._manifests:
+                self._manifests[key] = manifest_of(given)
+            return self._manifests[key]
         try:
             state = os.stat(manifest)
         except OSError:
@@ -139,8 +152,16 @@ def read_package_name(manifest: Path) -> str | None:
 def read_manifest(manifest: Path) -> Manifest | None:
     """What a package.xml declares, or None when it cannot be read."""
     try:
-        root = parse(manifest.read_bytes())
-    except (OSError, XmlError):
+        return manifest_of(manifest.read_bytes())
+    except OSError:
+        return None
+
+
+def manifest_of(data: bytes) -> Manifest | None:
+    """What the text of a package.xml declares, or None when it is not XML."""
+    try:
+        root = parse(data)
+    except XmlError:
         return None
     name = (root.findtext("name") or "").strip() or None
     dependencies = {(element.text or "").strip() for kind in DEPENDENCY_KINDS for element in root.findall(kind)}

@@ -42,6 +42,24 @@ _TOKEN = re.compile(r"(?P<escape>\$\$+[{(])|\$\{(?P<expression>[^}]*)\}|\$\((?P<
 _PACKAGE_URI = re.compile(r"package://((?:\$\{[^}]*\}|\$\([^)]*\)|[^/\s\"'<>$])*)")
 
 
+def lexed(text: str) -> list[tuple[str, int, int, str]]:
+    """``text`` as xacro's lexer cuts it: (kind, start, end, inner) for each piece, kind
+    "text", "expression" (``${inner}``), "substitution" (``$(inner)``) or "escape"
+    (``$${`` and the like); what xacro cannot lex ends in one "invalid" piece."""
+    found = []
+    at = 0
+    while at < len(text):
+        token = _TOKEN.match(text, at)
+        if token is None:
+            found.append(("invalid", at, len(text), text[at:]))
+            break
+        kind = next((k for k in ("escape", "expression", "substitution") if token.group(k) is not None), "text")
+        inner = token.group(kind) if kind in ("expression", "substitution") else token.group()
+        found.append((kind, token.start(), token.end(), inner))
+        at = token.end()
+    return found
+
+
 TEXT, TAIL = "#text", "#tail"  # a place in an element's text, or in the text after its end tag
 
 

@@ -10,7 +10,7 @@ from __future__ import annotations
 
 import re
 
-from ..diagnostics import Diagnostic, Location
+from ..diagnostics import Applicability, Diagnostic, Edit, Fix, Location
 from .positions import Sources
 
 # xacro's own words (xacro/__init__.py), and the fix for each
@@ -25,6 +25,7 @@ _FIXES = (
     (re.compile(r"(\w+): no parent scope at global scope"), "remove scope=\"parent\" from property '{0}': at the top level it defines nothing"),
     (re.compile(r"inconsistent namespace redefinitions for ([\w:]+)"), "declare {0} with the same namespace in every file of the model"),
 )
+SAFE = Applicability.SAFE
 _DEPRECATED_CALL = re.compile(r"Using (\w+)\(\) directly is deprecated")
 _START_TAG = re.compile(r"""<[^\s/>]+(?:[^>"']|"[^"]*"|'[^']*')*>""")  # quoted values may hold '>'
 
@@ -38,13 +39,42 @@ def fix(text: str) -> str | None:
     return None
 
 
+_DEPRECATED = re.compile(r"Using (\w+)\(\) directly is deprecated\. Use (\w+)\.\1\(\) instead\.")
+_PREFIXED_MACRO = re.compile(r"macro names must not contain prefix 'xacro:': xacro:(\w+)")
+_MACRO_NAME = re.compile(r"""\sname\s*=\s*["']\s*(xacro:)""")
+
+
 def warning(text: str, location: Location, sources: Sources) -> Diagnostic:
     """X005 for one of xacro's warnings, at the element xacro was at (at the deprecated
-    call itself, when the element's start tag holds it), with its fix."""
+    call itself, when the element's start tag holds it), with its fix; for a form xacro
+    still reads and has deprecated, the edit that writes it as xacro wants it."""
     found = _DEPRECATED_CALL.search(text)
     if found is not None and location.line and location.column:
         location = _at_call(found.group(1), location, sources)
-    return Diagnostic("X005", text, location, hint=fix(text))
+    return Diagnostic("X005", text, location, hint=fix(text), fix=_rewrite(text, location, sources))
+
+
+def _rewrite(text: str, location: Location, sources: Sources) -> Fix | None:
+    """The edit of a deprecated form: ``load_yaml(`` written ``xacro.load_yaml(``, a macro
+    named ``xacro:NAME`` named ``NAME``; None for the other warnings."""
+    deprecated, prefixed = _DEPRECATED.search(text), _PREFIXED_MACRO.search(text)
+    if deprecated is None and prefixed is None:
+        return None
+    source = sources.source(location.file) if location.line and location.column else None
+    at = source.offset(location.line, location.column) if source is not None else None
+    if deprecated is not None:
+        name, namespace = deprecated.groups()
+        title = f"write {namespace}.{name}()"
+        if at is None or not re.match(rf"{re.escape(name)}\s*\(", source.text[at:]):
+            return Fix(title, SAFE, reason="the call is not where xacro was (in the text of an element, or a property's value)")
+        return Fix(title, SAFE, edits=(Edit(location.file, at, at, f"{namespace}."),))
+    title = f'write name="{prefixed.group(1)}"'
+    tag = _START_TAG.match(source.text, at) if at is not None else None
+    written = _MACRO_NAME.search(tag.group()) if tag is not None else None
+    if written is None:
+        return Fix(title, SAFE, reason="the macro's name is not written where xacro read it")
+    start = at + written.start(1)
+    return Fix(title, SAFE, edits=(Edit(location.file, start, start + len("xacro:"), ""),))
 
 
 def _at_call(name: str, location: Location, sources: Sources) -> Location:

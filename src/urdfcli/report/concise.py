@@ -8,7 +8,7 @@ from __future__ import annotations
 from typing import TYPE_CHECKING
 
 from .console import Output
-from .lines import concise_line, library_lines, summary_line
+from .lines import concise_line, fixable_line, library_lines, summary_line
 
 if TYPE_CHECKING:
     from .result import Result
@@ -22,3 +22,6 @@ def report(results: list[Result], output: Output, view: str = "lint", sources=No
         notes.writelines(line + "\n" for line in library_lines(results))
     if results:  # nothing was read: the one-line reasons already said why
         notes.write(summary_line(results) + "\n")
+        fixable = fixable_line(results) if view in ("check", "lint") else None
+        if fixable is not None:
+            notes.write(fixable + "\n")

@@ -10,7 +10,7 @@ from typing import NamedTuple
 from lxml import etree
 
 from ..model import massprops
-from ..model.inertia import implied
+from ..model.inertia import implied, suggested
 from ..model.load import Loaded
 from ..model.massprops import Matrix, number
 from ..model.numbers import NumberError, parse_double, parse_vector
@@ -26,20 +26,16 @@ def suggestion(loaded: Loaded, entry: LinkReport, density: float | None = None) 
     uniform body its geometry makes, said to be an estimate, never a correction; an XML
     comment saying why when the geometry cannot tell."""
     link = entry.link
-    found = implied(loaded, link, density)
-    if found.body is None:
-        why = found.source if link.inertial is not None or density else "it declares no mass (give --density)"
-        return f"<!-- link '{link.name}': no suggestion: {why} -->"
-    rpy = link.inertial.origin.rpy if link.inertial is not None else (0.0, 0.0, 0.0)
-    tensor = massprops.tidy(massprops.rotate(found.body.tensor, massprops.transpose(massprops.rotation(rpy))))
-    values = massprops.as_dict(tensor)
+    found = suggested(loaded, link, density)
+    if isinstance(found, str):
+        return f"<!-- link '{link.name}': no suggestion: {found} -->"
     return "\n".join(
         [
             f"<!-- link '{link.name}': a uniform body filling its {found.source} (an estimate: the part's CAD values are better) -->",
             "<inertial>",
-            f'  <origin xyz="{" ".join(map(number, found.body.com))}" rpy="{" ".join(map(number, rpy))}"/>',
-            f'  <mass value="{number(found.body.mass)}"/>',
-            "  <inertia " + " ".join(f'{k}="{number(values[k])}"' for k in massprops.KEYS) + "/>",
+            f'  <origin xyz="{" ".join(map(number, found.xyz))}" rpy="{" ".join(map(number, found.rpy))}"/>',
+            f'  <mass value="{number(found.mass)}"/>',
+            "  <inertia " + " ".join(f'{k}="{number(found.tensor[k])}"' for k in massprops.KEYS) + "/>",
             "</inertial>",
         ]
     )

@@ -6,7 +6,7 @@ from __future__ import annotations
 from collections.abc import Iterable
 from typing import TYPE_CHECKING
 
-from ..diagnostics import Diagnostic, Severity
+from ..diagnostics import Diagnostic, Fix, Severity
 from ..read.positions import Sources
 from .console import Line
 from .escape import escape
@@ -79,12 +79,23 @@ def excerpt_lines(diagnostic: Diagnostic, sources: Sources, width: int = 160) ->
     return lines
 
 
+def fix_line(diagnostic: Diagnostic) -> str | None:
+    """``fix: TITLE``, ``fix (unsafe): TITLE`` or ``no fix: WHY``, for a diagnostic with a fix."""
+    fix = diagnostic.fix
+    if fix is None:
+        return None
+    if fix.available:
+        return escape(f"    fix{'' if fix.safe else ' (unsafe)'}: {fix.title}")
+    return escape(f"    no fix: {fix.reason}") if fix.reason else None
+
+
 def details(diagnostic: Diagnostic, sources: Sources | None) -> list[str]:
-    """The lines under a diagnostic: its macro calls, its hint, its source excerpt."""
+    """The lines under a diagnostic: its macro calls, its hint, its fix, its source excerpt."""
     hint = ["    hint: " + escape(diagnostic.hint)] if diagnostic.hint else []
     through = ["    note: " + escape(diagnostic.through)] if diagnostic.through else []
+    fix = [line] if (line := fix_line(diagnostic)) is not None else []
     excerpt = excerpt_lines(diagnostic, sources) if sources is not None else []
-    return trace_notes(diagnostic) + through + hint + excerpt
+    return trace_notes(diagnostic) + through + hint + fix + excerpt
 
 
 def library_lines(results: list[Result]) -> list[str]:
@@ -138,7 +149,39 @@ def diagnostic_lines(diagnostic: Diagnostic, sources: Sources | None) -> list[Li
     return [first, *([(line, "dim")] for line in details(diagnostic, sources))]
 
 
-def diagnostic_dict(diagnostic: Diagnostic) -> dict:
+def fixable_line(results: list[Result]) -> str | None:
+    """``[*] 3 fixable with --fix (2 more with --unsafe-fixes)``, when any is."""
+    safe = unsafe = 0
+    for result in results:
+        for diagnostic in result.diagnostics:
+            fix = diagnostic.fix
+            if fix is not None and fix.available:
+                safe, unsafe = (safe + 1, unsafe) if fix.safe else (safe, unsafe + 1)
+    if not safe and not unsafe:
+        return None
+    if not safe:
+        return f"{unsafe} fix{'' if unsafe == 1 else 'es'} available with --fix --unsafe-fixes"
+    return f"{safe} fixable with --fix" + (f" ({unsafe} more with --unsafe-fixes)" if unsafe else "")
+
+
+def fix_dict(fix: Fix | None, sources: Sources | None = None) -> dict | None:
+    """A diagnostic's fix as JSON: its title and safety, and its edits (each file with
+    offsets in its text read with ``\\n`` line ends, and lines and columns, 1-based,
+    where the text is at hand) or why there are none."""
+    if fix is None:
+        return None
+    edits = []
+    for edit in fix.edits if fix.available else ():
+        entry = {"path": edit.file, "start_offset": edit.start, "end_offset": edit.end, "content": edit.text}
+        source = sources.source(edit.file) if sources is not None else None
+        if source is not None:
+            entry["start"] = dict(zip(("line", "column"), source.position(edit.start)))
+            entry["end"] = dict(zip(("line", "column"), source.position(edit.end)))
+        edits.append(entry)
+    return {"title": fix.title, "applicability": fix.applicability.value, "available": fix.available, "edits": edits, "reason": fix.reason}
+
+
+def diagnostic_dict(diagnostic: Diagnostic, sources: Sources | None = None) -> dict:
     """A diagnostic as the JSON formats give it (SPEC section 4)."""
     return {
         "code": diagnostic.code,
@@ -154,4 +197,5 @@ def diagnostic_dict(diagnostic: Diagnostic) -> dict:
             {"path": call.file, "line": call.line, "column": call.column, "macro": call.macro}
             for call in diagnostic.location.trace
         ],
+        "fix": fix_dict(diagnostic.fix, sources),
     }

@@ -5,7 +5,7 @@ from __future__ import annotations
 import json
 import re
 
-from ..rules import Rule, RuleSet
+from ..rules import PLACED, Remedy, Rule, RuleSet
 from ..version import __version__
 
 PREFIXES = {
@@ -44,7 +44,21 @@ def facts(rule: Rule) -> str:
         parts[1:2] = [f"runs with --target {rule.consumer}" + (f" (examples: --target {rule.target})" if rule.target != rule.consumer else "")]
     if rule.urdfdom:
         parts.append("check_urdf rejects it too")
+    fix = rule.fixable
+    if fix is not None:
+        parts.append("fixable with --fix (safe)" if fix.value == "safe" else "fixable with --fix --unsafe-fixes (unsafe)")
     return "; ".join(parts)
+
+
+def fix_markdown(rule: Rule) -> str:
+    """The ``## Fix`` section: what the fix does, how safe it is, and when there is none."""
+    fix = rule.fixable
+    if fix is None:
+        return ""
+    safety = "`--fix` applies it." if fix.value == "safe" else "Unsafe: `--fix --unsafe-fixes` applies it, and the editor offers it."
+    what = rule.fix_doc or (rule.remedy is Remedy.INERTIAL and "Writes the tensor and centre of mass of a uniform body filling the link's "
+                            f"collision geometry (else its visual geometry), its mass kept: `urdfcli inertia --suggest`'s values (unsafe: the dynamics change). {PLACED}") or ""
+    return f"## Fix\n\n{what} {safety}"
 
 
 def options_markdown(rule: Rule) -> str:
@@ -59,7 +73,7 @@ def options_markdown(rule: Rule) -> str:
 
 def page(rule: Rule, level: int = 1) -> str:
     """A rule's documentation as Markdown, headed ``CODE name`` at ``level``, its sections one below."""
-    sections = "\n\n".join(part for part in (rule.doc, options_markdown(rule)) if part)
+    sections = "\n\n".join(part for part in (rule.doc, options_markdown(rule), fix_markdown(rule)) if part)
     sections = re.sub(r"^## ", "#" * (level + 1) + " ", sections, flags=re.MULTILINE)
     return f"{'#' * level} {rule.code} {rule.name}\n\n{rule.summary}\n\n*{facts(rule)}*\n\n{sections}\n"
 
@@ -77,6 +91,7 @@ def as_json(rules: list[Rule]) -> str:
                 "in_check": in_check(r),
                 "urdfdom": r.urdfdom,
                 "target": r.target,
+                "fix": r.fixable.value if r.fixable is not None else None,
                 "summary": r.summary,
                 "options": [{"name": o.name, "type": o.kind, "default": o.default, "doc": o.doc} for o in r.options],
                 "doc": r.doc,
@@ -97,13 +112,14 @@ def markdown(rules: list[Rule]) -> str:
         "`urdfcli rule CODE` prints one rule. Select and ignore rules by code or prefix (see the README's",
         '"Configuration"); silence one occurrence with `<!-- urdfcli: noqa: CODE -->`.',
         "",
-        "| Code | Name | Severity | Default | Summary |",
-        "| --- | --- | --- | --- | --- |",
+        "| Code | Name | Severity | Default | Fix | Summary |",
+        "| --- | --- | --- | --- | --- | --- |",
     ]
     rules = ordered(rules)
     for rule in rules:
         summary = rule.summary.replace("|", "\\|")
-        lines.append(f"| [{rule.code}](#{rule.code.lower()}-{rule.name}) | {rule.name} | {rule.severity.value} | {'on' if rule.default else 'off'} | {summary} |")
+        fix = rule.fixable.value if rule.fixable is not None else ""
+        lines.append(f"| [{rule.code}](#{rule.code.lower()}-{rule.name}) | {rule.name} | {rule.severity.value} | {'on' if rule.default else 'off'} | {fix} | {summary} |")
     prefix = None
     for rule in rules:
         if rule.code[0] != prefix:

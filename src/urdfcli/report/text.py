@@ -16,7 +16,7 @@ from ..read.positions import Sources
 from .check_urdf import tree_lines
 from .console import Line, Output, console, write
 from .escape import escape
-from .lines import diagnostic_lines, library_lines, summary_line
+from .lines import diagnostic_lines, fixable_line, library_lines, summary_line
 
 if TYPE_CHECKING:
     from .result import Result
@@ -41,7 +41,8 @@ def tree_text(result: Result) -> list[Line]:
 
 def report(results: list[Result], output: Output, view: str = "lint", sources: Sources | None = None) -> None:
     """``check``: each model's tree on standard output, diagnostics on standard error;
-    ``lint``: everything on standard output; ``inertia``: the audit."""
+    ``lint`` (and ``drift``): everything on standard output, and for check and lint what
+    ``--fix`` would fix; ``inertia``: the audit."""
     if view == "inertia":
         from .inertia import report as audit_report
 
@@ -59,6 +60,9 @@ def report(results: list[Result], output: Output, view: str = "lint", sources: S
         write(err, ([(line, "dim")] for line in library_lines(results)))
     if results:
         write(err, [[(summary_line(results), "bold")]])
+        fixable = fixable_line(results) if view in ("check", "lint") else None
+        if fixable is not None:
+            write(err, [[(fixable, "")]])
 
 
 def plain_report(results: list[Result], sources: Sources | None = None) -> str:

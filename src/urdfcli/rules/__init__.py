@@ -10,7 +10,7 @@ from types import MappingProxyType, ModuleType
 
 from ..diagnostics import Severity
 from . import description, drift, inertia, joints, meshes, packages, physics, structure, style, suppression, targets, tree, xacro
-from .base import SECTIONS, Given, Kind, Option, Remedy, Rule, RuleSet, UnknownRule, cleandoc, example_code, explain, sections
+from .base import PLACED, SECTIONS, Given, Kind, Option, Remedy, Rule, RuleSet, UnknownRule, cleandoc, example_code, explain, sections
 from .suggestions import close_matches
 
 MODULES = (structure, tree, joints, physics, description, meshes, style, inertia, suppression, xacro, drift, packages, *targets.MODULES)
@@ -65,6 +65,6 @@ def severity_of(code: str) -> Severity:
 
 
 __all__ = [
-    "MODULES", "REGISTRY", "SECTIONS", "Given", "Kind", "Option", "Remedy", "Rule", "RuleSet", "UnknownRule", "cleandoc", "example_code", "explain",
+    "MODULES", "PLACED", "REGISTRY", "SECTIONS", "Given", "Kind", "Option", "Remedy", "Rule", "RuleSet", "UnknownRule", "cleandoc", "example_code", "explain",
     "lookup", "rule", "sections", "severity_of",
 ]

@@ -20,7 +20,7 @@ from inspect import cleandoc
 from types import MappingProxyType
 from typing import TYPE_CHECKING, Any, NamedTuple
 
-from ..diagnostics import Severity
+from ..diagnostics import Applicability, Severity
 from .suggestions import close_matches
 
 if TYPE_CHECKING:
@@ -29,7 +29,12 @@ if TYPE_CHECKING:
     from ..model.targets import Profile
 
 ERROR, WARNING, INFO = Severity.ERROR, Severity.WARNING, Severity.INFO
+SAFE, UNSAFE = Applicability.SAFE, Applicability.UNSAFE
 SECTIONS = ("What it does", "Why is this bad?", "Example", "Use instead")
+# what every fix that changes a value of the model says of where it writes it (see urdfcli.model.written)
+PLACED = ("The value is written where it was written, through includes and macro bodies; one computed by an expression, "
+          "or given by a xacro argument or by a macro parameter whose calls cannot all be edited alike, is left alone, "
+          "and the diagnostic says where it comes from.")
 
 
 class RuleSet(Enum):
@@ -132,6 +137,13 @@ class Rule(NamedTuple):
     options: tuple[Option, ...] = ()
     function: Function | None = None
     target: str | None = None  # a target rule's consumer (``mujoco``), or the profile its examples use (``pinocchio:mimic``)
+    fix: Applicability | None = None  # how safe its fix is, where its diagnostics carry one
+    fix_doc: str = ""  # what the fix does, and when there is none
+
+    @property
+    def fixable(self) -> Applicability | None:
+        """How safe the rule's fix is (None: it has none)."""
+        return self.fix
 
     @property
     def consumer(self) -> str | None:

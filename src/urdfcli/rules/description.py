@@ -5,11 +5,12 @@ from __future__ import annotations
 import os
 import re
 
+from ..diagnostics import Fix, SetAttribute
 from ..model.kinematics import bodies
 from ..model.meshes import input_folder, near_misses, resolved_resources, uri_style
 from ..model.vocabulary import SCHEMA
 from ..read.packages import cmake_project
-from .base import ERROR, INFO, WARNING, Kind, RuleSet, check
+from .base import ERROR, INFO, PLACED, SAFE, WARNING, Kind, RuleSet, check
 from .meshes import others_there
 from .suggestions import close_matches
 
@@ -283,7 +284,8 @@ def _package_of(uri: str) -> str | None:
     return match.group(1) if match else None
 
 
-@check("D004", "resource-not-found", ERROR, "A mesh or texture file that does not exist.", kind=Kind.FILES)
+@check("D004", "resource-not-found", ERROR, "A mesh or texture file that does not exist.", kind=Kind.FILES, fix=SAFE,
+       fix_doc="Names the file of its folder that differs only in case or extension, where the name was written (safe: the file meant is the one loaded on macOS and Windows)." f" {PLACED}")
 def file_not_found(loaded, given):
     """## What it does
     Resolves each `<mesh filename>` and `<texture filename>` (`package://`,
@@ -327,6 +329,7 @@ def file_not_found(loaded, given):
             continue
         looked = f" (looked for {path})" if str(path) != uri else ""
         found = loaded.diagnostic("D004", f"{kind} '{uri}' not found{looked}", at, _meant(loaded, uri, path, base) or "file names are case-sensitive")
+        found = found.with_fix(_file_fix(loaded, at, uri, path, base))
         yield found.with_severity(WARNING) if kind == "texture" else found
     for folder, uses in missing_folders.items():  # a missing folder is one cause: one diagnostic
         at, kind, uri, path = uses[0]
@@ -347,6 +350,17 @@ def _meant(loaded, uri: str, path, base) -> str | None:
     if found[0].parent == path.parent and found[0].name.lower() == path.name.lower():
         return f"did you mean '{written}'? file names are case-sensitive on Linux (it loads on macOS and Windows only)"
     return f"did you mean '{written}'?"
+
+
+def _file_fix(loaded, at: int, uri: str, path, base) -> Fix:
+    """Name the one file of the missing file's folder that differs only in case or extension."""
+    same = [p for p in near_misses(path) if p.parent == path.parent]
+    title = f"name the file that exists instead of '{path.name}'"
+    if len(same) != 1:
+        why = "no file of its folder differs from it only in case or extension" if not same else f"{len(same)} files of its folder could be meant"
+        return Fix(title, SAFE, reason=why)
+    written = uri[: len(uri) - len(path.name)] + same[0].name if uri.endswith(path.name) else uri_like(loaded, uri, same[0], base)
+    return Fix(f"write '{written}'", SAFE, changes=(SetAttribute(at, "filename", written),))
 
 
 def uri_like(loaded, uri: str, path, base) -> str:

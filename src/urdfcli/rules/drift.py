@@ -4,7 +4,7 @@ The comparison is :mod:`urdfcli.model.compare`'s; the source is found and expand
 by :mod:`urdfcli.project.drift`, for ``check`` and ``lint`` alike.
 """
 
-from ..diagnostics import Severity
+from ..diagnostics import Applicability, Severity
 from .base import declare, explain
 
 X110 = declare(
@@ -26,4 +26,8 @@ X110 = declare(
         '<!-- regenerated: xacro kr16_2.xacro -o kr16_2.urdf -->\n<robot name="kuka_kr16_2">\n  <link name="link_6"/>\n'
         '  <link name="flange"/>\n  <joint name="joint_a6-flange" type="fixed">\n    <parent link="link_6"/>\n'
         '    <child link="flange"/>\n  </joint>\n</robot>'),
+    fix=Applicability.SAFE,
+    fix_doc="Writes the URDF again from the source's expansion, everything before `<robot` (the XML declaration, xacro's "
+    "banner, comments) kept: the URDF says it is made from that source, and is then made as xacro makes it. When the "
+    "difference may come from xacro arguments, whose values are not known, there is no fix.",
 )

@@ -10,12 +10,13 @@ import math
 from collections import defaultdict
 from typing import TYPE_CHECKING, NamedTuple
 
+from ..diagnostics import Fix
 from ..model import inertia as model
 from ..model import massprops
 from ..model.inertia import OVERREACH, assess, axes_apart, declared_body, reach
 from ..model.massprops import number, tensor_text
 from ..model.numbers import format_number
-from .base import INFO, WARNING, Kind, Option, Remedy, RuleSet, check
+from .base import INFO, UNSAFE, WARNING, Kind, Option, Remedy, RuleSet, check
 from .physics import absorbed, has_invalid_tensor
 
 if TYPE_CHECKING:
@@ -59,7 +60,7 @@ def _implies(found) -> str | None:
     return f"its {found.implied.source} implies {tensor_text(found.expected)}" if found and found.expected else None
 
 
-@check("I007", "placeholder-identity", WARNING, "An inertia tensor that is the identity: a placeholder.", rule_set=RuleSet.LINT, options=(TOLERANCE,), kind=Kind.MASS, remedy=Remedy.INERTIAL)
+@check("I007", "placeholder-identity", WARNING, "An inertia tensor that is the identity: a placeholder.", rule_set=RuleSet.LINT, options=(TOLERANCE,), kind=Kind.MASS, remedy=Remedy.INERTIAL, fix=UNSAFE)
 def placeholder_identity(loaded, given):
     """## What it does
     Flags ``ixx=iyy=izz=1`` without products of inertia, unless the link's geometry really
@@ -123,7 +124,7 @@ def identity_links(loaded, options) -> list:
     return found
 
 
-@check("I008", "placeholder-repeated", WARNING, "The same inertia tensor on links of very different sizes.", rule_set=RuleSet.LINT, options=(TOLERANCE,), kind=Kind.MASS, remedy=Remedy.INERTIAL)
+@check("I008", "placeholder-repeated", WARNING, "The same inertia tensor on links of very different sizes.", rule_set=RuleSet.LINT, options=(TOLERANCE,), kind=Kind.MASS, remedy=Remedy.INERTIAL, fix=UNSAFE)
 def placeholder_repeated(loaded, given):
     """## What it does
     Flags a tensor repeated on links whose masses or geometries differ by more than a
@@ -303,10 +304,14 @@ def copies_differ_in_mass(loaded, given):
             light.inertial.mass_at,
             "give copies of one part one mass (a decimal point out of place?), or each part its own shapes and tensor",
             subjects=(light.name, heavy.name),
-        )
+        ).with_fix(_NO_MASS_FIX)
 
 
-@check("I009", "inertia-geometry-mismatch", WARNING, "A declared inertia tensor that the link's geometry proves wrong.", rule_set=RuleSet.LINT, options=(TOLERANCE, DENSITY), kind=Kind.MASS, remedy=Remedy.INERTIAL)
+# a tensor from the geometry would fit the mass as written, right or wrong: only the part knows its mass
+_NO_MASS_FIX = Fix("give each copy its mass", UNSAFE, reason="which mass is right only the part's CAD or datasheet knows")
+
+
+@check("I009", "inertia-geometry-mismatch", WARNING, "A declared inertia tensor that the link's geometry proves wrong.", rule_set=RuleSet.LINT, options=(TOLERANCE, DENSITY), kind=Kind.MASS, remedy=Remedy.INERTIAL, fix=UNSAFE)
 def geometry_mismatch(loaded, given):
     """## What it does
     Flags a declared tensor only when the link's geometry proves it wrong, in one of three ways:
@@ -398,7 +403,7 @@ def _rotated_with_shapes(loaded, link, options):
     return found, rotated
 
 
-@check("I010", "inertia-frame-rotated", WARNING, "An inertia tensor not rotated with the geometry it was computed for.", rule_set=RuleSet.LINT, options=(TOLERANCE, DENSITY), kind=Kind.MASS, remedy=Remedy.INERTIAL)
+@check("I010", "inertia-frame-rotated", WARNING, "An inertia tensor not rotated with the geometry it was computed for.", rule_set=RuleSet.LINT, options=(TOLERANCE, DENSITY), kind=Kind.MASS, remedy=Remedy.INERTIAL, fix=UNSAFE)
 def frame_rotated(loaded, given):
     """## What it does
     Flags a tensor that is more than ``tolerance`` (0.1) off its geometry's, but fits

@@ -4,12 +4,16 @@ from __future__ import annotations
 
 import math
 
+from ..diagnostics import Fix, SetAttribute
 from ..model.numbers import format_number
 from ..model.robot import MOVING_AXIS_TYPES
-from .base import ERROR, INFO, WARNING, RuleSet, check
+from .base import ERROR, INFO, PLACED, UNSAFE, WARNING, RuleSet, check
 
 FULL_TURN = 2 * math.pi - 1e-3  # a range written as -3.1416..3.1416 is a full turn
 UNIT_TOLERANCE = 1e-3  # an axis this close to length 1 is a unit axis written with few decimals
+# two turns: a multi-turn wrist reaches +-720 degrees (4 pi); an angle written in degrees is beyond it from 13 degrees on
+TWO_TURNS = 4 * math.pi + 1e-3
+_NO_LIMIT_FIX = Fix("give the actuator's limits", UNSAFE, reason="no value is known: only the actuator's datasheet has its effort and speed")
 
 
 @check("J007", "zero-axis", ERROR, "A moving joint whose axis is the zero vector.")
@@ -130,7 +134,8 @@ def mimic_self(loaded, given):
             yield loaded.diagnostic("J009", f"joint '{joint.name}' mimics itself", joint.part("mimic"))
 
 
-@check("J010", "limit-lower-above-upper", WARNING, "A joint limit whose lower bound is above its upper bound.")
+@check("J010", "limit-lower-above-upper", WARNING, "A joint limit whose lower bound is above its upper bound.", fix=UNSAFE,
+       fix_doc="Swaps the two values where they were written (unsafe: the joint's range changes)." f" {PLACED}")
 def lower_above_upper(loaded, given):
     """## What it does
     Flags a revolute or prismatic joint whose `lower` limit is above its `upper` limit.
@@ -164,12 +169,16 @@ def lower_above_upper(loaded, given):
     for joint in loaded.robot.joints.values():
         limit = joint.limit
         if joint.type in ("revolute", "prismatic") and limit and limit.lower > limit.upper:
+            at = joint.part("limit")
+            lower, upper = loaded.value(at, "lower"), loaded.value(at, "upper")
+            changes = (SetAttribute(at, "lower", upper), SetAttribute(at, "upper", lower)) if lower and upper else ()
             yield loaded.diagnostic(
                 "J010",
                 f"joint '{joint.name}' has lower {format_number(limit.lower)} > upper {format_number(limit.upper)}",
-                joint.part("limit"),
+                at,
                 hint="swap lower and upper",
-            )
+                subjects=(joint.name,),
+            ).with_fix(Fix(f"swap lower and upper of joint '{joint.name}'", UNSAFE, changes=changes, reason=None if changes else "the limits are not written"))
 
 
 @check("J011", "axis-not-unit", WARNING, "A joint axis that is not a unit vector.", rule_set=RuleSet.LINT)
@@ -367,11 +376,11 @@ def effort_velocity_zero(loaded, given):
             message = (f"joint '{joint.name}' has {bad}: a controller that honours its limits (ros2_control's limiter, "
                        f"MoveIt, Gazebo's motor) commands it {_nothing(values)}, so it cannot move it")
             yield loaded.diagnostic("J014", message, joint.part("limit"), "give the actuator's real effort and velocity limits (the datasheet's peak torque or force, and speed)",
-                                    subjects=(joint.name,))
+                                    subjects=(joint.name,)).with_fix(_NO_LIMIT_FIX)
         else:
             message = f"joint '{joint.name}' has {bad}: no transmission or ros2_control drives it, so it is taken as passive (no actuator)"
             yield loaded.diagnostic("J014", message, joint.part("limit"), "if an actuator drives it, give its real effort and velocity limits",
-                                    subjects=(joint.name,))._replace(severity=INFO)
+                                    subjects=(joint.name,))._replace(severity=INFO).with_fix(_NO_LIMIT_FIX)
 
 
 def _nothing(values) -> str:
@@ -436,3 +445,57 @@ def soft_limits_outside_limits(loaded, given):
                 "J015", f"joint '{joint.name}': {' and '.join(outside)}, so the safety controller never acts before the hard stop",
                 joint.part("safety_controller"), "put the soft limits at or inside the <limit> range", subjects=(joint.name,),
             )
+
+
+@check("J016", "limit-in-degrees", WARNING, "A revolute joint's limit written in degrees.", rule_set=RuleSet.LINT, fix=UNSAFE,
+       fix_doc="Writes each limit beyond two turns in radians, where it was written (unsafe: the joint's range changes)." f" {PLACED}")
+def limit_in_degrees(loaded, given):
+    """## What it does
+    Flags a revolute joint whose `lower` or `upper` limit is beyond two turns
+    (4 pi, 720 degrees): such a number is degrees where URDF takes radians
+    (`upper="90"`). Multi-turn wrists reach +-720 degrees (4 pi) at most, and
+    are left alone; a limit of 12 degrees or less written in degrees cannot be
+    told from radians and is left alone too, and so is a number beyond 720,
+    which is no angle in degrees (`1e16`: a limit that means none).
+
+    ## Why is this bad?
+    `upper="90"` lets the joint turn 90 radians, about 14 turns: planners and
+    simulators take the joint as free, and the real joint hits its stop.
+
+    ## Example
+    ```xml
+    <link name="base_link"/>
+    <link name="arm_link"/>
+    <joint name="arm_joint" type="revolute">
+      <parent link="base_link"/>
+      <child link="arm_link"/>
+      <limit lower="-90" upper="90" effort="10" velocity="1"/>
+    </joint>
+    ```
+
+    ## Use instead
+    ```xml
+    <link name="base_link"/>
+    <link name="arm_link"/>
+    <joint name="arm_joint" type="revolute">
+      <parent link="base_link"/>
+      <child link="arm_link"/>
+      <limit lower="-1.570796" upper="1.570796" effort="10" velocity="1"/>
+    </joint>
+    ```
+    """
+    for joint in loaded.robot.joints.values():
+        limit = joint.limit
+        if joint.type != "revolute" or limit is None:
+            continue
+        beyond = [(name, value) for name, value, given in (("lower", limit.lower, limit.has_lower), ("upper", limit.upper, limit.has_upper))
+                  if given and TWO_TURNS < abs(value) <= 720]
+        if not beyond:
+            continue
+        at = joint.part("limit")
+        radians = {name: format_number(round(math.radians(value), 6)) for name, value in beyond}
+        written = " and ".join(f"{name}={format_number(value)}" for name, value in beyond)
+        yield loaded.diagnostic(
+            "J016", f"joint '{joint.name}' has {written}: beyond two turns, degrees where URDF takes radians", at,
+            "in radians: " + " ".join(f'{name}="{value}"' for name, value in radians.items()), subjects=(joint.name,),
+        ).with_fix(Fix(f"write the limits of joint '{joint.name}' in radians", UNSAFE, changes=tuple(SetAttribute(at, name, value) for name, value in radians.items())))

@@ -11,13 +11,14 @@ import math
 from collections import defaultdict
 from pathlib import Path
 
+from ..diagnostics import Fix, SetAttribute
 from ..model import massprops
 from ..model.inertia import shape_bounds
 from ..model.kinematics import bodies
 from ..model.meshes import GeometryUnknown, MeshUse, mesh_uses, resolved_resources, stat_problem, summary_of, uri_style
 from ..model.poses import body_poses
 from ..model.units import PLACEHOLDER, mis_scaled, unit_verdict
-from .base import ERROR, INFO, WARNING, Kind, RuleSet, check
+from .base import ERROR, INFO, PLACED, SAFE, UNSAFE, WARNING, Kind, RuleSet, check
 
 HINTS = {
     "lfs": "fetch the LFS files: `git lfs install && git lfs pull` (in CI, check out with LFS, e.g. actions/checkout's `lfs: true`)",
@@ -95,7 +96,8 @@ def _problem(loaded, use: MeshUse, path: Path):
     return summary_of(loaded, use).problem
 
 
-@check("F002", "mesh-path-not-portable", WARNING, "A mesh or texture named by an absolute, `file://` or relative path instead of `package://`.", rule_set=RuleSet.LINT)
+@check("F002", "mesh-path-not-portable", WARNING, "A mesh or texture named by an absolute, `file://` or relative path instead of `package://`.", rule_set=RuleSet.LINT, fix=SAFE, fix_doc="Writes the `package://` URI of each file named by a `file://` URI or an absolute path, when the file is in a package "
+       "(safe: the same file is loaded). A relative path is left: MuJoCo, PyBullet and Drake read it, and not `package://`." f" {PLACED}")
 def path_not_portable(loaded, given):
     """## What it does
     Flags a `<mesh filename>` or `<texture filename>` that names an existing file by
@@ -141,7 +143,20 @@ def path_not_portable(loaded, given):
             message = f"{kind} '{uri}'{extra}: a file:// URI works on this machine only"
         else:
             message = f"{kind} '{uri}'{extra}: an absolute path works on this machine only, and RViz reads only package:// and file:// URIs"
-        yield loaded.diagnostic("F002", message, at, fix)
+        yield loaded.diagnostic("F002", message, at, fix).with_fix(_portable_fix(loaded, style, found))
+
+
+def _portable_fix(loaded, style: str, found) -> Fix:
+    if style == "relative":
+        return Fix("write package:// URIs", SAFE, reason="a relative path is what MuJoCo, PyBullet and Drake read: write package:// by hand if the model is for ROS")
+    changes = []
+    for at, _, _, path in found:
+        portable = _package_uri(loaded, path)
+        if portable is None:
+            return Fix("write package:// URIs", SAFE, reason=f"{path} is in no ROS package (no package.xml in a folder above it)")
+        changes.append(SetAttribute(at, "filename", portable))
+    title = f"write {changes[0].value}" + (f" and {len(changes) - 1} more package:// URI{'s' if len(changes) > 2 else ''}" if len(changes) > 1 else "")
+    return Fix(title, SAFE, changes=tuple(changes))
 
 
 def _package_uri(loaded, path: Path) -> str | None:
@@ -152,7 +167,7 @@ def _package_uri(loaded, path: Path) -> str | None:
     return f"package://{name}/{path.resolve().relative_to(folder).as_posix()}" if name else None
 
 
-@check("F003", "mesh-units", WARNING, "A mesh in millimetres, centimetres or inches used as if in metres (or scaled down twice).", rule_set=RuleSet.LINT)
+@check("F003", "mesh-units", WARNING, "A mesh in millimetres, centimetres or inches used as if in metres (or scaled down twice).", rule_set=RuleSet.LINT, fix=UNSAFE, fix_doc="Writes the mesh's `scale` that makes it metres, where the mesh was written (unsafe: the shape's size changes)." f" {PLACED}")
 def mesh_units(loaded, given):
     """## What it does
     Flags a mesh whose size, after its `scale` and COLLADA's `<unit meter>` (which
@@ -220,7 +235,9 @@ def mesh_units(loaded, given):
         else:
             message = f"mesh '{use.name}' is {1 / verdict.factor:.4g} times too small: {verdict.size:.3g} m across on {verdict.evidence}{_others(group)}"
             hint = f'its scale or <unit> converts from {verdict.unit} a mesh already in metres: make its scale "{scale}"'
-        yield loaded.diagnostic("F003", message, use.shape.geometry.at, hint, subjects=tuple(dict.fromkeys(u.link.name for u, _ in group)))
+        changes = tuple(dict.fromkeys(SetAttribute(u.shape.geometry.at, "scale", scale) for u, _ in group))
+        fix = Fix(f'write scale="{scale}" on the mesh' + (f" ({len(changes)} uses)" if len(changes) > 1 else ""), UNSAFE, changes=changes)
+        yield loaded.diagnostic("F003", message, use.shape.geometry.at, hint, subjects=tuple(dict.fromkeys(u.link.name for u, _ in group))).with_fix(fix)
 
 
 SIZE_RATIO = 2.5  # bounding-box diagonals this many times apart: not a simplification

@@ -7,10 +7,10 @@ import re
 from collections.abc import Callable, Iterator
 from pathlib import Path
 
-from ..diagnostics import Diagnostic, Location
+from ..diagnostics import Diagnostic, Edit, Fix, Location
 from ..model.sources import chain, parameters
 from ..read.xacro_scan import shown
-from .base import WARNING, Kind, RuleSet, check
+from .base import SAFE, WARNING, Kind, RuleSet, check
 
 # what to declare for a package used at build time (an included file, a YAML file read
 # while expanding) and for one used at run time (a mesh, a texture, a parameter file)
@@ -64,7 +64,8 @@ def _at(file, place) -> Location:
     return Location(file.name, line, column)
 
 
-@check("P001", "package-dependency-undeclared", WARNING, "A file uses a package that its package.xml does not declare.", kind=Kind.SOURCES, rule_set=RuleSet.LINT)
+@check("P001", "package-dependency-undeclared", WARNING, "A file uses a package that its package.xml does not declare.", kind=Kind.SOURCES, rule_set=RuleSet.LINT, fix=SAFE, fix_doc="Adds the dependency to package.xml, after its last dependency of the same kind and in its indentation "
+       "(safe: a declaration; format 1 manifests get `run_depend`, and `build_depend` too for a file read while expanding).")
 def dependency_undeclared(loaded, given) -> Iterator[Diagnostic]:
     """## What it does
     For each file of the model that belongs to a package (a `package.xml` in
@@ -124,12 +125,65 @@ def dependency_undeclared(loaded, given) -> Iterator[Diagnostic]:
         if folder is None or folder.resolve() == owner:
             continue  # a package that cannot be found (X004 or D005 say so), or its own under another name (-P NAME=DIR)
         more = f" (and {others} more use{'s' if others > 1 else ''} in this file)" if others else ""
+        name = shown(owner / "package.xml")
         yield Diagnostic(
             "P001",
             f"package '{package}' is used here{more} but {manifest.name}'s package.xml does not declare it",
             where(),
-            hint=f"add <{kind}>{package}</{kind}> to {shown(owner / 'package.xml')}: rosdep installs only declared dependencies",
+            hint=f"add <{kind}>{package}</{kind}> to {name}: rosdep installs only declared dependencies",
+            fix=declaration(loaded.document.sources.source(name), name, package, kind),
         )
+
+
+_ELEMENT = re.compile(r"<(\w+)(?:\s[^>]*)?>[^<]*</\1\s*>|<(\w+)(?:\s[^>]*)?/>")
+_FORMAT = re.compile(r"""<package\b[^>]*\bformat\s*=\s*["'](\d+)["']""")
+_ALL_KINDS = ("depend", "exec_depend", "build_depend", "build_export_depend", "run_depend", "test_depend", "buildtool_depend", "buildtool_export_depend", "doc_depend")
+
+
+def declaration(source, name: str, package: str, kind: str) -> Fix:
+    """The edit that declares ``package`` in the package.xml ``source`` (named ``name``):
+    after the last dependency of the same kind, else after the last dependency of
+    any kind, else before ``<export>`` or ``</package>``, in the indentation there."""
+    title = f"add <{kind}>{package}</{kind}> to {name}"
+    if source is None:
+        return Fix(title, SAFE, reason=f"{name} cannot be read")
+    text = source.text
+    version = _FORMAT.search(text)
+    tags = [kind] if version is not None and version.group(1) != "1" else ["build_depend", "run_depend"] if kind == BUILD else ["run_depend"]
+    elements = [(m.group(1) or m.group(2), m) for m in _ELEMENT.finditer(text) if not _in_comment(text, m.start())]
+    edits = []
+    for tag in tags:
+        same = [m for found, m in elements if found == tag]
+        any_kind = [m for found, m in elements if found in _ALL_KINDS]
+        anchor = (same or any_kind or [None])[-1]
+        markup = f"<{tag}>{package}</{tag}>"
+        if anchor is not None:
+            line_end = text.find("\n", anchor.end())
+            at = len(text) if line_end < 0 else line_end
+            edits.append(Edit(name, at, at, "\n" + _indentation(text, anchor.start()) + markup))
+            continue
+        before = re.search(r"<export\b|</package\s*>", text)
+        if before is None:
+            return Fix(title, SAFE, reason=f"{name} has no </package> to write it before")
+        line_start = text.rfind("\n", 0, before.start()) + 1
+        own = _indentation(text, before.start())
+        indent = own + "  " if text[before.start():before.start() + 2] == "</" else own
+        if text[line_start:before.start()].strip():
+            edits.append(Edit(name, before.start(), before.start(), markup + "\n" + own))
+        else:
+            edits.append(Edit(name, line_start, line_start, indent + markup + "\n"))
+    return Fix(title if tags == [kind] else f"add {' and '.join(f'<{t}>{package}</{t}>' for t in tags)} to {name}", SAFE, edits=tuple(edits))
+
+
+def _in_comment(text: str, at: int) -> bool:
+    opened = text.rfind("<!--", 0, at)
+    return opened >= 0 and text.find("-->", opened, at) < 0
+
+
+def _indentation(text: str, at: int) -> str:
+    line_start = text.rfind("\n", 0, at) + 1
+    before = text[line_start:at]
+    return before[: len(before) - len(before.lstrip())]
 
 
 __all__ = ["dependency_undeclared"]

@@ -5,7 +5,7 @@ from __future__ import annotations
 from ..model import massprops
 from ..model.kinematics import bodies, body_mass, link_mass, subtree_masses, walk
 from ..model.numbers import format_number
-from .base import ERROR, WARNING, Kind, Remedy, check
+from .base import ERROR, UNSAFE, WARNING, Kind, Remedy, check
 
 
 def _inertials(loaded):
@@ -199,7 +199,7 @@ def massless_with_inertia(loaded, given):
             yield loaded.diagnostic("I003", f"link '{link.name}' has mass 0 but a non-zero inertia tensor", inertial.inertia_at, subjects=(link.name,))
 
 
-@check("I004", "point-mass", WARNING, "A link with positive mass and an all-zero inertia tensor.", kind=Kind.MASS, remedy=Remedy.INERTIAL)
+@check("I004", "point-mass", WARNING, "A link with positive mass and an all-zero inertia tensor.", kind=Kind.MASS, remedy=Remedy.INERTIAL, fix=UNSAFE)
 def point_mass(loaded, given):
     """## What it does
     Flags a link with positive mass and an all-zero inertia tensor. Elements below
@@ -237,7 +237,7 @@ def point_mass(loaded, given):
             )
 
 
-@check("I005", "inertia-not-positive-semidefinite", ERROR, "An inertia tensor with a negative principal moment.", kind=Kind.MASS, remedy=Remedy.INERTIAL)
+@check("I005", "inertia-not-positive-semidefinite", ERROR, "An inertia tensor with a negative principal moment.", kind=Kind.MASS, remedy=Remedy.INERTIAL, fix=UNSAFE)
 def not_positive_semidefinite(loaded, given):
     """## What it does
     Flags an inertia tensor with a negative principal moment (it is not positive
@@ -275,7 +275,7 @@ def not_positive_semidefinite(loaded, given):
         )
 
 
-@check("I006", "inertia-triangle-inequality", WARNING, "Principal moments that break the triangle inequality.", kind=Kind.MASS, remedy=Remedy.INERTIAL)
+@check("I006", "inertia-triangle-inequality", WARNING, "Principal moments that break the triangle inequality.", kind=Kind.MASS, remedy=Remedy.INERTIAL, fix=UNSAFE)
 def triangle_inequality(loaded, given):
     """## What it does
     Flags a tensor whose principal moments break the triangle inequality

@@ -5,7 +5,7 @@ that make a description unusable which check_urdf does not see.
 """
 
 from ..diagnostics import Severity
-from .base import declare, explain
+from .base import PLACED, SAFE, UNSAFE, declare, explain
 
 ERROR, WARNING = Severity.ERROR, Severity.WARNING
 
@@ -41,7 +41,10 @@ X005 = declare("X005", "xacro-warning", WARNING, "xacro warned while expanding t
     "Passes on a warning xacro printed while expanding (a redefined global symbol, ignored children of an include, unknown attributes).",
     "xacro expanded the file, but probably not as meant: a redefined `pi` changes every angle that uses it.",
     '<robot name="r" xmlns:xacro="http://www.ros.org/wiki/xacro">\n  <xacro:property name="pi" value="3"/>\n  <link name="base_link"/>\n</robot>',
-    '<robot name="r" xmlns:xacro="http://www.ros.org/wiki/xacro">\n  <xacro:property name="half_turn" value="${pi}"/>\n  <link name="base_link"/>\n</robot>'))
+    '<robot name="r" xmlns:xacro="http://www.ros.org/wiki/xacro">\n  <xacro:property name="half_turn" value="${pi}"/>\n  <link name="base_link"/>\n</robot>'),
+    fix=SAFE, fix_doc="Rewrites the forms xacro deprecated and still reads: `load_yaml()`, `abs_filename()`, `dotify()` as "
+    "`xacro.load_yaml()`..., `range()` and `sorted()` as `python.range()`..., a macro named `xacro:NAME` as `NAME` "
+    "(safe: xacro reads both the same). Its other warnings have no fix.")
 
 X006 = declare("X006", "library-unchecked", WARNING, "A xacro library that no model including it could check, for want of xacro arguments.", explain(
     "Flags a xacro library (macros and properties only) given to urdfcli when no model of its repository that "
@@ -158,7 +161,8 @@ V009 = declare("V009", "rpy-in-degrees", WARNING, "An `<origin rpy>` angle writt
     "URDF angles are radians: 90 radians is 5157 degrees, and the part is turned by 1.6 rad (and 180 by 4.2 rad) "
     "instead of a quarter or a half turn. Every consumer reads it so, without a word.",
     '<link name="base_link"/>\n<link name="camera_link"/>\n<joint name="camera_joint" type="fixed">\n  <parent link="base_link"/>\n  <child link="camera_link"/>\n  <origin xyz="0.1 0 0.2" rpy="0 0 90"/>\n</joint>',
-    '<link name="base_link"/>\n<link name="camera_link"/>\n<joint name="camera_joint" type="fixed">\n  <parent link="base_link"/>\n  <child link="camera_link"/>\n  <origin xyz="0.1 0 0.2" rpy="0 0 1.5708"/>\n</joint>'))
+    '<link name="base_link"/>\n<link name="camera_link"/>\n<joint name="camera_joint" type="fixed">\n  <parent link="base_link"/>\n  <child link="camera_link"/>\n  <origin xyz="0.1 0 0.2" rpy="0 0 1.5708"/>\n</joint>'),
+    fix=UNSAFE, fix_doc="Writes each angle beyond a turn in radians, where it was written (unsafe: the pose changes)." f" {PLACED}")
 V010 = declare("V010", "dynamics-negative", ERROR, "A joint's damping or friction that is negative.", explain(
     "Flags a `<dynamics damping>` or `friction` below zero.",
     "Negative damping or friction feeds energy into the joint: Gazebo, MuJoCo and Drake accelerate it without end. "

@@ -13,12 +13,13 @@ that nothing uncertain is reported.
 
 from __future__ import annotations
 
+import re
 from collections.abc import Iterator
 
-from ..diagnostics import Diagnostic, Location
+from ..diagnostics import Diagnostic, Edit, Fix, Location
 from ..model.sources import XacroSources, bound, parameter_place, parameters
 from ..read.xacro_scan import Place, XacroFile, free_names
-from .base import ERROR, INFO, WARNING, Kind, RuleSet, check
+from .base import ERROR, INFO, UNSAFE, WARNING, Kind, RuleSet, check
 from .suggestions import close_matches
 
 
@@ -411,7 +412,8 @@ def name_undefined(loaded, given) -> Iterator[Diagnostic]:
                 yield Diagnostic("X106", f"name '{name.name}' is defined neither in macro '{macro}'{called}", location, hint=hint)
 
 
-@check("X107", "xacro-tag-unprefixed", WARNING, "A xacro tag written without `xacro:`, which xacro leaves in the output unread.", kind=Kind.SOURCES, rule_set=RuleSet.LINT)
+@check("X107", "xacro-tag-unprefixed", WARNING, "A xacro tag written without `xacro:`, which xacro leaves in the output unread.", kind=Kind.SOURCES, rule_set=RuleSet.LINT, fix=UNSAFE, fix_doc="Writes the `xacro:` prefix on the start and end tags, and declares the prefix on the root when it is not "
+       "(unsafe: xacro then reads the tag, and the expansion changes).")
 def tag_unprefixed(loaded, given) -> Iterator[Diagnostic]:
     """## What it does
     Flags `<include filename=...>`, `<property name=...>`, `<macro name=...>`,
@@ -449,7 +451,27 @@ def tag_unprefixed(loaded, given) -> Iterator[Diagnostic]:
             yield _diagnostic(
                 "X107", f"<{old.tag}> without the xacro: prefix is not read by xacro: it is copied into the URDF and does nothing",
                 file, old.place, f"write <xacro:{old.tag} ...> (with xmlns:xacro=\"http://www.ros.org/wiki/xacro\" on <robot>)",
-            )
+            )._replace(fix=_prefixed(file, old))
+
+
+def _prefixed(file: XacroFile, old) -> Fix:
+    """The edits that write ``xacro:`` on an unprefixed tag (and declare the prefix on the root)."""
+    title = f"write <xacro:{old.tag}>"
+    spans = file.source.spans
+    if old.place.element >= len(spans):
+        return Fix(title, UNSAFE, reason="the file's elements cannot be followed")
+    text = file.source.text
+    start, tag_end, end = spans[old.place.element]
+    edits = [Edit(file.name, start + 1, start + 1, "xacro:")]
+    if end > tag_end:  # an end tag of its own
+        closing = text.rfind("</", tag_end, end)
+        edits.append(Edit(file.name, closing + 2, closing + 2, "xacro:"))
+    root_start, root_end, _ = spans[0]
+    if not re.search(r"\sxmlns:xacro\s*=", text[root_start:root_end]):
+        at = root_end - 2 if text[root_end - 2:root_end] == "/>" else root_end - 1
+        at = len(text[:at].rstrip())
+        edits.append(Edit(file.name, at, at, ' xmlns:xacro="http://www.ros.org/wiki/xacro"'))
+    return Fix(title, UNSAFE, edits=tuple(edits))
 
 
 __all__ = ["argument_unused", "macro_name_fixed", "macro_unused", "name_undefined", "parameter_unused", "property_unused", "tag_unprefixed"]

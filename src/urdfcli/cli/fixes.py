@@ -1,0 +1,130 @@
+"""What `lint` and `check` share to fix: the options, the run through :func:`urdfcli.api.fix`,
+the files written (or the diff printed) and the line that says what was fixed."""
+
+from __future__ import annotations
+
+from typing import Annotated, NamedTuple
+
+import typer
+
+from .. import api
+from ..project import fixing
+from ..read.document import STDIN
+from ..read.edits import EditError, apply, unified_diff, write
+from ..report.console import Output
+from ..report.escape import escape
+from ..report.lines import plural
+from ..session import Session
+
+FixOption = Annotated[
+    bool | None,
+    typer.Option(
+        "--fix/--no-fix",
+        help="Apply the safe fixes in place, then report what remains (default: `fix` in [tool.urdfcli]).",
+        show_default=False,
+    ),
+]
+UnsafeFixesOption = Annotated[
+    bool | None,
+    typer.Option(
+        "--unsafe-fixes/--no-unsafe-fixes",
+        help="With --fix or --diff, also the fixes that change the robot (a tensor, a scale, a pose, a limit, the expansion) "
+        "(default: `unsafe-fixes` in [tool.urdfcli]).",
+        show_default=False,
+    ),
+]
+DiffOption = Annotated[
+    bool,
+    typer.Option("--diff", help="Print the unified diff of the fixes (as `patch -p1` applies it) and write nothing; exit 1 when there is something to fix."),
+]
+AddNoqaOption = Annotated[
+    bool,
+    typer.Option("--add-noqa", help="Write a `urdfcli: noqa` comment, with its codes, on every element that still has a warning or an error."),
+]
+
+
+class Fixing(NamedTuple):
+    """What the command line asked of the fixes."""
+
+    fix: bool | None
+    unsafe: bool | None
+    diff: bool
+    add_noqa: bool
+
+    @property
+    def applies(self) -> bool | None:
+        """Whether the safe fixes apply (None: as the configuration says); --diff shows them."""
+        return True if self.diff and self.fix is not False else self.fix
+
+
+class Outcome(NamedTuple):
+    fixed: api.Fixed
+    changed: dict[str, tuple[bytes, bytes]]  # file -> (before, after), noqa comments included
+    noqa: int  # comments written
+
+
+def run(paths: list[str], session: Session, asked: Fixing, progress=None) -> Outcome:
+    """Check and fix as the session's options say; with --add-noqa, the comments for what
+    remains. Nothing is written here."""
+    if STDIN in paths and (asked.fix or asked.add_noqa) and not asked.diff:
+        raise api.UsageError("--fix and --add-noqa cannot write standard input back: use --diff to see the fixes")
+    fixed = api.fix(paths, session, progress)
+    changed = dict(fixed.changed)
+    noqa = 0
+    if asked.add_noqa:
+        edits = fixing.noqa_edits((d for r in fixed.run.results for d in r.diagnostics), session.sources)
+        for file, found in edits.items():
+            before = changed[file][0] if file in changed else session.sources.data(file)
+            try:
+                after = apply(session.sources.data(file), [(e.start, e.end, e.text) for e in found])
+            except EditError as error:
+                fixed.failed.append(f"{file}: {error}")
+                continue
+            changed[file] = (before, after)
+            noqa += len(found)
+    return Outcome(fixed, changed, noqa)
+
+
+def write_files(outcome: Outcome) -> list[str]:
+    """Write each changed file (atomically); the files that could not be written, and why."""
+    failed = []
+    for file, (_, after) in outcome.changed.items():
+        try:
+            write(file, after)
+        except OSError as error:
+            failed.append(f"{file}: cannot write: {error.strerror}")
+    return failed
+
+
+def print_diff(outcome: Outcome, output: Output) -> None:
+    """The unified diff of every change, on standard output; what it would fix, on standard error."""
+    for file, (before, after) in outcome.changed.items():
+        output.out.file.write(unified_diff(file, before, after))
+    output.out.file.flush()
+    fixes = len(outcome.fixed.fixed)
+    if outcome.changed:
+        what = [_fixes(fixes)] if fixes else []
+        what += [plural(outcome.noqa, "noqa comment")] if outcome.noqa else []
+        output.err.file.write(f"would apply {' and '.join(what)} in {plural(len(outcome.changed), 'file')}\n")
+    else:
+        output.err.file.write("nothing to fix\n")
+
+
+def summary(outcome: Outcome, asked: Fixing) -> str | None:
+    """``3 fixed, 2 remaining`` after --fix; ``4 noqa comments written`` after --add-noqa."""
+    results = outcome.fixed.run.results
+    if outcome.noqa:
+        return f"{plural(outcome.noqa, 'noqa comment')} written"
+    fixed = len(outcome.fixed.fixed)
+    if not fixed and not asked.fix:
+        return None
+    return f"{fixed} fixed, {sum(len(r.diagnostics) for r in results)} remaining"
+
+
+def _fixes(count: int) -> str:
+    return f"{count} fix{'' if count == 1 else 'es'}"
+
+
+def report_failed(output: Output, failed: list[str]) -> None:
+    for reason in failed:
+        output.err.file.write(f"urdfcli: {escape(reason)}\n")

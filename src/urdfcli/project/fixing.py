@@ -1,0 +1,105 @@
+"""Which fixes a run applies, and the edits they make, file by file.
+
+The rules give each diagnostic its fix (:class:`urdfcli.diagnostics.Fix`); here a
+run chooses among them: the safe ones, or the unsafe ones too. A fix is applied
+whole or not at all. The same fix found twice (a library checked through two
+models, a model checked with two argument sets) is applied once; of two fixes
+that change the same text differently, the first is applied and the other waits
+for the next round, when the rules have seen the first one's result.
+
+``--add-noqa`` writes one ``noqa`` comment per element for what remains.
+"""
+
+from __future__ import annotations
+
+from collections import defaultdict
+from collections.abc import Iterable
+from typing import NamedTuple
+
+from ..diagnostics import Diagnostic, Edit, Fix, Severity
+from ..read.positions import Sources
+from .suppressions import noqa_edit
+
+MAX_ROUNDS = 10  # a fix may let another be found; this many rounds at most, as ruff does
+
+
+class Selection(NamedTuple):
+    """The edits of each file (in no particular order), and the fixes they make."""
+
+    edits: dict[str, list[Edit]]
+    fixes: list[Fix]
+
+
+def applies(fix: Fix | None, unsafe: bool) -> bool:
+    """Whether a run applies ``fix`` (with ``unsafe``: the unsafe fixes too)."""
+    return fix is not None and fix.available and (fix.safe or unsafe)
+
+
+def select(chosen: Iterable[tuple[Diagnostic, bool]]) -> Selection:
+    """The fixes to apply now, each once, none overlapping another, of the diagnostics
+    given each with whether its unsafe fix may be applied."""
+    taken: dict[str, list[Edit]] = defaultdict(list)
+    fixes: list[Fix] = []
+    seen: set[tuple[Edit, ...]] = set()
+    for diagnostic, unsafe in chosen:
+        fix = diagnostic.fix
+        if not applies(fix, unsafe):
+            continue
+        edits = tuple(sorted(set(fix.edits)))
+        if edits in seen:
+            continue
+        seen.add(edits)
+        new = [e for e in edits if e not in taken[e.file]]
+        if any(_overlap(edit, other) for edit in new for other in taken[edit.file]) or _overlapping(new):
+            continue
+        for edit in new:
+            taken[edit.file].append(edit)
+        fixes.append(fix)
+    return Selection({file: edits for file, edits in taken.items() if edits}, fixes)
+
+
+def _overlap(one: Edit, other: Edit) -> bool:
+    """Whether two edits of one file change the same text (insertions at one place do not)."""
+    if one.start == one.end or other.start == other.end:
+        return other.start < one.start < other.end or one.start < other.start < one.end
+    return one.start < other.end and other.start < one.end
+
+
+def _overlapping(edits: list[Edit]) -> bool:
+    return any(_overlap(a, b) for i, a in enumerate(edits) for b in edits[i + 1:] if a.file == b.file)
+
+
+def counts(diagnostics: Iterable[Diagnostic], unsafe: bool) -> tuple[int, int]:
+    """How many of the diagnostics a run would fix, and how many more ``--unsafe-fixes`` would."""
+    fixable = hidden = 0
+    for diagnostic in diagnostics:
+        if applies(diagnostic.fix, unsafe):
+            fixable += 1
+        elif applies(diagnostic.fix, True):
+            hidden += 1
+    return fixable, hidden
+
+
+def noqa_edits(diagnostics: Iterable[Diagnostic], sources: Sources) -> dict[str, list[Edit]]:
+    """For every warning and error, the ``noqa`` comment that silences it: one per
+    element, naming every code found there. A diagnostic with no place in a source
+    (a line of the xacro expansion, a whole file) gets none."""
+    groups: dict[tuple[str, int, int], tuple[int, int | None, list[str]]] = {}
+    for diagnostic in diagnostics:
+        location = diagnostic.location
+        if (diagnostic.severity or Severity.INFO) is Severity.INFO or location.expanded or not location.line:
+            continue
+        source = sources.source(location.file)
+        found = noqa_edit(source, location.line, [diagnostic.code], location.column) if source is not None else None
+        if found is None:
+            continue
+        key = (location.file, found[0], found[1])
+        line, column, codes = groups.setdefault(key, (location.line, location.column, []))
+        if diagnostic.code not in codes:
+            codes.append(diagnostic.code)
+    edits: dict[str, list[Edit]] = defaultdict(list)
+    for (file, _, _), (line, column, codes) in groups.items():
+        found = noqa_edit(sources.source(file), line, codes, column)
+        if found is not None:
+            edits[file].append(Edit(file, *found))
+    return dict(edits)

@@ -1,0 +1,579 @@
+"""`lint --fix`, `--diff`, `--unsafe-fixes` and `--add-noqa`: the fixes urdfcli writes into
+xacro, URDF and package.xml files.
+
+Each case is a small package written as people write them; after `--fix` the finding is
+gone, no other finding appears, every byte outside the edits is kept (the files are
+compared whole), xacro's own expansion (the `xacro` program from PyPI) differs only at
+the fixed elements, and a second `--fix` changes nothing. Values that come from an
+expression, or from a property or parameter that cannot be edited alike everywhere, are
+left alone, and the diagnostic says why. Every fixable rule's documented Example is
+fixed too, and `lint --fix --diff` on the published models applies with `patch` and
+leaves models check_urdf loads as before.
+"""
+
+from __future__ import annotations
+
+import difflib
+import json
+import os
+import re
+import shutil
+import subprocess
+from collections import Counter
+from pathlib import Path
+
+import pytest
+from conftest import example_robot_data, require_tool, run_cli
+from differential import canonical
+from support.meshes import box, example_package, write
+
+from urdfcli.rules import REGISTRY, example_code
+
+XACRO_NS = 'xmlns:xacro="http://www.ros.org/wiki/xacro"'
+
+
+# -- helpers ---------------------------------------------------------------------------------
+def put(root: Path, files: dict[str, str | bytes]) -> None:
+    for name, text in files.items():
+        path = root / name
+        path.parent.mkdir(parents=True, exist_ok=True)
+        path.write_bytes(text if isinstance(text, bytes) else text.encode())
+
+
+def snapshot(root: Path) -> dict[str, bytes]:
+    return {p.relative_to(root).as_posix(): p.read_bytes() for p in sorted(root.rglob("*")) if p.is_file()}
+
+
+def found_in(report: str) -> Counter:
+    """What a JSON report holds, as (code, message) pairs: lines move when a fix adds one,
+    so the FILE:LINE a message names is FILE:N."""
+    return Counter((d["code"], re.sub(r"(\.\w+):\d+", r"\1:N", d["message"])) for f in json.loads(report)["files"] for d in f["diagnostics"])
+
+
+def findings(cli, model: str, *options: str) -> Counter:
+    return found_in(cli("lint", "--isolated", "--format", "json", *options, model).stdout)
+
+
+def diagnostics(cli, model: str, *options: str) -> list[dict]:
+    done = cli("lint", "--isolated", "--format", "json", *options, model)
+    return [d for f in json.loads(done.stdout)["files"] for d in f["diagnostics"]]
+
+
+def expansion(model: Path) -> list | None:
+    """xacro's own output for a xacro model, canonical (None for a plain URDF)."""
+    if not model.name.endswith(".xacro"):
+        text = model.read_bytes().decode("latin-1" if b"ISO-8859-1" in model.read_bytes()[:60] else "utf-8")
+    else:
+        tool = require_tool("xacro")
+        done = subprocess.run([tool, str(model)], capture_output=True, text=True, timeout=60, cwd=model.parent)
+        assert done.returncode == 0, done.stderr
+        text = done.stdout
+    return [(tag, tuple(attributes), text, children) for tag, attributes, text, children in canonical(text)]
+
+
+def changed_elements(before: list, after: list) -> list[str]:
+    """The tags of the elements that differ between two canonical expansions."""
+    found = []
+    for op, a, b, c, d in difflib.SequenceMatcher(None, before, after, autojunk=False).get_opcodes():
+        if op != "equal":
+            found += [entry[0] for entry in before[a:b]] + [entry[0] for entry in after[c:d]]
+    return sorted(set(found))
+
+
+def fixed(cli, root: Path, model: str, code: str, *options: str, elements: tuple[str, ...]) -> dict[str, bytes]:
+    """Fix ``model`` (in ``root``) and check what must hold of every fix: the finding of
+    ``code`` gone, no new finding, the expansion changed only in ``elements``' tags (their
+    counts may change only by an added child), a second --fix changing nothing. The files after."""
+    before_files = snapshot(root)
+    before = findings(cli, model, *options)
+    assert any(c == code for c, _ in before), before
+    expanded = expansion(root / model)
+    done = cli("lint", "--isolated", "--fix", *options, model)
+    assert "fixed, " in done.stdout, done.stdout
+    after = findings(cli, model, *options)
+    assert not any(c == code for c, _ in after), done.stdout
+    assert not after - before, f"new findings: {after - before}"
+    assert changed_elements(expanded, expansion(root / model)) == sorted(elements)
+    files = snapshot(root)
+    assert files != before_files
+    again = cli("lint", "--isolated", "--fix", *options, model)
+    assert "0 fixed, " in again.stdout and snapshot(root) == files  # nothing left to fix: nothing changes
+    return files
+
+
+@pytest.fixture
+def here(tmp_path, monkeypatch):
+    monkeypatch.chdir(tmp_path)
+    return tmp_path
+
+
+# -- rpy and limits in degrees, lower above upper -----------------------------------------------
+ARM = """<?xml version="1.0"?>
+<robot name="arm">
+  <link name="base_link"/>
+  <link name="arm_link"/>
+  <!-- the arm turned a quarter turn -->
+  <joint name="arm_joint" type="revolute">
+    <parent link="base_link"/>
+    <child link="arm_link"/>
+    <origin xyz="0 0 0.1" rpy='0 0 90'/>
+    <limit lower="1.57" upper="-1.57" effort="10" velocity="1"/>
+  </joint>
+</robot>
+"""
+
+
+def test_rpy_in_degrees_written_in_radians_only_where_it_was(cli, here):
+    put(here, {"arm.urdf": ARM})
+    files = fixed(cli, here, "arm.urdf", "V009", "--unsafe-fixes", elements=("origin", "limit"))
+    assert files["arm.urdf"].decode() == ARM.replace("rpy='0 0 90'", "rpy='0 0 1.570796'").replace(
+        'lower="1.57" upper="-1.57"', 'lower="-1.57" upper="1.57"')
+
+
+def test_safe_fixes_only_without_unsafe_fixes(cli, here):
+    put(here, {"arm.urdf": ARM})
+    done = cli("lint", "--isolated", "--fix", "arm.urdf")
+    assert (here / "arm.urdf").read_text() == ARM  # degrees and swapped limits change the robot: unsafe
+    assert "0 fixed, " in done.stdout
+    assert "2 fixes available with --fix --unsafe-fixes" in done.stdout
+    assert "fix (unsafe): write rpy=\"0 0 1.570796\" (radians)" in done.stdout
+
+
+def test_limits_in_degrees(cli, here):
+    text = ARM.replace('lower="1.57" upper="-1.57"', 'lower="-170" upper="170"').replace("'0 0 90'", "'0 0 0'")
+    put(here, {"arm.urdf": text})
+    files = fixed(cli, here, "arm.urdf", "J016", "--unsafe-fixes", elements=("limit",))
+    assert files["arm.urdf"].decode() == text.replace('lower="-170" upper="170"', 'lower="-2.96706" upper="2.96706"')
+
+
+# -- xacro: where the value was written ------------------------------------------------------------
+MACROS = f"""<?xml version="1.0"?>
+<robot name="rover" {XACRO_NS}>
+  <xacro:property name="mount_yaw" value="90"/>
+  <xacro:macro name="wheel" params="side roll">
+    <link name="${{side}}_wheel"/>
+    <joint name="${{side}}_wheel_joint" type="continuous">
+      <parent link="base_link"/>
+      <child link="${{side}}_wheel"/>
+      <origin xyz="0 0.2 0" rpy="${{roll}} 0 0"/>
+    </joint>
+  </xacro:macro>
+  <link name="base_link"/>
+  <link name="mast"/>
+  <joint name="mast_joint" type="fixed">
+    <parent link="base_link"/>
+    <child link="mast"/>
+    <origin rpy="0 0 ${{mount_yaw}}"/>
+  </joint>
+  <xacro:wheel side="left" roll="180"/>
+  <xacro:wheel side="right" roll="-180"/>
+</robot>
+"""
+
+
+def test_a_property_defined_once_and_each_macro_call_are_edited(cli, here):
+    put(here, {"rover.urdf.xacro": MACROS})
+    files = fixed(cli, here, "rover.urdf.xacro", "V009", "--unsafe-fixes", elements=("origin",))
+    assert files["rover.urdf.xacro"].decode() == (
+        MACROS.replace('value="90"', 'value="1.570796"').replace('roll="180"', 'roll="3.141593"').replace('roll="-180"', 'roll="-3.141593"')
+    )
+
+
+def test_a_value_computed_by_an_expression_is_left_alone_and_says_where(cli, here):
+    text = MACROS.replace('rpy="0 0 ${mount_yaw}"', 'rpy="0 0 ${mount_yaw * 2}"').replace('roll="-180"', 'roll="${-90 * 2}"')
+    put(here, {"rover.urdf.xacro": text})
+    found = {d["line"]: d["fix"] for d in diagnostics(cli, "rover.urdf.xacro", "--select", "V009")}
+    line = text[: text.index("${mount_yaw * 2}")].count("\n") + 1
+    assert found[line]["available"] is False
+    assert found[line]["reason"] == f"the value is computed by ${{mount_yaw * 2}} at rover.urdf.xacro:{line}"
+    # the right wheel's roll is computed at its call; the left one's is a literal there
+    done = cli("lint", "--isolated", "--fix", "--unsafe-fixes", "rover.urdf.xacro")
+    assert "no fix: the value is computed by ${-90 * 2} at rover.urdf.xacro:20" in done.stdout
+    assert (here / "rover.urdf.xacro").read_text() == text.replace('roll="180"', 'roll="3.141593"')
+
+
+def test_a_property_read_where_its_value_means_something_else_is_left_alone(cli, here):
+    text = MACROS.replace('<link name="mast"/>', '<link name="mast"/>\n  <xacro:if value="${mount_yaw > 45}"><link name="flag"/></xacro:if>')
+    put(here, {"rover.urdf.xacro": text})
+    (mast,) = [d for d in diagnostics(cli, "rover.urdf.xacro", "--select", "V009") if "0 0 90" in d["message"]]
+    line = text[: text.index("<xacro:if")].count("\n") + 1
+    assert mast["fix"]["reason"] == f"the value is property 'mount_yaw', also read at rover.urdf.xacro:{line}, where it does not go into the model as such"
+
+
+def test_a_property_defined_twice_is_left_alone(cli, here):
+    text = MACROS.replace('<link name="mast"/>', '<link name="mast"/>\n  <xacro:property name="mount_yaw" value="90"/>')
+    put(here, {"rover.urdf.xacro": text})
+    (mast,) = [d for d in diagnostics(cli, "rover.urdf.xacro", "--select", "V009") if "0 0 90" in d["message"]]
+    assert mast["fix"]["reason"] == "the value is property 'mount_yaw', defined 2 times (rover.urdf.xacro:3, rover.urdf.xacro:14)"
+
+
+def test_a_literal_in_a_macro_body_is_edited_when_every_call_needs_it(cli, here):
+    text = MACROS.replace('<origin xyz="0 0.2 0" rpy="${roll} 0 0"/>', '<origin xyz="0 0.2 0" rpy="${roll} 0 0"/>\n      <limit lower="1" upper="-1" effort="1" velocity="1"/>')
+    text = text.replace('type="continuous"', 'type="revolute"')
+    put(here, {"rover.urdf.xacro": text})
+    files = fixed(cli, here, "rover.urdf.xacro", "J010", "--unsafe-fixes", "--select", "J010", elements=("limit",))
+    assert files["rover.urdf.xacro"].decode() == text.replace('lower="1" upper="-1"', 'lower="-1" upper="1"')
+
+
+# -- inertia: the tensor from the geometry ----------------------------------------------------------
+CRATE = """<?xml version="1.0"?>
+<robot name="crate">
+  <link name="base_link"/>
+  <joint name="lift" type="prismatic">
+    <parent link="base_link"/>
+    <child link="crate"/>
+    <axis xyz="0 0 1"/>
+    <limit lower="0" upper="0.5" effort="100" velocity="0.2"/>
+  </joint>
+  <link name="crate">
+    <inertial>
+      <mass value="2"/>
+      <inertia ixx="1" ixy="0" ixz="0" iyy="1" iyz="0" izz="1"/>
+    </inertial>
+    <collision><origin xyz="0 0 0.1"/><geometry><box size="0.4 0.3 0.2"/></geometry></collision>
+  </link>
+</robot>
+"""
+
+
+def test_the_inertia_and_centre_of_mass_from_the_collision_geometry(cli, here):
+    put(here, {"crate.urdf": CRATE})
+    suggested = run_cli("inertia", "--suggest", "crate.urdf", cwd=here).stdout.decode()
+    assert 'ixx="0.0216667"' in suggested and '<origin xyz="0 0 0.1"' in suggested
+    files = fixed(cli, here, "crate.urdf", "I007", "--unsafe-fixes", elements=("inertia", "inertial", "origin"))
+    assert files["crate.urdf"].decode() == CRATE.replace(
+        '    <inertial>\n', '    <inertial>\n      <origin xyz="0 0 0.1" rpy="0 0 0"/>\n'
+    ).replace('ixx="1" ixy="0" ixz="0" iyy="1" iyz="0" izz="1"', 'ixx="0.0216667" ixy="0" ixz="0" iyy="0.0333333" iyz="0" izz="0.0416667"')
+
+
+@pytest.mark.parametrize(("code", "tensor"), [
+    ("I004", 'ixx="0" ixy="0" ixz="0" iyy="0" iyz="0" izz="0"'),
+    ("I005", 'ixx="0.02" ixy="0" ixz="0" iyy="0.03" iyz="0" izz="-0.04"'),
+    ("I006", 'ixx="0.001" ixy="0" ixz="0" iyy="0.001" iyz="0" izz="0.04"'),
+])
+def test_a_wrong_tensor_is_written_from_the_geometry(cli, here, code, tensor):
+    text = CRATE.replace('ixx="1" ixy="0" ixz="0" iyy="1" iyz="0" izz="1"', tensor).replace("<inertial>", '<inertial>\n      <origin xyz="0 0 0.1"/>')
+    put(here, {"crate.urdf": text})
+    files = fixed(cli, here, "crate.urdf", code, "--unsafe-fixes", elements=("inertia",))
+    assert files["crate.urdf"].decode() == text.replace(tensor, 'ixx="0.0216667" ixy="0" ixz="0" iyy="0.0333333" iyz="0" izz="0.0416667"')
+
+
+PARTS = f"""<?xml version="1.0"?>
+<robot {XACRO_NS}>
+  <xacro:macro name="box_inertia" params="m x y z">
+    <inertial>
+      <mass value="${{m}}"/>
+      <inertia ixx="${{m*(y*y+z*z)/12}}" ixy="0" ixz="0" iyy="${{m*(x*x+z*z)/12}}" iyz="0" izz="${{m*(x*x+y*y)/12}}"/>
+    </inertial>
+  </xacro:macro>
+  <xacro:macro name="fixed_inertia">
+    <inertial>
+      <mass value="1"/>
+      <inertia ixx="0.01" ixy="0" ixz="0" iyy="0.01" iyz="0" izz="0.01"/>
+    </inertial>
+  </xacro:macro>
+</robot>
+"""
+BODY = f"""<?xml version="1.0"?>
+<robot name="bot" {XACRO_NS}>
+  <xacro:include filename="parts.xacro"/>
+  <link name="base_link"/>
+  <link name="top">
+    <xacro:box_inertia m="2" x="0.1" y="0.3" z="0.4"/>
+    <collision><geometry><box size="0.4 0.3 0.1"/></geometry></collision>
+  </link>
+  <joint name="top_joint" type="continuous"><parent link="base_link"/><child link="top"/><axis xyz="0 0 1"/></joint>
+  <link name="a"><xacro:fixed_inertia/><collision><geometry><box size="0.1 0.1 0.1"/></geometry></collision></link>
+  <link name="b"><xacro:fixed_inertia/><collision><geometry><box size="0.3 0.2 0.1"/></geometry></collision></link>
+  <joint name="a_joint" type="continuous"><parent link="base_link"/><child link="a"/><axis xyz="0 0 1"/></joint>
+  <joint name="b_joint" type="continuous"><parent link="base_link"/><child link="b"/><axis xyz="0 0 1"/></joint>
+</robot>
+"""
+
+
+def test_a_tensor_computed_by_a_macro_or_shared_by_calls_is_left_alone(cli, here):
+    put(here, {"parts.xacro": PARTS, "bot.urdf.xacro": BODY})
+    found = {(d["code"], d["message"].split("'")[1]): d["fix"] for d in diagnostics(cli, "bot.urdf.xacro") if d["code"].startswith("I")}
+    top = found[("I009", "top")]
+    assert top["reason"] == "the value is computed by ${m*(y*y+z*z)/12} at parts.xacro:6"
+    # the same literal tensor for two links of other sizes: one edit cannot fit both
+    shared = [fix for (code, link), fix in found.items() if link in ("a", "b")]
+    assert shared and all(f["reason"] and "also makes" in f["reason"] for f in shared), found
+    before = snapshot(here)
+    cli("lint", "--isolated", "--fix", "--unsafe-fixes", "bot.urdf.xacro")
+    assert snapshot(here) == before
+
+
+# -- meshes and packages ---------------------------------------------------------------------------
+PACKAGE = """<?xml version="1.0"?>
+<package format="3">
+  <name>my_robot</name>
+  <version>0.1.0</version>
+  <description>A robot</description>
+  <maintainer email="me@example.com">me</maintainer>
+  <license>BSD</license>
+
+  <buildtool_depend>ament_cmake</buildtool_depend>
+  <exec_depend>robot_state_publisher</exec_depend>  <!-- publishes the TF tree -->
+\t<exec_depend>xacro</exec_depend>
+
+  <export>
+    <build_type>ament_cmake</build_type>
+  </export>
+</package>
+"""
+MESHES = """<package format="3"><name>robot_meshes</name><version>1.0.0</version><description>meshes</description>
+<maintainer email="me@example.com">me</maintainer><license>BSD</license></package>
+"""
+MODEL = f"""<?xml version="1.0"?>
+<robot name="r" {XACRO_NS}>
+  <xacro:property name="meshes" value="robot_meshes"/>
+  <link name="base_link">
+    <visual><geometry><mesh filename="package://${{meshes}}/meshes/arm.STL"/></geometry></visual>
+    <collision><geometry><mesh filename="package://robot_meshes/meshes/arm.stl"/></geometry></collision>
+  </link>
+</robot>
+"""
+
+
+@pytest.fixture
+def workspace(here):
+    put(here, {"src/my_robot/package.xml": PACKAGE, "src/my_robot/urdf/robot.urdf.xacro": MODEL, "src/robot_meshes/package.xml": MESHES})
+    write(here / "src/robot_meshes/meshes/arm.stl", box())
+    (here / ".git").mkdir()
+    return here
+
+
+def test_a_dependency_is_declared_after_the_last_of_its_kind_in_its_indentation(cli, workspace):
+    model = "src/my_robot/urdf/robot.urdf.xacro"
+    files = fixed(cli, workspace, model, "P001", "--select", "P001", elements=())
+    assert files["src/my_robot/package.xml"].decode() == PACKAGE.replace(
+        "\t<exec_depend>xacro</exec_depend>\n", "\t<exec_depend>xacro</exec_depend>\n\t<exec_depend>robot_meshes</exec_depend>\n"
+    )
+    assert files[model].decode() == MODEL
+
+
+@pytest.mark.parametrize(("manifest", "declared"), [
+    ('<package format="2">\n  <name>my_robot</name>\n  <export/>\n</package>\n', '<package format="2">\n  <name>my_robot</name>\n  <exec_depend>robot_meshes</exec_depend>\n  <export/>\n</package>\n'),
+    ('<package>\n  <name>my_robot</name>\n  <build_depend>catkin</build_depend>\n</package>\n', '<package>\n  <name>my_robot</name>\n  <build_depend>catkin</build_depend>\n  <run_depend>robot_meshes</run_depend>\n</package>\n'),
+], ids=["before-export", "format-1"])
+def test_a_dependency_in_a_manifest_without_one_of_its_kind(cli, workspace, manifest, declared):
+    put(workspace, {"src/my_robot/package.xml": manifest})
+    cli("lint", "--isolated", "--fix", "--select", "P001", "src/my_robot/urdf/robot.urdf.xacro")
+    assert (workspace / "src/my_robot/package.xml").read_text() == declared
+
+
+def test_a_mesh_name_fixed_in_the_literal_part_of_a_computed_uri(cli, workspace):
+    model = "src/my_robot/urdf/robot.urdf.xacro"
+    files = fixed(cli, workspace, model, "D004", "--select", "D004", elements=("mesh",))
+    assert files[model].decode() == MODEL.replace("/meshes/arm.STL", "/meshes/arm.stl")
+
+
+def test_absolute_and_file_uris_become_package_uris(cli, workspace):
+    mesh = workspace / "src/robot_meshes/meshes/arm.stl"
+    text = MODEL.replace("package://${meshes}/meshes/arm.STL", f"file://{mesh}").replace("package://robot_meshes/meshes/arm.stl", str(mesh))
+    put(workspace, {"src/my_robot/urdf/robot.urdf.xacro": text})
+    model = "src/my_robot/urdf/robot.urdf.xacro"
+    files = fixed(cli, workspace, model, "F002", "--select", "F002", elements=("mesh",))
+    assert files[model].decode() == MODEL.replace("package://${meshes}/meshes/arm.STL", "package://robot_meshes/meshes/arm.stl")
+
+
+def test_a_relative_mesh_path_is_left_to_its_author(cli, workspace):
+    text = MODEL.replace("package://${meshes}/meshes/arm.STL", "../../robot_meshes/meshes/arm.stl")
+    put(workspace, {"src/my_robot/urdf/robot.urdf.xacro": text})
+    (flagged,) = diagnostics(cli, "src/my_robot/urdf/robot.urdf.xacro", "--select", "F002")
+    assert flagged["fix"]["reason"].startswith("a relative path is what MuJoCo, PyBullet and Drake read")
+
+
+def test_a_millimetre_mesh_is_scaled(cli, here):
+    example_package(here / "my_robot")
+    put(here, {"my_robot/package.xml": '<package format="2"><name>my_robot</name></package>\n', "my_robot/urdf/arm.urdf": """<robot name="arm">
+  <link name="arm">
+    <inertial>
+      <mass value="5"/>
+      <inertia ixx="0.0708" ixy="0" ixz="0" iyy="0.0708" iyz="0" izz="0.0083"/>
+    </inertial>
+    <visual><geometry><mesh filename="package://my_robot/meshes/arm_mm.stl"/></geometry></visual>
+  </link>
+</robot>
+"""})
+    files = fixed(cli, here, "my_robot/urdf/arm.urdf", "F003", "--unsafe-fixes", "--select", "F003", elements=("mesh",))
+    assert 'filename="package://my_robot/meshes/arm_mm.stl" scale="0.001 0.001 0.001"/>' in files["my_robot/urdf/arm.urdf"].decode()
+
+
+# -- xacro's deprecated forms and unprefixed tags -------------------------------------------------
+def test_deprecated_forms_xacro_still_reads_are_rewritten(cli, here):
+    text = f"""<?xml version="1.0"?>
+<robot name="r" {XACRO_NS}>
+  <xacro:macro name="xacro:part" params="n">
+    <link name="part_${{n}}"/>
+  </xacro:macro>
+  <xacro:property name="sizes" value="${{list(range(2))}}"/>
+  <link name="base_link"/>
+  <xacro:part n="${{sizes[1]}}"/>
+  <joint name="j" type="fixed"><parent link="base_link"/><child link="part_1"/></joint>
+</robot>
+"""
+    put(here, {"r.urdf.xacro": text})
+    files = fixed(cli, here, "r.urdf.xacro", "X005", elements=())
+    assert files["r.urdf.xacro"].decode() == text.replace('name="xacro:part"', 'name="part"').replace("list(range(2))", "list(python.range(2))")
+
+
+def test_an_unprefixed_include_is_prefixed_and_read(cli, here):
+    text = '<?xml version="1.0"?>\n<robot name="r">\n  <include filename="arm.xacro"/>\n  <link name="base_link"/>\n</robot>\n'
+    arm = f'<robot {XACRO_NS}>\n  <link name="arm"/>\n</robot>\n'
+    put(here, {"r.urdf.xacro": text, "arm.xacro": arm})
+    before = expansion(here / "r.urdf.xacro")
+    done = cli("lint", "--isolated", "--fix", "--unsafe-fixes", "--select", "X107", "r.urdf.xacro")
+    assert "1 fixed, 0 remaining" in done.stdout
+    assert (here / "r.urdf.xacro").read_text() == text.replace("<include", "<xacro:include").replace('<robot name="r">', f'<robot name="r" {XACRO_NS}>')
+    after = expansion(here / "r.urdf.xacro")
+    # xacro now reads the include: the element it copied is gone, the arm it includes is there
+    assert [e[0] for e in before] == ["robot", "include", "link"] and [e[0] for e in after] == ["robot", "link", "link"]
+
+
+# -- a generated URDF that drifted from its xacro ---------------------------------------------------
+def test_a_drifted_generated_urdf_is_regenerated_under_its_own_header(cli, here):
+    source = f'<robot name="kr" {XACRO_NS}>\n  <link name="link_6"/>\n  <link name="flange"/>\n' \
+             '  <joint name="flange_joint" type="fixed"><parent link="link_6"/><child link="flange"/></joint>\n</robot>\n'
+    header = '<?xml version="1.0" ?>\r\n<!-- | This document was autogenerated by xacro from /home/ci/ws/src/kr/urdf/kr.xacro | -->\r\n'
+    urdf = header + '<robot name="kr">\r\n  <link name="link_6"/>\r\n</robot>\r\n'
+    put(here, {"urdf/kr.xacro": source, "urdf/kr.urdf": urdf})
+    done = cli("lint", "--isolated", "--fix", "--select", "X110", "urdf/kr.urdf")
+    assert "1 fixed, 0 remaining" in done.stdout, done.stdout
+    written = (here / "urdf/kr.urdf").read_bytes().decode()
+    assert written.startswith(header + '<robot name="kr">\r\n')  # the header and the line ends kept
+    assert '<link name="flange"/>' in written and expansion(here / "urdf/kr.urdf") == expansion(here / "urdf/kr.xacro")
+    again = cli("lint", "--isolated", "--fix", "--select", "X110", "urdf/kr.urdf")
+    assert "0 fixed, 0 remaining" in again.stdout and (here / "urdf/kr.urdf").read_bytes().decode() == written
+
+
+# -- what is kept, byte for byte -----------------------------------------------------------------------
+def test_every_byte_outside_the_edits_is_kept(cli, here):
+    text = ("<?xml version='1.0' encoding='ISO-8859-1'?>\r\n<!-- Bras articul\xe9 -->\r\n<robot name='arm'>\r\n"
+            "\t<link name='base_link'/>\r\n\t<link name='arm_link'/>\r\n"
+            "\t<joint name='arm_joint' type='revolute'>  <!-- l'\xe9paule -->\r\n"
+            "\t\t<parent link='base_link'/>\r\n\t\t<child link='arm_link'/>\r\n"
+            "\t\t<origin rpy='0  0\t90' xyz=\"0 0 0.1\"/>\r\n"
+            "\t\t<limit upper='-1.57' effort='10' lower='1.57' velocity='1'/>\r\n\t</joint>\r\n</robot>")
+    data = text.encode("latin-1")
+    put(here, {"arm.urdf": data})
+    cli("lint", "--isolated", "--fix", "--unsafe-fixes", "arm.urdf")
+    expected = data.replace(b"rpy='0  0\t90'", b"rpy='0  0\t1.570796'").replace(b"upper='-1.57'", b"upper='1.57'").replace(b"lower='1.57'", b"lower='-1.57'")
+    assert (here / "arm.urdf").read_bytes() == expected
+
+
+def test_diff_writes_nothing_and_applies_with_patch(cli, here):
+    put(here, {"rover.urdf.xacro": MACROS, "arm.urdf": ARM.replace("\n", "\r\n")})
+    before = snapshot(here)
+    done = run_cli("lint", "--isolated", "--diff", "--unsafe-fixes", "rover.urdf.xacro", "arm.urdf", cwd=here)
+    assert done.returncode == 1 and snapshot(here) == before
+    assert done.stderr.decode().endswith("would apply 5 fixes in 2 files\n")
+    patched = here / "patched"
+    shutil.copytree(here, patched, ignore=shutil.ignore_patterns("patched"))
+    applied = subprocess.run([require_tool("patch"), "-p1", "--binary"], input=done.stdout, cwd=patched, capture_output=True)
+    assert applied.returncode == 0, applied.stdout
+    run_cli("lint", "--isolated", "--fix", "--unsafe-fixes", "rover.urdf.xacro", "arm.urdf", cwd=here)
+    assert snapshot(patched) == {k: v for k, v in snapshot(here).items() if not k.startswith("patched/")}
+    nothing = run_cli("lint", "--isolated", "--diff", "--unsafe-fixes", "rover.urdf.xacro", "arm.urdf", cwd=here)
+    assert (nothing.returncode, nothing.stdout) == (0, b"")
+
+
+def test_add_noqa_silences_what_remains(cli, here):
+    put(here, {"arm.urdf": ARM})
+    done = cli("lint", "--isolated", "--add-noqa", "arm.urdf")
+    assert done.exit_code == 0 and "noqa comment" in done.stdout
+    written = (here / "arm.urdf").read_text()
+    assert "  <!-- urdfcli: noqa: " in written and "V009" in written and "J010" in written
+    assert cli("lint", "--isolated", "arm.urdf").exit_code == 0
+    assert cli("lint", "--isolated", "--add-noqa", "arm.urdf").stdout.count("noqa comment") == 0
+    assert (here / "arm.urdf").read_text() == written
+
+
+def test_configuration_turns_fixing_on(cli, here):
+    put(here, {"arm.urdf": ARM, "pyproject.toml": "[tool.urdfcli]\nfix = true\nunsafe-fixes = true\n"})
+    done = cli("lint", "arm.urdf")
+    assert "2 fixed, 0 remaining" in done.stdout and "1.570796" in (here / "arm.urdf").read_text()
+    put(here, {"arm.urdf": ARM, "pyproject.toml": "[tool.urdfcli]\nfix = 1\n"})
+    assert "fix: expected true or false" in run_cli("lint", "arm.urdf", cwd=here).stderr.decode()
+
+
+def test_check_fixes_what_check_finds(cli, here):
+    put(here, {"arm.urdf": ARM})
+    done = run_cli("check", "--isolated", "--fix", "--unsafe-fixes", "arm.urdf", cwd=here)
+    assert done.returncode == 0 and "2 fixed, 0 remaining" in done.stderr.decode()
+    assert "rpy='0 0 1.570796'" in (here / "arm.urdf").read_text()
+
+
+def test_standard_input_is_never_written_back(here):
+    done = run_cli("lint", "--fix", "-", input=ARM, cwd=here)
+    assert done.returncode == 2 and "cannot write standard input back" in done.stderr.decode()
+    diff = run_cli("lint", "--diff", "--unsafe-fixes", "-", input=ARM, cwd=here)
+    assert diff.returncode == 1 and b"+    <origin xyz=\"0 0 0.1\" rpy='0 0 1.570796'/>" in diff.stdout
+
+
+# -- every fixable rule: its documented Example fixed ------------------------------------------------
+# P001 needs a package.xml beside its files, X005's Example is a warning without a fix, X110's a
+# generated URDF beside its xacro source, F002's a relative path (left to its author): they are
+# fixed above. The Examples of I004, I005 and I006 have no geometry to take a tensor from:
+# "I004", "I005" and "I006" are fixed below.
+FIXABLE = sorted(code for code, rule in REGISTRY.items() if rule.fixable is not None)
+WITHOUT_EXAMPLE_FIX = {"P001", "X005", "X110", "F002", "I004", "I005", "I006"}
+
+
+def test_every_fixable_rule_whose_example_is_not_fixed_has_a_case_of_its_own():
+    text = Path(__file__).read_text()
+    assert len(FIXABLE) >= 15
+    assert all(text.count(f'"{code}"') >= 2 for code in WITHOUT_EXAMPLE_FIX)  # the set above, and its case
+
+
+@pytest.mark.parametrize("code", sorted(set(FIXABLE) - WITHOUT_EXAMPLE_FIX))
+def test_the_documented_example_of_a_fixable_rule_is_fixed(cli, here, code):
+    root = here / "my_robot"
+    example_package(root)
+    snippet = example_code(REGISTRY[code].sections()["Example"])
+    if not snippet.lstrip().startswith("<robot"):
+        snippet = f'<robot name="example">\n{snippet}\n</robot>\n'
+    name = "example.urdf.xacro" if "xacro:" in snippet else "example.urdf"
+    put(root, {"package.xml": '<package format="2"><name>my_robot</name></package>\n', f"urdf/{name}": snippet,
+               "urdf/arm.xacro": f'<robot {XACRO_NS}/>\n'})
+    model = f"my_robot/urdf/{name}"
+    before = findings(cli, model, "--select", "ALL")
+    assert any(c == code for c, _ in before)
+    cli("lint", "--isolated", "--select", "ALL", "--fix", "--unsafe-fixes", model)
+    after = findings(cli, model, "--select", "ALL")
+    assert not any(c == code for c, _ in after), after
+    assert not after - before
+
+
+# -- the published models ---------------------------------------------------------------------------------
+def test_the_published_models_fixed_by_patch_load_as_before(tmp_path):
+    """`lint --fix --diff --unsafe-fixes` on the 69 published models: the diff applies with
+    patch, check_urdf prints the same tree of every model before and after, every fix's
+    finding is gone and none appears."""
+    check_urdf, patch = require_tool("check_urdf"), require_tool("patch")
+    package = tmp_path / "example-robot-data"
+    shutil.copytree(example_robot_data(), package, ignore=shutil.ignore_patterns("*.py", "__pycache__"))
+    robots = package / "robots"
+    models = sorted(p.relative_to(robots).as_posix() for p in robots.rglob("*.urdf"))
+    assert len(models) == 69
+    env = {key: value for key, value in os.environ.items() if key not in ("ROS_PACKAGE_PATH", "AMENT_PREFIX_PATH")}
+    common = ("--isolated", "-P", f"example-robot-data={package}", "--jobs", "2")
+
+    def lint(*options):
+        return run_cli("lint", *common, *options, *models, cwd=robots, env=env)
+
+    before = found_in(lint("--format", "json").stdout)
+    done = lint("--diff", "--unsafe-fixes")
+    assert done.returncode == 1, done.stderr.decode()
+    assert done.stdout.count(b"\n+++ b/") + done.stdout.startswith(b"+++ b/") >= 30  # the tensors CAD exports got wrong, mostly
+    trees = {m: subprocess.run([check_urdf, m], cwd=robots, capture_output=True).stdout for m in models}
+    applied = subprocess.run([patch, "-p1", "--binary"], input=done.stdout, cwd=robots, capture_output=True)
+    assert applied.returncode == 0, applied.stdout.decode()
+    assert {m: subprocess.run([check_urdf, m], cwd=robots, capture_output=True).stdout for m in models} == trees
+    report = lint("--format", "json").stdout
+    after = found_in(report)
+    assert not after - before, f"new findings: {after - before}"
+    assert sum(after.values()) < sum(before.values())
+    # nothing left that a second --fix would change
+    assert not [d for f in json.loads(report)["files"] for d in f["diagnostics"] if d["fix"] and d["fix"]["available"]]
