@@ -15,7 +15,7 @@ from hypothesis import strategies as st
 from lxml import etree
 
 from urdfcli.read.document import tag_name
-from urdfcli.read.positions import Source
+from urdfcli.read.positions import Text
 from urdfcli.read.xml import parse as parse_bytes
 
 XACRO = 'xmlns:xacro="http://www.ros.org/wiki/xacro"'
@@ -294,7 +294,7 @@ def test_positions_skip_markup_that_opens_no_element():
         '<?xml version="1.0"?>\n<!DOCTYPE robot [ <!ELEMENT robot ANY> ]>\n'
         "<robot><!-- <link> --><![CDATA[ <joint> ]]><?pi <x> ?>\r\n  <link a='>'\n/></robot>"
     )
-    source = Source(text)
+    source = Text(text)
     assert [source.position(start) for start in source.starts] == [(3, 1), (4, 3)]
     assert [(source.position(a), source.position(b), source.position(c)) for a, b, c in source.spans] == [
         ((3, 1), (3, 8), (5, 11)),
@@ -319,7 +319,7 @@ def test_element_starts_are_those_of_the_parsed_tree(pieces):
     except etree.XMLSyntaxError:
         return
     elements = list(root.iter(etree.Element))
-    source = Source(text)
+    source = Text(text)
     assert [source.tag(index) for index in range(len(elements))] == [element.tag for element in elements]
     assert len(source.starts) == len(elements)
 

@@ -4,8 +4,11 @@ at a cursor (also in a tag being typed), and the edits of its quick fixes."""
 from __future__ import annotations
 
 from urdfcli.lsp.actions import noqa, replace_element
-from urdfcli.lsp.outline import cursor, encoded, expression_name, macro_parameters, outline, substitution
-from urdfcli.read.positions import Source
+from urdfcli.lsp import outline as outlines
+from urdfcli.lsp.outline import cursor, encoded, expression_name, substitution
+from urdfcli.read.files import SourceFile
+from urdfcli.read.positions import Text
+from urdfcli.read.xacro_scan import macro_parameters
 
 LIBRARY = """<robot xmlns:xacro="http://www.ros.org/wiki/xacro">
   <xacro:include filename="$(find parts)/urdf/inertia.xacro"/>
@@ -20,6 +23,10 @@ LIBRARY = """<robot xmlns:xacro="http://www.ros.org/wiki/xacro">
   <transmission name="t"><joint name="not_a_definition"/></transmission>
 </robot>
 """
+
+
+def outline(file: str, text: str):
+    return outlines.outline(file, SourceFile(file, encoded(text)))
 
 
 def at(text: str, needle: str, offset: int = 0) -> int:
@@ -45,7 +52,7 @@ def test_a_text_that_is_not_well_formed_has_no_outline():
 
 
 def test_macro_parameters_keep_blocks_and_defaults():
-    assert macro_parameters("side parent *origin length:=0.04 mass=1 ^outer:=^|2") == [
+    assert [(p.shown, p.shown_default) for p in macro_parameters("side parent *origin length:=0.04 mass=1 ^outer:=^|2")] == [
         ("side", None), ("parent", None), ("*origin", None), ("length", "0.04"), ("mass", "1"), ("^outer", "^|2"),
     ]
 
@@ -77,35 +84,35 @@ def test_names_in_expressions_and_substitutions():
 
 
 def test_noqa_adds_a_comment_above_indented_as_the_element():
-    source = Source("<robot>\n    <axis xyz='0 0 0'/>\n</robot>\n")
+    source = Text("<robot>\n    <axis xyz='0 0 0'/>\n</robot>\n")
     edit = noqa(source, 2, "J007")
     text = source.text[: edit.start] + edit.text + source.text[edit.end :]
     assert text == "<robot>\n    <!-- urdfcli: noqa: J007 -->\n    <axis xyz='0 0 0'/>\n</robot>\n"
 
 
 def test_noqa_adds_the_code_to_a_comment_there_already():
-    above = Source("<robot>\n  <!-- urdfcli: noqa: I006 -->\n  <link name='a'/>\n</robot>")
+    above = Text("<robot>\n  <!-- urdfcli: noqa: I006 -->\n  <link name='a'/>\n</robot>")
     edit = noqa(above, 3, "I009")
     assert above.text[: edit.start] + edit.text + above.text[edit.end :] == "<robot>\n  <!-- urdfcli: noqa: I006, I009 -->\n  <link name='a'/>\n</robot>"
-    same_line = Source("<robot>\n  <link name='a'/>  <!-- urdfcli: noqa: S001 -->\n</robot>")
+    same_line = Text("<robot>\n  <link name='a'/>  <!-- urdfcli: noqa: S001 -->\n</robot>")
     edit = noqa(same_line, 2, "I009")
     assert edit.text == "<!-- urdfcli: noqa: S001, I009 -->" and same_line.text[edit.start : edit.end] == "<!-- urdfcli: noqa: S001 -->"
 
 
 def test_noqa_gives_no_edit_where_it_cannot_silence():
-    bare = Source("<robot>\n  <!-- urdfcli: noqa -->\n  <link name='a'/>\n</robot>")
+    bare = Text("<robot>\n  <!-- urdfcli: noqa -->\n  <link name='a'/>\n</robot>")
     assert noqa(bare, 3, "I009") is None  # silenced already
-    assert noqa(Source("<robot>\n"), 1, "X001") is None  # an unreadable file is reported whatever comments say
-    assert noqa(Source("<robot/>"), 5, "I009") is None
+    assert noqa(Text("<robot>\n"), 1, "X001") is None  # an unreadable file is reported whatever comments say
+    assert noqa(Text("<robot/>"), 5, "I009") is None
 
 
 def test_an_element_is_replaced_whole_and_indented():
-    source = Source('<robot>\n  <link name="a">\n    <inertial>\n      <mass value="1"/>\n    </inertial>\n  </link>\n</robot>\n')
+    source = Text('<robot>\n  <link name="a">\n    <inertial>\n      <mass value="1"/>\n    </inertial>\n  </link>\n</robot>\n')
     edit = replace_element(source, 3, 5, "<inertial>\n  <mass value='2'/>\n</inertial>")
     replaced = source.text[: edit.start] + edit.text + source.text[edit.end :]
     assert replaced == "<robot>\n  <link name=\"a\">\n    <inertial>\n      <mass value='2'/>\n    </inertial>\n  </link>\n</robot>\n"
     assert replace_element(source, 3, 4, "<x/>") is None  # no element starts there
-    assert replace_element(Source("<robot>\n  <link>\n"), 2, 3, "<x/>") is None  # not well-formed
+    assert replace_element(Text("<robot>\n  <link>\n"), 2, 3, "<x/>") is None  # not well-formed
 
 
 def test_an_editors_text_is_encoded_as_its_declaration_says():

@@ -53,11 +53,11 @@ def test_a_comment_in_a_utf16_file_silences_too(tmp_path):
 
 def test_a_file_whose_bytes_hold_no_comment_is_not_read_again(tmp_path, monkeypatch):
     """The input's bytes tell, while they are read, that no suppression comment is in them."""
-    from urdfcli.read.positions import Sources
+    from urdfcli.project import linter
 
     asked = []
-    text_of = Sources.text
-    monkeypatch.setattr(Sources, "text", lambda self, name, containing=None: asked.append(name) or text_of(self, name, containing))
+    text_of = linter._text_holding
+    monkeypatch.setattr(linter, "_text_holding", lambda files, name, mark: asked.append(name) or text_of(files, name, mark))
     assert codes(tmp_path, SENSOR.format(comment="")) == [(7, "I006")]
     assert asked == []
     assert codes(tmp_path, SENSOR.format(comment="<!-- urdfcli: noqa: I006 -->")) == []

@@ -11,8 +11,14 @@ import pytest
 from conftest import run_cli
 from ros_workspace import WHEEL, XACRO, edit, line_of, make_colcon_workspace, make_repository, package_xml
 
-from urdfcli.project.workspace import Index, read_source, resolve_include
+from urdfcli.project.workspace import Index, resolve_include, workspace_file
+from urdfcli.read.files import SourceFiles
 from urdfcli.read.packages import PackageIndex, PackageResolver
+
+
+def read_source(path):
+    """What reading a file (not expanding it) tells."""
+    return workspace_file(path, SourceFiles().get(path))
 
 
 def write(path: Path, text: str) -> Path:

@@ -12,11 +12,17 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from urdfcli.read import document as load_module
-from urdfcli.read.document import XACRO_NAMESPACES, is_xacro
+from urdfcli.read import document
+from urdfcli.read.document import XACRO_NAMESPACES
+from urdfcli.read.files import SourceFile
 from urdfcli.read.xml import XmlError
 from urdfcli.read.xml import parse as parse_bytes
 
 XACRO_NS = "http://www.ros.org/wiki/xacro"
+
+
+def is_xacro(data: bytes) -> bool:
+    return document.is_xacro(SourceFile("robot.urdf", data))
 
 
 def corpus() -> list[Path]:
@@ -71,7 +77,7 @@ def test_corpus_diagnostics_are_the_same_with_or_without_xacro(path, monkeypatch
     monkeypatch.chdir(tmp_path)
     plain = load(str(path))
     assert not plain.loaded.document.is_xacro
-    monkeypatch.setattr(load_module, "_told", lambda data: (True, None))  # every document taken for xacro
+    monkeypatch.setattr(load_module, "is_xacro", lambda file: True)  # every document taken for xacro
     expanded = load(str(path))
     assert expanded.loaded.document.is_xacro
     assert expanded.diagnostics == plain.diagnostics

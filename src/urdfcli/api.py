@@ -141,7 +141,7 @@ def run(paths: list[str], session: Session, progress: Progress | None = None) ->
     config_for = configured(session)
     try:
         if session.options.libraries:
-            entries = plan(paths, config_for, session.package_paths, session.packages, session.scans)
+            entries = plan(paths, config_for, session.package_paths, session.packages, session.files)
         else:
             entries = [Entry(path, model_targets(path, config_for(path).argument_sets(path))) for path in paths]
     except PackageError as error:
@@ -275,18 +275,18 @@ def fix(paths: list[str], session: Session, progress: Progress | None = None) ->
         written = False
         for file, edits in selection.edits.items():
             try:
-                data = session.sources.data(file)
+                data = session.files.read(file).data
                 new = edit_text(data, [(e.start, e.end, e.text) for e in edits])
             except (OSError, EditError) as error:
                 failed.append(f"{file}: {error}")
                 continue
             before.setdefault(file, data)
-            session.sources.give(file, new)
+            session.files.give(file, new)
             written = True
         if not written:
             break
         applied += selection.fixes
-    changed = {file: (data, session.sources.data(file)) for file, data in before.items()}
+    changed = {file: (data, session.files.read(file).data) for file, data in before.items()}
     return Fixed(found, applied, {file: pair for file, pair in changed.items() if pair[0] != pair[1]}, list(dict.fromkeys(failed)))
 
 

@@ -1,6 +1,6 @@
 """A session: one run of urdfcli, and everything it reads and learns.
 
-The source texts, the package look-ups, the configuration files, the mesh
+The source files, the package look-ups, the configuration files, the mesh
 summaries and the xacro worker belong to a session, never to a module: a
 program that checks models for hours (an editor server, a test suite) makes a
 session, or one per batch, and gets it all back when the session ends. Files
@@ -19,27 +19,27 @@ from .project.config import Configurations
 from .project.workspace import Index
 from .read.document import Inputs
 from .read.packages import PackageIndex, PackageResolver
-from .read.positions import Sources
+from .read.files import SourceFiles
 from .read.xacro import Expander
-from .read.xacro_scan import Scans
 
 
 class Session:
     """What the runs of one set of :class:`~urdfcli.options.Options` share: make one,
     use it for any number of inputs, and close it (or use it in a ``with`` block)."""
 
-    def __init__(self, options: Options | None = None) -> None:
+    def __init__(self, options: Options | None = None, files: SourceFiles | None = None) -> None:
+        """``files``: another session's source files, to share (an editor's two threads read the same buffers)."""
         self.options = options if options is not None else Options()
-        self.sources = Sources()
+        self.files = files if files is not None else SourceFiles()
         self.packages = PackageIndex(self._given)
         self.expander = Expander()
         self.meshes = MeshSummaries()
-        self._forget_sources()
+        self.index = Index(self.package_paths, self.packages, self.files)
         self.configs = self._configurations()
         PackageResolver(self.package_paths)  # a -P that is not NAME=DIR or a folder: said now (PackageError)
 
     def _given(self) -> dict[str, bytes]:
-        return self.sources.given()
+        return self.files.given()
 
     @property
     def package_paths(self) -> tuple[str, ...]:
@@ -58,18 +58,12 @@ class Session:
             other.configs = other._configurations()
         if options.package_paths != same.package_paths:
             PackageResolver(options.package_paths)
-            other.index = Index(options.package_paths, other.packages, other.scans)
+            other.index = Index(options.package_paths, other.packages, other.files)
         return other
 
     @property
     def inputs(self) -> Inputs:
-        return Inputs(self.sources, self.packages, self.expander)
-
-    def _forget_sources(self) -> None:
-        """The xacro files read statically (each once, for the workspace search and the
-        source rules), and the includes and folders found between them."""
-        self.scans = Scans(lambda name: self.sources.data(name), lambda: self.sources.given())
-        self.index = Index(self.package_paths, self.packages, self.scans)
+        return Inputs(self.files, self.packages, self.expander)
 
     def resolver(self, extra: Iterable[str], input_file: Path | None) -> PackageResolver:
         """The package look-up for one input: its configuration's package paths, then the session's."""
@@ -85,10 +79,10 @@ class Session:
     def close(self) -> None:
         """Stop the xacro worker and let go of what the session learnt."""
         self.expander.close()
-        self.sources = Sources()
+        self.files = SourceFiles()
         self.packages = PackageIndex(self._given)
         self.meshes = MeshSummaries()
-        self._forget_sources()
+        self.index = Index(self.package_paths, self.packages, self.files)
 
     def __enter__(self) -> Session:
         return self

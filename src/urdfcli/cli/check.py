@@ -85,7 +85,7 @@ def check(
             except api.UsageError as error:
                 raise fail(str(error)) from None
         report_unreadable(output, found.unreadable)
-        report.reporter(options.format)(found.results, output, "check", session.sources)
+        report.reporter(options.format)(found.results, output, "check", session.files)
         line = fixes.summary(outcome, asked)
         if line is not None and not quiet:
             output.err.file.write(line + "\n")

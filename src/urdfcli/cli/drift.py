@@ -45,6 +45,6 @@ def drift(
     output = Output.standard(color)
     with session_for(options) as run:
         results = api.drift(paths or ["."], session=run)
-        report.reporter(options.format)(results, output, "drift", run.sources)
+        report.reporter(options.format)(results, output, "drift", run.files)
     if any(d.severity.rank >= Severity.WARNING.rank for result in results for d in result.diagnostics):
         raise SystemExit(Exit.PROBLEMS)

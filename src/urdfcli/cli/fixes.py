@@ -72,11 +72,11 @@ def run(paths: list[str], session: Session, asked: Fixing, progress=None) -> Out
     changed = dict(fixed.changed)
     noqa = 0
     if asked.add_noqa:
-        edits = fixing.noqa_edits((d for r in fixed.run.results for d in r.diagnostics), session.sources)
+        edits = fixing.noqa_edits((d for r in fixed.run.results for d in r.diagnostics), session.files)
         for file, found in edits.items():
-            before = changed[file][0] if file in changed else session.sources.data(file)
+            before = changed[file][0] if file in changed else session.files.read(file).data
             try:
-                after = apply(session.sources.data(file), [(e.start, e.end, e.text) for e in found])
+                after = apply(session.files.read(file).data, [(e.start, e.end, e.text) for e in found])
             except EditError as error:
                 fixed.failed.append(f"{file}: {error}")
                 continue

@@ -84,7 +84,7 @@ def inertia(
             if result.audit is not None and options.targets:
                 result.audit = result.audit._replace(targets=tuple(build(result.loaded, p) for p in options.targets))
         write(output.err, (line for result in found.results for d in result.errors for line in diagnostic_lines(d, None)))
-        report.reporter(options.format)(found.results, output, "inertia", session.sources)
+        report.reporter(options.format)(found.results, output, "inertia", session.files)
     if found.unreadable:
         raise SystemExit(Exit.CANNOT_RUN)
     if problem_count(found.results):

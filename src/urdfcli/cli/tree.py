@@ -123,7 +123,7 @@ def report_errors(result: Result, output: Output, session: Session) -> bool:
     """Print the model's errors on stderr as `check` prints them; whether there were any.
     A missing or unreadable mesh is no error of the tree: it is left to `check`."""
     errors = [d for d in result.errors if REGISTRY[d.code].kind is not Kind.FILES]
-    write(output.err, (line for d in errors for line in diagnostic_lines(d, session.sources)))
+    write(output.err, (line for d in errors for line in diagnostic_lines(d, session.files)))
     loaded = result.loaded
     return bool(errors) or loaded is None or not loaded.modelled
 

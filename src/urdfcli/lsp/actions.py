@@ -15,7 +15,8 @@ from typing import NamedTuple
 from ..diagnostics import Diagnostic, Fix
 from ..project.fixing import select
 from ..project.suppressions import noqa_edit
-from ..read.positions import Source, Sources
+from ..read.files import SourceFiles
+from ..read.positions import Text
 from .places import Place, offset_place
 
 
@@ -25,7 +26,7 @@ class Edit(NamedTuple):
     text: str
 
 
-def noqa(source: Source, line: int, code: str) -> Edit | None:
+def noqa(source: Text, line: int, code: str) -> Edit | None:
     """The edit that silences ``code`` on the element whose ``<`` is on ``line``
     (1-based): the code added to a ``noqa`` comment already on that line or alone
     on the line above, else a comment of its own on a new line above, indented
@@ -34,7 +35,7 @@ def noqa(source: Source, line: int, code: str) -> Edit | None:
     return Edit(*found) if found is not None else None
 
 
-def replace_element(source: Source, line: int, column: int | None, replacement: str) -> Edit | None:
+def replace_element(source: Text, line: int, column: int | None, replacement: str) -> Edit | None:
     """The edit that replaces the element whose ``<`` is at ``line``:``column`` (the
     first on the line when no column is known) by ``replacement``, indented as the
     element is. None when the text is not well-formed, or holds no element there."""
@@ -52,14 +53,14 @@ def replace_element(source: Source, line: int, column: int | None, replacement: 
 
 
 # -- the fixes diagnostics carry ------------------------------------------------------------
-def fix_edits(fix: Fix, sources: Sources) -> tuple[tuple[Place, str], ...] | None:
+def fix_edits(fix: Fix, files: SourceFiles) -> tuple[tuple[Place, str], ...] | None:
     """A diagnostic's fix as the editor's edits (each file's text as the session has it,
     the editor's unsaved buffers included); None when it has none or a file cannot be read."""
     if not fix.available:
         return None
     found = []
     for edit in fix.edits:
-        source = sources.source(edit.file)
+        source = files.get(edit.file)
         if source is None:
             return None
         found.append((offset_place(os.path.abspath(edit.file), source, edit.start, edit.end), edit.text))

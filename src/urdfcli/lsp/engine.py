@@ -32,7 +32,8 @@ from ..project.config import ConfigError
 from ..project.workspace import resolve_include
 from ..read.document import STDIN
 from ..read.packages import PackageResolver
-from ..read.positions import Source, Sources
+from ..read.files import SourceFile, SourceFiles
+from ..read.positions import Text
 from ..read.xacro import Expander
 from ..report import fixes
 from ..report.escape import escape
@@ -106,12 +107,12 @@ class Checker:
     def sync(self, texts: dict[str, str]) -> None:
         """Let the editor's texts stand for their files; a file no longer open is read from disk again."""
         for path in [p for p in self.texts if p not in texts]:
-            self.session.sources.take_back(path)
+            self.session.files.take_back(path)
             del self.texts[path]
             self.runs.pop(path, None)
         for path, text in texts.items():
             if self.texts.get(path) != text:
-                self.session.sources.give(path, encoded(text))
+                self.session.files.give(path, encoded(text))
                 self.texts[path] = text
 
     def forget(self) -> None:
@@ -198,7 +199,7 @@ class Checker:
         return found
 
     def _uses_parameters(self, file: str, line: int | None, column: int | None) -> bool:
-        source = self.session.sources.source(file)
+        source = self.session.files.get(file)
         if source is None or not line or source.line(line) is None:
             return False
         return navigation.uses_parameters(source.text, offset(source, line - 1, (column or 1) - 1))
@@ -215,7 +216,7 @@ class Checker:
         return Mark(Diagnostic("", message, Location(path), severity=severity), self.place(path, None, None), escape(message))
 
     def place(self, file: str, line: int | None, column: int | None) -> Place:
-        return token_place(file, self.session.sources.source(file), line, column)
+        return token_place(file, self.session.files.get(file), line, column)
 
     # -- quick fixes that need the model ---------------------------------------------
     def inertial_fixes(self, path: str, code: str, subjects: Iterable[str]) -> list[Fix]:
@@ -257,7 +258,7 @@ class Checker:
         return self._replace(_absolute(where.file), where.line, "<inertial", suggested, f"Replace the <inertial> of link '{link.name}' by a uniform body filling its geometry")
 
     def _replace(self, file: str, line: int, tag: str, replacement: str, title: str) -> Fix | None:
-        source = self.session.sources.source(file)
+        source = self.session.files.get(file)
         text = source.line(line) if source is not None else None
         column = text.find(tag) + 1 if text is not None and tag in text else None
         edit = actions.replace_element(source, line, column, replacement) if column else None
@@ -271,12 +272,12 @@ class Navigator:
     thread: from the editor's texts (and the files on disk), their outlines, and the
     models of the last checks handed over by :meth:`keep`."""
 
-    def __init__(self, package_paths: tuple[str, ...] = ()) -> None:
-        self.session = Session(Options(RuleSet.LINT, package_paths=package_paths))  # its configurations and package look-ups; it never expands
-        self.sources = Sources()
+    def __init__(self, package_paths: tuple[str, ...] = (), files: SourceFiles | None = None) -> None:
+        # its configurations and package look-ups (it never expands); ``files`` the checks' (one object per buffer)
+        self.session = Session(Options(RuleSet.LINT, package_paths=package_paths), files)
         self.texts: dict[str, str] = {}
         self.runs: dict[str, api.Run] = {}  # each open file's last check that read models
-        self._outlines: dict[str, tuple[str, Outline]] = {}  # file -> (text, its last well-formed outline)
+        self._outlines: dict[str, tuple[SourceFile, Outline]] = {}  # file -> (its source, its last well-formed outline)
         self._places: dict[int, tuple] = {}  # id(run) -> (run, its links' and joints' places)
         self.checked_texts: dict[str, str] = {}  # open file -> its text as the last check of it read it
         self._run_texts: dict[str, dict[str, str]] = {}  # open file -> the texts its run in ``runs`` was made with
@@ -284,7 +285,7 @@ class Navigator:
 
     def sync(self, texts: dict[str, str]) -> None:
         for path in [p for p in self.texts if p not in texts]:
-            self.sources.take_back(path)
+            self.session.files.take_back(path)
             del self.texts[path]
             self.runs.pop(path, None)
             self._run_texts.pop(path, None)
@@ -296,7 +297,7 @@ class Navigator:
                 del self._outlines[path]
         for path, text in texts.items():
             if self.texts.get(path) is not text:
-                self.sources.give(path, encoded(text))
+                self.session.files.give(path, encoded(text))
                 self.texts[path] = text
 
     def keep(self, path: str, run: api.Run | None, texts: dict[str, str] | None = None) -> None:
@@ -311,10 +312,7 @@ class Navigator:
         self._places = {key: value for key, value in self._places.items() if key in live}
 
     def forget(self) -> None:
-        self.session.forget()
-        self.sources = Sources()
-        for path, text in self.texts.items():
-            self.sources.give(path, encoded(text))
+        self.session.forget()  # (a file on disk is read again anyway when it changes)
 
     # -- requests -------------------------------------------------------------------
     def hover(self, path: str, line: int, character: int) -> str | None:
@@ -336,7 +334,7 @@ class Navigator:
 
     def noqa(self, path: str, code: str, line: int) -> Fix | None:
         """The ``noqa`` comment that silences one diagnostic of ``path`` (its 0-based line)."""
-        source = self.sources.source(path)
+        source = self.session.files.get(path)
         edit = actions.noqa(source, line + 1, code) if source is not None and code in REGISTRY else None
         if edit is None:
             return None
@@ -347,7 +345,7 @@ class Navigator:
         `lint --fix` writes them: only while the texts they edit are those checked."""
         found = []
         for fix in actions.own_fixes(self._diagnostics(path), path, code, line):
-            edits = actions.fix_edits(fix, self.sources) if self._unchanged(path, fix) else None
+            edits = actions.fix_edits(fix, self.session.files) if self._unchanged(path, fix) else None
             if edits is not None:
                 found.append(Fix(escape(actions.fix_title(fix)), edits))
         return found
@@ -356,7 +354,7 @@ class Navigator:
         """Every safe fix of the last check of ``path`` (what `urdfcli lint --fix` applies
         first), as one change of the files; None when there is none, or the texts changed."""
         chosen = [fix for fix in actions.fix_all(self._diagnostics(path), path) if self._unchanged(path, fix)]
-        edits = [edit for fix in chosen for edit in actions.fix_edits(fix, self.sources) or ()]
+        edits = [edit for fix in chosen for edit in actions.fix_edits(fix, self.session.files) or ()]
         return Fix("Fix all safe urdfcli problems", tuple(edits)) if edits else None
 
     def _diagnostics(self, path: str) -> list[Diagnostic]:
@@ -370,11 +368,11 @@ class Navigator:
         return all(self.texts.get(file) == made_with.get(file) for file in {os.path.abspath(e.file) for e in fix.edits})
 
     def place(self, file: str, line: int | None, column: int | None) -> Place:
-        return token_place(file, self.sources.source(file), line, column)
+        return token_place(file, self.session.files.get(file), line, column)
 
-    def _at(self, path: str, line: int, character: int) -> tuple[Source, int]:
+    def _at(self, path: str, line: int, character: int) -> tuple[Text, int]:
         """The text of ``path`` as the editor has it now, and the offset of a position in it."""
-        source = self.sources.source(path) or Source("")
+        source = self.session.files.get(path) or Text("")
         return source, offset(source, line, character)
 
     def scope(self, path: str) -> navigation.Scope:
@@ -427,16 +425,16 @@ class Navigator:
 
     def outline(self, file: str) -> Outline | None:
         """The file's outline; while its text is not well-formed, the last one that was."""
-        source = self.sources.source(file)
+        source = self.session.files.get(file)
         if source is None:
             return None
         known = self._outlines.get(file)
-        if known is not None and known[0] is source.text:
+        if known is not None and known[0] is source:
             return known[1]
-        found = outline(file, source.text)
+        found = outline(file, source)
         if found is None:
             return known[1] if known else None
-        self._outlines[file] = (source.text, found)
+        self._outlines[file] = (source, found)
         return found
 
     def _resolver(self, file: str) -> PackageResolver:

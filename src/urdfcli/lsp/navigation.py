@@ -17,7 +17,8 @@ from typing import NamedTuple
 from ..diagnostics import Location
 from ..project.workspace import shown
 from ..report.escape import escape
-from .outline import XACRO_KEYWORDS, Cursor, Definition, Outline, cursor, expression_name, expression_names, macro_parameters, substitution
+from ..read.xacro_scan import macro_parameters
+from .outline import XACRO_KEYWORDS, Cursor, Definition, Outline, cursor, expression_name, expression_names, substitution
 
 XACRO = "xacro:"
 _MACRO_START = re.compile(r"<xacro:macro\b")
@@ -96,9 +97,9 @@ def _parameter(text: str, offset: int, name: str) -> tuple[str, str, str | None]
     macro = _macro_at(text, offset)
     if macro is None:
         return None
-    for parameter, default in macro_parameters(macro[1]):
-        if parameter.lstrip("*") == name:
-            return macro[0], parameter, default
+    for parameter in macro_parameters(macro[1]):
+        if parameter.name == name:
+            return macro[0], parameter.shown, parameter.shown_default
     return None
 
 
@@ -133,7 +134,7 @@ def uses_parameters(text: str, offset: int) -> bool:
     if macro is None:
         return False
     end = text.find(">", start, start + _LONGEST_TAG)
-    parameters = {name.lstrip("*^") for name, _ in macro_parameters(macro[1])}
+    parameters = {p.name.lstrip("^") for p in macro_parameters(macro[1])}
     return bool(parameters & expression_names(text[start : end if end > 0 else start + _LONGEST_TAG]))
 
 
@@ -166,7 +167,8 @@ def _macro_hover(name: str, scope: Scope) -> str | None:
     if not found:
         return None
     macro = found[0]
-    parameters = ", ".join(code(p if d is None else f"{p}:={d}") for p, d in macro_parameters(macro.detail)) or "none"
+    shown = [(p.shown, p.shown_default) for p in macro_parameters(macro.detail)]
+    parameters = ", ".join(code(p if d is None else f"{p}:={d}") for p, d in shown) or "none"
     return f"**macro** {code(name)}\n\nparameters: {parameters}\n\ndefined at {where(macro)}"
 
 
@@ -292,7 +294,7 @@ def _macro_items(scope: Scope, start: int, end: int) -> list[Item]:
 
 def _name_items(text: str, offset: int, scope: Scope, start: int) -> list[Item]:
     macro = _macro_at(text, offset)
-    items = [Item(p.lstrip("*"), "parameter", escape(f"parameter of {macro[0]}"), start, offset) for p, _ in macro_parameters(macro[1]) if p.isprintable()] if macro else []
+    items = [Item(p.name, "parameter", escape(f"parameter of {macro[0]}"), start, offset) for p in macro_parameters(macro[1]) if p.name.isprintable()] if macro else []
     taken = {item.label for item in items}
     properties = scope.names("property")
     return items + [Item(name, "property", escape(d.detail), start, offset) for name, d in sorted(properties.items()) if name not in taken and name.isprintable()]

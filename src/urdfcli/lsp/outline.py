@@ -13,13 +13,10 @@ import re
 from pathlib import Path
 from typing import NamedTuple
 
-from lxml import etree
-
-from ..project.workspace import Source as Declared
-from ..project.workspace import read_source
+from ..project.workspace import WorkspaceFile, workspace_file
 from ..read.document import XACRO_NAMESPACES, local_name, namespace_of
-from ..read.positions import Source, declared_encoding
-from ..read.xml import XmlError, parse
+from ..read.files import SourceFile
+from ..read.positions import declared_encoding
 
 XACRO_KEYWORDS = ("arg", "attribute", "call", "element", "if", "include", "insert_block", "macro", "property", "unless")
 _TAG_NAME = re.compile(r"<([A-Za-z_][\w.:-]*)")
@@ -57,7 +54,7 @@ class Outline(NamedTuple):
     file: str
     definitions: tuple[Definition, ...]
     includes: tuple[Written, ...]
-    declared: Declared  # what resolving its includes needs: its arguments' defaults, its properties' values
+    declared: WorkspaceFile  # what resolving its includes needs: its arguments' defaults, its properties' values
 
     def named(self, kind: str, name: str) -> list[Definition]:
         return [d for d in self.definitions if d.kind == kind and d.name == name]
@@ -77,26 +74,21 @@ def is_xacro_element(element) -> bool:
     return element.prefix == "xacro" or namespace_of(element.tag) in XACRO_NAMESPACES
 
 
-def outline(file: str, text: str) -> Outline | None:
-    """What ``text`` (the source of ``file``) defines; None when it is not well-formed XML."""
-    data = encoded(text)
-    try:
-        root = parse(data)
-    except XmlError:
+def outline(file: str, source: SourceFile) -> Outline | None:
+    """What the source of ``file`` defines; None when it is not well-formed XML."""
+    if source.tree is None:
         return None
-    elements = list(root.iter(etree.Element))
-    source = Source(text)
-    starts = source.element_starts(len(elements))
     definitions: list[Definition] = []
     includes: list[Written] = []
-    for index, element in enumerate(elements):
-        line, column = source.position(starts[index]) if starts is not None else (element.sourceline or 1, 1)
+    for element in source.elements:
+        line, column = source.place_of(element)
+        column = column or 1
         found = _definition(element, file, line, column)
         if found is not None:
             definitions.append(found)
         elif is_xacro_element(element) and local_name(element.tag) == "include" and element.get("filename"):
             includes.append(Written(element.get("filename"), line, column))
-    return Outline(file, tuple(definitions), tuple(includes), read_source(Path(file), data))
+    return Outline(file, tuple(definitions), tuple(includes), workspace_file(Path(file), source))
 
 
 def _definition(element, file: str, line: int, column: int) -> Definition | None:
@@ -131,16 +123,6 @@ def _enclosing_macro(element) -> str | None:
         if is_xacro_element(ancestor) and local_name(ancestor.tag) == "macro":
             return ancestor.get("name")
     return None
-
-
-def macro_parameters(params: str) -> list[tuple[str, str | None]]:
-    """A macro's ``params`` as (name, default) pairs: ``*block`` names keep their star;
-    ``:=`` and ``=`` give a default (as written: ``^|0.1`` is the outer value, else 0.1)."""
-    found = []
-    for word in params.split():
-        name, separator, default = word.partition(":=") if ":=" in word else word.partition("=")
-        found.append((name, default if separator else None))
-    return found
 
 
 # -- the text at a cursor ---------------------------------------------------------

@@ -6,7 +6,7 @@ from __future__ import annotations
 import re
 from typing import NamedTuple
 
-from ..read.positions import Source
+from ..read.positions import Text
 
 _TOKEN = re.compile(r"<?[^\s=/>\"']+")
 
@@ -23,7 +23,7 @@ class Place(NamedTuple):
     end: Point
 
 
-def token_place(file: str, source: Source | None, line: int | None, column: int | None) -> Place:
+def token_place(file: str, source: Text | None, line: int | None, column: int | None) -> Place:
     """The place of a 1-based line and column: the tag name or attribute name that
     starts there, the written part of the line when no column is known, and the
     start of the file when not even a line is (or the file cannot be read)."""
@@ -41,17 +41,17 @@ def token_place(file: str, source: Source | None, line: int | None, column: int 
     return Place(file, Point(line - 1, start, text), Point(line - 1, max(end, start), text))
 
 
-def offset_place(file: str, source: Source, start: int, end: int) -> Place:
+def offset_place(file: str, source: Text, start: int, end: int) -> Place:
     """The place between two offsets of a source's text."""
     return Place(file, _point(source, start), _point(source, end))
 
 
-def _point(source: Source, offset: int) -> Point:
+def _point(source: Text, offset: int) -> Point:
     line, column = source.position(offset)
     return Point(line - 1, column - 1, source.line(line) or "")
 
 
-def offset(source: Source, line: int, character: int) -> int:
+def offset(source: Text, line: int, character: int) -> int:
     """The offset of a 0-based line and character (clamped to the line, and to the text)."""
     text = source.line(line + 1)
     if text is None:

@@ -152,7 +152,7 @@ class UrdfServer(LanguageServer):
     def __init__(self, package_paths: tuple[str, ...] = ()) -> None:
         super().__init__("urdfcli", __version__, protocol_cls=Protocol, text_document_sync_kind=types.TextDocumentSyncKind.Incremental)
         self.checker = Checker(package_paths)
-        self.navigator = Navigator(package_paths)
+        self.navigator = Navigator(package_paths, self.checker.session.files)
         self.thread = CheckingThread()
         self.contributions: dict[str, Contribution] = {}  # open file -> what its last check found
         self.dirty: dict[str, float] = {}  # open file -> when a check of it was asked for (the latest first)

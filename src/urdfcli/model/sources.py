@@ -18,7 +18,7 @@ from collections.abc import Callable, Iterable
 from functools import cached_property
 from typing import NamedTuple
 
-from ..read.xacro_scan import Parameter, Place, XacroFile, XacroGlobals, free_names, literal_calls, macro_parameters
+from ..read.xacro_scan import Parameter, Place, XacroFile, XacroGlobals, free_names, literal_calls
 
 
 class Facts(NamedTuple):
@@ -48,7 +48,7 @@ def chain(file: XacroFile, macro: int | None) -> list[int]:
 
 
 def parameters(file: XacroFile, macro: int) -> tuple[Parameter, ...]:
-    return macro_parameters(file.macros[macro].params)
+    return file.macros[macro].parameters
 
 
 def bound(file: XacroFile, macro: int | None) -> frozenset[str]:

@@ -35,7 +35,7 @@ from collections.abc import Iterable
 from typing import NamedTuple
 
 from ..diagnostics import Call, Change, Diagnostic, Edit, Fix, InsertChild, SetAttribute
-from ..read.positions import Source
+from ..read.positions import Text
 from ..read.xacro_scan import TAIL, TEXT, XacroFile, free_names, lexed, macro_parameters
 from .load import Loaded
 from .sources import bound, file_facts
@@ -66,7 +66,7 @@ class _Site(NamedTuple):
     """A source element that a value of the model was written in."""
 
     file: str
-    source: Source
+    source: Text
     scan: XacroFile | None  # None for a plain URDF
     element: int  # its index in the file, in document order
     start: int  # the offset of its ``<``
@@ -342,7 +342,7 @@ def _absolute(name: str) -> str:
     return name if name.startswith("<") else os.path.abspath(name)
 
 
-def _index(source: Source, start: int | None) -> int | None:
+def _index(source: Text, start: int | None) -> int | None:
     """The index (document order) of the element whose ``<`` is at ``start``."""
     if start is None or not source.spans:
         return None
@@ -351,7 +351,7 @@ def _index(source: Source, start: int | None) -> int | None:
     return found if found < len(starts) and starts[found] == start and found < len(source.spans) else None
 
 
-def _tag(source: Source, start: int) -> str | None:
+def _tag(source: Text, start: int) -> str | None:
     found = _NAME.match(source.text, start)
     return found.group(1) if found else None
 
@@ -362,7 +362,7 @@ def _indentation(text: str, offset: int) -> str:
     return before if not before.strip() else before[: len(before) - len(before.lstrip())]
 
 
-def _is_xacro_tag(source: Source, element: int) -> bool:
+def _is_xacro_tag(source: Text, element: int) -> bool:
     tag = _tag(source, source.spans[element][0]) or ""
     return tag.startswith("xacro:")
 
@@ -435,7 +435,7 @@ def place_fixes(loaded: Loaded, diagnostics: list[Diagnostic]) -> list[Diagnosti
 
 def placer_line(loaded: Loaded, edit: Edit) -> str:
     """``FILE:LINE`` of an edit."""
-    source = loaded.document.sources.source(edit.file)
+    source = loaded.document.files.get(edit.file)
     return f"{edit.file}:{source.position(edit.start)[0]}" if source is not None else edit.file
 
 

@@ -91,7 +91,7 @@ def _common_tail(a: tuple[str, ...], b: tuple[str, ...]) -> int:
 
 def generated_from(urdf: Path, session: Session) -> Source | None:
     """The xacro file the URDF ``urdf`` was generated from, or None."""
-    given = session.sources.given().get(os.path.abspath(urdf))  # an editor's unsaved text
+    given = session.files.given().get(os.path.abspath(urdf))  # an editor's unsaved text
     try:
         if given is not None:
             head = given[:HEAD_BYTES]
@@ -168,7 +168,7 @@ def regeneration_fix(loaded: Loaded, source: Source, found: Loaded, arguments: d
     title = f"regenerate {_name(loaded)} from {_shown(source.file)}"
     if arguments:
         return Fix(title, Applicability.SAFE, reason=f"it may have been generated with other values of {', '.join(arguments)}: regenerate it by hand with those")
-    written = loaded.document.sources.source(loaded.document.shown)
+    written = loaded.document.files.get(loaded.document.shown)
     expanded = found.document.expanded_text
     if written is None or expanded is None:
         return Fix(title, Applicability.SAFE, reason="the texts to compare cannot be read")
@@ -268,14 +268,15 @@ def _explaining_arguments(changes: tuple[Change, ...], source: Loaded, session: 
         lines.add((location.file, location.line))
         lines.update((call.file, call.line) for call in location.trace)
     names: set[str] = set()
-    sources = source.document.sources
+    files = source.document.files
     for file, line in lines:
-        text = sources.line(file, line) if line else None
+        text = files.line(file, line) if line else None
         if text and "$(" in text:
             names.update(_ARGUMENT.findall(text))
     defaults: dict[str, str | None] = {}
     for file in [source.document.shown, *source.document.includes]:
-        scanned = session.scans.get(file)
+        read = session.files.get(file)
+        scanned = read.scan if read is not None else None
         if scanned is not None:
             for name, value in scanned.arguments:
                 defaults.setdefault(name, value)
@@ -318,7 +319,7 @@ def regeneration(loaded: Loaded, config: Config, session: Session) -> str | None
     if isinstance(found, str) or found.document.expanded_text is None or compare(loaded, found).same:
         return None
     try:
-        text = session.sources.data(str(document.file)).decode("utf-8")
+        text = session.files.read(document.file).data.decode("utf-8")
     except (OSError, UnicodeDecodeError):
         return None
     return regenerated(text, found.document.expanded_text)

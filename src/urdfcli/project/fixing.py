@@ -17,7 +17,7 @@ from collections.abc import Iterable
 from typing import NamedTuple
 
 from ..diagnostics import Diagnostic, Edit, Fix, Severity
-from ..read.positions import Sources
+from ..read.files import SourceFiles
 from .suppressions import noqa_edit
 
 MAX_ROUNDS = 10  # a fix may let another be found; this many rounds at most, as ruff does
@@ -80,7 +80,7 @@ def counts(diagnostics: Iterable[Diagnostic], unsafe: bool) -> tuple[int, int]:
     return fixable, hidden
 
 
-def noqa_edits(diagnostics: Iterable[Diagnostic], sources: Sources) -> dict[str, list[Edit]]:
+def noqa_edits(diagnostics: Iterable[Diagnostic], files: SourceFiles) -> dict[str, list[Edit]]:
     """For every warning and error, the ``noqa`` comment that silences it: one per
     element, naming every code found there. A diagnostic with no place in a source
     (a line of the xacro expansion, a whole file) gets none."""
@@ -89,7 +89,7 @@ def noqa_edits(diagnostics: Iterable[Diagnostic], sources: Sources) -> dict[str,
         location = diagnostic.location
         if (diagnostic.severity or Severity.INFO) is Severity.INFO or location.expanded or not location.line:
             continue
-        source = sources.source(location.file)
+        source = files.get(location.file)
         found = noqa_edit(source, location.line, [diagnostic.code], location.column) if source is not None else None
         if found is None:
             continue
@@ -99,7 +99,7 @@ def noqa_edits(diagnostics: Iterable[Diagnostic], sources: Sources) -> dict[str,
             codes.append(diagnostic.code)
     edits: dict[str, list[Edit]] = defaultdict(list)
     for (file, _, _), (line, column, codes) in groups.items():
-        found = noqa_edit(sources.source(file), line, codes, column)
+        found = noqa_edit(files.get(file), line, codes, column)
         if found is not None:
             edits[file].append(Edit(file, *found))
     return dict(edits)

@@ -16,6 +16,8 @@ from ..model.inertia import inertial_fix
 from ..model.load import Loaded
 from ..model.written import place_fixes
 from ..read.document import SUPPRESSION_MARK
+from ..read.files import SourceFiles
+from ..read.positions import may_contain
 from ..rules import REGISTRY, Kind, Remedy, Rule, RuleSet
 from . import suppressions
 from .config import Config
@@ -105,7 +107,7 @@ def configure(loaded: Loaded, diagnostics: list[Diagnostic], config: Config, rul
             named.setdefault(suppressions.file_key(file), file)
         if document.may_suppress is False:  # told while its bytes were read
             named.pop(suppressions.file_key(document.shown), None)
-        texts = ((file, document.sources.text(file, containing=SUPPRESSION_MARK)) for file in sorted(named.values()))
+        texts = ((file, _text_holding(document.files, file, SUPPRESSION_MARK)) for file in sorted(named.values()))
         found = [s for file, text in texts if text is not None for s in suppressions.parse(file, text)]
     written = document.origins.written() if found and document.origins is not None else None
     kept = suppressions.apply(selected, found, lambda code: ran(code, rule_set) and enabled(code, path), written)
@@ -115,6 +117,13 @@ def configure(loaded: Loaded, diagnostics: list[Diagnostic], config: Config, rul
     kept = [with_severity(d, config) for d in kept]
     kept.sort(key=Diagnostic.sort_key)
     return kept
+
+
+def _text_holding(files: SourceFiles, name: str, mark: str) -> str | None:
+    """The text of a file, when its bytes may hold ``mark`` (ASCII): most files need
+    no decoding then. None when unreadable."""
+    found = files.get(name)
+    return found.text if found is not None and may_contain(found.data, mark) else None
 
 
 def _is(diagnostic: Diagnostic, kind: Kind) -> bool:

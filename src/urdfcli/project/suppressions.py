@@ -25,7 +25,7 @@ from typing import NamedTuple
 
 from ..diagnostics import Diagnostic, Location
 from ..read.document import SUPPRESSION_MARK
-from ..read.positions import Source
+from ..read.positions import Text
 from ..rules import REGISTRY
 from .config import matches, selector
 
@@ -92,7 +92,7 @@ def parse(file: str, text: str) -> list[Suppression]:
     """Every urdfcli suppression comment in one source text."""
     if SUPPRESSION_MARK not in text:
         return []
-    source = Source(text)
+    source = Text(text)
     text = source.text
     found = []
     for match in COMMENT.finditer(text):
@@ -113,7 +113,7 @@ def parse(file: str, text: str) -> list[Suppression]:
     return found
 
 
-def _targets(source: Source, start: int, end: int) -> list[tuple[Position, Position]]:
+def _targets(source: Text, start: int, end: int) -> list[tuple[Position, Position]]:
     """The elements a comment at [start, end) silences: those whose start tag shares
     a line with it, else the first element after it. Empty when unknown."""
     spans = source.spans
@@ -182,7 +182,7 @@ def apply(diagnostics: list[Diagnostic], suppressions: list[Suppression], enable
 UNSILENCEABLE = ("X001", "X002", "U001", "U002")
 
 
-def noqa_edit(source: Source, line: int, codes: list[str], column: int | None = None) -> tuple[int, int, str] | None:
+def noqa_edit(source: Text, line: int, codes: list[str], column: int | None = None) -> tuple[int, int, str] | None:
     """The edit (start, end, text) of ``source``'s text that silences ``codes`` on the
     element at ``line`` (and ``column``; the element whose start tag holds that place):
     the codes added to a ``noqa`` comment already on the element's line or alone on
@@ -214,7 +214,7 @@ def noqa_edit(source: Source, line: int, codes: list[str], column: int | None = 
     return line_start, line_start, f"{indentation}<!-- urdfcli: noqa: {', '.join(codes)} -->\n"
 
 
-def _element_line(source: Source, line: int, column: int | None) -> int:
+def _element_line(source: Text, line: int, column: int | None) -> int:
     """The line of the ``<`` of the element whose start tag holds ``line``:``column`` (the
     first non-blank character of the line without a column): a comment may not be
     written inside a tag written over several lines."""

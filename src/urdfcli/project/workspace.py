@@ -35,15 +35,16 @@ from ..diagnostics import Diagnostic, Location, Severity
 from ..model.sources import XacroSources
 from ..read.document import STDIN, Document
 from ..read.packages import MAX_SCAN_DIRS, SKIP_DIRS, PackageIndex, PackageResolver
-from ..read.xacro_scan import Scans, XacroFile, XacroGlobals, scan, shown
+from ..read.files import SourceFile, SourceFiles
+from ..read.xacro_scan import XacroFile, XacroGlobals, shown
 from ..report.result import Library, Result
 
 XACRO_SUFFIXES = (".xacro", ".urdf")
 _SUBSTITUTION = re.compile(r"\$\(\s*(\w+)\s*([^()]*?)\s*\)|\$\{\s*([A-Za-z_]\w*)\s*\}")
 
 
-class Source(NamedTuple):
-    """What reading a file (not expanding it) tells about it."""
+class WorkspaceFile(NamedTuple):
+    """What reading a file (not expanding it) tells about it in its workspace."""
 
     path: Path  # resolved
     kind: str  # "model" or "library"
@@ -52,24 +53,19 @@ class Source(NamedTuple):
     properties: tuple[tuple[str, str], ...] = ()  # xacro:property values written as attributes
 
 
-def read_source(path: Path, data: bytes | None = None) -> Source:
-    """Read a file's kind and includes. Never raises: an unreadable file is a model."""
-    try:
-        data = path.read_bytes() if data is None else data
-    except OSError:
-        return Source(path, "model")
+def workspace_file(path: Path, file: SourceFile | None) -> WorkspaceFile:
+    """A file's kind and includes, from its source file (None: unreadable). Never
+    raises: an unreadable file, or one that is not XML, is a model (loading it says why)."""
+    if file is None:
+        return WorkspaceFile(path, "model")
     named_xacro = path.name.endswith(".xacro")
-    if not named_xacro and b"xacro" not in data:
-        return Source(path, "model")  # plain URDF
-    return source_of(path, scan(data, shown(path)), named_xacro)
-
-
-def source_of(path: Path, found: XacroFile | None, named_xacro: bool = True) -> Source:
-    """A file's kind and includes, from its scan (None: not XML, so a model: loading it says why)."""
+    if not named_xacro and b"xacro" not in file.data:
+        return WorkspaceFile(path, "model")  # plain URDF
+    found = file.scan
     if found is None or (not named_xacro and not found.uses_xacro):
-        return Source(path, "model")
+        return WorkspaceFile(path, "model")
     kind = "model" if found.makes else "library"
-    return Source(path, kind, tuple(found.includes), tuple(found.arguments), tuple(found.properties))
+    return WorkspaceFile(path, kind, tuple(found.includes), tuple(found.arguments), tuple(found.properties))
 
 
 class Include(NamedTuple):
@@ -89,7 +85,7 @@ class Include(NamedTuple):
         return True
 
 
-def resolve_include(text: str, source: Source, find: Callable[[str], Path | None], arguments: dict[str, str] | None = None) -> Include:
+def resolve_include(text: str, source: WorkspaceFile, find: Callable[[str], Path | None], arguments: dict[str, str] | None = None) -> Include:
     """Where ``<xacro:include filename=text>`` in ``source`` leads, statically."""
     values = {**dict(source.arguments), **(arguments or {})}
     properties = dict(source.properties)
@@ -190,18 +186,18 @@ def source_files(root: Path, recursive: bool = True) -> Iterable[Path]:
 
 
 class Index:
-    """Sources read once each (the files of the folders searched, and any file an
-    include leads to), and the includes between them."""
+    """The files of the folders searched, and any file an include leads to, each read
+    once (through the session's files), and the includes between them."""
 
-    def __init__(self, package_paths: tuple[str, ...] = (), packages: PackageIndex | None = None, scans: Scans | None = None):
-        self.sources: dict[Path, Source] = {}
+    def __init__(self, package_paths: tuple[str, ...] = (), packages: PackageIndex | None = None, files: SourceFiles | None = None):
         self.scanned: dict[Path, list[Path]] = {}  # a searched folder -> its files
         self._package_paths = package_paths
         self.packages = packages if packages is not None else PackageIndex()
-        self.scans = scans  # a session's scans: each xacro file parsed once for the search and the source rules
+        self.files = files if files is not None else SourceFiles()
         self._resolvers: dict[Path | None, PackageResolver] = {}
-        self._edges: dict[tuple[Path, tuple], tuple[Source, list[Include]]] = {}
-        self._kinds: dict[Path, tuple[Source, str]] = {}
+        self._edges: dict[tuple[Path, tuple], tuple[WorkspaceFile, list[Include]]] = {}
+        self._kinds: dict[Path, tuple[WorkspaceFile, str]] = {}
+        self._read: set[Path] = set()  # the files not named .xacro asked for
         self._listed: dict[tuple[Path, bool], tuple[int, list[Path]]] = {}
 
     def scan(self, roots: list[Path], recursive: bool = True) -> list[Path]:
@@ -245,24 +241,20 @@ class Index:
                 self._resolvers[package] = self.packages.resolver((), file)
         return self._resolvers[package].find
 
-    def source(self, file: Path) -> Source:
-        """What reading ``file`` tells; through the session's scans (read again when the
-        file changes) when there are some."""
-        if self.scans is not None and file.name.endswith(".xacro"):
-            return source_of(file, self.scans.get(shown(file)))
-        if file not in self.sources:
-            self.sources[file] = read_source(file)
-        return self.sources[file]
+    def source(self, file: Path) -> WorkspaceFile:
+        """What reading ``file`` tells (read again when the file changes)."""
+        if not file.name.endswith(".xacro"):
+            self._read.add(file)
+        return workspace_file(file, self.files.get(shown(file)))
 
     def xacro_file(self, file: Path) -> XacroFile | None:
         """The scan of a xacro file (None: unreadable, not XML, or a plain URDF)."""
-        if self.scans is None:
-            return None
         if not file.name.endswith(".xacro"):
             source = self.source(file)
             if source.kind == "model" and not (source.includes or source.arguments or source.properties):
                 return None  # a plain URDF, or near enough: read whole only by the model's own run
-        return self.scans.get(shown(file))
+        found = self.files.get(shown(file))
+        return found.scan if found is not None else None
 
     def reach(self, files: list[Path]) -> tuple[list[Path], bool]:
         """The files the includes of ``files`` may lead to, under any condition, and
@@ -317,7 +309,7 @@ class Index:
                 if include.kind == "path":
                     nexts = [Path(include.value)]
                 else:
-                    known = {f for files in self.scanned.values() for f in files} | set(self.sources)
+                    known = {f for files in self.scanned.values() for f in files} | self._read
                     nexts = [f for f in known if include.may_be(f)]
                 for nxt in nexts:
                     if nxt not in seen and nxt.is_file():
@@ -332,7 +324,7 @@ def xacro_sources(document: Document, index: Index, xacro_names: Callable[[], Xa
     includes may reach and those of the repository or workspace around it."""
     start = document.file.resolve() if document.file is not None else None
     names = [document.shown, *(shown(file) for file in _own(document, start, index))] if document.is_xacro else []
-    files = [found for name in dict.fromkeys(names) if (found := index.scans.get(name)) is not None]
+    files = [found.scan for name in dict.fromkeys(names) if (found := index.files.get(name)) is not None and found.scan is not None]
 
     def scanned(paths: list[Path]) -> list[XacroFile]:
         return [found for path in paths if (found := index.xacro_file(path)) is not None]
@@ -410,26 +402,25 @@ def model_targets(path: str, argument_sets: list[dict[str, str]] | None) -> list
     return [Target(path, tuple(arguments.items())) for arguments in (argument_sets or [{}])]
 
 
-def plan(
-    paths: list[str], config_for, package_paths: tuple[str, ...] = (), packages: PackageIndex | None = None, scans: Scans | None = None,
-) -> list[Entry]:
+def plan(paths: list[str], config_for, package_paths: tuple[str, ...] = (), packages: PackageIndex | None = None, files: SourceFiles | None = None) -> list[Entry]:
     """What to run for the given files: each model once per argument set, each
     library through the models that may include it (none: on its own).
 
     ``config_for(path)`` gives the configuration of a file (for ``models`` and
-    package paths). ``scans`` are the session's (each file read once for this
+    package paths). ``files`` are the session's (each file read once for this
     search and the source rules). Raises what ``config_for`` raises.
     """
     packages = packages if packages is not None else PackageIndex()
+    files = files if files is not None else SourceFiles()
     entries: list[Entry] = []
     index: Index | None = None
     for path in paths:
         config = config_for(path)
         # only a file named .xacro can be a library: a plain URDF is never read twice
         library = Path(path).resolve() if path != STDIN and path.endswith(".xacro") else None
-        alone = (source_of(library, scans.get(shown(library))) if scans is not None else read_source(library)) if library is not None else None
+        alone = workspace_file(library, files.get(shown(library))) if library is not None else None
         if alone is not None and alone.kind == "library":  # else no look-up at all
-            index = index or Index(config.package_paths + package_paths, packages, scans)
+            index = index or Index(config.package_paths + package_paths, packages, files)
             if index.kind(library) == "model":
                 library = None
         else:
@@ -616,6 +607,6 @@ def unchecked_library(path: str, unchecked: str) -> Diagnostic:
 
 
 __all__ = [
-    "Entry", "Index", "Source", "Target", "assemble", "plan", "read_source", "resolve_include", "search_roots", "source_of",
+    "Entry", "Index", "Target", "WorkspaceFile", "assemble", "plan", "resolve_include", "search_roots", "workspace_file",
     "unchecked_library", "xacro_sources",
 ]

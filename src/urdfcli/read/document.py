@@ -19,10 +19,11 @@ from ..diagnostics import Diagnostic, Location
 from . import positions, xacro_warnings
 from .expanded import ExpansionError, Origins
 from .packages import PackageIndex, PackageResolver
-from .positions import Source, Sources
+from .files import STDIN_NAME, SourceFile, SourceFiles
+from .positions import Text
 from .xacro import Expander
 from .xacro_scan import XACRO_NAMESPACES
-from .xml import Element, XmlError, parse
+from .xml import WHOLE_UP_TO, Element
 
 NAMED = {"link", "joint", "material", "transmission", "gazebo"}
 SUPPRESSION_MARK = "urdfcli"  # every suppression comment (``<!-- urdfcli: noqa -->``) names it
@@ -62,10 +63,10 @@ class Document:
         expanded_text: str | None = None,  # xacro output, for xacro inputs
         includes: list[str] | None = None,
         origins: Origins | None = None,  # xacro inputs: one per element
-        sources: Sources | None = None,  # where the texts of the files are read for locations
+        files: SourceFiles | None = None,  # the session's files, where diagnostics are located
     ) -> None:
         self.path = path
-        self.sources = sources if sources is not None else Sources()
+        self.files = files if files is not None else SourceFiles()
         self.data = data
         self.file = file
         self.is_xacro = is_xacro
@@ -78,7 +79,7 @@ class Document:
         self.may_suppress: bool | None = None
         self.readable = data is not None  # whether a model could be read
         self.missing_argument: str | None = None  # a xacro argument the expansion needed and had no value for
-        self.tree: Element | None = None  # the document parsed whole (elements only), when it was to tell whether it uses xacro
+        self.tree: Element | None = None  # the file's tree (elements only), when it was parsed whole to tell whether it uses xacro
 
     @property
     def shown(self) -> str:
@@ -96,7 +97,7 @@ class Document:
         location = self._locate(at)
         if attribute is None or not location.line or not location.column:
             return location
-        text = self.sources.source(location.file)
+        text = self.files.get(location.file)
         start = text.offset(location.line, location.column) if text is not None else None
         found = text.attribute(start, attribute) if start is not None else None
         if found is None:
@@ -119,9 +120,9 @@ class Document:
         return Location(self.shown, line, None, expanded=True) if self.is_xacro else Location(self.shown, line, column)
 
     @cached_property
-    def model_source(self) -> Source | None:
+    def model_source(self) -> Text | None:
         """The text the model was read from: the file, or xacro's output."""
-        return Source(self.expanded_text) if self.expanded_text is not None else self.sources.source(self.shown)
+        return Text(self.expanded_text) if self.expanded_text is not None else self.files.get(self.shown)
 
     def element_path(self, at: int | None) -> str | None:
         """An XPath-like name such as ``link[@name='arm']/visual[2]/geometry``, worked
@@ -163,28 +164,24 @@ class InputError(Exception):
 
 
 class Inputs(NamedTuple):
-    """What reading shares across a session: the source texts, the package
+    """What reading shares across a session: the source files, the package
     look-ups and the xacro worker."""
 
-    sources: Sources
+    files: SourceFiles
     packages: PackageIndex
     expander: Expander
 
 
-def read_input(path: str, sources: Sources) -> bytes:
-    """The bytes of an input: a file (or the text an editor gave for it), or standard input."""
+def read_input(path: str, files: SourceFiles) -> SourceFile:
+    """An input: a file (or the text an editor gave for it), or standard input."""
     if path == STDIN:
-        given = sources.given().get("<stdin>")
-        if given is not None:  # read once a run: checked again (after a fix), it is the text given
-            return given
-        data = sys.stdin.buffer.read()
-        sources.give("<stdin>", data)  # excerpts and columns, as for a file
-        return data
-    file = Path(path)
+        if STDIN_NAME not in files.given():  # read once a run: checked again (after a fix), it is the text given
+            files.give(STDIN_NAME, sys.stdin.buffer.read())  # excerpts and columns, as for a file
+        return files.read(STDIN_NAME)
     try:
-        if file.is_dir():
+        if Path(path).is_dir():
             raise InputError(f"{path}: is a directory, not a file")
-        return sources.data(path)
+        return files.read(path)
     except FileNotFoundError:
         raise InputError(f"{path}: no such file") from None
     except PermissionError:
@@ -202,26 +199,21 @@ _USES_XACRO = f"boolean({_XACRO_ELEMENT} | {_SUBSTITUTION})"
 _HAS_XACRO_ELEMENT = f"boolean({_XACRO_ELEMENT})"
 
 
-def is_xacro(data: bytes) -> bool:
+def is_xacro(file: SourceFile) -> bool:
     """Whether a document not named .xacro uses xacro: a xacro element (in xacro's
     namespace, or any element prefixed ``xacro:``), or ``${`` / ``$(`` in an attribute
     or in text outside comments. A namespace declaration alone is not use: xacro's
     output would read the same, at many times the cost. A document that is not
     well-formed is not xacro: reading it says what is wrong."""
-    return _told(data)[0]
-
-
-def _told(data: bytes) -> tuple[bool, Element | None]:
-    """Whether ``data`` uses xacro, and the tree parsed to tell (None when the bytes told)."""
+    data = file.data
     if positions.ascii_compatible(data) and b"$" not in data and b"xacro" not in data:
-        return False, None  # neither mark in markup written in ASCII: nothing to parse
-    try:
-        root = parse(data)
-    except XmlError:
-        return False, None
+        return False  # neither mark in markup written in ASCII: nothing to parse
+    root = file.tree
+    if root is None:
+        return False
     # no substitution can be written where the bytes hold none: only elements are looked at then
     substitutions = b"${" in data or b"$(" in data or not positions.ascii_compatible(data)
-    return bool(root.xpath(_USES_XACRO if substitutions else _HAS_XACRO_ELEMENT)), root
+    return bool(root.xpath(_USES_XACRO if substitutions else _HAS_XACRO_ELEMENT))
 
 
 def read_document(
@@ -232,24 +224,24 @@ def read_document(
     force_xacro: bool = False,
 ) -> tuple[Document, list[Diagnostic]]:
     """Read one input and, where it uses xacro, expand it. Raises InputError."""
-    sources = inputs.sources
-    data = read_input(path, sources)
+    files = inputs.files
+    source = read_input(path, files)
+    data = source.data
     file = None if path == STDIN else Path(path)
-    shown = "<stdin>" if file is None else path
-    if not (force_xacro or path.endswith(".xacro")):
-        uses_xacro, tree = _told(data)
-        if not uses_xacro:
-            document = Document(path, data, file, sources=sources)
-            document.tree = tree  # parsed to tell: the model reads it rather than parse it again
-            return document, []
+    shown = STDIN_NAME if file is None else path
+    if not (force_xacro or path.endswith(".xacro")) and not is_xacro(source):
+        document = Document(path, data, file, files=files)
+        if len(data) <= WHOLE_UP_TO:  # (a larger one is streamed)
+            document.tree = source.take_tree()  # the file's tree (parsed once), which the model reads and takes apart
+        return document, []
     try:
-        result = inputs.expander.expand(data, str(file) if file else None, mappings or {}, resolver, sources.given())
+        result = inputs.expander.expand(data, str(file) if file else None, mappings or {}, resolver, files.given())
     except ExpansionError as error:
         location = error.origin.location() if error.origin is not None else Location(error.file or shown)
-        document = Document(path, None, file, is_xacro=True, includes=list(error.includes), sources=sources)
+        document = Document(path, None, file, is_xacro=True, includes=list(error.includes), files=files)
         document.missing_argument = error.missing_argument
         return document, [Diagnostic(error.code, error.message, location)]
-    document = Document(path, result.text.encode("utf-8"), file, True, result.text, result.includes, result.origins, sources)
-    warnings = [xacro_warnings.warning(text, origin.location() if origin is not None else Location(shown), sources) for text, origin in result.warnings]
+    document = Document(path, result.text.encode("utf-8"), file, True, result.text, result.includes, result.origins, files)
+    warnings = [xacro_warnings.warning(text, origin.location() if origin is not None else Location(shown), files) for text, origin in result.warnings]
     return document, warnings
 

@@ -26,12 +26,11 @@ from typing import TYPE_CHECKING
 
 import xacro
 import xacro.substitution_args
-from lxml import etree
 
 from ..diagnostics import Call
 from . import guard
 from .expanded import Expansion, ExpansionError, Origin, Origins, PackageNotFound, display_path
-from .positions import Source, decode
+from .positions import Text, decode
 from .xml import XmlError, parse
 
 if TYPE_CHECKING:
@@ -87,25 +86,26 @@ def _place(value: str) -> tuple[int, int, str] | None:
 
 
 def tagged_dom(data: bytes, file: str) -> xml.dom.minidom.Document:
-    """``data`` parsed as xacro parses it (minidom), every element marked with where its
-    ``<`` was written (``LINE:COLUMN:FILE``). Raises XmlError when urdfcli's reader
-    refuses the document, ExpansionError when only xacro's parser does.
-
-    The document is read by urdfcli's reader (:func:`urdfcli.read.xml.parse`), which
-    says what is wrong where and refuses entities; the text shows where each of its
-    elements starts; minidom reads it back as lxml writes it."""
-    text = Source(decode(data))
-    root = parse(data, as_written=True)
-    elements = list(root.iter(etree.Element))
+    """``data`` parsed as xacro parses it (minidom, its only parse here), every element
+    marked with where its ``<`` was written (``LINE:COLUMN:FILE``): the text's element
+    starts, in document order, are the elements'. Raises XmlError when urdfcli's reader
+    refuses the document (not well-formed, entities declared), which then says what is
+    wrong where; ExpansionError when only xacro's parser refuses it."""
+    try:
+        doc = xml.dom.minidom.parseString(data)
+    except xml.parsers.expat.ExpatError as error:
+        parse(data)  # urdfcli's reader says what is wrong and where, when it refuses the document too
+        message = f"xacro cannot read this document: {xml.parsers.expat.ErrorString(error.code)}"  # XML 1.0 5th-edition names that expat refuses
+        raise ExpansionError(message, Origin(file, error.lineno, error.offset + 1), file, code="X001") from None
+    if doc.doctype is not None:
+        parse(data)  # urdfcli's reader refuses what a document type declares or names (entities, an external subset)
+    elements = doc.getElementsByTagName("*")
+    text = Text(decode(data))
     starts = text.element_starts(len(elements))
     for at, element in enumerate(elements):
-        line, column = text.position(starts[at]) if starts is not None else (element.sourceline or 0, 0)  # no column then
-        element.set(ORIGIN, f"{line}:{column}:{file}")
-    try:
-        return xml.dom.minidom.parseString(etree.tostring(root.getroottree(), encoding="utf-8"))
-    except xml.parsers.expat.ExpatError as error:  # XML 1.0 5th-edition names that xacro's expat refuses
-        message = f"xacro cannot read this document: {xml.parsers.expat.ErrorString(error.code)}"
-        raise ExpansionError(message, Origin(file, error.lineno, error.offset + 1), file, code="X001") from None
+        line, column = text.position(starts[at]) if starts is not None else (0, 0)  # unknown then
+        element.setAttribute(ORIGIN, f"{line}:{column}:{file}")
+    return doc
 
 
 class _Session:

@@ -7,7 +7,8 @@ document type declaration always opens markup, so the element starts are the
 ``<`` not followed by ``!``, ``?`` or ``/``, in document order: the order in
 which lxml's ``iter(etree.Element)`` visits the same document's elements.
 
-A session's :class:`Sources` keeps the texts for excerpts and locations.
+A session's files (:class:`urdfcli.read.files.SourceFiles`) are texts with their
+positions too.
 """
 
 from __future__ import annotations
@@ -15,11 +16,9 @@ from __future__ import annotations
 import bisect
 import codecs
 import itertools
-import os
 import re
 from collections.abc import Iterator
 from functools import cached_property
-from pathlib import Path
 
 _AFTER_NAME = frozenset(" \t\n/>")
 _ELEMENT = re.compile(r"<(?![!?/])")
@@ -81,7 +80,7 @@ def _markup_end(text: str, at: int) -> int | None:
     return doctype.end() if doctype else None
 
 
-class Source:
+class Text:
     """One source text, its line ends normalised as XML does (CR LF and CR read as LF)."""
 
     def __init__(self, text: str):
@@ -263,84 +262,3 @@ def may_contain(data: bytes, text: str) -> bool:
     """Whether the document ``data`` may contain ``text`` (ASCII): told from the bytes
     when they can tell, true otherwise."""
     return text.encode() in data or not ascii_compatible(data)
-
-
-def _key(name: str) -> str:
-    """A file's name as the texts are kept: its absolute path ("<stdin>" as it is)."""
-    return name if name.startswith("<") else os.path.abspath(name)
-
-
-class Sources:
-    """The source texts of a session: each file read once, and again when it
-    changes on disk; texts that are not (or not yet) in a file, standard input
-    and an editor's unsaved buffers, given under the name diagnostics use.
-
-    Names are paths as diagnostics give them (relative to the working folder,
-    or absolute); "<stdin>" is standard input."""
-
-    def __init__(self) -> None:
-        self._read: dict[str, tuple[tuple[int, int], Source | None]] = {}  # key -> (file stamp, text)
-        self._given: dict[str, bytes] = {}
-
-    def give(self, name: str, data: bytes) -> None:
-        """Let ``data`` stand for the file ``name`` (or standard input) from now on."""
-        key = _key(name)
-        self._given[key] = data
-        self._read.pop(key, None)
-
-    def take_back(self, name: str) -> None:
-        """Read ``name`` from its file again."""
-        key = _key(name)
-        self._given.pop(key, None)
-        self._read.pop(key, None)
-
-    def given(self) -> dict[str, bytes]:
-        """The texts given (absolute path -> bytes), for a xacro expansion to read."""
-        return dict(self._given)
-
-    def data(self, name: str | os.PathLike) -> bytes:
-        """The bytes of a source: given, or read from its file now. Raises OSError."""
-        name = os.fspath(name)
-        given = self._given.get(_key(name))
-        return given if given is not None else Path(name).read_bytes()
-
-    def text(self, name: str, containing: str | None = None) -> str | None:
-        """The text of a source, without keeping it when it was not kept already: a
-        large model read only to look for comments stays out of memory. With
-        ``containing`` (ASCII), None also when the text cannot contain it, told from
-        the bytes when they can tell (most files need no decoding then)."""
-        key = _key(name)
-        known = self._read.get(key)
-        if key in self._given or known is None or known[1] is None:
-            try:
-                data = self.data(name)
-            except OSError:
-                return None
-            if containing is not None and not may_contain(data, containing):
-                return None
-            return decode(data)
-        return known[1].text
-
-    def source(self, name: str) -> Source | None:
-        """The source text diagnostics call ``name``, read again only when the file
-        changed; None when unreadable."""
-        key = _key(name)
-        given = self._given.get(key)
-        known = self._read.get(key)
-        if given is not None:
-            if known is None:
-                known = self._read[key] = ((0, 0), Source(decode(given)))
-            return known[1]
-        try:
-            status = os.stat(key)
-            stamp = (status.st_mtime_ns, status.st_size)
-            if known is None or known[0] != stamp:
-                known = self._read[key] = (stamp, Source(decode(Path(key).read_bytes())))
-        except OSError:
-            known = self._read[key] = ((0, -1), None)
-        return known[1]
-
-    def line(self, name: str, number: int) -> str | None:
-        """One line of a source (1-based), or None when there is no such line."""
-        text = self.source(name)
-        return text.line(number) if text is not None else None

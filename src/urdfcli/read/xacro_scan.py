@@ -19,16 +19,12 @@ from __future__ import annotations
 
 import ast
 import functools
-import os
 import re
-from collections.abc import Callable
-from functools import cached_property
 from pathlib import Path
 from typing import NamedTuple
 
 from .expanded import display_path
-from .positions import Source, decode
-from .xml import XmlError, parse
+from .positions import Text
 
 XACRO_NAMESPACES = {"http://www.ros.org/wiki/xacro", "http://ros.org/wiki/xacro", "http://wiki.ros.org/xacro"}
 # xacro's own elements; any other xacro:NAME element calls macro NAME
@@ -78,6 +74,11 @@ class Macro(NamedTuple):
     place: Place
     params: str  # the params attribute as written
     parent: int | None  # the macro whose body holds this definition
+
+    @property
+    def parameters(self) -> tuple[Parameter, ...]:
+        """Its parameters, split as xacro splits them."""
+        return macro_parameters(self.params)
 
 
 class Definition(NamedTuple):
@@ -161,9 +162,9 @@ class XacroFile:
     library); ``includes``, ``arguments`` and ``properties`` are the plain facts
     the workspace's include search reads."""
 
-    def __init__(self, name: str, text: str) -> None:
+    def __init__(self, name: str, source: Text) -> None:
         self.name = name
-        self.text = text
+        self.source = source  # the file's text and its positions
         self.makes = False
         self.uses_xacro = False  # a xacro element, or xacro's namespace declared on the root
         self.includes: list[str] = []
@@ -189,9 +190,9 @@ class XacroFile:
         """Each property with a value written as an attribute, and that value."""
         return [(d.name, d.value) for d in self.definitions if d.kind == "property" and d.name and d.value is not None]
 
-    @cached_property
-    def source(self) -> Source:
-        return Source(self.text)
+    @property
+    def text(self) -> str:
+        return self.source.text
 
     def position(self, place: Place) -> tuple[int | None, int | None]:
         """The line and column (1-based) of a place; the element's when the value
@@ -212,7 +213,7 @@ class XacroFile:
         return False
 
 
-def _value_offset(source: Source, start: int, tag_end: int, end: int, place: Place) -> int | None:
+def _value_offset(source: Text, start: int, tag_end: int, end: int, place: Place) -> int | None:
     text = source.text
     if place.within is None:
         return start
@@ -240,14 +241,11 @@ def local_name(tag: str) -> str:
     return tag.rpartition("}")[2]
 
 
-def scan(data: bytes, name: str) -> XacroFile | None:
-    """What the xacro file ``data`` (named ``name`` in diagnostics) defines, uses and
-    makes; None when it is not XML (loading it says why)."""
-    try:
-        root = parse(data)
-    except XmlError:
-        return None
-    found = XacroFile(name, decode(data))
+def scan(root, name: str, source: Text) -> XacroFile:
+    """What a xacro file defines, uses and makes: ``root`` is its tree (elements only,
+    as :func:`urdfcli.read.xml.parse` reads it), ``source`` its text, ``name`` the
+    file as diagnostics name it."""
+    found = XacroFile(name, source)
     _Scanner(found).run(root)
     return found
 
@@ -482,6 +480,18 @@ class Parameter(NamedTuple):
     default: str | None  # as written
     forward: bool  # ``name:=^``: taken from the caller's scope
 
+    @property
+    def shown(self) -> str:
+        """The name as written: ``*origin`` for a block."""
+        return ("*" if self.block else "") + self.name
+
+    @property
+    def shown_default(self) -> str | None:
+        """The default as written: ``0.1``, ``^|0.1`` (the caller's value, else 0.1), ``^``."""
+        if self.forward:
+            return f"^|{self.default}" if self.default is not None else "^"
+        return self.default
+
 
 # xacro's grammar of a macro's params (xacro/__init__.py, re_macro_arg and parse_macro_arg),
 # repeated here so that only the worker imports xacro; tests compare the two.
@@ -513,37 +523,6 @@ class XacroGlobals(NamedTuple):
 
     names: frozenset[str]
     members: dict[str, frozenset[str]]
-
-
-# -- a session's scans ---------------------------------------------------------------
-class Scans:
-    """Each xacro file of a session read statically once, and again when it changes
-    on disk or its text is given anew. ``data(name)`` gives a file's bytes and
-    ``given()`` the texts given for files (the session's sources, which hold an
-    editor's unsaved texts)."""
-
-    def __init__(self, data: Callable[[str], bytes], given: Callable[[], dict[str, bytes]]) -> None:
-        self._data = data
-        self._given = given
-        self._read: dict[str, tuple[object, XacroFile | None]] = {}
-
-    def get(self, name: str) -> XacroFile | None:
-        """The scan of file ``name`` (as diagnostics name it); None when unreadable or not XML."""
-        key = name if name.startswith("<") else os.path.abspath(name)
-        given = self._given().get(key)
-        try:
-            stamp = hash(given) if given is not None else _stamp(key)
-            known = self._read.get(key)
-            if known is None or known[0] != stamp:
-                known = self._read[key] = (stamp, scan(given if given is not None else self._data(name), name))
-        except OSError:
-            return None
-        return known[1]
-
-
-def _stamp(path: str) -> tuple[int, int]:
-    status = os.stat(path)
-    return status.st_mtime_ns, status.st_size
 
 
 def shown(path: Path | str) -> str:

@@ -11,7 +11,7 @@ from __future__ import annotations
 import re
 
 from ..diagnostics import Applicability, Diagnostic, Edit, Fix, Location
-from .positions import Sources
+from .files import SourceFiles
 
 # xacro's own words (xacro/__init__.py), and the fix for each
 _FIXES = (
@@ -44,23 +44,23 @@ _PREFIXED_MACRO = re.compile(r"macro names must not contain prefix 'xacro:': xac
 _MACRO_NAME = re.compile(r"""\sname\s*=\s*["']\s*(xacro:)""")
 
 
-def warning(text: str, location: Location, sources: Sources) -> Diagnostic:
+def warning(text: str, location: Location, files: SourceFiles) -> Diagnostic:
     """X005 for one of xacro's warnings, at the element xacro was at (at the deprecated
     call itself, when the element's start tag holds it), with its fix; for a form xacro
     still reads and has deprecated, the edit that writes it as xacro wants it."""
     found = _DEPRECATED_CALL.search(text)
     if found is not None and location.line and location.column:
-        location = _at_call(found.group(1), location, sources)
-    return Diagnostic("X005", text, location, hint=fix(text), fix=_rewrite(text, location, sources))
+        location = _at_call(found.group(1), location, files)
+    return Diagnostic("X005", text, location, hint=fix(text), fix=_rewrite(text, location, files))
 
 
-def _rewrite(text: str, location: Location, sources: Sources) -> Fix | None:
+def _rewrite(text: str, location: Location, files: SourceFiles) -> Fix | None:
     """The edit of a deprecated form: ``load_yaml(`` written ``xacro.load_yaml(``, a macro
     named ``xacro:NAME`` named ``NAME``; None for the other warnings."""
     deprecated, prefixed = _DEPRECATED.search(text), _PREFIXED_MACRO.search(text)
     if deprecated is None and prefixed is None:
         return None
-    source = sources.source(location.file) if location.line and location.column else None
+    source = files.get(location.file) if location.line and location.column else None
     at = source.offset(location.line, location.column) if source is not None else None
     if deprecated is not None:
         name, namespace = deprecated.groups()
@@ -77,8 +77,8 @@ def _rewrite(text: str, location: Location, sources: Sources) -> Fix | None:
     return Fix(title, SAFE, edits=(Edit(location.file, start, start + len("xacro:"), ""),))
 
 
-def _at_call(name: str, location: Location, sources: Sources) -> Location:
-    source = sources.source(location.file)
+def _at_call(name: str, location: Location, files: SourceFiles) -> Location:
+    source = files.get(location.file)
     start = source.offset(location.line, location.column) if source is not None else None
     if start is None:
         return location

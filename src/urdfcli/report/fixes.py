@@ -17,7 +17,8 @@ from ..model.numbers import NumberError, parse_double, parse_vector
 from ..model.robot import INERTIA_KEYS, Link
 from ..read.document import XACRO_NAMESPACES
 from ..read.xacro import Expander
-from ..read.xml import XmlError, parse
+from ..read.xacro_scan import macro_parameters
+from ..read.xml import parse
 from .inertia import LinkReport
 
 
@@ -52,28 +53,17 @@ class MacroUse(NamedTuple):
     called_at: str | None
 
 
-def _start_lines(loaded: Loaded, file: str) -> dict:
-    """The line of each element's ``<`` in a xacro source (where diagnostics point), read once per model."""
-    return loaded.remembered(("start lines", file), lambda: _read_start_lines(loaded, file))
-
-
-def _read_start_lines(loaded: Loaded, file: str) -> dict:
-    sources = loaded.document.sources
-    try:
-        root = parse(sources.data(file))
-    except (OSError, XmlError):
-        return {}
-    text = sources.source(file)
-    elements = list(root.iter())
-    starts = text.element_starts(len(elements)) if text is not None else None
-    if starts is None:
-        return {e: e.sourceline for e in elements}
-    return {e: text.position(start)[0] for e, start in zip(elements, starts)}
-
-
 def _written(loaded: Loaded, file: str, line: int, tag: str):
     """The element of that tag written at file:line, in the xacro source."""
-    return next((e for e, at in _start_lines(loaded, file).items() if at == line and etree.QName(e).localname == tag), None)
+    source = loaded.document.files.get(file)
+    if source is None:
+        return None
+    return next((e for e in source.elements if source.place_of(e)[0] == line and etree.QName(e).localname == tag), None)
+
+
+def _line(loaded: Loaded, file: str, element) -> int:
+    """The line where an element of a xacro source starts."""
+    return loaded.document.files.get(file).place_of(element)[0]
 
 
 def _is_xacro(element, name: str) -> bool:
@@ -98,8 +88,8 @@ def macro_use(loaded: Loaded, link: Link) -> MacroUse | None:
         found = next((e for e in source_link.iter(etree.Element) if _is_xacro(e, name)), None)
         if found is not None:
             attributes = " ".join(f'{k}="{v}"' for k, v in found.attrib.items())
-            call, called_at = f"<xacro:{name} {attributes}/>", f"{link_where.file}:{_start_lines(loaded, link_where.file)[found]}"
-    return MacroUse(name, macro.get("params", ""), f"{where.file}:{_start_lines(loaded, where.file)[macro]}", call, called_at)
+            call, called_at = f"<xacro:{name} {attributes}/>", f"{link_where.file}:{_line(loaded, link_where.file, found)}"
+    return MacroUse(name, macro.get("params", ""), f"{where.file}:{_line(loaded, where.file, macro)}", call, called_at)
 
 
 def _macro_element(loaded: Loaded, use: MacroUse):
@@ -123,7 +113,7 @@ def matching_call(loaded: Loaded, link: Link, use: MacroUse, expander: Expander)
     macro = _macro_element(loaded, use)
     if found.body is None or len(found.shapes) != 1 or found.shapes[0].geometry.kind == "mesh" or macro is None:
         return None
-    required = [p.lstrip("^") for p in use.params.split() if not p.startswith("*") and ":=" not in p and "=" not in p]
+    required = [p.name for p in macro_parameters(use.params) if not p.block and p.default is None and not p.forward]
     masses = [p for p in required if p.lower() in ("m", "mass") or "mass" in p.lower()]
     others = [p for p in required if p not in masses]
     dimensions = _dimensions(found.shapes[0].geometry)

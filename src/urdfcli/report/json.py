@@ -14,12 +14,12 @@ if TYPE_CHECKING:
     from .result import Result
 
 
-def file_dict(result: Result, sources=None) -> dict:
+def file_dict(result: Result, files=None) -> dict:
     entry = {
         "path": result.path,
         "ok": result.ok,
         "robot": result.robot_name,
-        "diagnostics": [diagnostic_dict(d, sources) for d in result.diagnostics],
+        "diagnostics": [diagnostic_dict(d, files) for d in result.diagnostics],
     }
     if result.library is not None:
         entry["checked_through"] = list(result.library.checked_through)
@@ -31,13 +31,13 @@ def file_dict(result: Result, sources=None) -> dict:
     return entry
 
 
-def render(results: list[Result], sources=None) -> str:
+def render(results: list[Result], files=None) -> str:
     found = counts(results)
     errors, warnings, info = found[Severity.ERROR], found[Severity.WARNING], found[Severity.INFO]
     document = {
         "version": 1,
         "files": [
-            file_dict(result, sources)
+            file_dict(result, files)
             for result in results
         ],
         "summary": {"files": len(results), "errors": errors, "warnings": warnings, "info": info},
@@ -50,7 +50,7 @@ def dumps(value) -> str:
     return json_escape(json.dumps(value, indent=2, ensure_ascii=False))
 
 
-def report(results: list[Result], output: Output, view: str = "lint", sources=None) -> None:
+def report(results: list[Result], output: Output, view: str = "lint", files=None) -> None:
     """The JSON contract of check and lint; for inertia, each file's audit (a list for several)."""
     if view == "inertia":
         from .inertia import audit_dict
@@ -58,5 +58,5 @@ def report(results: list[Result], output: Output, view: str = "lint", sources=No
         objects = [audit_dict(result) for result in results]
         text = dumps(objects[0] if len(objects) == 1 else objects)
     else:
-        text = render(results, sources)
+        text = render(results, files)
     output.out.file.write(text + "\n")

@@ -7,7 +7,7 @@ from collections.abc import Iterable
 from typing import TYPE_CHECKING
 
 from ..diagnostics import Diagnostic, Fix, Severity
-from ..read.positions import Sources
+from ..read.files import SourceFiles
 from .console import Line
 from .escape import escape
 
@@ -60,12 +60,12 @@ def trace_notes(diagnostic: Diagnostic, levels: int = TRACE_LEVELS) -> list[str]
     return notes
 
 
-def excerpt_lines(diagnostic: Diagnostic, sources: Sources, width: int = 160) -> list[str]:
+def excerpt_lines(diagnostic: Diagnostic, files: SourceFiles, width: int = 160) -> list[str]:
     """The diagnostic's source line, numbered, with a caret under its column."""
     location = diagnostic.location
     if location.expanded or not location.line:
         return []
-    text = sources.line(location.file, location.line)
+    text = files.line(location.file, location.line)
     if text is None:
         return []
     text = text.replace("\t", " ").rstrip()
@@ -89,12 +89,12 @@ def fix_line(diagnostic: Diagnostic) -> str | None:
     return escape(f"    no fix: {fix.reason}") if fix.reason else None
 
 
-def details(diagnostic: Diagnostic, sources: Sources | None) -> list[str]:
+def details(diagnostic: Diagnostic, files: SourceFiles | None) -> list[str]:
     """The lines under a diagnostic: its macro calls, its hint, its fix, its source excerpt."""
     hint = ["    hint: " + escape(diagnostic.hint)] if diagnostic.hint else []
     through = ["    note: " + escape(diagnostic.through)] if diagnostic.through else []
     fix = [line] if (line := fix_line(diagnostic)) is not None else []
-    excerpt = excerpt_lines(diagnostic, sources) if sources is not None else []
+    excerpt = excerpt_lines(diagnostic, files) if files is not None else []
     return trace_notes(diagnostic) + through + hint + fix + excerpt
 
 
@@ -137,8 +137,8 @@ def summary_line(results: list[Result]) -> str:
 STYLES = {"error": "bold red", "warning": "yellow", "info": "cyan"}
 
 
-def diagnostic_lines(diagnostic: Diagnostic, sources: Sources | None) -> list[Line]:
-    """A diagnostic, its macro calls and hint, and (given the sources) its source line."""
+def diagnostic_lines(diagnostic: Diagnostic, files: SourceFiles | None) -> list[Line]:
+    """A diagnostic, its macro calls and hint, and (given the files) its source line."""
     style = STYLES[severity_name(diagnostic)]
     first: Line = [
         (escape(position(diagnostic)), "bold"), (": ", ""), (diagnostic.code, style),
@@ -146,7 +146,7 @@ def diagnostic_lines(diagnostic: Diagnostic, sources: Sources | None) -> list[Li
     ]
     if diagnostic.location.expanded:
         first.append((" (line in the xacro-expanded document)", "dim"))
-    return [first, *([(line, "dim")] for line in details(diagnostic, sources))]
+    return [first, *([(line, "dim")] for line in details(diagnostic, files))]
 
 
 def fixable_line(results: list[Result]) -> str | None:
@@ -164,7 +164,7 @@ def fixable_line(results: list[Result]) -> str | None:
     return f"{safe} fixable with --fix" + (f" ({unsafe} more with --unsafe-fixes)" if unsafe else "")
 
 
-def fix_dict(fix: Fix | None, sources: Sources | None = None) -> dict | None:
+def fix_dict(fix: Fix | None, files: SourceFiles | None = None) -> dict | None:
     """A diagnostic's fix as JSON: its title and safety, and its edits (each file with
     offsets in its text read with ``\\n`` line ends, and lines and columns, 1-based,
     where the text is at hand) or why there are none."""
@@ -173,7 +173,7 @@ def fix_dict(fix: Fix | None, sources: Sources | None = None) -> dict | None:
     edits = []
     for edit in fix.edits if fix.available else ():
         entry = {"path": edit.file, "start_offset": edit.start, "end_offset": edit.end, "content": edit.text}
-        source = sources.source(edit.file) if sources is not None else None
+        source = files.get(edit.file) if files is not None else None
         if source is not None:
             entry["start"] = dict(zip(("line", "column"), source.position(edit.start)))
             entry["end"] = dict(zip(("line", "column"), source.position(edit.end)))
@@ -181,7 +181,7 @@ def fix_dict(fix: Fix | None, sources: Sources | None = None) -> dict | None:
     return {"title": fix.title, "applicability": fix.applicability.value, "available": fix.available, "edits": edits, "reason": fix.reason}
 
 
-def diagnostic_dict(diagnostic: Diagnostic, sources: Sources | None = None) -> dict:
+def diagnostic_dict(diagnostic: Diagnostic, files: SourceFiles | None = None) -> dict:
     """A diagnostic as the JSON formats give it (SPEC section 4)."""
     return {
         "code": diagnostic.code,
@@ -197,5 +197,5 @@ def diagnostic_dict(diagnostic: Diagnostic, sources: Sources | None = None) -> d
             {"path": call.file, "line": call.line, "column": call.column, "macro": call.macro}
             for call in diagnostic.location.trace
         ],
-        "fix": fix_dict(diagnostic.fix, sources),
+        "fix": fix_dict(diagnostic.fix, files),
     }

@@ -12,7 +12,7 @@ from __future__ import annotations
 import io
 from typing import TYPE_CHECKING
 
-from ..read.positions import Sources
+from ..read.files import SourceFiles
 from .check_urdf import tree_lines
 from .console import Line, Output, console, write
 from .escape import escape
@@ -39,14 +39,14 @@ def tree_text(result: Result) -> list[Line]:
     return lines
 
 
-def report(results: list[Result], output: Output, view: str = "lint", sources: Sources | None = None) -> None:
+def report(results: list[Result], output: Output, view: str = "lint", files: SourceFiles | None = None) -> None:
     """``check``: each model's tree on standard output, diagnostics on standard error;
     ``lint`` (and ``drift``): everything on standard output, and for check and lint what
     ``--fix`` would fix; ``inertia``: the audit."""
     if view == "inertia":
         from .inertia import report as audit_report
 
-        audit_report(results, output, view, sources)
+        audit_report(results, output, view, files)
         return
     out = output.out
     err = output.err if view == "check" else output.out
@@ -55,7 +55,7 @@ def report(results: list[Result], output: Output, view: str = "lint", sources: S
             if len(results) > 1:
                 write(out, [[(f"==> {escape(result.label if result.arguments else result.shown)} <==", "bold")]])
             write(out, tree_text(result))
-        write(err, (line for diagnostic in result.diagnostics for line in diagnostic_lines(diagnostic, sources)))
+        write(err, (line for diagnostic in result.diagnostics for line in diagnostic_lines(diagnostic, files)))
     if not output.quiet:
         write(err, ([(line, "dim")] for line in library_lines(results)))
     if results:
@@ -65,11 +65,11 @@ def report(results: list[Result], output: Output, view: str = "lint", sources: S
             write(err, [[(fixable, "")]])
 
 
-def plain_report(results: list[Result], sources: Sources | None = None) -> str:
+def plain_report(results: list[Result], files: SourceFiles | None = None) -> str:
     """:func:`report` of ``lint`` as plain text."""
-    if sources is None:
-        sources = next((r.loaded.document.sources for r in results if r.loaded is not None), None) or Sources()
+    if files is None:
+        files = next((r.loaded.document.files for r in results if r.loaded is not None), None) or SourceFiles()
     buffer = io.StringIO()
     target = console("never", buffer)
-    report(results, Output(target, target), "lint", sources)
+    report(results, Output(target, target), "lint", files)
     return buffer.getvalue()

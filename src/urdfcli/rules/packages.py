@@ -131,7 +131,7 @@ def dependency_undeclared(loaded, given) -> Iterator[Diagnostic]:
             f"package '{package}' is used here{more} but {manifest.name}'s package.xml does not declare it",
             where(),
             hint=f"add <{kind}>{package}</{kind}> to {name}: rosdep installs only declared dependencies",
-            fix=declaration(loaded.document.sources.source(name), name, package, kind),
+            fix=declaration(loaded.document.files.get(name), name, package, kind),
         )
 
 
