@@ -128,7 +128,7 @@ def audited(path, **options):
 
     with Session(Options(RuleSet.TREE, config=Config())) as session:
         result = api.check_target(api.Target(str(path)), session)
-        return api.audit(result, session, **options)
+        return api.audit(result.loaded, Config(), **options) if result.loaded is not None else None
 
 
 def has_errors(path) -> bool:

@@ -26,7 +26,7 @@ def test_the_readme_example(tmp_path):
         f'<robot name="r" {XACRO}><xacro:arg name="ur_type" default="ur3"/><link name="$(arg ur_type)_base"/></robot>'
     )
     result = urdfcli.check(str(model), "ur_type:=ur5e")
-    assert not result.errors, result.report()
+    assert not result.errors, urdfcli.text_report(result)
     assert list(result.robot.links) == ["ur5e_base"]
     results = urdfcli.lint([CRANE, CAR])
     assert [r.path for r in results] == [str(CRANE), str(CAR)]
@@ -52,7 +52,7 @@ def test_a_result_is_what_check_prints(tmp_path, capsys):
 
 def test_the_report_is_the_text_format():
     result = urdfcli.check(CRANE)
-    report = result.report()
+    report = urdfcli.text_report(result)
     summary = f"1 file checked: {len(result.errors)} error, {len(result.warnings)} warnings\n"
     # then what --fix could do: the crane's inertias, from its geometry (unsafe fixes)
     assert report.endswith(summary + "2 fixes available with --fix --unsafe-fixes\n")
@@ -89,7 +89,7 @@ def test_configuration_is_found_as_the_command_line_finds_it(tmp_path):
     (tmp_path / "robot.urdf").write_text('<robot name="r"><link name="base"/></robot>')
     [result] = urdfcli.lint([tmp_path])
     assert [d.code for d in result.diagnostics] == ["S001"]
-    assert urdfcli.lint([tmp_path], isolated=True)[0].diagnostics == []
+    assert urdfcli.lint([tmp_path], isolated=True)[0].diagnostics == ()
 
 
 def test_one_session_serves_many_calls_and_is_given_back():

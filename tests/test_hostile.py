@@ -212,7 +212,7 @@ def test_no_symbol_can_replace_the_expression_guard():
 def test_ordinary_xacro_expressions_still_work(tmp_path, expression):
     path = write(tmp_path, "ok.urdf.xacro", xacro_robot(expression))
     result = load(path)
-    assert result.diagnostics == []
+    assert result.diagnostics == ()
     assert result.robot is not None and list(result.robot.links)
 
 

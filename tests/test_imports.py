@@ -102,7 +102,7 @@ def test_the_graph_sees_the_imports_it_should():
     graph = import_graph()
     assert graph.has_edge("urdfcli.read.document", "urdfcli.read.xacro")  # at the top
     assert graph.has_edge("urdfcli.model.load", "urdfcli.model.kinematics")  # inside a function
-    assert not graph.has_edge("urdfcli.report.lines", "urdfcli.report.result")  # for annotations only
+    assert not graph.has_edge("urdfcli.report.lines", "urdfcli.model.result")  # for annotations only
     assert graph.has_edge("urdfcli.read.xacro", "urdfcli.read.expansion")  # by name: the module its worker imports
 
 

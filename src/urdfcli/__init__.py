@@ -5,7 +5,7 @@ The command line is ``urdfcli``; from Python::
     import urdfcli
 
     result = urdfcli.check("urdf/robot.urdf.xacro", "ur_type:=ur5e")
-    assert not result.errors, result.report()
+    assert not result.errors, urdfcli.text_report(result)
 """
 
 from importlib import import_module
@@ -13,9 +13,9 @@ from importlib import import_module
 from .version import __version__
 
 _EXPORTS = {
-    "UsageError": "api", "check": "api", "diff": "api", "lint": "api",
+    "UsageError": "api", "check": "api", "diff": "api", "lint": "api", "text_report": "api",
     "Call": "diagnostics", "Diagnostic": "diagnostics", "Location": "diagnostics", "Severity": "diagnostics",
-    "Options": "options", "Result": "report.result", "RuleSet": "options", "Session": "session",
+    "Options": "options", "Result": "model.result", "RuleSet": "options", "Session": "session",
 }
 
 
@@ -27,4 +27,7 @@ def __getattr__(name: str):
     return getattr(import_module(f".{_EXPORTS[name]}", __name__), name)
 
 
-__all__ = ["Call", "Diagnostic", "Location", "Options", "Result", "RuleSet", "Session", "Severity", "UsageError", "__version__", "check", "diff", "lint"]
+__all__ = [
+    "Call", "Diagnostic", "Location", "Options", "Result", "RuleSet", "Session", "Severity", "UsageError", "__version__", "check", "diff", "lint",
+    "text_report",
+]

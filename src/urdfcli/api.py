@@ -5,7 +5,7 @@
     import urdfcli
 
     result = urdfcli.check("urdf/robot.urdf.xacro", "ur_type:=ur5e")
-    assert not result.errors, result.report()
+    assert not result.errors, urdfcli.text_report(result)
     results = urdfcli.lint(["urdf/a.urdf", "urdf/b.urdf.xacro"])
 
 Nothing here prints or exits. A problem with the input itself (a missing file,
@@ -23,9 +23,13 @@ from pathlib import Path
 from typing import TYPE_CHECKING, NamedTuple
 
 from .diagnostics import Diagnostic, Fix
-from .model import massprops
+from .model import audit as audits
+from .model import fixes, massprops
+from .model.audit import Audit, LinkAudit
 from .model.load import Loaded, load
-from .model.meshes import mesh_facts
+from .model.meshes import mesh_files
+from .model.result import Result, Unreadable
+from .model.targets import build
 from .model.units import unit_verdict
 from .project import drift as drift_
 from .project import fixing, linter
@@ -35,10 +39,8 @@ from .read.document import STDIN, InputError, read_document
 from .read.edits import EditError
 from .read.edits import apply as edit_text
 from .read.packages import PackageError
-from .report import inertia
-from .report.result import Result
-from .options import Options
-from .rules import REGISTRY, Kind, RuleSet
+from .options import AuditOptions, Options
+from .rules import REGISTRY, Kind, Remedy, RuleSet
 from .session import Session
 
 if TYPE_CHECKING:
@@ -50,12 +52,12 @@ class UsageError(Exception):
 
 
 class Run(NamedTuple):
-    """The results of one run, in the order the inputs were given, and the one-line
-    reason for each input that could not be read; ``models``: every model the run
-    checked, those a library was checked through included (an editor follows them)."""
+    """The results of one run, in the order the inputs were given, and each input that
+    could not be read; ``models``: every model the run checked, those a library was
+    checked through included (an editor follows them)."""
 
     results: list[Result]
-    unreadable: list[str]
+    unreadable: list[Unreadable]
     models: tuple[Result, ...] = ()
 
 
@@ -94,8 +96,15 @@ def _run_api(paths: list[str], rule_set: RuleSet, arguments: Iterable[str], sess
         if own:
             session.close()
     if found.unreadable:
-        raise UsageError("; ".join(found.unreadable))
+        raise UsageError("; ".join(map(str, found.unreadable)))
     return found
+
+
+def text_report(results: Result | Iterable[Result]) -> str:
+    """What ``urdfcli lint`` prints of the results (the diagnostics, their source lines, a summary), as plain text."""
+    from .report.text import plain_text
+
+    return plain_text([results] if isinstance(results, Result) else list(results))
 
 
 def _single(found: Run) -> Result:
@@ -149,12 +158,14 @@ def run(paths: list[str], session: Session, progress: Progress | None = None) ->
     targets = list(dict.fromkeys(t for entry in entries for t in entry.targets))
     done = dict(zip(targets, _outcomes(targets, session, progress)))
 
-    def outcome(target: Target) -> Result | str:
+    def outcome(target: Target) -> Result | Unreadable:
         if target not in done:  # a library no model could check, expanded on its own
             done[target] = check_target(target, session)
         return done[target]
 
     results, unreadable = assemble(entries, outcome)
+    if session.options.load:
+        results = [loaded_into_targets(result, session) for result in results]
     return Run(results, unreadable, tuple(r for r in done.values() if isinstance(r, Result) and r.loaded is not None))
 
 
@@ -199,43 +210,49 @@ def _start_process(options: Options) -> None:
     _ProcessSession.current = Session(options)
 
 
-def _check_in_process(target: Target) -> Result | str:
+def _check_in_process(target: Target) -> Result | Unreadable:
     found = check_target(target, _ProcessSession.current)
-    return found if isinstance(found, str) else found.detached()
+    return found if isinstance(found, Unreadable) else found.detached()
 
 
-def check_target(target: Target, session: Session) -> Result | str:
-    """One model with one argument set (or a library on its own): its result, or
-    the one-line reason it cannot be read. Raises UsageError (configuration, package path)."""
+def check_target(target: Target, session: Session) -> Result | Unreadable:
+    """One model with one argument set (or a library on its own): its result, or why
+    it cannot be read. Raises UsageError (configuration, package path)."""
     path = target.path
     options = session.options
     rule_set = options.rule_set
     config = configured(session)(path)
     arguments = {**config.mappings_for(path), **options.mappings, **dict(target.arguments)}
+
+    def sources(document):
+        return xacro_sources(document, session.index, session.expander.global_names)
+
     try:
         resolver = session.resolver(config.package_paths, None if path == STDIN else Path(path))
         if target.alone:  # a library: its own xacro, and what the source rules find in it
             document, found = read_document(path, session.inputs, resolver, arguments)
             if target.unchecked:
                 found.append(unchecked_library(path, target.unchecked))
-            loaded = Loaded(document, diagnostics=found, resolver=resolver, meshes=session.meshes)
-            loaded.sources = xacro_sources(document, session.index, session.expander.global_names)
+            loaded = Loaded(document, diagnostics=found, resolver=resolver, meshes=session.meshes, sources=sources(document))
             diagnostics = linter.lint(loaded, config, rule_set)
-            return Result(path, diagnostics, None, dict(target.arguments), includes=tuple(document.includes))
-        loaded = load(path, session.inputs, resolver, arguments, vocabulary=rule_set is RuleSet.LINT, meshes=session.meshes, reads_meshes=rule_set is not RuleSet.CHECK)
+            return Result(path, tuple(diagnostics), None, target.arguments, includes=tuple(document.includes))
+        loaded = load(
+            path, session.inputs, resolver, arguments, vocabulary=rule_set is RuleSet.LINT, meshes=session.meshes,
+            reads_meshes=rule_set is not RuleSet.CHECK, sources=sources,
+        )
     except InputError as error:
-        return str(error)
+        return Unreadable(path, str(error))
     except PackageError as error:
         raise UsageError(str(error)) from None
     document = loaded.document
-    loaded.sources = xacro_sources(document, session.index, session.expander.global_names)
-    if rule_set is not RuleSet.TREE and drift_.enabled(config, path):
-        loaded.diagnostics += drift_.drift(loaded, config, session)
-    if document.missing_argument is not None:
-        loaded.diagnostics = [needs_argument(d, document.missing_argument, path) if d.code == "X003" else d for d in loaded.diagnostics]
-    diagnostics = linter.lint(loaded, config, rule_set)
-    meshes = tuple(mesh_facts(loaded, partial(unit_verdict, loaded))) if rule_set is RuleSet.LINT and loaded.modelled else ()
-    return Result(path, diagnostics, loaded, dict(target.arguments), includes=tuple(document.includes), needs_argument=document.missing_argument, meshes=meshes)
+    drifted = drift_.drift(loaded, config, session) if rule_set is not RuleSet.TREE and drift_.enabled(config, path) else []
+    diagnostics = linter.lint(loaded, config, rule_set, drifted)
+    meshes = tuple(mesh_files(loaded, partial(unit_verdict, loaded))) if rule_set is RuleSet.LINT and loaded.modelled else ()
+    audited = _audit(loaded, config, options.audit, session) if options.audit is not None else None
+    return Result(
+        path, tuple(diagnostics), loaded, target.arguments, includes=tuple(document.includes), needs_argument=document.missing_argument,
+        meshes=meshes, audit=audited,
+    )
 
 
 class Fixed(NamedTuple):
@@ -290,12 +307,11 @@ def fix(paths: list[str], session: Session, progress: Progress | None = None) ->
     return Fixed(found, applied, {file: pair for file, pair in changed.items() if pair[0] != pair[1]}, list(dict.fromkeys(failed)))
 
 
-def audit(result: Result, session: Session, tolerance: float = massprops.TOLERANCE, density: float | None = None):
+def audit(loaded: Loaded, config: Config, tolerance: float = massprops.TOLERANCE, density: float | None = None) -> Audit | None:
     """The mass-property audit of a model (None when there is no robot): every
     mass-property rule run with this tolerance and density, what the configuration
     and suppressions leave of them, and the per-link table."""
-    loaded = result.loaded
-    if loaded is None or not loaded.modelled:
+    if not loaded.modelled:
         return None
     chosen = {"tolerance": tolerance, "density": density or 0.0}
     found = [
@@ -303,43 +319,48 @@ def audit(result: Result, session: Session, tolerance: float = massprops.TOLERAN
         for rule in REGISTRY.values() if rule.kind is Kind.MASS
         for diagnostic in rule.run(loaded, rule.given({k: v for k, v in chosen.items() if k in rule.defaults}))
     ]
-    config = configured(session)(result.path)
     problems = [d for d in linter.configure(loaded, found, config, RuleSet.LINT) if REGISTRY[d.code].kind is not Kind.SUPPRESSIONS]
-    return inertia.build(loaded, problems, tolerance, density)
+    return audits.build(loaded, problems, tolerance, density)
 
 
-def load_into_targets(results: list[Result], session: Session) -> None:
-    """``check --load``: load each model into the consumers of its targets that have a
-    Python package, and add what they said (C001-C003) to its diagnostics. Raises
+def flagged(audit: Audit) -> list[LinkAudit]:
+    """The links with a problem that a new <inertial> fixes: those a uniform body is suggested for."""
+    return [entry for entry in audit.links if any(REGISTRY[d.code].remedy is Remedy.INERTIAL for d in entry.problems)]
+
+
+def _audit(loaded: Loaded, config: Config, asked: AuditOptions, session: Session) -> Audit | None:
+    """The audit ``urdfcli inertia`` prints: with the suggested <inertial> elements, and
+    what each consumer of the targets builds, when asked for."""
+    found = audit(loaded, config, asked.tolerance, asked.density)
+    if found is None:
+        return None
+    if asked.suggest or asked.xacro:
+        found = found._replace(suggestions=fixes.suggestions(found, flagged(found), session.expander, asked.density, asked.xacro))
+    return found._replace(targets=tuple(build(loaded, chosen) for chosen in session.options.targets))
+
+
+def loaded_into_targets(result: Result, session: Session) -> Result:
+    """``check --load``: the result with what the consumers of its targets that have a
+    Python package said of the model when it was loaded into them (C001-C003). Raises
     UsageError when no target is asked for, or a consumer's package is not installed."""
     from .project import consumers
 
-    for result in results:
-        loaded = result.loaded
-        if loaded is None or not loaded.modelled:
-            continue
-        config = configured(session)(result.path)
-        if not config.targets:
-            raise UsageError("--load loads the model into the --target consumers: name one, such as --target mujoco")
-        if loaded.document.file is None and not loaded.document.is_xacro:
-            raise UsageError("--load needs the model in a file, not standard input")
-        found = []
-        for chosen in config.targets:
-            if chosen.target not in consumers.PACKAGES:
-                continue  # Gazebo, KDL and Isaac Sim have no Python package to load into here
-            if not consumers.installed(chosen.target):
-                raise UsageError(f"--load --target {chosen.target} needs {chosen.name}'s Python package: {consumers.install_hint(chosen.target)}")
-            found += consumers.verify(loaded, result.diagnostics, chosen)
-        result.diagnostics = sorted([*result.diagnostics, *(linter.with_severity(d, config) for d in found)], key=Diagnostic.sort_key)
-
-
-def needs_argument(diagnostic: Diagnostic, name: str, path: str) -> Diagnostic:
-    """xacro's 'Undefined substitution argument NAME', said so that it names the fix for the input ``path``."""
-    message = (f"needs xacro argument '{name}': it has no value where it is used (no default, or used before its "
-               f"<xacro:arg>); pass {name}:=VALUE, or list the model's argument sets in [tool.urdfcli] models")
-    file = Path(path).name if path != STDIN else "FILE"
-    hint = f'give {name}:=VALUE after the file on the command line, or in pyproject.toml: [tool.urdfcli.xacro-args] "{file}" = {{ {name} = "VALUE" }}'
-    return diagnostic._replace(message=message, hint=diagnostic.hint or hint)
+    loaded = result.loaded
+    if loaded is None or not loaded.modelled:
+        return result
+    config = configured(session)(result.path)
+    if not config.targets:
+        raise UsageError("--load loads the model into the --target consumers: name one, such as --target mujoco")
+    if loaded.document.file is None and not loaded.document.is_xacro:
+        raise UsageError("--load needs the model in a file, not standard input")
+    found = []
+    for chosen in config.targets:
+        if chosen.target not in consumers.PACKAGES:
+            continue  # Gazebo, KDL and Isaac Sim have no Python package to load into here
+        if not consumers.installed(chosen.target):
+            raise UsageError(f"--load --target {chosen.target} needs {chosen.name}'s Python package: {consumers.install_hint(chosen.target)}")
+        found += consumers.verify(loaded, list(result.diagnostics), chosen)
+    return result.but(diagnostics=tuple(sorted([*result.diagnostics, *(linter.with_severity(d, config) for d in found)], key=Diagnostic.sort_key)))
 
 
 def expand(path: str, session: Session) -> tuple[str | None, list[str], list[Diagnostic]]:
@@ -409,7 +430,10 @@ def _drift_of(path: str, session: Session) -> Result:
         raise UsageError(str(error)) from None
     found = drift_.drift(loaded, config, session) if drift_.enabled(config, path) else []
     kept = [d for d in linter.configure(loaded, found, config) if d.code == "X110"]
-    return Result(path, kept, loaded)
+    return Result(path, tuple(kept), loaded)
 
 
-__all__ = ["Difference", "Fixed", "Options", "Run", "RuleSet", "Session", "UsageError", "check", "check_target", "diff", "drift", "expand", "find_models", "fix", "lint", "run", "xacro_arguments"]
+__all__ = [
+    "Difference", "Fixed", "Options", "Result", "Run", "RuleSet", "Session", "Unreadable", "UsageError", "audit", "check", "check_target", "diff",
+    "drift", "expand", "find_models", "fix", "lint", "run", "text_report", "xacro_arguments",
+]

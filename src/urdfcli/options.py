@@ -10,10 +10,24 @@ from __future__ import annotations
 
 from dataclasses import dataclass, replace
 from pathlib import Path
+from typing import NamedTuple
 
+from .model.massprops import TOLERANCE
 from .model.targets import Profile, profile
 from .project.config import Config
 from .rules import RuleSet
+
+
+class AuditOptions(NamedTuple):
+    """The mass-property audit of ``urdfcli inertia``: how far a tensor may be from its
+    geometry's (a fraction), the density that weighs the geometry instead of the declared
+    masses, and whether to suggest an <inertial> for each flagged link (``xacro``: and
+    the call of the macro that wrote it)."""
+
+    tolerance: float = TOLERANCE
+    density: float | None = None
+    suggest: bool = False
+    xacro: bool = False
 
 
 @dataclass(frozen=True)
@@ -27,8 +41,10 @@ class Options:
     of the nearest one above each input (or a :class:`Config` itself), and
     ``isolated`` reads none. With ``libraries``, a xacro library is checked through
     the models that include it. ``jobs`` other than 1 checks models in that many
-    processes (0: one per CPU). ``format`` names the reporter of the command line.
-    ``fix`` and ``unsafe_fixes`` say which fixes :func:`urdfcli.api.fix` applies."""
+    processes (0: one per CPU). ``audit`` asks for the mass-property audit, ``load``
+    for a load of each model into its targets' own packages (``check --load``).
+    ``format`` names the reporter of the command line. ``fix`` and ``unsafe_fixes``
+    say which fixes :func:`urdfcli.api.fix` applies."""
 
     rule_set: RuleSet = RuleSet.LINT
     arguments: tuple[tuple[str, str], ...] = ()  # xacro arguments NAME:=VALUE, over the configuration's
@@ -41,6 +57,8 @@ class Options:
     targets: tuple[Profile, ...] = ()
     libraries: bool = True
     jobs: int = 1
+    audit: AuditOptions | None = None
+    load: bool = False
     format: str = "text"
     fix: bool | None = None  # apply the safe fixes (None: the configuration's ``fix``)
     unsafe_fixes: bool | None = None  # and the unsafe ones (None: the configuration's ``unsafe-fixes``)
@@ -72,4 +90,4 @@ class Options:
         return replace(self, **changes)
 
 
-__all__ = ["Options", "RuleSet"]
+__all__ = ["AuditOptions", "Options", "RuleSet"]

@@ -23,7 +23,6 @@ from .common import (
     PackagePathOption,
     TargetOption,
     choose,
-    fail,
     format_option,
     report_unreadable,
     session_for,
@@ -67,7 +66,7 @@ def check(
     asked = fixes.Fixing(fix, unsafe_fixes, diff, False)
     options = Options(
         RuleSet.CHECK, tuple(mappings.items()), tuple(package_path or ()), config, isolated, targets=tuple(target or ()),
-        format=choose(output_format, FORMATS), fix=asked.applies, unsafe_fixes=unsafe_fixes,
+        load=load, format=choose(output_format, FORMATS), fix=asked.applies, unsafe_fixes=unsafe_fixes,
     )
     output = Output.standard(color, quiet)
     with session_for(options) as session:
@@ -79,13 +78,8 @@ def check(
             fixes.print_diff(outcome, output)
             raise SystemExit(Exit.CANNOT_RUN if found.unreadable else Exit.PROBLEMS if outcome.changed else Exit.OK)
         fixes.report_failed(output, fixes.write_files(outcome))
-        if load:
-            try:
-                api.load_into_targets(found.results, session)
-            except api.UsageError as error:
-                raise fail(str(error)) from None
         report_unreadable(output, found.unreadable)
-        report.reporter(options.format)(found.results, output, "check", session.files)
+        report.reporter(options.format)(output, session.files).check(found.results)
         line = fixes.summary(outcome, asked)
         if line is not None and not quiet:
             output.err.file.write(line + "\n")

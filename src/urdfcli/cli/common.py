@@ -13,6 +13,7 @@ from typing import Annotated
 import typer
 
 from ..api import UsageError, xacro_arguments
+from ..model.result import Unreadable
 from ..options import Options
 from ..read.packages import PackageError
 from ..report.console import COLOR_MODES, Output
@@ -184,6 +185,6 @@ def session_for(options: Options) -> Iterator[Session]:
         opened.close()
 
 
-def report_unreadable(output: Output, reasons: list[str]) -> None:
-    for reason in reasons:
-        output.err.file.write(f"urdfcli: {escape(reason)}\n")
+def report_unreadable(output: Output, unreadable: list[Unreadable]) -> None:
+    for found in unreadable:
+        output.err.file.write(f"urdfcli: {escape(found.reason)}\n")

@@ -58,8 +58,8 @@ def diff(
     if len(paths) != 2:
         raise fail(f"diff compares two files, OLD and NEW; got {len(paths)}")
     options = Options(RuleSet.TREE, tuple(mappings.items()), tuple(package_path or ()), format=output_format)
-    with session_for(options) as run:
-        difference, revisions = api.diff_with_revisions(paths[0], paths[1], {}, run, tolerance, {})
+    with session_for(options) as session:
+        difference, revisions = api.diff_with_revisions(paths[0], paths[1], {}, session, tolerance, {})
     formats.report(difference, Output.standard(color), resolve(output_format), revisions)
     if not difference.same:
         raise SystemExit(Exit.PROBLEMS)

@@ -43,8 +43,8 @@ def drift(
     """
     options = Options(RuleSet.CHECK, (), tuple(package_path or ()), config, isolated, format=choose(output_format, FORMATS))
     output = Output.standard(color)
-    with session_for(options) as run:
-        results = api.drift(paths or ["."], session=run)
-        report.reporter(options.format)(results, output, "drift", run.files)
+    with session_for(options) as session:
+        results = api.drift(paths or ["."], session=session)
+        report.reporter(options.format)(output, session.files).drift(results)
     if any(d.severity.rank >= Severity.WARNING.rank for result in results for d in result.diagnostics):
         raise SystemExit(Exit.PROBLEMS)

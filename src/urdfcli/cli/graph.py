@@ -12,7 +12,7 @@ from ..report.console import Output
 from ..report.drawing import RenderError, Style, compat_dot, render, styled_dot
 from ..report.escape import escape
 from ..report.output import OutputError, write_atomic
-from ..report.result import Result
+from ..model.result import Result
 from ..rules import REGISTRY
 from ..options import Options, RuleSet
 from .common import ColorOption, ConfigOption, Exit, IsolatedOption, PackagePathOption, fail, session_for, split_inputs

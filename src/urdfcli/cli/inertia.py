@@ -8,13 +8,10 @@ import typer
 
 from .. import api, report
 from ..model.massprops import TOLERANCE
-from ..report import fixes
+from ..options import AuditOptions, Options, RuleSet
 from ..report.console import Output, write
-from ..report.inertia import Audit, flagged, problem_count
+from ..report.inertia import problem_count
 from ..report.lines import diagnostic_lines
-from ..session import Session
-from ..model.targets import build
-from ..options import Options, RuleSet
 from .common import (
     ColorOption,
     ConfigOption,
@@ -69,7 +66,7 @@ def inertia(
     paths, mappings = split_inputs(inputs)
     options = Options(
         RuleSet.TREE, tuple(mappings.items()), tuple(package_path or ()), config, isolated, targets=tuple(target or ()), libraries=False,
-        format=output_format,
+        audit=AuditOptions(tolerance, density, suggest, xacro), format=output_format,
     )
     output = Output.standard(color)
     with session_for(options) as session:
@@ -77,34 +74,9 @@ def inertia(
         report_unreadable(output, found.unreadable)
         if not found.results:
             raise SystemExit(Exit.CANNOT_RUN)
-        for result in found.results:
-            result.audit = api.audit(result, session, tolerance, density)
-            if result.audit is not None and (suggest or xacro):
-                result.audit = result.audit._replace(suggestions=suggestions(result.audit, session, density, xacro))
-            if result.audit is not None and options.targets:
-                result.audit = result.audit._replace(targets=tuple(build(result.loaded, p) for p in options.targets))
         write(output.err, (line for result in found.results for d in result.errors for line in diagnostic_lines(d, None)))
-        report.reporter(options.format)(found.results, output, "inertia", session.files)
+        report.reporter(options.format)(output, session.files).audit(found.results)
     if found.unreadable:
         raise SystemExit(Exit.CANNOT_RUN)
     if problem_count(found.results):
         raise SystemExit(Exit.PROBLEMS)
-
-
-def suggestions(audit: Audit, session: Session, density: float | None, xacro: bool) -> tuple[str, ...]:
-    """For each flagged link, the <inertial> of a uniform body filling its geometry;
-    with ``xacro``, the macro that wrote the link's <inertial> and the call of it that gives those values."""
-    found = []
-    loaded = audit.loaded
-    for entry in flagged(audit):
-        use = fixes.macro_use(loaded, entry.link) if xacro else None
-        if use is not None:
-            called = f", called at {use.called_at} as {use.call}" if use.call else ""
-            found.append(f"<!-- link '{entry.link.name}': its <inertial> comes from xacro macro '{use.name}' ({use.defined_at}){called} -->")
-            call = fixes.matching_call(loaded, entry.link, use, session.expander) if density is None else None
-            if call is not None:
-                found.append(f"<!-- the call that gives the geometry's values: -->\n{call}")
-                continue
-            found.append(f"<!-- no call of '{use.name}' gives the geometry's values: replace the call with -->")
-        found.append(fixes.suggestion(loaded, entry, density))
-    return tuple(found)

@@ -89,7 +89,7 @@ def lint(
             fixes.print_diff(outcome, output)
         else:
             fixes.report_failed(output, fixes.write_files(outcome))
-            report.reporter(options.format)(found.results, output, "lint", session.files)
+            report.reporter(options.format)(output, session.files).lint(found.results)
             line = fixes.summary(outcome, asked)
             if line is not None and not quiet:
                 (output.out if report.resolve(options.format) == "text" else output.err).file.write(line + "\n")

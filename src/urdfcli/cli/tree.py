@@ -8,12 +8,12 @@ import typer
 
 from .. import api
 from ..model.kinematics import roots
+from ..model.result import Result, Unreadable
 from ..model.targets import build, profile
 from ..options import Options, RuleSet
 from ..report.escape import escape
 from ..report.console import Output, write
 from ..report.lines import diagnostic_lines
-from ..report.result import Result
 from ..report.targets import build_dict, joint_notes, link_notes
 from ..report.targets import summary as target_summary
 from ..report.tree import cut, summarise, text_lines, tree_json, tree_rows
@@ -83,12 +83,7 @@ def tree(
         builds = [build(result.loaded, profile(text)) for value in target or () for text in value.split(",")]
         notes = target_notes(builds)
         if options.format == "json":
-            text = tree_json(robot, shown, summary)
-            if builds:
-                import json
-
-                text = text[:-1] + f', "targets": {json.dumps([build_dict(b) for b in builds])}}}'
-            output.out.file.write(text + "\n")
+            output.out.file.write(tree_json(robot, shown, summary, [build_dict(b) for b in builds]) + "\n")
         else:
             write(output.out, text_lines(robot, shown, joints=not no_joints, ascii_only=ascii_only, notes=notes))
             write(output.out, [[(summary.text(), "bold")]])
@@ -114,8 +109,8 @@ def load_model(path: str, session: Session) -> Result:
     config = api.configured(session)(path)
     first_set = (config.argument_sets(path) or [{}])[0]
     found = api.check_target(api.Target(path), session.using(session.options.but(arguments=tuple({**first_set, **session.options.mappings}.items()))))
-    if isinstance(found, str):
-        raise fail(found)
+    if isinstance(found, Unreadable):
+        raise fail(found.reason)
     return found
 
 

@@ -35,10 +35,10 @@ from ..read.packages import PackageResolver
 from ..read.files import SourceFile, SourceFiles
 from ..read.positions import Text
 from ..read.xacro import Expander
-from ..report import fixes
+from ..model import fixes
+from ..model.audit import LinkAudit
+from ..model.result import Result
 from ..report.escape import escape
-from ..report.inertia import LinkReport
-from ..report.result import Result
 from ..options import Options, RuleSet
 from ..rules import REGISTRY, Remedy
 from ..session import Session
@@ -164,7 +164,7 @@ class Checker:
             for call in self._calls_that_caused(mark):
                 if call.place.file in texts and call.place.file != mark.place.file:
                     marks.setdefault(call.place.file, []).append(call)
-        for reason in [*run.unreadable, *(n for r in run.results if r.library for n in r.library.notes)]:
+        for reason in [*map(str, run.unreadable), *(n for r in run.results if r.library for n in r.library.notes)]:
             marks[path].append(self._problem(path, reason, Severity.INFO))
         return Checked(marks, frozenset({path, *_files(run.models)}), self.runs.get(path), frozenset(m.label for m in run.models))
 
@@ -231,13 +231,13 @@ class Checker:
         one written; for one a macro call wrote, the call that gives those values. From
         the first model whose audit finds ``code`` on that link."""
         for model in _models_reading(self.runs, path):
-            audit = api.audit(model, self.session)
+            audit = api.audit(model.loaded, api.configured(self.session)(model.path)) if model.loaded is not None else None
             entry = next((e for e in audit.links if e.link.name == name), None) if audit is not None else None
             if entry is not None and entry.link.inertial is not None and any(d.code == code for d in entry.problems):
                 return self._replacement(model, entry)
         return None
 
-    def _replacement(self, model: Result, entry: LinkReport) -> Fix | None:
+    def _replacement(self, model: Result, entry: LinkAudit) -> Fix | None:
         link = entry.link
         loaded = model.loaded
         suggested = fixes.suggestion(loaded, entry)
@@ -524,7 +524,7 @@ def _labelled(results: list[Result]) -> list[tuple[Diagnostic, str]]:
         return [(d, "") for d in results[0].diagnostics]
     given: dict[tuple, tuple[Diagnostic, list[str]]] = {}
     for result in results:
-        arguments = " ".join(f"{k}:={v}" for k, v in result.arguments.items())
+        arguments = " ".join(f"{k}:={v}" for k, v in result.arguments)
         for diagnostic in result.diagnostics:
             key = (diagnostic.code, diagnostic.location, diagnostic.message)
             given.setdefault(key, (diagnostic, []))[1].append(arguments)

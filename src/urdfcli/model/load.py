@@ -8,7 +8,9 @@ time, tolerantly, keeping no tree. The rules run on a :class:`Loaded` (see
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from functools import cached_property
+from pathlib import Path
 from typing import TYPE_CHECKING
 
 from ..diagnostics import Diagnostic, Location
@@ -40,6 +42,7 @@ class Loaded:
         resolver: PackageResolver | None = None,
         meshes: MeshSummaries | None = None,
         reads_meshes: bool = True,
+        sources: XacroSources | None = None,
     ) -> None:
         self.document = document
         self.robot = robot
@@ -48,7 +51,7 @@ class Loaded:
         self.meshes = meshes if meshes is not None else MeshSummaries()
         self.reads_meshes = reads_meshes
         self.derived: dict = {}  # worked out from the rest, once
-        self.sources: XacroSources | None = None  # the xacro files behind it, for the source rules (set by the caller)
+        self.sources = sources  # the xacro files behind it, for the source rules
 
     def remembered(self, key, compute):
         """``compute()``, once for this model: for a costly step several rules share."""
@@ -118,12 +121,17 @@ def load(
     meshes: MeshSummaries | None = None,
     force_xacro: bool = False,
     reads_meshes: bool = True,
+    sources: Callable[[Document], XacroSources] | None = None,
 ) -> Loaded:
     """Read one input and its robot. With ``vocabulary``, markup URDF does not define
     is classified too (for the description rules); without ``reads_meshes``, the rules
-    open no mesh file. Raises InputError."""
+    open no mesh file; ``sources`` finds the xacro files behind a document, for the
+    source rules. Raises InputError."""
     document, diagnostics = read_document(path, inputs, resolver, mappings, force_xacro)
-    loaded = Loaded(document, diagnostics=diagnostics, resolver=resolver, meshes=meshes, reads_meshes=reads_meshes)
+    if document.missing_argument is not None:
+        diagnostics = [needs_argument(d, document.missing_argument, path) if d.code == "X003" else d for d in diagnostics]
+    found_sources = sources(document) if sources is not None else None
+    loaded = Loaded(document, diagnostics=diagnostics, resolver=resolver, meshes=meshes, reads_meshes=reads_meshes, sources=found_sources)
     if not document.readable:
         return loaded
     try:
@@ -143,6 +151,15 @@ def load(
     loaded.diagnostics += found
     loaded.robot = robot
     return loaded
+
+
+def needs_argument(diagnostic: Diagnostic, name: str, path: str) -> Diagnostic:
+    """xacro's 'Undefined substitution argument NAME', said so that it names the fix for the input ``path``."""
+    message = (f"needs xacro argument '{name}': it has no value where it is used (no default, or used before its "
+               f"<xacro:arg>); pass {name}:=VALUE, or list the model's argument sets in [tool.urdfcli] models")
+    file = Path(path).name if path != STDIN else "FILE"
+    hint = f'give {name}:=VALUE after the file on the command line, or in pyproject.toml: [tool.urdfcli.xacro-args] "{file}" = {{ {name} = "VALUE" }}'
+    return diagnostic._replace(message=message, hint=diagnostic.hint or hint)
 
 
 def _unreadable(loaded: Loaded, error: XmlError) -> None:

@@ -370,28 +370,58 @@ def _entries(folder: Path) -> list[Path]:
 
 
 # -- what lint tells of each mesh (JSON) ----------------------------------------------
-def mesh_facts(loaded: Loaded, verdicts=None) -> list[dict]:
-    """For each mesh file the model names (first use first): its URI, the file, format,
-    triangle count, declared unit (metres per unit, COLLADA), size in metres (unit applied,
-    scale not), whether it is watertight, why it could not be read; and each use (link,
-    role, scale, and the unit it looks like when F003 says so: ``verdicts(use)``)."""
-    facts: dict[str, dict] = {}
+class MeshFileUse(NamedTuple):
+    """One use of a mesh file: the link, its role (visual or collision), the scale, and
+    the unit the file looks like it was written in, when F003 says so."""
+
+    link: str
+    role: str
+    scale: tuple[float, float, float]
+    looks_like: str | None
+
+
+class MeshFile(NamedTuple):
+    """A mesh file the model names, as ``lint`` read it: its URI, the file, format,
+    triangle count, declared unit (metres per unit, COLLADA), size in metres (unit
+    applied, scale not), whether it is watertight, why it could not be read; and its uses."""
+
+    uri: str
+    path: str | None
+    format: str | None
+    triangles: int | None
+    unit: float | None
+    size: tuple[float, ...] | None
+    watertight: bool | None
+    problem: str | None
+    uses: tuple[MeshFileUse, ...]
+
+    def as_dict(self) -> dict:
+        return {
+            **self._asdict(),
+            "size": list(self.size) if self.size is not None else None,
+            "uses": [{**use._asdict(), "scale": list(use.scale)} for use in self.uses],
+        }
+
+
+def mesh_files(loaded: Loaded, verdicts=None) -> list[MeshFile]:
+    """Each mesh file the model names (first use first), with its uses (``verdicts(use)``:
+    F003's verdict on a use, if any)."""
+    found: dict[str, MeshFile] = {}
     for use in mesh_uses(loaded):
-        if use.uri not in facts:
-            found = summary_of(loaded, use)
-            facts[use.uri] = {
-                "uri": use.uri,
-                "path": str(use.path) if use.path is not None else None,
-                "format": found.format if found is not None else format_of(use.uri),
-                "triangles": found.triangles if found is not None else None,
-                "unit": found.unit if found is not None else None,
-                "size": [float(f"{v:.6g}") for v in found.size] if found is not None and found.size is not None else None,
-                "watertight": found.watertight if found is not None else None,
-                "problem": (found.problem.message if found.problem else found.skipped) if found is not None else None,
-                "uses": [],
-            }
+        if use.uri not in found:
+            summary = summary_of(loaded, use)
+            found[use.uri] = MeshFile(
+                use.uri,
+                str(use.path) if use.path is not None else None,
+                summary.format if summary is not None else format_of(use.uri),
+                summary.triangles if summary is not None else None,
+                summary.unit if summary is not None else None,
+                tuple(float(f"{v:.6g}") for v in summary.size) if summary is not None and summary.size is not None else None,
+                summary.watertight if summary is not None else None,
+                (summary.problem.message if summary.problem else summary.skipped) if summary is not None else None,
+                (),
+            )
         verdict = verdicts(use) if verdicts is not None else None
-        facts[use.uri]["uses"].append(
-            {"link": use.link.name, "role": use.role, "scale": list(use.scale), "looks_like": verdict.unit if verdict is not None else None}
-        )
-    return list(facts.values())
+        entry = found[use.uri]
+        found[use.uri] = entry._replace(uses=(*entry.uses, MeshFileUse(use.link.name, use.role, tuple(use.scale), verdict.unit if verdict is not None else None)))
+    return list(found.values())

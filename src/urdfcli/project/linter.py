@@ -56,10 +56,11 @@ def run_rules(loaded: Loaded, config: Config, rule_set: RuleSet) -> list[Diagnos
     return found
 
 
-def lint(loaded: Loaded, config: Config, rule_set: RuleSet = RuleSet.LINT) -> list[Diagnostic]:
+def lint(loaded: Loaded, config: Config, rule_set: RuleSet = RuleSet.LINT, found: list[Diagnostic] | None = None) -> list[Diagnostic]:
     """Every diagnostic of a loaded model that its configuration and suppressions leave,
-    each with its fix placed in the sources (see :func:`with_fixes`)."""
-    return with_fixes(loaded, configure(loaded, [*loaded.diagnostics, *run_rules(loaded, config, rule_set)], config, rule_set))
+    each with its fix placed in the sources (see :func:`with_fixes`); ``found``: what was
+    found of it beside reading and the rules (a generated URDF's drift)."""
+    return with_fixes(loaded, configure(loaded, [*loaded.diagnostics, *(found or ()), *run_rules(loaded, config, rule_set)], config, rule_set))
 
 
 def with_fixes(loaded: Loaded, diagnostics: list[Diagnostic]) -> list[Diagnostic]:

@@ -37,7 +37,7 @@ from ..read.document import STDIN, Document
 from ..read.packages import MAX_SCAN_DIRS, SKIP_DIRS, PackageIndex, PackageResolver
 from ..read.files import SourceFile, SourceFiles
 from ..read.xacro_scan import XacroFile, XacroGlobals, shown
-from ..report.result import Library, Result
+from ..model.result import Library, Result, Unreadable
 
 XACRO_SUFFIXES = (".xacro", ".urdf")
 _SUBSTITUTION = re.compile(r"\$\(\s*(\w+)\s*([^()]*?)\s*\)|\$\{\s*([A-Za-z_]\w*)\s*\}")
@@ -464,7 +464,7 @@ def _key(diagnostic: Diagnostic) -> tuple:
     return (diagnostic.code, location.file, location.line, location.column, diagnostic.message)
 
 
-def assemble(entries: list[Entry], outcome: Callable[[Target], Result | str]) -> tuple[list[Result], list[str]]:
+def assemble(entries: list[Entry], outcome: Callable[[Target], Result | Unreadable]) -> tuple[list[Result], list[Unreadable]]:
     """The results to show, in the order the files were given, and the reasons
     some inputs could not be read.
 
@@ -475,22 +475,22 @@ def assemble(entries: list[Entry], outcome: Callable[[Target], Result | str]) ->
     reports its mistakes once.
     """
     models = [outcome(target) for entry in entries if not entry.library for target in entry.targets]
-    unused = _unused_in_all([m for m in models if not isinstance(m, str)])
+    unused = _unused_in_all([m for m in models if isinstance(m, Result)])
     results, unreadable, shown_keys = [], [], set()
     for entry in entries:
         if not entry.library:
             for target in entry.targets:
                 result = outcome(target)
-                if isinstance(result, str):
+                if isinstance(result, Unreadable):
                     unreadable.append(result)
                     continue
                 is_own = functools.cache(lambda file, path=entry.path: _same_input(file, path))
-                result.diagnostics = [
+                shown = tuple(
                     d if is_own(d.path) or len(models) == 1 else _through(d, result)  # one model: it found them all
                     for d in result.diagnostics
                     if unused(d) and _fresh(d, is_own(d.path), shown_keys)
-                ]
-                results.append(result)
+                )
+                results.append(result.but(diagnostics=shown))
             continue
         results.append(_library_result(entry, outcome, shown_keys, unreadable))
     return results, unreadable
@@ -535,7 +535,7 @@ def _fresh(diagnostic: Diagnostic, in_own_file: bool, shown_keys: set) -> bool:
     return True
 
 
-def _library_result(entry: Entry, outcome, shown_keys: set, unreadable: list[str]) -> Result:
+def _library_result(entry: Entry, outcome, shown_keys: set, unreadable: list[Unreadable]) -> Result:
     library = Path(entry.path).resolve()
     checked_through: list[str] = []
     notes: list[str] = []  # why a model could not be used, or that none includes it
@@ -545,8 +545,8 @@ def _library_result(entry: Entry, outcome, shown_keys: set, unreadable: list[str
     used: list[Result] = []  # the models it was checked through
     for target in entry.targets:
         model = outcome(target)
-        if isinstance(model, str):
-            notes.append(f"not checked through {target.label}: {model}")
+        if isinstance(model, Unreadable):
+            notes.append(f"not checked through {target.label}: {model.reason}")
             continue
         if model.needs_argument is not None:  # the model cannot be expanded as it is: say how to make it, do not fail the library
             needing.append(f"{target.label} needs '{model.needs_argument}'")
@@ -577,7 +577,7 @@ def _library_result(entry: Entry, outcome, shown_keys: set, unreadable: list[str
         ]
         reasons = needing + [f"{label} does not read it with {arguments}" for label, arguments in unread]
         alone = outcome(Target(entry.path, alone=True, unchecked="; ".join(reasons)))
-        if isinstance(alone, str):
+        if isinstance(alone, Unreadable):
             unreadable.append(alone)
         else:
             found += alone.diagnostics
@@ -593,7 +593,7 @@ def _library_result(entry: Entry, outcome, shown_keys: set, unreadable: list[str
             places.add(place)
             if _fresh(diagnostic, False, shown_keys):
                 diagnostics.append(diagnostic)
-    return Result(entry.path, diagnostics, library=Library(tuple(checked_through), tuple(notes)))
+    return Result(entry.path, tuple(diagnostics), library=Library(tuple(checked_through), tuple(notes)))
 
 
 def unchecked_library(path: str, unchecked: str) -> Diagnostic:

@@ -1,24 +1,24 @@
-"""Reports: the formats of check and lint by name, the tree, the graph, the inertia audit.
+"""Reports: the formats by name, the tree, the graph, the inertia audit.
 
-Every format is a module with one function, ``report(results, output, view,
-sources)``, made from the one :class:`~urdfcli.result.Result` type; ``view``
-is the command (``check``, ``lint`` or ``inertia``). Machine formats are
-written plain, never through rich.
+Every format is a :class:`~urdfcli.report.base.Reporter` registered here by name;
+each writes the one :class:`~urdfcli.model.result.Result` type, and computes
+nothing of its own. Machine formats are written plain, never through rich.
 """
 
 from __future__ import annotations
 
 import os
 
-from . import check_urdf, concise, github, json, sarif, text
+from .base import Reporter
+from .check_urdf import CheckUrdfReporter
+from .concise import ConciseReporter
+from .github import GithubReporter
+from .json import JsonReporter
+from .sarif import SarifReporter
+from .text import TextReporter
 
-FORMATS = {
-    "text": text.report,
-    "concise": concise.report,
-    "json": json.report,
-    "sarif": sarif.report,
-    "github": github.report,
-    "check_urdf": check_urdf.report,
+REPORTERS: dict[str, type[Reporter]] = {
+    reporter.name: reporter for reporter in (TextReporter, ConciseReporter, JsonReporter, SarifReporter, GithubReporter, CheckUrdfReporter)
 }
 
 
@@ -30,6 +30,9 @@ def resolve(name: str) -> str:
     return name
 
 
-def reporter(name: str):
-    """The report function of a format (``auto`` resolved)."""
-    return FORMATS[resolve(name)]
+def reporter(name: str) -> type[Reporter]:
+    """The reporter of a format (``auto`` resolved)."""
+    return REPORTERS[resolve(name)]
+
+
+__all__ = ["REPORTERS", "Reporter", "reporter", "resolve"]

@@ -9,12 +9,13 @@ from ..diagnostics import Severity
 from ..model.kinematics import children_by_joint_name
 from ..model.load import Loaded
 from ..rules import REGISTRY
+from .base import Reporter
 from .console import Output, write
 from .escape import escape
 from .lines import concise_line
 
 if TYPE_CHECKING:
-    from .result import Result
+    from ..model.result import Result
 
 
 def tree_lines(loaded: Loaded) -> list[str]:
@@ -59,10 +60,18 @@ def error_lines(result: Result) -> list[str]:
     return lines + ["ERROR: Model Parsing the xml failed"] if lines else []
 
 
-def report(results: list[Result], output: Output, view: str = "check", sources=None) -> None:
+class CheckUrdfReporter(Reporter):
     """check_urdf's output for each file: what urdfdom rejects on standard error, else
     the tree on standard output, as check_urdf prints them; the errors urdfdom does not
     check (a negative mass, a loop) follow on standard error, one line each."""
+
+    name = "check_urdf"
+
+    def check(self, results: list[Result]) -> None:
+        write_check_urdf(results, self.output)
+
+
+def write_check_urdf(results: list[Result], output: Output) -> None:
     for result in results:
         errors = error_lines(result)
         if errors:

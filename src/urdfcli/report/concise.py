@@ -7,14 +7,28 @@ from __future__ import annotations
 
 from typing import TYPE_CHECKING
 
+from .base import Reporter
 from .console import Output
 from .lines import concise_line, fixable_line, library_lines, summary_line
 
 if TYPE_CHECKING:
-    from .result import Result
+    from ..model.result import Result
 
 
-def report(results: list[Result], output: Output, view: str = "lint", sources=None) -> None:
+class ConciseReporter(Reporter):
+    """One line per diagnostic on standard output; notes and the summary on standard error."""
+
+    name = "concise"
+
+    def lint(self, results: list[Result]) -> None:
+        write_concise(results, self.output, fixes=True)
+
+    def drift(self, results: list[Result]) -> None:
+        write_concise(results, self.output, fixes=False)
+
+
+def write_concise(results: list[Result], output: Output, fixes: bool) -> None:
+    """Each diagnostic on a line; with ``fixes``, what ``--fix`` would fix after the summary."""
     out, notes = output.out.file, output.err.file
     for result in results:
         out.writelines(concise_line(d) + "\n" for d in result.diagnostics)
@@ -22,6 +36,6 @@ def report(results: list[Result], output: Output, view: str = "lint", sources=No
         notes.writelines(line + "\n" for line in library_lines(results))
     if results:  # nothing was read: the one-line reasons already said why
         notes.write(summary_line(results) + "\n")
-        fixable = fixable_line(results) if view in ("check", "lint") else None
+        fixable = fixable_line(results) if fixes else None
         if fixable is not None:
             notes.write(fixable + "\n")

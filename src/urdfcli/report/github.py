@@ -5,12 +5,12 @@ from __future__ import annotations
 from typing import TYPE_CHECKING
 
 from ..diagnostics import Diagnostic
-from .console import Output
+from .base import Reporter
 from .escape import escape
 from .lines import severity_name
 
 if TYPE_CHECKING:
-    from .result import Result
+    from ..model.result import Result
 
 LEVELS = {"error": "error", "warning": "warning", "info": "notice"}
 
@@ -36,6 +36,10 @@ def line(diagnostic: Diagnostic) -> str:
     return f"::{LEVELS[severity_name(diagnostic)]} {','.join(props)}::" + "%0A".join(map(escape_data, [diagnostic.message, *calls]))
 
 
-def report(results: list[Result], output: Output, view: str = "lint", sources=None) -> None:
+class GithubReporter(Reporter):
     """One workflow command per diagnostic, on standard output."""
-    output.out.file.writelines(line(d) + "\n" for result in results for d in result.diagnostics)
+
+    name = "github"
+
+    def lint(self, results: list[Result]) -> None:
+        self.output.out.file.writelines(line(d) + "\n" for result in results for d in result.diagnostics)

@@ -1,64 +1,25 @@
-"""The mass-property audit of ``urdfcli inertia``: per link the declared tensor, its
-principal moments, the tensor the geometry implies, and the problems; then the
-whole robot's total; as text or JSON, with suggested ``<inertial>`` elements."""
+"""The mass-property audit of ``urdfcli inertia`` (worked out in :mod:`urdfcli.model.audit`),
+written as text or JSON: per link the declared tensor, its principal moments, the tensor
+the geometry implies, and the problems; then the whole robot's total; the suggested
+``<inertial>`` elements."""
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING, NamedTuple
+from typing import TYPE_CHECKING
 
-from ..diagnostics import Diagnostic
 from ..model import massprops
-from ..model.inertia import Assessment, Body, assess, declared_tensor, implied, is_frame, total, used_body
+from ..model.audit import Audit, LinkAudit
+from ..model.inertia import declared_tensor
 from ..model.load import Loaded
 from ..model.massprops import number, tensor_text
-from ..model.robot import Link
-from ..rules import REGISTRY, Remedy
+from ..rules import REGISTRY
 from .console import Line, Output, write
 from .escape import escape
 from .lines import diagnostic_dict, diagnostic_lines, plural
 from .targets import build_dict, inertia_lines
 
 if TYPE_CHECKING:
-    from .result import Result
-
-
-class LinkReport(NamedTuple):
-    link: Link
-    frame: bool  # a massless frame link: listed quietly
-    assessment: Assessment | None
-    problems: tuple[Diagnostic, ...]  # the mass-property diagnostics about this link
-    mass: float | None = None  # the mass the total counts: from --density, or as declared
-    from_density: bool = False
-
-
-class Audit(NamedTuple):
-    loaded: Loaded
-    links: tuple[LinkReport, ...]
-    total: Body | None
-    problems: tuple[Diagnostic, ...]  # every mass-property diagnostic, in file order
-    tolerance: float = massprops.TOLERANCE
-    suggestions: tuple[str, ...] = ()  # XML for the flagged links (``--suggest``), printed after the table
-    targets: tuple = ()  # what each consumer of ``--target`` builds (model.targets.Build), printed after the total
-
-
-def build(loaded: Loaded, problems: list[Diagnostic], tolerance: float = massprops.TOLERANCE, density: float | None = None) -> Audit:
-    """The per-link table, the problems (each given to the links it is about) and the total."""
-    mine: dict[str, list[Diagnostic]] = {name: [] for name in loaded.robot.links}
-    for diagnostic in problems:
-        for subject in dict.fromkeys(diagnostic.subjects):
-            if subject in mine:
-                mine[subject].append(diagnostic)
-    links = []
-    for link in loaded.robot.links.values():
-        used = used_body(loaded, link, density)
-        from_density = density is not None and implied(loaded, link, density).body is not None
-        links.append(LinkReport(link, is_frame(link), assess(loaded, link, density), tuple(mine[link.name]), used.mass if used else None, from_density))
-    return Audit(loaded, tuple(links), total(loaded, density), tuple(problems), tolerance)
-
-
-def flagged(audit: Audit) -> list[LinkReport]:
-    """Links with a problem that a new <inertial> fixes: those a uniform body is suggested for."""
-    return [entry for entry in audit.links if any(REGISTRY[d.code].remedy is Remedy.INERTIAL for d in entry.problems)]
+    from ..model.result import Result
 
 
 # -- JSON ------------------------------------------------------------------------------
@@ -70,7 +31,7 @@ def _tensor(tensor) -> dict[str, float] | None:
     return None if tensor is None else {k: float(v) for k, v in massprops.as_dict(tensor).items()}
 
 
-def expected_from(entry: LinkReport) -> str:
+def expected_from(entry: LinkAudit) -> str:
     if entry.frame:
         return "massless frame link"
     if entry.assessment is None:
@@ -78,7 +39,7 @@ def expected_from(entry: LinkReport) -> str:
     return entry.assessment.implied.source
 
 
-def link_dict(entry: LinkReport, loaded: Loaded) -> dict:
+def link_dict(entry: LinkAudit, loaded: Loaded) -> dict:
     link, found = entry.link, entry.assessment
     inertial = link.inertial
     declared = declared_tensor(link)
@@ -163,7 +124,7 @@ def problem_count(results: list[Result]) -> int:
     return sum(len(r.audit.problems) for r in results if r.audit is not None) + sum(len(r.errors) for r in results)
 
 
-def report(results: list[Result], output: Output, view: str = "inertia", sources=None) -> None:
+def write_audit(results: list[Result], output: Output) -> None:
     """Each model's table on standard output and its problems on standard error; then
     how many problems there are."""
     for result in results:

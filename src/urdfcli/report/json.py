@@ -1,4 +1,4 @@
-"""SPEC section 4: the JSON contract of check and lint."""
+"""The JSON contract of check and lint (``version`` 1), and the audit of inertia."""
 
 from __future__ import annotations
 
@@ -6,12 +6,13 @@ import json
 from typing import TYPE_CHECKING
 
 from ..diagnostics import Severity
-from .console import Output
+from .base import Reporter
 from .escape import json_escape
+from .inertia import audit_dict
 from .lines import counts, diagnostic_dict
 
 if TYPE_CHECKING:
-    from .result import Result
+    from ..model.result import Result
 
 
 def file_dict(result: Result, files=None) -> dict:
@@ -25,9 +26,9 @@ def file_dict(result: Result, files=None) -> dict:
         entry["checked_through"] = list(result.library.checked_through)
         entry["notes"] = list(result.library.notes)
     if result.arguments:  # a model run with an argument set from [tool.urdfcli] models
-        entry["arguments"] = result.arguments
+        entry["arguments"] = dict(result.arguments)
     if result.meshes:  # lint: each mesh file as read (format, triangles, unit, size...)
-        entry["meshes"] = list(result.meshes)
+        entry["meshes"] = [mesh.as_dict() for mesh in result.meshes]
     return entry
 
 
@@ -50,13 +51,14 @@ def dumps(value) -> str:
     return json_escape(json.dumps(value, indent=2, ensure_ascii=False))
 
 
-def report(results: list[Result], output: Output, view: str = "lint", files=None) -> None:
+class JsonReporter(Reporter):
     """The JSON contract of check and lint; for inertia, each file's audit (a list for several)."""
-    if view == "inertia":
-        from .inertia import audit_dict
 
+    name = "json"
+
+    def lint(self, results: list[Result]) -> None:
+        self.output.out.file.write(render(results, self.files) + "\n")
+
+    def audit(self, results: list[Result]) -> None:
         objects = [audit_dict(result) for result in results]
-        text = dumps(objects[0] if len(objects) == 1 else objects)
-    else:
-        text = render(results, files)
-    output.out.file.write(text + "\n")
+        self.output.out.file.write(dumps(objects[0] if len(objects) == 1 else objects) + "\n")

@@ -12,7 +12,7 @@ from .console import Line
 from .escape import escape
 
 if TYPE_CHECKING:
-    from .result import Result
+    from ..model.result import Result
 
 TRACE_LEVELS = 3  # macro calls shown under a diagnostic
 

@@ -14,12 +14,12 @@ from typing import TYPE_CHECKING
 from ..diagnostics import Diagnostic
 from ..rules import REGISTRY, Rule
 from ..version import __version__
-from .console import Output
+from .base import Reporter
 from .escape import json_escape
 from .lines import severity_name
 
 if TYPE_CHECKING:
-    from .result import Result
+    from ..model.result import Result
 
 SCHEMA = "https://json.schemastore.org/sarif-2.1.0.json"
 LEVELS = {"error": "error", "warning": "warning", "info": "note"}
@@ -103,5 +103,10 @@ def render(results) -> str:
     return json_escape(json.dumps(document, indent=2, ensure_ascii=False))
 
 
-def report(results: list[Result], output: Output, view: str = "lint", sources=None) -> None:
-    output.out.file.write(render(results) + "\n")
+class SarifReporter(Reporter):
+    """A SARIF 2.1.0 log on standard output."""
+
+    name = "sarif"
+
+    def lint(self, results: list[Result]) -> None:
+        self.output.out.file.write(render(results) + "\n")

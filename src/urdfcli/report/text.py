@@ -10,16 +10,21 @@ standard error); ``lint`` writes everything on standard output, so that
 from __future__ import annotations
 
 import io
+from collections.abc import Iterator
 from typing import TYPE_CHECKING
 
 from ..read.files import SourceFiles
+from .base import Reporter
 from .check_urdf import tree_lines
 from .console import Line, Output, console, write
 from .escape import escape
+from .inertia import write_audit
 from .lines import diagnostic_lines, fixable_line, library_lines, summary_line
 
 if TYPE_CHECKING:
-    from .result import Result
+    from rich.console import Console
+
+    from ..model.result import Result
 
 def tree_text(result: Result) -> list[Line]:
     """check_urdf's tree of a model, styled."""
@@ -39,37 +44,56 @@ def tree_text(result: Result) -> list[Line]:
     return lines
 
 
-def report(results: list[Result], output: Output, view: str = "lint", files: SourceFiles | None = None) -> None:
-    """``check``: each model's tree on standard output, diagnostics on standard error;
-    ``lint`` (and ``drift``): everything on standard output, and for check and lint what
-    ``--fix`` would fix; ``inertia``: the audit."""
-    if view == "inertia":
-        from .inertia import report as audit_report
+class TextReporter(Reporter):
+    """``check``: each model's tree on standard output (as check_urdf prints it), the
+    diagnostics on standard error; ``lint``: everything on standard output, so that
+    ``> report.txt`` holds it; both then say what ``--fix`` would fix. ``drift``: as
+    lint, without the fixes (it takes no ``--fix``); ``audit``: the mass-property table."""
 
-        audit_report(results, output, view, files)
-        return
-    out = output.out
-    err = output.err if view == "check" else output.out
-    for result in results:
-        if view == "check" and result.library is None and result.loaded is not None and not output.quiet:
-            if len(results) > 1:
-                write(out, [[(f"==> {escape(result.label if result.arguments else result.shown)} <==", "bold")]])
-            write(out, tree_text(result))
-        write(err, (line for diagnostic in result.diagnostics for line in diagnostic_lines(diagnostic, files)))
-    if not output.quiet:
-        write(err, ([(line, "dim")] for line in library_lines(results)))
-    if results:
-        write(err, [[(summary_line(results), "bold")]])
-        fixable = fixable_line(results) if view in ("check", "lint") else None
-        if fixable is not None:
-            write(err, [[(fixable, "")]])
+    name = "text"
+
+    def check(self, results: list[Result]) -> None:
+        output = self.output
+        for result in results:
+            if result.library is None and result.loaded is not None and not output.quiet:
+                if len(results) > 1:
+                    write(output.out, [[(f"==> {escape(result.label if result.arguments else result.shown)} <==", "bold")]])
+                write(output.out, tree_text(result))
+            write(output.err, self._diagnostics(result))
+        self._summary(results, output.err, fixes=True)
+
+    def lint(self, results: list[Result]) -> None:
+        self._all(results, fixes=True)
+
+    def drift(self, results: list[Result]) -> None:
+        self._all(results, fixes=False)
+
+    def audit(self, results: list[Result]) -> None:
+        write_audit(results, self.output)
+
+    def _all(self, results: list[Result], fixes: bool) -> None:
+        for result in results:
+            write(self.output.out, self._diagnostics(result))
+        self._summary(results, self.output.out, fixes)
+
+    def _diagnostics(self, result: Result) -> Iterator[Line]:
+        return (line for diagnostic in result.diagnostics for line in diagnostic_lines(diagnostic, self.files))
+
+    def _summary(self, results: list[Result], target: Console, fixes: bool) -> None:
+        if not self.output.quiet:
+            write(target, ([(line, "dim")] for line in library_lines(results)))
+        if results:
+            write(target, [[(summary_line(results), "bold")]])
+            fixable = fixable_line(results) if fixes else None
+            if fixable is not None:
+                write(target, [[(fixable, "")]])
 
 
-def plain_report(results: list[Result], files: SourceFiles | None = None) -> str:
-    """:func:`report` of ``lint`` as plain text."""
+def plain_text(results: list[Result], files: SourceFiles | None = None) -> str:
+    """What ``lint`` writes of the results, as plain text."""
     if files is None:
         files = next((r.loaded.document.files for r in results if r.loaded is not None), None) or SourceFiles()
     buffer = io.StringIO()
     target = console("never", buffer)
-    report(results, Output(target, target), "lint", files)
+    TextReporter(Output(target, target), files).lint(results)
     return buffer.getvalue()

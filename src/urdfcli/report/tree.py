@@ -243,9 +243,10 @@ def link_dict(link: Link, row: Row) -> dict:
     return data
 
 
-def tree_json(robot: Robot, rows: list[Row], summary: Summary) -> str:
+def tree_json(robot: Robot, rows: list[Row], summary: Summary, targets: list[dict] | None = None) -> str:
     """``{"version", "robot", "root": LINK, "summary"}`` where a LINK is
-    ``{"name", "mass", "children": [{"joint": {...}, "link": LINK}, ...]}``.
+    ``{"name", "mass", "children": [{"joint": {...}, "link": LINK}, ...]}``; and
+    ``"targets"`` (what each consumer builds) when given.
 
     Written without recursion, so a chain of any depth serialises.
     """
@@ -269,5 +270,6 @@ def tree_json(robot: Robot, rows: list[Row], summary: Summary) -> str:
         counts.append(0)
     while open_depths:
         out.append("]}}" if open_depths.pop() > 0 else "]}")
-    out.append(f', "summary": {dump(summary.as_dict())}}}')
+    out.append(f', "summary": {dump(summary.as_dict())}')
+    out.append(f', "targets": {dump(targets)}}}' if targets else "}")
     return "".join(out)

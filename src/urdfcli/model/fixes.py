@@ -1,6 +1,7 @@
 """Fixes for the mass-property audit: a uniform body's ``<inertial>`` for a flagged link, and,
 for a model written with xacro, the macro that wrote its ``<inertial>`` and a call of it
-that gives the tensor the link's geometry implies (read from the xacro sources)."""
+that gives the tensor the link's geometry implies (read from the xacro sources, and found
+by expanding the macro with each candidate call)."""
 
 from __future__ import annotations
 
@@ -9,20 +10,20 @@ from typing import NamedTuple
 
 from lxml import etree
 
-from ..model import massprops
-from ..model.inertia import implied, suggested
-from ..model.load import Loaded
-from ..model.massprops import Matrix, number
-from ..model.numbers import NumberError, parse_double, parse_vector
-from ..model.robot import INERTIA_KEYS, Link
 from ..read.document import XACRO_NAMESPACES
 from ..read.xacro import Expander
 from ..read.xacro_scan import macro_parameters
 from ..read.xml import parse
-from .inertia import LinkReport
+from . import massprops
+from .audit import Audit, LinkAudit
+from .inertia import implied, suggested
+from .load import Loaded
+from .massprops import Matrix, number
+from .numbers import NumberError, parse_double, parse_vector
+from .robot import INERTIA_KEYS, Link
 
 
-def suggestion(loaded: Loaded, entry: LinkReport, density: float | None = None) -> str:
+def suggestion(loaded: Loaded, entry: LinkAudit, density: float | None = None) -> str:
     """A ready-to-paste ``<inertial>`` for a link, in the frame of its current one: the
     uniform body its geometry makes, said to be an estimate, never a correction; an XML
     comment saying why when the geometry cannot tell."""
@@ -148,3 +149,22 @@ def _probe_tensor(link) -> Matrix | None:
     except (AttributeError, TypeError, NumberError, ValueError):
         return None
     return massprops.rotate(massprops.matrix(values), massprops.rotation(rpy))
+
+
+def suggestions(audit: Audit, flagged: list[LinkAudit], expander: Expander, density: float | None, xacro: bool) -> tuple[str, ...]:
+    """For each flagged link, the <inertial> of a uniform body filling its geometry;
+    with ``xacro``, the macro that wrote the link's <inertial> and the call of it that gives those values."""
+    found = []
+    loaded = audit.loaded
+    for entry in flagged:
+        use = macro_use(loaded, entry.link) if xacro else None
+        if use is not None:
+            called = f", called at {use.called_at} as {use.call}" if use.call else ""
+            found.append(f"<!-- link '{entry.link.name}': its <inertial> comes from xacro macro '{use.name}' ({use.defined_at}){called} -->")
+            call = matching_call(loaded, entry.link, use, expander) if density is None else None
+            if call is not None:
+                found.append(f"<!-- the call that gives the geometry's values: -->\n{call}")
+                continue
+            found.append(f"<!-- no call of '{use.name}' gives the geometry's values: replace the call with -->")
+        found.append(suggestion(loaded, entry, density))
+    return tuple(found)
