@@ -2,7 +2,7 @@
 (sdformat's ``ign sdf``, or ``gz sdf`` from sdformat 13 on) and robot_state_publisher's
 KDL tree (kdl_parser, through tests/support/kdl_tree.cpp compiled here).
 
-Each gives a :class:`urdfcli.project.consumers.Loaded` like the Python consumers:
+Each gives a :class:`urdfcli.project.consumers.ConsumerLoad` like the Python consumers:
 whether it accepted the model, its error, what it printed and what it built.
 Both come from Debian packages that ``make test`` installs (Makefile ``system-test``);
 a missing one skips locally and fails in CI (``conftest.require_tool``).
@@ -21,7 +21,7 @@ from conftest import IN_CI, ROOT, require_tool
 from lxml import etree
 
 from urdfcli.model import massprops
-from urdfcli.project.consumers import Loaded
+from urdfcli.project.consumers import ConsumerLoad
 
 KDL_SOURCE = ROOT / "tests" / "support" / "kdl_tree.cpp"
 KDL_LIBRARIES = ["-lkdl_parser", "-lorocos-kdl", "-lurdfdom_model"]
@@ -45,7 +45,7 @@ def unavailable(message: str) -> None:
     pytest.skip(message)
 
 
-def gazebo(command: list[str], path: str) -> Loaded:
+def gazebo(command: list[str], path: str) -> ConsumerLoad:
     """What Gazebo makes of a URDF file: sdformat's SDF (``sdf -p``), and whether
     ``sdf -k`` (the checks Gazebo runs when it loads a model) finds it valid."""
     checked = subprocess.run([*command, "-k", path], capture_output=True, text=True, timeout=TIMEOUT, errors="replace")
@@ -53,8 +53,8 @@ def gazebo(command: list[str], path: str) -> Loaded:
     said = _without_noise(checked.stderr + converted.stderr)
     if checked.returncode != 0 or converted.returncode != 0:
         errors = [line for line in said.splitlines() if "Error" in line]
-        return Loaded(False, "\n".join(errors) or f"sdf -k exited with status {checked.returncode}", said)
-    return Loaded(True, "", said, sdf_model(converted.stdout))
+        return ConsumerLoad(False, "\n".join(errors) or f"sdf -k exited with status {checked.returncode}", said)
+    return ConsumerLoad(True, "", said, sdf_model(converted.stdout))
 
 
 def _without_noise(text: str) -> str:
@@ -101,19 +101,19 @@ def kdl_program(folder: Path) -> str:
     return str(program)
 
 
-def kdl(program: str, path: str) -> Loaded:
+def kdl(program: str, path: str) -> ConsumerLoad:
     """The KDL tree kdl_parser builds: its segments (each link but the root) with their joint's
     kind and their mass and principal moments; ``printed`` holds kdl_parser's warnings."""
     done = subprocess.run([program, path], capture_output=True, text=True, timeout=TIMEOUT, errors="replace")
     said = _without_noise(done.stderr)
     if done.returncode != 0 or not done.stdout.startswith("{"):
-        return Loaded(False, f"kdl_tree exited with status {done.returncode}", said)
+        return ConsumerLoad(False, f"kdl_tree exited with status {done.returncode}", said)
     answer = json.loads(done.stdout)
     if not answer["accepted"]:
-        return Loaded(False, answer["error"], said)
+        return ConsumerLoad(False, answer["error"], said)
     for segment in answer["segments"]:
         segment["inertia"] = _about_centre_of_mass(segment)
-    return Loaded(True, "", said, {"root": answer["root"], "bodies": answer["segments"]})
+    return ConsumerLoad(True, "", said, {"root": answer["root"], "bodies": answer["segments"]})
 
 
 def _about_centre_of_mass(segment: dict) -> list[float]:

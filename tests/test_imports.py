@@ -58,12 +58,13 @@ def _named(node: ast.AST, package: str) -> str | None:
     return None
 
 
-def _imported(path: Path) -> set[str]:
-    """The package's modules that ``path`` imports when it runs."""
+def _imported(path: Path, annotations: bool = False) -> set[str]:
+    """The package's modules that ``path`` imports when it runs (with ``annotations``,
+    also those it names for annotations only)."""
     name = _module_name(path)
     package = name if path.name == "__init__.py" else name.rpartition(".")[0]
     tree = ast.parse(path.read_text(encoding="utf-8"))
-    skipped = _annotation_only(tree)
+    skipped = set() if annotations else _annotation_only(tree)
     found = set()
     for node in ast.walk(tree):
         if id(node) in skipped:
@@ -79,11 +80,11 @@ def _imported(path: Path) -> set[str]:
     return found - {name}
 
 
-def import_graph() -> nx.DiGraph:
+def import_graph(annotations: bool = False) -> nx.DiGraph:
     graph = nx.DiGraph()
     for path in PACKAGE.rglob("*.py"):
         graph.add_node(_module_name(path))
-        graph.add_edges_from((_module_name(path), target) for target in _imported(path))
+        graph.add_edges_from((_module_name(path), target) for target in _imported(path, annotations))
     return graph
 
 
@@ -114,8 +115,14 @@ def test_names_in_strings_are_imports():
 
 
 def test_no_module_imports_itself_through_others():
-    circles = [sorted(c) for c in nx.strongly_connected_components(import_graph()) if len(c) > 1]
+    """Not even for annotations: a module a type comes from is below every module that names it."""
+    circles = [sorted(c) for c in nx.strongly_connected_components(import_graph(annotations=True)) if len(c) > 1]
     assert circles == []
+
+
+def test_annotations_name_only_what_is_below_too():
+    upward = [(a, b) for a, b in import_graph(annotations=True).edges if layer(b) > layer(a)]
+    assert upward == []
 
 
 def test_each_folder_imports_only_the_folders_below_it():

@@ -11,7 +11,7 @@ import trimesh
 from conftest import example_robot_data
 from support.meshes import LFS_POINTER, ascii_stl, binary_stl, box, fine, open_box, write
 
-from urdfcli.model.meshes import MeshSummaries, summarise_file
+from urdfcli.model.mesh_summaries import MeshSummaries, summarise_file
 from urdfcli.read.meshfile import MeshError, Unsupported, read_mesh
 
 

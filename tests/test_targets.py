@@ -99,7 +99,7 @@ def kdl_tree() -> str:
     return consumer_programs.kdl_program(Path(tempfile.mkdtemp(prefix="urdfcli-kdl-")))
 
 
-def load_all(chosen: Profile, paths: list[str]) -> list[consumers.Loaded]:
+def load_all(chosen: Profile, paths: list[str]) -> list[consumers.ConsumerLoad]:
     if chosen.target == "gazebo":
         command = consumer_programs.sdformat()
         return [consumer_programs.gazebo(command, path) for path in paths]
@@ -110,13 +110,13 @@ def load_all(chosen: Profile, paths: list[str]) -> list[consumers.Loaded]:
 
 
 @cache
-def real_loads(text: str, folder: str) -> dict[str, consumers.Loaded]:
+def real_loads(text: str, folder: str) -> dict[str, consumers.ConsumerLoad]:
     """Every case loaded into one consumer profile, once per test run: the first worker
     to ask loads them and leaves the answers beside the cases for the others."""
     kept = Path(folder) / f"loaded-{text.replace(':', '-')}.json"
     with locked(kept.with_suffix(".lock")):
         if kept.exists():
-            return {name: consumers.Loaded(**answer) for name, answer in json.loads(kept.read_text()).items()}
+            return {name: consumers.ConsumerLoad(**answer) for name, answer in json.loads(kept.read_text()).items()}
         paths = [str(Path(folder) / f"{name}.urdf") for name in CASES]
         found = dict(zip(CASES, load_all(profile(text), paths)))
         kept.write_text(json.dumps({name: loaded._asdict() for name, loaded in found.items()}))

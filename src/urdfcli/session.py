@@ -13,7 +13,7 @@ import copy
 from collections.abc import Iterable
 from pathlib import Path
 
-from .model.meshes import MeshSummaries
+from .model.mesh_summaries import MeshSummaries
 from .options import Options
 from .project.config import Configurations
 from .project.workspace import Index

@@ -28,6 +28,7 @@ import math
 from collections.abc import Iterable, Iterator
 from typing import Any, NamedTuple
 
+from ..read.memo import once
 from ..diagnostics import Location
 from ..read.xml import Element
 from . import massprops
@@ -627,14 +628,15 @@ def joint_features(joint: Joint) -> tuple:
 def materials_of(robot: Robot) -> dict[str, Material]:
     """The robot's materials by name: the top-level ones, and those a visual defines with a
     colour or texture (the first definition of a name, as urdfdom shares them)."""
-    def compute() -> dict[str, Material]:
-        found = dict(robot.materials)
-        for material in robot.visual_materials:
-            if material.name and (material.rgba is not None or material.texture is not None):
-                found.setdefault(material.name, material)
-        return found
+    return once(robot, _materials_by_name)
 
-    return robot.remembered("materials by name", compute)
+
+def _materials_by_name(robot: Robot) -> dict[str, Material]:
+    found = dict(robot.materials)
+    for material in robot.visual_materials:
+        if material.name and (material.rgba is not None or material.texture is not None):
+            found.setdefault(material.name, material)
+    return found
 
 
 def rpy_of(r: massprops.Matrix) -> tuple[float, float, float]:

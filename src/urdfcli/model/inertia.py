@@ -16,10 +16,12 @@ import math
 from typing import NamedTuple
 
 from ..diagnostics import Applicability, Fix, InsertChild, SetAttribute
+from ..read.memo import once
 from . import massprops
 from .load import Loaded
 from .massprops import Matrix, Vector
-from .meshes import GeometryUnknown, mesh_properties
+from .mesh_summaries import GeometryUnknown
+from .meshes import mesh_properties
 from .poses import link_poses
 from .robot import Link, Shape
 from .units import mis_scaled
@@ -91,7 +93,11 @@ def implied(loaded: Loaded, link: Link, density: float | None = None) -> Implied
     """The body the link's collision shapes (else its visual shapes) make, with the
     declared mass spread by volume, or ``density`` times the volume when given;
     worked out once per link (several rules and the audit ask)."""
-    return loaded.remembered(("implied", link.name, density), lambda: _implied(loaded, link, density))
+    return once(loaded, _implied_named, link.name, density)
+
+
+def _implied_named(loaded: Loaded, name: str, density: float | None) -> Implied:
+    return _implied(loaded, loaded.robot.links[name], density)
 
 
 def _implied(loaded: Loaded, link: Link, density: float | None) -> Implied:
@@ -132,7 +138,7 @@ def shape_part(loaded: Loaded, shape: Shape) -> tuple[float, Vector, Matrix]:
 
 
 def primitive(geometry) -> tuple[float, Matrix]:
-    """Volume and tensor per unit mass of a box, cylinder or sphere (SPEC section 6)."""
+    """Volume and tensor per unit mass of a box, cylinder or sphere."""
     if geometry.kind == "box":
         dims = geometry.size
         if min(dims) <= 0:
@@ -198,7 +204,11 @@ def assess(loaded: Loaded, link: Link, density: float | None = None) -> Assessme
     """Declared against implied, for a link that declares a tensor (None otherwise).
 
     Worked out once per link and density: three rules and the audit ask for it."""
-    return loaded.remembered(("assess", link.name, density), lambda: _assess(loaded, link, density))
+    return once(loaded, _assess_named, link.name, density)
+
+
+def _assess_named(loaded: Loaded, name: str, density: float | None) -> Assessment | None:
+    return _assess(loaded, loaded.robot.links[name], density)
 
 
 def _assess(loaded: Loaded, link: Link, density: float | None) -> Assessment | None:

@@ -12,6 +12,7 @@ from collections.abc import Callable, Iterator, Mapping
 from operator import attrgetter
 from typing import TYPE_CHECKING, NamedTuple
 
+from ..read.memo import once
 from .robot import Joint, Robot
 
 if TYPE_CHECKING:
@@ -32,7 +33,7 @@ def joined(robot: Robot) -> list[Joint]:
     """The joints whose parent and child links both exist, in document order: the
     edges of the tree (a joint naming a missing link is J005's). Every tree check
     starts from these, so the links are looked up once per joint, not once per check."""
-    return robot.remembered("joined", lambda: _joined(robot))
+    return once(robot, _joined)
 
 
 def _joined(robot: Robot) -> list[Joint]:
@@ -42,7 +43,7 @@ def _joined(robot: Robot) -> list[Joint]:
 
 def children_by_joint_name(robot: Robot) -> dict[str, list[Joint]]:
     """Each link's child joints in check_urdf's order: sorted by joint name."""
-    return robot.remembered("children", lambda: _children_by_joint_name(robot))
+    return once(robot, _children_by_joint_name)
 
 
 def _children_by_joint_name(robot: Robot) -> dict[str, list[Joint]]:
@@ -53,7 +54,7 @@ def _children_by_joint_name(robot: Robot) -> dict[str, list[Joint]]:
 
 
 def roots(robot: Robot) -> list[str]:
-    return robot.remembered("roots", lambda: _roots(robot))
+    return once(robot, _roots)
 
 
 def _roots(robot: Robot) -> list[str]:
@@ -108,7 +109,11 @@ def reached(children: dict[str, list[Joint]], start: str) -> list[str]:
 
 def walks(robot: Robot) -> dict[str, list[str]]:
     """Each root's links in the order of ``walk``, worked out once."""
-    return robot.remembered("walks", lambda: {root: reached(children_by_joint_name(robot), root) for root in roots(robot)})
+    return once(robot, _walks)
+
+
+def _walks(robot: Robot) -> dict[str, list[str]]:
+    return {root: reached(children_by_joint_name(robot), root) for root in roots(robot)}
 
 
 def has_loop(robot: Robot) -> bool:
@@ -210,7 +215,11 @@ def subtree_masses(robot: Robot, mass: Callable[[str], float]) -> dict[str, floa
 
 def bodies(loaded) -> dict[str, RigidBody]:
     """Each link's rigid body in a loaded model, worked out once."""
-    return loaded.remembered("rigid bodies", lambda: rigid_bodies(loaded.robot, loaded.parent_joints))
+    return once(loaded, _bodies)
+
+
+def _bodies(loaded) -> dict[str, RigidBody]:
+    return rigid_bodies(loaded.robot, loaded.parent_joints)
 
 
 def link_mass(robot: Robot, name: str) -> float:

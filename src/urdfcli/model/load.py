@@ -18,7 +18,7 @@ from ..read import positions
 from ..read.document import STDIN, SUPPRESSION_MARK, Document, Inputs, read_document
 from ..read.packages import PackageResolver
 from ..read.xml import XmlError, parse
-from .meshes import MeshSummaries
+from .mesh_summaries import MeshSummaries
 from .robot import Joint, Robot, read
 
 if TYPE_CHECKING:
@@ -50,14 +50,8 @@ class Loaded:
         self.resolver = resolver if resolver is not None else PackageResolver((), document.file)
         self.meshes = meshes if meshes is not None else MeshSummaries()
         self.reads_meshes = reads_meshes
-        self.derived: dict = {}  # worked out from the rest, once
-        self.sources = sources  # the xacro files behind it, for the source rules
-
-    def remembered(self, key, compute):
-        """``compute()``, once for this model: for a costly step several rules share."""
-        if key not in self.derived:
-            self.derived[key] = compute()
-        return self.derived[key]
+        self.derived: dict = {}  # worked out from the rest, once (see urdfcli.read.memo)
+        self.xacro_sources = sources  # the xacro files behind it, for the source rules
 
     @property
     def path(self) -> str:

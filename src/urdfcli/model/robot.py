@@ -161,13 +161,7 @@ class Robot:
         self.extensions: list[Element] = []  # top-level blocks of other formats
         self.visual_materials: list[Material] = []  # the materials written inside <visual>s, in order
         self._placed: dict[Element, int] = {}
-        self.derived: dict = {}  # worked out from the rest, once
-
-    def remembered(self, key, compute):
-        """``compute()``, once for this robot: for a costly step several rules share."""
-        if key not in self.derived:
-            self.derived[key] = compute()
-        return self.derived[key]
+        self.derived: dict = {}  # worked out from the rest, once (see urdfcli.read.memo)
 
     def blocks(self, tag: str | None = None) -> "list[Element]":
         """The top-level elements other than links, joints and materials (``<gazebo>``,

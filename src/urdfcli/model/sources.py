@@ -18,6 +18,7 @@ from collections.abc import Callable, Iterable
 from functools import cached_property
 from typing import NamedTuple
 
+from ..read.memo import once
 from ..read.xacro_scan import Parameter, Place, XacroFile, XacroGlobals, free_names, literal_calls
 
 
@@ -54,20 +55,19 @@ def parameters(file: XacroFile, macro: int) -> tuple[Parameter, ...]:
 def bound(file: XacroFile, macro: int | None) -> frozenset[str]:
     """The names a body binds where ``macro`` is: the parameters of the macro and of
     those around it, and the properties defined in their bodies."""
-    key = ("bound", macro)
-    if key not in file.derived:
-        macros = chain(file, macro)
-        names = {p.name for m in macros for p in parameters(file, m) if not p.block}
-        names |= {d.name for d in file.definitions if d.kind == "property" and d.macro in macros and d.scope is None}
-        file.derived[key] = frozenset(names)
-    return file.derived[key]
+    return once(file, _bound, macro)
+
+
+def _bound(file: XacroFile, macro: int | None) -> frozenset[str]:
+    macros = chain(file, macro)
+    names = {p.name for m in macros for p in parameters(file, m) if not p.block}
+    names |= {d.name for d in file.definitions if d.kind == "property" and d.macro in macros and d.scope is None}
+    return frozenset(names)
 
 
 def file_facts(file: XacroFile) -> Facts:
     """What one file reads and defines (worked out once per file read)."""
-    if "facts" not in file.derived:
-        file.derived["facts"] = _facts_of(file)
-    return file.derived["facts"]
+    return once(file, _facts_of)
 
 
 def _facts_of(file: XacroFile) -> Facts:

@@ -18,6 +18,7 @@ from __future__ import annotations
 import math
 from typing import NamedTuple
 
+from ..read.memo import once
 from . import massprops
 from .kinematics import children_by_joint_name, roots, walks
 from .load import Loaded
@@ -100,9 +101,6 @@ class Build(NamedTuple):
     changed: dict[str, str]  # joint -> what the consumer makes of it, where that is not what URDF says
     notes: tuple[str, ...] = ()
 
-    def body_of(self, link: str) -> Body | None:
-        return next((body for body in self.bodies if link in body.links), None)
-
 
 # -- shared pieces ----------------------------------------------------------------------
 
@@ -133,14 +131,6 @@ def primitive_volume(geometry: Geometry | None) -> float | None:
     if geometry.kind == "sphere" and geometry.radius is not None:
         return massprops.sphere_volume(geometry.radius)
     return None
-
-
-def geometry_mass(link: Link, density: float = WATER) -> float | None:
-    """The mass of a link's collision shapes at ``density`` (None when one is a mesh)."""
-    volumes = [primitive_volume(shape.geometry) for shape in link.collisions]
-    if not volumes or None in volumes:
-        return None
-    return density * sum(volumes)  # type: ignore[arg-type]
 
 
 def mesh_extension(uri: str) -> str:
@@ -227,7 +217,11 @@ def joint_dof(joint: Joint) -> int:
 
 def build(loaded: Loaded, chosen: Profile) -> Build:
     """What ``chosen`` builds from the model, worked out once per model."""
-    return loaded.remembered(("target", chosen), lambda: BUILDERS[chosen.target](loaded, chosen))
+    return once(loaded, _build, chosen)
+
+
+def _build(loaded: Loaded, chosen: Profile) -> Build:
+    return BUILDERS[chosen.target](loaded, chosen)
 
 
 # -- MuJoCo 4.0 (src/xml/xml_urdf.cc; URDF defaults in src/xml/xml.cc) --------------------

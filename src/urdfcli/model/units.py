@@ -37,10 +37,12 @@ from __future__ import annotations
 import math
 from typing import NamedTuple
 
+from ..read.memo import once
 from . import massprops
 from .kinematics import children_by_joint_name
 from .load import Loaded
-from .meshes import MeshSummary, MeshUse, mesh_uses, scaled_bounds, summary_of
+from .mesh_summaries import MeshSummary, scaled_bounds
+from .meshes import MeshUse, mesh_uses, summary_of
 from .robot import Link
 
 UNITS = (("millimetres", 1000.0), ("centimetres", 100.0), ("inches", 25.4))
@@ -83,12 +85,22 @@ class UnitVerdict(NamedTuple):
 
 def unit_verdict(loaded: Loaded, use: MeshUse) -> UnitVerdict | None:
     """Whether a mesh use is in a wrong unit; worked out once per use."""
-    return loaded.remembered(("unit verdict", use.shape.at), lambda: _verdict(loaded, use))
+    return once(loaded, _verdicts).get(use.shape.at)
 
 
 def mis_scaled(loaded: Loaded) -> set[int]:
     """The shapes (their ``at``) whose mesh is in a wrong unit: the inertia rules leave their volume out."""
-    return loaded.remembered("mis-scaled shapes", lambda: {use.shape.at for use in mesh_uses(loaded) if unit_verdict(loaded, use) is not None})
+    return set(once(loaded, _verdicts))
+
+
+def _verdicts(loaded: Loaded) -> dict[int, UnitVerdict]:
+    """Each mesh use in a wrong unit (by its shape's ``at``), with its verdict."""
+    found = {}
+    for use in mesh_uses(loaded):
+        verdict = _verdict(loaded, use)
+        if verdict is not None:
+            found[use.shape.at] = verdict
+    return found
 
 
 def _verdict(loaded: Loaded, use: MeshUse) -> UnitVerdict | None:

@@ -103,7 +103,7 @@ class Placer:
         self.loaded = loaded
         self.document = loaded.document
         self.model = self.document.model_source
-        sources = loaded.sources
+        sources = loaded.xacro_sources
         self.scans = {_absolute(f.name): f for f in sources.reached} if sources is not None and self.document.is_xacro else {}
         self._instances: dict | None = None
         self._files: dict[str, int] = {}
@@ -249,7 +249,7 @@ class Placer:
         name, macro_name = parameter.name, scan.macros[macro].name.removeprefix("xacro:")
         if depth or parameter.forward or not site.trace or site.trace[0].macro.rpartition(".")[2] != macro_name:
             raise Unplaceable(f"the value is parameter '{name}' of macro '{macro_name}' ({self.where(site, at)}), whose call is not known")
-        sources = self.loaded.sources
+        sources = self.loaded.xacro_sources
         if sources is None or not sources.complete or name in sources.reached_facts.free:
             # a macro body that reads a name it does not define reads its caller's: this one's too, maybe
             raise Unplaceable(f"the value is parameter '{name}' of macro '{macro_name}', which another macro's body may read too")
@@ -329,11 +329,11 @@ class Placer:
                 raise Unplaceable(f"the value is {what}, also read by $(eval ...) at {scan.name}:{scan.position(substitution.place)[0]}")
 
     def _model_files(self) -> set[str]:
-        sources = self.loaded.sources
+        sources = self.loaded.xacro_sources
         return {_absolute(f.name) for f in sources.files} if sources is not None else set()
 
     def _universe(self) -> list[XacroFile]:
-        sources = self.loaded.sources
+        sources = self.loaded.xacro_sources
         return sources.universe if sources is not None else []
 
 

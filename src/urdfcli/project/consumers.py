@@ -27,7 +27,7 @@ INSTALL = {"mujoco": "mujoco", "drake": "drake", "pinocchio": "pin", "pybullet":
 TIMEOUT = 120.0  # seconds a consumer may take to load one model
 
 
-class Loaded(NamedTuple):
+class ConsumerLoad(NamedTuple):
     """What a consumer did with a model. ``crashed`` is the signal that killed it."""
 
     accepted: bool
@@ -48,14 +48,14 @@ def install_hint(target: str) -> str:
     return f"pip install {INSTALL[target]}"
 
 
-def load(target: str, path: str, variants: tuple[str, ...] = ()) -> Loaded:
+def load(target: str, path: str, variants: tuple[str, ...] = ()) -> ConsumerLoad:
     """Load ``path`` (a plain URDF file) into ``target`` in a child process."""
     return load_many(target, [path], variants)[0]
 
 
-def load_many(target: str, paths: list[str], variants: tuple[str, ...] = ()) -> list[Loaded]:
+def load_many(target: str, paths: list[str], variants: tuple[str, ...] = ()) -> list[ConsumerLoad]:
     """Load each of ``paths`` into ``target``, in one child process (PyBullet: one per
-    file, since it may crash): one :class:`Loaded` per path, in order."""
+    file, since it may crash): one :class:`ConsumerLoad` per path, in order."""
     if target == "pybullet" and len(paths) > 1:
         return [load(target, path, variants) for path in paths]
     command = [sys.executable, "-m", "urdfcli.project.consumers", target, ",".join(variants), *map(os.path.abspath, paths)]
@@ -63,12 +63,12 @@ def load_many(target: str, paths: list[str], variants: tuple[str, ...] = ()) -> 
         with tempfile.TemporaryDirectory(prefix="urdfcli-load-") as folder:  # where MuJoCo writes MUJOCO_LOG.TXT
             done = subprocess.run(command, capture_output=True, text=True, timeout=TIMEOUT * len(paths), errors="replace", cwd=folder)
     except subprocess.TimeoutExpired:
-        return [Loaded(False, f"{target} did not finish loading in {TIMEOUT:.0f} s")] * len(paths)
+        return [ConsumerLoad(False, f"{target} did not finish loading in {TIMEOUT:.0f} s")] * len(paths)
     answers = [json.loads(line) for line in done.stdout.splitlines() if line.startswith("{")]
-    found = [Loaded(a["accepted"], a.get("error", ""), a.get("printed", ""), a.get("built", {})) for a in answers]
+    found = [ConsumerLoad(a["accepted"], a.get("error", ""), a.get("printed", ""), a.get("built", {})) for a in answers]
     if len(found) < len(paths):  # the child died on the next one
         why = f"{target} crashed (signal {-done.returncode})" if done.returncode < 0 else f"{target} exited with status {done.returncode}"
-        found.append(Loaded(False, why, done.stderr[-2000:], crashed=-done.returncode if done.returncode < 0 else None))
+        found.append(ConsumerLoad(False, why, done.stderr[-2000:], crashed=-done.returncode if done.returncode < 0 else None))
         found += load_many(target, paths[len(found):], variants) if len(found) < len(paths) else []
     return found
 
@@ -242,7 +242,7 @@ WARNING_LINE = ("warning", "b3warning")
 def verify(loaded_model, diagnostics: list, chosen) -> list:
     """Load a model into ``chosen``'s consumer and say what it did: its error (C001) and
     warnings (C003), placed at the link or joint they name, and C002 when its verdict is
-    not urdfcli's (an error of the target's rules). ``loaded_model`` is a model.load.Loaded."""
+    not urdfcli's (an error of the target's rules). ``loaded_model`` is a model.load.ConsumerLoad."""
     from ..model.targets import CODES
 
     document = loaded_model.document

@@ -37,14 +37,14 @@ def ran(code: str, rule_set: RuleSet) -> bool:
 def run_rules(loaded: Loaded, config: Config, rule_set: RuleSet) -> list[Diagnostic]:
     """What the rules find, each with the options the configuration gives it. A rule
     the configuration turns off everywhere does not run. The rules on the xacro
-    sources run when the caller gave them (``loaded.sources``), whether or not a
+    sources run when the caller gave them (``loaded.xacro_sources``), whether or not a
     robot could be read; the others need a robot."""
     options = config.rule_options()
     found: list[Diagnostic] = []
     for rule in REGISTRY.values():
         if not runs(rule, rule_set):
             continue
-        ready = loaded.sources is not None if rule.kind is Kind.SOURCES else loaded.modelled
+        ready = loaded.xacro_sources is not None if rule.kind is Kind.SOURCES else loaded.modelled
         if not ready or not (rule.kind is Kind.TREE or config.enabled(rule)):
             continue
         if rule.kind is not Kind.TARGET:

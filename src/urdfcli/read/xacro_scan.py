@@ -81,8 +81,8 @@ class Macro(NamedTuple):
         return macro_parameters(self.params)
 
 
-class Definition(NamedTuple):
-    """A ``xacro:property`` or ``xacro:arg``."""
+class Variable(NamedTuple):
+    """A ``xacro:property`` or ``xacro:arg``: a name given a value."""
 
     kind: str  # "property" or "argument"
     name: str
@@ -170,7 +170,7 @@ class XacroFile:
         self.includes: list[str] = []
         self.namespaces: list[str] = []  # ns attributes of its includes
         self.macros: list[Macro] = []
-        self.definitions: list[Definition] = []
+        self.definitions: list[Variable] = []
         self.expressions: list[Expression] = []
         self.substitutions: list[Substitution] = []
         self.calls: list[Call] = []
@@ -178,7 +178,7 @@ class XacroFile:
         self.made: list[Made] = []
         self.packages: list[PackageUse] = []
         self.old: list[Old] = []
-        self.derived: dict = {}  # what the model layer works out from these, once
+        self.derived: dict = {}  # what the model layer works out from these, once (see urdfcli.read.memo)
 
     @property
     def arguments(self) -> list[tuple[str, str]]:
@@ -284,7 +284,7 @@ class _Scanner:
             if local in ("property", "arg") and element.get("remove") is None:
                 kind = "property" if local == "property" else "argument"
                 value = element.get("value", element.get("default")) if kind == "property" else element.get("default")
-                found.definitions.append(Definition(kind, element.get("name") or "", Place(at, "name"), value, macro, element.get("scope")))
+                found.definitions.append(Variable(kind, element.get("name") or "", Place(at, "name"), value, macro, element.get("scope")))
                 self.attributes(element, at, macro, skip=("name",) if kind == "argument" else ())
             elif local == "insert_block":
                 found.blocks.append(Block(element.get("name") or "", Place(at, "name"), macro))

@@ -182,7 +182,7 @@ def fix_dict(fix: Fix | None, files: SourceFiles | None = None) -> dict | None:
 
 
 def diagnostic_dict(diagnostic: Diagnostic, files: SourceFiles | None = None) -> dict:
-    """A diagnostic as the JSON formats give it (SPEC section 4)."""
+    """A diagnostic as the JSON formats give it (the README, "Exit codes and JSON")."""
     return {
         "code": diagnostic.code,
         "severity": severity_name(diagnostic),

@@ -16,6 +16,7 @@ from ..model import massprops
 from ..model.inertia import OVERREACH, assess, axes_apart, declared_body, reach
 from ..model.massprops import number, tensor_text
 from ..model.numbers import format_number
+from ..read.memo import once
 from .base import INFO, UNSAFE, WARNING, Kind, Option, Remedy, RuleSet, check
 from .physics import absorbed, has_invalid_tensor
 
@@ -191,7 +192,11 @@ def _weights(links) -> str:
 def placeholder_groups(loaded, options) -> list:
     """(tensor, links, others) for each tensor pasted on links of very different mass or size:
     the links whose own geometry does not give it, and those it fits; worked out once."""
-    return loaded.remembered(("placeholder groups", options["tolerance"]), lambda: _placeholder_groups(loaded, options))
+    return once(loaded, _groups_within, options["tolerance"])
+
+
+def _groups_within(loaded, tolerance: float) -> list:
+    return _placeholder_groups(loaded, {"tolerance": tolerance})
 
 
 def _placeholder_groups(loaded, options) -> list:

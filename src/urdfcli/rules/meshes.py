@@ -15,7 +15,8 @@ from ..diagnostics import Fix, SetAttribute
 from ..model import massprops
 from ..model.inertia import shape_bounds
 from ..model.kinematics import bodies
-from ..model.meshes import GeometryUnknown, MeshUse, mesh_uses, resolved_resources, stat_problem, summary_of, uri_style
+from ..model.mesh_summaries import GeometryUnknown
+from ..model.meshes import MeshUse, mesh_uses, resolved_resources, stat_problem, summary_of, uri_style
 from ..model.poses import body_poses
 from ..model.units import PLACEHOLDER, mis_scaled, unit_verdict
 from .base import ERROR, INFO, PLACED, SAFE, UNSAFE, WARNING, Kind, RuleSet, check

@@ -29,7 +29,7 @@ def _uses(loaded) -> Iterator[tuple[str, str, str, Callable[[], Location]]]:
     uncalled macros included), or a plain URDF's meshes and textures. ``where`` is
     worked out only for the use reported."""
     if loaded.document.is_xacro:
-        sources = loaded.sources
+        sources = loaded.xacro_sources
         own = {file.name for file in sources.files}
         for file in sources.files:
             for use in file.packages:

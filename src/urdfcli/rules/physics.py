@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+from ..read.memo import once
 from ..model import massprops
 from ..model.kinematics import bodies, body_mass, link_mass, subtree_masses, walk
 from ..model.numbers import format_number
@@ -325,7 +326,7 @@ def sign_convention(inertial) -> tuple[str, str | None]:
 def invalid_tensors(loaded) -> dict[str, list]:
     """For I005 and I006: (link, principal moments) for each tensor no body can have;
     worked out once (the placeholder rules leave these links to them)."""
-    return loaded.remembered("invalid tensors", lambda: _invalid_tensors(loaded))
+    return once(loaded, _invalid_tensors)
 
 
 def _invalid_tensors(loaded) -> dict[str, list]:
@@ -339,10 +340,14 @@ def _invalid_tensors(loaded) -> dict[str, list]:
     return found
 
 
+def _judged(loaded) -> dict:
+    return {}
+
+
 def verdict(loaded, inertial) -> tuple[str | None, tuple | None]:
     """What I004, I005 and I006 find in a declared tensor (see :func:`_tensor_verdict`).
     Links that write the same text share its tensor: it is judged once."""
-    judged = loaded.remembered("tensor verdicts", dict)
+    judged = once(loaded, _judged)
     key = id(inertial.inertia)
     if key not in judged:
         judged[key] = _tensor_verdict(tensor_of(inertial))

@@ -1,7 +1,7 @@
 """Rules on the xacro sources: definitions nothing uses, names nothing defines,
 macros that can only be called once, and xacro tags xacro no longer reads.
 
-They judge the files a model's expansion read (``loaded.sources.files``), each
+They judge the files a model's expansion read (``loaded.xacro_sources.files``), each
 finding located at the definition or use in its file. Whether a definition is
 used elsewhere, or a name defined elsewhere, is looked up in every file the
 includes may reach (under any condition) and in the xacro files of the
@@ -70,7 +70,7 @@ def argument_unused(loaded, given) -> Iterator[Diagnostic]:
     </robot>
     ```
     """
-    sources = loaded.sources
+    sources = loaded.xacro_sources
     for file in sources.files:
         for definition in file.definitions:
             name = definition.name
@@ -114,7 +114,7 @@ def property_unused(loaded, given) -> Iterator[Diagnostic]:
     </robot>
     ```
     """
-    sources = loaded.sources
+    sources = loaded.xacro_sources
     for file in sources.files:
         for definition in file.definitions:
             name = definition.name
@@ -184,7 +184,7 @@ def parameter_unused(loaded, given) -> Iterator[Diagnostic]:
     </robot>
     ```
     """
-    sources = loaded.sources
+    sources = loaded.xacro_sources
     for file in sources.files:
         for macro, definition in enumerate(file.macros):
             for parameter in parameters(file, macro):
@@ -238,7 +238,7 @@ def macro_unused(loaded, given) -> Iterator[Diagnostic]:
     </robot>
     ```
     """
-    sources = loaded.sources
+    sources = loaded.xacro_sources
     for file in sources.files:
         for definition in file.macros:
             name = definition.name.removeprefix("xacro:")
@@ -317,7 +317,7 @@ def macro_name_fixed(loaded, given) -> Iterator[Diagnostic]:
         return
     files = {name: index for index, name in enumerate(origins.files)}
     made = None
-    for file in loaded.sources.files:
+    for file in loaded.xacro_sources.files:
         for element in file.made:
             if "$" in element.name or file.name not in files:
                 continue
@@ -381,7 +381,7 @@ def name_undefined(loaded, given) -> Iterator[Diagnostic]:
     </robot>
     ```
     """
-    sources = loaded.sources
+    sources = loaded.xacro_sources
     failed = {(d.path, d.line) for d in loaded.diagnostics if d.code == "X003"}
     for file in sources.files:
         for expression in file.expressions:
@@ -446,7 +446,7 @@ def tag_unprefixed(loaded, given) -> Iterator[Diagnostic]:
     </robot>
     ```
     """
-    for file in loaded.sources.files:
+    for file in loaded.xacro_sources.files:
         for old in file.old:
             yield _diagnostic(
                 "X107", f"<{old.tag}> without the xacro: prefix is not read by xacro: it is copied into the URDF and does nothing",
