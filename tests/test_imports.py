@@ -120,11 +120,6 @@ def test_no_module_imports_itself_through_others():
     assert circles == []
 
 
-def test_annotations_name_only_what_is_below_too():
-    upward = [(a, b) for a, b in import_graph(annotations=True).edges if layer(b) > layer(a)]
-    assert upward == []
-
-
 def test_each_folder_imports_only_the_folders_below_it():
     upward = [(a, b) for a, b in import_graph().edges if layer(b) > layer(a)]
     assert upward == []

@@ -25,6 +25,20 @@ def imported(*args: str) -> list[str]:
     return eval(done.stdout.strip().splitlines()[-1])  # a list literal printed by the child
 
 
+@pytest.mark.parametrize("args", [["--version"], ["--help"], ["check", "--help"], ["lint", "--help"]])
+def test_the_version_and_the_help_import_no_rule_and_no_library(args):
+    modules = imported(*args)
+    assert "urdfcli.cli.check" in modules  # the commands are there, for their help
+    rules = [m for m in modules if m.startswith("urdfcli.rules.") and m not in ("urdfcli.rules.base", "urdfcli.rules.suggestions")]
+    assert rules == []  # (rules.base: what a rule set is, for the options)
+    assert not {"urdfcli.api", "urdfcli.session", "urdfcli.model.load", "urdfcli.project.linter", "lxml"} & set(modules)
+
+
+def test_a_check_piped_to_a_file_imports_no_rich():
+    modules = imported("check", str(FIXTURES / "seed000" / "my_robot.urdf"))
+    assert "urdfcli.api" in modules and "rich" not in modules
+
+
 MESHES = """<robot name="r">
   <link name="a">
     <inertial><mass value="1"/><inertia ixx="0.1" ixy="0" ixz="0" iyy="0.1" iyz="0" izz="0.1"/></inertial>

@@ -20,6 +20,10 @@ from urdfcli.read.xml import parse as parse_bytes
 
 XACRO_NS = "http://www.ros.org/wiki/xacro"
 
+# The definition, in XPath: a xacro element, or a substitution in an attribute or in text.
+_XACRO_ELEMENT = "//*[" + " or ".join(f"namespace-uri() = '{ns}'" for ns in sorted(XACRO_NAMESPACES)) + " or (namespace-uri() != '' and starts-with(name(), 'xacro:'))]"
+USES_XACRO = f"boolean({_XACRO_ELEMENT} | //@*[contains(., '${{') or contains(., '$(')] | //text()[contains(., '${{') or contains(., '$(')])"
+
 
 def is_xacro(data: bytes) -> bool:
     return document.is_xacro(SourceFile("robot.urdf", data))
@@ -117,4 +121,4 @@ def test_the_bytes_tell_what_the_parsed_document_says(declaration, pieces):
     except XmlError:
         assert not is_xacro(data)
         return
-    assert is_xacro(data) is root.xpath(load_module._USES_XACRO)
+    assert is_xacro(data) is root.xpath(USES_XACRO)

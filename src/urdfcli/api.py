@@ -23,13 +23,10 @@ from pathlib import Path
 from typing import TYPE_CHECKING, NamedTuple
 
 from .diagnostics import Diagnostic, Fix
-from .model import audit as audits
-from .model import fixes, massprops
-from .model.audit import Audit, LinkAudit
+from .model import massprops
 from .model.load import Loaded, load
 from .model.meshes import mesh_files
 from .model.result import Result, Unreadable
-from .model.targets import build
 from .model.units import unit_verdict
 from .project import drift as drift_
 from .project import fixing, linter
@@ -39,16 +36,13 @@ from .read.document import STDIN, InputError, read_document
 from .read.edits import EditError
 from .read.edits import apply as edit_text
 from .read.packages import PackageError
-from .options import AuditOptions, Options
+from .options import AuditOptions, Options, UsageError, xacro_arguments
 from .rules import REGISTRY, Kind, Remedy, RuleSet
 from .session import Session
 
 if TYPE_CHECKING:
+    from .model.audit import Audit, LinkAudit
     from .report.diff import Difference
-
-
-class UsageError(Exception):
-    """urdfcli cannot run as asked: an unreadable input, a bad package path or configuration."""
 
 
 class Run(NamedTuple):
@@ -111,17 +105,6 @@ def _single(found: Run) -> Result:
     if len(found.results) != 1:  # a model listed with several argument sets
         raise UsageError(f"{len(found.results)} results: use urdfcli.lint for a model checked with several argument sets")
     return found.results[0]
-
-
-def xacro_arguments(arguments: Iterable[str]) -> dict[str, str]:
-    """``NAME:=VALUE`` texts as a mapping; raises UsageError for anything else."""
-    mappings = {}
-    for argument in arguments:
-        name, separator, value = argument.partition(":=")
-        if not separator or not name:
-            raise UsageError(f"bad xacro argument {argument!r}: expected NAME:=VALUE")
-        mappings[name] = value
-    return mappings
 
 
 def find_models(paths: list[str], session: Session) -> list[str]:
@@ -311,6 +294,8 @@ def audit(loaded: Loaded, config: Config, tolerance: float = massprops.TOLERANCE
     """The mass-property audit of a model (None when there is no robot): every
     mass-property rule run with this tolerance and density, what the configuration
     and suppressions leave of them, and the per-link table."""
+    from .model import audit as audits  # (only `inertia` and the editor's fixes audit)
+
     if not loaded.modelled:
         return None
     chosen = {"tolerance": tolerance, "density": density or 0.0}
@@ -331,6 +316,9 @@ def flagged(audit: Audit) -> list[LinkAudit]:
 def _audit(loaded: Loaded, config: Config, asked: AuditOptions, session: Session) -> Audit | None:
     """The audit ``urdfcli inertia`` prints: with the suggested <inertial> elements, and
     what each consumer of the targets builds, when asked for."""
+    from .model import fixes
+    from .model.targets import build
+
     found = audit(loaded, config, asked.tolerance, asked.density)
     if found is None:
         return None

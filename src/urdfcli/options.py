@@ -8,14 +8,32 @@ paths, the output format and the number of processes are all here.
 
 from __future__ import annotations
 
+from collections.abc import Iterable
 from dataclasses import dataclass, replace
 from pathlib import Path
-from typing import NamedTuple
+from typing import TYPE_CHECKING, NamedTuple
 
 from .model.massprops import TOLERANCE
-from .model.targets import Profile, profile
-from .project.config import Config
 from .rules import RuleSet
+
+if TYPE_CHECKING:
+    from .model.targets import Profile
+    from .project.config import Config
+
+
+class UsageError(Exception):
+    """urdfcli cannot run as asked: an unreadable input, a bad package path or configuration."""
+
+
+def xacro_arguments(arguments: Iterable[str]) -> dict[str, str]:
+    """``NAME:=VALUE`` texts as a mapping; raises UsageError for anything else."""
+    mappings = {}
+    for argument in arguments:
+        name, separator, value = argument.partition(":=")
+        if not separator or not name:
+            raise UsageError(f"bad xacro argument {argument!r}: expected NAME:=VALUE")
+        mappings[name] = value
+    return mappings
 
 
 class AuditOptions(NamedTuple):
@@ -72,7 +90,12 @@ class Options:
             object.__setattr__(self, "config", Path(self.config))
         chosen: list[Profile] = []
         for target in self.targets or ():
-            chosen += [target] if isinstance(target, Profile) else [profile(text) for text in target.split(",") if text.strip()]
+            if isinstance(target, str):
+                from .model.targets import profile  # (a consumer's tables: only where one is named)
+
+                chosen += [profile(text) for text in target.split(",") if text.strip()]
+            else:
+                chosen.append(target)
         object.__setattr__(self, "targets", tuple(dict.fromkeys(chosen)))
 
     @property
@@ -90,4 +113,4 @@ class Options:
         return replace(self, **changes)
 
 
-__all__ = ["AuditOptions", "Options", "RuleSet"]
+__all__ = ["AuditOptions", "Options", "RuleSet", "UsageError", "xacro_arguments"]

@@ -46,7 +46,10 @@ def reflow(doc: str) -> str:
     return "\n\n".join(" ".join(paragraph.split()) for paragraph in inspect.cleandoc(doc).split("\n\n"))
 
 
-def build_app() -> typer.Typer:
+def build_app(names: tuple[str, ...] = tuple(COMMANDS)) -> typer.Typer:
+    """The command line with these commands (every one by default). typer works out each
+    command's options from its signature every time the program runs: a run of one
+    command is given that command alone."""
     app = typer.Typer(
         name="urdfcli",
         help="Check, expand, draw and lint URDF and xacro robot descriptions, without ROS.\n\n"
@@ -61,7 +64,8 @@ def build_app() -> typer.Typer:
     def main(version: bool = typer.Option(False, "--version", callback=_version, is_eager=True, help="Show the version and exit.")) -> None:
         pass
 
-    for name, command in COMMANDS.items():
+    for name in names:
+        command = COMMANDS[name]
         app.command(name=name, help=reflow(command.__doc__ or ""))(command)
     return app
 
@@ -83,7 +87,8 @@ def main(argv: list[str] | None = None) -> int:
         rich_utils.COLOR_SYSTEM = None
     ctrl_c = CtrlC.install()
     try:
-        code = app(args=argv, prog_name="urdfcli", standalone_mode=False)
+        program = build_app((argv[0],)) if argv and argv[0] in COMMANDS else app  # (the help lists them all)
+        code = program(args=argv, prog_name="urdfcli", standalone_mode=False)
         if code == INTERRUPTED or ctrl_c.pressed:  # typer's answer to Ctrl-C; or one a library swallowed
             sys.stderr.write("urdfcli: interrupted\n")
             return INTERRUPTED

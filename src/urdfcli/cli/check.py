@@ -6,7 +6,7 @@ from typing import Annotated
 
 import typer
 
-from .. import api, report
+from .. import report
 from ..diagnostics import Severity
 from ..options import Options, RuleSet
 from ..report.console import Output
@@ -62,6 +62,8 @@ def check(
     and noqa comments apply as they do for lint; --fix, --unsafe-fixes and --diff fix what
     check finds as they do for lint.
     """
+    from .. import api  # (the library: imported when the command runs, not for --help)
+
     paths, mappings = split_inputs(inputs)
     asked = fixes.Fixing(fix, unsafe_fixes, diff, False)
     options = Options(

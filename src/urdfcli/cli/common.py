@@ -8,17 +8,17 @@ import threading
 from collections.abc import Iterator
 from enum import IntEnum
 from pathlib import Path
-from typing import Annotated
+from typing import TYPE_CHECKING, Annotated
 
 import typer
 
-from ..api import UsageError, xacro_arguments
-from ..model.result import Unreadable
-from ..options import Options
-from ..read.packages import PackageError
+from ..options import Options, UsageError, xacro_arguments
 from ..report.console import COLOR_MODES, Output
 from ..report.escape import escape
-from ..session import Session
+
+if TYPE_CHECKING:
+    from ..model.result import Unreadable
+    from ..session import Session
 
 
 class Exit(IntEnum):
@@ -173,6 +173,9 @@ def split_inputs(arguments: list[str]) -> tuple[list[str], dict[str, str]]:
 def session_for(options: Options) -> Iterator[Session]:
     """The command's session, closed when it ends; a bad -P or configuration, or an
     input that cannot be read, ends the command with exit code 2."""
+    from ..read.packages import PackageError
+    from ..session import Session
+
     try:
         opened = Session(options)
     except PackageError as error:

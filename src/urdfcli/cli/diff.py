@@ -6,14 +6,12 @@ from typing import Annotated
 
 import typer
 
-from .. import api
-from ..report import diff as formats
-from ..report import resolve
+from ..report import DIFF_FORMATS, resolve
 from ..report.console import Output
 from ..options import Options, RuleSet
 from .common import ColorOption, Exit, PackagePathOption, choose, fail, format_option, session_for, split_inputs
 
-FORMATS = ("auto", *formats.FORMATS)
+FORMATS = ("auto", *DIFF_FORMATS)
 
 
 def _tolerance(value: float) -> float:
@@ -53,6 +51,9 @@ def diff(
     never changes. Exit 0 when the robots are the same, 1 when they differ,
     2 when one cannot be read.
     """
+    from .. import api
+    from ..report import diff as formats
+
     output_format = choose(output_format, FORMATS)
     paths, mappings = split_inputs(inputs)
     if len(paths) != 2:

@@ -6,7 +6,7 @@ from typing import Annotated
 
 import typer
 
-from .. import api, report
+from .. import report
 from ..diagnostics import Severity
 from ..report.console import Output
 from ..options import Options, RuleSet
@@ -41,6 +41,8 @@ def drift(
     when every generated URDF matches its source, 1 when one does not, 2 when it
     cannot run.
     """
+    from .. import api  # (the library: imported when the command runs, not for --help)
+
     options = Options(RuleSet.CHECK, (), tuple(package_path or ()), config, isolated, format=choose(output_format, FORMATS))
     output = Output.standard(color)
     with session_for(options) as session:

@@ -7,11 +7,9 @@ from typing import Annotated
 
 import typer
 
-from .. import api
 from ..diagnostics import Severity
 from ..report.console import Output, write
 from ..report.escape import escape
-from ..report.lines import diagnostic_lines
 from ..report.output import OutputError, write_atomic
 from ..options import Options
 from .common import ColorOption, Exit, FileArgument, PackagePathOption, fail, session_for, split_inputs
@@ -30,6 +28,9 @@ def expand(
     $(find pkg) and package:// resolve without ROS (see --package-path).
     A xacro error is one line with file:line, exit 1, and no output file.
     """
+    from .. import api
+    from ..report.lines import diagnostic_lines
+
     paths, mappings = split_inputs(inputs)
     if len(paths) != 1:
         raise fail(f"expand takes one input file, got {len(paths)}")

@@ -4,19 +4,18 @@ from __future__ import annotations
 
 from enum import Enum
 from pathlib import Path
-from typing import Annotated
+from typing import TYPE_CHECKING, Annotated
 
 import typer
 
+from ..options import Options, RuleSet
 from ..report.console import Output
-from ..report.drawing import RenderError, Style, compat_dot, render, styled_dot
 from ..report.escape import escape
 from ..report.output import OutputError, write_atomic
-from ..model.result import Result
-from ..rules import REGISTRY
-from ..options import Options, RuleSet
 from .common import ColorOption, ConfigOption, Exit, IsolatedOption, PackagePathOption, fail, session_for, split_inputs
-from .tree import load_model, report_errors, start_link
+
+if TYPE_CHECKING:
+    from ..model.result import Result
 
 EXTENSIONS = {".pdf": "pdf", ".svg": "svg", ".png": "png", ".gv": "dot", ".dot": "dot"}
 
@@ -65,6 +64,9 @@ def graph(
     cannot be written, or dot is missing or fails (the DOT file is still
     written).
     """
+    from ..report.drawing import Style, compat_dot, styled_dot
+    from .drawn import load_model, report_errors, start_link
+
     paths, mappings = split_inputs(inputs)
     if len(paths) > 2:
         raise fail(f"graph takes a file and an optional output name, got {len(paths)} paths")
@@ -105,12 +107,16 @@ def stops_drawing(result: Result) -> bool:
     (an error check_urdf reports), or no robot was read. Errors urdfdom does not check
     (a negative mass, a link with two parents) are printed, and the drawing made."""
     loaded = result.loaded
+    from ..rules import REGISTRY
+
     return loaded is None or not loaded.modelled or any(REGISTRY[d.code].urdfdom for d in result.errors)
 
 
 def make_picture(console: Output, dot: str, output: Path, kind: str, timeout: float, inputs: list[str], dot_file: Path | None) -> None:
     """Render and write ``output``; on failure, say so and exit 2, with the DOT
     kept in ``dot_file`` (written now, beside ``output``, when not given)."""
+    from ..report.drawing import RenderError, render
+
     try:
         picture = render(dot, kind, timeout)
     except RenderError as error:

@@ -6,12 +6,10 @@ from typing import Annotated
 
 import typer
 
-from .. import api, report
+from .. import report
 from ..model.massprops import TOLERANCE
 from ..options import AuditOptions, Options, RuleSet
 from ..report.console import Output, write
-from ..report.inertia import problem_count
-from ..report.lines import diagnostic_lines
 from .common import (
     ColorOption,
     ConfigOption,
@@ -56,6 +54,10 @@ def inertia(
 
     Exit 0 when nothing is found, 1 on any warning or error, 2 when it cannot run.
     """
+    from .. import api
+    from ..report.inertia import problem_count
+    from ..report.lines import diagnostic_lines
+
     output_format = choose(output_format, ("text", "json"))
     if not tolerance > 0:
         raise fail("--tolerance must be a positive fraction, such as 0.1")

@@ -7,10 +7,10 @@ from typing import Annotated
 
 import typer
 
-from .. import api, report
+from .. import report
 from ..diagnostics import Severity
 from ..options import Options, RuleSet
-from ..report.console import Output
+from ..report.console import Output, rich_console
 from . import fixes
 from .common import (
     LIBRARIES_HELP,
@@ -71,6 +71,8 @@ def lint(
     remains sets the exit status; --diff prints them, writes nothing, and exits 1 when there is
     something to fix.
     """
+    from .. import api  # (the library: imported when the command runs, not for --help)
+
     paths, mappings = split_inputs(inputs)
     asked = fixes.Fixing(fix, unsafe_fixes, diff, add_noqa)
     options = Options(
@@ -124,7 +126,7 @@ class Progress:
                 return
             from rich.progress import Progress as Bar
 
-            self.bar = Bar(console=self.console, transient=True)
+            self.bar = Bar(console=rich_console(self.console), transient=True)
             self.bar.start()
             self.task = self.bar.add_task("linting", total=total)
         self.bar.update(self.task, completed=done)

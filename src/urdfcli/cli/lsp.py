@@ -6,7 +6,6 @@ from typing import Annotated
 
 import typer
 
-from ..read.packages import PackageError
 from .common import PackagePathOption, fail
 
 NEEDED = ("pygls", "lsprotocol")
@@ -20,6 +19,8 @@ def lsp(
 
     It speaks the Language Server Protocol on standard input and output; the README shows how to set up VS Code, Neovim and Helix. Needs the extra: pip install 'urdfcli\\[lsp]'.
     """
+    from ..read.packages import PackageError
+
     try:
         from ..lsp import server
     except ModuleNotFoundError as error:

@@ -5,12 +5,8 @@ from __future__ import annotations
 from typing import Annotated
 
 import typer
-from rich.table import Table
-from rich.text import Text
 
-from ..report import rules as rules_format
 from ..report.console import Output
-from ..rules import REGISTRY, UnknownRule, lookup
 from .common import ColorOption, choose, fail, format_option
 
 FORMATS = ("table", "json", "markdown")
@@ -21,6 +17,12 @@ def rules(
     color: ColorOption = "auto",
 ) -> None:
     """List every rule: code, name, default severity, on or off by default, fixable (safe or unsafe), summary."""
+    from rich.table import Table
+    from rich.text import Text
+
+    from ..report import rules as rules_format
+    from ..rules import REGISTRY
+
     output_format = choose(output_format, FORMATS)
     registry = rules_format.ordered(REGISTRY.values())
     output = Output.standard(color)
@@ -42,6 +44,9 @@ def rule(
     color: ColorOption = "auto",
 ) -> None:
     """Print one rule's documentation (Markdown)."""
+    from ..report import rules as rules_format
+    from ..rules import UnknownRule, lookup
+
     try:
         found = lookup(code)
     except UnknownRule as error:

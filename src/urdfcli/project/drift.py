@@ -21,15 +21,14 @@ from pathlib import Path
 from typing import TYPE_CHECKING, NamedTuple
 
 from ..diagnostics import Applicability, Diagnostic, Edit, Fix, Location, Severity
-from ..model.compare import Change, Comparison, compare, text
 from ..model.load import Loaded, load
 from ..read.document import InputError
 from ..read.packages import PackageError
-from ..report.diff import element_words
 from ..rules.drift import X110
 from .config import Config
 
 if TYPE_CHECKING:
+    from ..model.compare import Change, Comparison
     from ..session import Session
 
 HEAD_BYTES = 4096  # xacro's header is within the first lines
@@ -91,15 +90,10 @@ def _common_tail(a: tuple[str, ...], b: tuple[str, ...]) -> int:
 
 def generated_from(urdf: Path, session: Session) -> Source | None:
     """The xacro file the URDF ``urdf`` was generated from, or None."""
-    given = session.files.given().get(os.path.abspath(urdf))  # an editor's unsaved text
-    try:
-        if given is not None:
-            head = given[:HEAD_BYTES]
-        else:
-            with open(urdf, "rb") as file:
-                head = file.read(HEAD_BYTES)
-    except OSError:
+    found = session.files.get(urdf)  # the URDF as read for its check (or an editor's unsaved text)
+    if found is None:
         return None
+    head = found.data[:HEAD_BYTES]
     return find_source(urdf, head, lambda: session.packages.enclosing_package(urdf.resolve().parent), lambda folder: session.index.scan([folder]))
 
 
@@ -153,6 +147,8 @@ def drift(loaded: Loaded, config: Config, session: Session) -> list[Diagnostic]:
     found = expand_source(source.file, config, session)
     if isinstance(found, str):
         return [_diagnostic(loaded, f"{_name(loaded)} says it was generated from {_shown(source.file)}, which was not compared: {found}", None, Severity.INFO)]
+    from ..model.compare import compare  # (only where a URDF's source is found)
+
     comparison = compare(loaded, found)
     if comparison.same:
         return []
@@ -197,6 +193,9 @@ def expand_source(source: Path, config: Config, session: Session) -> Loaded | st
 
 def summary(comparison: Comparison, urdf: str, source: Source) -> str:
     """``kr16_2.urdf does not match kr16_2.xacro, which generated it: it lacks link 'flange' that kr16_2.xacro makes; 1 joint differs``."""
+    from ..model.compare import text
+    from ..report.diff import element_words
+
     xacro = source.file.name
     changes = comparison.changes
     pieces = []
@@ -315,6 +314,8 @@ def regeneration(loaded: Loaded, config: Config, session: Session) -> str | None
     source = generated_from(document.file, session) if document.file is not None and loaded.modelled else None
     if source is None:
         return None
+    from ..model.compare import compare
+
     found = expand_source(source.file, config, session)
     if isinstance(found, str) or found.document.expanded_text is None or compare(loaded, found).same:
         return None

@@ -322,7 +322,7 @@ def xacro_sources(document: Document, index: Index, xacro_names: Callable[[], Xa
     """The xacro files behind a read document, for the source rules: those its
     expansion read (none for a plain URDF), then, when a rule asks, those its
     includes may reach and those of the repository or workspace around it."""
-    start = document.file.resolve() if document.file is not None else None
+    start = document.file.resolve() if document.file is not None and document.is_xacro else None  # (a plain URDF has no sources)
     names = [document.shown, *(shown(file) for file in _own(document, start, index))] if document.is_xacro else []
     files = [found.scan for name in dict.fromkeys(names) if (found := index.files.get(name)) is not None and found.scan is not None]
 

@@ -192,11 +192,10 @@ def read_input(path: str, files: SourceFiles) -> SourceFile:
         raise InputError(f"{path}: cannot read: {error.strerror}") from None
 
 
-_XACRO_ELEMENT = "//*[" + " or ".join(f"namespace-uri() = '{ns}'" for ns in sorted(XACRO_NAMESPACES)) + " or (namespace-uri() != '' and starts-with(name(), 'xacro:'))]"
+_XACRO_TAGS = tuple(f"{{{namespace}}}*" for namespace in sorted(XACRO_NAMESPACES))  # any element in xacro's namespace
+_PREFIXED = "boolean(//*[namespace-uri() != '' and starts-with(name(), 'xacro:')])"
 # ${...} and $(...) where xacro evaluates them: attribute values and text (comments are not text here).
-_SUBSTITUTION = "//@*[contains(., '${') or contains(., '$(')] | //text()[contains(., '${') or contains(., '$(')]"
-_USES_XACRO = f"boolean({_XACRO_ELEMENT} | {_SUBSTITUTION})"
-_HAS_XACRO_ELEMENT = f"boolean({_XACRO_ELEMENT})"
+_SUBSTITUTION = "boolean(//@*[contains(., '${') or contains(., '$(')] | //text()[contains(., '${') or contains(., '$(')])"
 
 
 def is_xacro(file: SourceFile) -> bool:
@@ -204,16 +203,20 @@ def is_xacro(file: SourceFile) -> bool:
     namespace, or any element prefixed ``xacro:``), or ``${`` / ``$(`` in an attribute
     or in text outside comments. A namespace declaration alone is not use: xacro's
     output would read the same, at many times the cost. A document that is not
-    well-formed is not xacro: reading it says what is wrong."""
+    well-formed is not xacro: reading it says what is wrong. Where the bytes (in
+    ASCII) cannot hold a mark, the tree is not searched for it."""
     data = file.data
-    if positions.ascii_compatible(data) and b"$" not in data and b"xacro" not in data:
+    ascii = positions.ascii_compatible(data)
+    if ascii and b"$" not in data and b"xacro" not in data:
         return False  # neither mark in markup written in ASCII: nothing to parse
     root = file.tree
     if root is None:
         return False
-    # no substitution can be written where the bytes hold none: only elements are looked at then
-    substitutions = b"${" in data or b"$(" in data or not positions.ascii_compatible(data)
-    return bool(root.xpath(_USES_XACRO if substitutions else _HAS_XACRO_ELEMENT))
+    if next(root.iter(*_XACRO_TAGS), None) is not None:
+        return True
+    if (not ascii or b"xacro:" in data) and root.xpath(_PREFIXED):
+        return True
+    return (not ascii or b"${" in data or b"$(" in data) and bool(root.xpath(_SUBSTITUTION))
 
 
 def read_document(

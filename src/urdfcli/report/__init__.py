@@ -1,25 +1,32 @@
 """Reports: the formats by name, the tree, the graph, the inertia audit.
 
-Every format is a :class:`~urdfcli.report.base.Reporter` registered here by name;
-each writes the one :class:`~urdfcli.model.result.Result` type, and computes
-nothing of its own. Machine formats are written plain, never through rich.
+Every format is a :class:`~urdfcli.report.base.Reporter` registered here by name
+(its module is imported when the format is asked for); each writes the one
+:class:`~urdfcli.model.result.Result` type, and computes nothing of its own.
+Machine formats are written plain, never through rich.
 """
 
 from __future__ import annotations
 
 import os
+from importlib import import_module
+from typing import TYPE_CHECKING
 
-from .base import Reporter
-from .check_urdf import CheckUrdfReporter
-from .concise import ConciseReporter
-from .github import GithubReporter
-from .json import JsonReporter
-from .sarif import SarifReporter
-from .text import TextReporter
+if TYPE_CHECKING:
+    from .base import Reporter
 
-REPORTERS: dict[str, type[Reporter]] = {
-    reporter.name: reporter for reporter in (TextReporter, ConciseReporter, JsonReporter, SarifReporter, GithubReporter, CheckUrdfReporter)
+REPORTERS = {
+    "text": ("text", "TextReporter"),
+    "concise": ("concise", "ConciseReporter"),
+    "json": ("json", "JsonReporter"),
+    "sarif": ("sarif", "SarifReporter"),
+    "github": ("github", "GithubReporter"),
+    "check_urdf": ("check_urdf", "CheckUrdfReporter"),
 }
+"""Each format's name -> its module and reporter class."""
+
+DIFF_FORMATS = ("text", "json", "markdown", "github")
+"""The formats of ``urdfcli diff`` (:mod:`.diff`)."""
 
 
 def resolve(name: str) -> str:
@@ -32,7 +39,8 @@ def resolve(name: str) -> str:
 
 def reporter(name: str) -> type[Reporter]:
     """The reporter of a format (``auto`` resolved)."""
-    return REPORTERS[resolve(name)]
+    module, cls = REPORTERS[resolve(name)]
+    return getattr(import_module(f".{module}", __name__), cls)
 
 
-__all__ = ["REPORTERS", "Reporter", "reporter", "resolve"]
+__all__ = ["DIFF_FORMATS", "REPORTERS", "reporter", "resolve"]

@@ -14,13 +14,14 @@ from typing import NamedTuple
 
 from ..diagnostics import Location
 from ..model.compare import Change, Comparison, Totals, text
+from . import DIFF_FORMATS
 from .console import Line, Output, write
 from .escape import escape
 from .github import escape_data, escape_property
 from .json import dumps
 from .lines import plural
 
-FORMATS = ("text", "json", "markdown", "github")
+FORMATS = DIFF_FORMATS
 MARKS = {"added": "+", "removed": "-", "renamed": "~", "changed": "~"}
 STYLES = {"+": "green", "-": "red", "~": "yellow"}
 _ELEMENT = re.compile(r"""^(?P<tag>[\w:.-]+)(?:\[@(?P<attribute>name|reference)=(?P<quote>['"])(?P<name>.*)(?P=quote)\])?(?:\[(?P<rank>\d+)\])?$""")

@@ -8,7 +8,6 @@ from typing import TYPE_CHECKING
 from ..diagnostics import Severity
 from .base import Reporter
 from .escape import json_escape
-from .inertia import audit_dict
 from .lines import counts, diagnostic_dict
 
 if TYPE_CHECKING:
@@ -60,5 +59,7 @@ class JsonReporter(Reporter):
         self.output.out.file.write(render(results, self.files) + "\n")
 
     def audit(self, results: list[Result]) -> None:
+        from .inertia import audit_dict
+
         objects = [audit_dict(result) for result in results]
         self.output.out.file.write(dumps(objects[0] if len(objects) == 1 else objects) + "\n")

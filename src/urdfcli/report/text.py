@@ -16,9 +16,8 @@ from typing import TYPE_CHECKING
 from ..read.files import SourceFiles
 from .base import Reporter
 from .check_urdf import tree_lines
-from .console import Line, Output, console, write
+from .console import Line, Output, Stream, write
 from .escape import escape
-from .inertia import write_audit
 from .lines import diagnostic_lines, fixable_line, library_lines, summary_line
 
 if TYPE_CHECKING:
@@ -69,6 +68,8 @@ class TextReporter(Reporter):
         self._all(results, fixes=False)
 
     def audit(self, results: list[Result]) -> None:
+        from .inertia import write_audit
+
         write_audit(results, self.output)
 
     def _all(self, results: list[Result], fixes: bool) -> None:
@@ -94,6 +95,6 @@ def plain_text(results: list[Result], files: SourceFiles | None = None) -> str:
     if files is None:
         files = next((r.loaded.document.files for r in results if r.loaded is not None), None) or SourceFiles()
     buffer = io.StringIO()
-    target = console("never", buffer)
+    target = Stream("never", buffer)
     TextReporter(Output(target, target), files).lint(results)
     return buffer.getvalue()

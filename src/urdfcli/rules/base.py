@@ -48,8 +48,10 @@ class RuleSet(Enum):
 
     def holds(self, other: RuleSet) -> bool:
         """Whether this set holds every rule of ``other``."""
-        order = list(RuleSet)
-        return order.index(other) <= order.index(self)
+        return _RANK[other] <= _RANK[self]
+
+
+_RANK = {RuleSet.TREE: 0, RuleSet.CHECK: 1, RuleSet.LINT: 2}
 
 
 class Kind(Enum):

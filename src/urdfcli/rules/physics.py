@@ -332,10 +332,10 @@ def invalid_tensors(loaded) -> dict[str, list]:
 def _invalid_tensors(loaded) -> dict[str, list]:
     found: dict[str, list] = {"I005": [], "I006": []}
     for link, inertial in _inertials(loaded):
-        if not inertial.inertia or absorbed(loaded, link):
+        if not inertial.inertia:
             continue
         code, detail = verdict(loaded, inertial)
-        if code in found:
+        if code in found and not absorbed(loaded, link):
             found[code].append((link, detail))
     return found
 
