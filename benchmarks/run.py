@@ -1,7 +1,9 @@
 """urdfcli against check_urdf and xacro, side by side, on the work they both do.
 
 Run with ``make bench`` (or ``python benchmarks/run.py`` in the venv that has
-urdfcli; ``--quick`` runs fewer repetitions and leaves out the 100k-link tree).
+urdfcli; ``--quick`` runs fewer repetitions and leaves out the 100k-link tree;
+``--baseline REV`` measures urdfcli at git revision REV beside it, in the same run,
+each of its commands in turn with the others: "before" next to "now").
 It measures every target of "What must hold" in one run:
 
 1. ``check`` (and ``lint``) on the 69 URDFs of the installed
@@ -58,6 +60,10 @@ SMALL = FIXTURES / "seed000" / "my_robot.urdf"
 MACRO_CALLS = 1_500
 QUICK = "--quick" in sys.argv[1:]
 EDITOR_ONLY = "--editor" in sys.argv[1:]  # the editor server's figures alone
+# --baseline REV: the same urdfcli commands at git revision REV (its src/ on PYTHONPATH, with
+# this venv's packages), measured in the same run, in turn with the others: "before" beside "now"
+BASELINE_REV = sys.argv[sys.argv.index("--baseline") + 1] if "--baseline" in sys.argv[1:] else None
+BASELINE = GENERATED / "baseline"
 
 
 # -- running and measuring -----------------------------------------------------
@@ -66,9 +72,16 @@ class Measure:
     seconds: float
     mib: float
     status: int
+    before: Measure | None = None  # the same command at the baseline revision, when one is given
 
     def __str__(self) -> str:
         return f"{_seconds(self.seconds)}, {self.mib:.0f} MiB"
+
+
+class Command(list):
+    """An urdfcli command line; ``twin`` is the same command at the baseline revision."""
+
+    twin: list[str] | None = None
 
 
 def _seconds(value: float) -> str:
@@ -85,17 +98,26 @@ def _once(command: list[str]) -> tuple[float, float, int]:
 
 
 def measure(*commands: list[str], runs: int) -> list[Measure]:
-    """Median wall time and peak RSS of each command, the commands run in turn ``runs`` times."""
+    """Median wall time and peak RSS of each command, the commands run in turn ``runs``
+    times; an urdfcli command's twin at the baseline revision runs in turn with them, and
+    its figures are the ``before`` of the command's."""
+    twins = [getattr(command, "twin", None) for command in commands]
+    run = [*commands, *(twin for twin in twins if twin is not None)]
     for command in commands:
         print("  " + " ".join(Path(p).name if os.sep in p else p for p in command[:4]) + (" ..." if len(command) > 4 else ""), flush=True)
-    samples: list[list[tuple[float, float, int]]] = [[] for _ in commands]
+    samples: list[list[tuple[float, float, int]]] = [[] for _ in run]
     for _ in range(runs):
-        for index, command in enumerate(commands):
+        for index, command in enumerate(run):
             samples[index].append(_once(command))
-    return [
+    found = [
         Measure(statistics.median(s for s, _, _ in runs_of), statistics.median(m for _, m, _ in runs_of), max(c for _, _, c in runs_of))
         for runs_of in samples
     ]
+    ours, befores = found[: len(commands)], iter(found[len(commands):])
+    for measured, twin in zip(ours, twins):
+        if twin is not None:
+            measured.before = next(befores)
+    return ours
 
 
 def tool(name: str) -> str | None:
@@ -104,9 +126,16 @@ def tool(name: str) -> str | None:
     return str(local) if local.exists() else shutil.which(name)
 
 
-def urdfcli(*args: str) -> list[str]:
-    script = tool("urdfcli")
-    return [script, *args] if script else [sys.executable, "-m", "urdfcli", *args]
+def urdfcli(*args: str, twin: bool = True) -> Command:
+    """urdfcli as installed here (and, with --baseline, its twin at that revision: both
+    run as ``python -m urdfcli`` then, the sources named by PYTHONPATH; none for a
+    command the baseline does not have)."""
+    if BASELINE_REV is None:
+        script = tool("urdfcli")
+        return Command([script, *args] if script else [sys.executable, "-m", "urdfcli", *args])
+    command = Command(["env", f"PYTHONPATH={ROOT / 'src'}", sys.executable, "-m", "urdfcli", *args])
+    command.twin = ["env", f"PYTHONPATH={BASELINE / 'src'}", sys.executable, "-m", "urdfcli", *args] if twin else None
+    return command
 
 
 def shell(script: str, *args: str) -> list[str]:
@@ -235,6 +264,7 @@ class Row:
     memory_ratio: float | None = None
     target: str = ""
     met: str = ""
+    before: str = ""  # the baseline revision's figures, when one is given
 
 
 def verdict(ok: bool) -> str:
@@ -248,6 +278,9 @@ def failed(measured: Measure, allowed: tuple[int, ...] = (0, 1)) -> str:
 def compare(rows: list[Row], case: str, ours: Measure, other_name: str, theirs: Measure, limit: float | None, memory_limit: float | None = None) -> None:
     time_ratio, memory_ratio = ours.seconds / theirs.seconds, ours.mib / theirs.mib
     row = Row(case, f"{ours}{failed(ours)}", f"{other_name}: {theirs}{failed(theirs)}", time_ratio, memory_ratio)
+    if ours.before is not None:
+        before, other = ours.before, theirs.before or theirs  # another urdfcli command: its baseline twin
+        row.before = f"{before}{failed(before)}, {before.seconds / other.seconds:.2f}" + (f" / {before.mib / other.mib:.2f}" if memory_limit is not None else "")
     if limit is not None:
         row.target = f"time ≤ {limit:g}" + (f", memory ≤ {memory_limit:g}" if memory_limit is not None else "")
         met = verdict(time_ratio <= limit)
@@ -258,9 +291,10 @@ def compare(rows: list[Row], case: str, ours: Measure, other_name: str, theirs: 
 
 
 def print_table(rows: list[Row]) -> None:
-    header = ("case", "urdfcli", "compared with", "time ratio", "memory ratio", "target", "met")
+    header = ("case", "urdfcli", "compared with", "time ratio", "memory ratio", "target", "met") + (("before (" + BASELINE_REV + "), ratio",) if BASELINE_REV else ())
     cells = [header] + [
         (r.case, r.ours, r.other.replace("|", "\\|"), "" if r.time_ratio is None else f"{r.time_ratio:.2f}", "" if r.memory_ratio is None else f"{r.memory_ratio:.2f}", r.target, r.met)
+        + ((r.before,) if BASELINE_REV else ())
         for r in rows
     ]
     widths = [max(len(row[i]) for row in cells) for i in range(len(header))]
@@ -279,12 +313,12 @@ def corpus_cases(rows: list[Row], check_urdf: str) -> None:
     loop = shell('for f in "$@"; do "$0" "$f"; done', check_urdf, *files)
     runs = 3 if QUICK else 7
     check, lint, theirs = measure(urdfcli("check", *files), urdfcli("lint", *files), loop, runs=runs)
-    compare(rows, f"check, the {len(files)} example-robot-data URDFs in one call", check, "check_urdf loop", theirs, 1.0)
+    compare(rows, f"check, the {len(files)} example-robot-data URDFs in one call", check, "check_urdf loop", theirs, 1.2)
     compare(rows, f"lint, the same {len(files)} URDFs (meshes absent)", lint, "check_urdf loop", theirs, 2.0)
     targeted, plain = measure(urdfcli("check", "--target", "mujoco", *files), urdfcli("check", *files), runs=runs)
     compare(rows, f"check --target mujoco, the same {len(files)} URDFs", targeted, "plain check", plain, 1.2)
     copies = corpus_copy()  # --fix writes where it fixes: a copy, though these have nothing safe to fix
-    fixing, plain = measure(urdfcli("lint", "--fix", *copies), urdfcli("lint", *copies), runs=runs)
+    fixing, plain = measure(urdfcli("lint", "--fix", *copies, twin=False), urdfcli("lint", *copies, twin=False), runs=runs)
     compare(rows, f"lint --fix, the same {len(files)} URDFs (nothing to fix)", fixing, "plain lint", plain, 1.1)
 
 
@@ -318,7 +352,7 @@ def small_file_cases(rows: list[Row]) -> None:
     floor_command = [sys.executable, "-c", "import lxml.etree"]
     for command in ("check", "tree", "expand"):
         ours, floor = measure(urdfcli(command, str(SMALL)), floor_command, runs=runs)
-        compare(rows, f"{command}, one small file ({SMALL.name}, {SMALL.stat().st_size:,} bytes)", ours, "python -c 'import lxml.etree'", floor, 3.0)
+        compare(rows, f"{command}, one small file ({SMALL.name}, {SMALL.stat().st_size:,} bytes)", ours, "python -c 'import lxml.etree'", floor, 2.0)
 
 
 def xacro_cases(rows: list[Row], check_urdf: str, xacro: str) -> None:
@@ -328,13 +362,13 @@ def xacro_cases(rows: list[Row], check_urdf: str, xacro: str) -> None:
     for path in fixtures:
         name = str(path.relative_to(FIXTURES))
         check, expand, piped, alone = measure(urdfcli("check", str(path)), urdfcli("expand", str(path)), shell(pipe, xacro, str(path), check_urdf), [xacro, str(path)], runs=runs)
-        compare(rows, f"check {name}", check, "xacro | check_urdf", piped, 1.5)
-        compare(rows, f"expand {name}", expand, "xacro", alone, 1.5)
+        compare(rows, f"check {name}", check, "xacro | check_urdf", piped, 2.0)
+        compare(rows, f"expand {name}", expand, "xacro", alone, 2.0)
     model = generate_macro_model(MACRO_CALLS)
     runs = 2 if QUICK else 3
     check, expand, piped, alone = measure(urdfcli("check", str(model)), urdfcli("expand", str(model)), shell(pipe, xacro, str(model), check_urdf), [xacro, str(model)], runs=runs)
-    compare(rows, f"check, generated xacro model of {MACRO_CALLS:,} macro calls", check, "xacro | check_urdf", piped, 1.0)
-    compare(rows, f"expand, the same {MACRO_CALLS:,} macro calls", expand, "xacro", alone, 1.0)
+    compare(rows, f"check, generated xacro model of {MACRO_CALLS:,} macro calls", check, "xacro | check_urdf", piped, 0.5)
+    compare(rows, f"expand, the same {MACRO_CALLS:,} macro calls", expand, "xacro", alone, 0.5)
 
 
 def large_cases(rows: list[Row], check_urdf: str) -> None:
@@ -366,7 +400,7 @@ def diff_cases(rows: list[Row]) -> None:
     text = text.replace('upper="1.57"', 'upper="1.6"', 5).replace('"link_99"', '"link_ninety_nine"')
     new.write_text(text, encoding="utf-8")
     runs = 5 if QUICK else 11
-    diff, check = measure(urdfcli("diff", str(old), str(new)), urdfcli("check", str(old)), runs=runs)
+    diff, check = measure(urdfcli("diff", str(old), str(new), twin=False), urdfcli("check", str(old), twin=False), runs=runs)
     compare(rows, "diff, two versions of a 100-link tree", diff, "one check of it", check, 2.5)
     files = corpus()
     if not files:
@@ -378,7 +412,7 @@ def diff_cases(rows: list[Row]) -> None:
         copy.parent.mkdir(parents=True, exist_ok=True)
         copy.write_text(re.sub(r"<!--.*?-->", "", file.read_text(encoding="utf-8"), flags=re.DOTALL), encoding="utf-8")
     runs = 3 if QUICK else 7
-    on, off = measure(urdfcli("lint", "--isolated", str(plain)), urdfcli("lint", "--isolated", "--ignore", "X110", str(plain)), runs=runs)
+    on, off = measure(urdfcli("lint", "--isolated", str(plain), twin=False), urdfcli("lint", "--isolated", "--ignore", "X110", str(plain), twin=False), runs=runs)
     compare(rows, f"lint, a repository of {len(files)} URDFs none generated", on, "the same lint without X110 (drift)", off, 1.1)
 
 
@@ -416,7 +450,7 @@ def _parent(process: str) -> int | None:
         return None
 
 
-async def _edit_latencies(case: EditorCase, edits: int) -> tuple[list[float], float, float]:
+async def _edit_latencies(case: EditorCase, edits: int, server: list[str]) -> tuple[list[float], float, float]:
     """Seconds from each edit sent to the server until the edited file's diagnostics of
     that version arrive, the processor time the server and its xacro worker spent per
     edit, and the server's resident memory at the end (MiB)."""
@@ -442,7 +476,7 @@ async def _edit_latencies(case: EditorCase, edits: int) -> tuple[list[float], fl
         return arrived[(uri, version)]
 
     root = case.opened[0].parent
-    await client.start_io(*urdfcli("lsp"), cwd=str(root))
+    await client.start_io(*server, cwd=str(root))
     await client.initialize_async(types.InitializeParams(capabilities=types.ClientCapabilities(), process_id=os.getpid(), root_uri=from_fs_path(str(root))))
     client.initialized(types.InitializedParams())
     for path in case.opened:
@@ -541,14 +575,19 @@ def editor_cases(rows: list[Row]) -> None:
         pr2 = package / "robots" / "pr2_description" / "urdf" / "pr2.urdf"
         cases.insert(2, EditorCase("PR2 (pr2.urdf, 82 links)", [pr2], pr2, '<mass value="', 0.200))
     for case in cases:
+        server = urdfcli("lsp")
         try:
-            latencies, cpu, rss = asyncio.run(_edit_latencies(case, EDITS))
+            latencies, cpu, rss = asyncio.run(_edit_latencies(case, EDITS, server))
+            before = asyncio.run(_edit_latencies(case, EDITS, server.twin)) if server.twin is not None else None
         except ImportError:
             rows.append(Row("lsp: re-check after an edit", "pygls not installed (pip install -e '.[lsp]')", ""))
             return
         median, worst = statistics.median(latencies), max(latencies)
         ours = f"median {_seconds(median)}, slowest {_seconds(worst)} ({len(latencies)} edits); processor {_seconds(cpu)} an edit; server {rss:.0f} MiB"
-        rows.append(Row(f"lsp: edit to its diagnostics, {case.name}", ours, "", target=f"median ≤ {case.target * 1000:.0f} ms", met=verdict(median <= case.target)))
+        row = Row(f"lsp: edit to its diagnostics, {case.name}", ours, "", target=f"median ≤ {case.target * 1000:.0f} ms", met=verdict(median <= case.target))
+        if before is not None:
+            row.before = f"median {_seconds(statistics.median(before[0]))}; processor {_seconds(before[1])} an edit"
+        rows.append(row)
 
 
 def import_costs() -> str:
@@ -587,6 +626,16 @@ def compile_urdfcli() -> None:
     compileall.compile_dir(str(Path(urdfcli.__file__).parent), quiet=1, force=True)  # (its staleness test reads only the time, to the second)
 
 
+def extract_baseline(revision: str) -> None:
+    """The sources of urdfcli at ``revision``, under benchmarks/generated/baseline, byte-compiled."""
+    shutil.rmtree(BASELINE, ignore_errors=True)
+    BASELINE.mkdir(parents=True)
+    archive = subprocess.run(["git", "-C", str(ROOT), "archive", revision, "src"], capture_output=True, check=True).stdout
+    subprocess.run(["tar", "-x", "-C", str(BASELINE)], input=archive, check=True)
+    compileall.compile_dir(str(BASELINE / "src"), quiet=1, force=True)
+    print(f"baseline: {revision} ({subprocess.run(['git', '-C', str(ROOT), 'log', '-1', '--format=%h %s', revision], capture_output=True, text=True).stdout.strip()[:80]})", flush=True)
+
+
 def main() -> int:
     started = time.perf_counter()
     check_urdf, xacro = shutil.which("check_urdf"), tool("xacro")
@@ -596,6 +645,8 @@ def main() -> int:
     GENERATED.mkdir(parents=True, exist_ok=True)
     print(f"machine: {machine()}", flush=True)
     compile_urdfcli()
+    if BASELINE_REV is not None:
+        extract_baseline(BASELINE_REV)
     rows: list[Row] = []
     print("measuring ...", flush=True)
     if EDITOR_ONLY:
