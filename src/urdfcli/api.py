@@ -376,12 +376,12 @@ def diff(old: str | os.PathLike, new: str | os.PathLike, *arguments: str, sessio
 
 def diff_with_revisions(old: str, new: str, mappings: dict[str, str], session: Session | None, tolerance: float | None, settings: dict) -> tuple[Difference, tuple[str, ...]]:
     """:func:`diff`, and the git revisions its inputs name."""
-    from .project.versions import Unreadable, compare_versions  # (git and archives: only diff reads them)
+    from .project.versions import NotComparable, compare_versions  # (git and archives: only diff reads them)
 
     with _session(session, settings) as session:
         try:
             return compare_versions(old, new, {**session.options.mappings, **mappings}, session.inputs, session.resolver, tolerance)
-        except (Unreadable, PackageError) as error:
+        except (NotComparable, PackageError) as error:
             raise UsageError(str(error)) from None
 
 

@@ -37,7 +37,7 @@ _ARGUMENT = re.compile(r"\$\(\s*arg\s+([^\s()]+)\s*\)")
 MOST_NAMED = 3  # names given in a summary before "and N more"
 
 
-class Source(NamedTuple):
+class GeneratedFrom(NamedTuple):
     """The xacro file a URDF was generated from, and how it was found."""
 
     file: Path
@@ -50,19 +50,19 @@ def header_source(head: bytes) -> str | None:
     return match.group(1).decode("utf-8", "replace").removesuffix("-->") if match else None
 
 
-def find_source(urdf: Path, head: bytes, package: Callable[[], Path | None], files_below: Callable[[Path], list[Path]]) -> Source | None:
+def find_source(urdf: Path, head: bytes, package: Callable[[], Path | None], files_below: Callable[[Path], list[Path]]) -> GeneratedFrom | None:
     """The xacro file ``urdf`` was generated from (see the module's documentation), or
     None; ``package()`` gives the package holding it, asked only when needed, and
     ``files_below(folder)`` the xacro and URDF files below a folder."""
     named = header_source(head)
     if named is not None:
         found = _header_file(urdf, named, package, files_below)
-        return Source(found, named) if found is not None else None
+        return GeneratedFrom(found, named) if found is not None else None
     if urdf.suffix != ".urdf":
         return None
     for candidate in (urdf.with_name(urdf.name + ".xacro"), urdf.with_suffix(".xacro")):
         if candidate.is_file():
-            return Source(candidate, None)
+            return GeneratedFrom(candidate, None)
     return None
 
 
@@ -88,7 +88,7 @@ def _common_tail(a: tuple[str, ...], b: tuple[str, ...]) -> int:
     return count
 
 
-def generated_from(urdf: Path, session: Session) -> Source | None:
+def generated_from(urdf: Path, session: Session) -> GeneratedFrom | None:
     """The xacro file the URDF ``urdf`` was generated from, or None."""
     found = session.files.get(urdf)  # the URDF as read for its check (or an editor's unsaved text)
     if found is None:
@@ -191,7 +191,7 @@ def expand_source(source: Path, config: Config, session: Session) -> Loaded | st
     return f"it does not expand: {reason}"
 
 
-def summary(comparison: Comparison, urdf: str, source: Source) -> str:
+def summary(comparison: Comparison, urdf: str, source: GeneratedFrom) -> str:
     """``kr16_2.urdf does not match kr16_2.xacro, which generated it: it lacks link 'flange' that kr16_2.xacro makes; 1 joint differs``."""
     from ..model.compare import text
     from ..report.diff import element_words
@@ -282,7 +282,7 @@ def _explaining_arguments(changes: tuple[Change, ...], source: Loaded, session: 
     return {name: defaults.get(name) for name in sorted(names)}
 
 
-def _hint(loaded: Loaded, source: Source, found: Loaded, arguments: dict[str, str | None], config: Config) -> str:
+def _hint(loaded: Loaded, source: GeneratedFrom, found: Loaded, arguments: dict[str, str | None], config: Config) -> str:
     regenerate = f"regenerate it: urdfcli expand {_shown(source.file)} -o {loaded.document.shown}"
     given = config.mappings_for(found.document.shown)
     if arguments:

@@ -25,7 +25,7 @@ from ..report.diff import Difference
 ResolverFor = Callable[[Iterable[str], "Path | None"], PackageResolver]  # (extra package paths, input file) -> resolver
 
 
-class Unreadable(Exception):
+class NotComparable(Exception):
     """A version cannot be read as a robot (a one-line reason): exit 2."""
 
 
@@ -33,9 +33,9 @@ def compare_versions(
     old: str, new: str, mappings: dict[str, str], inputs: Inputs, resolver_for: ResolverFor, tolerance: float | None = None,
 ) -> tuple[Difference, tuple[str, ...]]:
     """What changed from ``old`` to ``new`` (numbers equal within ``tolerance``, relative;
-    TOLERANCE when None), and the revisions named (``REV`` of each ``REV:PATH``). Raises Unreadable."""
+    TOLERANCE when None), and the revisions named (``REV`` of each ``REV:PATH``). Raises NotComparable."""
     if old == STDIN and new == STDIN:
-        raise Unreadable("only one of OLD and NEW can be standard input ('-')")
+        raise NotComparable("only one of OLD and NEW can be standard input ('-')")
     with contextlib.ExitStack() as stack:
         sides = [_open(given, mappings, inputs, resolver_for, stack) for given in (old, new)]
         comparison = compare(sides[0][0], sides[1][0], TOLERANCE if tolerance is None else tolerance)
@@ -51,7 +51,7 @@ def _open(given: str, mappings: dict[str, str], inputs: Inputs, resolver_for: Re
     try:
         revision = revision_of(given)
     except RevisionError as error:
-        raise Unreadable(str(error)) from None
+        raise NotComparable(str(error)) from None
     folder = None
     try:
         if revision is not None:
@@ -63,17 +63,17 @@ def _open(given: str, mappings: dict[str, str], inputs: Inputs, resolver_for: Re
             resolver = resolver_for((), None if given == STDIN else Path(given))
             loaded = load(given, inputs, resolver, mappings, reads_meshes=False)
     except (InputError, RevisionError) as error:
-        raise Unreadable(str(error)) from None
+        raise NotComparable(str(error)) from None
     if not loaded.modelled:
         shown = revision.given if revision is not None else loaded.document.shown
         if loaded.document.missing_argument is not None:
             name = loaded.document.missing_argument
-            raise Unreadable(f"{shown}: needs xacro argument '{name}': give {name}:=VALUE after the two files")
+            raise NotComparable(f"{shown}: needs xacro argument '{name}': give {name}:=VALUE after the two files")
         reason = next((d for d in loaded.diagnostics if d.code in ("X001", "X002", "X003", "X004", "R001")), None)
         if reason is None and loaded.robot is None:
             reason = next(iter(loaded.diagnostics), None)
         said = f"{reason.message}" if reason is not None else "no <robot> read"
-        raise Unreadable(f"{shown}: cannot be read as a robot: {said}")
+        raise NotComparable(f"{shown}: cannot be read as a robot: {said}")
     return loaded, folder, revision
 
 
