@@ -37,6 +37,8 @@ from ..read.document import STDIN, Document
 from ..read.packages import MAX_SCAN_DIRS, SKIP_DIRS, PackageIndex, PackageResolver
 from ..read.files import SourceFile, SourceFiles
 from ..read.xacro_scan import XacroFile, XacroGlobals, shown
+from ..rules.structure import X004 as PACKAGE_NOT_FOUND
+from ..rules.suppression import U001 as UNUSED_SUPPRESSION
 from ..model.result import Library, Result, Unreadable
 
 XACRO_SUFFIXES = (".xacro", ".urdf")
@@ -512,10 +514,10 @@ def _unused_in_all(models: list[Result]) -> Callable[[Diagnostic], bool]:
     counts: dict[tuple, int] = {}
     for model in models:
         read.append({_resolved(file) for file in (model.path, *model.includes)})
-        for place in {_place(d) for d in model.diagnostics if d.code == "U001"}:
+        for place in {_place(d) for d in model.diagnostics if d.code == UNUSED_SUPPRESSION.code}:
             counts[place] = counts.get(place, 0) + 1
     agreed = {place for place, count in counts.items() if count == sum(place[0] in files for files in read)}
-    return lambda diagnostic: diagnostic.code != "U001" or _place(diagnostic) in agreed
+    return lambda diagnostic: diagnostic.code != UNUSED_SUPPRESSION.code or _place(diagnostic) in agreed
 
 
 def _resolved(file: str) -> Path:
@@ -555,7 +557,7 @@ def _library_result(entry: Entry, outcome, shown_keys: set, unreadable: list[Unr
                 "list the argument sets it is checked with in [tool.urdfcli] models"
             )
             continue
-        missing = next((d for d in model.diagnostics if d.code == "X004" and not _same(d.path, library)), None)
+        missing = next((d for d in model.diagnostics if d.code == PACKAGE_NOT_FOUND.code and not _same(d.path, library)), None)
         if missing is not None:  # a package this machine lacks: the model cannot be expanded here
             notes.append(f"not checked through {target.label}: {missing.message}")
             continue

@@ -19,6 +19,7 @@ from collections.abc import Iterator
 from ..diagnostics import Diagnostic, Edit, Fix, Location
 from ..model.sources import XacroSources, bound, parameter_place, parameters
 from ..read.xacro_scan import Place, XacroFile, free_names
+from . import structure
 from .base import ERROR, INFO, UNSAFE, WARNING, Kind, RuleSet, check
 from .suggestions import close_matches
 
@@ -382,7 +383,7 @@ def name_undefined(loaded, given) -> Iterator[Diagnostic]:
     ```
     """
     sources = loaded.xacro_sources
-    failed = {(d.path, d.line) for d in loaded.diagnostics if d.code == "X003"}
+    failed = {(d.path, d.line) for d in loaded.diagnostics if d.code == structure.X003.code}
     for file in sources.files:
         for expression in file.expressions:
             if expression.macro is None:
