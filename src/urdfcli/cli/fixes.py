@@ -3,18 +3,17 @@ the files written (or the diff printed) and the line that says what was fixed.""
 
 from __future__ import annotations
 
-from typing import Annotated, NamedTuple
+from typing import TYPE_CHECKING, Annotated, NamedTuple
 
 import typer
 
-from .. import api
-from ..project import fixing
-from ..read.document import STDIN
-from ..read.edits import EditError, apply, unified_diff, write
-from ..report.console import Output
 from ..report.escape import escape
 from ..report.lines import plural
-from ..session import Session
+
+if TYPE_CHECKING:
+    from .. import api
+    from ..report.console import Output
+    from ..session import Session
 
 FixOption = Annotated[
     bool | None,
@@ -66,6 +65,11 @@ class Outcome(NamedTuple):
 def run(paths: list[str], session: Session, asked: Fixing, progress=None) -> Outcome:
     """Check and fix as the session's options say; with --add-noqa, the comments for what
     remains. Nothing is written here."""
+    from .. import api  # (the library: imported when the command runs, not for --help)
+    from ..project import fixing
+    from ..read.document import STDIN
+    from ..read.edits import EditError, apply
+
     if STDIN in paths and (asked.fix or asked.add_noqa) and not asked.diff:
         raise api.UsageError("--fix and --add-noqa cannot write standard input back: use --diff to see the fixes")
     fixed = api.fix(paths, session, progress)
@@ -87,6 +91,8 @@ def run(paths: list[str], session: Session, asked: Fixing, progress=None) -> Out
 
 def write_files(outcome: Outcome) -> list[str]:
     """Write each changed file (atomically); the files that could not be written, and why."""
+    from ..read.edits import write
+
     failed = []
     for file, (_, after) in outcome.changed.items():
         try:
@@ -98,6 +104,8 @@ def write_files(outcome: Outcome) -> list[str]:
 
 def print_diff(outcome: Outcome, output: Output) -> None:
     """The unified diff of every change, on standard output; what it would fix, on standard error."""
+    from ..read.edits import unified_diff
+
     for file, (before, after) in outcome.changed.items():
         output.out.file.write(unified_diff(file, before, after))
     output.out.file.flush()

@@ -7,12 +7,12 @@ from collections.abc import Iterable
 from typing import TYPE_CHECKING
 
 from ..diagnostics import Diagnostic, Fix, Severity
-from ..read.files import SourceFiles
 from .console import Line
 from .escape import escape
 
 if TYPE_CHECKING:
     from ..model.result import Result
+    from ..read.files import SourceFiles
 
 TRACE_LEVELS = 3  # macro calls shown under a diagnostic
 
