@@ -1,4 +1,4 @@
-"""The mass-property maths against SPEC section 6's closed forms and against numpy/trimesh."""
+"""The mass-property maths against the closed forms of solid bodies and against numpy/trimesh."""
 
 from __future__ import annotations
 
