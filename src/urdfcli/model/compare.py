@@ -43,7 +43,6 @@ TOLERANCE = 1e-6
 """Default relative tolerance: two numbers closer than this fraction of the larger are equal."""
 FLOOR = 1e-12  # numbers closer than this are equal whatever their size (xacro's cos(pi/2) is 6e-17)
 DOF = {"fixed": 0, "revolute": 1, "continuous": 1, "prismatic": 1, "planar": 3, "floating": 6}
-KINDS = ("added", "removed", "renamed", "changed")
 
 
 class Change(NamedTuple):

@@ -122,8 +122,8 @@ def load(
     open no mesh file; ``sources`` finds the xacro files behind a document, for the
     source rules. Raises InputError."""
     document, diagnostics = read_document(path, inputs, resolver, mappings, force_xacro)
-    if document.missing_argument is not None:
-        diagnostics = [needs_argument(d, document.missing_argument, path) if d.code == "X003" else d for d in diagnostics]
+    if document.missing_argument is not None:  # the expansion stopped there: its one diagnostic says so
+        diagnostics = [needs_argument(d, document.missing_argument, path) for d in diagnostics]
     found_sources = sources(document) if sources is not None else None
     loaded = Loaded(document, diagnostics=diagnostics, resolver=resolver, meshes=meshes, reads_meshes=reads_meshes, sources=found_sources)
     if not document.readable:

@@ -79,8 +79,8 @@ class Worker:
 
     def _current(self, memory_mib: int) -> _Process:
         process = self._process
-        if process is not None and (process.owner != os.getpid() or process.memory_mib != memory_mib):
-            self.stop()  # inherited through a fork, or the limit changed
+        if process is not None and (process.interrupted or process.owner != os.getpid() or process.memory_mib != memory_mib):
+            self.stop()  # interrupted (it may not have ended yet), inherited through a fork, or the limit changed
             process = None
         if process is None:
             process = self._process = _Process(memory_mib)
@@ -91,6 +91,7 @@ class Worker:
         (its process ended without a result), and the next job starts another."""
         process = self._process
         if process is not None and process.owner == os.getpid():
+            process.interrupted = True  # the next job must not be given to it while it dies
             with contextlib.suppress(ProcessLookupError):
                 os.kill(process.pid, signal.SIGKILL)
 
@@ -111,6 +112,7 @@ class _Process:
         jobs_read, self.jobs = os.pipe()
         self.answers, answers_write = os.pipe()
         self.memory_mib = memory_mib
+        self.interrupted = False
         self.owner = os.getpid()
         self.pid = os.fork()
         if self.pid == 0:  # the worker: never returns
