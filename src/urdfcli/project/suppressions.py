@@ -27,6 +27,8 @@ from ..diagnostics import Diagnostic, Location
 from ..read.document import SUPPRESSION_MARK
 from ..read.positions import Text
 from ..rules import REGISTRY
+from ..rules.structure import X001, X002
+from ..rules.suppression import U001, U002
 from .config import matches, selector
 
 COMMENT = re.compile(r"<!--\s*urdfcli\s*:\s*(noqa-file|noqa)(?![\w-])\s*(?::\s*(.*?))?\s*-->", re.DOTALL)
@@ -162,24 +164,24 @@ def apply(diagnostics: list[Diagnostic], suppressions: list[Suppression], enable
         where = Location(suppression.file, suppression.line, suppression.column)
         kind = suppression.kind
         for word in suppression.unknown:
-            kept.append(Diagnostic("U002", f"'{kind}: {word}' names no rule", where, hint="`urdfcli rules` lists the codes and names"))
+            kept.append(Diagnostic(U002.code, f"'{kind}: {word}' names no rule", where, hint="`urdfcli rules` lists the codes and names"))
         if not suppression.took_part(written):
             continue
         scope = "in this file" if suppression.target is None else f"on the element at line {suppression.target}"
         if suppression.bare:
             if "" not in suppression.used:
-                kept.append(Diagnostic("U001", f"'{kind}' silences nothing: no diagnostic {scope}", where, hint="remove it"))
+                kept.append(Diagnostic(U001.code, f"'{kind}' silences nothing: no diagnostic {scope}", where, hint="remove it"))
             continue
         for chosen in suppression.selectors:
             if chosen not in suppression.used and any(enabled(code) for code in known if matches(chosen, code)):
-                kept.append(Diagnostic("U001", f"'{kind}: {chosen}' silences nothing: no {chosen} {scope}", where, hint="remove it"))
+                kept.append(Diagnostic(U001.code, f"'{kind}: {chosen}' silences nothing: no {chosen} {scope}", where, hint="remove it"))
     return kept
 
 
 # -- writing them -------------------------------------------------------------------------
 # codes a comment is not the fix for: a file that cannot be read is reported whatever the
 # comments say, and a comment about the comments (U001 unused, U002 unknown code) wants editing
-UNSILENCEABLE = ("X001", "X002", "U001", "U002")
+UNSILENCEABLE = (X001.code, X002.code, U001.code, U002.code)
 
 
 def noqa_edit(source: Text, line: int, codes: list[str], column: int | None = None) -> tuple[int, int, str] | None:
