@@ -176,3 +176,73 @@ def edit(path: Path, old: str, new: str) -> None:
 
 def line_of(path: Path, needle: str) -> int:
     return next(i for i, line in enumerate(path.read_text().splitlines(), 1) if needle in line)
+
+
+# A colcon workspace as real ones are: a src/ of several repositories cloned side by side
+# (as `vcs import` lays them out), description packages with macro libraries and fragments
+# (Baxter's end effectors, TALOS's `${side}_arm.transmissions.urdf.xacro` included from a
+# macro, an include computed from an argument with a default), MoveIt config packages
+# beside them (SRDF macros in `.xacro` and `.srdf.xacro` files, a generated `.srdf`),
+# generated URDFs committed beside their xacro, and a package used through package:// that
+# the package.xml does not declare. The files are in tests/ros_ws/src; meshes and the
+# generated files are made here.
+
+ROS_WS = Path(__file__).parent / "ros_ws"
+
+# name -> (package, file) of the generated URDF/SRDF -> its xacro source, as `xacro SRC -o OUT` leaves them
+GENERATED = {
+    "franka_ros/franka_description/robots/panda/panda.urdf": "franka_ros/franka_description/robots/panda/panda.urdf.xacro",
+    "pr2_common/pr2_description/robots/pr2.urdf": "pr2_common/pr2_description/robots/pr2.urdf.xacro",
+    "panda_moveit_config/config/panda.srdf": "panda_moveit_config/config/panda_arm_hand.srdf.xacro",
+}
+
+# mesh file -> the box it holds: size (x, y, z) and centre, metres
+MESHES = {
+    "franka_ros/franka_description/meshes/visual/hand.stl": ((0.06, 0.2, 0.08), (0, 0, 0.04)),
+    "husky/husky_description/meshes/base_link.stl": ((0.99, 0.67, 0.25), (0, 0, 0.12)),
+    "husky/husky_description/meshes/bumper.stl": ((0.05, 0.6, 0.08), (0, 0, 0)),
+    "clearpath_common/clearpath_platform_description/meshes/top_plate.stl": ((0.8, 0.6, 0.006), (0, 0, 0.003)),
+    "pr2_common/pr2_description/meshes/base_v0/base.stl": ((0.65, 0.65, 0.28), (0, 0, 0.14)),
+    "pr2_common/pr2_description/meshes/base_v0/caster.stl": ((0.19, 0.16, 0.1), (0, 0, 0.05)),
+    "pr2_common/pr2_description/meshes/base_v0/pr2_wheel.stl": ((0.15, 0.034, 0.15), (0, 0, 0)),
+}
+
+
+def box_stl(size: tuple[float, float, float], centre: tuple[float, float, float]) -> bytes:
+    """A binary STL of a closed box (12 triangles, outward normals)."""
+    import struct
+
+    half = [s / 2 for s in size]
+    corner = [[centre[i] + (half[i] if (k >> i) & 1 else -half[i]) for i in range(3)] for k in range(8)]
+    faces = [(0, 2, 3, 1), (4, 5, 7, 6), (0, 1, 5, 4), (2, 6, 7, 3), (0, 4, 6, 2), (1, 3, 7, 5)]
+    triangles = [(a, b, c) for a, b, c, d in faces for a, b, c in ((a, b, c), (a, c, d))]
+    data = bytearray(b"box".ljust(80, b"\0") + struct.pack("<I", len(triangles)))
+    for triangle in triangles:
+        data += struct.pack("<3f", 0, 0, 0)
+        for index in triangle:
+            data += struct.pack("<3f", *corner[index])
+        data += b"\0\0"
+    return bytes(data)
+
+
+def make_ros_workspace(root: Path) -> Path:
+    """Write the workspace under ``root/ws`` (each repository with a ``.git`` folder);
+    returns the workspace's ``src`` folder. The generated URDFs and SRDF are expanded
+    from their xacro as the xacro tool writes them (its banner naming the source)."""
+    import shutil
+
+    from urdfcli import Session, api
+
+    src = root / "ws" / "src"
+    shutil.copytree(ROS_WS / "src", src)
+    for repo in src.iterdir():
+        (repo / ".git").mkdir()
+    for name, (size, centre) in MESHES.items():
+        (src / name).parent.mkdir(parents=True, exist_ok=True)
+        (src / name).write_bytes(box_stl(size, centre))
+    with Session() as session:
+        for name, source in GENERATED.items():
+            text, _, diagnostics = api.expand(str(src / source), session)
+            assert text is not None, f"{source}: {diagnostics}"
+            (src / name).write_text(text)
+    return src

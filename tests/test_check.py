@@ -59,6 +59,9 @@ CASES = {
     "G001": (robot(link_a("<visual><geometry/></visual>")), robot(link_a(visual('<box size="1 1 1"/>')))),
     "G002": (robot(link_a(visual('<cone radius="1"/>'))), robot(link_a(visual('<sphere radius="1"/>')))),
     "G003": (robot(link_a(visual('<box size="1 1 1"/><sphere radius="1"/>'))), robot(link_a(visual('<box size="1 1 1"/>')))),
+    # a second <geometry> or <material> in one <visual>: urdfdom reads the first
+    "G004": (robot(link_a('<visual><geometry><box size="1 1 1"/></geometry><geometry><sphere radius="1"/></geometry></visual>')),
+             robot(link_a(visual('<box size="1 1 1"/>') + visual('<sphere radius="1"/>')))),
     "M001": (robot('<link name="a"/><material name="m"/>'), robot('<link name="a"/><material name="m"><texture filename="t.png"/></material>')),
     "M002": (robot(link_a(visual('<box size="1 1 1"/>', '<material name="m"/>'))),
              robot('<material name="m"><color rgba="0 0 1 1"/></material>' + link_a(visual('<box size="1 1 1"/>', '<material name="m"/>')))),
@@ -119,6 +122,16 @@ def test_every_check_code_has_a_case():
     # xacro it was generated from): tests/test_drift.py
     untested = in_check - set(CASES) - {"X003", "X004", "X005", "X006", "X106", "X110"}
     assert not untested
+
+
+def test_a_second_material_in_a_visual_is_said_and_a_mesh_scaled_to_nothing_too(tmp_path):
+    two = robot(link_a(visual('<box size="1 1 1"/>', '<material name="red"><color rgba="1 0 0 1"/></material><material name="blue"><color rgba="0 0 1 1"/></material>')))
+    assert "G004" in codes(tmp_path, two)
+    (tmp_path / "part.stl").write_bytes(b"solid part\nendsolid part\n")
+    flat = codes(tmp_path, robot(link_a(visual('<mesh filename="part.stl" scale="0 0 0"/>'))))
+    assert "V008" in flat  # MuJoCo and Drake refuse it
+    mirrored = codes(tmp_path, robot(link_a(visual('<mesh filename="part.stl" scale="1 -1 1"/>'))))
+    assert "V008" not in mirrored and "V006" not in mirrored  # TALOS mirrors its arms' meshes so
 
 
 @pytest.mark.parametrize("shape", ['<box size="0 0 0"/>', '<sphere radius="0"/>', '<cylinder radius="0.1" length="-0"/>'])

@@ -37,9 +37,9 @@ def run(command, fmt, *paths, env=None):
 def test_concise_lint(models):
     typo, broken = models
     done = run("lint", "concise", typo, broken)
-    assert done.stdout.decode().splitlines() == [
-        f"{typo}:5:7: M002 warning: material 'grey' is defined nowhere",
-        f"{typo}:5:36: D002 warning: <color> has no attribute 'rgb'; it is ignored",
+    assert done.stdout.decode().splitlines() == [  # one line each, the hint kept
+        f"{typo}:5:7: M002 warning: material 'grey' is defined nowhere (hint: define it at the top level, or give it a <color rgba>)",
+        f"{typo}:5:36: D002 warning: <color> has no attribute 'rgb'; it is ignored (hint: did you mean 'rgba'?)",
         f"{broken}:3:9: X001 error: Opening and ending tag mismatch: link line 2 and robot",
     ]
     assert done.stderr.decode() == "2 files checked: 1 error, 2 warnings\n"
@@ -50,7 +50,7 @@ def test_concise_check_reports_only_check_rules(models):
     typo, broken = models
     done = run("check", "concise", typo, broken)
     assert done.stdout.decode().splitlines() == [
-        f"{typo}:5:7: M002 warning: material 'grey' is defined nowhere",
+        f"{typo}:5:7: M002 warning: material 'grey' is defined nowhere (hint: define it at the top level, or give it a <color rgba>)",
         f"{broken}:3:9: X001 error: Opening and ending tag mismatch: link line 2 and robot",
     ]
 
@@ -107,10 +107,11 @@ def test_json_contract(models, command):
 def test_github_annotations(models, command):
     typo, broken = models
     lines = run(command, "github", typo, broken).stdout.decode().splitlines()
-    assert lines[0] == f"::warning file={typo},line=5,col=7,title=M002::material 'grey' is defined nowhere"
+    # the hint on a line of its own in the annotation (%0A)
+    assert lines[0] == f"::warning file={typo},line=5,col=7,title=M002::material 'grey' is defined nowhere%0Ahint: define it at the top level, or give it a <color rgba>"
     assert lines[-1] == f"::error file={broken},line=3,col=9,title=X001::Opening and ending tag mismatch: link line 2 and robot"
     if command == "lint":
-        assert lines[1] == f"::warning file={typo},line=5,col=36,title=D002::<color> has no attribute 'rgb'; it is ignored"
+        assert lines[1] == f"::warning file={typo},line=5,col=36,title=D002::<color> has no attribute 'rgb'; it is ignored%0Ahint: did you mean 'rgba'?"
 
 
 @pytest.mark.parametrize("command", ["check", "lint"])

@@ -5,6 +5,7 @@ from __future__ import annotations
 import json
 import math
 import re
+import textwrap
 import shutil
 
 import numpy
@@ -498,3 +499,40 @@ def test_json_for_several_files_is_a_list():
     result = run_cli("inertia", "--format", "json", str(JTBOT), str(MOBILE))
     data = json.loads(result.stdout)
     assert [d["robot"] for d in data] == ["jtbot", "my_mobile_robot"]
+
+
+def test_an_info_alone_does_not_fail_the_audit(tmp_path):
+    """A root link with mass (I011, info: only KDL ignores it) is shown, and the exit is 0."""
+    path = tmp_path / "root.urdf"
+    path.write_text(
+        '<robot name="r"><link name="base"><inertial><mass value="1"/>'
+        '<inertia ixx="0.0017" ixy="0" ixz="0" iyy="0.0017" iyz="0" izz="0.0017"/></inertial>'
+        '<collision><geometry><box size="0.1 0.1 0.1"/></geometry></collision></link></robot>\n'
+    )
+    result = run_cli("inertia", str(path))
+    assert "I011 info" in result.stderr.decode()
+    assert result.returncode == 0, result.stderr.decode()
+
+
+def test_xacro_never_offers_to_replace_a_macro_that_makes_the_whole_link(tmp_path):
+    """A gripper macro writes its links and their <inertial>s: the fix is in the macro's
+    body, not a call of the gripper replaced by an <inertial>."""
+    path = tmp_path / "robot.urdf.xacro"
+    path.write_text(textwrap.dedent("""\
+        <robot name="r" xmlns:xacro="http://www.ros.org/wiki/xacro">
+          <xacro:macro name="gripper" params="prefix parent">
+            <link name="${prefix}_finger">
+              <inertial><mass value="0.1"/><inertia ixx="1" ixy="0" ixz="0" iyy="1" iyz="0" izz="1"/></inertial>
+              <collision><geometry><box size="0.02 0.02 0.08"/></geometry></collision>
+            </link>
+            <joint name="${prefix}_finger_joint" type="prismatic"><parent link="${parent}"/><child link="${prefix}_finger"/>
+              <axis xyz="0 1 0"/><limit lower="0" upper="0.04" effort="10" velocity="0.1"/></joint>
+          </xacro:macro>
+          <link name="base"/>
+          <xacro:gripper prefix="left" parent="base"/>
+        </robot>
+        """))
+    out = run_cli("inertia", "--suggest", "--xacro", str(path)).stdout.decode()
+    assert f"<!-- link 'left_finger': its <inertial> is written at {path}:4, in the body of xacro macro 'gripper': replace it there with -->" in out
+    assert "replace the call" not in out and "<xacro:gripper" not in out.split("left_finger")[1]
+    assert "<inertial>" in out.split("left_finger")[-1]

@@ -42,13 +42,14 @@ def test_exit_codes(tmp_path):
 def test_the_documented_fixture_mistakes_are_found():
     _, lines = concise(str(TYPO))
     assert lines == [
-        f"{TYPO}:1:1: D003 info: no link has a <collision>: the model can be displayed, not simulated or planned with",
-        f"{TYPO}:9:13: M002 warning: material 'car_color' is defined nowhere",
-        f"{TYPO}:10:24: D002 warning: <color> has no attribute 'rgb'; it is ignored",
+        f"{TYPO}:1:1: D003 info: no link has a <collision>: the model can be displayed, not simulated or planned with"
+        " (hint: add collision shapes to the moving links if it is meant for simulation or planning)",
+        f"{TYPO}:9:13: M002 warning: material 'car_color' is defined nowhere (hint: define it at the top level, or give it a <color rgba>)",
+        f"{TYPO}:10:24: D002 warning: <color> has no attribute 'rgb'; it is ignored (hint: did you mean 'rgba'?)",
     ]
     jtbot = FIXTURES / "seed003/jtbot.urdf"
     _, lines = concise("--select", "D", str(jtbot))
-    assert lines == [f"{jtbot}:382:3: D006 warning: <gazebo reference='camera_depth_link'> names no link or joint"]
+    assert lines[0].startswith(f"{jtbot}:382:3: D006 warning: <gazebo reference='camera_depth_link'> names no link or joint (hint: ") and len(lines) == 1
 
 
 def test_a_correct_plugin_model_has_no_description_warnings():
@@ -75,7 +76,7 @@ def test_folders_are_searched_for_models_only(tmp_path):
     empty.mkdir()
     for command in ("lint", "check"):
         done = run_cli(command, str(empty))
-        assert done.returncode == 2 and done.stderr.decode() == f"urdfcli: {empty}: no robot model in this folder (*.urdf, *.urdf.xacro, or a *.xacro file that makes a robot)\n"
+        assert done.returncode == 2 and done.stderr.decode() == f"urdfcli: {empty}: no robot model in this folder (*.urdf, *.urdf.xacro, *.srdf, or a *.xacro file that makes a robot)\n"
 
 
 def test_parallel_runs_print_the_same_output_in_the_same_order():
@@ -84,7 +85,10 @@ def test_parallel_runs_print_the_same_output_in_the_same_order():
     assert one.stdout.decode().count("\n") > 50
     assert (one.returncode, one.stdout, one.stderr) == (four.returncode, four.stdout, four.stderr)
     every_cpu = run_cli("lint", "--format", "json", "-j", "0", str(FIXTURES))
-    assert json.loads(every_cpu.stdout)["summary"]["files"] == len([p for p in FIXTURES.rglob("*") if p.name.endswith((".urdf", ".urdf.xacro"))])
+    # every model, but not the car's parts (demo05-07), which the car models include: they are checked through them
+    parts = [p for p in FIXTURES.rglob("demo0[567]_car_*.urdf.xacro")]
+    assert len(parts) == 6
+    assert json.loads(every_cpu.stdout)["summary"]["files"] == len([p for p in FIXTURES.rglob("*") if p.name.endswith((".urdf", ".urdf.xacro"))]) - len(parts)
 
 
 def test_standard_input(tmp_path):
@@ -92,7 +96,7 @@ def test_standard_input(tmp_path):
     done = run_cli("lint", "--format", "concise", "-", input=text)
     assert done.returncode == 1
     line = done.stdout.decode().splitlines()[2]
-    assert line.startswith("<stdin>:10:") and line.endswith(": D002 warning: <color> has no attribute 'rgb'; it is ignored")
+    assert line.startswith("<stdin>:10:") and line.endswith(": D002 warning: <color> has no attribute 'rgb'; it is ignored (hint: did you mean 'rgba'?)")
 
 
 # -- suppressions ------------------------------------------------------------------
@@ -133,7 +137,7 @@ def test_noqa_file_silences_a_code_everywhere_in_its_file(tmp_path):
 def test_only_info_left_exits_0(tmp_path):
     model = write(tmp_path, "robot.urdf", '<robot name="r">\n  <!-- urdfcli: noqa: D002 -->\n  <link name="base_link"/>\n</robot>\n')
     done, lines = concise(str(model))
-    assert lines == [f"{model}:2:3: U001 info: 'noqa: D002' silences nothing: no D002 on the element at line 3"]
+    assert lines == [f"{model}:2:3: U001 info: 'noqa: D002' silences nothing: no D002 on the element at line 3 (hint: remove it)"]
     assert done.returncode == 0
 
 
@@ -188,3 +192,36 @@ def test_progress_bar_only_on_a_terminal_for_a_long_run(monkeypatch):
     with Session(Options(config=Config())) as session, lint_command.Progress(Output(Console(), Console(file=piped, force_terminal=False))) as progress:
         api.run(paths, session, progress=progress.update)
     assert piped.getvalue() == ""
+
+
+# -- noise: warnings and errors only, statistics ------------------------------------
+def test_no_info_shows_warnings_and_errors_and_counts_the_info(tmp_path):
+    done, lines = concise("--no-info", str(TYPO))
+    assert [line.split(": ")[1].split()[0] for line in lines] == ["M002", "D002"]  # not D003, an info
+    assert done.stderr.decode() == "1 file checked: 0 errors, 2 warnings, 1 info (not shown)\n"
+    # the configuration says so too, and --info overrides it
+    write(tmp_path, "pyproject.toml", "[tool.urdfcli]\nshow-info = false\n")
+    model = write(tmp_path, "robot.urdf", TYPO.read_text())
+    _, lines = concise(str(model))
+    assert len(lines) == 2
+    _, lines = concise("--info", str(model))
+    assert len(lines) == 3
+    text = run_cli("lint", str(model))
+    assert " D003 " not in text.stdout.decode() and text.stdout.decode().endswith("1 file checked: 0 errors, 2 warnings, 1 info (not shown)\n")
+    write(tmp_path, "pyproject.toml", '[tool.urdfcli]\nshow-info = "no"\n')
+    bad = run_cli("lint", str(model))
+    assert bad.returncode == 2 and "show-info: expected true or false, not 'no'" in bad.stderr.decode()
+
+
+def test_statistics_count_each_code(tmp_path):
+    done = run_cli("lint", "--statistics", str(TYPO), str(FIXTURES / "seed003/jtbot.urdf"))
+    lines = done.stdout.decode().splitlines()
+    rows = [line.split() for line in lines[:-1]]
+    assert all(row[2] in ("error", "warning", "info") for row in rows) and [int(row[0]) for row in rows] == sorted((int(row[0]) for row in rows), reverse=True)
+    assert ["1", "M002", "warning", "material-undefined"] in rows
+    assert lines[-1].startswith("2 files checked:")
+    total = sum(int(row[0]) for row in rows)
+    listed = json.loads(run_cli("lint", "--format", "json", str(TYPO), str(FIXTURES / "seed003/jtbot.urdf")).stdout)
+    assert total == sum(len(f["diagnostics"]) for f in listed["files"])
+    as_json = json.loads(run_cli("lint", "--statistics", "--format", "json", str(TYPO)).stdout)
+    assert {"code": "M002", "name": "material-undefined", "severity": "warning", "count": 1} in as_json

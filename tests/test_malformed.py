@@ -262,7 +262,7 @@ def test_missing_file(cli, tmp_path):
 def test_directory_given_as_a_file(cli, tmp_path):
     result = cli("check", str(tmp_path))
     assert result.exit_code == 2
-    assert cli_lines(result) == [f"urdfcli: {tmp_path}: no robot model in this folder (*.urdf, *.urdf.xacro, or a *.xacro file that makes a robot)"]
+    assert cli_lines(result) == [f"urdfcli: {tmp_path}: no robot model in this folder (*.urdf, *.urdf.xacro, *.srdf, or a *.xacro file that makes a robot)"]
 
 
 @pytest.mark.parametrize("command", ["tree", "inertia", "expand"])

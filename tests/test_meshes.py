@@ -69,6 +69,12 @@ def test_a_missing_mesh_is_an_error_in_check_naming_the_file_that_differs_in_cas
     assert found(clean, "D004", RuleSet.CHECK) == [] and run_cli("check", clean).returncode == 0
 
 
+def test_a_missing_mesh_with_no_file_like_it_has_no_hint_about_case(robot):
+    write(robot / "meshes" / "base.stl", box())
+    [error] = found(model(robot, link("arm", mesh("package://my_robot/meshes/arm.stl"))), "D004", RuleSet.CHECK)
+    assert error.hint is None  # no file differs from it in case: saying file names are case-sensitive would send one looking for one
+
+
 def test_a_missing_mesh_names_another_extension_or_the_meshes_folder(robot):
     write(robot / "meshes" / "arm.dae", box())
     [error] = found(model(robot, link("arm", mesh("package://my_robot/meshes/arm.stl"))), "D004", RuleSet.CHECK)
@@ -118,6 +124,24 @@ def test_relative_absolute_and_file_paths_name_the_package_uri(robot):
         [warning] = found(model(robot, link("arm", mesh(uri))), "F002")
         assert said in warning.message and warning.hint == "write package://my_robot/meshes/arm.stl"
     assert found(model(robot, link("arm", mesh("package://my_robot/meshes/arm.stl"))), "F002") == []
+
+
+def test_a_file_uri_made_with_find_in_a_xacro_source_is_portable(robot):
+    """file://$(find my_robot)/... in the xacro: each machine's expansion names its own
+    folder, and Gazebo is given the file so on purpose. The URDF it expands to, or a
+    file:// path written out, is still flagged."""
+    write(robot / "meshes" / "arm.stl", box())
+    source = robot / "urdf" / "robot.urdf.xacro"
+    source.write_text(
+        '<robot name="r" xmlns:xacro="http://www.ros.org/wiki/xacro">\n'
+        + link("arm", mesh("file://$(find my_robot)/meshes/arm.stl")) + "\n</robot>\n"
+    )
+    assert found(str(source), "F002") == []
+    source.write_text(
+        '<robot name="r" xmlns:xacro="http://www.ros.org/wiki/xacro">\n'
+        + link("arm", mesh(f"file://{robot.resolve()}/meshes/arm.stl")) + "\n</robot>\n"
+    )
+    assert len(found(str(source), "F002")) == 1
 
 
 def test_a_file_outside_any_package_is_told_to_go_in_one(tmp_path):

@@ -135,6 +135,18 @@ def test_a_collada_reference_to_nothing_is_named(tmp_path):
         read_mesh(path)
 
 
+def test_a_collada_file_padded_with_nul_bytes_is_read_and_other_trailing_data_is_not(tmp_path):
+    """Some exporters pad a COLLADA file with NUL bytes after </COLLADA>: assimp and
+    tinyxml2 stop there and read it; so does urdfcli. Markup after it is still broken."""
+    path = write(tmp_path / "part.dae", box())
+    path.write_bytes(path.read_bytes() + b"\0" * 300)
+    assert len(read_mesh(path).faces) == 12
+    assert summarise_file(path).problem is None
+    path.write_bytes(path.read_bytes().rstrip(b"\0") + b"<extra/>")
+    with pytest.raises(MeshError, match="not well-formed"):
+        read_mesh(path)
+
+
 def test_a_format_urdfcli_does_not_read_is_left_alone(tmp_path):
     path = tmp_path / "Torso.mesh"  # Ogre's binary mesh: rviz reads it
     path.write_bytes(b"\x00\x10[MeshSerializer_v1.41]")

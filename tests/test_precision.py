@@ -169,11 +169,19 @@ def test_a_light_frame_on_a_fixed_joint_is_not_a_point_mass(tmp_path):
     assert [c for c, _, _ in found(tmp_path, sensor, "I004", "I009")] == ["I004"]  # one cause, one diagnostic
 
 
-def test_an_invalid_tensor_on_a_dummy_link_of_a_heavier_body_draws_nothing(tmp_path):
-    # ANYmal's root: 1e-6 kg with every element 1e-6, fixed to the real base
+def test_an_invalid_tensor_on_a_dummy_link_of_a_heavier_body_is_a_warning_naming_mujoco(tmp_path):
+    # ANYmal's root: 1e-6 kg with every element 1e-6, fixed to the real base; TIAGo's 1 mg
+    # antennas: a negative principal moment. Lumped into the base they change nothing, but
+    # MuJoCo refuses the model (tested against MuJoCo in tests/test_targets.py's cases).
     dummy = '<link name="root">' + inertial(1e-6, 1e-6, 1e-6, 1e-6, 1e-6, 1e-6, 1e-6) + "</link>"
     dummy += arm("base", box("0.4 0.4 0.1") + inertial(10, 0.14, 0.14, 0.27), joint="fixed", parent="root")
-    assert found(tmp_path, dummy, "I005", "I006", "I011") == []
+    [(code, severity, message)] = [(d.code, d.severity.value, d.message) for d in lint(tmp_path, dummy) if d.code in ("I005", "I006", "I011")]
+    assert (code, severity) == ("I006", "warning") and "MuJoCo refuses the model" in message
+    antenna = '<link name="base">' + box("0.4 0.4 0.1") + inertial(10, 0.14, 0.14, 0.27) + "</link>"
+    antenna += arm("antenna", '<inertial><mass value="0.000001"/><inertia ixx="2.371e-08" ixy="6.119e-08" ixz="1.179e-08" '
+                   'iyy="2.833e-08" iyz="7.74e-09" izz="3.849e-08"/></inertial>', joint="fixed", parent="base")
+    [(code, severity, message)] = [(d.code, d.severity.value, d.message) for d in lint(tmp_path, antenna) if d.code in ("I005", "I006")]
+    assert (code, severity) == ("I005", "warning") and "Drake replaces the tensor" in message
 
 
 # -- A.4: one cause, one diagnostic ------------------------------------------------------
@@ -194,7 +202,8 @@ def test_a_tensor_shared_by_links_of_different_size_is_one_diagnostic(tmp_path):
     diagnostics = found(tmp_path, casters, "I008", "I009")
     assert [c for c, _, _ in diagnostics] == ["I008"]
     # the tensor fits the caster: the diagnostic is about the wheels
-    assert "links 'wheel_l' and 'wheel_r' (0.44 kg) have the inertia tensor" in diagnostics[0][2] and "of 'caster' (3.5 kg)" in diagnostics[0][2]
+    assert "links 'wheel_l' and 'wheel_r' (0.44 kg) have the inertia tensor" in diagnostics[0][2] and "of 1 other link (3.5 kg)" in diagnostics[0][2]
+    assert "caster" not in diagnostics[0][2]  # identical parts may share a tensor: only those it does not fit are named
 
 
 def test_identical_links_sharing_a_tensor_and_light_dummies_are_not_placeholders(tmp_path):
@@ -287,3 +296,15 @@ def test_severities_are_as_documented():
     assert rule("I011").severity is Severity.INFO
     for code in ("I002", "I004", "I008", "I009", "J013", "J014", "D003"):
         assert rule(code).severity is Severity.WARNING
+
+
+def test_axes_swapped_on_a_long_link_are_found_though_its_moments_are_not_the_geometrys(tmp_path):
+    """A hand 0.2 m long along y whose declared tensor turns hardest about y: its moments
+    are CAD-like (within a few times of the box's), so they match the geometry on no axis,
+    and yet the long axis says the axes are swapped. The same hand turned right draws nothing."""
+    swapped = BASE + arm("hand", box("0.1 0.2 0.05") + inertial(0.2, 0.0002, 0.0005, 0.0004))
+    [(code, severity, message)] = found(tmp_path, swapped, "I009")
+    assert (code, severity) == ("I009", "warning")
+    assert "long along y, so its moment about y is its smallest, but the declared tensor turns hardest about y" in message
+    right = BASE + arm("hand", box("0.1 0.2 0.05") + inertial(0.2, 0.0005, 0.0002, 0.0004))
+    assert found(tmp_path, right, "I009") == []

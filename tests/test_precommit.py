@@ -34,7 +34,9 @@ def test_hooks_are_declared_as_documented():
     assert by_id["urdfcli-fix"]["entry"] == "urdfcli lint --fix --exit-zero --exit-non-zero-on-fix"
     assert all(hook["language"] == "python" for hook in HOOKS)
     # every changed file in one run, so that a library and its models are seen together
-    assert all(hook["require_serial"] and hook["files"] == r"\.(urdf|xacro)$" for hook in HOOKS)
+    assert all(hook["require_serial"] for hook in HOOKS)
+    # check and lint read SRDFs too (MoveIt's); drift compares generated URDFs with their xacro
+    assert [by_id[name]["files"] for name in ("urdfcli-check", "urdfcli-lint", "urdfcli-drift")] == [r"\.(urdf|xacro|srdf)$"] * 2 + [r"\.(urdf|xacro)$"]
 
 
 @pytest.mark.parametrize("hook", HOOKS, ids=lambda h: h["id"])
@@ -44,6 +46,8 @@ def test_hooks_are_declared_as_documented():
         ("robot.urdf", True),
         ("description/urdf/robot.urdf.xacro", True),
         ("urdf/macros.xacro", True),
+        ("config/panda.srdf", True),  # MoveIt's SRDF, checked against its URDF
+        ("srdf/ur.srdf.xacro", True),
         ("robot.urdf.bak", False),
         ("package.xml", False),
         ("robot.sdf", False),
@@ -51,6 +55,8 @@ def test_hooks_are_declared_as_documented():
     ],
 )
 def test_hook_filters_match_robot_descriptions_only(hook, name, matches):
+    if hook["id"] == "urdfcli-drift" and name.endswith(".srdf"):
+        matches = False  # drift is about generated URDFs
     assert bool(re.search(hook["files"], name)) is matches
 
 

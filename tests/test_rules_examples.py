@@ -14,9 +14,11 @@ import pytest
 from conftest import lint_file
 from support.meshes import example_package
 
+from urdfcli.model.srdf import SRDF_TAGS
 from urdfcli.model.targets import profile
 from urdfcli.project.config import Config
 from urdfcli.rules import REGISTRY, example_code
+from urdfcli.rules import srdf as srdf_rules
 
 ROBOT_CHILDREN = {"link", "joint", "material", "gazebo", "transmission"}
 # X006 is about a library and the models of its repository that include it: its Example and
@@ -36,7 +38,14 @@ def first_tag(snippet: str) -> str:
 
 
 def materialise(snippet: str, package) -> str:
-    """The snippet as a file in the package; fragments are wrapped in a <robot>."""
+    """The snippet as a file in the package; fragments are wrapped in a <robot>. An SRDF
+    (MoveIt's) is written to config/example.srdf, beside the URDF of its robot."""
+    if any(f"<{tag}" in snippet for tag in SRDF_TAGS):
+        (package / "urdf" / "example.urdf").write_text(srdf_rules.URDF + "\n", encoding="utf-8")
+        path = package / "config" / "example.srdf"
+        path.parent.mkdir(exist_ok=True)
+        path.write_text(snippet, encoding="utf-8")
+        return str(path)
     if first_tag(snippet) in ROBOT_CHILDREN:
         snippet = f'<robot name="example">\n{snippet}\n</robot>\n'
     name = "example.urdf.xacro" if "xacro:" in snippet else "example.urdf"

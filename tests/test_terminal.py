@@ -97,10 +97,32 @@ def test_lint_of_published_models_with_their_meshes_shows_progress_then_every_di
     shown = text(out)
     assert code == 1  # the published models have warnings
     assert b"linting" in out and HIDE_CURSOR in out  # the progress bar was drawn
+    drawn = text(out)
+    assert re.search(r"linting.* [0-5]/6 .*robots/\w+_description/", drawn)  # files done out of all, and the file being read
+    assert b"38;2;249;38;114" not in out and b"\x1b[31m" not in out  # not rich's red-pink bar: the terminal's own colour
     assert cursor_restored(out)
     assert "6 files checked:" in shown
     assert "I009 warning: inertia of link 'wrist_1_link'" in shown  # ur5: a diagnostic, printed after the bar
     assert "internal error" not in shown and "Traceback" not in shown
+
+
+def test_a_workspace_lint_on_a_terminal_fits_its_width(tmp_path):
+    """The test workspace on a terminal 100 columns wide: no line longer than that beside
+    the one path it names, every finding once, and nothing left of the progress bar."""
+    from ros_workspace import make_ros_workspace
+
+    src = make_ros_workspace(tmp_path)
+    out, code = on_terminal("lint", "src", cwd=src.parent, env={"COLUMNS": "100"})
+    shown = text(out)
+    assert code == 1 and "Traceback" not in shown
+    report = text(out[max(0, out.rfind(SHOW_CURSOR)):]).lstrip("\n")  # after the progress bar, if one was drawn (it hides the cursor)
+    for line in report.splitlines():
+        longest = max((len(word) for word in line.split() if "/" in word), default=0)
+        assert len(line) <= 100 + longest, line
+    firsts = [line.split(" ")[0] for line in report.splitlines() if re.match(r"src/\S+:\d+:\d+: [A-Z]\d{3} ", line)]
+    assert len(firsts) == len(set(firsts))  # nothing twice
+    assert "\n12 files checked: 2 errors, 6 warnings, 10 info\n" in report
+    assert cursor_restored(out)
 
 
 @pytest.mark.parametrize("after", [0.2, 1.0, 2.0])  # while Python starts; while trimesh imports scipy (it swallows the exception); later

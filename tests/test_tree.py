@@ -180,6 +180,29 @@ def test_loops_and_second_parents_end_and_fail(tmp_path):
     assert "T004 error" in result.stderr.decode() and "T003 error" in result.stderr.decode()
 
 
+def test_a_link_with_two_parents_is_marked_where_it_comes_second(tmp_path):
+    """'c' is reached by 'ac' (first by name) and, below 'b', by 'bc'. Shown depth
+    first, 'b' comes before 'c' at the top level: 'c' under 'b' is shown first, so
+    the mark belongs on the 'ac' row that follows it, not on the first."""
+    path = tmp_path / "two_parents.urdf"
+    path.write_text(
+        '<robot name="r"><link name="a"/><link name="b"/><link name="c"/><link name="d"/>'
+        '<joint name="ab" type="fixed"><parent link="a"/><child link="b"/></joint>'
+        '<joint name="ac" type="fixed"><parent link="a"/><child link="c"/></joint>'
+        '<joint name="bc" type="fixed"><parent link="b"/><child link="c"/></joint>'
+        '<joint name="cd" type="fixed"><parent link="c"/><child link="d"/></joint></robot>'
+    )
+    result = run_cli("tree", "--ascii", str(path))
+    assert result.returncode == 1
+    assert result.stdout.decode().splitlines()[:5] == [
+        "a",
+        "|-- b  <- ab (fixed)",
+        "|   `-- c  <- bc (fixed)",
+        "|       `-- d  <- cd (fixed)",
+        "`-- c  <- ac (fixed)  (already shown above)",
+    ]
+
+
 def test_no_root_asks_for_from(tmp_path):
     path = tmp_path / "ring.urdf"
     path.write_text(

@@ -78,6 +78,9 @@ def test_includes_resolve_find_arg_defaults_properties_and_dirname(tmp_path):
               <xacro:include filename="$(dirname)/sensors/*.xacro"/>
               <xacro:include filename="$(find nowhere)/urdf/gripper.xacro"/>
               <xacro:include filename="${{python.computed()}}"/>
+              <xacro:macro name="arm" params="side">
+                <xacro:include filename="$(find acme_parts)/urdf/${{side}}_arm.xacro"/>
+              </xacro:macro>
             </robot>
             """,
         )
@@ -89,9 +92,14 @@ def test_includes_resolve_find_arg_defaults_properties_and_dirname(tmp_path):
         ("path", str(urdf / "inertia.xacro")),
         ("path", str(urdf / "wheel.xacro")),
         ("glob", str(urdf / "sensors" / "*.xacro")),
-        ("name", "gripper.xacro"),
-        ("any", ""),
+        # a package not found here, or a name computed whole: the include may be any file, so it is none
+        ("unknown", "$(find nowhere)/urdf/gripper.xacro"),
+        ("unknown", "${python.computed()}"),
+        # a name computed from a macro parameter: the files of that folder whose name fits
+        ("pattern", str(urdf / "*_arm.xacro")),
     ]
+    assert not kinds[3].may_be(urdf / "gripper.xacro") and not kinds[4].may_be(urdf / "inertia.xacro")
+    assert kinds[5].may_be(urdf / "left_arm.xacro") and not kinds[5].may_be(urdf / "wheel.xacro")
     assert resolve_include(source.includes[1], source, find, {"kind": "caster"}).value == str(urdf / "caster.xacro")
 
 

@@ -18,6 +18,7 @@ from __future__ import annotations
 import contextlib
 import os
 from collections.abc import Callable, Iterable, Iterator
+from dataclasses import replace
 from functools import partial
 from pathlib import Path
 from typing import TYPE_CHECKING, NamedTuple
@@ -31,8 +32,10 @@ from .model.units import unit_verdict
 from .project import drift as drift_
 from .project import fixing, linter
 from .project.config import Config, ConfigError
-from .project.workspace import Entry, Target, assemble, model_targets, models_below, plan, unchecked_library, xacro_sources
+from .project.semantic import described
+from .project.workspace import Aside, Entry, Models, Target, assemble, fragment_includers, model_targets, models_below, plan, unchecked_library, unread, xacro_sources
 from .read.document import STDIN, InputError, read_document
+from .read.xacro_scan import shown
 from .read.edits import EditError
 from .read.edits import apply as edit_text
 from .read.packages import PackageError
@@ -55,7 +58,7 @@ class Run(NamedTuple):
     models: tuple[Result, ...] = ()
 
 
-Progress = Callable[[int, int], None]  # (done, total)
+Progress = Callable[[int, int, str], None]  # (done, total, the file being read)
 
 
 def check(path: str | os.PathLike, *arguments: str, session: Session | None = None, **settings) -> Result:
@@ -107,29 +110,35 @@ def _single(found: Run) -> Result:
     return found.results[0]
 
 
-def find_models(paths: list[str], session: Session) -> list[str]:
+def find_models(paths: list[str], session: Session) -> Models:
     """Files as given; each folder replaced by the models below it (see
-    :func:`urdfcli.project.workspace.models_below`). Raises UsageError for a
-    folder that holds none."""
+    :func:`urdfcli.project.workspace.models_below`), the files left out there
+    in ``aside``. Raises UsageError for a folder that holds none."""
     files: list[str] = []
+    aside: list = []
     for path in paths:
         if path != STDIN and Path(path).is_dir():
             found = models_below(Path(path), session.index)
             if not found:
-                raise UsageError(f"{path}: no robot model in this folder (*.urdf, *.urdf.xacro, or a *.xacro file that makes a robot)")
-            files.extend(str(f) for f in found)
+                raise UsageError(f"{path}: no robot model in this folder (*.urdf, *.urdf.xacro, *.srdf, or a *.xacro file that makes a robot)")
+            files.extend(shown(f) for f in found)  # relative to the working folder when below it, as includes are named
+            aside.extend(found.aside)
         else:
             files.append(path)
-    return files
+    return Models(files, tuple(aside))
 
 
-def run(paths: list[str], session: Session, progress: Progress | None = None) -> Run:
+def run(paths: list[str], session: Session, progress: Progress | None = None, aside: tuple[Aside, ...] | None = None) -> Run:
     """Check each input as the session's options ask (see :class:`~urdfcli.options.Options`).
 
     With ``libraries``, a xacro library is checked through the models that include
     it (see :mod:`urdfcli.project.workspace`); a model listed in ``[tool.urdfcli]
-    models`` is checked once per argument set. Raises UsageError for a bad
+    models`` is checked once per argument set. ``aside``: the files of a folder
+    left out because a file there includes them (see :func:`find_models`): each
+    that no model read is named in a note. Raises UsageError for a bad
     configuration or package path."""
+    if aside is None:
+        aside = paths.aside if isinstance(paths, Models) else ()
     config_for = configured(session)
     try:
         if session.options.libraries:
@@ -140,16 +149,38 @@ def run(paths: list[str], session: Session, progress: Progress | None = None) ->
         raise UsageError(str(error)) from None
     targets = list(dict.fromkeys(t for entry in entries for t in entry.targets))
     done = dict(zip(targets, _outcomes(targets, session, progress)))
+    total = len(targets)
 
     def outcome(target: Target) -> Result | Unreadable:
-        if target not in done:  # a library no model could check, expanded on its own
+        nonlocal total
+        if target not in done:  # a library no model could check, expanded on its own; a fragment's models
+            total += 1
+            if progress is not None:
+                progress(len(done), total, target.label)
             done[target] = check_target(target, session)
         return done[target]
 
-    results, unreadable = assemble(entries, outcome)
+    includers = fragment_includers(config_for, session.package_paths, session.packages, session.files) if session.options.libraries else (lambda path: [])
+    results, unreadable = assemble(entries, outcome, includers, _generated_from)
+    results += unread(aside, [r for r in done.values() if isinstance(r, Result)])
+    results = [replace(result, show_info=config_for(result.path).show_info) for result in results]
     if session.options.load:
         results = [loaded_into_targets(result, session) for result in results]
     return Run(results, unreadable, tuple(r for r in done.values() if isinstance(r, Result) and r.loaded is not None))
+
+
+def _generated_from(path: str) -> Path | None:
+    """The xacro file a URDF says it was generated from, or that sits beside it under its
+    name (see :func:`urdfcli.project.drift.find_source`), when that file is at hand."""
+    if path == STDIN or path.endswith(".xacro"):
+        return None
+    try:
+        with open(path, "rb") as stream:
+            head = stream.read(drift_.HEAD_BYTES)
+    except OSError:
+        return None
+    found = drift_.find_source(Path(path), head, lambda: None, lambda folder: [])
+    return found.file.resolve() if found is not None else None
 
 
 def configured(session: Session):
@@ -169,18 +200,18 @@ def _outcomes(targets: list[Target], session: Session, progress: Progress | None
     jobs = session.options.jobs
     parallel = jobs != 1 and len(targets) > 1 and not any(t.path == STDIN for t in targets)
     if not parallel:
-        for done, target in enumerate(targets, 1):
-            yield check_target(target, session)
+        for done, target in enumerate(targets):
             if progress is not None:
-                progress(done, len(targets))
+                progress(done, len(targets), target.label)
+            yield check_target(target, session)
         return
     from concurrent.futures import ProcessPoolExecutor
 
     with ProcessPoolExecutor(max_workers=jobs or None, initializer=_start_process, initargs=(session.options,)) as pool:
         for done, found in enumerate(pool.map(_check_in_process, targets), 1):
             yield found
-            if progress is not None:
-                progress(done, len(targets))
+            if progress is not None and done < len(targets):
+                progress(done, len(targets), targets[done].label)
 
 
 class _ProcessSession:
@@ -228,14 +259,56 @@ def check_target(target: Target, session: Session) -> Result | Unreadable:
     except PackageError as error:
         raise UsageError(str(error)) from None
     document = loaded.document
-    drifted = drift_.drift(loaded, config, session) if rule_set is not RuleSet.TREE and drift_.enabled(config, path) else []
-    diagnostics = linter.lint(loaded, config, rule_set, drifted)
+    extra = [] if loaded.semantic is None else [d for d in [_described(loaded, session)] if d is not None]
+    if rule_set is not RuleSet.TREE and drift_.enabled(config, path):
+        extra += drift_.drift(loaded, config, session)
+    diagnostics = linter.lint(loaded, config, rule_set, extra)
     meshes = tuple(mesh_files(loaded, partial(unit_verdict, loaded))) if rule_set is RuleSet.LINT and loaded.modelled else ()
     audited = _audit(loaded, config, options.audit, session) if options.audit is not None else None
     return Result(
         path, tuple(diagnostics), loaded, target.arguments, includes=tuple(document.includes), needs_argument=document.missing_argument,
         meshes=meshes, audit=audited,
     )
+
+
+def _described(loaded: Loaded, session: Session) -> Diagnostic | None:
+    """An SRDF checked against the URDF of its robot: that URDF set on ``loaded``, or why there is none."""
+    return described(loaded, session.index, session.options.urdf, partial(_arguments_for, session), partial(_load_urdf, session))
+
+
+def _arguments_for(session: Session, file: Path) -> dict[str, str]:
+    """The xacro arguments a model is checked with: its configured ones, and the first
+    set ``[tool.urdfcli] models`` lists for it."""
+    config = configured(session)(str(file))
+    return {**config.mappings_for(str(file)), **((config.argument_sets(str(file)) or [{}])[0])}
+
+
+def _load_urdf(session: Session, path: str, arguments: dict[str, str]) -> Loaded | str:
+    """A URDF an SRDF is checked against, loaded once per session (no mesh is read)."""
+    key = (path, tuple(sorted(arguments.items())))
+    stamp, known = session.index.described.get(key, (None, None))
+    if known is None or stamp != _stamps([path, *(known.document.includes if not isinstance(known, str) else ())]):
+        config = configured(session)(path)
+        try:
+            resolver = session.resolver(config.package_paths, Path(path))
+            known = load(path, session.inputs, resolver, arguments, meshes=session.meshes, reads_meshes=False)
+        except InputError as error:
+            known = str(error)
+        except PackageError as error:
+            raise UsageError(str(error)) from None
+        session.index.described[key] = (_stamps([path, *(known.document.includes if not isinstance(known, str) else ())]), known)
+    return known
+
+
+def _stamps(files: list[str]) -> tuple:
+    """When each file last changed: a URDF loaded for an SRDF is loaded again when one did."""
+    found = []
+    for file in files:
+        try:
+            found.append(os.stat(file).st_mtime_ns)
+        except OSError:
+            found.append(None)
+    return tuple(found)
 
 
 class Fixed(NamedTuple):

@@ -62,7 +62,9 @@ class Options:
     processes (0: one per CPU). ``audit`` asks for the mass-property audit, ``load``
     for a load of each model into its targets' own packages (``check --load``).
     ``format`` names the reporter of the command line. ``fix`` and ``unsafe_fixes``
-    say which fixes :func:`urdfcli.api.fix` applies."""
+    say which fixes :func:`urdfcli.api.fix` applies. ``urdf`` is the URDF an SRDF is
+    checked against; ``show_info`` False has the text formats show only warnings and
+    errors (the configuration's ``show-info``)."""
 
     rule_set: RuleSet = RuleSet.LINT
     arguments: tuple[tuple[str, str], ...] = ()  # xacro arguments NAME:=VALUE, over the configuration's
@@ -78,6 +80,8 @@ class Options:
     audit: AuditOptions | None = None
     load: bool = False
     format: str = "text"
+    urdf: str | None = None  # --urdf: the URDF an SRDF is checked against (else the one of its robot, found nearby)
+    show_info: bool | None = None  # --no-info (False), --info (True): over the configuration's show-info
     fix: bool | None = None  # apply the safe fixes (None: the configuration's ``fix``)
     unsafe_fixes: bool | None = None  # and the unsafe ones (None: the configuration's ``unsafe-fixes``)
 
@@ -106,7 +110,7 @@ class Options:
     @property
     def overrides(self) -> dict:
         """What the command line changes in each configuration (see :meth:`Config.overridden`)."""
-        return {"select": self.select, "ignore": self.ignore, "extend_select": self.extend_select, "targets": self.targets}
+        return {"select": self.select, "ignore": self.ignore, "extend_select": self.extend_select, "targets": self.targets, "show_info": self.show_info}
 
     def but(self, **changes) -> Options:
         """These options with some changed."""

@@ -70,6 +70,25 @@ IsolatedOption = Annotated[
     bool,
     typer.Option("--isolated", help="Read no configuration file (neither the tool.urdfcli table of pyproject.toml nor urdfcli.toml)."),
 ]
+UrdfOption = Annotated[
+    str | None,
+    typer.Option(
+        "--urdf", metavar="FILE",
+        help="Check SRDF files (MoveIt's .srdf, .srdf.xacro) against this URDF or xacro file, instead of the one of their robot's name found in their package or workspace.",
+        show_default=False,
+    ),
+]
+NoInfoOption = Annotated[
+    bool | None,
+    typer.Option(
+        "--no-info/--info", show_default=False,
+        help="Show only warnings and errors (info is still counted in the summary); --info shows it whatever the configuration's show-info says.",
+    ),
+]
+StatisticsOption = Annotated[
+    bool,
+    typer.Option("--statistics", help="Print how many diagnostics each rule gave, most first, instead of the diagnostics."),
+]
 QuietOption = Annotated[
     bool,
     typer.Option("--quiet", "-q", help="Print only the diagnostics and the summary: no tree, no notes on libraries, no progress bar."),
@@ -191,3 +210,8 @@ def session_for(options: Options) -> Iterator[Session]:
 def report_unreadable(output: Output, unreadable: list[Unreadable]) -> None:
     for found in unreadable:
         output.err.file.write(f"urdfcli: {escape(found.reason)}\n")
+
+
+def not_a_robot(path: str) -> str:
+    """Why an SRDF is not drawn or audited, and what to do with it instead."""
+    return f"{path}: an SRDF (MoveIt's semantic description), which has no links of its own; `urdfcli check {path}` checks it against its URDF"

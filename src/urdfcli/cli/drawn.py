@@ -12,7 +12,7 @@ from ..report.targets import joint_notes, link_notes
 from ..rules import REGISTRY, Kind
 from ..rules.suggestions import close_matches
 from ..session import Session
-from .common import fail
+from .common import fail, not_a_robot
 
 
 def target_notes(builds) -> dict[str, str]:
@@ -34,6 +34,8 @@ def load_model(path: str, session: Session) -> Result:
     found = api.check_target(api.Target(path), session.using(session.options.but(arguments=tuple({**first_set, **session.options.mappings}.items()))))
     if isinstance(found, Unreadable):
         raise fail(found.reason)
+    if found.loaded is not None and found.loaded.semantic is not None:
+        raise fail(not_a_robot(path))
     return found
 
 

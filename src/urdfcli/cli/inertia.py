@@ -7,6 +7,7 @@ from typing import Annotated
 import typer
 
 from .. import report
+from ..diagnostics import Severity
 from ..model.massprops import TOLERANCE
 from ..options import AuditOptions, Options, RuleSet
 from ..report.console import Output, write
@@ -21,6 +22,7 @@ from .common import (
     choose,
     fail,
     format_option,
+    not_a_robot,
     report_unreadable,
     session_for,
     split_inputs,
@@ -55,7 +57,6 @@ def inertia(
     Exit 0 when nothing is found, 1 on any warning or error, 2 when it cannot run.
     """
     from .. import api
-    from ..report.inertia import problem_count
     from ..report.lines import diagnostic_lines
 
     output_format = choose(output_format, ("text", "json"))
@@ -76,9 +77,12 @@ def inertia(
         report_unreadable(output, found.unreadable)
         if not found.results:
             raise SystemExit(Exit.CANNOT_RUN)
+        srdf = next((r for r in found.results if r.loaded is not None and r.loaded.semantic is not None), None)
+        if srdf is not None:
+            raise fail(not_a_robot(srdf.path))
         write(output.err, (line for result in found.results for d in result.errors for line in diagnostic_lines(d, None)))
         report.reporter(options.format)(output, session.files).audit(found.results)
     if found.unreadable:
         raise SystemExit(Exit.CANNOT_RUN)
-    if problem_count(found.results):
-        raise SystemExit(Exit.PROBLEMS)
+    if any(d.severity is not Severity.INFO for r in found.results for d in [*(r.audit.problems if r.audit else ()), *r.errors]):
+        raise SystemExit(Exit.PROBLEMS)  # an info alone (a root link with mass, which KDL ignores) fails nothing

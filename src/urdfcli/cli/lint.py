@@ -11,6 +11,7 @@ from .. import report
 from ..diagnostics import Severity
 from ..options import Options, RuleSet
 from ..report.console import Output, rich_console
+from ..report.escape import escape
 from . import fixes
 from .common import (
     LIBRARIES_HELP,
@@ -21,7 +22,10 @@ from .common import (
     IsolatedOption,
     QuietOption,
     PackagePathOption,
+    NoInfoOption,
+    StatisticsOption,
     TargetOption,
+    UrdfOption,
     choose,
     format_option,
     report_unreadable,
@@ -54,11 +58,14 @@ def lint(
     exit_non_zero_on_fix: Annotated[bool, typer.Option("--exit-non-zero-on-fix", help="Exit 1 when --fix changed a file, even when nothing remains (a pre-commit hook).")] = False,
     jobs: Annotated[int, typer.Option("--jobs", "-j", min=0, metavar="N", help="Lint files in N processes (0: one per CPU); the output order does not change.")] = 1,
     package_path: PackagePathOption = None,
+    urdf: UrdfOption = None,
     fix: FixOption = None,
     unsafe_fixes: UnsafeFixesOption = None,
     diff: DiffOption = False,
     add_noqa: AddNoqaOption = False,
     quiet: QuietOption = False,
+    no_info: NoInfoOption = None,
+    statistics: StatisticsOption = False,
     color: ColorOption = "auto",
 ) -> None:
     """Lint URDF/xacro files against documented, configurable rules.
@@ -78,6 +85,7 @@ def lint(
     options = Options(
         RuleSet.LINT, tuple(mappings.items()), tuple(package_path or ()), config, isolated, tuple(select or ()), tuple(ignore or ()),
         tuple(extend_select or ()), tuple(target or ()), jobs=jobs, format=choose(output_format, FORMATS), fix=asked.applies, unsafe_fixes=unsafe_fixes,
+        urdf=urdf, show_info=None if no_info is None else not no_info,
     )
     output = Output.standard(color, quiet)
     with session_for(options) as session:
@@ -91,7 +99,10 @@ def lint(
             fixes.print_diff(outcome, output)
         else:
             fixes.report_failed(output, fixes.write_files(outcome))
-            report.reporter(options.format)(output, session.files).lint(found.results)
+            if statistics:
+                report.statistics(found.results, output, "lint", output_format=options.format)
+            else:
+                report.reporter(options.format)(output, session.files).lint(found.results)
             line = fixes.summary(outcome, asked)
             if line is not None and not quiet:
                 (output.out if report.resolve(options.format) == "text" else output.err).file.write(line + "\n")
@@ -109,8 +120,9 @@ def lint(
 
 class Progress:
     """A progress bar on standard error, drawn by rich once a run has taken more than
-    PROGRESS_AFTER seconds, and only when standard error is a terminal; the
-    terminal is restored (the bar removed, the cursor shown) however the run ends."""
+    PROGRESS_AFTER seconds, and only when standard error is a terminal: files done
+    out of all, and the file being read, in the terminal's own colour. It is
+    removed (the cursor shown again) before the report, however the run ends."""
 
     def __init__(self, output: Output) -> None:
         self.console = output.err
@@ -119,17 +131,23 @@ class Progress:
         self.bar = None
         self.task = None
 
-    def update(self, done: int, total: int) -> None:
+    def update(self, done: int, total: int, current: str = "") -> None:
         CtrlC.stop_if_pressed()
         if self.bar is None:
             if self.quiet or not self.console.is_terminal or done >= total or time.monotonic() - self.start < PROGRESS_AFTER:
                 return
-            from rich.progress import Progress as Bar
+            from rich.progress import BarColumn, MofNCompleteColumn, Progress as Bar, TextColumn
 
-            self.bar = Bar(console=rich_console(self.console), transient=True)
+            self.bar = Bar(
+                TextColumn("linting"), BarColumn(bar_width=24, style="dim", complete_style="default", finished_style="default"),
+                MofNCompleteColumn(), TextColumn("{task.fields[current]}", style="dim"),
+                console=rich_console(self.console), transient=True,
+            )
             self.bar.start()
-            self.task = self.bar.add_task("linting", total=total)
-        self.bar.update(self.task, completed=done)
+            self.task = self.bar.add_task("linting", total=total, current="")
+        width = max(10, rich_console(self.console).width - 50)
+        shown = current if len(current) <= width else "..." + current[-(width - 3):]
+        self.bar.update(self.task, completed=done, total=total, current=escape(shown))
 
     def __enter__(self) -> Progress:
         return self

@@ -52,6 +52,8 @@ class MacroUse(NamedTuple):
     defined_at: str  # FILE:LINE
     call: str | None  # the call as written, e.g. <xacro:box_inertia m="${mass}" .../>
     called_at: str | None
+    written_at: str = ""  # FILE:LINE of the <inertial> in the macro's body
+    inertial_only: bool = True  # the macro writes the <inertial> alone (not a whole link, or a gripper, around it)
 
 
 def _written(loaded: Loaded, file: str, line: int, tag: str):
@@ -82,6 +84,10 @@ def macro_use(loaded: Loaded, link: Link) -> MacroUse | None:
     if macro is None:
         return None
     name = macro.get("name", "")
+    inside = list(itertools.takewhile(lambda a: a is not macro, written.iterancestors()))
+    if any(etree.QName(a).localname == "link" for a in inside):  # the macro makes the link (or a gripper): its call is no <inertial>
+        return MacroUse(name, macro.get("params", ""), f"{where.file}:{_line(loaded, where.file, macro)}", None, None,
+                        f"{where.file}:{where.line}", inertial_only=False)
     call, called_at = None, None
     link_where = loaded.document.locate(link.at)
     source_link = _written(loaded, link_where.file, link_where.line, "link") if link_where.line and not link_where.expanded else None
@@ -90,7 +96,7 @@ def macro_use(loaded: Loaded, link: Link) -> MacroUse | None:
         if found is not None:
             attributes = " ".join(f'{k}="{v}"' for k, v in found.attrib.items())
             call, called_at = f"<xacro:{name} {attributes}/>", f"{link_where.file}:{_line(loaded, link_where.file, found)}"
-    return MacroUse(name, macro.get("params", ""), f"{where.file}:{_line(loaded, where.file, macro)}", call, called_at)
+    return MacroUse(name, macro.get("params", ""), f"{where.file}:{_line(loaded, where.file, macro)}", call, called_at, f"{where.file}:{where.line}")
 
 
 def _macro_element(loaded: Loaded, use: MacroUse):
@@ -158,7 +164,9 @@ def suggestions(audit: Audit, flagged: list[LinkAudit], expander: Expander, dens
     loaded = audit.loaded
     for entry in flagged:
         use = macro_use(loaded, entry.link) if xacro else None
-        if use is not None:
+        if use is not None and not use.inertial_only:  # a macro that makes the whole link: the <inertial> is edited in its body
+            found.append(f"<!-- link '{entry.link.name}': its <inertial> is written at {use.written_at}, in the body of xacro macro '{use.name}': replace it there with -->")
+        elif use is not None:
             called = f", called at {use.called_at} as {use.call}" if use.call else ""
             found.append(f"<!-- link '{entry.link.name}': its <inertial> comes from xacro macro '{use.name}' ({use.defined_at}){called} -->")
             call = matching_call(loaded, entry.link, use, expander) if density is None else None

@@ -78,32 +78,32 @@ def walk_all(
     """``walk``, plus each joint that reaches a link already reached (a second
     parent, or a loop closing), flagged ``repeat``; nothing below it follows."""
     children = children_by_joint_name(robot) if children is None else children
-    seen = {start}
-    stack: list[tuple[int, Joint | None, str, bool]] = [(0, None, start, False)]
+    seen: set[str] = set()
+    stack: list[tuple[int, Joint | None, str]] = [(0, None, start)]
     while stack:
-        depth, joint, link, repeat = stack.pop()
+        depth, joint, link = stack.pop()
+        repeat = link in seen  # told when it comes, not when it is queued: the first one shown is never the repeat
+        seen.add(link)
         yield depth, joint, link, repeat
         if repeat:
             continue
         for child_joint in reversed(children.get(link, [])):
-            stack.append((depth + 1, child_joint, child_joint.child, child_joint.child in seen))
-            seen.add(child_joint.child)
+            stack.append((depth + 1, child_joint, child_joint.child))
 
 
 def reached(children: dict[str, list[Joint]], start: str) -> list[str]:
     """The links of ``walk`` from ``start``, in its order, without its tuples: the
     walk the checks of a large model take once per link."""
-    seen = {start}
+    seen: set[str] = set()
     order: list[str] = []
     stack = [start]
     while stack:
         link = stack.pop()
+        if link in seen:
+            continue
+        seen.add(link)
         order.append(link)
-        for joint in reversed(children.get(link, ())):
-            child = joint.child
-            if child not in seen:
-                seen.add(child)
-                stack.append(child)
+        stack.extend(joint.child for joint in reversed(children.get(link, ())) if joint.child not in seen)
     return order
 
 

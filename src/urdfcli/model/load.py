@@ -20,6 +20,7 @@ from ..read.packages import PackageResolver
 from ..read.xml import XmlError, parse
 from .mesh_summaries import MeshSummaries
 from .robot import Joint, Robot, read
+from .srdf import SRDF_TAGS, Semantic, looks_semantic, named_srdf, read_semantic
 
 if TYPE_CHECKING:
     import networkx as nx
@@ -52,6 +53,8 @@ class Loaded:
         self.reads_meshes = reads_meshes
         self.derived: dict = {}  # worked out from the rest, once (see urdfcli.read.memo)
         self.xacro_sources = sources  # the xacro files behind it, for the source rules
+        self.semantic: Semantic | None = None  # an SRDF: what it says (then there is no robot)
+        self.described: Loaded | None = None  # an SRDF: the URDF of its robot, to check it against (set by the caller)
 
     @property
     def path(self) -> str:
@@ -128,6 +131,8 @@ def load(
     loaded = Loaded(document, diagnostics=diagnostics, resolver=resolver, meshes=meshes, reads_meshes=reads_meshes, sources=found_sources)
     if not document.readable:
         return loaded
+    if _semantic(loaded):
+        return loaded
     try:
         robot, found = read(document, vocabulary=vocabulary)
     except XmlError as error:
@@ -147,6 +152,30 @@ def load(
     return loaded
 
 
+_SRDF_MARKS = tuple(f"<{tag}".encode() for tag in SRDF_TAGS)
+
+
+def _semantic(loaded: Loaded) -> bool:
+    """Read the document as an SRDF when it is one: named so, or a xacro file whose
+    expansion holds SRDF elements and no link (only those are parsed to tell)."""
+    document = loaded.document
+    named = named_srdf(document.path)
+    if not named and not (document.is_xacro and any(mark in document.data for mark in _SRDF_MARKS)):
+        return False
+    try:
+        root = parse(document.data)
+    except XmlError as error:
+        if not named:
+            return False  # reading it as a URDF says why
+        _unreadable(loaded, error)
+        return True
+    if not named and not looks_semantic(root):
+        return False
+    loaded.semantic = read_semantic(document, root)
+    if loaded.semantic.name is None:
+        loaded.diagnostics.append(document.diagnostic("R002", "<robot> has no 'name' attribute", 0))
+    document.data = None
+    return True
 def needs_argument(diagnostic: Diagnostic, name: str, path: str) -> Diagnostic:
     """xacro's 'Undefined substitution argument NAME', said so that it names the fix for the input ``path``."""
     message = (f"needs xacro argument '{name}': it has no value where it is used (no default, or used before its "

@@ -22,6 +22,8 @@ class Library(NamedTuple):
 
     checked_through: tuple[str, ...] = ()
     notes: tuple[str, ...] = ()
+    unchecked: bool = False  # a file of a folder that no model read: named in a note, not counted as checked
+    fragment: bool = False  # a model's part in a file of its own, not a library of macros
 
 
 class Unreadable(NamedTuple):
@@ -58,6 +60,7 @@ class Result:
     meshes: tuple[MeshFile, ...] = ()
     audit: Audit | None = None
     robot_name: str | None = None  # the robot's name: told by ``loaded`` when it is there
+    show_info: bool = True  # whether the text formats show its info diagnostics (its configuration's show-info)
 
     def __post_init__(self) -> None:
         robot = self.loaded.robot if self.loaded is not None else None
@@ -79,6 +82,13 @@ class Result:
     def shown(self) -> str:
         """The input as diagnostics name it ("<stdin>" for standard input)."""
         return "<stdin>" if self.path == "-" else self.path
+
+    @property
+    def displayed(self) -> list[Diagnostic]:
+        """The diagnostics the text formats show: info too unless its configuration hides it."""
+        if self.show_info:
+            return self.diagnostics
+        return [d for d in self.diagnostics if d.severity is not Severity.INFO]
 
     def of_severity(self, severity: Severity) -> list[Diagnostic]:
         return [d for d in self.diagnostics if d.severity is severity]

@@ -360,13 +360,26 @@ class Reader:
                 self.report("V004", "<mesh> has no 'filename' attribute", shape)
                 return None
             scale = self.vector(shape, "scale", (1.0, 1.0, 1.0))
+            if scale is not None and 0.0 in scale:  # a negative one mirrors the mesh (TALOS's arms): that is meant
+                self.report("V008", f"mesh scale '{shape.get('scale')}' has a zero component: the mesh has no volume", shape,
+                            "MuJoCo and Drake refuse the model; give each axis its scale (1 1 1 for a mesh in metres)", "scale")
             if filename:
                 self.resources.append(Resource(self._index[shape], "mesh", filename))
             return Geometry(kind, self.at(shape), filename=filename, scale=scale) if scale is not None else None
         self.report("G002", f"unknown shape <{kind}> in <geometry>", shape, "URDF shapes are box, cylinder, sphere and mesh")
         return None
 
+    def repeated(self, element: "Element", tags: tuple[str, ...]) -> None:
+        """G004: a second child of one of ``tags``, which every parser leaves unread."""
+        seen: set[str] = set()
+        for child in element:
+            if child.tag in tags:
+                if child.tag in seen:
+                    self.report("G004", f"<{tag_name(element)}> holds a second <{child.tag}>; only the first is used", child)
+                seen.add(child.tag)
+
     def shape(self, element: "Element", visual: bool) -> Shape:
+        self.repeated(element, ("origin", "geometry", "material") if visual else ("origin", "geometry"))
         found = first_children(element)
         origin = self.pose(found.get("origin"))
         geometry = self.geometry(element, found.get("geometry"))
@@ -381,6 +394,7 @@ class Reader:
         return Shape(self._index[element], origin, geometry, material_name, colour, self.at(found.get("origin")), material_at)
 
     def inertial(self, element: "Element") -> Inertial:
+        self.repeated(element, ("origin", "mass", "inertia"))
         found = first_children(element)
         origin = self.pose(found.get("origin"))
         mass_element = found.get("mass")

@@ -24,6 +24,7 @@ Keys::
     targets = ["mujoco"]           # consumers whose target rules run (--target), with variants: "pinocchio:mimic"
     fix = true                     # `lint` and `check` apply the safe fixes (as --fix)
     unsafe-fixes = true            # and the unsafe ones (as --unsafe-fixes)
+    show-info = false              # show only warnings and errors (info still counted in the summary), like --no-info
     [models]                       # model -> the argument sets it is checked with
     "ur_description/urdf/ur.urdf.xacro" = [["ur_type:=ur5e", "name:=ur"]]
 
@@ -46,7 +47,7 @@ from ..rules import REGISTRY, Rule, UnknownRule, lookup
 from ..rules.suggestions import close_matches
 
 CONFIG_NAMES = ("urdfcli.toml", ".urdfcli.toml")
-KEYS = ("select", "ignore", "extend-select", "per-file-ignores", "severity", "options", "package-paths", "xacro-args", "models", "targets", "fix", "unsafe-fixes")
+KEYS = ("select", "ignore", "extend-select", "per-file-ignores", "severity", "options", "package-paths", "xacro-args", "models", "targets", "fix", "unsafe-fixes", "show-info")
 ALL = "ALL"
 
 
@@ -69,6 +70,7 @@ class Config(NamedTuple):
     xacro_args: tuple[tuple[str, tuple[tuple[str, str], ...]], ...] = ()
     models: tuple[tuple[Path, tuple[tuple[tuple[str, str], ...], ...]], ...] = ()  # absolute model -> argument sets
     targets: tuple[Profile, ...] = ()  # the consumers whose rules run (--target)
+    show_info: bool = True  # the text formats show info diagnostics (they are counted either way)
     fix: bool = False  # apply the safe fixes without --fix
     unsafe_fixes: bool = False  # apply the unsafe fixes too
 
@@ -78,9 +80,11 @@ class Config(NamedTuple):
         return cls(select=(ALL,))
 
     def overridden(
-        self, select: tuple[str, ...] = (), ignore: tuple[str, ...] = (), extend_select: tuple[str, ...] = (), targets: tuple[Profile, ...] = ()
+        self, select: tuple[str, ...] = (), ignore: tuple[str, ...] = (), extend_select: tuple[str, ...] = (), targets: tuple[Profile, ...] = (),
+        show_info: bool | None = None,
     ) -> "Config":
-        """The command line over the file: --select and --target replace, --ignore and --extend-select add."""
+        """The command line over the file: --select and --target replace, --ignore and --extend-select add;
+        --no-info hides info."""
         where = "on the command line"
         changes: dict[str, Any] = {}
         if select:
@@ -91,6 +95,8 @@ class Config(NamedTuple):
             changes["extend_select"] = self.extend_select + _selectors(",".join(extend_select), where)
         if targets:
             changes["targets"] = tuple(targets)
+        if show_info is not None:
+            changes["show_info"] = show_info
         return self._replace(**changes)
 
     # -- questions asked while linting -----------------------------------------
@@ -269,11 +275,12 @@ def parse(table: dict[str, Any], source: str, root: Path) -> Config:
         targets=_profiles(table.get("targets", []), where("targets")),
         fix=_boolean(table, "fix", where("fix")),
         unsafe_fixes=_boolean(table, "unsafe-fixes", where("unsafe-fixes")),
+        show_info=_boolean(table, "show-info", where("show-info"), default=True),
     )
 
 
-def _boolean(table: dict[str, Any], key: str, where: str) -> bool:
-    value = table.get(key, False)
+def _boolean(table: dict[str, Any], key: str, where: str, default: bool = False) -> bool:
+    value = table.get(key, default)
     if not isinstance(value, bool):
         raise ConfigError(f"{where}: expected true or false, not {value!r}")
     return value

@@ -44,7 +44,7 @@ def run_rules(loaded: Loaded, config: Config, rule_set: RuleSet) -> list[Diagnos
     for rule in REGISTRY.values():
         if not runs(rule, rule_set):
             continue
-        ready = loaded.xacro_sources is not None if rule.kind is Kind.SOURCES else loaded.modelled
+        ready = loaded.xacro_sources is not None if rule.kind is Kind.SOURCES else loaded.semantic is not None if rule.kind is Kind.SEMANTIC else loaded.modelled
         if not ready or not (rule.kind is Kind.TREE or config.enabled(rule)):
             continue
         if rule.kind is not Kind.TARGET:

@@ -14,10 +14,19 @@ models that include it, directly or through other files: the models of its
 repository or workspace ``src/`` (see :func:`search_roots`) that no other file
 includes, plus those listed in ``[tool.urdfcli] models``. Which models include it is decided by reading the
 ``xacro:include`` elements of every xacro file there, without expanding
-anything: ``$(find pkg)``, ``$(arg x)`` with a default, ``$(dirname)``,
-``$(env X)`` and ``${name}`` of a plain property are resolved; an include
-that stays unresolved is matched by its file name, or, when even that is
-computed, taken to include anything. Only the models found are expanded.
+anything: ``$(find pkg)``, ``$(arg x)`` with a default (a model's arguments and
+properties reach the files it includes, as in xacro), ``$(dirname)``, ``$(env X)``
+and ``${name}`` of a plain property are resolved. An include whose file name is
+computed from something else (a macro parameter: ``${side}_arm.xacro``) may name
+the files of its folder whose name fits; one whose folder is unknown (a package
+not found here) names none. Only the models found are expanded, and a library
+counts as checked through a model only when the model's expansion read it.
+
+A file that another file of a folder includes is not linted on its own when
+the folder is: it is one of its models' parts (a *fragment*, such as Baxter's
+end effectors), checked through the models that read it. A file given alone
+that cannot be read without an error, and that models around it include, is
+checked through them too.
 """
 
 from __future__ import annotations
@@ -37,11 +46,13 @@ from ..read.document import STDIN, Document
 from ..read.packages import MAX_SCAN_DIRS, SKIP_DIRS, PackageIndex, PackageResolver
 from ..read.files import SourceFile, SourceFiles
 from ..read.xacro_scan import XacroFile, XacroGlobals, shown
+from ..rules import structure
 from ..rules.structure import X004 as PACKAGE_NOT_FOUND
+from ..rules.tree import joint_link_not_found
 from ..rules.suppression import U001 as UNUSED_SUPPRESSION
 from ..model.result import Library, Result, Unreadable
 
-XACRO_SUFFIXES = (".xacro", ".urdf")
+XACRO_SUFFIXES = (".xacro", ".urdf", ".srdf")
 _SUBSTITUTION = re.compile(r"\$\(\s*(\w+)\s*([^()]*?)\s*\)|\$\{\s*([A-Za-z_]\w*)\s*\}")
 
 
@@ -71,31 +82,39 @@ def workspace_file(path: Path, file: SourceFile | None) -> WorkspaceFile:
 
 
 class Include(NamedTuple):
-    """Where an include leads, as far as it can be told without expanding: a file,
-    a glob, only a file name, or (``kind == "any"``) nothing known."""
+    """Where an include leads, as far as it can be told without expanding: a file
+    (``path``), the files a glob written in it matches (``glob``), the files whose
+    name fits a name computed from something unknown here, such as a macro
+    parameter (``pattern``: the folder is known, ``${side}_arm.xacro`` is
+    ``*_arm.xacro``), or nothing known (``unknown``: a package not found, a folder
+    computed). Only a path is certain; a pattern says which files to look at."""
 
-    kind: str  # "path", "glob", "name" or "any"
-    value: str = ""
+    kind: str  # "path", "glob", "pattern" or "unknown"
+    value: str = ""  # the path, glob or pattern; for "unknown", the filename as written
 
     def may_be(self, file: Path) -> bool:
         if self.kind == "path":
             return Path(self.value) == file
-        if self.kind == "glob":
+        if self.kind in ("glob", "pattern"):
             return fnmatchcase(str(file), self.value)
-        if self.kind == "name":
-            return file.name == self.value
-        return True
+        return False
 
 
-def resolve_include(text: str, source: WorkspaceFile, find: Callable[[str], Path | None], arguments: dict[str, str] | None = None) -> Include:
-    """Where ``<xacro:include filename=text>`` in ``source`` leads, statically."""
+def substitute(
+    text: str, source: WorkspaceFile, find: Callable[[str], Path | None], arguments: dict[str, str] | None = None,
+    properties: dict[str, str] | None = None,
+) -> str:
+    """``text`` with the substitutions that can be told without expanding replaced:
+    ``$(find)``, ``$(arg)`` (the given values, else the defaults the file declares),
+    ``$(dirname)``, ``$(env)``, ``$(optenv)``, and ``${name}`` of a plain property
+    (the given ones, from the files that include this one, then the file's own)."""
     values = {**dict(source.arguments), **(arguments or {})}
-    properties = dict(source.properties)
+    known = {**(properties or {}), **dict(source.properties)}
 
-    def substitute(match: re.Match) -> str:
+    def replace(match: re.Match) -> str:
         function, argument, prop = match.group(1), match.group(2), match.group(3)
         if prop is not None:
-            value = properties.get(prop)
+            value = known.get(prop)
         elif function == "find":
             folder = find(argument)
             value = str(folder) if folder is not None else None
@@ -111,23 +130,39 @@ def resolve_include(text: str, source: WorkspaceFile, find: Callable[[str], Path
         return match.group(0) if value is None else value
 
     for _ in range(5):  # a default may itself hold a substitution
-        substituted = _SUBSTITUTION.sub(substitute, text)
+        substituted = _SUBSTITUTION.sub(replace, text)
         if substituted == text:
             break
         text = substituted
-    if "$" not in text:
-        path = Path(text) if Path(text).is_absolute() else source.path.parent / text
-        path = Path(os.path.normpath(path))
-        if any(c in text for c in "*?["):
-            return Include("glob", str(path))
-        try:
-            return Include("path", str(path.resolve()))
-        except OSError:
-            return Include("path", str(path))
-    name = re.split(r"[/\\]", text)[-1]
-    if name and "$" not in name and not any(c in name for c in "*?["):
-        return Include("name", name)
-    return Include("any")
+    return text
+
+
+_COMPUTED = re.compile(r"\$\{[^}]*\}|\$\([^)]*\)")
+
+
+def resolve_include(
+    text: str, source: WorkspaceFile, find: Callable[[str], Path | None], arguments: dict[str, str] | None = None,
+    properties: dict[str, str] | None = None,
+) -> Include:
+    """Where ``<xacro:include filename=text>`` in ``source`` leads, statically."""
+    written = text
+    text = substitute(text, source, find, arguments, properties)
+    folder, _, name = text.replace("\\", "/").rpartition("/")
+    if "$" in folder or not name:
+        return Include("unknown", written)
+    base = Path(folder) if folder and Path(folder).is_absolute() else source.path.parent / folder if folder else source.path.parent
+    if "$" in name:
+        pattern = _COMPUTED.sub("*", name)
+        if not pattern.strip("*"):
+            return Include("unknown", written)  # a name computed whole: it may be any file
+        return Include("pattern", os.path.normpath(base / pattern))
+    path = Path(os.path.normpath(base / name))
+    if any(c in name for c in "*?["):
+        return Include("glob", str(path))
+    try:
+        return Include("path", str(path.resolve()))
+    except OSError:
+        return Include("path", str(path))
 
 
 def search_roots(file: Path, packages: PackageIndex) -> tuple[list[Path], bool]:
@@ -201,6 +236,7 @@ class Index:
         self._kinds: dict[Path, tuple[WorkspaceFile, str]] = {}
         self._read: set[Path] = set()  # the files not named .xacro asked for
         self._listed: dict[tuple[Path, bool], tuple[int, list[Path]]] = {}
+        self.described: dict[tuple[str, tuple], object] = {}  # the URDFs SRDFs were checked against, loaded once
 
     def scan(self, roots: list[Path], recursive: bool = True) -> list[Path]:
         """The source files below the folders (listed again when a folder changes)."""
@@ -233,7 +269,7 @@ class Index:
             known = self._kinds[file] = (source, kind)
         return known[1]
 
-    def _find(self, file: Path) -> Callable[[str], Path | None]:
+    def finder(self, file: Path) -> Callable[[str], Path | None]:
         """The package look-up the expansion of ``file`` would make (shared per package)."""
         package = self.packages.enclosing_package(file.parent)
         if package not in self._resolvers:
@@ -286,13 +322,36 @@ class Index:
         return list(seen), complete
 
 
-    def includes(self, file: Path, arguments: dict[str, str] | None = None) -> list[Include]:
-        key = (file, tuple(sorted((arguments or {}).items())))
+    def includes(self, file: Path, arguments: dict[str, str] | None = None, properties: dict[str, str] | None = None) -> list[Include]:
+        """Where the includes of ``file`` lead, with the argument values and properties of
+        the files that include it (xacro's arguments and top-level properties are global)."""
+        key = (file, tuple(sorted((arguments or {}).items())), tuple(sorted((properties or {}).items())))
         source = self.source(file)
         known = self._edges.get(key)
         if known is None or known[0] != source:
-            known = self._edges[key] = (source, [resolve_include(text, source, self._find(file), arguments) for text in source.includes])
+            find = self.finder(file)
+            known = self._edges[key] = (source, [resolve_include(text, source, find, arguments, properties) for text in source.includes])
         return known[1]
+
+    def includers(self, files: list[Path]) -> dict[Path, list[tuple[Path, Include, str]]]:
+        """Which of ``files`` others of them include, and by which include: one that
+        resolves to it, a glob written as such, or a file name computed from a macro
+        parameter or an argument without a default that fits it."""
+        found: dict[Path, list[tuple[Path, Include, str]]] = {}
+        for file in files:
+            if not file.name.endswith(".xacro"):
+                continue  # a plain URDF includes nothing: not read here
+            for include, text in zip(self.includes(file), self.source(file).includes):
+                if include.kind == "path":
+                    matched = [Path(include.value)]
+                elif include.kind in ("glob", "pattern"):
+                    matched = [f for f in files if f != file and include.may_be(f)]
+                else:
+                    continue
+                for target in matched:
+                    if target != file:
+                        found.setdefault(target, []).append((file, include, text))
+        return found
 
     def top_level_models(self, files: list[Path]) -> list[Path]:
         """The models among ``files`` that none of them includes (by a resolved path)."""
@@ -300,24 +359,39 @@ class Index:
         return sorted(f for f in files if f not in included and self.kind(f) == "model")
 
     def reaches(self, model: Path, library: Path, arguments: dict[str, str] | None = None) -> bool:
-        """Whether expanding ``model`` may read ``library``, through any chain of includes."""
+        """Whether expanding ``model`` may read ``library``, through any chain of includes:
+        through includes that resolve to it, or whose computed file name may be it."""
+        files, includes = self.reachable(model, arguments)
+        return library in files or any(include.may_be(library) for include in includes)
+
+    def reachable(self, model: Path, arguments: dict[str, str] | None = None) -> tuple[set[Path], list[Include]]:
+        """The files expanding ``model`` may read (under any condition), and every include
+        met on the way. Argument values and properties reach the included files, as in
+        xacro; an include computed from them may name other files with other values."""
         seen = {model}
-        stack = [(model, arguments)]
+        met: list[Include] = []
+        stack = [(model, arguments or {}, {})]
         while stack:
-            file, args = stack.pop()
-            for include in self.includes(file, args):
-                if include.may_be(library):
-                    return True
+            file, args, props = stack.pop()
+            source = self.source(file)
+            args = {**dict(source.arguments), **args}  # a value given, else the first default declared
+            props = {**props, **dict(source.properties)}
+            # what the include names with these values, and which files it may name with others
+            met += [i for i in self.includes(file) if i.kind in ("glob", "pattern")]
+            for include in self.includes(file, args, props):
+                met.append(include)
                 if include.kind == "path":
                     nexts = [Path(include.value)]
+                elif include.kind == "unknown":
+                    nexts = []
                 else:
                     known = {f for files in self.scanned.values() for f in files} | self._read
                     nexts = [f for f in known if include.may_be(f)]
                 for nxt in nexts:
                     if nxt not in seen and nxt.is_file():
                         seen.add(nxt)
-                        stack.append((nxt, None))  # arguments reach included files too, but rarely name includes there
-        return False
+                        stack.append((nxt, args, props))
+        return seen - {model}, met
 
 
 def xacro_sources(document: Document, index: Index, xacro_names: Callable[[], XacroGlobals | None] = lambda: None) -> XacroSources:
@@ -382,22 +456,69 @@ class Entry(NamedTuple):
     library: bool = False
 
 
-MODEL_SUFFIXES = (".urdf", ".urdf.xacro")
+MODEL_SUFFIXES = (".urdf", ".urdf.xacro", ".srdf", ".srdf.xacro")
 
 
-def models_below(folder: Path, index: Index) -> list[Path]:
+class Aside(NamedTuple):
+    """A file of a folder left out of its models because a file there includes it:
+    checked through the models whose expansion reads it."""
+
+    path: str
+    includers: tuple[tuple[str, str], ...]  # (file, the include as written) that may read it
+    certain: bool  # some include resolves to it (else only a computed file name fits it)
+
+
+class Models(list):
+    """The files to check for the paths given (a list of paths), and, for a folder,
+    the files left out because another file there includes them (``aside``)."""
+
+    def __init__(self, files=(), aside: tuple[Aside, ...] = ()) -> None:
+        super().__init__(files)
+        self.aside = aside
+
+
+def models_below(folder: Path, index: Index) -> Models:
     """The robot models below a folder, as ``check`` and ``lint`` find them: every
-    ``*.urdf`` and ``*.urdf.xacro`` file, and each other ``*.xacro`` file that is a
-    model (ROS 1's ``ur5.xacro``) and that no file there includes. Libraries are
-    checked through the models that include them. ``index`` is the session's."""
+    ``*.urdf``, ``*.urdf.xacro``, ``*.srdf`` and ``*.srdf.xacro`` file, and each other
+    ``*.xacro`` file that is a model (ROS 1's ``ur5.xacro``), unless a file there
+    includes it: a fragment (Baxter's ``left_end_effector.urdf.xacro``, a model's
+    parts in their own file, a file included through a name computed from a macro
+    parameter) is checked through the models that read it, never expanded alone.
+    Libraries are checked through the models that include them. ``index`` is the session's."""
     files = list(source_files(folder))
     resolved = {file: file.resolve() for file in files}
-    included = {Path(i.value) for file in files if file.name.endswith(".xacro") for i in index.includes(resolved[file]) if i.kind == "path"}
-    return sorted(
-        file
-        for file in files
-        if file.name.endswith(MODEL_SUFFIXES) or (resolved[file] not in included and index.kind(resolved[file]) == "model")
-    )
+    includers = index.includers(list(resolved.values()))
+    models, aside = [], []
+    for file in sorted(files):
+        path = resolved[file]
+        if not (file.name.endswith(MODEL_SUFFIXES) or (file.name.endswith(".xacro") and index.kind(path) == "model")):
+            continue
+        found = includers.get(path)
+        if not found:
+            models.append(file)
+        else:
+            written = tuple((shown(includer), text) for includer, _, text in found)
+            aside.append(Aside(shown(file), written, any(include.kind in ("path", "glob") for _, include, _ in found)))
+    return Models(models, tuple(aside))
+
+
+def unread(aside: tuple[Aside, ...], results: list[Result]) -> list[Result]:
+    """For each file set aside that no model's expansion read, a result that says so
+    (not counted as checked): a fragment is never expanded alone, where its missing
+    context would be reported as its mistakes. One note per include, whatever
+    number of files it may name."""
+    read = {_resolved(file) for result in results for file in (result.path, *result.includes) if file != STDIN}
+    found = []
+    for file in aside:
+        if _resolved(file.path) in read:
+            continue
+        includer, written = file.includers[0]
+        if file.certain:
+            note = f"not checked: included by {includer}, whose expansion did not read it (see what it says)"
+        else:
+            note = f"not checked: no model read it; {includer} includes '{written}', a file name computed from what it is given"
+        found.append(Result(file.path, library=Library((), (note,), unchecked=True)))
+    return found
 
 
 def model_targets(path: str, argument_sets: list[dict[str, str]] | None) -> list[Target]:
@@ -416,6 +537,7 @@ def plan(paths: list[str], config_for, package_paths: tuple[str, ...] = (), pack
     files = files if files is not None else SourceFiles()
     entries: list[Entry] = []
     index: Index | None = None
+    candidates_of: dict[tuple, list[Path]] = {}  # the top-level models of each place searched, found once
     for path in paths:
         config = config_for(path)
         # only a file named .xacro can be a library: a plain URDF is never read twice
@@ -430,21 +552,50 @@ def plan(paths: list[str], config_for, package_paths: tuple[str, ...] = (), pack
         if library is None or index is None:
             entries.append(Entry(path, model_targets(path, config.argument_sets(path))))
             continue
-        roots, recursive = search_roots(library, packages)
-        candidates = index.top_level_models(index.scan(roots, recursive))
-        for model, _ in config.models:
-            if model not in candidates and model.is_file():
-                candidates.append(model)
-        targets: list[Target] = []
-        for model in candidates:
-            if model == library:
-                continue
-            model_config = config_for(str(model))
-            sets = model_config.argument_sets(str(model))
-            if any(index.reaches(model, library, arguments) for arguments in (sets or [None])):
-                targets += model_targets(shown(model), sets)
+        targets = _includers(library, index, config, config_for, packages, candidates_of)
         entries.append(Entry(path, targets, library=True))
     return entries
+
+
+def fragment_includers(config_for, package_paths: tuple[str, ...] = (), packages: PackageIndex | None = None, files: SourceFiles | None = None):
+    """``includers(path)``: the runs of the models around a xacro file given as a model
+    that include it (none for any other file). Asked only of a model that cannot be
+    read alone without an error, which may be a fragment of them (the search reads the
+    repository or workspace around it)."""
+    packages = packages if packages is not None else PackageIndex()
+    index: Index | None = None
+    candidates_of: dict[tuple, list[Path]] = {}
+
+    def includers(path: str) -> list[Target]:
+        nonlocal index
+        if path == STDIN or not path.endswith(".xacro"):
+            return []
+        config = config_for(path)
+        index = index or Index(config.package_paths + package_paths, packages, files)
+        return _includers(Path(path).resolve(), index, config, config_for, packages, candidates_of)
+
+    return includers
+
+
+def _includers(file: Path, index: Index, config, config_for, packages: PackageIndex, candidates_of: dict) -> list[Target]:
+    """The runs of the top-level models of the repository or workspace around ``file``
+    (and those ``[tool.urdfcli] models`` lists) whose expansion may read it."""
+    roots, recursive = search_roots(file, packages)
+    key = (tuple(roots), recursive)
+    if key not in candidates_of:
+        candidates_of[key] = index.top_level_models(index.scan(roots, recursive))
+    candidates = list(candidates_of[key])
+    for model, _ in config.models:
+        if model not in candidates and model.is_file():
+            candidates.append(model)
+    targets: list[Target] = []
+    for model in candidates:
+        if model == file:
+            continue
+        sets = config_for(str(model)).argument_sets(str(model))
+        if any(index.reaches(model, file, arguments) for arguments in (sets or [None])):
+            targets += model_targets(shown(model), sets)
+    return targets
 
 
 def _same(file: str, library: Path) -> bool:
@@ -466,7 +617,16 @@ def _key(diagnostic: Diagnostic) -> tuple:
     return (diagnostic.code, location.file, location.line, location.column, diagnostic.message)
 
 
-def assemble(entries: list[Entry], outcome: Callable[[Target], Result | Unreadable]) -> tuple[list[Result], list[Unreadable]]:
+# What a model's part read alone reports of the context its includer gives it: a name or
+# argument not defined (X003), a link of the includer's (J005), no name or no link of its own.
+MISSING_CONTEXT = frozenset(rule.code for rule in (structure.X003, joint_link_not_found.rule, structure.R002, structure.R004))
+UNDEFINED = frozenset(rule.code for rule in (structure.X003, joint_link_not_found.rule))  # a name, or a link, its includer defines
+
+
+def assemble(
+    entries: list[Entry], outcome: Callable[[Target], Result | Unreadable], includers: Callable[[str], list[Target]] = lambda path: [],
+    generated_from: Callable[[str], Path | None] = lambda path: None,
+) -> tuple[list[Result], list[Unreadable]]:
     """The results to show, in the order the files were given, and the reasons
     some inputs could not be read.
 
@@ -474,10 +634,16 @@ def assemble(entries: list[Entry], outcome: Callable[[Target], Result | Unreadab
     result or the one-line reason it could not be read. A diagnostic
     located in another file than the result's own, already shown for an
     earlier result, is not shown again: a library shared by three models
-    reports its mistakes once.
+    reports its mistakes once. A xacro model whose errors are those of a missing
+    context (:data:`MISSING_CONTEXT`) is asked ``includers(path)``: when other
+    models include it, it is a fragment of them, and is checked through them
+    instead (its missing context is no mistake). ``generated_from(path)`` names the
+    xacro source a generated URDF was made from: what a model reading that source
+    found is not said again at the copy.
     """
     models = [outcome(target) for entry in entries if not entry.library for target in entry.targets]
     unused = _unused_in_all([m for m in models if isinstance(m, Result)])
+    at_source = _found_at_sources([m for m in models if isinstance(m, Result)], generated_from)
     results, unreadable, shown_keys = [], [], set()
     for entry in entries:
         if not entry.library:
@@ -486,16 +652,62 @@ def assemble(entries: list[Entry], outcome: Callable[[Target], Result | Unreadab
                 if isinstance(result, Unreadable):
                     unreadable.append(result)
                     continue
+                missing = result.errors and all(d.code in MISSING_CONTEXT for d in result.errors)
+                through = includers(entry.path) if missing else []
+                if through:  # a fragment: its errors alone are its missing context
+                    results.append(_library_result(entry._replace(targets=through, library=True), outcome, shown_keys, unreadable, fragment=True))
+                    break
+                if missing and any(d.code in UNDEFINED for d in result.errors) and _nameless(entry.path):  # a part nothing here includes
+                    note = f"a fragment (its <robot> has no name) that no model includes: not checked ({result.errors[0].message})"
+                    results.append(Result(entry.path, library=Library((), (note,), unchecked=True, fragment=True)))
+                    break
                 is_own = functools.cache(lambda file, path=entry.path: _same_input(file, path))
-                shown = tuple(
+                copied = at_source(result)
+                shown_now = tuple(
                     d if is_own(d.path) or len(models) == 1 else _through(d, result)  # one model: it found them all
                     for d in result.diagnostics
-                    if unused(d) and _fresh(d, is_own(d.path), shown_keys)
+                    if unused(d) and (d.code, d.message) not in copied and _fresh(d, is_own(d.path), shown_keys)
                 )
-                results.append(result.but(diagnostics=shown))
+                results.append(result.but(diagnostics=shown_now))
             continue
         results.append(_library_result(entry, outcome, shown_keys, unreadable))
     return results, unreadable
+
+
+def _found_at_sources(models: list[Result], generated_from: Callable[[str], Path | None]) -> Callable[[Result], set[tuple[str, str]]]:
+    """For a generated URDF whose xacro source another model of the run read, what
+    that model found (code and message): said there, at the line of the source, and
+    not again at the generated copy. What differs (a copy not generated again) stays."""
+    readers: dict[Path, list[Result]] = {}
+    for model in models:
+        for file in (model.path, *model.includes):
+            if file != STDIN:
+                readers.setdefault(_resolved(file), []).append(model)
+    found = {id(model): {(d.code, d.message) for d in model.diagnostics} for model in models}
+
+    def copied(result: Result) -> set[tuple[str, str]]:
+        source = generated_from(result.path)
+        if source is None:
+            return set()
+        return {key for reader in readers.get(source, ()) if reader is not result for key in found[id(reader)]}
+
+    return copied
+
+
+_ROBOT_START = re.compile(rb"<robot\b[^>]*>")
+
+
+def _nameless(path: str) -> bool:
+    """Whether a xacro file's <robot> has no name: a robot always has one, a part of one
+    written for another file to include need not."""
+    if path == STDIN or not path.endswith(".xacro"):
+        return False
+    try:
+        with open(path, "rb") as stream:
+            found = _ROBOT_START.search(stream.read(1 << 16))
+    except OSError:
+        return False
+    return found is not None and re.search(rb"\sname\s*=", found.group(0)) is None
 
 
 def _through(diagnostic: Diagnostic, model: Result) -> Diagnostic:
@@ -537,7 +749,9 @@ def _fresh(diagnostic: Diagnostic, in_own_file: bool, shown_keys: set) -> bool:
     return True
 
 
-def _library_result(entry: Entry, outcome, shown_keys: set, unreadable: list[Unreadable]) -> Result:
+def _library_result(entry: Entry, outcome, shown_keys: set, unreadable: list[Unreadable], fragment: bool = False) -> Result:
+    """A library's (or a fragment's) result: what the models that read it found in it, and
+    what breaks them; a library no model could check is expanded on its own, a fragment never."""
     library = Path(entry.path).resolve()
     checked_through: list[str] = []
     notes: list[str] = []  # why a model could not be used, or that none includes it
@@ -570,7 +784,10 @@ def _library_result(entry: Entry, outcome, shown_keys: set, unreadable: list[Unr
     unused = _unused_in_all(used)
     for model in used:  # mistakes written in the library, and whatever breaks a model that uses it
         found += [_through(d, model) for d in model.diagnostics if unused(d) and (_same(d.path, library) or d.severity is Severity.ERROR)]
-    if not checked_through:
+    if not checked_through and fragment:
+        notes += [f"not checked through {label}: it does not read this file with {arguments}" for label, arguments in unread]
+        notes.append("a fragment of the models that include it (it cannot be read on its own), and none read it: not checked")
+    elif not checked_through:
         # Checked on its own; when models include it but none could check it, that is a gap (X006) the config closes.
         notes += [
             f"not checked through {label}: it does not read this file with {arguments}; "
@@ -595,7 +812,7 @@ def _library_result(entry: Entry, outcome, shown_keys: set, unreadable: list[Unr
             places.add(place)
             if _fresh(diagnostic, False, shown_keys):
                 diagnostics.append(diagnostic)
-    return Result(entry.path, tuple(diagnostics), library=Library(tuple(checked_through), tuple(notes)))
+    return Result(entry.path, tuple(diagnostics), library=Library(tuple(checked_through), tuple(notes), fragment=fragment))
 
 
 def unchecked_library(path: str, unchecked: str) -> Diagnostic:
@@ -609,6 +826,6 @@ def unchecked_library(path: str, unchecked: str) -> Diagnostic:
 
 
 __all__ = [
-    "Entry", "Index", "Target", "WorkspaceFile", "assemble", "plan", "resolve_include", "search_roots", "workspace_file",
-    "unchecked_library", "xacro_sources",
+    "Aside", "Entry", "Index", "Models", "Target", "WorkspaceFile", "assemble", "fragment_includers", "plan", "resolve_include", "search_roots",
+    "substitute", "unchecked_library", "workspace_file", "xacro_sources",
 ]

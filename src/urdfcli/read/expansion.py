@@ -372,12 +372,23 @@ def _where_raised(error: BaseException) -> Origin | None:
     return origin
 
 
+def _missing_package(error: BaseException | None) -> PackageNotFound | None:
+    """The package look-up that failed under ``error``, however deep xacro wrapped it
+    (an expression in an expression: ``load_yaml('$(find pkg)/x.yaml')`` in a property)."""
+    while error is not None:
+        if isinstance(error, PackageNotFound):
+            return error
+        error = getattr(error, "exc", None) or error.__cause__ or error.__context__
+    return None
+
+
 def _short(error: BaseException) -> str:
     inner = getattr(error, "exc", None)
     if isinstance(inner, OSError) and error.args:
         return str(error.args[0])
-    if isinstance(inner, PackageNotFound):
-        return f"package '{inner.args[0]}' not found"
+    missing = _missing_package(error)
+    if missing is not None:
+        return f"package '{missing.args[0]}' not found"
     text = " ".join(str(error).split())
     if isinstance(inner, MemoryError):
         return f"out of memory {text}"
@@ -443,7 +454,7 @@ def expand_here(data: bytes, file: str | None, mappings: dict[str, str], resolve
                 shown,
             ) from None
         except Exception as error:
-            code = "X004" if isinstance(getattr(error, "exc", None), PackageNotFound) else "X003"
+            code = "X004" if _missing_package(error) is not None else "X003"
             message = _short(error)
             if code == "X004":
                 message += f" {resolver.where()}"

@@ -262,7 +262,13 @@ def read_collada(data: bytes) -> Triangles:
     try:
         root = parse(data, huge=True)
     except XmlError as error:
-        raise MeshError("malformed", f"the COLLADA file is not well-formed XML (line {error.line}): {error.message}") from None
+        padded = data.rstrip(b"\0 \t\r\n")  # NUL bytes after </COLLADA> (an exporter's padding): assimp and tinyxml2 stop at the first
+        if len(padded) == len(data.rstrip()) or not padded.endswith(b">"):
+            raise MeshError("malformed", f"the COLLADA file is not well-formed XML (line {error.line}): {error.message}") from None
+        try:
+            root = parse(padded, huge=True)
+        except XmlError:
+            raise MeshError("malformed", f"the COLLADA file is not well-formed XML (line {error.line}): {error.message}") from None
     reader = _Collada(root)
     reader.read_scene()
     if not reader.parts:

@@ -376,9 +376,13 @@ def _in_body(element) -> bool:
     return is_xacro(parent) and local_name(parent.tag) in ("macro", "if", "unless")
 
 
+# What an SRDF (MoveIt's) writes at its top level: a file that writes one makes a semantic description
+_SRDF_ELEMENTS = frozenset(("group", "group_state", "end_effector", "virtual_joint", "passive_joint", "disable_collisions"))
+
+
 def _makes(root) -> bool:
-    """Whether the file writes a link, a joint or a macro call outside its macro
-    definitions (looking into xacro:if and xacro:unless only)."""
+    """Whether the file writes a link, a joint, an SRDF element or a macro call outside
+    its macro definitions (looking into xacro:if and xacro:unless only)."""
     stack = list(root)
     while stack:
         element = stack.pop()
@@ -388,7 +392,7 @@ def _makes(root) -> bool:
                 stack.extend(element)
             elif local not in ("include", "property", "arg", "macro"):
                 return True
-        elif local in ("link", "joint"):
+        elif local in ("link", "joint") or local in _SRDF_ELEMENTS:
             return True
     return False
 

@@ -43,4 +43,11 @@ def reporter(name: str) -> type[Reporter]:
     return getattr(import_module(f".{module}", __name__), cls)
 
 
-__all__ = ["DIFF_FORMATS", "REPORTERS", "reporter", "resolve"]
+def statistics(results, output, view: str = "lint", output_format: str = "text") -> None:
+    """``--statistics``: the count of each rule's diagnostics, as a table, or JSON with ``--format json``."""
+    from .statistics import report
+
+    report(results, output, view, output_format="json" if resolve(output_format) == "json" else "text")
+
+
+__all__ = ["DIFF_FORMATS", "REPORTERS", "reporter", "resolve", "statistics"]

@@ -1,8 +1,15 @@
 """Exactly what check_urdf prints: the tree of a file it accepts on standard output,
-its errors on standard error."""
+its errors on standard error.
+
+urdfdom rejects some mistakes (check_urdf exits 255, and prints no tree) and only
+logs others and goes on: a link's visual, collision or inertial it cannot read is
+dropped, and a top-level material without a name or colour is kept as it is. For
+those it prints its error lines and then the tree, and exits 0.
+"""
 
 from __future__ import annotations
 
+import re
 from typing import TYPE_CHECKING
 
 from ..diagnostics import Severity
@@ -50,14 +57,36 @@ def tree_lines(loaded: Loaded) -> list[str]:
     return lines
 
 
+_IN_A_LINK_PART = re.compile(r"^link\[@name='(?:[^']|'')*'\]/(?:visual|collision|inertial)(?:\[\d+\])?(?:/|$)")
+LOGGED_ON_MATERIALS = frozenset(("N003", "M001", "V007"))  # a top-level material urdfdom keeps as it is
+
+
 def rejected(result: Result) -> list:
-    """The errors check_urdf itself reports: those of what urdfdom rejects."""
+    """The errors check_urdf itself reports: those of what urdfdom rejects or logs."""
     return [d for d in result.diagnostics if d.severity is Severity.ERROR and REGISTRY[d.code].urdfdom]
+
+
+def logged(diagnostic) -> bool:
+    """Whether urdfdom only logs this error and goes on (check_urdf still exits 0): it is
+    in a link's visual, collision or inertial, which urdfdom drops, or on a top-level
+    material, which it keeps."""
+    element = diagnostic.element or ""
+    return bool(_IN_A_LINK_PART.match(element)) or (element.startswith("material") and diagnostic.code in LOGGED_ON_MATERIALS)
+
+
+def logged_by_urdfdom(diagnostic) -> bool:
+    """Whether the diagnostic is an error of urdfdom's that it only logs (check_urdf exits 0)."""
+    return REGISTRY[diagnostic.code].urdfdom and logged(diagnostic)
+
+
+def fails(result: Result) -> bool:
+    """Whether check_urdf fails on the file (exit 255): an error it does not only log."""
+    return any(not logged(d) for d in rejected(result))
 
 
 def error_lines(result: Result) -> list[str]:
     lines = [f"Error:   {escape(d.message)}" for d in rejected(result)]
-    return lines + ["ERROR: Model Parsing the xml failed"] if lines else []
+    return lines + ["ERROR: Model Parsing the xml failed"] if fails(result) else lines
 
 
 class CheckUrdfReporter(Reporter):
@@ -74,9 +103,8 @@ class CheckUrdfReporter(Reporter):
 def write_check_urdf(results: list[Result], output: Output) -> None:
     for result in results:
         errors = error_lines(result)
-        if errors:
-            write(output.err, ([(line, "")] for line in errors))
-        else:
+        write(output.err, ([(line, "")] for line in errors))
+        if not fails(result):
             write(output.out, ([(line, "")] for line in tree_lines(result.loaded)))
         beyond = [d for d in result.errors if not REGISTRY[d.code].urdfdom]
         write(output.err, ([(concise_line(d), "")] for d in beyond))

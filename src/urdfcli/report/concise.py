@@ -31,7 +31,7 @@ def write_concise(results: list[Result], output: Output, fixes: bool) -> None:
     """Each diagnostic on a line; with ``fixes``, what ``--fix`` would fix after the summary."""
     out, notes = output.out.file, output.err.file
     for result in results:
-        out.writelines(concise_line(d) + "\n" for d in result.diagnostics)
+        out.writelines(concise_line(d) + "\n" for d in result.displayed)
     if not output.quiet:
         notes.writelines(line + "\n" for line in library_lines(results))
     if results:  # nothing was read: the one-line reasons already said why

@@ -33,6 +33,7 @@ def line(diagnostic: Diagnostic) -> str:
             props.append(f"col={location.column}")
     props.append(f"title={escape_property(diagnostic.code)}")
     calls = [call.phrase for call in location.trace] + ([diagnostic.through] if diagnostic.through else [])
+    calls += [f"hint: {diagnostic.hint}"] if diagnostic.hint else []
     return f"::{LEVELS[severity_name(diagnostic)]} {','.join(props)}::" + "%0A".join(map(escape_data, [diagnostic.message, *calls]))
 
 
@@ -42,4 +43,4 @@ class GithubReporter(Reporter):
     name = "github"
 
     def lint(self, results: list[Result]) -> None:
-        self.output.out.file.writelines(line(d) + "\n" for result in results for d in result.diagnostics)
+        self.output.out.file.writelines(line(d) + "\n" for result in results for d in result.displayed)

@@ -8,7 +8,7 @@ from typing import TYPE_CHECKING
 from ..diagnostics import Severity
 from .base import Reporter
 from .escape import json_escape
-from .lines import counts, diagnostic_dict
+from .lines import checked, counts, diagnostic_dict
 
 if TYPE_CHECKING:
     from ..model.result import Result
@@ -40,7 +40,7 @@ def render(results: list[Result], files=None) -> str:
             file_dict(result, files)
             for result in results
         ],
-        "summary": {"files": len(results), "errors": errors, "warnings": warnings, "info": info},
+        "summary": {"files": checked(results), "errors": errors, "warnings": warnings, "info": info},
     }
     return dumps(document)
 

@@ -45,9 +45,11 @@ def plain_line(diagnostic: Diagnostic) -> str:
 
 
 def concise_line(diagnostic: Diagnostic) -> str:
-    """``plain_line`` and, for an element a macro made, the call that made it: still one line."""
+    """``plain_line`` and, for an element a macro made, the call that made it, and the
+    hint: still one line."""
     trace = diagnostic.location.trace
     notes = ([trace[0].phrase] if trace else []) + ([diagnostic.through] if diagnostic.through else [])
+    notes += [f"hint: {diagnostic.hint}"] if diagnostic.hint else []
     return plain_line(diagnostic) + (escape(f" ({'; '.join(notes)})") if notes else "")
 
 
@@ -106,7 +108,9 @@ def library_lines(results: list[Result]) -> list[str]:
     lines = []
     if checked:
         models = list(dict.fromkeys(m for r in checked for m in r.library.checked_through))
-        what = f"{checked[0].path}: xacro library" if len(checked) == 1 else f"{len(checked)} xacro libraries"
+        fragments = sum(1 for r in checked if r.library.fragment)
+        kind = "fragment" if fragments == len(checked) else "xacro library" if not fragments else "xacro library or fragment"
+        what = f"{checked[0].path}: {kind}" if len(checked) == 1 else f"{len(checked)} {_plural_kind(kind)}"
         lines.append(f"{what}, checked through {listed(models)}")
     reasons: dict[str, list[str]] = {}
     for result in libraries:
@@ -114,6 +118,10 @@ def library_lines(results: list[Result]) -> list[str]:
             reasons.setdefault(note, []).append(result.path)
     lines += [f"{listed(paths)}: {note}" for note, paths in reasons.items()]
     return [escape(line) for line in lines]
+
+
+def _plural_kind(kind: str) -> str:
+    return {"fragment": "fragments", "xacro library": "xacro libraries"}.get(kind, "xacro libraries and fragments")
 
 
 def listed(names: list[str], most: int = 4) -> str:
@@ -127,26 +135,69 @@ def plural(n: int, word: str) -> str:
     return f"{n} {word}{'' if n == 1 else 's'}"
 
 
+def checked(results: list[Result]) -> int:
+    """How many results are of a file checked (not one a folder set aside that no model read)."""
+    return sum(1 for r in results if r.library is None or not r.library.unchecked)
+
+
 def summary_line(results: list[Result]) -> str:
     found = counts(results)
-    text = f"{plural(len(results), 'file')} checked: {plural(found[Severity.ERROR], 'error')}, {plural(found[Severity.WARNING], 'warning')}"
+    text = f"{plural(checked(results), 'file')} checked: {plural(found[Severity.ERROR], 'error')}, {plural(found[Severity.WARNING], 'warning')}"
     infos = found[Severity.INFO]
-    return text + (f", {infos} info" if infos else "")
+    hidden = sum(1 for r in results if not r.show_info for d in r.diagnostics if d.severity is Severity.INFO)
+    return text + (f", {infos} info" if infos else "") + (" (not shown)" if hidden and hidden == infos else f" ({hidden} not shown)" if hidden else "")
 
 
 STYLES = {"error": "bold red", "warning": "yellow", "info": "cyan"}
 
 
-def diagnostic_lines(diagnostic: Diagnostic, files: SourceFiles | None) -> list[Line]:
-    """A diagnostic, its macro calls and hint, and (given the files) its source line."""
+def diagnostic_lines(diagnostic: Diagnostic, files: SourceFiles | None, width: int | None = None) -> list[Line]:
+    """A diagnostic, its macro calls and hint, and (given the files) its source line.
+    With ``width``, a message, note or hint longer than that (beside the one path it
+    names) goes on over indented lines; a source excerpt is cut at 160 characters."""
     style = STYLES[severity_name(diagnostic)]
-    first: Line = [
-        (escape(position(diagnostic)), "bold"), (": ", ""), (diagnostic.code, style),
-        (f" {severity_name(diagnostic)}: ", style), (escape(diagnostic.message), ""),
-    ]
-    if diagnostic.location.expanded:
-        first.append((" (line in the xacro-expanded document)", "dim"))
-    return [first, *([(line, "dim")] for line in details(diagnostic, files))]
+    where = position(diagnostic)
+    head = f"{where}: {diagnostic.code} {severity_name(diagnostic)}: "
+    message = escape(diagnostic.message)
+    expanded = " (line in the xacro-expanded document)" if diagnostic.location.expanded else ""
+    pieces = wrapped(message + expanded, width, len(head), len(where))
+    first: Line = [(escape(where), "bold"), (": ", ""), (diagnostic.code, style), (f" {severity_name(diagnostic)}: ", style)]
+    if len(pieces) == 1 and expanded:
+        first += [(message, ""), (expanded, "dim")]
+    else:
+        first.append((pieces[0], ""))
+    rest = [("    " + piece, "") for piece in pieces[1:]]
+    lines: list[Line] = [first, *([piece] for piece in rest)]
+    for line in details(diagnostic, files):
+        excerpt = not line.startswith("    ")
+        lines += [[(part, "dim")] for part in ([line] if excerpt or not width else wrap_line(line, width, " " * 10))]
+    return lines
+
+
+def wrapped(text: str, width: int | None, used: int = 0, allowance: int = 0) -> list[str]:
+    """``text`` in pieces: the first fits ``width`` after ``used`` characters (with
+    ``allowance`` more: the path the line begins with), the others ``width`` after an
+    indent of four. A word is never cut (a path is one word)."""
+    import textwrap
+
+    if not width or used + len(text) <= width + allowance:
+        return [text]
+    lines = textwrap.wrap(text, width=max(20, width + allowance - used), break_long_words=False, break_on_hyphens=False)
+    if len(lines) <= 1:
+        return [text]
+    rest = textwrap.wrap(text[len(lines[0]):].strip(), width=max(20, width - 4), break_long_words=False, break_on_hyphens=False)
+    return [lines[0], *rest]
+
+
+def wrap_line(line: str, width: int, hanging: str = "    ") -> list[str]:
+    """A line over several when it is longer than ``width`` beside the longest path it
+    names, the others indented by ``hanging``; a word is never cut."""
+    import textwrap
+
+    longest = max((len(word) for word in line.split() if "/" in word), default=0)
+    if len(line) <= width + longest:
+        return [line]
+    return textwrap.wrap(line, width=width + longest, subsequent_indent=hanging, break_long_words=False, break_on_hyphens=False) or [line]
 
 
 def fixable_line(results: list[Result]) -> str | None:

@@ -19,6 +19,9 @@ PREFIXES = {
     "T": "Tree",
     "I": "Inertia and mass",
     "D": "Description",
+    "F": "Mesh files",
+    "P": "Packages",
+    "K": "SRDF (MoveIt's semantic description, checked against its URDF)",
     "C": "Targets (with --target NAME: C1 MuJoCo, C2 Drake, C3 Pinocchio, C4 PyBullet, C5 Gazebo, C6 KDL, C7 Isaac Sim)",
     "S": "Style (off by default)",
     "U": "Suppression comments",
@@ -36,6 +39,14 @@ def in_check(rule: Rule) -> bool:
     return RuleSet.CHECK.holds(rule.rule_set)
 
 
+# What check_urdf does where it does not reject the file (see report.check_urdf.logged)
+URDFDOM = {
+    **dict.fromkeys(("V001", "V002", "V003", "V004"), "check_urdf rejects it in a joint, and logs it and goes on in a link's visual, collision or inertial"),
+    **dict.fromkeys(("V005", "G001", "G002"), "check_urdf logs it, drops the visual, collision or inertial, and goes on (exit 0)"),
+    **dict.fromkeys(("N003", "M001", "V007"), "check_urdf logs it and goes on (exit 0)"),
+}
+
+
 def facts(rule: Rule) -> str:
     """One line: severity, on or off by default, and where it is reported."""
     where = "check and lint" if in_check(rule) else "lint"
@@ -43,7 +54,7 @@ def facts(rule: Rule) -> str:
     if rule.target is not None:
         parts[1:2] = [f"runs with --target {rule.consumer}" + (f" (examples: --target {rule.target})" if rule.target != rule.consumer else "")]
     if rule.urdfdom:
-        parts.append("check_urdf rejects it too")
+        parts.append(URDFDOM.get(rule.code, "check_urdf rejects it too"))
     fix = rule.fixable
     if fix is not None:
         parts.append("fixable with --fix (safe)" if fix.value == "safe" else "fixable with --fix --unsafe-fixes (unsafe)")

@@ -16,9 +16,9 @@ from typing import TYPE_CHECKING
 from ..read.files import SourceFiles
 from .base import Reporter
 from .check_urdf import tree_lines
-from .console import Line, Output, Stream, write
+from .console import Line, Output, Stream, rich_console, write
 from .escape import escape
-from .lines import diagnostic_lines, fixable_line, library_lines, summary_line
+from .lines import diagnostic_lines, fixable_line, library_lines, plural, summary_line, wrap_line
 
 if TYPE_CHECKING:
     from rich.console import Console
@@ -43,11 +43,21 @@ def tree_text(result: Result) -> list[Line]:
     return lines
 
 
+def semantic_text(loaded) -> list[Line]:
+    """What ``check`` prints of an SRDF in place of a tree: its robot, what it holds, its URDF."""
+    semantic = loaded.semantic
+    parts = [plural(len(semantic.groups), "group"), plural(len(semantic.states), "group state"), plural(len(semantic.end_effectors), "end effector")]
+    described = loaded.described
+    against = f"checked against {escape(described.path)}" if described is not None and described.modelled else "no URDF to check it against"
+    return [[("SRDF of robot: ", ""), (escape(semantic.name or ""), "bold")], [(f"{', '.join(parts)}; {against}", "")]]
+
+
 class TextReporter(Reporter):
     """``check``: each model's tree on standard output (as check_urdf prints it), the
     diagnostics on standard error; ``lint``: everything on standard output, so that
     ``> report.txt`` holds it; both then say what ``--fix`` would fix. ``drift``: as
-    lint, without the fixes (it takes no ``--fix``); ``audit``: the mass-property table."""
+    lint, without the fixes (it takes no ``--fix``); ``audit``: the mass-property table.
+    On a terminal, a line longer than it goes on below; in a file, one line each."""
 
     name = "text"
 
@@ -57,8 +67,8 @@ class TextReporter(Reporter):
             if result.library is None and result.loaded is not None and not output.quiet:
                 if len(results) > 1:
                     write(output.out, [[(f"==> {escape(result.label if result.arguments else result.shown)} <==", "bold")]])
-                write(output.out, tree_text(result))
-            write(output.err, self._diagnostics(result))
+                write(output.out, semantic_text(result.loaded) if result.loaded.semantic is not None else tree_text(result))
+            write(output.err, self._diagnostics(result, output.err))
         self._summary(results, output.err, fixes=True)
 
     def lint(self, results: list[Result]) -> None:
@@ -74,20 +84,27 @@ class TextReporter(Reporter):
 
     def _all(self, results: list[Result], fixes: bool) -> None:
         for result in results:
-            write(self.output.out, self._diagnostics(result))
+            write(self.output.out, self._diagnostics(result, self.output.out))
         self._summary(results, self.output.out, fixes)
 
-    def _diagnostics(self, result: Result) -> Iterator[Line]:
-        return (line for diagnostic in result.diagnostics for line in diagnostic_lines(diagnostic, self.files))
+    def _diagnostics(self, result: Result, target: Stream | Console) -> Iterator[Line]:
+        width = _width(target)
+        return (line for diagnostic in result.displayed for line in diagnostic_lines(diagnostic, self.files, width))
 
-    def _summary(self, results: list[Result], target: Console, fixes: bool) -> None:
+    def _summary(self, results: list[Result], target: Stream | Console, fixes: bool) -> None:
         if not self.output.quiet:
-            write(target, ([(line, "dim")] for line in library_lines(results)))
+            width = _width(target)
+            write(target, ([(piece, "dim")] for line in library_lines(results) for piece in (wrap_line(line, width) if width else [line])))
         if results:
             write(target, [[(summary_line(results), "bold")]])
             fixable = fixable_line(results) if fixes else None
             if fixable is not None:
                 write(target, [[(fixable, "")]])
+
+
+def _width(target: Stream | Console) -> int | None:
+    """The terminal's width, when the stream is one (else None: a line is never broken)."""
+    return rich_console(target).width if target.is_terminal else None
 
 
 def plain_text(results: list[Result], files: SourceFiles | None = None) -> str:

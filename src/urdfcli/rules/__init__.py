@@ -14,7 +14,7 @@ from ..diagnostics import Severity
 from .base import PLACED, SECTIONS, Given, Kind, Option, Remedy, Rule, RuleSet, UnknownRule, cleandoc, example_code, explain, sections
 from .suggestions import close_matches
 
-MODULES = ("structure", "tree", "joints", "physics", "description", "meshes", "style", "inertia", "suppression", "xacro", "drift", "packages", "targets")
+MODULES = ("structure", "tree", "joints", "physics", "description", "meshes", "style", "inertia", "suppression", "xacro", "drift", "packages", "srdf", "targets")
 """The rule modules, by name (``targets`` is a package of them: its ``MODULES``)."""
 
 

@@ -65,6 +65,7 @@ class Kind(Enum):
     MASS = "mass"  # the mass properties: `inertia` audits them, and a new <inertial> fixes what they find
     FILES = "files"  # a file the model names (a mesh), not the model: tree, graph and check_urdf's format leave it out
     SOURCES = "sources"  # the xacro files as written: runs even when no robot was read
+    SEMANTIC = "semantic"  # an SRDF (MoveIt's) against the URDF of its robot: runs on an SRDF, never on a robot
     TARGET = "target"  # what a consumer makes of the model: runs for the targets asked for
 
     @property

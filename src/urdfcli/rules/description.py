@@ -328,7 +328,7 @@ def file_not_found(loaded, given):
             missing_folders.setdefault(path.parent, []).append((at, kind, uri, path))
             continue
         looked = f" (looked for {path})" if str(path) != uri else ""
-        found = loaded.diagnostic("D004", f"{kind} '{uri}' not found{looked}", at, _meant(loaded, uri, path, base) or "file names are case-sensitive")
+        found = loaded.diagnostic("D004", f"{kind} '{uri}' not found{looked}", at, _meant(loaded, uri, path, base))
         found = found.with_fix(_file_fix(loaded, at, uri, path, base))
         yield found.with_severity(WARNING) if kind == "texture" else found
     for folder, uses in missing_folders.items():  # a missing folder is one cause: one diagnostic

@@ -132,8 +132,9 @@ def placeholder_repeated(loaded, given):
     factor of two: one diagnostic per tensor, naming the links it does not fit, at the
     first of them. A link it fits (its geometry gives the tensor within ``tolerance``, or
     its largest moment is within three times of the uniform body filling its shapes, as a
-    CAD tensor is) is the part the tensor was computed for: PR2's caster wheels (0.44 kg)
-    carry the tensor of their 3.47 kg caster body, and the diagnostic is about the wheels.
+    CAD tensor is) is the part the tensor was computed for, and is not named: PR2's caster
+    wheels (0.44 kg) carry the tensor of their 3.47 kg caster body, and the diagnostic is
+    about the wheels alone.
     Left alone: copies of one part (the same shapes: I012 compares their masses), links
     lighter than 20 g whose tensor adds nothing material to the body they are fixed to
     (dummy and frame links), zero tensors (I004), the identity (I007) and tensors no body
@@ -170,9 +171,10 @@ def placeholder_repeated(loaded, given):
     """
     for tensor, wrong, others in placeholder_groups(loaded, given.options):
         masses = [link.inertial.mass for link in wrong + others]
-        if others:  # the tensor of a part, copied onto parts it does not fit
+        if others:  # the tensor of a part, copied onto parts it does not fit: only those are named
+            copied = f"{len(others)} other link{'s' if len(others) > 1 else ''} ({_weights(others)}), whose geometry gives it"
             message = (f"{_naming(wrong)} ({_weights(wrong)}) {'has' if len(wrong) == 1 else 'have'} the inertia tensor ({tensor_text(tensor)}) "
-                       f"of {_names(others)} ({_weights(others)}), which it fits: a copy, not {'its' if len(wrong) == 1 else 'their'} own")
+                       f"of {copied}: a copy, not {'its' if len(wrong) == 1 else 'their'} own")
         else:
             differ = (f"though they weigh {format_number(min(masses))} to {format_number(max(masses))} kg" if max(masses) > SIZE_RATIO * min(masses)
                       else "though their geometries differ in size")
@@ -331,8 +333,11 @@ def geometry_mismatch(loaded, given):
       filling the collision shapes (else the visual shapes), but a principal axis more than
       30° from the body's (swapped axes, a mirrored or unturned tensor), the tensors differing
       by more than 2 x ``tolerance``. Only axes whose moment stands 15 % apart from the other
-      two count: a nearly round body has no axis to get wrong. When the shapes' own rotation
-      explains it, I010 says so instead.
+      two count: a nearly round body has no axis to get wrong. And, whatever the moments'
+      size and the link's mass, a geometry clearly long along a link axis (its moment about
+      it half the others or less: a finger, a hand 0.2 m long along y) whose declared
+      tensor turns hardest about that axis (twice its smallest moment or more). When the
+      shapes' own rotation explains it, I010 says so instead.
     - **placeholder**: a largest principal moment more than 100 times below the uniform
       body's (0.3 kg declared with a 2e-8 tensor), or a smallest principal moment more than
       20 times below the uniform body's (a finger whose moment about its long axis would
@@ -532,6 +537,29 @@ class Verdict(NamedTuple):
     hint: str
 
 
+LONG = 0.5  # a geometry whose smallest moment is at most half the next is long along that axis
+HARDEST = 2.0  # a declared moment about that axis this many times the declared smallest is its largest: swapped
+
+
+def _long_axis_swapped(declared, expected) -> tuple[str, float, float] | None:
+    """(axis, declared moment about it, how many times the smallest) when the geometry is
+    clearly long along a link axis (its moment about it half the others or less)
+    and the declared tensor turns hardest about that axis: a finger or a hand whose axes
+    were swapped, told whatever its mass and however its moments compare in size."""
+    moments = [expected[i][i] for i in range(3)]
+    axis = min(range(3), key=lambda i: moments[i])
+    others = [moments[i] for i in range(3) if i != axis]
+    if moments[axis] <= 0 or any(abs(expected[i][j]) > 1e-3 * max(moments) for i in range(3) for j in range(3) if i != j):
+        return None  # a geometry turned off the link's axes: the rotation rules judge it
+    if moments[axis] > LONG * min(others):
+        return None  # not clearly long along one axis
+    declared_moments = massprops.principal_moments(declared)
+    about = declared[axis][axis]
+    if declared_moments[0] <= 0 or about < max(declared[i][i] for i in range(3)) or about < HARDEST * declared_moments[0]:
+        return None
+    return "xyz"[axis], about, about / declared_moments[0]
+
+
 def verdict(loaded: Loaded, link: Link, tolerance: float = massprops.TOLERANCE, density: float | None = None) -> Verdict | None:
     """The one thing the geometry proves wrong about the link's tensor, if any.
 
@@ -578,6 +606,16 @@ def verdict(loaded: Loaded, link: Link, tolerance: float = massprops.TOLERANCE, 
             f"its principal moments match its {source}, but on axes {turned:.0f}° away: declared {tensor_text(found.declared, found.expected)}, "
             f"the {source} gives {tensor_text(found.expected, found.declared)}",
             "the axes are swapped or rotated: `urdfcli inertia --suggest` prints the tensor on the geometry's axes",
+        )
+    swapped = _long_axis_swapped(found.declared, found.expected)
+    if swapped is not None and found.difference > 2 * tolerance:
+        axis, about, largest = swapped
+        return Verdict(
+            "rotated", 90.0,
+            f"its {source} {'are' if 'shapes' in source else 'is'} long along {axis}, so its moment about {axis} is its smallest, but the declared tensor turns "
+            f"hardest about {axis}: {about:.3g}, {largest:.3g} times its smallest; declared {tensor_text(found.declared, found.expected)}, "
+            f"the {source} gives {tensor_text(found.expected, found.declared)}",
+            "the axes are swapped: `urdfcli inertia --suggest` prints the tensor on the geometry's axes",
         )
     if density is not None and found.off(tolerance):  # the link is said to be that uniform material
         return Verdict(

@@ -8,6 +8,7 @@ found D005.
 from __future__ import annotations
 
 import math
+import re
 from collections import defaultdict
 from pathlib import Path
 
@@ -112,7 +113,9 @@ def path_not_portable(loaded, given):
     resource_retriever, which takes only `package://` and `file://` URIs
     (`FilesystemRetriever::can_handle` in ros/resource_retriever): RViz and
     MoveIt show nothing for a plain or relative path, although MuJoCo, PyBullet
-    and Drake take a relative path from the URDF's folder.
+    and Drake take a relative path from the URDF's folder. A `file://$(find pkg)/...`
+    written in a xacro source is left alone: the source is portable (each machine's
+    expansion names its own folder), and Gazebo is given the file so on purpose.
 
     ## Example
     ```xml
@@ -131,7 +134,7 @@ def path_not_portable(loaded, given):
     groups: dict = defaultdict(list)
     for at, kind, uri, path in resolved_resources(loaded):
         style = uri_style(uri)
-        if style is not None and path is not None and path.is_file():
+        if style is not None and path is not None and path.is_file() and not (style == "file" and _found_in_source(loaded, at)):
             groups[(style, path.parent)].append((at, kind, uri, path))
     for (style, _), found in groups.items():
         at, kind, uri, path = found[0]
@@ -158,6 +161,24 @@ def _portable_fix(loaded, style: str, found) -> Fix:
         changes.append(SetAttribute(at, "filename", portable))
     title = f"write {changes[0].value}" + (f" and {len(changes) - 1} more package:// URI{'s' if len(changes) > 2 else ''}" if len(changes) > 1 else "")
     return Fix(title, SAFE, changes=tuple(changes))
+
+
+_FILENAME = re.compile(r"""\bfilename\s*=\s*(["'])(.*?)\1""", re.DOTALL)
+
+
+def _found_in_source(loaded, at: int) -> bool:
+    """Whether the xacro source wrote the URI with ``$(find ...)``: a file:// URI made on each
+    machine from its own package folder, which is portable."""
+    location = loaded.document.locate(at)
+    if not loaded.document.is_xacro or location.expanded or not location.line:
+        return False
+    source = loaded.document.files.get(location.file)
+    start = source.offset(location.line, location.column) if source is not None else None
+    if start is None:
+        return False
+    end = source.text.find(">", start)
+    written = _FILENAME.search(source.text, start, end if end >= 0 else None)
+    return written is not None and "$(find" in written.group(2)
 
 
 def _package_uri(loaded, path: Path) -> str | None:

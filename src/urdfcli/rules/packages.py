@@ -80,8 +80,9 @@ def dependency_undeclared(loaded, given) -> Iterator[Diagnostic]:
     first use. A package named by a macro's parameter (`$(find ${pkg})`,
     `package://${pkg}/`) is named by each call: when every call in the
     workspace gives a plain name (or leaves the plain default), each is judged
-    where it is written. Any other variable, and a package that cannot be found
-    at all (X004, D005 say so), are left alone.
+    where it is written. Any other variable is left alone. A package that cannot
+    be found here is flagged too (X004 and D005 say it is missing; this, that a
+    fresh workspace would not install it either).
 
     ## Why is this bad?
     It works where the package happens to be installed, and breaks in a fresh
@@ -122,8 +123,8 @@ def dependency_undeclared(loaded, given) -> Iterator[Diagnostic]:
         if manifest is None or manifest.name in (None, package) or package in manifest.dependencies:
             continue
         folder = loaded.resolver.find(package)
-        if folder is None or folder.resolve() == owner:
-            continue  # a package that cannot be found (X004 or D005 say so), or its own under another name (-P NAME=DIR)
+        if folder is not None and folder.resolve() == owner:
+            continue  # its own, under another name (-P NAME=DIR)
         more = f" (and {others} more use{'s' if others > 1 else ''} in this file)" if others else ""
         name = shown(owner / "package.xml")
         yield Diagnostic(

@@ -244,8 +244,10 @@ def not_positive_semidefinite(loaded, given):
     Flags an inertia tensor with a negative principal moment (it is not positive
     semi-definite), including ones made so by off-diagonal terms. Elements below
     1e-12 kg·m² count as zero; a tensor made only of such noise is a point mass (I004).
-    A link lighter than 20 g fixed to a heavier body is judged by what it does to that
-    body: left alone when its tensor adds less than 5 % to the body's largest moment.
+    An error whatever the link's mass; on a link lighter than 20 g fixed to a heavier
+    body, whose tensor adds less than 5 % to the body's largest moment, a warning that
+    names MuJoCo, which refuses the model whatever the lumping, and Drake, which replaces the
+    tensor (TIAGo's 1 mg antennas).
 
     ## Why is this bad?
     Principal moments of inertia are never negative; a simulator given such a
@@ -267,13 +269,7 @@ def not_positive_semidefinite(loaded, given):
     """
     for link, moments in invalid_tensors(loaded)["I005"]:
         sign, hint = sign_convention(link.inertial)
-        yield loaded.diagnostic(
-            "I005",
-            f"inertia of link '{link.name}' is not positive semi-definite (principal moments {moments_text(moments)}){sign}",
-            link.inertial.inertia_at,
-            hint,
-            subjects=(link.name,),
-        )
+        yield _light(loaded, link, "I005", f"inertia of link '{link.name}' is not positive semi-definite (principal moments {moments_text(moments)}){sign}", hint)
 
 
 @check("I006", "inertia-triangle-inequality", WARNING, "Principal moments that break the triangle inequality.", kind=Kind.MASS, remedy=Remedy.INERTIAL, fix=UNSAFE)
@@ -282,8 +278,9 @@ def triangle_inequality(loaded, given):
     Flags a tensor whose principal moments break the triangle inequality
     (A + B >= C for any ordering), with a small relative tolerance. Elements below
     1e-12 kg·m² count as zero; a tensor made only of such noise is a point mass (I004).
-    A link lighter than 20 g fixed to a heavier body is judged by what it does to that
-    body: left alone when its tensor adds less than 5 % to the body's largest moment.
+    A link lighter than 20 g fixed to a heavier body, whose tensor adds less than 5 % to
+    the body's largest moment, is a warning naming MuJoCo, which refuses the model, and
+    Drake, which replaces the tensor.
 
     ## Why is this bad?
     No rigid body has such moments; Gazebo and other engines reject or mishandle
@@ -306,9 +303,7 @@ def triangle_inequality(loaded, given):
     for link, moments in invalid_tensors(loaded)["I006"]:
         a, b, c = moments_text(moments).split(", ")
         sign, hint = sign_convention(link.inertial)
-        yield loaded.diagnostic(
-            "I006", f"inertia of link '{link.name}' breaks the triangle inequality: {a} + {b} < {c}{sign}", link.inertial.inertia_at, hint, subjects=(link.name,)
-        )
+        yield _light(loaded, link, "I006", f"inertia of link '{link.name}' breaks the triangle inequality: {a} + {b} < {c}{sign}", hint)
 
 
 SIGN_CONVENTION = "; with its products of inertia negated it is valid: the other sign convention for them (∫xy dm for -∫xy dm), which some CAD tools export"
@@ -330,14 +325,31 @@ def invalid_tensors(loaded) -> dict[str, list]:
 
 
 def _invalid_tensors(loaded) -> dict[str, list]:
-    found: dict[str, list] = {"I005": [], "I006": []}
+    """Each impossible tensor, whatever the link's mass: a light link fixed to a heavier
+    body (see :func:`absorbed`) is listed in "light", which makes a warning."""
+    found: dict[str, list] = {"I005": [], "I006": [], "light": []}
     for link, inertial in _inertials(loaded):
         if not inertial.inertia:
             continue
         code, detail = verdict(loaded, inertial)
-        if code in found and not absorbed(loaded, link):
+        if code in ("I005", "I006"):
             found[code].append((link, detail))
+            if absorbed(loaded, link):
+                found["light"].append(link.name)
     return found
+
+
+LUMPED = ("; MuJoCo refuses the model (it checks each link's tensor before it lumps fixed links) and Drake replaces the tensor, "
+          "though lumped into its body the link changes little elsewhere")
+
+
+def _light(loaded, link, code: str, message: str, hint: str | None):
+    """I005 or I006 on a link: an error (I006 a warning); a warning naming the consumer that
+    refuses it on a light link fixed to a heavier body, where lumping makes it harmless."""
+    if link.name not in invalid_tensors(loaded)["light"]:
+        return loaded.diagnostic(code, message, link.inertial.inertia_at, hint, subjects=(link.name,))
+    found = loaded.diagnostic(code, message + LUMPED, link.inertial.inertia_at, hint, subjects=(link.name,))
+    return found.with_severity(WARNING)
 
 
 def _judged(loaded) -> dict:
@@ -366,4 +378,5 @@ def _tensor_verdict(tensor) -> tuple[str | None, tuple | None]:
 
 
 def has_invalid_tensor(loaded, link) -> bool:
-    return any(link is found for links in invalid_tensors(loaded).values() for found, _ in links)
+    invalid = invalid_tensors(loaded)
+    return any(link is found for code in ("I005", "I006") for found, _ in invalid[code])

@@ -11,6 +11,15 @@ ERROR, WARNING = Severity.ERROR, Severity.WARNING
 
 U = dict(urdfdom=True)
 REJECTED = "check_urdf rejects the file, and so does every tool built on urdfdom (robot_state_publisher, RViz, MoveIt, Gazebo's URDF import)."
+DROPPED = (
+    "check_urdf logs an error, drops the element that holds it (the link's visual, collision or inertial) and goes on: "
+    "it exits 0 and prints the tree, and robot_state_publisher, RViz and MoveIt load the robot without that element."
+)
+BY_PLACE = (
+    "Where it is decides what check_urdf does: in a joint (an origin, a limit), a link name or the robot, it rejects "
+    "the file; in a link's visual, collision or inertial, it logs an error, drops that element and goes on (exit 0, the "
+    "tree printed), and every tool built on urdfdom loads the robot without it."
+)
 LIBRARY = (
     " A xacro *library* (a file that writes no link, joint or macro call outside its macro definitions, such as"
     " a file of macros) is never judged as a robot: `check` and `lint` check it through the models that include it."
@@ -91,7 +100,8 @@ N002 = declare("N002", "joint-name-missing", ERROR, "A `<joint>` has no `name`."
     '<link name="a"/>\n<link name="b"/>\n<joint name="a_to_b" type="fixed">\n  <parent link="a"/>\n  <child link="b"/>\n</joint>'), **U)
 N003 = declare("N003", "material-name-missing", ERROR, "A `<material>` has no `name`.", explain(
     "Flags a `<material>`, top-level or inside a visual, without `name`.",
-    f"Materials are shared by name. {REJECTED}",
+    "Materials are shared by name: one without a name gives no colour. check_urdf logs an error and goes on (it exits 0 and prints the tree): "
+    "a top-level one is kept with no name, a visual's own drops the visual.",
     '<material>\n  <color rgba="1 0 0 1"/>\n</material>\n<link name="base_link"/>',
     '<material name="red">\n  <color rgba="1 0 0 1"/>\n</material>\n<link name="base_link"/>'), **U)
 N004 = declare("N004", "duplicate-link", ERROR, "Two links have the same name.", explain(
@@ -113,7 +123,7 @@ N006 = declare("N006", "duplicate-material", ERROR, "Two top-level materials hav
 # Values
 V001 = declare("V001", "number-malformed", ERROR, "A number that urdfdom cannot read.", explain(
     "Flags a numeric attribute that is not a number as urdfdom reads numbers (a unit, a comma as decimal point, an unexpanded `${...}`).",
-    f"{REJECTED}",
+    f"{BY_PLACE}",
     '<link name="base_link">\n  <inertial><mass value="2kg"/><inertia ixx="1" ixy="0" ixz="0" iyy="1" iyz="0" izz="1"/></inertial>\n</link>',
     '<link name="base_link">\n  <inertial><mass value="2"/><inertia ixx="1" ixy="0" ixz="0" iyy="1" iyz="0" izz="1"/></inertial>\n</link>'), **U)
 V002 = declare("V002", "number-not-finite", ERROR, "A number that is NaN, infinite or overflows.", explain(
@@ -123,17 +133,17 @@ V002 = declare("V002", "number-not-finite", ERROR, "A number that is NaN, infini
     '<link name="base_link">\n  <inertial><mass value="1"/><inertia ixx="1" ixy="0" ixz="0" iyy="1" iyz="0" izz="1"/></inertial>\n</link>'), **U)
 V003 = declare("V003", "vector-length", ERROR, "A vector (`xyz`, `rpy`, `size`, `scale`) without three components.", explain(
     "Flags an `xyz`, `rpy`, box `size` or mesh `scale` that does not have exactly three space-separated numbers.",
-    f"{REJECTED}",
+    f"{BY_PLACE}",
     '<link name="base_link">\n  <visual><geometry><box size="1 1"/></geometry></visual>\n</link>',
     '<link name="base_link">\n  <visual><geometry><box size="1 1 0.5"/></geometry></visual>\n</link>'), **U)
 V004 = declare("V004", "attribute-missing", ERROR, "A required attribute is missing.", explain(
     "Flags a required attribute that is absent: a sphere's `radius`, a mesh's `filename`, a limit's `effort` or `velocity`, an inertia component.",
-    f"{REJECTED}",
+    f"{BY_PLACE}",
     '<link name="base_link">\n  <visual><geometry><sphere/></geometry></visual>\n</link>',
     '<link name="base_link">\n  <visual><geometry><sphere radius="0.1"/></geometry></visual>\n</link>'), **U)
 V005 = declare("V005", "element-missing", ERROR, "A required child element is missing.", explain(
     "Flags a required child element that is absent: `<geometry>` in a visual or collision, `<mass>` or `<inertia>` in an inertial.",
-    f"{REJECTED}",
+    f"{DROPPED}",
     '<link name="base_link">\n  <visual><origin xyz="0 0 0"/></visual>\n</link>',
     '<link name="base_link">\n  <visual><origin xyz="0 0 0"/><geometry><box size="1 1 1"/></geometry></visual>\n</link>'), **U)
 V006 = declare("V006", "dimension-negative", ERROR, "A box size, radius or length that is negative.", explain(
@@ -144,7 +154,7 @@ V006 = declare("V006", "dimension-negative", ERROR, "A box size, radius or lengt
     '<link name="base_link">\n  <collision><geometry><cylinder radius="0.1" length="0.2"/></geometry></collision>\n</link>'))
 V007 = declare("V007", "rgba-out-of-range", ERROR, "An rgba component outside [0, 1].", explain(
     "Flags an rgba component below 0 or above 1 (often a 0-255 colour).",
-    f"Colours are fractions. {REJECTED}",
+    "Colours are fractions. check_urdf logs an error and drops the colour (a visual's material, the visual) and goes on: it exits 0 and prints the tree.",
     '<material name="orange"><color rgba="255 128 0 255"/></material>\n<link name="base_link"/>',
     '<material name="orange"><color rgba="1 0.5 0 1"/></material>\n<link name="base_link"/>'), **U)
 V008 = declare("V008", "dimension-zero", WARNING, "A box size, radius or length that is zero.", explain(
@@ -172,12 +182,12 @@ V010 = declare("V010", "dynamics-negative", ERROR, "A joint's damping or frictio
 # Geometry and materials
 G001 = declare("G001", "geometry-empty", ERROR, "`<geometry>` holds no shape.", explain(
     "Flags a `<geometry>` with no shape element in it.",
-    f"{REJECTED}",
+    f"{DROPPED}",
     '<link name="base_link">\n  <visual><geometry/></visual>\n</link>',
     '<link name="base_link">\n  <visual><geometry><box size="1 1 1"/></geometry></visual>\n</link>'), **U)
 G002 = declare("G002", "geometry-unknown-shape", ERROR, "`<geometry>` holds an unknown shape.", explain(
     "Flags a shape other than `box`, `cylinder`, `sphere` and `mesh` (`capsule` is not URDF).",
-    f"{REJECTED}",
+    f"{DROPPED}",
     '<link name="base_link">\n  <visual><geometry><cube size="1 1 1"/></geometry></visual>\n</link>',
     '<link name="base_link">\n  <visual><geometry><box size="1 1 1"/></geometry></visual>\n</link>'), **U)
 G003 = declare("G003", "geometry-multiple-shapes", WARNING, "`<geometry>` holds more than one shape; only the first is used.", explain(
@@ -185,9 +195,15 @@ G003 = declare("G003", "geometry-multiple-shapes", WARNING, "`<geometry>` holds 
     "urdfdom reads only the first shape and drops the others without a word.",
     '<link name="base_link">\n  <visual><geometry><box size="1 1 1"/><sphere radius="0.5"/></geometry></visual>\n</link>',
     '<link name="base_link">\n  <visual><geometry><box size="1 1 1"/></geometry></visual>\n  <visual><geometry><sphere radius="0.5"/></geometry></visual>\n</link>'))
+G004 = declare("G004", "element-repeated", WARNING, "A `<visual>`, `<collision>` or `<inertial>` holds two of one child; only the first is used.", explain(
+    "Flags a second `<geometry>`, `<material>` or `<origin>` in one `<visual>` or `<collision>`, and a second `<origin>`, `<mass>` or `<inertia>` in one `<inertial>`.",
+    "urdfdom, and every parser after it, reads the first and drops the rest without a word: the second colour or shape is never seen. "
+    "A second shape belongs in a `<visual>` of its own.",
+    '<link name="base_link">\n  <visual>\n    <geometry><box size="1 1 1"/></geometry>\n    <geometry><sphere radius="0.5"/></geometry>\n  </visual>\n</link>',
+    '<link name="base_link">\n  <visual><geometry><box size="1 1 1"/></geometry></visual>\n  <visual><geometry><sphere radius="0.5"/></geometry></visual>\n</link>'))
 M001 = declare("M001", "material-without-color", ERROR, "A top-level material with neither colour nor texture.", explain(
     "Flags a top-level `<material>` without `<color rgba>` or `<texture filename>`.",
-    f"A material that defines nothing is a mistake, often `rgb=` written for `rgba=`. {REJECTED}",
+    "A material that defines nothing is a mistake, often `rgb=` written for `rgba=`. check_urdf logs that it has no colour and goes on (exit 0): the visuals that name it get none.",
     '<material name="grey"/>\n<link name="base_link"/>',
     '<material name="grey"><color rgba="0.5 0.5 0.5 1"/></material>\n<link name="base_link"/>'), **U)
 M002 = declare("M002", "material-undefined", WARNING, "A visual names a material defined nowhere.", explain(

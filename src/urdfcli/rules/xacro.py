@@ -338,7 +338,7 @@ def macro_name_fixed(loaded, given) -> Iterator[Diagnostic]:
                 yield _diagnostic("X105", f"{what}: it can be called once per robot", file, element.place, hint, severity=INFO)
 
 
-@check("X106", "xacro-name-undefined", ERROR, "A name in a macro body that nothing defines.", kind=Kind.SOURCES)
+@check("X106", "xacro-name-undefined", WARNING, "A name in a macro body that nothing defines.", kind=Kind.SOURCES)
 def name_undefined(loaded, given) -> Iterator[Diagnostic]:
     """## What it does
     Reads every `${...}` in every macro body of the model's files, called or
@@ -350,8 +350,11 @@ def name_undefined(loaded, given) -> Iterator[Diagnostic]:
     only where the macro is called counts as defined when every call, in the
     whole workspace, defines it (a parameter of the calling macro, say). Names
     a comprehension or lambda binds, and expressions Python cannot parse, are
-    left alone. The error is at the name's line and column, with the closest
-    name in scope.
+    left alone. The warning is at the name's line and column, with the closest
+    name in scope. It is a warning, not an error: the model loads as long as
+    its expansion never evaluates the name (a macro it does not call, a branch
+    its call does not take); where the expansion does evaluate it, xacro's own
+    error (X003) says so at that line.
 
     ## Why is this bad?
     xacro evaluates a macro's body only when it is called: a misspelt name in
@@ -406,11 +409,11 @@ def name_undefined(loaded, given) -> Iterator[Diagnostic]:
                 if (location.file, location.line) in failed:
                     continue  # xacro's own error (X003) says it there
                 macro = file.macros[expression.macro].name
-                called = " nor by every call of it" if sources.calls(macro) else ""
+                called = "nor by every call of it" if sources.calls(macro) else "nor for the whole document (nothing calls the macro)"
                 scope = sorted(known | sources.facts.globals | builtins)
                 close = close_matches(name.name, scope)
                 hint = f"did you mean '{close[0]}'?" if close else f"add it to the params of macro '{macro}', or define it with <xacro:property>"
-                yield Diagnostic("X106", f"name '{name.name}' is defined neither in macro '{macro}'{called}", location, hint=hint)
+                yield Diagnostic("X106", f"name '{name.name}' is defined neither in macro '{macro}' {called}", location, hint=hint)
 
 
 @check("X107", "xacro-tag-unprefixed", WARNING, "A xacro tag written without `xacro:`, which xacro leaves in the output unread.", kind=Kind.SOURCES, rule_set=RuleSet.LINT, fix=UNSAFE, fix_doc="Writes the `xacro:` prefix on the start and end tags, and declares the prefix on the root when it is not "

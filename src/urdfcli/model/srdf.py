@@ -1,0 +1,153 @@
+"""The SRDF: MoveIt's semantic description of a robot, read with source positions.
+
+An SRDF is a ``<robot name=...>`` whose elements name the links and joints of
+a URDF of the same robot: planning groups (``<group>`` of links, joints,
+chains and subgroups), named joint values (``<group_state>``), end effectors,
+virtual joints, passive joints and the link pairs whose collisions are not
+checked (``<disable_collisions>``). It defines no link of its own. A file is
+read as one when its name ends in ``.srdf`` or ``.srdf.xacro``, or when its
+root holds SRDF elements and no ``<link>`` (a xacro file expanding to one).
+
+Each element is kept with its index in document order (the root is 0), so that
+a diagnostic is located where it was written, through xacro includes and macros
+as for a URDF (see :meth:`urdfcli.read.document.Document.diagnostic`).
+"""
+
+from __future__ import annotations
+
+from typing import NamedTuple
+
+from ..read.document import Document, tag_name
+from ..read.xml import Element, parse
+
+SRDF_SUFFIXES = (".srdf", ".srdf.xacro")
+# The elements only an SRDF writes at the top level (a URDF has none of them)
+SRDF_TAGS = frozenset(("group", "group_state", "end_effector", "virtual_joint", "passive_joint", "disable_collisions", "disable_default_collisions", "enable_collisions"))
+
+
+def named_srdf(path: str) -> bool:
+    """Whether a file's name says it is an SRDF."""
+    return path.endswith(SRDF_SUFFIXES)
+
+
+def looks_semantic(root: Element) -> bool:
+    """Whether a parsed document is an SRDF: a ``<robot>`` holding SRDF elements and no ``<link>``."""
+    if tag_name(root) != "robot":
+        return False
+    tags = {child.tag for child in root}
+    return bool(tags & SRDF_TAGS) and "link" not in tags
+
+
+class Named(NamedTuple):
+    """A name an SRDF element gives, and where: element ``at``, attribute ``attribute``."""
+
+    name: str
+    at: int
+    attribute: str = "name"
+
+
+class Chain(NamedTuple):
+    base: Named
+    tip: Named
+    at: int
+
+
+class Group(NamedTuple):
+    name: str
+    at: int
+    links: tuple[Named, ...]
+    joints: tuple[Named, ...]
+    chains: tuple[Chain, ...]
+    subgroups: tuple[Named, ...]
+
+
+class State(NamedTuple):
+    """A ``<group_state>``: named values of joints."""
+
+    name: str
+    group: Named
+    at: int
+    values: tuple[tuple[Named, str], ...]  # (joint, value as written)
+
+
+class EndEffector(NamedTuple):
+    name: str
+    at: int
+    group: Named | None
+    parent_link: Named | None
+    parent_group: Named | None
+
+
+class VirtualJoint(NamedTuple):
+    name: str
+    at: int
+    type: str | None
+    child: Named | None
+
+
+class Semantic(NamedTuple):
+    """An SRDF as read: its robot's name (None when not given) and its elements."""
+
+    name: str | None
+    at: int
+    groups: tuple[Group, ...]
+    states: tuple[State, ...]
+    end_effectors: tuple[EndEffector, ...]
+    virtual_joints: tuple[VirtualJoint, ...]
+    passive_joints: tuple[Named, ...]
+    disabled: tuple[tuple[Named, Named], ...]  # link pairs whose collisions are not checked
+
+    @property
+    def group_names(self) -> set[str]:
+        return {group.name for group in self.groups}
+
+
+def read_semantic(document: Document, root: Element | None = None) -> Semantic:
+    """The SRDF of a read document (its data parsed here unless ``root`` is given).
+    Raises XmlError when the data is not well-formed."""
+    root = root if root is not None else parse(document.data)
+    index = {element: at for at, element in enumerate(root.iter())}
+    document.tops.extend(index[child] for child in root)
+
+    def named(element: Element, attribute: str = "name") -> Named | None:
+        value = element.get(attribute)
+        return Named(value, index[element], attribute) if value else None
+
+    groups, states, effectors, virtuals, passive, disabled = [], [], [], [], [], []
+    for element in root:
+        tag = element.tag
+        if tag == "group":
+            links, joints, chains, subgroups = [], [], [], []
+            for child in element:
+                found = named(child)
+                if child.tag == "link" and found:
+                    links.append(found)
+                elif child.tag == "joint" and found:
+                    joints.append(found)
+                elif child.tag == "group" and found:
+                    subgroups.append(found)
+                elif child.tag == "chain":
+                    base, tip = named(child, "base_link"), named(child, "tip_link")
+                    if base and tip:
+                        chains.append(Chain(base, tip, index[child]))
+            groups.append(Group(element.get("name") or "", index[element], tuple(links), tuple(joints), tuple(chains), tuple(subgroups)))
+        elif tag == "group_state":
+            group = named(element, "group")
+            values = tuple((joint, child.get("value") or "") for child in element if child.tag == "joint" and (joint := named(child)))
+            if group:
+                states.append(State(element.get("name") or "", group, index[element], values))
+        elif tag == "end_effector":
+            effectors.append(EndEffector(element.get("name") or "", index[element], named(element, "group"), named(element, "parent_link"), named(element, "parent_group")))
+        elif tag == "virtual_joint":
+            virtuals.append(VirtualJoint(element.get("name") or "", index[element], element.get("type"), named(element, "child_link")))
+        elif tag == "passive_joint":
+            if found := named(element):
+                passive.append(found)
+        elif tag == "disable_collisions":
+            first, second = named(element, "link1"), named(element, "link2")
+            if first and second:
+                disabled.append((first, second))
+    return Semantic(root.get("name"), 0, tuple(groups), tuple(states), tuple(effectors), tuple(virtuals), tuple(passive), tuple(disabled))
+
+
+__all__ = ["SRDF_SUFFIXES", "SRDF_TAGS", "Chain", "EndEffector", "Group", "Named", "Semantic", "State", "VirtualJoint", "looks_semantic", "named_srdf", "read_semantic"]

@@ -1,0 +1,137 @@
+"""Which URDF an SRDF describes: the robot of the same name, nearest first.
+
+MoveIt pairs an SRDF with the ``robot_description`` of the same robot. Without
+a launch file to tell, the URDF is looked for by the robot's name: in the
+SRDF's own package, then in the packages its package.xml depends on, then in
+the repository or workspace around it (see :func:`urdfcli.project.workspace.search_roots`).
+In each place a xacro source comes before a generated URDF, and a top-level
+model before a file another one includes. A robot's name is read from its
+``<robot name=...>`` as written (``$(arg name)`` resolved from the argument's
+default or the ``[tool.urdfcli] models`` setting), and confirmed by loading
+the model. ``--urdf FILE`` names the URDF instead.
+"""
+
+from __future__ import annotations
+
+import re
+from collections.abc import Callable, Iterator
+from pathlib import Path
+
+from ..diagnostics import Diagnostic, Severity
+from ..model.load import Loaded
+from ..model.srdf import SRDF_TAGS, named_srdf
+from ..read.xacro_scan import shown
+from .workspace import Index, search_roots, source_files, substitute
+
+_ROBOT_TAG = re.compile(r"<robot\b[^>]*?\bname\s*=\s*(['\"])(.*?)\1", re.DOTALL)
+_SRDF_MARK = re.compile(r"<(" + "|".join(sorted(SRDF_TAGS)) + r")\b")
+HEAD = 1 << 16  # the root's start tag is in the first 64 KiB of any real file
+TRIES = 4  # candidates loaded at most, when the first ones turn out not to be the robot
+
+
+def robot_name(file: Path, index: Index, arguments: dict[str, str]) -> str | None:
+    """The robot name a URDF or xacro file gives as written, substitutions resolved
+    where they can be; None for an SRDF, a file without one, or a name that stays computed."""
+    try:
+        with open(file, "rb") as stream:
+            text = stream.read(HEAD).decode("utf-8", "replace")
+    except OSError:
+        return None
+    if _SRDF_MARK.search(text) and "<link" not in text:
+        return None  # an SRDF, or an SRDF's macros
+    found = _ROBOT_TAG.search(text)
+    if found is None:
+        return None
+    name = found.group(2)
+    if "$" in name:
+        name = substitute(name, index.source(file), index.finder(file), arguments)
+    return name if "$" not in name else None
+
+
+def candidates(srdf: Path, index: Index, arguments_for: Callable[[Path], dict[str, str]]) -> Iterator[Path]:
+    """The URDF and xacro files that may describe the SRDF's robot, nearest first."""
+    folders: list[tuple[Path, bool]] = []
+    package = index.packages.enclosing_package(srdf.parent)
+    if package is not None:
+        folders.append((package, True))
+        manifest = index.packages.manifest(package / "package.xml")
+        find = index.finder(srdf)
+        for dependency in sorted(manifest.dependencies if manifest is not None else ()):
+            found = find(dependency)
+            if found is not None:
+                folders.append((found, True))
+    roots, recursive = search_roots(srdf, index.packages)
+    folders += [(root, recursive) for root in roots]
+    seen: set[Path] = set()
+    for folder, below in folders:
+        files = [f.resolve() for f in source_files(folder, below) if not named_srdf(f.name)]
+        included = {Path(i.value) for f in files if f.name.endswith(".xacro") for i in index.includes(f) if i.kind == "path"}
+        order = sorted(files, key=lambda f: (f in included, f.name.endswith(".urdf"), str(f)))
+        for file in order:
+            if file not in seen:
+                seen.add(file)
+                yield file
+
+
+def described(
+    loaded: Loaded,
+    index: Index,
+    urdf: str | None,
+    arguments_for: Callable[[Path], dict[str, str]],
+    load: Callable[[str, dict[str, str]], Loaded | str],
+) -> Diagnostic | None:
+    """Find and load the URDF the SRDF ``loaded`` describes into ``loaded.described``;
+    the K008 diagnostic that says why it could not be checked, or None.
+    ``load(path, arguments)`` loads a model (or says in one line why it cannot)."""
+    semantic = loaded.semantic
+    name = semantic.name
+    document = loaded.document
+    if urdf is not None:
+        found = load(urdf, arguments_for(Path(urdf)))
+        if isinstance(found, str) or not found.modelled:
+            why = found if isinstance(found, str) else "it holds no robot"
+            return _without(loaded, f"the URDF given with --urdf cannot be read: {why}")
+        loaded.described = found
+        if found.robot.name != name:
+            return _without(loaded, f"the SRDF is for robot '{name}', but {urdf} describes robot '{found.robot.name}'", Severity.WARNING, "give --urdf the URDF of this robot")
+        return None
+    if name is None or document.file is None:
+        return None
+    srdf = document.file.resolve()
+    tried, failures = 0, []
+    for file in candidates(srdf, index, arguments_for):
+        arguments = arguments_for(file)
+        if robot_name(file, index, arguments) != name:
+            continue
+        path = shown(file)
+        found = load(path, arguments)
+        tried += 1
+        if isinstance(found, str) or not found.modelled or found.robot.name != name or not found.robot.links:
+            failures.append(f"{path}: {found if isinstance(found, str) else _why(found)}")
+            if tried >= TRIES:
+                break
+            continue
+        loaded.described = found
+        return None
+    if failures:
+        return _without(loaded, f"the URDF of robot '{name}' could not be read ({'; '.join(failures)}): the SRDF's names are not checked",
+                        hint="list its xacro arguments in [tool.urdfcli] models, or give --urdf FILE")
+    return _without(loaded, f"no URDF of robot '{name}' found in the SRDF's package or workspace: its names are not checked",
+                    hint="give the URDF with --urdf FILE")
+
+
+def _why(found: Loaded) -> str:
+    if found.document.missing_argument is not None:
+        return f"it needs xacro argument '{found.document.missing_argument}'"
+    error = next((d for d in found.diagnostics if d.severity is Severity.ERROR or d.code.startswith("X")), None)
+    if error is not None:
+        return error.message
+    return "it describes another robot" if found.modelled else "it holds no robot"
+
+
+def _without(loaded: Loaded, message: str, severity: Severity | None = None, hint: str | None = None) -> Diagnostic:
+    diagnostic = loaded.diagnostic("K008", message, 0, hint or "give the URDF with --urdf FILE")
+    return diagnostic._replace(severity=severity) if severity is not None else diagnostic
+
+
+__all__ = ["candidates", "described", "robot_name"]

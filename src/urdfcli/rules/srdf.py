@@ -1,0 +1,363 @@
+"""The SRDF against its URDF (K001-K008): every name it gives must exist there,
+each chain must run down the tree, each named state must lie within the limits.
+
+These rules run on an SRDF (``loaded.semantic``) checked against the URDF of
+the same robot (``loaded.described``, found in its package or workspace, or
+given with ``--urdf``). Each finding is located at the SRDF element or
+attribute that names the missing thing, through xacro includes and macros.
+What MoveIt does with each mistake is in the rule's documentation: srdfdom
+logs most of them and drops the element, so the planning group, state or end
+effector silently goes missing at run time.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterator
+from typing import TYPE_CHECKING
+
+from ..diagnostics import Diagnostic
+from .base import ERROR, INFO, WARNING, Given, Kind, check, declare, explain
+from .suggestions import close_matches
+
+if TYPE_CHECKING:
+    from ..model.load import Loaded
+    from ..model.srdf import Named
+
+URDF = """\
+<robot name="example">
+  <link name="base_link"/>
+  <link name="link1"/>
+  <link name="tool0"/>
+  <joint name="joint1" type="revolute">
+    <parent link="base_link"/><child link="link1"/>
+    <axis xyz="0 0 1"/><limit lower="-1.5" upper="1.5" effort="10" velocity="1"/>
+  </joint>
+  <joint name="tool_joint" type="fixed"><parent link="link1"/><child link="tool0"/></joint>
+</robot>"""
+"""The URDF the rules' examples are checked against (``urdf/example.urdf`` beside them)."""
+
+
+def _against(loaded: Loaded):
+    """The URDF's robot (None when there is none to check against)."""
+    described = loaded.described
+    if described is None or not described.modelled:
+        return None
+    return described.robot
+
+
+def _missing(loaded: Loaded, code: str, kind: str, named: Named, known, what: str) -> Diagnostic:
+    close = close_matches(named.name, list(known))
+    hint = f"did you mean '{close[0]}'?" if close else f"use a {kind} of {loaded.described.path}, or check that the SRDF is for this robot"
+    return loaded.diagnostic(code, f"{what} names {kind} '{named.name}', which {loaded.described.path} does not have", named.at, hint, attribute=named.attribute, subjects=(named.name,))
+
+
+@check(
+    "K001", "srdf-unknown-link", ERROR, "An SRDF names a link its URDF does not have", kind=Kind.SEMANTIC,
+    doc=explain(
+        """
+        Finds each link an SRDF names that the URDF of its robot does not have:
+        in a group (`<link>`, a chain's `base_link` and `tip_link`), an end
+        effector's `parent_link`, a virtual joint's `child_link` and a
+        `<disable_collisions>` pair.
+        """,
+        """
+        MoveIt's SRDF reader logs the unknown name and drops what holds it: the
+        group is built without that link (a chain not at all), the end effector
+        or virtual joint is skipped, the collision pair is checked after all.
+        It is a typo, or the SRDF of another version of the robot.
+        """,
+        '<robot name="example">\n  <group name="arm"><chain base_link="base_link" tip_link="tool_0"/></group>\n</robot>',
+        '<robot name="example">\n  <group name="arm"><chain base_link="base_link" tip_link="tool0"/></group>\n</robot>',
+    ),
+)
+def unknown_link(loaded: Loaded, given: Given) -> Iterator[Diagnostic]:
+    robot = _against(loaded)
+    if robot is None:
+        return
+    semantic = loaded.semantic
+    links = robot.links
+    named = []
+    for group in semantic.groups:
+        named += [(f"group '{group.name}'", link) for link in group.links]
+        named += [(f"the chain of group '{group.name}'", end) for chain in group.chains for end in (chain.base, chain.tip)]
+    named += [(f"end effector '{e.name}'", e.parent_link) for e in semantic.end_effectors if e.parent_link]
+    named += [(f"virtual joint '{v.name}'", v.child) for v in semantic.virtual_joints if v.child]
+    named += [("<disable_collisions>", link) for pair in semantic.disabled for link in pair]
+    for what, link in named:
+        if link.name not in links:
+            yield _missing(loaded, "K001", "link", link, links, what)
+
+
+@check(
+    "K002", "srdf-unknown-joint", ERROR, "An SRDF names a joint its URDF does not have", kind=Kind.SEMANTIC,
+    doc=explain(
+        """
+        Finds each joint an SRDF names that the URDF of its robot does not have:
+        in a group, in a group state, or as a passive joint. A virtual joint's
+        name is the SRDF's own and counts as a joint.
+        """,
+        """
+        MoveIt logs the unknown joint and leaves it out: the group lacks a degree
+        of freedom, the named state does not set it, the passive joint is
+        planned for as if it were driven.
+        """,
+        '<robot name="example">\n  <group name="arm"><joint name="joint_1"/></group>\n</robot>',
+        '<robot name="example">\n  <group name="arm"><joint name="joint1"/></group>\n</robot>',
+    ),
+)
+def unknown_joint(loaded: Loaded, given: Given) -> Iterator[Diagnostic]:
+    robot = _against(loaded)
+    if robot is None:
+        return
+    semantic = loaded.semantic
+    joints = set(robot.joints) | {v.name for v in semantic.virtual_joints}
+    named = [(f"group '{group.name}'", joint) for group in semantic.groups for joint in group.joints]
+    named += [(f"group state '{state.name}'", joint) for state in semantic.states for joint, _ in state.values]
+    named += [("<passive_joint>", joint) for joint in semantic.passive_joints]
+    for what, joint in named:
+        if joint.name not in joints:
+            yield _missing(loaded, "K002", "joint", joint, joints, what)
+
+
+@check(
+    "K003", "srdf-unknown-group", ERROR, "An SRDF refers to a group it does not define", kind=Kind.SEMANTIC,
+    doc=explain(
+        """
+        Finds each group an SRDF refers to but does not define: a subgroup, the
+        group of a group state, an end effector's `group` and `parent_group`.
+        """,
+        """
+        MoveIt skips the group state or end effector whose group is unknown, and
+        builds the group without the missing subgroup: `setNamedTarget("home")`
+        fails at run time with a state that is in the file.
+        """,
+        '<robot name="example">\n  <group name="arm"><chain base_link="base_link" tip_link="tool0"/></group>\n'
+        '  <group_state name="home" group="manipulator"><joint name="joint1" value="0"/></group_state>\n</robot>',
+        '<robot name="example">\n  <group name="arm"><chain base_link="base_link" tip_link="tool0"/></group>\n'
+        '  <group_state name="home" group="arm"><joint name="joint1" value="0"/></group_state>\n</robot>',
+    ),
+)
+def unknown_group(loaded: Loaded, given: Given) -> Iterator[Diagnostic]:
+    semantic = loaded.semantic
+    groups = semantic.group_names
+    named = [(f"group '{group.name}'", sub) for group in semantic.groups for sub in group.subgroups]
+    named += [(f"group state '{state.name}'", state.group) for state in semantic.states]
+    named += [(f"end effector '{e.name}'", g) for e in semantic.end_effectors for g in (e.group, e.parent_group) if g]
+    for what, group in named:
+        if group.name not in groups:
+            close = close_matches(group.name, list(groups))
+            hint = f"did you mean '{close[0]}'?" if close else "define the group, or name one the SRDF defines"
+            yield loaded.diagnostic("K003", f"{what} names group '{group.name}', which the SRDF does not define", group.at, hint, attribute=group.attribute)
+
+
+@check(
+    "K004", "srdf-broken-chain", ERROR, "A group's chain does not run from its base link down to its tip link", kind=Kind.SEMANTIC,
+    doc=explain(
+        """
+        Finds each `<chain>` whose `tip_link` is not below its `base_link` in the
+        URDF's tree (both links exist: K001 reports a missing one).
+        """,
+        """
+        MoveIt builds a chain group by walking up from the tip to the base; when
+        the base is not on that path the group is not built and every plan for
+        it fails. The two links are swapped, or belong to different branches.
+        """,
+        '<robot name="example">\n  <group name="arm"><chain base_link="tool0" tip_link="base_link"/></group>\n</robot>',
+        '<robot name="example">\n  <group name="arm"><chain base_link="base_link" tip_link="tool0"/></group>\n</robot>',
+    ),
+)
+def broken_chain(loaded: Loaded, given: Given) -> Iterator[Diagnostic]:
+    robot = _against(loaded)
+    if robot is None:
+        return
+    parents = _parents(loaded)
+    for group in loaded.semantic.groups:
+        for chain in group.chains:
+            base, tip = chain.base.name, chain.tip.name
+            if base not in robot.links or tip not in robot.links or base in _ancestors(tip, parents) or base == tip:
+                continue
+            swapped = tip in _ancestors(base, parents)
+            hint = "swap base_link and tip_link" if swapped else "give a base_link above the tip_link, on its branch of the tree"
+            yield loaded.diagnostic(
+                "K004", f"the chain of group '{group.name}' runs from '{base}' to '{tip}', but '{tip}' is not below '{base}' in the URDF",
+                chain.at, hint, subjects=(base, tip),
+            )
+
+
+def _parents(loaded: Loaded) -> dict[str, str]:
+    """Each link's parent link in the URDF (the first joint naming it as child)."""
+    return {child: joint.parent for child, joint in loaded.described.parent_joints.items() if joint.parent is not None}
+
+
+def _ancestors(link: str, parents: dict[str, str]) -> list[str]:
+    found, seen = [], {link}
+    while (link := parents.get(link)) is not None and link not in seen:
+        found.append(link)
+        seen.add(link)
+    return found
+
+
+@check(
+    "K005", "srdf-state-outside-limits", WARNING, "A group state sets a joint outside its limits", kind=Kind.SEMANTIC,
+    doc=explain(
+        """
+        Finds each value of a `<group_state>` outside the limits its joint has in
+        the URDF (a revolute or prismatic joint's `lower` and `upper`), and each
+        value that is not a number.
+        """,
+        """
+        MoveIt loads the state, but the robot cannot reach it: a plan to it is
+        refused as out of bounds. A limit was tightened in the URDF, or the value
+        is in degrees.
+        """,
+        '<robot name="example">\n  <group name="arm"><chain base_link="base_link" tip_link="tool0"/></group>\n'
+        '  <group_state name="home" group="arm"><joint name="joint1" value="90"/></group_state>\n</robot>',
+        '<robot name="example">\n  <group name="arm"><chain base_link="base_link" tip_link="tool0"/></group>\n'
+        '  <group_state name="home" group="arm"><joint name="joint1" value="1.2"/></group_state>\n</robot>',
+    ),
+)
+def state_outside_limits(loaded: Loaded, given: Given) -> Iterator[Diagnostic]:
+    robot = _against(loaded)
+    if robot is None:
+        return
+    for state in loaded.semantic.states:
+        for joint_name, text in state.values:
+            joint = robot.joints.get(joint_name.name)
+            if joint is None or joint.type not in ("revolute", "prismatic", "continuous"):
+                continue  # an unknown joint is K002's; a planar or floating joint takes several values
+            try:
+                value = float(text)
+            except ValueError:
+                yield loaded.diagnostic("K005", f"group state '{state.name}' gives joint '{joint.name}' the value '{text}', which is not a number", joint_name.at, attribute="value", subjects=(joint.name,))
+                continue
+            limit = joint.limit
+            if joint.type == "continuous" or limit is None:
+                continue
+            tolerance = 1e-9 * max(1.0, abs(limit.lower), abs(limit.upper))
+            if limit.lower - tolerance <= value <= limit.upper + tolerance:
+                continue
+            unit = "m" if joint.type == "prismatic" else "rad"
+            yield loaded.diagnostic(
+                "K005", f"group state '{state.name}' sets joint '{joint.name}' to {text}, outside its limits [{limit.lower:g}, {limit.upper:g}] {unit}",
+                joint_name.at, "give a value within the joint's limits (radians for a revolute joint)", attribute="value", subjects=(joint.name,),
+            )
+
+
+@check(
+    "K006", "srdf-state-joint-outside-group", WARNING, "A group state sets a joint that is not in its group", kind=Kind.SEMANTIC,
+    doc=explain(
+        """
+        Finds each joint a `<group_state>` sets that its group does not hold. A
+        group holds its joints, the parent joint of each of its links, the joints
+        of its chains (and the parent joint of each chain's base), and those of
+        its subgroups.
+        """,
+        """
+        MoveIt refuses such a state: it reports that the joint is not part of
+        the group and the named state is not there at run time.
+        """,
+        '<robot name="example">\n  <group name="tool"><link name="tool0"/></group>\n'
+        '  <group_state name="home" group="tool"><joint name="joint1" value="0"/></group_state>\n</robot>',
+        '<robot name="example">\n  <group name="arm"><chain base_link="base_link" tip_link="tool0"/></group>\n'
+        '  <group_state name="home" group="arm"><joint name="joint1" value="0"/></group_state>\n</robot>',
+    ),
+)
+def state_joint_outside_group(loaded: Loaded, given: Given) -> Iterator[Diagnostic]:
+    robot = _against(loaded)
+    if robot is None:
+        return
+    groups = {group.name: group for group in loaded.semantic.groups}
+    for state in loaded.semantic.states:
+        if state.group.name not in groups:
+            continue  # K003's
+        members = _group_joints(loaded, groups, state.group.name)
+        if members is None:
+            continue  # a group MoveIt cannot build as written: K001, K003 or K004 says why
+        for joint, _ in state.values:
+            if joint.name in robot.joints and joint.name not in members:
+                yield loaded.diagnostic(
+                    "K006", f"group state '{state.name}' sets joint '{joint.name}', which is not in group '{state.group.name}'",
+                    joint.at, f"set only the joints of group '{state.group.name}', or add the joint to it", subjects=(joint.name,),
+                )
+
+
+def _group_joints(loaded: Loaded, groups: dict, name: str, seen: frozenset = frozenset()) -> set[str] | None:
+    """The joints a group holds, as MoveIt builds it; None when a name in it (or in a
+    subgroup) is unknown, or a chain does not run down the tree."""
+    group = groups.get(name)
+    if group is None:
+        return None
+    if name in seen:
+        return set()
+    robot = loaded.described.robot
+    parent_joints = loaded.described.parent_joints
+    parents = _parents(loaded)
+    if any(joint.name not in robot.joints for joint in group.joints) or any(link.name not in robot.links for link in group.links):
+        return None
+    joints = {joint.name for joint in group.joints}
+    links = {link.name for link in group.links}
+    for chain in group.chains:
+        above = _ancestors(chain.tip.name, parents)
+        if chain.base.name not in above or chain.tip.name not in robot.links:
+            return None
+        links.update([chain.tip.name, *above[: above.index(chain.base.name) + 1]])
+    joints.update(parent_joints[link].name for link in links if link in parent_joints)
+    for sub in group.subgroups:
+        found = _group_joints(loaded, groups, sub.name, seen | {name})
+        if found is None:
+            return None
+        joints |= found
+    return joints
+
+
+@check(
+    "K007", "srdf-virtual-joint-not-at-root", ERROR, "A virtual joint's child is not the URDF's root link", kind=Kind.SEMANTIC,
+    doc=explain(
+        """
+        Finds each `<virtual_joint>` whose `child_link` exists in the URDF but is
+        not its root link.
+        """,
+        """
+        A virtual joint attaches the robot to the world: MoveIt uses it only when
+        its child is the root of the tree, and otherwise plans with the robot
+        fixed at the origin, whatever the joint's type says (a mobile base that
+        never moves in the planning scene).
+        """,
+        '<robot name="example">\n  <virtual_joint name="world_joint" type="fixed" parent_frame="world" child_link="link1"/>\n</robot>',
+        '<robot name="example">\n  <virtual_joint name="world_joint" type="fixed" parent_frame="world" child_link="base_link"/>\n</robot>',
+    ),
+)
+def virtual_joint_not_at_root(loaded: Loaded, given: Given) -> Iterator[Diagnostic]:
+    robot = _against(loaded)
+    root = loaded.described.root if robot is not None else None
+    if root is None:
+        return
+    for virtual in loaded.semantic.virtual_joints:
+        child = virtual.child
+        if child is not None and child.name in robot.links and child.name != root:
+            yield loaded.diagnostic(
+                "K007", f"virtual joint '{virtual.name}' has child '{child.name}', but the URDF's root link is '{root}'",
+                child.at, f"give child_link=\"{root}\"", attribute=child.attribute, subjects=(child.name,),
+            )
+
+
+K008 = declare(
+    "K008", "srdf-without-urdf", INFO, "No URDF of the SRDF's robot was found to check it against",
+    explain(
+        """
+        Says that an SRDF could not be checked against a URDF: no URDF or xacro
+        file of its package or workspace describes a robot of its name, or the
+        one found cannot be read or expanded (it needs xacro arguments), or the
+        robot named with `--urdf` has another name.
+        """,
+        """
+        The SRDF's names are not checked at all. MoveIt pairs the SRDF with the
+        `robot_description` of the same robot; a name mismatch is an error there.
+        """,
+        '<robot name="no_such_robot">\n  <group name="arm"><chain base_link="base_link" tip_link="tool0"/></group>\n</robot>',
+        '<robot name="example">\n  <group name="arm"><chain base_link="base_link" tip_link="tool0"/></group>\n</robot>',
+    ),
+    kind=Kind.READING,
+)
+
+__all__ = ["URDF"]

@@ -1,0 +1,199 @@
+"""A colcon workspace of several repositories (tests/ros_ws, built by
+ros_workspace.make_ros_workspace): fragments are checked through the models that read
+them, a library is attributed only to the models whose includes reach it, and a
+workspace lint says nothing false, nothing twice and nothing about another repository."""
+
+from __future__ import annotations
+
+import json
+import textwrap
+
+import pytest
+from conftest import run_cli
+from ros_workspace import make_ros_workspace
+
+BAXTER = "src/baxter_common/baxter_description/urdf"
+TALOS = "src/talos_robot/talos_description/urdf"
+
+
+@pytest.fixture(scope="module")
+def built(tmp_path_factory):
+    return make_ros_workspace(tmp_path_factory.mktemp("ros")).parent
+
+
+def lint_json(*args, cwd):
+    done = run_cli("lint", "--format", "json", *args, cwd=cwd)
+    return done, json.loads(done.stdout)
+
+
+def test_no_fragment_is_expanded_alone_in_a_workspace_lint(built):
+    """Baxter's end effectors (whose joints hang from the base's links), TALOS's common
+    parts (which read an argument its models declare) and its arms' transmissions (which
+    read the macro's 'name', included through ${side}): checked through their models."""
+    done, document = lint_json("src", cwd=built)
+    paths = [f["path"] for f in document["files"] if not (f.get("notes") and not f.get("checked_through") and not f["diagnostics"])]
+    for fragment in ("left_end_effector.urdf.xacro", "right_end_effector.urdf.xacro", "baxter_base.urdf.xacro", "talos_full_common.urdf.xacro",
+                     "left_arm.transmissions.urdf.xacro", "foot_collision_default.urdf.xacro"):
+        assert not any(p.endswith(fragment) for p in paths), fragment
+    found = [(d["code"], d["path"]) for f in document["files"] for d in f["diagnostics"]]
+    assert not [c for c in found if c[0] in ("J005", "R004", "M002", "I011") and "talos" not in c[1] and "franka" not in c[1]]
+    assert [c for c in found if c[0] == "X003"] == [
+        ("X003", "src/Universal_Robots_ROS2_Description/ur_description/urdf/ur.urdf.xacro"),  # needs name:=, as xacro says too
+        ("X003", "src/Universal_Robots_ROS2_Driver/ur_moveit_config/srdf/ur.srdf.xacro"),
+    ]
+    # what no model read is said once, with the include that could have named it
+    notes = {f["path"]: f["notes"] for f in document["files"] if f.get("notes")}
+    assert notes == {
+        "src/Universal_Robots_ROS2_Driver/ur_moveit_config/srdf/ur_macro.srdf.xacro": [
+            "not checked: included by src/Universal_Robots_ROS2_Driver/ur_moveit_config/srdf/ur.srdf.xacro, whose expansion did not read it (see what it says)"
+        ],
+        f"{TALOS}/leg/foot_collision_thinbox.urdf.xacro": [
+            f"not checked: no model read it; {TALOS}/talos_full_common.urdf.xacro includes "
+            "'$(find talos_description)/urdf/leg/foot_collision_$(arg foot_collision).urdf.xacro', a file name computed from what it is given"
+        ],
+    }
+    assert document["summary"]["files"] == 12  # the models, SRDFs and generated URDFs: not the notes
+
+
+@pytest.mark.parametrize(
+    ("fragment", "model"),
+    [
+        (f"{BAXTER}/left_end_effector.urdf.xacro", f"{BAXTER}/baxter.urdf.xacro"),
+        (f"{TALOS}/arm/left_arm.transmissions.urdf.xacro", "src/talos_robot/talos_description/robots/talos_full.urdf.xacro"),
+        (f"{TALOS}/talos_full_common.urdf.xacro", "src/talos_robot/talos_description/robots/talos_full.urdf.xacro"),
+    ],
+)
+def test_a_fragment_named_alone_is_checked_through_its_model(built, fragment, model):
+    """As the pre-commit hook names a changed file: no 'parent link does not exist', no
+    'name is not defined', no 'needs xacro argument'."""
+    done = run_cli("check", fragment, cwd=built)
+    assert done.returncode == 0
+    assert done.stderr.decode().splitlines() == [f"{fragment}: fragment, checked through {model}", "1 file checked: 0 errors, 0 warnings"]
+    assert done.stdout == b""
+
+
+@pytest.mark.parametrize("model", ["src/franka_ros/franka_description/robots/panda/panda.urdf.xacro", f"{BAXTER}/baxter_base/baxter_base.urdf.xacro"])
+def test_a_whole_model_that_another_includes_is_still_checked_as_itself(built, model):
+    done = run_cli("check", model, cwd=built)
+    assert done.returncode == 0 and done.stdout.decode().startswith("robot name is: ")
+
+
+def test_a_library_is_attributed_only_to_the_models_whose_includes_reach_it(built):
+    """PR2's base: a Kinova or TALOS model whose include is computed does not include it."""
+    done = run_cli("check", "src/pr2_common/pr2_description/urdf/base_v0/base.urdf.xacro", cwd=built)
+    lines = done.stderr.decode().splitlines()
+    assert lines == [
+        "src/pr2_common/pr2_description/urdf/base_v0/base.urdf.xacro: xacro library, checked through src/pr2_common/pr2_description/robots/pr2.urdf.xacro",
+        "1 file checked: 0 errors, 0 warnings",
+    ]
+    # A variant chosen by an argument: the model that may read it, and no other
+    done = run_cli("check", f"{TALOS}/leg/foot_collision_thinbox.urdf.xacro", cwd=built)
+    text = done.stderr.decode()
+    assert "talos_full.urdf.xacro" in text and "baxter" not in text and "franka" not in text and "pr2" not in text
+
+
+def test_a_package_missing_deep_in_an_expression_is_named_as_missing(tmp_path):
+    """load_yaml('$(find pkg)/...') in a property: X004 naming the package, and a library the
+    model includes is said not to be checked through it for that reason, not for its arguments."""
+    package = tmp_path / "repo" / "desc"
+    (tmp_path / "repo" / ".git").mkdir(parents=True)
+    (package / "urdf").mkdir(parents=True)
+    (package / "package.xml").write_text('<package format="2"><name>desc</name></package>\n')
+    (package / "urdf" / "wheel.xacro").write_text(
+        '<robot xmlns:xacro="http://ros.org/wiki/xacro"><xacro:macro name="wheel"><link name="w"/></xacro:macro></robot>\n'
+    )
+    (package / "urdf" / "robot.urdf.xacro").write_text(textwrap.dedent("""\
+        <robot name="r" xmlns:xacro="http://ros.org/wiki/xacro">
+          <xacro:property name="limits" value="${xacro.load_yaml('$(find lms1xx)/config/limits.yaml')}"/>
+          <link name="base${limits['suffix']}"/>
+          <xacro:include filename="$(find desc)/urdf/wheel.xacro"/>
+          <xacro:wheel/>
+        </robot>
+        """))
+    done = run_cli("check", "--format", "concise", "desc/urdf/robot.urdf.xacro", cwd=tmp_path / "repo")
+    assert done.stdout.decode() == f"desc/urdf/robot.urdf.xacro:2:3: X004 error: package 'lms1xx' not found (looked in {tmp_path / 'repo'})\n"
+    done = run_cli("check", "desc/urdf/wheel.xacro", cwd=tmp_path / "repo")
+    assert done.returncode == 0
+    assert done.stderr.decode().splitlines()[0] == (
+        f"desc/urdf/wheel.xacro: not checked through desc/urdf/robot.urdf.xacro: package 'lms1xx' not found (looked in {tmp_path / 'repo'})"
+    )
+
+
+# Everything a careful engineer reads in a lint of the whole workspace, and why each is true.
+EXPECTED = [
+    # ur.urdf.xacro and ur.srdf.xacro name the robot $(arg name) before declaring it: the real xacro fails too
+    ("X003", "error", "Universal_Robots_ROS2_Description/ur_description/urdf/ur.urdf.xacro", 2),
+    ("X003", "error", "Universal_Robots_ROS2_Driver/ur_moveit_config/srdf/ur.srdf.xacro", 2),
+    # Baxter writes <xacro:arg> inside <xacro:include>, which xacro ignores and says so
+    ("X005", "warning", "baxter_common/baxter_description/urdf/baxter.urdf.xacro", 5),
+    # husky_decorate makes fixed names: info (it can be called once per robot)
+    *[("X105", "info", "husky/husky_description/urdf/decorations.urdf.xacro", line) for line in (5, 14, 21, 30, 37, 45)],
+    # clearpath_platform_description (found) and sick_description (not found) used, not declared
+    ("P001", "warning", "husky/husky_description/urdf/decorations.urdf.xacro", 9),
+    ("D005", "warning", "husky/husky_description/urdf/decorations.urdf.xacro", 40),
+    ("P001", "warning", "husky/husky_description/urdf/decorations.urdf.xacro", 40),
+    # realsense2_description, included under a condition: a fresh workspace would not install it either
+    ("P001", "warning", "husky/husky_description/urdf/husky.urdf.xacro", 78),
+    ("D010", "info", "husky/husky_description/urdf/wheel.urdf.xacro", 43),  # <axis rpy>, which nothing reads
+    ("I011", "info", "franka_ros/franka_description/robots/common/utils.xacro", 5),  # a root with mass: KDL ignores it
+    # PR2's wheels carry the 3.47 kg caster body's tensor: only the wheels are named
+    ("I008", "warning", "pr2_common/pr2_description/urdf/base_v0/base.urdf.xacro", 38),
+    ("X105", "info", "talos_robot/talos_description/urdf/torso/torso.urdf.xacro", 4),
+    ("I011", "info", "talos_robot/talos_description/urdf/torso/torso.urdf.xacro", 5),
+]
+
+
+@pytest.mark.parametrize("absolute", [False, True], ids=["relative", "absolute"])
+def test_a_workspace_lint_says_what_is_true_once_and_nothing_else(built, absolute):
+    """Given as src or as its absolute path: each finding once, named relative to the
+    working folder, and nothing about fragments, SRDFs read as URDFs, or other repositories."""
+    done, document = lint_json(str(built / "src") if absolute else "src", cwd=built)
+    found = [(d["code"], d["severity"], d["path"], d["line"]) for f in document["files"] for d in f["diagnostics"]]
+    assert sorted(found) == sorted((code, severity, f"src/{path}", line) for code, severity, path, line in EXPECTED)
+    assert len(found) == len(set(found))
+    assert all(f["path"].startswith("src/") for f in document["files"])
+    pr2 = next(d for f in document["files"] for d in f["diagnostics"] if d["code"] == "I008")
+    assert "caster_rotation" not in pr2["message"] and "of 4 other links (3.473082 kg)" in pr2["message"]
+    assert done.returncode == 1
+
+
+def test_a_generated_urdf_says_only_what_its_source_does_not(built, tmp_path):
+    """pr2.urdf, generated from pr2.urdf.xacro: the wheels' copied tensor is said once, at
+    the xacro line that writes it. A copy edited by hand since says what the edit broke."""
+    import shutil
+
+    root = tmp_path / "ws"
+    shutil.copytree(built, root)
+    urdf = root / "src/pr2_common/pr2_description/robots/pr2.urdf"
+    text = urdf.read_text()
+    urdf.write_text(text.replace('<mass value="116.0"/>', '<mass value="-116.0"/>', 1))
+    done, document = lint_json("src/pr2_common", cwd=root)
+    found = sorted((d["code"], d["path"].split("/")[-1]) for f in document["files"] for d in f["diagnostics"])
+    assert ("I008", "base.urdf.xacro") in found and ("I008", "pr2.urdf") not in found
+    assert ("I001", "pr2.urdf") in found  # the negative mass is the copy's own
+
+
+def test_a_fragment_nothing_includes_is_named_once_without_its_missing_context(tmp_path):
+    """TALOS's left_arm.transmissions.urdf.xacro without the arm that includes it: its
+    <robot> has no name and it reads the macro's 'name'; one note, no error, not counted."""
+    package = tmp_path / "repo" / "pkg"
+    (tmp_path / "repo" / ".git").mkdir(parents=True)
+    (package / "urdf").mkdir(parents=True)
+    (package / "package.xml").write_text('<package format="2"><name>pkg</name></package>\n')
+    (package / "urdf" / "t.xacro").write_text(
+        '<robot xmlns:xacro="http://ros.org/wiki/xacro"><xacro:macro name="trans" params="name side">'
+        '<transmission name="${name}_${side}"/></xacro:macro></robot>\n'
+    )
+    fragment = package / "urdf" / "left_arm.transmissions.urdf.xacro"
+    fragment.write_text(
+        '<robot xmlns:xacro="http://ros.org/wiki/xacro">\n  <xacro:include filename="$(find pkg)/urdf/t.xacro"/>\n'
+        '  <xacro:trans name="${name}" side="left"/>\n</robot>\n'
+    )
+    for given in ("pkg", "pkg/urdf/left_arm.transmissions.urdf.xacro"):
+        done = run_cli("lint", given, cwd=tmp_path / "repo")
+        assert done.returncode == 0, done.stdout.decode()
+        assert done.stdout.decode().splitlines() == [
+            "pkg/urdf/left_arm.transmissions.urdf.xacro: a fragment (its <robot> has no name) that no model includes: "
+            "not checked (name 'name' is not defined, when evaluating expression 'name')",
+            "0 files checked: 0 errors, 0 warnings",
+        ]

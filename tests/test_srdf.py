@@ -1,0 +1,179 @@
+"""MoveIt's SRDF: recognised by name and by content, never checked as a URDF, and checked
+against the URDF of its robot (found in its package or workspace, or given with --urdf),
+each finding at the SRDF line where the name was written. The MoveIt config packages are
+those of the test workspace (tests/ros_ws), built like panda_moveit_config and ur_moveit_config."""
+
+from __future__ import annotations
+
+import json
+import shutil
+
+import pytest
+from conftest import run_cli
+from ros_workspace import edit, line_of, make_ros_workspace
+
+PANDA = "src/panda_moveit_config/config"
+
+
+@pytest.fixture(scope="module")
+def built(tmp_path_factory):
+    return make_ros_workspace(tmp_path_factory.mktemp("ros"))
+
+
+@pytest.fixture
+def workspace(built, tmp_path):
+    """A copy of the workspace to change (its root: the folder holding src/)."""
+    root = tmp_path / "ws"
+    shutil.copytree(built.parent, root)
+    return root
+
+
+def check(*args, cwd):
+    done = run_cli("check", "--format", "json", *args, cwd=cwd)
+    return done, json.loads(done.stdout or b"null")
+
+
+def found(document) -> list[tuple[str, str, int, int]]:
+    return [(d["code"], d["path"], d["line"], d["column"]) for f in document["files"] for d in f["diagnostics"]]
+
+
+def test_a_moveit_config_checks_clean(built):
+    """panda_moveit_config: its SRDF macros (panda_arm.xacro, hand.xacro), the .srdf.xacro
+    files that call them, and the generated panda.srdf: no R004 'no <link>', no note on
+    <group> or <disable_collisions>, each checked against the URDF of robot 'panda'."""
+    files = [f"{PANDA}/panda_arm.xacro", f"{PANDA}/hand.xacro", f"{PANDA}/panda_arm.srdf.xacro", f"{PANDA}/panda_arm_hand.srdf.xacro", f"{PANDA}/panda.srdf"]
+    done, document = check(*files, cwd=built.parent)
+    assert done.returncode == 0 and found(document) == []
+    lint = run_cli("lint", "--format", "concise", *files, cwd=built.parent)
+    assert lint.returncode == 0, lint.stdout.decode()
+    assert lint.stdout.decode() == ""
+    text = run_cli("check", f"{PANDA}/panda.srdf", cwd=built.parent)
+    assert text.stdout.decode() == (
+        "SRDF of robot: panda\n3 groups, 4 group states, 1 end effector; checked against src/panda_moveit_config/config/panda.urdf.xacro\n"
+    )
+
+
+def test_each_name_is_checked_at_the_srdf_line_that_gives_it(workspace):
+    arm, hand = workspace / PANDA / "panda_arm.xacro", workspace / PANDA / "panda_arm_hand.srdf.xacro"
+    edit(arm, 'tip_link="${arm_id}_link8"', 'tip_link="${arm_id}_link9"')  # K001, in the macro
+    edit(arm, '<joint name="${arm_id}_joint4" value="-2.356" />', '<joint name="${arm_id}_joint4" value="-0.01" />')  # K005
+    edit(arm, 'child_link="${arm_id}_link0"', 'child_link="${arm_id}_link1"')  # K007
+    edit(hand, 'group="hand" parent_group', 'group="hands" parent_group')  # K003
+    edit(hand, 'link1="$(arg arm_id)_hand" link2="$(arg arm_id)_link3"', 'link1="$(arg arm_id)_hand" link2="$(arg arm_id)_link33"')  # K001
+    edit(hand, "</robot>", '  <group name="wrist"><chain base_link="$(arg arm_id)_link7" tip_link="$(arg arm_id)_link5"/></group>\n'
+                           '  <passive_joint name="$(arg arm_id)_finger_joint3"/>\n</robot>')  # K004, K002
+    done, document = check(f"{PANDA}/panda_arm_hand.srdf.xacro", cwd=workspace)
+    assert done.returncode == 1
+    arm_file, hand_file = f"{PANDA}/panda_arm.xacro", f"{PANDA}/panda_arm_hand.srdf.xacro"
+    assert sorted(found(document)) == sorted([
+        ("K001", arm_file, line_of(arm, "_link9"), 42),  # at tip_link=, where the name is written
+        ("K005", arm_file, line_of(arm, 'value="-0.01"'), 38),
+        ("K007", arm_file, line_of(arm, "<virtual_joint"), 78),
+        ("K003", hand_file, line_of(hand, 'group="hands"'), 63),
+        ("K001", hand_file, line_of(hand, "_link33"), 50),
+        ("K004", hand_file, line_of(hand, '<group name="wrist">'), 23),
+        ("K002", hand_file, line_of(hand, "finger_joint3"), 18),
+    ])
+    messages = {d["code"]: d["message"] for f in document["files"] for d in f["diagnostics"]}
+    assert messages["K005"] == "group state 'ready' sets joint 'panda_joint4' to -0.01, outside its limits [-3.0718, -0.0698] rad"
+    assert messages["K007"] == "virtual joint 'virtual_joint' has child 'panda_link1', but the URDF's root link is 'panda_link0'"
+    assert messages["K004"] == "the chain of group 'wrist' runs from 'panda_link7' to 'panda_link5', but 'panda_link5' is not below 'panda_link7' in the URDF"
+    hints = {d["code"]: d["hint"] for f in document["files"] for d in f["diagnostics"]}
+    assert hints["K004"] == "swap base_link and tip_link" and hints["K003"] == "did you mean 'hand'?"
+    # a macro's finding says which call made it
+    trace = next(d["trace"] for f in document["files"] for d in f["diagnostics"] if d["code"] == "K005")
+    assert trace[0]["path"] == hand_file and trace[0]["macro"] == "panda_arm"
+
+
+def test_the_generated_srdf_is_checked_too(workspace):
+    srdf = workspace / PANDA / "panda.srdf"
+    edit(srdf, '<joint name="panda_finger_joint1"/>', '<joint name="panda_finger_joint_1"/>')
+    done, document = check(f"{PANDA}/panda.srdf", cwd=workspace)
+    assert done.returncode == 1
+    assert found(document) == [("K002", f"{PANDA}/panda.srdf", line_of(srdf, "panda_finger_joint_1"), 12)]
+    assert document["files"][0]["diagnostics"][0]["hint"] == "did you mean 'panda_finger_joint1'?"
+
+
+def test_urdf_option_names_the_urdf_and_a_mismatch_is_said(built):
+    root = built.parent
+    done, document = check("--urdf", "src/franka_ros/franka_description/robots/panda/panda.urdf", f"{PANDA}/panda.srdf", cwd=root)
+    assert done.returncode == 0 and found(document) == []
+    done, document = check("--urdf", "src/pr2_common/pr2_description/robots/pr2.urdf.xacro", f"{PANDA}/panda.srdf", cwd=root)
+    codes = [d["code"] for d in document["files"][0]["diagnostics"]]
+    assert done.returncode == 1 and codes[0] == "K008" and set(codes[1:]) == {"K001", "K002"}
+    first = document["files"][0]["diagnostics"][0]
+    assert first["severity"] == "warning" and first["message"] == (
+        "the SRDF is for robot 'panda', but src/pr2_common/pr2_description/robots/pr2.urdf.xacro describes robot 'pr2'"
+    )
+
+
+def test_an_srdf_without_urdf_is_one_note_and_no_error(tmp_path):
+    srdf = tmp_path / "moveit" / "config" / "robot.srdf"
+    srdf.parent.mkdir(parents=True)
+    srdf.write_text('<robot name="lonely">\n  <group name="arm"><chain base_link="a" tip_link="b"/></group>\n</robot>\n')
+    done, document = check(str(srdf), cwd=tmp_path)
+    assert done.returncode == 0
+    [diagnostic] = document["files"][0]["diagnostics"]
+    assert (diagnostic["code"], diagnostic["severity"], diagnostic["line"]) == ("K008", "info", 1)
+    assert diagnostic["message"] == "no URDF of robot 'lonely' found in the SRDF's package or workspace: its names are not checked"
+
+
+def test_a_xacro_file_expanding_to_an_srdf_is_one(tmp_path):
+    """Named neither .srdf nor .srdf.xacro: what its expansion holds says it is an SRDF."""
+    package = tmp_path / "arm_moveit_config"
+    (package / "config").mkdir(parents=True)
+    (package / "package.xml").write_text('<package format="3"><name>arm_moveit_config</name></package>\n')
+    (package / "config" / "arm.urdf").write_text(
+        '<robot name="arm"><link name="base"/><link name="tool"/>'
+        '<joint name="j" type="revolute"><parent link="base"/><child link="tool"/><limit lower="-1" upper="1" effort="1" velocity="1"/></joint></robot>\n'
+    )
+    (package / "config" / "arm.xacro").write_text(
+        '<robot name="arm" xmlns:xacro="http://www.ros.org/wiki/xacro">\n'
+        '  <xacro:property name="tip" value="tool"/>\n'
+        '  <group name="arm"><chain base_link="base" tip_link="${tip}"/></group>\n'
+        '  <group_state name="home" group="arm"><joint name="j" value="2"/></group_state>\n'
+        "</robot>\n"
+    )
+    done, document = check(str(package / "config" / "arm.xacro"), cwd=tmp_path)
+    assert [(d["code"], d["line"]) for d in document["files"][0]["diagnostics"]] == [("K005", 4)]
+    assert done.returncode == 0  # a warning: check fails on errors only
+
+
+def test_lint_finds_the_srdf_files_of_a_folder(built):
+    done = run_cli("lint", "--format", "json", "src/panda_moveit_config", cwd=built.parent)
+    paths = [f["path"] for f in json.loads(done.stdout)["files"]]
+    assert paths == [f"src/panda_moveit_config/config/{name}" for name in ("panda.srdf", "panda.urdf.xacro", "panda_arm.srdf.xacro", "panda_arm_hand.srdf.xacro")]
+    assert done.returncode == 0, done.stdout.decode()
+
+
+@pytest.mark.parametrize("command", ["tree", "graph", "inertia"])
+def test_an_srdf_is_not_drawn_or_audited_but_says_what_to_do(built, command):
+    done = run_cli(command, f"{PANDA}/panda.srdf", cwd=built.parent)
+    assert done.returncode == 2 and done.stdout == b""
+    assert done.stderr.decode() == (
+        f"urdfcli: {PANDA}/panda.srdf: an SRDF (MoveIt's semantic description), which has no links of its own; "
+        f"`urdfcli check {PANDA}/panda.srdf` checks it against its URDF\n"
+    )
+
+
+def test_the_library_api_checks_an_srdf(built, monkeypatch):
+    import urdfcli
+
+    monkeypatch.chdir(built.parent)
+    result = urdfcli.check(f"{PANDA}/panda_arm_hand.srdf.xacro")
+    assert result.diagnostics == () and result.robot is None and result.loaded.described.robot.name == "panda"
+
+
+def test_ur_moveit_config_checks_clean_once_its_name_argument_is_configured(workspace):
+    """ur.srdf.xacro and ur.urdf.xacro both name the robot $(arg name) before declaring
+    it (xacro needs name:=...): listed in [models], the SRDF, its macro library and
+    the URDF check clean, the SRDF against the URDF of robot 'ur'."""
+    (workspace / "urdfcli.toml").write_text(
+        '[models]\n"src/Universal_Robots_ROS2_Description/ur_description/urdf/ur.urdf.xacro" = [["name:=ur"]]\n'
+        '"src/Universal_Robots_ROS2_Driver/ur_moveit_config/srdf/ur.srdf.xacro" = [["name:=ur"]]\n'
+    )
+    srdf = "src/Universal_Robots_ROS2_Driver/ur_moveit_config/srdf"
+    done = run_cli("check", f"{srdf}/ur.srdf.xacro", f"{srdf}/ur_macro.srdf.xacro", cwd=workspace)
+    assert done.returncode == 0, done.stderr.decode()
+    assert "checked against src/Universal_Robots_ROS2_Description/ur_description/urdf/ur.urdf.xacro" in done.stdout.decode()
+    assert done.stderr.decode().endswith("2 files checked: 0 errors, 0 warnings\n")
