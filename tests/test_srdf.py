@@ -177,3 +177,46 @@ def test_ur_moveit_config_checks_clean_once_its_name_argument_is_configured(work
     assert done.returncode == 0, done.stderr.decode()
     assert "checked against src/Universal_Robots_ROS2_Description/ur_description/urdf/ur.urdf.xacro" in done.stdout.decode()
     assert done.stderr.decode().endswith("2 files checked: 0 errors, 0 warnings\n")
+
+
+ARM = (
+    '<robot name="{name}"><link name="base"/><link name="{tip}"/>'
+    '<joint name="{joint}" type="revolute"><parent link="base"/><child link="{tip}"/><limit lower="-1" upper="1" effort="1" velocity="1"/></joint></robot>\n'
+)
+
+
+def test_the_urdf_nearest_the_srdf_and_named_as_it_is_chosen(tmp_path):
+    """One package holding several robots of one name (example-robot-data's anymal_b and
+    anymal_c, alex's three hands): the SRDF is checked against the URDF of its own folder,
+    and of the variants there, the one its file is named after."""
+    data = tmp_path / "robot_data"
+    (data / "robots").mkdir(parents=True)
+    (data / "package.xml").write_text("<package format=\"3\"><name>robot_data</name></package>\n")
+    for folder, stem, tip in (("a_description/robots", "arm", "a_tip"), ("b_description/urdf", "arm", "b_tip"), ("b_description/urdf", "arm_hand", "hand")):
+        (data / "robots" / folder).mkdir(parents=True, exist_ok=True)
+        (data / "robots" / folder / f"{stem}.urdf").write_text(ARM.format(name="arm", tip=tip, joint="j"))
+    srdf = data / "robots" / "b_description" / "srdf"
+    srdf.mkdir()
+    (srdf / "arm_hand.srdf").write_text('<robot name="arm">\n  <group name="arm"><chain base_link="base" tip_link="hand"/></group>\n</robot>\n')
+    done, document = check(str(srdf / "arm_hand.srdf"), cwd=tmp_path)
+    assert (done.returncode, found(document)) == (0, [])
+    text = run_cli("check", str(srdf / "arm_hand.srdf"), cwd=tmp_path).stdout.decode()
+    assert text.endswith("checked against robot_data/robots/b_description/urdf/arm_hand.urdf\n")
+
+
+def test_pinocchio_reference_configurations_are_no_mistake(tmp_path):
+    """example-robot-data's SRDFs name reference configurations in an empty group 'all',
+    the floating base Pinocchio adds ('root_joint', seven values) among them: MoveIt's
+    rules K002 and K006 leave both alone; a joint the URDF lacks is still found."""
+    package = tmp_path / "biped_description"
+    (package / "urdf").mkdir(parents=True)
+    (package / "srdf").mkdir()
+    (package / "package.xml").write_text("<package format=\"3\"><name>biped_description</name></package>\n")
+    (package / "urdf" / "biped.urdf").write_text(ARM.format(name="biped", tip="leg", joint="hip"))
+    (package / "srdf" / "biped.srdf").write_text(
+        '<robot name="biped">\n  <group name="all"/>\n  <group_state name="standing" group="all">\n'
+        '    <joint name="root_joint" value="0 0 1 0 0 0 1"/>\n    <joint name="hip" value="0.5"/>\n    <joint name="knee" value="0.5"/>\n'
+        "  </group_state>\n</robot>\n"
+    )
+    done, document = check(str(package / "srdf" / "biped.srdf"), cwd=tmp_path)
+    assert [(d["code"], d["line"]) for d in document["files"][0]["diagnostics"]] == [("K002", 6)]

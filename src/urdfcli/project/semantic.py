@@ -4,8 +4,11 @@ MoveIt pairs an SRDF with the ``robot_description`` of the same robot. Without
 a launch file to tell, the URDF is looked for by the robot's name: in the
 SRDF's own package, then in the packages its package.xml depends on, then in
 the repository or workspace around it (see :func:`urdfcli.project.workspace.search_roots`).
-In each place a xacro source comes before a generated URDF, and a top-level
-model before a file another one includes. A robot's name is read from its
+In each place the files nearest the SRDF come first (those of its own robot's
+folder, where one package holds several robots), then one named as the SRDF is
+(``alex_psyonic_hands.urdf`` for ``alex_psyonic_hands.srdf``, where several
+variants share a robot name), then a top-level model before a file another one
+includes, and a xacro source before a generated URDF. A robot's name is read from its
 ``<robot name=...>`` as written (``$(arg name)`` resolved from the argument's
 default or the ``[tool.urdfcli] models`` setting), and confirmed by loading
 the model. ``--urdf FILE`` names the URDF instead.
@@ -13,6 +16,7 @@ the model. ``--urdf FILE`` names the URDF instead.
 
 from __future__ import annotations
 
+import os
 import re
 from collections.abc import Callable, Iterator
 from pathlib import Path
@@ -66,11 +70,21 @@ def candidates(srdf: Path, index: Index, arguments_for: Callable[[Path], dict[st
     for folder, below in folders:
         files = [f.resolve() for f in source_files(folder, below) if not named_srdf(f.name)]
         included = {Path(i.value) for f in files if f.name.endswith(".xacro") for i in index.includes(f) if i.kind == "path"}
-        order = sorted(files, key=lambda f: (f in included, f.name.endswith(".urdf"), str(f)))
+        order = sorted(files, key=lambda f: (-_shared(f, srdf), _stem(f) != _stem(srdf), f in included, f.name.endswith(".urdf"), str(f)))
         for file in order:
             if file not in seen:
                 seen.add(file)
                 yield file
+
+
+def _shared(file: Path, srdf: Path) -> int:
+    """How many folders a file shares with the SRDF's path: the more, the nearer."""
+    return len(Path(os.path.commonpath([file.parent, srdf.parent])).parts)
+
+
+def _stem(file: Path) -> str:
+    """A file's name without its suffixes: ``alex_psyonic_hands`` of ``alex_psyonic_hands.srdf.xacro``."""
+    return file.name.split(".")[0]
 
 
 def described(

@@ -94,7 +94,10 @@ def unknown_link(loaded: Loaded, given: Given) -> Iterator[Diagnostic]:
         """
         Finds each joint an SRDF names that the URDF of its robot does not have:
         in a group, in a group state, or as a passive joint. A virtual joint's
-        name is the SRDF's own and counts as a joint.
+        name is the SRDF's own and counts as a joint, and so does a group state's
+        joint given seven values (a position and a quaternion): the floating base
+        a loader adds, as Pinocchio's `root_joint` (its SRDFs set it without a
+        virtual joint).
         """,
         """
         MoveIt logs the unknown joint and leaves it out: the group lacks a degree
@@ -112,7 +115,7 @@ def unknown_joint(loaded: Loaded, given: Given) -> Iterator[Diagnostic]:
     semantic = loaded.semantic
     joints = set(robot.joints) | {v.name for v in semantic.virtual_joints}
     named = [(f"group '{group.name}'", joint) for group in semantic.groups for joint in group.joints]
-    named += [(f"group state '{state.name}'", joint) for state in semantic.states for joint, _ in state.values]
+    named += [(f"group state '{state.name}'", joint) for state in semantic.states for joint, value in state.values if len(value.split()) != 7]
     named += [("<passive_joint>", joint) for joint in semantic.passive_joints]
     for what, joint in named:
         if joint.name not in joints:
@@ -247,10 +250,13 @@ def state_outside_limits(loaded: Loaded, given: Given) -> Iterator[Diagnostic]:
     "K006", "srdf-state-joint-outside-group", WARNING, "A group state sets a joint that is not in its group", kind=Kind.SEMANTIC,
     doc=explain(
         """
-        Finds each joint a `<group_state>` sets that its group does not hold. A
-        group holds its joints, the parent joint of each of its links, the joints
-        of its chains (and the parent joint of each chain's base), and those of
-        its subgroups.
+        Finds the joints a `<group_state>` sets that its group does not hold, said
+        once per state at the first of them. A group holds its joints, the parent
+        joint of each of its links, the joints of its chains (and the parent joint
+        of each chain's base), and those of its subgroups. A group that holds
+        nothing at all is left alone: Pinocchio's SRDFs write an empty `all` group
+        to name reference configurations, and Pinocchio reads every joint of the
+        state.
         """,
         """
         MoveIt refuses such a state: it reports that the joint is not part of
@@ -270,15 +276,21 @@ def state_joint_outside_group(loaded: Loaded, given: Given) -> Iterator[Diagnost
     for state in loaded.semantic.states:
         if state.group.name not in groups:
             continue  # K003's
+        group = groups[state.group.name]
+        if not (group.links or group.joints or group.chains or group.subgroups):
+            continue  # an empty group names a configuration of the whole robot (Pinocchio's reference configurations)
         members = _group_joints(loaded, groups, state.group.name)
         if members is None:
             continue  # a group MoveIt cannot build as written: K001, K003 or K004 says why
-        for joint, _ in state.values:
-            if joint.name in robot.joints and joint.name not in members:
-                yield loaded.diagnostic(
-                    "K006", f"group state '{state.name}' sets joint '{joint.name}', which is not in group '{state.group.name}'",
-                    joint.at, f"set only the joints of group '{state.group.name}', or add the joint to it", subjects=(joint.name,),
-                )
+        outside = [joint for joint, _ in state.values if joint.name in robot.joints and joint.name not in members]
+        if outside:
+            names = ", ".join(f"'{joint.name}'" for joint in outside[:4]) + (f" and {len(outside) - 4} more" if len(outside) > 4 else "")
+            joints = "joint" if len(outside) == 1 else f"{len(outside)} joints"
+            yield loaded.diagnostic(
+                "K006", f"group state '{state.name}' sets {joints} {names}, not in group '{state.group.name}'",
+                outside[0].at, f"set only the joints of group '{state.group.name}', or add the joints to it",
+                subjects=tuple(joint.name for joint in outside),
+            )
 
 
 def _group_joints(loaded: Loaded, groups: dict, name: str, seen: frozenset = frozenset()) -> set[str] | None:
