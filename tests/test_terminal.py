@@ -106,6 +106,20 @@ def test_lint_of_published_models_with_their_meshes_shows_progress_then_every_di
     assert "internal error" not in shown and "Traceback" not in shown
 
 
+def test_the_concise_summary_is_a_line_of_its_own_on_a_terminal():
+    """The concise format writes its diagnostics on standard output and the summary on
+    standard error: on one terminal, after the progress bar, the summary starts a line."""
+    data = example_robot_data()
+    robots = data / "robots"
+    models = [robots / "ur_description/urdf/ur5_robot.urdf", robots / "panda_description/urdf/panda.urdf", robots / "z1_description/urdf/z1.urdf"]
+    out, code = on_terminal("lint", "--format", "concise", "-P", f"example-robot-data={data}", *map(str, models))
+    lines = text(out[max(0, out.rfind(SHOW_CURSOR)):]).splitlines()
+    assert code == 1
+    summary = [line for line in lines if "files checked:" in line]
+    assert len(summary) == 1 and re.fullmatch(r"3 files checked: \d+ errors?, \d+ warnings?(, \d+ info)?", summary[0]), summary
+    assert all(re.match(r"\S+\.urdf:\d+:\d+: [A-Z]\d{3} ", line) for line in lines[: lines.index(summary[0])])
+
+
 def test_a_workspace_lint_on_a_terminal_fits_its_width(tmp_path):
     """The test workspace on a terminal 100 columns wide: no line longer than that beside
     the one path it names, every finding once, and nothing left of the progress bar."""
