@@ -479,6 +479,38 @@ def test_diff_writes_nothing_and_applies_with_patch(cli, here):
     assert (nothing.returncode, nothing.stdout) == (0, b"")
 
 
+LATIN_1_ARM = (  # a fixed line that holds a character of the declared encoding
+    "<?xml version='1.0' encoding='ISO-8859-1'?>\n<robot name='arm'>\n  <link name='base_link'/>\n  <link name='arm_link'/>\n"
+    "  <joint name='arm_joint' type='revolute'><parent link='base_link'/><child link='arm_link'/>\n"
+    "    <limit lower='1.57' upper='-1.57' effort='10' velocity='1'/> <!-- \xe9paule -->\n  </joint>\n</robot>\n"
+).encode("latin-1")
+
+
+def test_the_diff_of_a_file_in_another_encoding_applies_with_patch(here):
+    put(here, {"arm.urdf": LATIN_1_ARM})
+    done = run_cli("lint", "--isolated", "--diff", "--unsafe-fixes", "arm.urdf", cwd=here)
+    assert done.returncode == 1 and b"-    <limit lower='1.57' upper='-1.57' effort='10' velocity='1'/> <!-- \xe9paule -->\n" in done.stdout
+    applied = subprocess.run([require_tool("patch"), "-p1"], input=done.stdout, cwd=here, capture_output=True)
+    assert applied.returncode == 0, applied.stdout
+    assert (here / "arm.urdf").read_bytes() == LATIN_1_ARM.replace(b"lower='1.57' upper='-1.57'", b"lower='-1.57' upper='1.57'")
+
+
+def test_the_diff_names_a_file_given_by_its_absolute_path_as_patch_finds_it(here):
+    put(here, {"urdf/arm.urdf": ARM})
+    done = run_cli("lint", "--isolated", "--diff", "--unsafe-fixes", str(here / "urdf" / "arm.urdf"), cwd=here)
+    assert done.stdout.startswith(b"--- a/urdf/arm.urdf\n+++ b/urdf/arm.urdf\n"), done.stdout[:200]
+    applied = subprocess.run([require_tool("patch"), "-p1"], input=done.stdout, cwd=here, capture_output=True)
+    assert applied.returncode == 0, applied.stdout
+
+
+def test_a_fixed_file_reached_through_a_symbolic_link_is_written_where_it_is(cli, here):
+    put(here, {"description/urdf/arm.urdf": ARM})
+    (here / "arm.urdf").symlink_to(here / "description" / "urdf" / "arm.urdf")
+    cli("lint", "--isolated", "--fix", "--unsafe-fixes", "arm.urdf")
+    assert (here / "arm.urdf").is_symlink()  # the link kept, the file it names fixed
+    assert (here / "description/urdf/arm.urdf").read_text() != ARM and "rpy='0 0 1.570796'" in (here / "arm.urdf").read_text()
+
+
 def test_add_noqa_silences_what_remains(cli, here):
     put(here, {"arm.urdf": ARM})
     done = cli("lint", "--isolated", "--add-noqa", "arm.urdf")

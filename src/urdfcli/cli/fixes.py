@@ -106,9 +106,16 @@ def print_diff(outcome: Outcome, output: Output) -> None:
     """The unified diff of every change, on standard output; what it would fix, on standard error."""
     from ..read.edits import unified_diff
 
+    out = output.out.file
+    out.flush()
+    binary = getattr(out, "buffer", None)  # the diff is the files' own bytes, whatever their encoding
     for file, (before, after) in outcome.changed.items():
-        output.out.file.write(unified_diff(file, before, after))
-    output.out.file.flush()
+        diff = unified_diff(file, before, after)
+        if binary is not None:
+            binary.write(diff)
+        else:
+            out.write(diff.decode("utf-8", "replace"))
+    (binary or out).flush()
     fixes = len(outcome.fixed.fixed)
     if outcome.changed:
         what = [_fixes(fixes)] if fixes else []

@@ -83,8 +83,9 @@ def apply(data: bytes, edits: Iterable[tuple[int, int, str]]) -> bytes:
 
 
 def write(path: str | os.PathLike, data: bytes) -> None:
-    """Replace the file at ``path`` by ``data`` atomically, keeping its permissions."""
-    target = Path(path)
+    """Replace the file at ``path`` by ``data`` atomically, keeping its permissions; a
+    symbolic link is kept, and the file it names replaced."""
+    target = Path(os.path.realpath(path))
     mode = target.stat().st_mode & 0o7777 if target.exists() else None
     handle, temporary = tempfile.mkstemp(prefix=f".{target.name}.", suffix=".urdfcli", dir=target.parent)
     try:
@@ -103,17 +104,25 @@ def write(path: str | os.PathLike, data: bytes) -> None:
         raise
 
 
-def unified_diff(name: str, old: bytes, new: bytes) -> str:
-    """The unified diff that makes ``new`` of ``old`` (``--- a/NAME`` ``+++ b/NAME``), as
-    ``patch -p1`` applies it; line ends kept as they are."""
+def unified_diff(name: str, old: bytes, new: bytes) -> bytes:
+    """The unified diff that makes ``new`` of ``old`` (``--- a/NAME`` ``+++ b/NAME``, NAME
+    relative to the working folder when the file is below it), as ``patch -p1`` applies
+    it: lines compared as bytes, so that line ends and the file's encoding are kept."""
     import difflib
 
-    codec = _codec(old)
-    before = old.decode(codec, errors="replace").splitlines(keepends=True)
-    after = new.decode(_codec(new), errors="replace").splitlines(keepends=True)
+    shown = os.path.relpath(name) if os.path.isabs(name) and _below(name, os.getcwd()) else name
     lines = []
-    for line in difflib.unified_diff(before, after, f"a/{name}", f"b/{name}"):
+    for line in difflib.diff_bytes(
+        difflib.unified_diff, old.splitlines(keepends=True), new.splitlines(keepends=True), os.fsencode(f"a/{shown}"), os.fsencode(f"b/{shown}")
+    ):
         lines.append(line)
-        if not line.endswith(("\n", "\r")):
-            lines.append("\n\\ No newline at end of file\n")
-    return "".join(lines)
+        if not line.endswith((b"\n", b"\r")):
+            lines.append(b"\n\\ No newline at end of file\n")
+    return b"".join(lines)
+
+
+def _below(path: str, folder: str) -> bool:
+    try:
+        return os.path.commonpath([path, folder]) == folder
+    except ValueError:  # another drive
+        return False
