@@ -184,21 +184,27 @@ def apply(diagnostics: list[Diagnostic], suppressions: list[Suppression], enable
 UNSILENCEABLE = (X001.code, X002.code, U001.code, U002.code)
 
 
-def noqa_edit(source: Text, line: int, codes: list[str], column: int | None = None) -> tuple[int, int, str] | None:
+def noqa_edit(source: Text, line: int | None, codes: list[str], column: int | None = None) -> tuple[int, int, str] | None:
     """The edit (start, end, text) of ``source``'s text that silences ``codes`` on the
     element at ``line`` (and ``column``; the element whose start tag holds that place):
     the codes added to a ``noqa`` comment already on the element's line or alone on
     the line above, else a comment of its own on a new line above the element,
-    indented as it is. None when nothing needs writing (a bare ``noqa`` is there
-    already) or no comment can be written there."""
+    indented as it is. A diagnostic on the whole file (no line, or the XML declaration,
+    as a generated URDF's drift is) gets a ``noqa-file`` comment instead. None when
+    nothing needs writing (a bare ``noqa`` is there already) or no comment can be
+    written there."""
     codes = [c for c in dict.fromkeys(codes) if c not in UNSILENCEABLE]
+    if not codes:
+        return None
+    if line is None:
+        return _noqa_file_edit(source, codes)
     text = source.line(line)
-    if text is None or not codes:
+    if text is None:
         return None
     line = _element_line(source, line, column)
     text = source.line(line)
     if "<?xml" in text:
-        return None  # nothing may come before the XML declaration
+        return _noqa_file_edit(source, codes)  # nothing may come before the XML declaration
     line_start = source.offset(line)
     for number, start in ((line, line_start), (line - 1, source.offset(line - 1) if line > 1 else None)):
         written = source.line(number) if start is not None else None
@@ -214,6 +220,28 @@ def noqa_edit(source: Text, line: int, codes: list[str], column: int | None = No
         return start + found.start(), start + found.end(), f"<!-- urdfcli: noqa: {', '.join([*present, *added])} -->"
     indentation = text[: len(text) - len(text.lstrip())]
     return line_start, line_start, f"{indentation}<!-- urdfcli: noqa: {', '.join(codes)} -->\n"
+
+
+_DECLARATION = re.compile(r"\s*<\?xml\b.*?\?>", re.DOTALL)
+
+
+def _noqa_file_edit(source: Text, codes: list[str]) -> tuple[int, int, str] | None:
+    """The codes added to the file's ``noqa-file`` comment, else a comment of its own
+    after the XML declaration (at the start of a file without one)."""
+    text = source.text
+    for found in COMMENT.finditer(text):
+        if found.group(1) != "noqa-file":
+            continue
+        present = [c for c in re.split(r"[,\s]+", found.group(2) or "") if c]
+        added = [c for c in codes if c not in present]
+        if not present or not added:
+            return None  # silenced already
+        return found.start(), found.end(), f"<!-- urdfcli: noqa-file: {', '.join([*present, *added])} -->"
+    comment = f"<!-- urdfcli: noqa-file: {', '.join(codes)} -->"
+    declaration = _DECLARATION.match(text)
+    if declaration is None:
+        return 0, 0, comment + "\n"
+    return declaration.end(), declaration.end(), "\n" + comment
 
 
 def _element_line(source: Text, line: int, column: int | None) -> int:
