@@ -192,6 +192,30 @@ def test_a_value_computed_by_an_expression_is_left_alone_and_says_where(cli, her
     assert (here / "rover.urdf.xacro").read_text() == text.replace('roll="180"', 'roll="3.141593"')
 
 
+def test_a_property_read_negated_for_the_other_bound_is_edited_once(cli, here):
+    """``lower="${-limit}" upper="${limit}"`` in a macro called twice: the property
+    defined once is the one literal; written in radians, both bounds of both joints are."""
+    text = f"""<?xml version="1.0"?>
+<robot name="arm" {XACRO_NS}>
+  <xacro:property name="elbow_limit" value="150"/>  <!-- the elbow's reach -->
+  <xacro:macro name="segment" params="name parent">
+    <link name="${{name}}"/>
+    <joint name="${{name}}_joint" type="revolute">
+      <parent link="${{parent}}"/>
+      <child link="${{name}}"/>
+      <limit lower="${{-elbow_limit}}" upper="${{elbow_limit}}" effort="50" velocity="2"/>
+    </joint>
+  </xacro:macro>
+  <link name="base_link"/>
+  <xacro:segment name="upper_arm" parent="base_link"/>
+  <xacro:segment name="forearm" parent="upper_arm"/>
+</robot>
+"""
+    put(here, {"arm.urdf.xacro": text})
+    files = fixed(cli, here, "arm.urdf.xacro", "J016", "--unsafe-fixes", elements=("limit",))
+    assert files["arm.urdf.xacro"].decode() == text.replace('value="150"', 'value="2.617994"')
+
+
 def test_a_property_read_where_its_value_means_something_else_is_left_alone(cli, here):
     text = MACROS.replace('<link name="mast"/>', '<link name="mast"/>\n  <xacro:if value="${mount_yaw > 45}"><link name="flag"/></xacro:if>')
     put(here, {"rover.urdf.xacro": text})

@@ -45,6 +45,8 @@ _START_TAG = re.compile(r"""<[^\s/>!?](?:[^>"'/]|/(?!>)|"[^"]*"|'[^']*')*/?>""")
 _VALUE = re.compile(r"""\s*=\s*(?:"([^"]*)"|'([^']*)')""")
 _TOKEN = re.compile(r"""(?:\$\{[^}]*\}|\$\([^)]*\)|\S)+""")  # a whitespace-separated part, ${...} whole
 _IDENTIFIER = re.compile(r"[A-Za-z_]\w*")
+_NEGATED = re.compile(r"-\s*([A-Za-z_]\w*)")
+_NUMBER = re.compile(r"-?\d+(?:\.\d*)?(?:[eE][-+]?\d+)?")
 _BLANKS = str.maketrans("\t\n\r", "   ")
 CHILD = "<child>"  # the key of an InsertChild among attribute names
 
@@ -233,6 +235,10 @@ class Placer:
     # -- a ${name} ------------------------------------------------------------------
     def _expression(self, site: _Site, at: int, inner: str, old: str, new: str) -> list[Spot]:
         name = inner.strip()
+        negated = _NEGATED.fullmatch(name)
+        if negated and _NUMBER.fullmatch(old) and _NUMBER.fullmatch(new):
+            # ${-name} (a lower bound beside ${name}): the number written for name is the negated one
+            return self._expression(site, at, negated.group(1), _negated(old), _negated(new))
         if not _IDENTIFIER.fullmatch(name) or site.scan is None:
             raise Unplaceable(f"the value is computed by ${{{inner}}} at {self.where(site, at)}")
         scan = site.scan
@@ -340,6 +346,11 @@ class Placer:
 def _absolute(name: str) -> str:
     """A file's name as the lookups here keep it: absolute (standard input as it is)."""
     return name if name.startswith("<") else os.path.abspath(name)
+
+
+def _negated(number: str) -> str:
+    """``-150`` for ``150`` and ``150`` for ``-150``, written as it was otherwise."""
+    return number[1:] if number.startswith("-") else "-" + number
 
 
 def _index(source: Text, start: int | None) -> int | None:
