@@ -220,3 +220,21 @@ def test_pinocchio_reference_configurations_are_no_mistake(tmp_path):
     )
     done, document = check(str(package / "srdf" / "biped.srdf"), cwd=tmp_path)
     assert [(d["code"], d["line"]) for d in document["files"][0]["diagnostics"]] == [("K002", 6)]
+
+
+def test_an_srdf_whose_robot_name_differs_from_the_urdf_beside_it_is_checked_against_it(tmp_path):
+    """example-robot-data's go2.srdf says robot 'go2' where go2.urdf says 'go2_description':
+    the URDF named as the SRDF, in its robot's folder, is the one; the names' mismatch (an
+    error in MoveIt's SRDF reader) is a warning, and the SRDF's names are checked."""
+    package = tmp_path / "go2_description"
+    (package / "urdf").mkdir(parents=True)
+    (package / "srdf").mkdir()
+    (package / "package.xml").write_text("<package format=\"3\"><name>go2_description</name></package>\n")
+    (package / "urdf" / "go2.urdf").write_text(ARM.format(name="go2_description", tip="foot", joint="knee"))
+    (package / "srdf" / "go2.srdf").write_text('<robot name="go2">\n  <group name="leg"><chain base_link="base" tip_link="toe"/></group>\n</robot>\n')
+    done, document = check(str(package / "srdf" / "go2.srdf"), cwd=tmp_path)
+    found_here = [(d["code"], d["severity"], d["line"]) for d in document["files"][0]["diagnostics"]]
+    assert found_here == [("K008", "warning", 1), ("K001", "error", 2)] and done.returncode == 1
+    assert document["files"][0]["diagnostics"][0]["message"] == (
+        "the SRDF is for robot 'go2', but go2_description/urdf/go2.urdf, named as it is, describes robot 'go2_description': checked against it"
+    )

@@ -11,7 +11,9 @@ variants share a robot name), then a top-level model before a file another one
 includes, and a xacro source before a generated URDF. A robot's name is read from its
 ``<robot name=...>`` as written (``$(arg name)`` resolved from the argument's
 default or the ``[tool.urdfcli] models`` setting), and confirmed by loading
-the model. ``--urdf FILE`` names the URDF instead.
+the model. When no robot has the SRDF's name, the URDF beside it named as it is
+(``go2.urdf`` for ``go2.srdf``, in the SRDF's robot folder) is the one, and a
+warning says the names differ. ``--urdf FILE`` names the URDF instead.
 """
 
 from __future__ import annotations
@@ -112,10 +114,12 @@ def described(
     if name is None or document.file is None:
         return None
     srdf = document.file.resolve()
-    tried, failures = 0, []
+    tried, failures, beside = 0, [], None
     for file in candidates(srdf, index, arguments_for):
         arguments = arguments_for(file)
         if robot_name(file, index, arguments) != name:
+            if beside is None and _stem(file) == _stem(srdf) and srdf.parent.parent in file.parents:
+                beside = file  # named as the SRDF, in its robot's folder: its URDF, whatever either says its name is
             continue
         path = shown(file)
         found = load(path, arguments)
@@ -127,6 +131,13 @@ def described(
             continue
         loaded.described = found
         return None
+    if not failures and beside is not None:
+        path = shown(beside)
+        found = load(path, arguments_for(beside))
+        if not isinstance(found, str) and found.modelled and found.robot.links:
+            loaded.described = found
+            return _without(loaded, f"the SRDF is for robot '{name}', but {path}, named as it is, describes robot '{found.robot.name}': checked against it",
+                            Severity.WARNING, f"write <robot name=\"{found.robot.name}\"> in the SRDF: MoveIt's SRDF reader logs an error when the names differ")
     if failures:
         return _without(loaded, f"the URDF of robot '{name}' could not be read ({'; '.join(failures)}): the SRDF's names are not checked",
                         hint="list its xacro arguments in [tool.urdfcli] models, or give --urdf FILE")

@@ -360,7 +360,10 @@ K008 = declare(
         Says that an SRDF could not be checked against a URDF: no URDF or xacro
         file of its package or workspace describes a robot of its name, or the
         one found cannot be read or expanded (it needs xacro arguments), or the
-        robot named with `--urdf` has another name.
+        robot named with `--urdf` has another name. When no robot has its name
+        but the URDF beside it is named as it is (`go2.urdf` for `go2.srdf`,
+        in its robot's folder), it is checked against that one, and a warning
+        says the robot names differ.
         """,
         """
         The SRDF's names are not checked at all. MoveIt pairs the SRDF with the
