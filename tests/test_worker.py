@@ -54,6 +54,16 @@ def test_a_worker_that_dies_is_reported_and_replaced(worker):
     assert worker.run("pid") == after
 
 
+def test_the_job_after_an_interrupt_between_jobs_runs_in_a_new_process(worker):
+    """An interrupt that comes when no job runs (the check it meant to stop had just
+    expanded) is not the next job's failure, however soon that job comes."""
+    for _ in range(20):
+        before = worker.run("pid")
+        worker.interrupt()
+        after = worker.run("pid")  # at once: the killed process may not be gone yet
+        assert after != before
+
+
 IN_A_NEW_PROCESS = """
 import os, sys
 sys.path.insert(0, sys.argv[1])
