@@ -32,7 +32,8 @@ from ..project.config import ConfigError
 from ..project.workspace import resolve_include
 from ..read.document import STDIN
 from ..read.packages import PackageResolver
-from ..read.files import SourceFile, SourceFiles
+from ..read.expanded import Expansion
+from ..read.files import SourceFile, SourceFiles, file_key
 from ..read.positions import Text
 from ..read.xacro import Expander
 from ..model import fixes
@@ -81,16 +82,42 @@ class GivenUp(BaseException):
 
 
 class _Expander(Expander):
-    """The session's expander, stopping before each expansion of a check given up."""
+    """The session's expander, stopping before each expansion of a check given up, and
+    expanding a model again only when a file it read changed: a library's check and the
+    check of an open model that includes it (or a second keystroke elsewhere) share one
+    expansion. One expansion is kept per model, argument set and package settings."""
 
-    def __init__(self, giving_up: threading.Event) -> None:
+    def __init__(self, giving_up: threading.Event, files: SourceFiles) -> None:
         super().__init__()
         self.giving_up = giving_up
+        self.files = files
+        self.kept: dict[tuple, tuple[bytes, dict[str, bytes | None], Expansion]] = {}  # key -> (data, each file read: its bytes, the expansion)
 
-    def expand(self, *args, **kwargs):
+    def expand(self, data: bytes, file: str | None, mappings: dict[str, str], resolver: PackageResolver, given: dict[str, bytes] | None = None) -> Expansion:
         if self.giving_up.is_set():
             raise GivenUp
-        return super().expand(*args, **kwargs)
+        given = given or {}
+        # (a model is named relative to the working folder by a library's check, absolute by its own)
+        settings = tuple(file_key(setting) if isinstance(setting, os.PathLike) else setting for setting in resolver.settings())
+        key = (file and file_key(file), tuple(sorted(mappings.items())), settings)
+        kept = self.kept.get(key)
+        if kept is not None and kept[0] == data and all(self._bytes(f, given) == read for f, read in kept[1].items()):
+            return kept[2]
+        expansion = super().expand(data, file, mappings, resolver, given)
+        if not self.giving_up.is_set():  # (what an expansion stopped for it made is not kept)
+            self.kept[key] = (data, {f: self._bytes(f, given) for f in map(file_key, expansion.includes)}, expansion)
+        return expansion
+
+    def _bytes(self, file: str, given: dict[str, bytes]) -> bytes | None:
+        """The file's bytes as an expansion now reads them (None: it cannot be read)."""
+        if file in given:
+            return given[file]
+        found = self.files.get(file)
+        return found.data if found is not None else None
+
+    def forget(self, file: str | None = None) -> None:
+        """Let go of the expansions of ``file`` (a file closed), or of every one (a change on disk)."""
+        self.kept = {key: kept for key, kept in self.kept.items() if file is not None and key[0] != file}
 
 
 class Checker:
@@ -99,7 +126,7 @@ class Checker:
     def __init__(self, package_paths: tuple[str, ...] = ()) -> None:
         self.session = Session(Options(RuleSet.LINT, package_paths=package_paths))  # an editor shows every rule the configuration selects
         self.giving_up = threading.Event()
-        self.session.expander = _Expander(self.giving_up)
+        self.session.expander = _Expander(self.giving_up, self.session.files)
         self.texts: dict[str, str] = {}  # the editor's texts given to the session
         self.runs: dict[str, api.Run] = {}  # each open file's last check that read models
 
@@ -108,6 +135,7 @@ class Checker:
         """Let the editor's texts stand for their files; a file no longer open is read from disk again."""
         for path in [p for p in self.texts if p not in texts]:
             self.session.files.take_back(path)
+            self.session.expander.forget(path)
             del self.texts[path]
             self.runs.pop(path, None)
         for path, text in texts.items():
@@ -118,6 +146,7 @@ class Checker:
     def forget(self) -> None:
         """Something changed on disk (a checkout, a new package or configuration file)."""
         self.session.forget()
+        self.session.expander.forget()
 
     def close(self) -> None:
         self.session.close()

@@ -1,0 +1,120 @@
+"""What the editor server's checks do per edit: each model whose sources changed
+expanded once, whatever files are open; nothing expanded for what did not change.
+
+The checks are driven as the server drives them (the edited file first, then the
+open files whose last check read it), and xacro's expansions counted where they
+reach the session's worker."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import pytest
+
+from urdfcli.lsp.engine import Checker
+from urdfcli.read.xacro import Expander
+
+XACRO_NS = 'xmlns:xacro="http://www.ros.org/wiki/xacro"'
+LIBRARY = f"""<?xml version="1.0"?>
+<robot {XACRO_NS}>
+  <xacro:property name="arm_mass" value="2.0"/>
+  <xacro:macro name="arm" params="prefix parent">
+    <link name="${{prefix}}upper">
+      <inertial><mass value="${{arm_mass}}"/><inertia ixx="0.03" ixy="0" ixz="0" iyy="0.03" iyz="0" izz="0.0025"/></inertial>
+      <collision><geometry><cylinder radius="0.05" length="0.4"/></geometry></collision>
+    </link>
+    <joint name="${{prefix}}joint" type="fixed"><parent link="${{parent}}"/><child link="${{prefix}}upper"/></joint>
+  </xacro:macro>
+</robot>
+"""
+
+
+def model(index: int) -> str:
+    return (f'<?xml version="1.0"?>\n<robot name="robot_{index}" {XACRO_NS}>\n'
+            '  <xacro:include filename="$(find arms)/urdf/arm_macro.xacro"/>\n  <link name="world"/>\n'
+            '  <xacro:arm prefix="left_" parent="world"/>\n</robot>\n')
+
+
+@pytest.fixture
+def workspace(tmp_path: Path) -> Path:
+    """A repository: a package whose macro library three models include, and a model of its own that includes nothing."""
+    (tmp_path / ".git").mkdir()  # (the repository's models are those a library is checked through)
+    (tmp_path / "urdf").mkdir()
+    (tmp_path / "package.xml").write_text('<?xml version="1.0"?>\n<package format="3"><name>arms</name><version>0.1.0</version>'
+                                          '<description>arms</description><maintainer email="a@b.c">a</maintainer><license>BSD</license></package>\n')
+    (tmp_path / "urdf" / "arm_macro.xacro").write_text(LIBRARY)
+    for index in range(3):
+        (tmp_path / "urdf" / f"robot_{index}.urdf.xacro").write_text(model(index))
+    (tmp_path / "urdf" / "alone.urdf.xacro").write_text(f'<robot name="alone" {XACRO_NS}>\n  <xacro:property name="m" value="1"/>\n  <link name="base"/>\n</robot>\n')
+    return tmp_path
+
+
+class Counted:
+    """The expansions that reached the worker, by file."""
+
+    def __init__(self, monkeypatch) -> None:
+        self.files: list[str] = []
+        expand = Expander.expand
+
+        def counted(expander, data, file, *args, **kwargs):
+            self.files.append(Path(file).name if file else "")
+            return expand(expander, data, file, *args, **kwargs)
+
+        monkeypatch.setattr(Expander, "expand", counted)
+
+    def taken(self) -> list[str]:
+        found, self.files = sorted(self.files), []
+        return found
+
+
+def check_after_edit(checker: Checker, edited: str, texts: dict[str, str]) -> None:
+    """As the server checks after an edit of ``edited``: that file first, then the open files whose last check read it."""
+    assert checker.check(edited, texts) is not None
+    for path in sorted(texts):
+        if path != edited and _reads(checker, path, edited):
+            assert checker.check(path, texts) is not None
+
+
+def _reads(checker: Checker, path: str, edited: str) -> bool:
+    run = checker.runs.get(path)
+    return run is None or any(edited == str(Path(f).resolve()) for model in run.models for f in (model.path, *model.includes))
+
+
+def test_an_edit_expands_each_model_whose_sources_changed_once(workspace, monkeypatch):
+    monkeypatch.chdir(workspace)  # the server's working folder: a library's models are found by relative names
+    library = str(workspace / "urdf" / "arm_macro.xacro")
+    first, alone = (str(workspace / "urdf" / name) for name in ("robot_0.urdf.xacro", "alone.urdf.xacro"))
+    texts = {path: Path(path).read_text() for path in (library, first, alone)}
+    checker = Checker()
+    try:
+        for path in texts:  # opened
+            checker.check(path, texts)
+        counted = Counted(monkeypatch)
+
+        # the library: its three models, each once (the open one's own check expands nothing again)
+        texts[library] = texts[library].replace('value="2.0"', 'value="2.5"')
+        check_after_edit(checker, library, texts)
+        assert counted.taken() == ["robot_0.urdf.xacro", "robot_1.urdf.xacro", "robot_2.urdf.xacro"]
+
+        # the open model: itself, once; the library's check goes through it and the two unchanged models
+        texts[first] = texts[first].replace('prefix="left_"', 'prefix="right_"')
+        check_after_edit(checker, first, texts)
+        assert checker.check(library, texts) is not None
+        assert counted.taken() == ["robot_0.urdf.xacro"]
+
+        # a model that includes nothing: itself only
+        texts[alone] = texts[alone].replace('value="1"', 'value="2"')
+        check_after_edit(checker, alone, texts)
+        assert checker.check(library, texts) is not None
+        assert counted.taken() == ["alone.urdf.xacro"]
+
+        # the library's text back as it was on disk, then the file changed on disk: expanded again
+        (workspace / "urdf" / "arm_macro.xacro").write_text(LIBRARY.replace('value="2.0"', 'value="3.0"'))
+        del texts[library]
+        checker.sync(texts)
+        assert checker.check(first, texts) is not None
+        assert counted.taken() == ["robot_0.urdf.xacro"]
+        diagnostics = checker.check(first, texts)
+        assert diagnostics is not None and counted.taken() == []  # nothing changed since
+    finally:
+        checker.close()
