@@ -65,8 +65,12 @@ async def test_fix_all_applies_every_safe_fix_of_the_file(tmp_path):
         editor.open(model)
         found = await editor.diagnostics(model)
         assert {"X005", "V009"} <= {d.code for d in found}
-        (every,) = await actions_for(editor, model, [], only=[types.CodeActionKind.SourceFixAll])
-        assert every.title == "Fix all safe urdfcli problems" and every.kind == types.CodeActionKind.SourceFixAll
+        (every,) = await actions_for(editor, model, [], only=[types.CodeActionKind.SourceFixAll])  # as an editor's fix-all on save asks
+        assert every.title == "Fix all safe urdfcli problems" and every.kind == "source.fixAll.urdfcli"
+        assert [a.title for a in await actions_for(editor, model, [], only=["source.fixAll.urdfcli"])] == [every.title]
+        assert await actions_for(editor, model, found, only=["source.fixAll.ruff"]) == []  # another server's
+        quick = await actions_for(editor, model, found, only=[types.CodeActionKind.QuickFix])
+        assert quick and all(a.kind == types.CodeActionKind.QuickFix for a in quick)
         editor.apply(every)
         text = editor.texts[model]
         # the deprecated forms xacro still reads, not the unsafe degrees

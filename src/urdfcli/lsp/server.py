@@ -44,7 +44,7 @@ from ..report.escape import escape
 from ..report.rules import page
 from ..rules import REGISTRY, Remedy
 from ..version import __version__
-from .engine import Checked, Checker, Mark, Navigator
+from .engine import Checked, Checker, Fix, Mark, Navigator
 from .places import Place, Point
 from .rulepages import rule_links
 
@@ -63,6 +63,7 @@ WATCHED = ("**/*.urdf", "**/*.xacro", "**/package.xml", "**/pyproject.toml", "**
 SEVERITIES = {Severity.ERROR: types.DiagnosticSeverity.Error, Severity.WARNING: types.DiagnosticSeverity.Warning, Severity.INFO: types.DiagnosticSeverity.Information}
 DOCUMENT_NOTIFICATIONS = (types.TEXT_DOCUMENT_DID_CHANGE, types.TEXT_DOCUMENT_DID_SAVE, types.TEXT_DOCUMENT_DID_CLOSE)
 RELATED_SHOWN = 20  # macro calls listed with one diagnostic
+FIX_ALL = "source.fixAll.urdfcli"  # the "fix all safe" action's kind: an editor's fix-all on save asks for source.fixAll
 
 log = logging.getLogger(__name__)
 
@@ -342,6 +343,12 @@ class UrdfServer(LanguageServer):
         at = document.position_from_client_units(position)
         return path, at.line, at.character
 
+    def workspace_edit(self, fix: Fix) -> types.WorkspaceEdit:
+        changes: dict[str, list[types.TextEdit]] = {}
+        for place, text in fix.edits:
+            changes.setdefault(self.uris.get(place.file) or from_fs_path(place.file), []).append(types.TextEdit(self.range(place), text))
+        return types.WorkspaceEdit(changes=changes)
+
     def diagnostics_at(self, path: str, position: types.Position) -> list[types.Diagnostic]:
         shown = self.shown.get(path)
         return [d for d in (shown[1] if shown else ()) if _within(position, d.range)]
@@ -380,6 +387,11 @@ def merged(contributions) -> list[types.Diagnostic]:
         subjects = list(dict.fromkeys(s for d in same for s in (d.data or {}).get("subjects", ())))
         result.append(attrs.evolve(first, message=message, related_information=related or None, data={"subjects": subjects}))
     return result
+
+
+def asked(kind: str, only: list[str]) -> bool:
+    """Whether a code action of ``kind`` is asked for by a request's ``only`` kinds (none: every kind)."""
+    return not only or any(kind == wanted or kind.startswith(wanted + ".") for wanted in only)
 
 
 def _within(position: types.Position, range_: types.Range) -> bool:
@@ -493,16 +505,14 @@ def build(package_paths: tuple[str, ...] = ()) -> UrdfServer:
             for kind, name, detail, place in ls.navigate().symbols(path)
         ]
 
-    @server.feature(
-        types.TEXT_DOCUMENT_CODE_ACTION,
-        types.CodeActionOptions(code_action_kinds=[types.CodeActionKind.QuickFix, types.CodeActionKind.SourceFixAll]),
-    )
+    @server.feature(types.TEXT_DOCUMENT_CODE_ACTION, types.CodeActionOptions(code_action_kinds=[types.CodeActionKind.QuickFix, FIX_ALL]))
     async def code_action(ls: UrdfServer, params: types.CodeActionParams) -> list[types.CodeAction] | None:
         path = checkable(params.text_document.uri)
         if path is None or params.text_document.uri not in ls.workspace.text_documents:
             return None
+        only = [str(getattr(kind, "value", kind)) for kind in params.context.only or ()]
         found = []
-        for diagnostic in params.context.diagnostics:
+        for diagnostic in params.context.diagnostics if asked(types.CodeActionKind.QuickFix, only) else ():
             if diagnostic.source != "urdfcli" or not diagnostic.code:
                 continue
             code = str(diagnostic.code)
@@ -517,18 +527,10 @@ def build(package_paths: tuple[str, ...] = ()) -> UrdfServer:
                     fixes += await asyncio.wait_for(asyncio.shield(asyncio.wrap_future(job)), FIX_WAIT_SECONDS if busy else None)
                 except asyncio.TimeoutError:
                     job.cancel()
-            for fix in fixes:
-                changes: dict[str, list[types.TextEdit]] = {}
-                for place, text in fix.edits:
-                    changes.setdefault(ls.uris.get(place.file) or from_fs_path(place.file), []).append(types.TextEdit(ls.range(place), text))
-                found.append(types.CodeAction(fix.title, kind=types.CodeActionKind.QuickFix, diagnostics=[diagnostic], edit=types.WorkspaceEdit(changes=changes)))
-        only = [str(getattr(kind, "value", kind)) for kind in params.context.only or ()]
-        every = ls.navigate().fix_all(path) if not only or any(types.CodeActionKind.SourceFixAll.value.startswith(kind) for kind in only) else None
+            found += [types.CodeAction(fix.title, kind=types.CodeActionKind.QuickFix, diagnostics=[diagnostic], edit=ls.workspace_edit(fix)) for fix in fixes]
+        every = ls.navigate().fix_all(path) if asked(FIX_ALL, only) else None
         if every is not None:
-            changes = {}
-            for place, text in every.edits:
-                changes.setdefault(ls.uris.get(place.file) or from_fs_path(place.file), []).append(types.TextEdit(ls.range(place), text))
-            found.append(types.CodeAction(every.title, kind=types.CodeActionKind.SourceFixAll, edit=types.WorkspaceEdit(changes=changes)))
+            found.append(types.CodeAction(every.title, kind=FIX_ALL, edit=ls.workspace_edit(every)))
         return found or None
 
     @server.feature(types.SHUTDOWN)
