@@ -257,3 +257,57 @@ def test_uris_are_published_as_the_client_sent_them(tmp_path, editor):
     assert shown(nvim.wait(model)) == {("N004", 3)}
     sent = nvim.lua("return vim.uri_from_bufnr(...)", nvim.buffers[model])
     assert {p["uri"] for p in nvim.published()} == {sent}
+
+
+# -- the fixes lint --fix writes ----------------------------------------------------------------------------------
+FIXABLE = """<?xml version="1.0"?>
+<robot name="arm" xmlns:xacro="http://www.ros.org/wiki/xacro">
+  <xacro:macro name="xacro:part" params="n">
+    <link name="part_${n}"/>
+  </xacro:macro>
+  <xacro:property name="count" value="${len(list(range(2)))}"/>
+  <link name="base_link"/>
+  <link name="arm_link"/>
+  <xacro:part n="${count}"/>
+  <joint name="part_joint" type="fixed"><parent link="base_link"/><child link="part_2"/></joint>
+  <joint name="arm_joint" type="revolute">
+    <parent link="base_link"/>
+    <child link="arm_link"/>
+    <origin xyz="0 0 0.1" rpy="0 0 90"/>
+    <limit lower="-1" upper="1" effort="10" velocity="1"/>
+  </joint>
+</robot>
+"""
+
+
+def wait_for_text(nvim: Neovim, path: Path, wanted: str) -> str:
+    deadline = time.monotonic() + 30
+    while wanted not in nvim.text(path):
+        assert time.monotonic() < deadline, nvim.text(path)
+        nvim.lua("vim.wait(20)")
+    return nvim.text(path)
+
+
+def test_neovim_applies_the_quick_fix_and_the_fix_all_that_lint_fix_writes(tmp_path, editor):
+    (tmp_path / ".git").mkdir()
+    model = tmp_path / "arm.urdf.xacro"
+    model.write_text(FIXABLE)
+    written = tmp_path / "by_lint" / "arm.urdf.xacro"  # what `urdfcli lint --fix` writes of the same file
+    written.parent.mkdir()
+    written.write_text(FIXABLE)
+    run_cli("lint", "--fix", "--isolated", str(written), cwd=tmp_path)
+    assert written.read_text() != FIXABLE
+    nvim = editor()
+    nvim.open(model)
+    assert {"X005", "V009"} <= {code for code, _ in shown(nvim.wait(model))}
+    # the quick fix on the diagnostic under the cursor, chosen by its title as a user picks it
+    nvim.goto(model, 'rpy="0 0 90"')
+    nvim.lua("vim.lsp.buf.code_action({apply = true, filter = function(a) return a.title:find('radians', 1, true) ~= nil end})")
+    wait_for_text(nvim, model, 'rpy="0 0 1.570796"')
+    assert "V009" not in {code for code, _ in shown(nvim.wait(model))}
+    # fix-all, as a fix-all on save asks for it: every safe fix, as lint --fix writes them
+    nvim.lua("vim.lsp.buf.code_action({apply = true, context = {only = {'source.fixAll'}}})")
+    text = wait_for_text(nvim, model, 'name="part"')
+    assert text == written.read_text().replace('rpy="0 0 90"', 'rpy="0 0 1.570796"')
+    assert "X005" not in {code for code, _ in shown(nvim.wait(model))}
+    assert model.read_text() == FIXABLE  # the buffer is fixed; saving it is the user's
