@@ -357,7 +357,13 @@ class UrdfServer(LanguageServer):
 def give_back_memory() -> None:
     """Collect the garbage, and give the memory freed back to the system: glibc's
     allocator keeps what a large file's check freed otherwise (hundreds of MiB after
-    a 50 MB model), though nothing uses it."""
+    a 50 MB model), though nothing uses it.
+
+    Python's attribute cache is emptied first: it holds on to the attribute names
+    looked up last, strings a check made, each a few bytes that keep a whole MiB
+    arena of Python's allocator in use (after a 5.5 MB model: 38 arenas, 20% more
+    memory than before it was opened). It fills again at the next lookups."""
+    sys._clear_type_cache()
     gc.collect()
     try:
         ctypes.CDLL("libc.so.6").malloc_trim(0)
