@@ -139,6 +139,25 @@ def test_a_workspace_lint_on_a_terminal_fits_its_width(tmp_path):
     assert cursor_restored(out)
 
 
+def test_a_long_source_line_is_cut_to_the_terminal_around_its_caret(tmp_path):
+    """A source line wider than the terminal (the published models' one-line <inertia>, an
+    SRDF's <end_effector>) is cut to fit it, the part around the caret shown, the caret
+    under the attribute it names."""
+    comment = "<!-- " + "a comment as long as a CAD exporter writes, " * 4 + "-->"
+    (tmp_path / "long.urdf").write_text(
+        f'<robot name="r">\n  <link name="a">{comment}<visual><geometry><box size="1 1 -1"/></geometry></visual></link>\n</robot>\n'
+    )
+    out, code = on_terminal("lint", "long.urdf", cwd=tmp_path, env={"COLUMNS": "80"})
+    lines = text(out).splitlines()
+    assert code == 1
+    assert all(len(line) <= 80 + len(line.split(": ")[0]) for line in lines)  # beside the position a diagnostic begins with
+    assert all(len(line) <= 80 for line in lines if " | " in line)
+    excerpt = next(i for i, line in enumerate(lines) if line.startswith("     2 | "))
+    assert lines[excerpt].startswith("     2 | ...")  # the start cut off, the caret's part shown
+    caret = lines[excerpt + 1].index("^")
+    assert lines[excerpt][caret:].startswith('size="1 1 -1"') or lines[excerpt][caret:].startswith("<box")
+
+
 @pytest.mark.parametrize("after", [0.2, 1.0, 2.0])  # while Python starts; while trimesh imports scipy (it swallows the exception); later
 def test_lint_interrupted_restores_the_terminal(after):
     data = example_robot_data()

@@ -3,6 +3,7 @@ macro calls that made its element, its source excerpt, a library's notes, the su
 
 from __future__ import annotations
 
+import re
 from collections.abc import Iterable
 from typing import TYPE_CHECKING
 
@@ -62,8 +63,17 @@ def trace_notes(diagnostic: Diagnostic, levels: int = TRACE_LEVELS) -> list[str]
     return notes
 
 
-def excerpt_lines(diagnostic: Diagnostic, files: SourceFiles, width: int = 160) -> list[str]:
-    """The diagnostic's source line, numbered, with a caret under its column."""
+_PATH = re.compile(r"[\w.+-]+://[^\s\"'<>]+|[~.]{0,2}/?[\w.@+-]+(?:/[\w.@+-]+)+/?")
+
+
+def longest_path(line: str) -> int:
+    """The length of the longest path or URI a line holds (the one a line may go past the terminal by)."""
+    return max((len(found) for found in _PATH.findall(line)), default=0)
+
+
+def excerpt_lines(diagnostic: Diagnostic, files: SourceFiles, width: int | None = None) -> list[str]:
+    """The diagnostic's source line, numbered, with a caret under its column: the line
+    cut at 160 characters, or with ``width``, to fit that many columns, around the caret."""
     location = diagnostic.location
     if location.expanded or not location.line:
         return []
@@ -72,12 +82,23 @@ def excerpt_lines(diagnostic: Diagnostic, files: SourceFiles, width: int = 160) 
         return []
     text = text.replace("\t", " ").rstrip()
     safe = escape(text)  # the caret moves right by what the escapes before it add
-    shown = safe if len(safe) <= width else safe[: width - 3] + "..."
-    width = max(4, len(str(location.line)))
-    lines = [f"  {location.line:>{width}} | {shown}"]
+    number = max(4, len(str(location.line)))
+    room = 160 if width is None else max(20, width - number - 5 + longest_path(safe))
     caret = len(escape(text[: location.column - 1])) if location.column else None
-    if caret is not None and caret <= len(shown):
-        lines.append(f"  {'':>{width}} | {' ' * caret}^")
+    begin = 0
+    if len(safe) <= room:
+        shown = safe
+    else:
+        if caret is not None and caret >= room - 10:  # the caret past the cut: show the part around it
+            begin = max(0, min(caret - room // 3, len(safe) - room))
+        shown = safe[begin : begin + room]
+        if begin > 0:
+            shown = "..." + shown[3:]
+        if begin + room < len(safe):
+            shown = shown[:-3] + "..."
+    lines = [f"  {location.line:>{number}} | {shown}"]
+    if caret is not None and 0 <= caret - begin <= len(shown):
+        lines.append(f"  {'':>{number}} | {' ' * (caret - begin)}^")
     return lines
 
 
@@ -91,12 +112,13 @@ def fix_line(diagnostic: Diagnostic) -> str | None:
     return escape(f"    no fix: {fix.reason}") if fix.reason else None
 
 
-def details(diagnostic: Diagnostic, files: SourceFiles | None) -> list[str]:
-    """The lines under a diagnostic: its macro calls, its hint, its fix, its source excerpt."""
+def details(diagnostic: Diagnostic, files: SourceFiles | None, width: int | None = None) -> list[str]:
+    """The lines under a diagnostic: its macro calls, its hint, its fix, its source excerpt
+    (fitting ``width`` columns, when given)."""
     hint = ["    hint: " + escape(diagnostic.hint)] if diagnostic.hint else []
     through = ["    note: " + escape(diagnostic.through)] if diagnostic.through else []
     fix = [line] if (line := fix_line(diagnostic)) is not None else []
-    excerpt = excerpt_lines(diagnostic, files) if files is not None else []
+    excerpt = excerpt_lines(diagnostic, files, width) if files is not None else []
     return trace_notes(diagnostic) + through + hint + fix + excerpt
 
 
@@ -154,7 +176,8 @@ STYLES = {"error": "bold red", "warning": "yellow", "info": "cyan"}
 def diagnostic_lines(diagnostic: Diagnostic, files: SourceFiles | None, width: int | None = None) -> list[Line]:
     """A diagnostic, its macro calls and hint, and (given the files) its source line.
     With ``width``, a message, note or hint longer than that (beside the one path it
-    names) goes on over indented lines; a source excerpt is cut at 160 characters."""
+    names) goes on over indented lines, and a source excerpt is cut to fit it around its
+    caret; without, an excerpt is cut at 160 characters."""
     style = STYLES[severity_name(diagnostic)]
     where = position(diagnostic)
     head = f"{where}: {diagnostic.code} {severity_name(diagnostic)}: "
@@ -168,7 +191,7 @@ def diagnostic_lines(diagnostic: Diagnostic, files: SourceFiles | None, width: i
         first.append((pieces[0], ""))
     rest = [("    " + piece, "") for piece in pieces[1:]]
     lines: list[Line] = [first, *([piece] for piece in rest)]
-    for line in details(diagnostic, files):
+    for line in details(diagnostic, files, width):
         excerpt = not line.startswith("    ")
         lines += [[(part, "dim")] for part in ([line] if excerpt or not width else wrap_line(line, width, " " * 10))]
     return lines
@@ -194,7 +217,7 @@ def wrap_line(line: str, width: int, hanging: str = "    ") -> list[str]:
     names, the others indented by ``hanging``; a word is never cut."""
     import textwrap
 
-    longest = max((len(word) for word in line.split() if "/" in word), default=0)
+    longest = longest_path(line)
     if len(line) <= width + longest:
         return [line]
     return textwrap.wrap(line, width=width + longest, subsequent_indent=hanging, break_long_words=False, break_on_hyphens=False) or [line]
