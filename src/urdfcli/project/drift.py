@@ -157,7 +157,7 @@ def drift(loaded: Loaded, config: Config, session: Session) -> list[Diagnostic]:
     return [diagnostic.with_fix(regeneration_fix(loaded, source, found, arguments))]
 
 
-def regeneration_fix(loaded: Loaded, source: Source, found: Loaded, arguments: dict[str, str | None]) -> Fix:
+def regeneration_fix(loaded: Loaded, source: GeneratedFrom, found: Loaded, arguments: dict[str, str | None]) -> Fix:
     """The fix that writes the URDF again from its source's expansion, its header kept
     (safe: the URDF says it is made from that source, and is made as xacro makes it);
     none when the difference may come from xacro arguments, whose values are not known."""
@@ -304,26 +304,6 @@ def _shown(path: Path) -> str:
     """A path as diagnostics name files: relative to the working folder when below it."""
     relative = os.path.relpath(path)
     return path.as_posix() if relative.startswith("..") else relative
-
-
-def regeneration(loaded: Loaded, config: Config, session: Session) -> str | None:
-    """The text a fix writes into a generated URDF that drifted: its source expanded again
-    (as X110 expands it), under the URDF's own header. None when the URDF is not
-    generated, its source does not expand, or it matches its source already."""
-    document = loaded.document
-    source = generated_from(document.file, session) if document.file is not None and loaded.modelled else None
-    if source is None:
-        return None
-    from ..model.compare import compare
-
-    found = expand_source(source.file, config, session)
-    if isinstance(found, str) or found.document.expanded_text is None or compare(loaded, found).same:
-        return None
-    try:
-        text = session.files.read(document.file).data.decode("utf-8")
-    except (OSError, UnicodeDecodeError):
-        return None
-    return regenerated(text, found.document.expanded_text)
 
 
 def regenerated(urdf_text: str, expanded_text: str) -> str:
