@@ -96,6 +96,8 @@ def test_corpus_diagnostics_are_the_same_with_or_without_xacro(path, monkeypatch
         (b'<robot name="r"><macro xmlns="http://www.ros.org/wiki/xacro" name="m"/></robot>', True),  # a default namespace
         (b'<robot name="r"><!-- <xacro:property name="n" value="1"/> --><link name="a"/></robot>', False),
         (b'<robot name="r" xmlns:xacro="http://wiki.ros.org/xacro"><![CDATA[ <!-- ]]><xacro:property name="n" value="1"/><!-- --></robot>', True),
+        (b'<?xml version="1.0"?>\n<robot name="r"><!-- generated: $(find p)/r.xacro --><link name="a"/></robot>', False),
+        (b'<?xml-stylesheet href="<!--"?><robot name="r"><link name="${x}"/><!-- --></robot>', True),
     ],
 )
 def test_xacro_use_is_told_apart_from_comments_and_declarations(data, uses):
@@ -105,7 +107,7 @@ def test_xacro_use_is_told_apart_from_comments_and_declarations(data, uses):
 _PIECES = [
     "<!-- ", " -->", " ${a} ", "$(b)", "$", '<xacro:if value="1"/>', "xacro", '<link name="a"/>', "<!-- c -->",
     "http://wiki.ros.org/xacro", "http://ros.org/wiki/xacro", '<x:y xmlns:x="http://www.ros.org/wiki/xacro"/>',
-    "<![CDATA[${q}]]>", '<a b="${c}"/>', '<a b="$(c)"/>',
+    "<![CDATA[${q}]]>", '<a b="${c}"/>', '<a b="$(c)"/>', "<?pi <!-- ?>",
 ]
 _DECLARATIONS = ['xmlns:xacro="http://wiki.ros.org/xacro"', "xmlns:xacro = 'http://ros.org/wiki/xacro'", "", 'xmlns:xacro="http://example.com"']
 

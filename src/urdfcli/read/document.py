@@ -9,6 +9,7 @@ when a diagnostic needs one, so reading keeps nothing per element.
 from __future__ import annotations
 
 import bisect
+import re
 import sys
 from array import array
 from functools import cached_property
@@ -204,19 +205,36 @@ def is_xacro(file: SourceFile) -> bool:
     or in text outside comments. A namespace declaration alone is not use: xacro's
     output would read the same, at many times the cost. A document that is not
     well-formed is not xacro: reading it says what is wrong. Where the bytes (in
-    ASCII) cannot hold a mark, the tree is not searched for it."""
+    ASCII), comments left out, cannot hold a mark, the tree is not searched for it:
+    a generated URDF often keeps the ``$(find ...)`` of its source in a comment."""
     data = file.data
     ascii = positions.ascii_compatible(data)
-    if ascii and b"$" not in data and b"xacro" not in data:
-        return False  # neither mark in markup written in ASCII: nothing to parse
+    if ascii:
+        data = _without_comments(data)
+        if b"$" not in data and b"xacro" not in data:
+            return False  # neither mark in markup written in ASCII: nothing to parse
     root = file.tree
     if root is None:
         return False
     if next(root.iter(*_XACRO_TAGS), None) is not None:
         return True
-    if (not ascii or b"xacro:" in data) and root.xpath(_PREFIXED):
+    if (not ascii or b"<xacro:" in data) and root.xpath(_PREFIXED):
         return True
     return (not ascii or b"${" in data or b"$(" in data) and bool(root.xpath(_SUBSTITUTION))
+
+
+_COMMENT = re.compile(rb"<!--.*?-->", re.DOTALL)
+_DECLARATION = re.compile(rb"(?:\xef\xbb\xbf)?<\?xml\s")
+
+
+def _without_comments(data: bytes) -> bytes:
+    """The bytes of a document (ASCII-compatible) without its comments, where only a
+    comment can hold ``<!--``: with a CDATA section, or a processing instruction after
+    the XML declaration, the bytes as they are."""
+    declaration = _DECLARATION.match(data) is not None
+    if b"<!--" not in data or b"<![CDATA[" in data or data.count(b"<?") > declaration:
+        return data
+    return _COMMENT.sub(b"", data)
 
 
 def read_document(
