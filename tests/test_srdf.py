@@ -238,3 +238,40 @@ def test_an_srdf_whose_robot_name_differs_from_the_urdf_beside_it_is_checked_aga
     assert document["files"][0]["diagnostics"][0]["message"] == (
         "the SRDF is for robot 'go2', but go2_description/urdf/go2.urdf, named as it is, describes robot 'go2_description': checked against it"
     )
+
+
+def test_of_the_urdfs_that_may_be_its_robot_the_one_its_names_fit_is_chosen(tmp_path):
+    """Built as example-robot-data's alex_description and solo_description: an SRDF that kept
+    another variant's robot name (alex_psyonic_hands.srdf says 'alex_nub_hands') is checked
+    against the URDF beside it named as it is, whose joints it names, with a warning for the
+    name; an SRDF of a robot two URDFs share (solo.urdf and solo12.urdf, both 'solo') is checked
+    against the one whose joints it names, not the one named as it is. A name neither has is
+    still found."""
+    data = tmp_path / "robot_data"
+    (data / "robots").mkdir(parents=True)
+    (data / "package.xml").write_text("<package format=\"3\"><name>robot_data</name></package>\n")
+    hands, quad = data / "robots" / "hands_description", data / "robots" / "quad_description"
+    files = {
+        hands / "urdf" / "nub_hands.urdf": ARM.format(name="nub_hands", tip="nub", joint="wrist"),
+        hands / "urdf" / "psyonic_hands.urdf": ARM.format(name="psyonic_hands", tip="index", joint="index_q1"),
+        hands / "srdf" / "psyonic_hands.srdf": '<robot name="nub_hands">\n  <group name="hand"><joint name="index_q1"/></group>\n'
+        '  <group_state name="open" group="hand"><joint name="index_q1" value="0"/></group_state>\n</robot>\n',
+        quad / "robots" / "quad.urdf": ARM.format(name="quad", tip="upper_leg", joint="hfe"),
+        quad / "robots" / "quad12.urdf": ARM.format(name="quad", tip="shoulder", joint="haa"),
+        quad / "srdf" / "quad.srdf": '<robot name="quad">\n  <group name="leg"><joint name="haa"/><joint name="kfe"/></group>\n'
+        '  <disable_collisions link1="base" link2="shoulder" reason="Adjacent"/>\n</robot>\n',
+    }
+    for path, text in files.items():
+        path.parent.mkdir(parents=True, exist_ok=True)
+        path.write_text(text)
+    done, document = check(str(hands / "srdf" / "psyonic_hands.srdf"), str(quad / "srdf" / "quad.srdf"), cwd=tmp_path)
+    assert [(d["code"], d["severity"], d["line"]) for d in document["files"][0]["diagnostics"]] == [("K008", "warning", 1)]
+    assert document["files"][0]["diagnostics"][0]["message"] == (
+        "the SRDF is for robot 'nub_hands', but robot_data/robots/hands_description/urdf/psyonic_hands.urdf, named as it is, "
+        "describes robot 'psyonic_hands': checked against it"
+    )
+    assert [(d["code"], d["line"], d["message"]) for d in document["files"][1]["diagnostics"]] == [
+        ("K002", 2, "group 'leg' names joint 'kfe', which robot_data/robots/quad_description/robots/quad12.urdf does not have")
+    ]
+    text = run_cli("check", str(quad / "srdf" / "quad.srdf"), cwd=tmp_path).stdout.decode()
+    assert "checked against robot_data/robots/quad_description/robots/quad12.urdf\n" in text

@@ -101,6 +101,31 @@ class Semantic(NamedTuple):
     def group_names(self) -> set[str]:
         return {group.name for group in self.groups}
 
+    @property
+    def own_joints(self) -> set[str]:
+        """The joints the SRDF defines itself: its virtual joints."""
+        return {virtual.name for virtual in self.virtual_joints}
+
+    def named_links(self) -> list[tuple[str, Named]]:
+        """Each link of its URDF the SRDF names, with what names it: a group's links and chains'
+        ends, an end effector's parent link, a virtual joint's child, a collision pair."""
+        named = []
+        for group in self.groups:
+            named += [(f"group '{group.name}'", link) for link in group.links]
+            named += [(f"the chain of group '{group.name}'", end) for chain in group.chains for end in (chain.base, chain.tip)]
+        named += [(f"end effector '{e.name}'", e.parent_link) for e in self.end_effectors if e.parent_link]
+        named += [(f"virtual joint '{v.name}'", v.child) for v in self.virtual_joints if v.child]
+        named += [("<disable_collisions>", link) for pair in self.disabled for link in pair]
+        return named
+
+    def named_joints(self) -> list[tuple[str, Named]]:
+        """Each joint the SRDF names, with what names it: a group's joints, a group state's (but
+        one given seven values, a position and a quaternion: the floating base a loader adds), a passive joint."""
+        named = [(f"group '{group.name}'", joint) for group in self.groups for joint in group.joints]
+        named += [(f"group state '{state.name}'", joint) for state in self.states for joint, value in state.values if len(value.split()) != 7]
+        named += [("<passive_joint>", joint) for joint in self.passive_joints]
+        return named
+
 
 def read_semantic(document: Document, root: Element | None = None) -> Semantic:
     """The SRDF of a read document (its data parsed here unless ``root`` is given).

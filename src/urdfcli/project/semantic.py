@@ -6,14 +6,20 @@ SRDF's own package, then in the packages its package.xml depends on, then in
 the repository or workspace around it (see :func:`urdfcli.project.workspace.search_roots`).
 In each place the files nearest the SRDF come first (those of its own robot's
 folder, where one package holds several robots), then one named as the SRDF is
-(``alex_psyonic_hands.urdf`` for ``alex_psyonic_hands.srdf``, where several
-variants share a robot name), then a top-level model before a file another one
-includes, and a xacro source before a generated URDF. A robot's name is read from its
-``<robot name=...>`` as written (``$(arg name)`` resolved from the argument's
-default or the ``[tool.urdfcli] models`` setting), and confirmed by loading
-the model. When no robot has the SRDF's name, the URDF beside it named as it is
-(``go2.urdf`` for ``go2.srdf``, in the SRDF's robot folder) is the one, and a
-warning says the names differ. ``--urdf FILE`` names the URDF instead.
+(``solo.urdf`` for ``solo.srdf``), then a top-level model before a file another
+one includes, and a xacro source before a generated URDF. A robot's name is read
+from its ``<robot name=...>`` as written (``$(arg name)`` resolved from the
+argument's default or the ``[tool.urdfcli] models`` setting), and confirmed by
+loading the model. The URDF named as the SRDF in its robot's folder is a
+candidate whatever name it gives (``go2.urdf`` says ``go2_description``, and an
+SRDF copied from another variant keeps that variant's name).
+
+Of the candidates, a few at most are loaded (:data:`TRIES`), and the SRDF is
+checked against the one that lacks the fewest of the link and joint names it
+gives, the nearest first among equals: where several variants share a robot
+name (``solo.urdf`` and ``solo12.urdf``, both ``solo``), the one the SRDF was
+written for. When that one gives another robot name than the SRDF, a warning
+says so. ``--urdf FILE`` names the URDF instead.
 """
 
 from __future__ import annotations
@@ -25,7 +31,7 @@ from pathlib import Path
 
 from ..diagnostics import Diagnostic, Severity
 from ..model.load import Loaded
-from ..model.srdf import SRDF_TAGS, named_srdf
+from ..model.srdf import SRDF_TAGS, Semantic, named_srdf
 from ..read.xacro_scan import shown
 from .workspace import Index, search_roots, source_files, substitute
 
@@ -114,35 +120,44 @@ def described(
     if name is None or document.file is None:
         return None
     srdf = document.file.resolve()
-    tried, failures, beside = 0, [], None
-    for file in candidates(srdf, index, arguments_for):
+    fits, failures, beside = [], [], False  # fits: (names the URDF lacks, order, path, model)
+    for order, file in enumerate(candidates(srdf, index, arguments_for)):
         arguments = arguments_for(file)
-        if robot_name(file, index, arguments) != name:
-            if beside is None and _stem(file) == _stem(srdf) and srdf.parent.parent in file.parents:
-                beside = file  # named as the SRDF, in its robot's folder: its URDF, whatever either says its name is
-            continue
+        named = robot_name(file, index, arguments) == name
+        if not named:
+            if beside or _stem(file) != _stem(srdf) or srdf.parent.parent not in file.parents:
+                continue
+            beside = True  # named as the SRDF, in its robot's folder: a candidate whatever either says its name is
         path = shown(file)
         found = load(path, arguments)
-        tried += 1
-        if isinstance(found, str) or not found.modelled or found.robot.name != name or not found.robot.links:
-            failures.append(f"{path}: {found if isinstance(found, str) else _why(found)}")
-            if tried >= TRIES:
-                break
-            continue
+        if isinstance(found, str) or not found.modelled or (named and found.robot.name != name) or not found.robot.links:
+            if named:
+                failures.append(f"{path}: {found if isinstance(found, str) else _why(found)}")
+        else:
+            fits.append((_unknown(semantic, found), order, path, found))
+            if fits[-1][0] == 0:
+                break  # nothing later can fit better
+        if len(fits) + len(failures) >= TRIES:
+            break
+    if fits:
+        _, _, path, found = min(fits, key=lambda fit: fit[:2])
         loaded.described = found
-        return None
-    if not failures and beside is not None:
-        path = shown(beside)
-        found = load(path, arguments_for(beside))
-        if not isinstance(found, str) and found.modelled and found.robot.links:
-            loaded.described = found
+        if found.robot.name != name:
             return _without(loaded, f"the SRDF is for robot '{name}', but {path}, named as it is, describes robot '{found.robot.name}': checked against it",
                             Severity.WARNING, f"write <robot name=\"{found.robot.name}\"> in the SRDF: MoveIt's SRDF reader logs an error when the names differ")
+        return None
     if failures:
         return _without(loaded, f"the URDF of robot '{name}' could not be read ({'; '.join(failures)}): the SRDF's names are not checked",
                         hint="list its xacro arguments in [tool.urdfcli] models, or give --urdf FILE")
     return _without(loaded, f"no URDF of robot '{name}' found in the SRDF's package or workspace: its names are not checked",
                     hint="give the URDF with --urdf FILE")
+
+
+def _unknown(semantic: Semantic, model: Loaded) -> int:
+    """How many of the link and joint names an SRDF gives a model lacks: the fewer, the better it fits."""
+    links = {named.name for _, named in semantic.named_links()} - set(model.robot.links)
+    joints = {named.name for _, named in semantic.named_joints()} - set(model.robot.joints) - semantic.own_joints
+    return len(links) + len(joints)
 
 
 def _why(found: Loaded) -> str:

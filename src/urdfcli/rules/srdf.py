@@ -74,16 +74,8 @@ def unknown_link(loaded: Loaded, given: Given) -> Iterator[Diagnostic]:
     robot = _against(loaded)
     if robot is None:
         return
-    semantic = loaded.semantic
     links = robot.links
-    named = []
-    for group in semantic.groups:
-        named += [(f"group '{group.name}'", link) for link in group.links]
-        named += [(f"the chain of group '{group.name}'", end) for chain in group.chains for end in (chain.base, chain.tip)]
-    named += [(f"end effector '{e.name}'", e.parent_link) for e in semantic.end_effectors if e.parent_link]
-    named += [(f"virtual joint '{v.name}'", v.child) for v in semantic.virtual_joints if v.child]
-    named += [("<disable_collisions>", link) for pair in semantic.disabled for link in pair]
-    for what, link in named:
+    for what, link in loaded.semantic.named_links():
         if link.name not in links:
             yield _missing(loaded, "K001", "link", link, links, what)
 
@@ -112,12 +104,8 @@ def unknown_joint(loaded: Loaded, given: Given) -> Iterator[Diagnostic]:
     robot = _against(loaded)
     if robot is None:
         return
-    semantic = loaded.semantic
-    joints = set(robot.joints) | {v.name for v in semantic.virtual_joints}
-    named = [(f"group '{group.name}'", joint) for group in semantic.groups for joint in group.joints]
-    named += [(f"group state '{state.name}'", joint) for state in semantic.states for joint, value in state.values if len(value.split()) != 7]
-    named += [("<passive_joint>", joint) for joint in semantic.passive_joints]
-    for what, joint in named:
+    joints = set(robot.joints) | loaded.semantic.own_joints
+    for what, joint in loaded.semantic.named_joints():
         if joint.name not in joints:
             yield _missing(loaded, "K002", "joint", joint, joints, what)
 
@@ -360,9 +348,10 @@ K008 = declare(
         Says that an SRDF could not be checked against a URDF: no URDF or xacro
         file of its package or workspace describes a robot of its name, or the
         one found cannot be read or expanded (it needs xacro arguments), or the
-        robot named with `--urdf` has another name. When no robot has its name
-        but the URDF beside it is named as it is (`go2.urdf` for `go2.srdf`,
-        in its robot's folder), it is checked against that one, and a warning
+        robot named with `--urdf` has another name. The URDF beside the SRDF
+        named as it is (`go2.urdf` for `go2.srdf`, in its robot's folder) may be
+        its robot's whatever name it gives: when it is the one whose links and
+        joints the SRDF names, it is checked against that one, and a warning
         says the robot names differ.
         """,
         """
