@@ -109,3 +109,27 @@ def test_empty_package_name_is_one_diagnostic_in_every_look_up(tmp_path, where):
     path = model(folder, "package:///meshes/a.stl")
     found = diagnostics("lint", "--select", "D004,D005", *args, str(path), env=env)
     assert [(d["code"], d["message"].split(": ")[-1]) for d in found] == [("D005", "the package name is empty")]
+
+
+def test_a_package_uri_in_a_xacro_include_hint_gives_the_find_that_works(tmp_path):
+    """xacro joins an <xacro:include> filename to the including file's folder and reads no
+    package:// URI there (example-robot-data's quadrotor_base.xacro): the real xacro fails as
+    urdfcli does, the hint names $(find PKG)/..., and with it written both expand the model."""
+    from differential import PACKAGES, canonical, real_xacro
+
+    source = (Path(PACKAGES["urdf01_rviz"]) / "urdf" / "xacro" / "car_find.urdf.xacro").read_text()
+    path = tmp_path / "car.urdf.xacro"
+    path.write_text(source.replace("$(find urdf01_rviz)/urdf/xacro/demo05", "package://urdf01_rviz/urdf/xacro/demo05"))
+    real = real_xacro(path)
+    assert real.returncode != 0 and "package://urdf01_rviz/urdf/xacro/demo05_car_base.urdf.xacro" in real.stderr
+    packages = [arg for name, folder in PACKAGES.items() for arg in ("-P", f"{name}={folder}")]
+    [found] = diagnostics("check", *packages, str(path), cwd=tmp_path)
+    assert found["code"] == "X003" and found["message"].startswith("cannot include ")
+    assert found["hint"] == "xacro reads no package:// URI in <xacro:include>: write $(find urdf01_rviz)/urdf/xacro/demo05_car_base.urdf.xacro"
+    path.write_text(source.replace("$(find urdf01_rviz)/urdf/xacro/demo05", found["hint"].split("write ")[1].removesuffix("demo05_car_base.urdf.xacro") + "demo05"))
+    mine = run_cli("expand", *packages, str(path), cwd=tmp_path)
+    assert mine.returncode == 0 and canonical(mine.stdout.decode()) == canonical(real_xacro(path).stdout)
+    # any other include that is not there says no more than xacro does
+    path.write_text(source.replace("$(find urdf01_rviz)/urdf/xacro/demo05", "urdf/xacro/demo05"))
+    [found] = diagnostics("check", *packages, str(path), cwd=tmp_path)
+    assert found["code"] == "X003" and found["hint"] is None

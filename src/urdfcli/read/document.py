@@ -261,7 +261,7 @@ def read_document(
         location = error.origin.location() if error.origin is not None else Location(error.file or shown)
         document = Document(path, None, file, is_xacro=True, includes=list(error.includes), files=files)
         document.missing_argument = error.missing_argument
-        return document, [Diagnostic(error.code, error.message, location)]
+        return document, [Diagnostic(error.code, error.message, location, hint=error.hint)]
     document = Document(path, result.text.encode("utf-8"), file, True, result.text, result.includes, result.origins, files)
     warnings = [xacro_warnings.warning(text, origin.location() if origin is not None else Location(shown), files) for text, origin in result.warnings]
     return document, warnings

@@ -26,7 +26,8 @@ class ExpansionError(Exception):
     """A xacro error, with where it happened as far as it can be told."""
 
     def __init__(
-        self, message: str, origin: Origin | None, file: str | None, code: str = "X003", includes: tuple[str, ...] = (), missing_argument: str | None = None
+        self, message: str, origin: Origin | None, file: str | None, code: str = "X003", includes: tuple[str, ...] = (),
+        missing_argument: str | None = None, hint: str | None = None,
     ):
         super().__init__(message)
         self.message = message
@@ -35,9 +36,10 @@ class ExpansionError(Exception):
         self.code = code
         self.includes = includes  # the files read before it stopped: a library it reached is affected
         self.missing_argument = missing_argument  # a $(arg NAME) that had no value
+        self.hint = hint  # what to write instead, where it can be told
 
     def __reduce__(self):
-        return (ExpansionError, (self.message, self.origin, self.file, self.code, self.includes, self.missing_argument))
+        return (ExpansionError, (self.message, self.origin, self.file, self.code, self.includes, self.missing_argument, self.hint))
 
 
 class PackageNotFound(LookupError):

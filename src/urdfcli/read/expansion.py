@@ -277,8 +277,10 @@ class _Session:
         try:
             data = self.given.get(os.path.abspath(path)) or Path(path).read_bytes()
         except OSError as error:
+            failure = xacro.XacroException(f"cannot include {display_path(path)}: {error.strerror}", exc=error)
+            failure.urdfcli_hint = _package_uri_hint(filename)
             xacro.filestack.pop()
-            raise xacro.XacroException(f"cannot include {display_path(path)}: {error.strerror}", exc=error) from None
+            raise failure from None
         if not data.lstrip(b"\xef\xbb\xbf \t\r\n").startswith(b"<"):  # never show a line of a non-XML file
             xacro.filestack.pop()
             raise xacro.XacroException(f"cannot include {display_path(path)}: it is not an XML file")
@@ -382,6 +384,18 @@ def _missing_package(error: BaseException | None) -> PackageNotFound | None:
     return None
 
 
+def _package_uri_hint(filename: str) -> str | None:
+    """What to write for an ``<xacro:include>`` given a ``package://`` URI, which xacro reads as a
+    path beside the including file (it joins the URI to that file's folder); None for any other name."""
+    parent = xacro.filestack[-2] if len(xacro.filestack) > 1 else None
+    folder = os.path.dirname(parent) if parent else "."
+    written = filename[len(folder) + 1:] if filename.startswith(folder + os.sep) else filename
+    if not written.startswith("package://"):
+        return None
+    package, _, rest = written[len("package://"):].partition("/")
+    return f"xacro reads no package:// URI in <xacro:include>: write $(find {package})/{rest}"
+
+
 def _short(error: BaseException) -> str:
     inner = getattr(error, "exc", None)
     if isinstance(inner, OSError) and error.args:
@@ -463,7 +477,7 @@ def expand_here(data: bytes, file: str | None, mappings: dict[str, str], resolve
             missing = _UNDEFINED_ARGUMENT.search(message) if code == "X003" else None
             raise ExpansionError(
                 message, origin, display_path(current_file) if current_file else shown, code,
-                tuple(dict.fromkeys(xacro.all_includes)), missing.group(1) if missing else None,
+                tuple(dict.fromkeys(xacro.all_includes)), missing.group(1) if missing else None, getattr(error, "urdfcli_hint", None),
             ) from None
         finally:
             includes = list(dict.fromkeys(xacro.all_includes))
