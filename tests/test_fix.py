@@ -656,3 +656,15 @@ def test_the_published_models_fixed_by_patch_load_as_before(tmp_path):
     assert sum(after.values()) < sum(before.values())
     # nothing left that a second --fix would change
     assert not [d for f in json.loads(report)["files"] for d in f["diagnostics"] if d["fix"] and d["fix"]["available"]]
+
+
+@pytest.mark.parametrize("command", [("lint", "--fix"), ("lint", "--diff"), ("check", "--fix"), ("check", "--diff")])
+def test_fixing_a_file_that_is_not_there_says_so_in_one_line(tmp_path, command):
+    """Nothing was read, so nothing was fixed: the one line that says why, exit 2, and no
+    '0 fixed, 0 remaining' or 'nothing to fix' after it; with a file that is there, they stay."""
+    done = run_cli(*command, "missing.urdf", cwd=tmp_path)
+    assert (done.returncode, done.stdout.decode(), done.stderr.decode()) == (2, "", "urdfcli: missing.urdf: no such file\n")
+    (tmp_path / "r.urdf").write_text('<robot name="r"><link name="a"/></robot>\n')
+    done = run_cli(*command, "r.urdf", "missing.urdf", cwd=tmp_path)
+    said = done.stdout.decode() + done.stderr.decode()
+    assert done.returncode == 2 and ("nothing to fix" if "--diff" in command else "0 fixed, 0 remaining") in said

@@ -121,13 +121,16 @@ def print_diff(outcome: Outcome, output: Output) -> None:
         what = [_fixes(fixes)] if fixes else []
         what += [plural(outcome.noqa, "noqa comment")] if outcome.noqa else []
         output.err.file.write(f"would apply {' and '.join(what)} in {plural(len(outcome.changed), 'file')}\n")
-    else:
+    elif outcome.fixed.run.results:  # (no file read: the message that says why is all)
         output.err.file.write("nothing to fix\n")
 
 
 def summary(outcome: Outcome, asked: Fixing) -> str | None:
-    """``3 fixed, 2 remaining`` after --fix; ``4 noqa comments written`` after --add-noqa."""
+    """``3 fixed, 2 remaining`` after --fix; ``4 noqa comments written`` after --add-noqa;
+    None when no file could be read (the message that says why is all)."""
     results = outcome.fixed.run.results
+    if not results:
+        return None
     if outcome.noqa:
         return f"{plural(outcome.noqa, 'noqa comment')} written"
     fixed = len(outcome.fixed.fixed)
