@@ -54,7 +54,7 @@ system-runtime:
 	$(call apt_install,dot:graphviz)
 
 # Gazebo: `ign sdf` needs sdformat's command plugin, which libsdformat-dev ships (Debian 12: sdformat 12).
-# KDL: tests/test_targets.py compiles tests/support/kdl_tree.cpp against kdl_parser with g++.
+# KDL: check --target kdl --load and tests/test_targets.py compile src/urdfcli/targets/kdl/kdl_tree.cpp against kdl_parser with g++.
 SDFORMAT_PLUGIN := /usr/share/ignition/sdformat12.yaml
 KDL_PARSER := /usr/include/kdl_parser/kdl_parser.hpp
 

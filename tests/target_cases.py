@@ -83,6 +83,51 @@ CASES = {
                              '<mujoco><compiler balanceinertia="true"/></mujoco>'),
 }
 
+# One plain error each (a rule that is no consumer's): which consumers load the model anyway.
+VISUAL_BOX = '<visual><geometry><box size="0.1 0.1 0.1"/></geometry></visual>'
+PLAIN_ERRORS = {
+    "visual-mesh-missing": arm(link("link1", extra=BOX + '<visual><geometry><mesh filename="missing.stl"/></geometry></visual>')),
+    "collision-mesh-missing": arm(link("link1", extra=mesh("missing.stl"))),
+    "ros2-control-unknown-joint": arm(None, None, '<ros2_control name="arm" type="system"><hardware><plugin>mock_components/GenericSystem</plugin>'
+                                      '</hardware><joint name="j9"><command_interface name="position"/></joint></ros2_control>'),
+    "geometry-empty": arm(link("link1", extra=BOX + "<visual><geometry/></visual>")),
+    "geometry-unknown-shape": arm(link("link1", extra=BOX + "<visual><geometry><cube/></geometry></visual>")),
+    "joint-type-missing": arm(j1=joint("j1", "base_link", "link1").replace(' type="revolute"', "")),
+    "joint-type-unknown": arm(j1=joint("j1", "base_link", "link1", "hinge")),
+    "joint-child-missing": arm(j1=joint("j1", "base_link", "link1").replace('<child link="link1"/>', "")),
+    "joint-link-not-found": arm(j1=joint("j1", "base", "link1")),
+    "dynamics-empty": arm(j1=joint("j1", "base_link", "link1", extra="<dynamics/>")),
+    "dynamics-negative": arm(j1=joint("j1", "base_link", "link1", extra='<dynamics damping="-0.5" friction="0.1"/>')),
+    "zero-axis": arm(j1=joint("j1", "base_link", "link1", axis='<axis xyz="0 0 0"/>')),
+    "mimic-unknown-joint": arm(None, None, link("link2"), joint("j2", "link1", "link2", extra='<mimic joint="j7"/>')),
+    "mimic-itself": arm(None, None, link("link2"), joint("j2", "link1", "link2", extra='<mimic joint="j2"/>')),
+    "material-without-colour": arm(None, None, '<material name="grey"/>',
+                                   base=link("base_link", extra=BOX + '<visual><geometry><box size="0.1 0.1 0.1"/></geometry><material name="grey"/></visual>')),
+    "link-name-missing": arm(None, None, '<link/>'),
+    "joint-name-missing": arm(j1=joint("j1", "base_link", "link1").replace(' name="j1"', "")),
+    "material-name-missing": arm(None, None, '<material><color rgba="1 0 0 1"/></material>'),
+    "duplicate-link": arm(None, None, link("tool0", extra="")),
+    "duplicate-joint": arm(None, None, link("link2"), joint("j1", "link1", "link2")),
+    "duplicate-material": arm(None, None, '<material name="paint"><color rgba="1 0 0 1"/></material>', '<material name="paint"><color rgba="1 0 0 1"/></material>'),
+    "robot-name-missing": arm().replace('<robot name="r">', "<robot>"),
+    "robot-version": arm().replace('<robot name="r">', '<robot name="r" version="2.0">'),
+    "robot-without-links": '<robot name="r"><material name="grey"><color rgba="0.5 0.5 0.5 1"/></material></robot>\n',
+    "two-roots": arm(None, None, link("loose")),
+    "no-root": robot(link("base_link"), link("link1"), joint("j1", "base_link", "link1"), joint("j0", "link1", "base_link")),
+    "two-parents": arm(None, None, link("link2"), joint("j2", "base_link", "link2"), joint("j3", "link1", "link2")),
+    "loop": arm(None, None, link("link2"), joint("j2", "link1", "link2"), link("link3"), joint("j3", "link2", "link3"), joint("j4", "link3", "link2")),
+    "number-malformed": arm(link("link1", "2kg")),
+    "number-not-finite": arm(link("link1", "nan")),
+    "vector-length": arm(link("link1", extra='<collision><geometry><box size="0.1 0.1"/></geometry></collision>')),
+    "attribute-missing": arm(link("link1", extra=BOX + '<visual><geometry><sphere/></geometry></visual>')),
+    "element-missing": arm(link("link1", extra=BOX + "<visual></visual>")),
+    "dimension-negative": arm(link("link1", extra=BOX + '<visual><geometry><cylinder radius="-0.05" length="0.2"/></geometry></visual>')),
+    "rgba-out-of-range": arm(None, None, '<material name="orange"><color rgba="255 128 0 255"/></material>'),
+    "xml-syntax": arm().replace("</robot>", "</robt>"),
+    "entity-declaration": '<!DOCTYPE robot [<!ENTITY base "base_link">]>\n' + arm().replace('"base_link"', '"&base;"'),
+}
+# CASES.update(PLAIN_ERRORS)
+
 TETRAHEDRON = ((0, 0, 0), (0.05, 0, 0), (0, 0.05, 0), (0, 0, 0.05))
 FACES = ((0, 2, 1), (0, 1, 3), (0, 3, 2), (1, 2, 3))
 

@@ -2,6 +2,8 @@
 read -> model -> rules -> report -> project -> the library (api, session) -> the
 editor server (lsp) -> cli,
 each importing only those below it, and no module importing itself through others.
+The consumers' folder (targets/) holds one package per consumer whose modules sit in
+the layers their names say (TARGET_MODULES); its registry is in the model layer.
 
 Every import counts: at the top of a module, inside a function, and by name
 (``importlib.import_module("urdfcli...")``, ``sys.modules["urdfcli..."]``); only
@@ -23,6 +25,8 @@ LAYERS = ("read", "model", "rules", "report", "project", "library", "lsp", "cli"
 FOUNDATION = ("urdfcli.diagnostics", "urdfcli.version")  # imported by every layer, importing none
 LIBRARY = ("urdfcli.api", "urdfcli.options", "urdfcli.session")  # what a program calls; the command line is a shell over it
 ENTRY_POINTS = ("urdfcli", "urdfcli.__main__")
+TARGETS = "targets"  # one package per consumer (urdfcli.targets.NAME), its registry in urdfcli.targets
+TARGET_MODULES = {"build": "model", "rules": "rules", "load": "project"}  # a consumer's module -> its layer
 
 
 def _module_name(path: Path) -> str:
@@ -96,7 +100,10 @@ def layer(module: str) -> int:
         return len(LAYERS) + 1
     if module in LIBRARY:
         return LAYERS.index("library") + 1
-    return LAYERS.index(module.split(".")[1]) + 1
+    parts = module.split(".")
+    if parts[1] == TARGETS:  # the registry and each consumer's package in the model layer, its modules in theirs
+        return LAYERS.index(TARGET_MODULES[parts[3]] if len(parts) > 3 else "model") + 1
+    return LAYERS.index(parts[1]) + 1
 
 
 def test_the_graph_sees_the_imports_it_should():
@@ -128,7 +135,19 @@ def test_each_folder_imports_only_the_folders_below_it():
 def test_the_folders_show_the_layers():
     tops = sorted(p.name for p in PACKAGE.glob("*.py"))
     assert len(tops) <= 8, tops
-    assert {p.name for p in PACKAGE.iterdir() if (p / "__init__.py").exists()} == set(LAYERS) - {"library"}
+    assert {p.name for p in PACKAGE.iterdir() if (p / "__init__.py").exists()} == set(LAYERS) - {"library"} | {TARGETS}
+
+
+def test_each_consumer_holds_one_module_per_layer():
+    """targets/NAME/ holds build.py, rules.py and load.py (and data such as kdl_tree.cpp), its
+    __init__ imports nothing: one place to read a consumer, each module in its layer."""
+    graph = import_graph()
+    consumers = [p for p in (PACKAGE / TARGETS).iterdir() if (p / "__init__.py").exists()]
+    assert len(consumers) >= 7
+    for folder in consumers:
+        modules = {p.stem for p in folder.glob("*.py")} - {"__init__"}
+        assert modules == set(TARGET_MODULES), (folder.name, modules)
+        assert list(graph.successors(f"urdfcli.{TARGETS}.{folder.name}")) == []
 
 
 def test_nothing_below_the_rules_reads_the_rule_registry():

@@ -15,7 +15,7 @@ from conftest import lint_file
 from support.meshes import example_package
 
 from urdfcli.model.srdf import SRDF_TAGS
-from urdfcli.model.targets import profile
+from urdfcli.targets import profile
 from urdfcli.project.config import Config
 from urdfcli.rules import REGISTRY, example_code
 from urdfcli.rules import srdf as srdf_rules
@@ -26,8 +26,8 @@ ROBOT_CHILDREN = {"link", "joint", "material", "gazebo", "transmission"}
 # and the files of its package: tested in tests/test_xacro_sources.py. X110 compares a URDF with the xacro file
 # beside it that generated it: tested in tests/test_drift.py.
 NEEDS_A_REPOSITORY = {"X006", "P001", "X110"}
-# C001-C003 report what a consumer said on a real load (check --target NAME --load): tests/test_targets.py.
-NEEDS_A_LOAD = {"C001", "C002", "C003"}
+# C001-C004 report what a consumer said on a real load (check --target NAME --load): tests/test_targets.py.
+NEEDS_A_LOAD = {"C001", "C002", "C003", "C004"}
 RULES = sorted((r for r in REGISTRY.values() if r.code not in NEEDS_A_REPOSITORY | NEEDS_A_LOAD), key=lambda r: r.code)
 
 

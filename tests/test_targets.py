@@ -3,8 +3,8 @@
 Every case of tests/target_cases.py is loaded into MuJoCo, Drake, Pinocchio,
 PyBullet and Isaac Sim's converter (each in a child process: urdfcli.project.consumers),
 converted by sdformat for Gazebo (``ign sdf -p`` and ``-k``) and made a KDL tree by
-kdl_parser (tests/support/kdl_tree.cpp; both in tests/consumer_programs.py), and
-urdfcli checks it with ``--target``. For each consumer:
+kdl_parser (src/urdfcli/targets/kdl/kdl_tree.cpp), as ``check --load`` does (each
+consumer's ``load`` module), and urdfcli checks it with ``--target``. For each consumer:
 
 - urdfcli reports an error of that target's rules exactly when the consumer
   rejects the model (Pinocchio, sdformat and kdl_parser read URDF with urdfdom:
@@ -39,29 +39,30 @@ import tempfile
 from functools import cache
 from pathlib import Path
 
-import consumer_programs
 import pytest
 from conftest import IN_CI, example_robot_data, lint_file, run_cli
 from target_cases import CASES, write_cases
 
 from urdfcli.diagnostics import Severity
-from urdfcli.model.targets import CODES, Profile, build, profile
+from urdfcli.model.targets import Profile
 from urdfcli.project import consumers
+from urdfcli.project.compatibility import verdict
 from urdfcli.project.config import Config
-from urdfcli.rules import rule
+from urdfcli.project.loading import Outcome
+from urdfcli.targets import build, profile
 
 PROFILES = ["mujoco", "drake", "pinocchio", "pinocchio:mimic", "pybullet", "pybullet:inertia-from-file", "gazebo", "kdl", "isaac"]
-URDFDOM_READS = {"pinocchio", "gazebo", "kdl"}  # consumers that read URDF with urdfdom: check_urdf's errors are theirs
 # The .dae stand-in is not a real COLLADA file: PyBullet, which reads it, segfaults on its content,
 # which urdfcli does not read (MuJoCo and Drake judge the extension alone).
 CONTENT_READ = {("pybullet", "dae-collision")}
 
 
 def require_consumer(target: str) -> None:
-    """A Python consumer must be importable; a program is looked for when it is first run."""
-    if target not in consumers.PACKAGES or importlib.util.find_spec(consumers.PACKAGES[target]) is not None:
+    """The consumer must run here: skip locally when it cannot, fail in CI."""
+    why = consumers.missing(target)
+    if why is None:
         return
-    message = f"{target} is not installed ({consumers.install_hint(target)}): its differential test cannot run"
+    message = f"{target} cannot run here ({why}): its differential test cannot run"
     if IN_CI:
         pytest.fail(message)
     pytest.skip(message)
@@ -93,30 +94,18 @@ def locked(path: Path):
             fcntl.flock(handle, fcntl.LOCK_UN)
 
 
-@cache
-def kdl_tree() -> str:
-    """tests/support/kdl_tree.cpp compiled, once per test run."""
-    return consumer_programs.kdl_program(Path(tempfile.mkdtemp(prefix="urdfcli-kdl-")))
-
-
-def load_all(chosen: Profile, paths: list[str]) -> list[consumers.ConsumerLoad]:
-    if chosen.target == "gazebo":
-        command = consumer_programs.sdformat()
-        return [consumer_programs.gazebo(command, path) for path in paths]
-    if chosen.target == "kdl":
-        program = kdl_tree()
-        return [consumer_programs.kdl(program, path) for path in paths]
-    return consumers.load_many(chosen.target, paths, tuple(sorted(chosen.variants)))
+def load_all(chosen: Profile, paths: list[str]) -> list[Outcome]:
+    return consumers.load(chosen.target, paths, chosen.variants)
 
 
 @cache
-def real_loads(text: str, folder: str) -> dict[str, consumers.ConsumerLoad]:
+def real_loads(text: str, folder: str) -> dict[str, Outcome]:
     """Every case loaded into one consumer profile, once per test run: the first worker
     to ask loads them and leaves the answers beside the cases for the others."""
     kept = Path(folder) / f"loaded-{text.replace(':', '-')}.json"
     with locked(kept.with_suffix(".lock")):
         if kept.exists():
-            return {name: consumers.ConsumerLoad(**answer) for name, answer in json.loads(kept.read_text()).items()}
+            return {name: Outcome(**answer) for name, answer in json.loads(kept.read_text()).items()}
         paths = [str(Path(folder) / f"{name}.urdf") for name in CASES]
         found = dict(zip(CASES, load_all(profile(text), paths)))
         kept.write_text(json.dumps({name: loaded._asdict() for name, loaded in found.items()}))
@@ -135,14 +124,12 @@ def predicted(path: Path, chosen: Profile):
 
 
 def target_diagnostics(result, chosen: Profile):
-    return [d for d in result.diagnostics if d.code.startswith(CODES[chosen.target])]
+    return [d for d in result.diagnostics if d.code.startswith(chosen.consumer.prefix)]
 
 
 def predicted_rejection(result, chosen: Profile) -> bool:
-    errors = [d for d in result.diagnostics if d.severity is Severity.ERROR]
-    if any(d.code.startswith(CODES[chosen.target]) for d in errors):
-        return True
-    return chosen.target in URDFDOM_READS and any(rule(d.code).urdfdom for d in errors)
+    """An error of the target's rules, or a plain error it does not load anyway."""
+    return verdict(result.diagnostics, chosen).refuses
 
 
 # (profile, case) pairs; a consumer that reads the content of a stand-in file is not asked about it
@@ -373,7 +360,7 @@ MESH_CONTENT = {
 def test_published_models_verdicts_match(text, published_models):
     chosen = profile(text)
     require_consumer(chosen.target)
-    reals = consumers.load_many(chosen.target, [str(p) for p in published_models])
+    reals = consumers.load(chosen.target, [str(p) for p in published_models])
     disagreements = []
     for path, real in zip(published_models, reals):
         if chosen.target == "mujoco" and path.name in MESH_CONTENT:
@@ -406,7 +393,7 @@ def test_an_stl_of_a_triangle_count_mujoco_refuses_is_rejected_by_both(tmp_path,
         '<joint name="j" type="revolute"><parent link="base"/><child link="l"/><axis xyz="0 0 1"/>'
         '<limit lower="-1" upper="1" effort="1" velocity="1"/></joint></robot>'
     )
-    [real] = consumers.load_many("mujoco", [str(model)])
+    [real] = consumers.load("mujoco", [str(model)])
     assert not real.accepted and "200000" in real.error, real
     found = [d.message for d in predicted(model, profile("mujoco")).diagnostics if d.code == "C109"]
     assert found == [f"MuJoCo rejects link 'l': {said}"]
@@ -444,6 +431,15 @@ def test_unknown_target_is_one_line_and_exit_2(cases):
     done = run_cli("check", "--target", "mujoko", str(cases["baseline"]))
     assert done.returncode == 2
     assert "unknown target 'mujoko'" in done.stderr.decode() and len(done.stderr.decode().strip().splitlines()) == 1
+
+
+def test_the_target_help_lists_the_registry():
+    """--target's help is written out (so that --help imports no consumer); it says what the registry holds."""
+    from urdfcli import targets
+    from urdfcli.cli.common import TargetOption
+
+    [option] = [meta for meta in TargetOption.__metadata__ if hasattr(meta, "help")]
+    assert f"rejects, changes or warns about: {targets.help_text()}. Repeatable" in option.help
 
 
 def test_predictions_import_no_consumer(cases):

@@ -390,7 +390,7 @@ def _audit(loaded: Loaded, config: Config, asked: AuditOptions, session: Session
     """The audit ``urdfcli inertia`` prints: with the suggested <inertial> elements, and
     what each consumer of the targets builds, when asked for."""
     from .model import fixes
-    from .model.targets import build
+    from .targets import build
 
     found = audit(loaded, config, asked.tolerance, asked.density)
     if found is None:
@@ -401,9 +401,9 @@ def _audit(loaded: Loaded, config: Config, asked: AuditOptions, session: Session
 
 
 def loaded_into_targets(result: Result, session: Session) -> Result:
-    """``check --load``: the result with what the consumers of its targets that have a
-    Python package said of the model when it was loaded into them (C001-C003). Raises
-    UsageError when no target is asked for, or a consumer's package is not installed."""
+    """``check --load``: the result with what the consumers of its targets said of the
+    model when it was loaded into them (C001-C004). Raises UsageError when no target is
+    asked for."""
     from .project import consumers
 
     loaded = result.loaded
@@ -414,13 +414,7 @@ def loaded_into_targets(result: Result, session: Session) -> Result:
         raise UsageError("--load loads the model into the --target consumers: name one, such as --target mujoco")
     if loaded.document.file is None and not loaded.document.is_xacro:
         raise UsageError("--load needs the model in a file, not standard input")
-    found = []
-    for chosen in config.targets:
-        if chosen.target not in consumers.PACKAGES:
-            continue  # Gazebo, KDL and Isaac Sim have no Python package to load into here
-        if not consumers.installed(chosen.target):
-            raise UsageError(f"--load --target {chosen.target} needs {chosen.name}'s Python package: {consumers.install_hint(chosen.target)}")
-        found += consumers.verify(loaded, list(result.diagnostics), chosen)
+    found = [d for chosen in config.targets for d in consumers.verify(loaded, list(result.diagnostics), chosen)]
     return result.but(diagnostics=tuple(sorted([*result.diagnostics, *(linter.with_severity(d, config) for d in found)], key=Diagnostic.sort_key)))
 
 

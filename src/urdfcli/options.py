@@ -51,7 +51,7 @@ class AuditOptions(NamedTuple):
 @dataclass(frozen=True)
 class Options:
     """One run's options. Lists given for the tuples are kept as tuples, and target
-    texts (``"mujoco"``, ``"pinocchio:mimic"``, ``"drake,kdl"``) as profiles: a
+    texts (``"mujoco"``, ``"pinocchio:mimic"``, ``"drake,kdl"``, ``"all"``) as profiles: a
     target that names no consumer raises ValueError.
 
     ``select`` and ``targets`` replace the configuration's, ``ignore`` and
@@ -95,9 +95,9 @@ class Options:
         chosen: list[Profile] = []
         for target in self.targets or ():
             if isinstance(target, str):
-                from .model.targets import profile  # (a consumer's tables: only where one is named)
+                from .targets import profiles  # (the consumers' registry: only where one is named)
 
-                chosen += [profile(text) for text in target.split(",") if text.strip()]
+                chosen += [p for text in target.split(",") if text.strip() for p in profiles(text)]
             else:
                 chosen.append(target)
         object.__setattr__(self, "targets", tuple(dict.fromkeys(chosen)))

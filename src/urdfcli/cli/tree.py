@@ -53,7 +53,7 @@ def tree(
     missing or unreadable mesh (printed on stderr; the tree is still shown when
     there is one); 2 when the input cannot be read.
     """
-    from ..model.targets import build, profile
+    from ..targets import build, profiles
     from ..report.targets import build_dict
     from ..report.targets import summary as target_summary
     from ..report.tree import cut, summarise, text_lines, tree_json, tree_rows
@@ -75,7 +75,7 @@ def tree(
         rows = tree_rows(robot, start)
         summary = summarise(robot, rows)
         shown = cut(rows, max_depth)
-        builds = [build(result.loaded, profile(text)) for value in target or () for text in value.split(",")]
+        builds = [build(result.loaded, chosen) for value in target or () for text in value.split(",") for chosen in profiles(text)]
         notes = target_notes(builds)
         if options.format == "json":
             output.out.file.write(tree_json(robot, shown, summary, [build_dict(b) for b in builds]) + "\n")

@@ -41,7 +41,8 @@ from pathlib import Path
 from typing import Any, NamedTuple
 
 from ..diagnostics import Severity
-from ..model.targets import Profile, profile
+from ..model.targets import Profile
+from ..targets import profiles
 from ..read.folders import nearest
 from ..rules import REGISTRY, Rule, UnknownRule, lookup
 from ..rules.suggestions import close_matches
@@ -203,7 +204,7 @@ def _profiles(values: Any, where: str) -> tuple[Profile, ...]:
     if not isinstance(values, list) or not all(isinstance(v, str) for v in values):
         raise ConfigError(f"{where}: expected a list of targets such as [\"mujoco\", \"pinocchio:mimic\"], not {values!r}")
     try:
-        return tuple(dict.fromkeys(profile(v) for text in values for v in text.split(",") if v.strip()))
+        return tuple(dict.fromkeys(chosen for text in values for v in text.split(",") if v.strip() for chosen in profiles(v)))
     except ValueError as error:
         raise ConfigError(f"{where}: {error}") from None
 

@@ -1,79 +1,86 @@
-"""Loading a model into a real consumer (MuJoCo, Drake, Pinocchio, PyBullet, Isaac Sim's
-converter), for ``check --target NAME --load`` and the differential tests.
+"""The real consumers, by name (``LOADERS``): ``check --target NAME --load`` and the differential tests.
 
-The consumer runs in a child process (``python -m urdfcli.project.consumers NAME
-VARIANTS FILE``): PyBullet segfaults on some models and Drake turns some inputs
-into ``SystemExit``, neither of which may take urdfcli down. The child prints
-one JSON object: whether the consumer accepted the model, its error, what it
-printed, and what it built (bodies with their mass and principal moments,
-joints with their kind and range, degrees of freedom). Nothing here is
-imported by a prediction: only the child imports the consumer.
+Each consumer's ``load`` module (:mod:`urdfcli.targets`) says how it is run. A Python
+consumer runs in a child process (:func:`child`, started with ``python -c``): PyBullet
+segfaults on some models and Drake turns some inputs into ``SystemExit``, neither of
+which may take urdfcli down. The child prints one JSON object per file: whether the
+consumer accepted it, its error, what it printed, and what it built. Nothing here is
+imported by a prediction, and only the child imports a consumer.
 """
 
 from __future__ import annotations
 
 import contextlib
 import json
-import math
 import os
 import subprocess
 import sys
 import tempfile
-from collections.abc import Iterator
-from typing import Any, NamedTuple
+from collections.abc import Iterator, Sequence
 
-PACKAGES = {"mujoco": "mujoco", "drake": "pydrake", "pinocchio": "pinocchio", "pybullet": "pybullet", "isaac": "urdf_usd_converter"}
-INSTALL = {"mujoco": "mujoco", "drake": "drake", "pinocchio": "pin", "pybullet": "pybullet", "isaac": "urdf-usd-converter"}
+from ..targets.drake.load import LOADER as DRAKE
+from ..targets.gazebo.load import LOADER as GAZEBO
+from ..targets.isaac.load import LOADER as ISAAC
+from ..targets.kdl.load import LOADER as KDL
+from ..targets.mujoco.load import LOADER as MUJOCO
+from ..targets.pinocchio.load import LOADER as PINOCCHIO
+from ..targets.pybullet.load import LOADER as PYBULLET
+from .loading import Loader, Outcome, Packages
+
+LOADERS: dict[str, Loader] = {loader.name: loader for loader in (MUJOCO, DRAKE, PINOCCHIO, PYBULLET, GAZEBO, KDL, ISAAC)}
 TIMEOUT = 120.0  # seconds a consumer may take to load one model
+CHILD = "import sys; from urdfcli.project.consumers import child; sys.exit(child(sys.argv[1:]))"
 
 
-class ConsumerLoad(NamedTuple):
-    """What a consumer did with a model. ``crashed`` is the signal that killed it."""
-
-    accepted: bool
-    error: str = ""
-    printed: str = ""  # what the consumer wrote to its standard output and error
-    built: dict[str, Any] = {}
-    crashed: int | None = None
-
-
-def installed(target: str) -> bool:
-    """Whether the consumer's Python package can be imported here (without importing it)."""
-    import importlib.util
-
-    return importlib.util.find_spec(PACKAGES[target]) is not None
+def load(target: str, paths: Sequence[str], variants: frozenset[str] = frozenset(), packages: Packages | None = None) -> list[Outcome]:
+    """Load each of ``paths`` (plain URDF files) into ``target``: one :class:`Outcome` per
+    path, in order. ``packages`` are those urdfcli resolved, given to the consumers that
+    take a package map."""
+    loader = LOADERS[target]
+    packages = dict(packages or {})
+    if loader.load is not None:
+        return loader.load(paths, variants, packages)
+    return _in_child(target, list(paths), variants, packages)
 
 
-def install_hint(target: str) -> str:
-    return f"pip install {INSTALL[target]}"
-
-
-def load(target: str, path: str, variants: tuple[str, ...] = ()) -> ConsumerLoad:
-    """Load ``path`` (a plain URDF file) into ``target`` in a child process."""
-    return load_many(target, [path], variants)[0]
-
-
-def load_many(target: str, paths: list[str], variants: tuple[str, ...] = ()) -> list[ConsumerLoad]:
-    """Load each of ``paths`` into ``target``, in one child process (PyBullet: one per
-    file, since it may crash): one :class:`ConsumerLoad` per path, in order."""
-    if target == "pybullet" and len(paths) > 1:
-        return [load(target, path, variants) for path in paths]
-    command = [sys.executable, "-m", "urdfcli.project.consumers", target, ",".join(variants), *map(os.path.abspath, paths)]
+def _in_child(target: str, paths: list[str], variants: frozenset[str], packages: dict[str, str]) -> list[Outcome]:
+    """The files loaded one after the other in one child process; when the consumer kills
+    it, that file is said to have crashed it and the rest go to a new child."""
+    if not paths:
+        return []
+    command = [sys.executable, "-c", CHILD, target, ",".join(sorted(variants)), json.dumps(packages), *map(os.path.abspath, paths)]
     try:
-        with tempfile.TemporaryDirectory(prefix="urdfcli-load-") as folder:  # where MuJoCo writes MUJOCO_LOG.TXT
+        with tempfile.TemporaryDirectory(prefix="urdfcli-load-") as folder:  # its working folder: where MuJoCo writes MUJOCO_LOG.TXT
             done = subprocess.run(command, capture_output=True, text=True, timeout=TIMEOUT * len(paths), errors="replace", cwd=folder)
     except subprocess.TimeoutExpired:
-        return [ConsumerLoad(False, f"{target} did not finish loading in {TIMEOUT:.0f} s")] * len(paths)
+        return [Outcome(False, f"{target} did not finish loading in {TIMEOUT:.0f} s")] * len(paths)
     answers = [json.loads(line) for line in done.stdout.splitlines() if line.startswith("{")]
-    found = [ConsumerLoad(a["accepted"], a.get("error", ""), a.get("printed", ""), a.get("built", {})) for a in answers]
+    found = [Outcome(a["accepted"], a.get("error", ""), a.get("printed", ""), a.get("built", {})) for a in answers]
     if len(found) < len(paths):  # the child died on the next one
-        why = f"{target} crashed (signal {-done.returncode})" if done.returncode < 0 else f"{target} exited with status {done.returncode}"
-        found.append(ConsumerLoad(False, why, done.stderr[-2000:], crashed=-done.returncode if done.returncode < 0 else None))
-        found += load_many(target, paths[len(found):], variants) if len(found) < len(paths) else []
+        signal = -done.returncode if done.returncode < 0 else None
+        why = f"{target} crashed (signal {signal})" if signal else f"{target} exited with status {done.returncode}"
+        found.append(Outcome(False, why, done.stderr[-2000:], crashed=signal))
+        found += _in_child(target, paths[len(found):], variants, packages)
     return found
 
 
 # -- in the child process ----------------------------------------------------------------
+
+
+def child(argv: list[str]) -> int:
+    """Load each file named after the target, its variants and packages; one JSON line per file."""
+    target, variants, packages = argv[0], frozenset(v for v in argv[1].split(",") if v), json.loads(argv[2])
+    built = LOADERS[target].built
+    for path in argv[3:]:
+        answer: dict = {"accepted": True}
+        with captured() as printed:
+            try:
+                answer["built"] = built(path, variants, packages)
+            except BaseException as error:  # noqa: BLE001 -- Drake's asserts raise SystemExit
+                answer = {"accepted": False, "error": f"{type(error).__name__}: {error}".strip()}
+        answer["printed"] = printed[0] if printed else ""
+        print(json.dumps(answer), flush=True)
+    return 0
 
 
 @contextlib.contextmanager
@@ -99,195 +106,93 @@ def captured() -> Iterator[list[str]]:
             found.append(sink.read().decode(errors="replace"))
 
 
-def _finite(value: float) -> float | None:
-    return float(value) if math.isfinite(value) else None
+def missing(target: str) -> str | None:
+    """Why ``target`` cannot be run here, in one line (None: it can)."""
+    return LOADERS[target].missing()
 
 
-def _mujoco(path: str, variants: tuple[str, ...]) -> dict:
-    import mujoco
-
-    model = mujoco.MjModel.from_xml_path(path)
-    name = lambda kind, i: mujoco.mj_id2name(model, kind, i)  # noqa: E731
-    bodies = [
-        {"name": name(mujoco.mjtObj.mjOBJ_BODY, i), "mass": float(model.body_mass[i]), "inertia": [float(v) for v in model.body_inertia[i]],
-         "parent": name(mujoco.mjtObj.mjOBJ_BODY, int(model.body_parentid[i]))}
-        for i in range(model.nbody)
-    ]
-    kinds = {0: "free", 1: "ball", 2: "slide", 3: "hinge"}
-    joints = [
-        {"name": name(mujoco.mjtObj.mjOBJ_JOINT, i), "type": kinds[int(model.jnt_type[i])], "limited": bool(model.jnt_limited[i]),
-         "range": [float(v) for v in model.jnt_range[i]]}
-        for i in range(model.njnt)
-    ]
-    return {"bodies": bodies, "joints": joints, "nq": model.nq, "nv": model.nv, "ngeom": model.ngeom, "equalities": model.neq}
-
-
-def _drake(path: str, variants: tuple[str, ...]) -> dict:
-    from pydrake.multibody.parsing import Parser
-    from pydrake.multibody.plant import AddMultibodyPlantSceneGraph
-    from pydrake.multibody.tree import BodyIndex, JointIndex
-    from pydrake.systems.framework import DiagramBuilder
-
-    builder = DiagramBuilder()
-    plant, _ = AddMultibodyPlantSceneGraph(builder, 1e-3)
-    Parser(plant).AddModels(path)
-    plant.Finalize()
-    bodies = []
-    for i in range(1, plant.num_bodies()):
-        body = plant.get_body(BodyIndex(i))
-        inertia = body.default_spatial_inertia()
-        moments = inertia.CalcRotationalInertia().CalcPrincipalMomentsOfInertia()
-        bodies.append({"name": body.name(), "mass": float(body.default_mass()), "inertia": [float(m) for m in moments]})
-    joints = []
-    for i in range(plant.num_joints()):
-        joint = plant.get_joint(JointIndex(i))
-        lower, upper = joint.position_lower_limits(), joint.position_upper_limits()
-        joints.append({"name": joint.name(), "type": joint.type_name(), "lower": [_finite(v) for v in lower], "upper": [_finite(v) for v in upper]})
-    return {"bodies": bodies, "joints": joints, "nq": plant.num_positions(), "nv": plant.num_velocities()}
-
-
-def _pinocchio(path: str, variants: tuple[str, ...]) -> dict:
-    import pinocchio
-
-    arguments: list = [path]
-    if "free-flyer" in variants:
-        arguments.append(pinocchio.JointModelFreeFlyer())
-    model = pinocchio.buildModelFromUrdf(*arguments, mimic="mimic" in variants) if "mimic" in variants else pinocchio.buildModelFromUrdf(*arguments)
-    joints = [{"name": model.names[i], "type": model.joints[i].shortname(), "nq": model.joints[i].nq, "nv": model.joints[i].nv,
-               "mass": float(model.inertias[i].mass)} for i in range(1, model.njoints)]
-    frames = [{"name": f.name, "type": str(f.type).rsplit(".", 1)[-1]} for f in model.frames]
-    return {"joints": joints, "frames": frames, "nq": model.nq, "nv": model.nv, "mass": float(sum(i.mass for i in model.inertias))}
-
-
-def _pybullet(path: str, variants: tuple[str, ...]) -> dict:
-    import pybullet
-
-    client = pybullet.connect(pybullet.DIRECT)
-    flags = pybullet.URDF_USE_INERTIA_FROM_FILE if "inertia-from-file" in variants else 0
-    body = pybullet.loadURDF(path, flags=flags, useFixedBase="fixed-base" in variants, physicsClientId=client)
-    base = pybullet.getDynamicsInfo(body, -1, physicsClientId=client)
-    links = [{"name": pybullet.getBodyInfo(body, physicsClientId=client)[0].decode(), "mass": base[0], "inertia": list(base[2])}]
-    joints = []
-    for i in range(pybullet.getNumJoints(body, physicsClientId=client)):
-        info = pybullet.getJointInfo(body, i, physicsClientId=client)
-        dynamics = pybullet.getDynamicsInfo(body, i, physicsClientId=client)
-        links.append({"name": info[12].decode(), "mass": dynamics[0], "inertia": list(dynamics[2])})
-        joints.append({"name": info[1].decode(), "type": int(info[2]), "lower": info[8], "upper": info[9]})
-    return {"links": links, "joints": joints}
-
-
-def _isaac(path: str, variants: tuple[str, ...]) -> dict:
-    """Isaac Sim 6's importer, stage 1: the USD stage urdf-usd-converter writes, read back:
-    its rigid bodies (mass None where none is authored: the physics engine weighs the
-    colliders) and its joints (limits in radians or metres, None where there is none)."""
-    from pxr import Usd, UsdPhysics
-    from urdf_usd_converter import Converter
-
-    with tempfile.TemporaryDirectory() as folder:
-        stage = Usd.Stage.Open(Converter(layer_structure=False, scene=False).convert(path, folder).path)
-        bodies, joints = [], []
-        for prim in stage.Traverse():
-            name = prim.GetDisplayName() or prim.GetName()  # a name USD cannot hold is kept as the display name
-            if prim.HasAPI(UsdPhysics.RigidBodyAPI):
-                bodies.append({"name": name, "mass": _authored(UsdPhysics.MassAPI(prim).GetMassAttr()),
-                               "inertia": _authored(UsdPhysics.MassAPI(prim).GetDiagonalInertiaAttr())})
-            elif prim.IsA(UsdPhysics.Joint):
-                joints.append({"name": name, "type": prim.GetTypeName(), **_usd_limits(prim)})
-        return {"bodies": bodies, "joints": joints}
-
-
-def _authored(attribute) -> Any:
-    """An attribute's value as JSON, None where the converter wrote none."""
-    if not attribute.HasAuthoredValue():
-        return None
-    value = attribute.Get()
-    return [float(v) for v in value] if hasattr(value, "__len__") else float(value)
-
-
-def _usd_limits(prim) -> dict:
-    """A revolute joint's limits back in radians (USD keeps degrees), a prismatic one's in metres."""
-    lower, upper = (prim.GetAttribute(f"physics:{side}Limit") for side in ("lower", "upper"))
-    scale = math.radians(1.0) if prim.GetTypeName() == "PhysicsRevoluteJoint" else 1.0
-    found = {side: _authored(attribute) for side, attribute in (("lower", lower), ("upper", upper)) if attribute}
-    return {side: None if value is None or not math.isfinite(value) else value * scale for side, value in found.items()}
-
-
-LOADERS = {"mujoco": _mujoco, "drake": _drake, "pinocchio": _pinocchio, "pybullet": _pybullet, "isaac": _isaac}
-
-
-def main(argv: list[str]) -> int:
-    """Load each file named after the target and its variants; one JSON line per file."""
-    target, variants = argv[0], tuple(v for v in argv[1].split(",") if v)
-    for path in argv[2:]:
-        answer: dict[str, Any] = {"accepted": True}
-        with captured() as printed:
-            try:
-                answer["built"] = LOADERS[target](path, variants)
-            except BaseException as error:  # noqa: BLE001 -- Drake's asserts raise SystemExit
-                answer = {"accepted": False, "error": f"{type(error).__name__}: {error}".strip()}
-        answer["printed"] = printed[0] if printed else ""
-        print(json.dumps(answer), flush=True)
-    return 0
-
-
-if __name__ == "__main__":
-    sys.exit(main(sys.argv[1:]))
+def packages_of(loaded) -> dict[str, str]:
+    """The packages a model's ``package://`` URIs name, as urdfcli resolved them (a model.load.Loaded)."""
+    found = {}
+    for _, _, uri in loaded.robot.resources:
+        if uri.startswith("package://"):
+            name = uri[len("package://"):].split("/", 1)[0]
+            if name and name not in found:
+                folder = loaded.resolver.find(name)
+                if folder is not None:
+                    found[name] = str(folder)
+    return found
 
 
 # -- --load: the real load beside the prediction -------------------------------------------------
 
-WARNING_LINE = ("warning", "b3warning")
 
+def verify(loaded, diagnostics: list, chosen) -> list:
+    """Load a model (a model.load.Loaded) into ``chosen``'s consumer and say what it did:
+    each of its errors (C001) and warnings (C003) whole, at the line or element it names;
+    C002 when its verdict is not urdfcli's; C004 when it cannot run here."""
+    from .compatibility import verdict
 
-def verify(loaded_model, diagnostics: list, chosen) -> list:
-    """Load a model into ``chosen``'s consumer and say what it did: its error (C001) and
-    warnings (C003), placed at the link or joint they name, and C002 when its verdict is
-    not urdfcli's (an error of the target's rules). ``loaded_model`` is a model.load.ConsumerLoad."""
-    from ..model.targets import CODES
-
-    document = loaded_model.document
-    with _as_file(document) as path:
-        real = load(chosen.target, path, tuple(sorted(chosen.variants)))
+    robot = loaded.robot
+    why = missing(chosen.target)
+    if why is not None:
+        return [loaded.diagnostic("C004", f"{chosen.name} cannot be loaded here: {why}", robot.at)]
+    with model_file(loaded) as path:
+        [outcome] = load(chosen.target, [path], chosen.variants, packages_of(loaded))
+        messages = [m._replace(text=m.text.replace(path, loaded.document.shown)) for m in LOADERS[chosen.target].said(outcome, path)]
     found = []
-    robot = loaded_model.robot
-    if not real.accepted:
-        first = real.error.splitlines()[0] if real.error else "refused the model"
-        found.append(_placed(loaded_model, "C001", f"{chosen.name} refuses the model: {first}", real.error))
-    for line in real.printed.splitlines():
-        if line.lower().lstrip().startswith(WARNING_LINE) or ": warning:" in line.lower():
-            found.append(_placed(loaded_model, "C003", f"{chosen.name} warns: {line.strip()[:300]}", line))
-    predicted = any(d.code.startswith(CODES[chosen.target]) and d.severity is not None and d.severity.value == "error" for d in diagnostics)
-    if predicted == real.accepted:
-        said = "rejects" if predicted else "accepts"
-        did = "accepted it" if real.accepted else "refused it"
-        found.append(loaded_model.diagnostic("C002", f"urdfcli predicted that {chosen.name} {said} the model, but {did}", robot.at))
+    for message in messages:
+        if message.severity == "error":
+            found.append(_placed(loaded, "C001", f"{chosen.name} refuses the model: {message.text}", message))
+        else:
+            found.append(_placed(loaded, "C003", f"{chosen.name} warns: {message.text}", message))
+    predicted = verdict(diagnostics, chosen).refuses
+    if predicted == outcome.accepted:
+        said = "refuses" if predicted else "loads"
+        did = "loaded it" if outcome.accepted else "refused it"
+        found.append(loaded.diagnostic("C002", f"urdfcli predicted that {chosen.name} {said} the model, but it {did}", robot.at))
     return found
 
 
-def _placed(loaded_model, code: str, message: str, text: str):
-    """A diagnostic at the first link or joint the consumer's text names ('link1'), else at <robot>."""
-    import re
-
-    robot = loaded_model.robot
-    for name in re.findall(r"'([^']+)'", text):
-        element = robot.links.get(name) or robot.joints.get(name)
-        if element is not None:
-            return loaded_model.diagnostic(code, message, element.at, subjects=(name,))
-    return loaded_model.diagnostic(code, message, robot.at)
+def _placed(loaded, code: str, message: str, said):
+    """A diagnostic at the line the consumer named, else at the first link or joint it names, else at <robot>."""
+    robot = loaded.robot
+    at = loaded.document.element_on_line(said.line) if said.line is not None else None
+    subjects = tuple(name for name in said.names if name in robot.links or name in robot.joints)
+    if at is None and subjects:
+        element = robot.links.get(subjects[0]) or robot.joints.get(subjects[0])
+        at = element.at
+    return loaded.diagnostic(code, message, at if at is not None else robot.at, subjects=subjects)
 
 
 @contextlib.contextmanager
-def _as_file(document) -> Iterator[str]:
+def model_file(loaded) -> Iterator[str]:
     """The model as a file the consumer can read: the input itself, or a xacro input's
-    expansion written beside it (so that relative mesh paths still resolve), removed after."""
+    expansion written to the system's temporary folder (its relative mesh paths made
+    absolute, each on its own line), removed after."""
+    document = loaded.document
     if not document.is_xacro and document.file is not None:
         yield str(document.file)
         return
-    folder = os.path.dirname(os.path.abspath(document.file)) if document.file is not None else None
-    handle, path = tempfile.mkstemp(prefix=".urdfcli-load-", suffix=".urdf", dir=folder)
+    folder = document.file.parent if document.file is not None else None
+    text = _absolute_paths(document.expanded_text or "", folder) if folder is not None else document.expanded_text or ""
+    handle, path = tempfile.mkstemp(prefix="urdfcli-load-", suffix=".urdf")
     try:
         with os.fdopen(handle, "w", encoding="utf-8") as out:
-            out.write(document.expanded_text or "")
+            out.write(text)
         yield path
     finally:
         os.unlink(path)
+
+
+def _absolute_paths(text: str, folder) -> str:
+    """``filename="meshes/a.stl"`` made ``filename="/FOLDER/meshes/a.stl"`` (the lines stay where they are)."""
+    import re
+
+    def absolute(match: re.Match) -> str:
+        value = match.group(2)
+        if "://" in value or os.path.isabs(value) or not value:
+            return match.group(0)
+        return f"{match.group(1)}{os.path.join(folder, value)}{match.group(3)}"
+
+    return re.sub(r"""(\bfilename\s*=\s*["'])([^"']*)(["'])""", absolute, text)

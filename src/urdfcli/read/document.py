@@ -120,6 +120,17 @@ class Document:
         line, column = text.position(start)
         return Location(self.shown, line, None, expanded=True) if self.is_xacro else Location(self.shown, line, column)
 
+    def element_on_line(self, line: int) -> int | None:
+        """The element a message about ``line`` of the model's text (the file, or xacro's
+        output) is about: the last one starting on or before that line."""
+        text = self.model_source
+        end = text.offset(line + 1) if text is not None else None
+        if text is None or line < 1:
+            return None
+        starts = text.starts()
+        index = bisect.bisect_left(starts, end if end is not None else len(text.text)) - 1
+        return index if index >= 0 else None
+
     @cached_property
     def model_source(self) -> Text | None:
         """The text the model was read from: the file, or xacro's output."""

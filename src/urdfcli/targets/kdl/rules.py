@@ -2,8 +2,8 @@
 
 from __future__ import annotations
 
-from ..base import INFO, WARNING, Kind, check
-from .common import about_joint, inertial_at, joints_of
+from ...rules.base import INFO, WARNING, Kind, check
+from ...rules.targets.common import about_joint, inertial_at, joints_of
 
 
 @check("C601", "kdl-fixed-floating-joint", WARNING, "KDL turns floating and planar joints into fixed ones.", kind=Kind.TARGET, target="kdl")

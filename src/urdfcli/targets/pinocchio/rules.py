@@ -3,9 +3,9 @@ include/pinocchio/parsers/urdf/model.hxx (the tree walk), include/pinocchio/mult
 
 from __future__ import annotations
 
-from ..base import ERROR, WARNING, Kind, check, explain
-from .common import MIMICKED, about_joint, mimic_at, mimic_joints
-from .examples import MIMIC_GRIPPER, ONE_FINGER
+from ...rules.base import ERROR, WARNING, Kind, check, explain
+from ...rules.targets.common import MIMICKED, about_joint, mimic_at, mimic_joints
+from ...rules.targets.examples import MIMIC_GRIPPER, ONE_FINGER
 
 
 

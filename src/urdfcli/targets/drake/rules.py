@@ -4,10 +4,11 @@
 from __future__ import annotations
 
 from ...model import massprops
-from ...model.targets import declared_mass, drake_replaces, mesh_extension
-from ..base import ERROR, INFO, WARNING, Kind, check, explain
-from .common import limit_at, link_at, number
-from .examples import INVERTED_LIMITS, ORDERED_LIMITS, TRIANGLE_BROKEN, TRIANGLE_KEPT, meshed
+from ...model.targets import declared_mass, mesh_extension
+from .build import replaces
+from ...rules.base import ERROR, INFO, WARNING, Kind, check, explain
+from ...rules.targets.common import limit_at, link_at, number
+from ...rules.targets.examples import INVERTED_LIMITS, ORDERED_LIMITS, TRIANGLE_BROKEN, TRIANGLE_KEPT, meshed
 
 CONVEX = (".obj", ".vtk", ".gltf")  # the collision meshes Drake 1.51 makes a convex hull of
 
@@ -28,7 +29,7 @@ CONVEX = (".obj", ".vtk", ".gltf")  # the collision meshes Drake 1.51 makes a co
 )
 def replaces_inertia(loaded, given):
     for name, link in loaded.robot.links.items():
-        if not drake_replaces(link):
+        if not replaces(link):
             continue
         mass = declared_mass(link)
         used = mass if mass > 0 else 1.0

@@ -4,10 +4,11 @@
 from __future__ import annotations
 
 from ...model import massprops
-from ...model.targets import build, declared_matrix, valid_tensor
-from ..base import ERROR, INFO, WARNING, Kind, check, explain
-from .common import about_joint, add_limit, inverted_limits, joints_of, limit_at, link_at, names, number, without_limit
-from .examples import FIXED_JOINT, FLOATING_JOINT, INVERTED_LIMITS, NO_LIMIT, ORDERED_LIMITS, TRIANGLE_BROKEN, TRIANGLE_KEPT, WITH_LIMIT
+from ...model.targets import declared_matrix, valid_tensor
+from .. import build
+from ...rules.base import ERROR, INFO, WARNING, Kind, check, explain
+from ...rules.targets.common import about_joint, add_limit, inverted_limits, joints_of, limit_at, link_at, names, number, without_limit
+from ...rules.targets.examples import FIXED_JOINT, FLOATING_JOINT, INVERTED_LIMITS, NO_LIMIT, ORDERED_LIMITS, TRIANGLE_BROKEN, TRIANGLE_KEPT, WITH_LIMIT
 
 RECOMPUTED_APART = 0.1  # a recomputed tensor further than this (relative) from the declared one is a change worth saying
 

@@ -4,10 +4,10 @@ base, drives) is not modelled; Isaac Sim 5.1 stopped merging fixed joints by def
 
 from __future__ import annotations
 
-from ...model.targets import isaac_merged_child
-from ..base import WARNING, Kind, check, explain
-from .common import about_joint, add_limit, link_at, without_limit
-from .examples import NO_LIMIT, WITH_LIMIT
+from .build import merged_child
+from ...rules.base import WARNING, Kind, check, explain
+from ...rules.targets.common import about_joint, add_limit, link_at, without_limit
+from ...rules.targets.examples import NO_LIMIT, WITH_LIMIT
 
 
 @check(
@@ -60,7 +60,7 @@ def mass_from_colliders(loaded, given):
     """
     for name, link in loaded.robot.links.items():
         mass = link.inertial.mass if link.inertial is not None else None
-        if link.collisions and not mass and isaac_merged_child(loaded, link) is None:
+        if link.collisions and not mass and merged_child(loaded, link) is None:
             yield loaded.diagnostic(
                 "C702",
                 f"Isaac Sim gives link '{name}' the mass of its colliders at the default density: it has {'mass 0' if link.inertial is not None else 'no <inertial>'}",

@@ -6,11 +6,13 @@ from __future__ import annotations
 
 from ...model import massprops
 from ...model.meshes import MeshFiles
-from ...model.targets import MJMINVAL, build, geometry_body, mesh_extension, mujoco_options, weighed_by_geometry
+from ...model.targets import mesh_extension
+from .. import build
+from .build import MJMINVAL, compiler_options, geometry_body, weighed_by_geometry
 from ...read.meshfile import stl_header
-from ..base import ERROR, INFO, WARNING, Kind, check, explain
-from .common import BOUNDED, inertial_at, joints_of, limit_at, link_at, names, number
-from .examples import INVERTED_LIMITS, ORDERED_LIMITS, TRIANGLE_BROKEN, TRIANGLE_KEPT, WRIST_BOX, arm, meshed, wrist_inertial
+from ...rules.base import ERROR, INFO, WARNING, Kind, check, explain
+from ...rules.targets.common import BOUNDED, inertial_at, joints_of, limit_at, link_at, names, number
+from ...rules.targets.examples import INVERTED_LIMITS, ORDERED_LIMITS, TRIANGLE_BROKEN, TRIANGLE_KEPT, WRIST_BOX, arm, meshed, wrist_inertial
 
 DECODED = (".stl", ".obj", ".msh")  # the mesh files MuJoCo 4.0 decodes without a plugin
 STL_TRIANGLES = 200_000  # the most MuJoCo's STL decoder takes (src/user/user_mesh.cc)
@@ -64,7 +66,7 @@ def massless_body(loaded, given):
     ),
 )
 def triangle_inequality(loaded, given):
-    if mujoco_options(loaded).balanceinertia:
+    if compiler_options(loaded).balanceinertia:
         return
     for name, link in loaded.robot.links.items():
         inertial = link.inertial
@@ -159,7 +161,7 @@ def _once(loaded, code: str, meshes: list, kind: str, why: str, hint: str):
 )
 def mesh_format(loaded, given):
     found: dict[str, list] = {}  # extension -> the links and meshes: said once per extension
-    for name, geometry in _meshes(loaded, mujoco_options(loaded).discardvisual):
+    for name, geometry in _meshes(loaded, compiler_options(loaded).discardvisual):
         extension = mesh_extension(geometry.filename)
         if extension not in DECODED:
             found.setdefault(extension, []).append((name, geometry))
@@ -181,7 +183,7 @@ def mesh_format(loaded, given):
     ),
 )
 def package_uri(loaded, given):
-    meshes = [(name, g) for name, g in _meshes(loaded, mujoco_options(loaded).discardvisual) if g.filename.startswith("package://")]
+    meshes = [(name, g) for name, g in _meshes(loaded, compiler_options(loaded).discardvisual) if g.filename.startswith("package://")]
     if meshes:  # said once per model
         yield _once(
             loaded, "C105", meshes, "package://", "it does not resolve",
@@ -208,7 +210,7 @@ def package_uri(loaded, given):
 def stl_decoder(loaded, given):
     files = MeshFiles.of(loaded)
     found: dict[tuple, list] = {}  # problem -> the links and meshes: said once per problem
-    for name, geometry in _meshes(loaded, mujoco_options(loaded).discardvisual):
+    for name, geometry in _meshes(loaded, compiler_options(loaded).discardvisual):
         if mesh_extension(geometry.filename) != ".stl" or geometry.filename.startswith("package://"):  # C105 says package://
             continue
         path = files.path(geometry.filename)
@@ -277,7 +279,7 @@ def unlimited_joint(loaded, given):
     ),
 )
 def mass_from_geometry(loaded, given):
-    options = mujoco_options(loaded)
+    options = compiler_options(loaded)
     for body in build(loaded, given.profile).bodies:
         if body.joint is None:
             continue

@@ -6,10 +6,10 @@ only to ~/.sdformat/sdformat.log, and can turn massless fixed links into frames
 from __future__ import annotations
 
 from ...model import massprops
-from ...model.targets import build
-from ..base import ERROR, INFO, WARNING, Kind, check, explain
-from .common import about_joint, inverted_limits, joints_of, limit_at, link_at, mimic_at, mimic_joints, names, number
-from .examples import FIXED_JOINT, FLOATING_JOINT, INVERTED_LIMITS, MIMIC_GRIPPER, ONE_FINGER, ORDERED_LIMITS, TRIANGLE_BROKEN, TRIANGLE_KEPT, rover
+from .. import build
+from ...rules.base import ERROR, INFO, WARNING, Kind, check, explain
+from ...rules.targets.common import about_joint, inverted_limits, joints_of, limit_at, link_at, mimic_at, mimic_joints, names, number
+from ...rules.targets.examples import FIXED_JOINT, FLOATING_JOINT, INVERTED_LIMITS, MIMIC_GRIPPER, ONE_FINGER, ORDERED_LIMITS, TRIANGLE_BROKEN, TRIANGLE_KEPT, rover
 
 
 @check(

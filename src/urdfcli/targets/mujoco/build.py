@@ -1,0 +1,107 @@
+"""MuJoCo 4.0.0 (``mujoco.MjModel.from_xml_path``): the bodies it builds, from src/xml/xml_urdf.cc
+and its URDF defaults in src/xml/xml.cc (``fusestatic``, ``discardvisual``)."""
+
+from __future__ import annotations
+
+from typing import NamedTuple
+
+from ...model import massprops
+from ...model.load import Loaded
+from ...model.robot import Link
+from ...model.targets import WATER, Body, Build, Consumer, Profile, combined, declared_part, fused, joint_dof, moving, primitive_volume, tree_joints
+
+MJMINVAL = 1e-15  # MuJoCo's mjMINVAL: a moving body's mass and moments must exceed it
+
+
+class Options(NamedTuple):
+    fusestatic: bool = True
+    discardvisual: bool = True
+    balanceinertia: bool = False
+    inertiafromgeom: str = "auto"
+
+
+def compiler_options(loaded: Loaded) -> Options:
+    """The ``<mujoco><compiler .../></mujoco>`` options the model sets over the URDF defaults."""
+    found = Options()
+    for block in loaded.robot.blocks("mujoco"):
+        for compiler in block.iter("compiler"):
+            for name in ("fusestatic", "discardvisual", "balanceinertia"):
+                value = compiler.get(name)
+                if value in ("true", "false"):
+                    found = found._replace(**{name: value == "true"})
+            if compiler.get("inertiafromgeom") in ("true", "false", "auto"):
+                found = found._replace(inertiafromgeom=compiler.get("inertiafromgeom"))
+    return found
+
+
+def part(link: Link, options: Options, fusing: bool = False):
+    """A link's mass properties in MuJoCo: declared, or with no ``<inertial>`` (inertiafromgeom
+    auto) those of its collision shapes at 1000 kg/m³ (unknown for a mesh). Fusing static
+    bodies (``fusestatic``), MuJoCo counts a negative mass as none, its tensor kept (measured)."""
+    if weighed_by_geometry(link, options):
+        return geometry_body(link)
+    found = declared_part(link)
+    if fusing and found is not None and found[0] < 0:
+        return 0.0, found[1], found[2]
+    return found
+
+
+def weighed_by_geometry(link: Link, options: Options) -> bool:
+    """Whether MuJoCo takes a link's mass from its collision shapes (no ``<inertial>``)."""
+    return link.inertial is None and options.inertiafromgeom != "false" and bool(link.collisions)
+
+
+def geometry_body(link: Link, density: float = WATER):
+    """(mass, com, tensor) of a link's collision primitives filled at ``density``; None with a mesh."""
+    parts = []
+    for shape in link.collisions:
+        volume = primitive_volume(shape.geometry)
+        if volume is None:
+            return None
+        mass = density * volume
+        geometry = shape.geometry
+        if geometry.kind == "box":
+            tensor = massprops.box(mass, geometry.size)
+        elif geometry.kind == "cylinder":
+            tensor = massprops.cylinder(mass, geometry.radius, geometry.length)
+        else:
+            tensor = massprops.sphere(mass, geometry.radius)
+        parts.append((mass, shape.origin.xyz, massprops.rotate(tensor, massprops.rotation(shape.origin.rpy))))
+    return massprops.combine(parts)
+
+
+def build(loaded: Loaded, chosen: Profile) -> Build:
+    options = compiler_options(loaded)
+    bodies, dropped = [], {}
+    members = fused(loaded, lambda joint: moving(joint) or not options.fusestatic)
+    root_fused = options.fusestatic
+    for top, links in members.items():
+        joint = loaded.parent_joint(top)
+        if joint is None and root_fused:
+            for link in links:
+                dropped[link] = "fused into the world body"
+            continue
+        mass, moments = combined(loaded, links, lambda link: part(link, options, fusing=len(links) > 1))
+        weighed = [n for n in links if weighed_by_geometry(loaded.robot.links[n], options)]
+        source = f"{', '.join(weighed)}: collision geometry at 1000 kg/m³" if weighed else "declared"
+        bodies.append(Body(tuple(links), joint if moving(joint) else None, mass, moments, source))
+    changed = {}
+    joints = tree_joints(loaded)
+    for joint in joints:
+        limit = joint.limit
+        if joint.type == "revolute" and limit is not None and limit.lower >= limit.upper:
+            changed[joint.name] = "unlimited"
+        elif joint.type == "planar":
+            changed[joint.name] = "three joints (_TX, _TY, _RZ)"
+        elif joint.mimic is not None:
+            changed[joint.name] = f"an equality constraint on {joint.mimic.joint}"
+    return Build(chosen, tuple(bodies), dropped, "fixed", sum(joint_dof(j) for j in joints), changed)
+
+
+# The plain errors whose models it loads all the same (tests/target_cases.py: PLAIN_ERRORS, one case each)
+LOADS_ANYWAY = frozenset({
+    "D004", "D013", "F001", "G001", "G002", "I001", "I005", "J003", "J006", "J008", "M001", "N003", "N005",
+    "N006", "R002", "R003", "R004", "T001", "V004", "V005", "V006", "V007", "V010", "X002",
+})
+
+CONSUMER = Consumer("mujoco", "MuJoCo", "C1", "mujoco 4.0.0 (PyPI), mujoco.MjModel.from_xml_path", (), build, LOADS_ANYWAY)
