@@ -10,6 +10,8 @@ It measures every target of "What must hold" in one run:
    ``example-robot-data`` package in one call, against a ``check_urdf`` shell loop;
    ``check --target mujoco`` on them against plain ``check`` (within 1.2x), and
    ``lint --fix`` on a copy of them (nothing safe to fix) against plain ``lint`` (within 1.1x);
+   ``check --target all`` (every consumer's prediction and the compatibility table)
+   against plain ``check`` (within 1.5x);
 2. ``check``, ``tree`` and ``expand`` on one small file, against
    ``python -c 'import lxml.etree'``, the floor of any Python tool;
 3. the bundled xacro fixtures that the ``xacro`` tool expands on its own (no
@@ -315,8 +317,9 @@ def corpus_cases(rows: list[Row], check_urdf: str) -> None:
     check, lint, theirs = measure(urdfcli("check", *files), urdfcli("lint", *files), loop, runs=runs)
     compare(rows, f"check, the {len(files)} example-robot-data URDFs in one call", check, "check_urdf loop", theirs, 1.2)
     compare(rows, f"lint, the same {len(files)} URDFs (meshes absent)", lint, "check_urdf loop", theirs, 2.0)
-    targeted, plain = measure(urdfcli("check", "--target", "mujoco", *files), urdfcli("check", *files), runs=runs)
+    targeted, every, plain = measure(urdfcli("check", "--target", "mujoco", *files), urdfcli("check", "--target", "all", *files), urdfcli("check", *files), runs=runs)
     compare(rows, f"check --target mujoco, the same {len(files)} URDFs", targeted, "plain check", plain, 1.2)
+    compare(rows, f"check --target all, the same {len(files)} URDFs", every, "plain check", plain, 1.5)
     copies = corpus_copy()  # --fix writes where it fixes: a copy, though these have nothing safe to fix
     fixing, plain = measure(urdfcli("lint", "--fix", *copies, twin=False), urdfcli("lint", *copies, twin=False), runs=runs)
     compare(rows, f"lint --fix, the same {len(files)} URDFs (nothing to fix)", fixing, "plain lint", plain, 1.1)

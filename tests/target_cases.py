@@ -88,6 +88,7 @@ VISUAL_BOX = '<visual><geometry><box size="0.1 0.1 0.1"/></geometry></visual>'
 PLAIN_ERRORS = {
     "visual-mesh-missing": arm(link("link1", extra=BOX + '<visual><geometry><mesh filename="missing.stl"/></geometry></visual>')),
     "collision-mesh-missing": arm(link("link1", extra=mesh("missing.stl"))),
+    "visual-mesh-unreadable": arm(link("link1", extra=BOX + '<visual><geometry><mesh filename="empty.stl"/></geometry></visual>')),
     "ros2-control-unknown-joint": arm(None, None, '<ros2_control name="arm" type="system"><hardware><plugin>mock_components/GenericSystem</plugin>'
                                       '</hardware><joint name="j9"><command_interface name="position"/></joint></ros2_control>'),
     "geometry-empty": arm(link("link1", extra=BOX + "<visual><geometry/></visual>")),
@@ -126,14 +127,93 @@ PLAIN_ERRORS = {
     "xml-syntax": arm().replace("</robot>", "</robt>"),
     "entity-declaration": '<!DOCTYPE robot [<!ENTITY base "base_link">]>\n' + arm().replace('"base_link"', '"&base;"'),
 }
-# CASES.update(PLAIN_ERRORS)
+CASES.update(PLAIN_ERRORS)
+
+# What the consumers do on real robots, one case each: (case, profile, a piece of the consumer's own
+# message (None: it says nothing), the rule of that profile that says it).
+ZERO_TENSOR = ZERO
+TINY = 'ixx="1e-16" iyy="1e-16" izz="1e-16" ixy="0" ixz="0" iyz="0"'
+FIXED = {"kind": "fixed", "limit": "", "axis": ""}
+
+
+def transmission(name: str, joint_name: str, actuator: str) -> str:
+    return (f'<transmission name="{name}"><type>transmission_interface/SimpleTransmission</type><joint name="{joint_name}">'
+            '<hardwareInterface>hardware_interface/EffortJointInterface</hardwareInterface></joint>'
+            f'<actuator name="{actuator}"><mechanicalReduction>1</mechanicalReduction></actuator></transmission>')
+
+
+def visual_mesh(filename: str) -> str:
+    return BOX + f'<visual><geometry><mesh filename="{filename}"/></geometry></visual>'
+
+
+FACT_CASES = {
+    # a ROS-Industrial support package: shapes, no <inertial> anywhere
+    "all-massless": robot(link("base_link", inertial=False), link("link1", inertial=False), joint("j1", "base_link", "link1"),
+                          link("tool0", inertial=False, extra=""), joint("tool_joint", "link1", "tool0", **FIXED)),
+    "root-mass-zero": arm(base=link("base_link", "0", ZERO_TENSOR)),
+    "zero-mass-frames-chained": arm(None, None, link("frame_a", "0", ZERO_TENSOR, extra=""), joint("a_joint", "link1", "frame_a", **FIXED),
+                                    link("frame_b", "0", ZERO_TENSOR, extra=""), joint("b_joint", "frame_a", "frame_b", **FIXED)),
+    "micro-mass": robot(link("base_link"), link("link1", "1e-6", 'ixx="1e-9" iyy="1e-9" izz="1e-9" ixy="0" ixz="0" iyz="0"'),
+                        joint("j1", "base_link", "link1"), link("link2"), joint("j2", "link1", "link2")),
+    "massless-flange": arm(None, None, link("flange", inertial=False, extra=""), joint("flange_joint", "link1", "flange", **FIXED),
+                           link("finger"), joint("finger_joint", "flange", "finger")),
+    "link-joint-one-name": arm(None, None, link("gripper"), joint("gripper", "link1", "gripper")),
+    "mimic-walked-first": arm(None, None, link("left"), joint("b_finger", "link1", "left"), link("right"),
+                              joint("a_finger", "link1", "right", extra='<mimic joint="b_finger"/>')),
+    "visual-mesh-format": arm(link("link1", extra=visual_mesh("part.mesh"))),
+    "visual-mesh-unknown-package": arm(link("link1", extra=visual_mesh("package://no_such_package/part.stl"))),
+    "cylinder-offset": arm(link("link1", "2", extra='<collision><origin xyz="0.05 0 0"/><geometry><cylinder radius="0.04" length="0.3"/></geometry></collision>')),
+    "boxes-offset": arm(link("link1", extra=BOX + '<collision><origin xyz="0 0 0.2" rpy="0 0 0.5"/><geometry><box size="0.1 0.2 0.05"/></geometry></collision>')),
+    "sphere-offset": arm(link("link1", extra='<collision><origin xyz="0.05 0 0"/><geometry><sphere radius="0.1"/></geometry></collision>')),
+    "obj-offset": arm(link("link1", extra='<collision><origin xyz="0.05 0 0"/><geometry><mesh filename="part.obj"/></geometry></collision>')),
+    "tiny-inertia": arm(None, None, link("pad", "1e-3", TINY, extra=""), joint("pad_joint", "link1", "pad", **FIXED)),
+    "zero-length-cylinder": arm(link("link1", extra='<collision><geometry><cylinder radius="0.05" length="0"/></geometry></collision>')),
+    "material-nowhere": arm(base=link("base_link", extra=BOX + '<visual><geometry><box size="0.1 0.1 0.1"/></geometry><material name="steel"/></visual>')),
+    "texture-unknown-package": arm(base=link("base_link", extra=BOX + '<visual><geometry><box size="0.1 0.1 0.1"/></geometry>'
+                                             '<material name="decal"><texture filename="package://no_such_package/decal.png"/></material></visual>')),
+    "shared-actuator": arm(None, None, link("link2"), joint("j2", "link1", "link2"), transmission("t1", "j1", "motor"), transmission("t2", "j2", "motor")),
+    "fixed-mimic": arm(None, None, link("link2"), joint("j2", "link1", "link2", extra='<mimic joint="j1"/>', **FIXED)),
+    "limit-without-bounds": arm(j1=joint("j1", "base_link", "link1", limit='<limit effort="1" velocity="1"/>')),
+    "joint-friction": arm(j1=joint("j1", "base_link", "link1", extra='<dynamics damping="0.1" friction="0.5"/>')),
+    "zero-effort-transmission": arm(None, joint("j1", "base_link", "link1", limit='<limit lower="-1" upper="1" effort="0" velocity="1"/>'),
+                                    transmission("t1", "j1", "m1")),
+    "names-with-spaces": robot(link("base_link"), link("upper arm"), joint("shoulder pitch", "base_link", "upper arm")),
+    "massless-moving-no-shapes": arm(link("link1", inertial=False, extra="")),
+}
+CASES.update(FACT_CASES)
+FACTS = [
+    ("all-massless", "gazebo", "A model must have at least one link", "C507"),
+    ("root-mass-zero", "gazebo", "A model must have at least one link", "C507"),
+    ("zero-mass-frames-chained", "gazebo", "Pose values must be finite", "C508"),
+    ("micro-mass", "gazebo", "link[link1] has no inertia, not modeled in sdf", "C501"),
+    ("massless-flange", "gazebo", "link[flange] has no inertia, not modeled in sdf", "C501"),
+    ("link-joint-one-name", "gazebo", "has a name collision", "C509"),
+    ("mimic-walked-first", "pinocchio:mimic", "The parent joint of the mimic joint is not in the kinematic tree", "C303"),
+    ("visual-mesh-format", "pybullet", "invalid mesh filename extension", "C408"),
+    ("visual-mesh-unknown-package", "pybullet", "cannot find 'no_such_package/part.stl' in any directory in urdf path", "C408"),
+    ("cylinder-offset", "pybullet", None, "C402"),
+    ("tiny-inertia", "mujoco", "inertia must have positive eigenvalues", "C103"),
+    ("zero-length-cylinder", "mujoco", "must be positive in geom", "C111"),
+    ("collision-mesh-missing", "mujoco", "Error opening file 'missing.stl'", "C110"),
+    ("material-nowhere", "drake", "Material 'steel' not previously defined, but has no color or texture", "C207"),
+    ("texture-unknown-package", "drake", "refers to unknown package 'no_such_package'", "C208"),
+    ("shared-actuator", "drake", "already contains a joint actuator named 'motor'", "C209"),
+    ("fixed-mimic", "drake", "Joint 'j2' which has 0 DOF cannot mimic joint 'j1'", "C210"),
+    ("limit-without-bounds", "drake", None, "C211"),
+    ("joint-friction", "drake", "does not currently support non-zero joint friction", "C212"),
+    ("zero-effort-transmission", "drake", "has a zero effort limit", "C213"),
+    ("names-with-spaces", "isaac", None, "C703"),
+    ("negative-mass", "isaac", None, "C704"),
+    ("floating", "isaac", None, "C705"),
+    ("massless-moving-no-shapes", "isaac", None, "C702"),
+]
 
 TETRAHEDRON = ((0, 0, 0), (0.05, 0, 0), (0, 0.05, 0), (0, 0, 0.05))
 FACES = ((0, 2, 1), (0, 1, 3), (0, 3, 2), (1, 2, 3))
 
 
 def write_meshes(folder: Path) -> None:
-    """part.stl (binary), part_ascii.stl, part.obj and part.dae (a stand-in: only its extension is judged)."""
+    """part.stl (binary), part_ascii.stl, part.obj, empty.stl (no bytes) and part.dae (a stand-in: only its extension is judged)."""
     triangles = b"".join(
         struct.pack("<12fH", 0, 0, 0, *TETRAHEDRON[a], *TETRAHEDRON[b], *TETRAHEDRON[c], 0) for a, b, c in FACES
     )
@@ -145,6 +225,7 @@ def write_meshes(folder: Path) -> None:
     (folder / "part_ascii.stl").write_text(f"solid part\n{facets}endsolid part\n")
     vertices = "".join(f"v {x} {y} {z}\n" for x, y, z in TETRAHEDRON)
     (folder / "part.obj").write_text(vertices + "".join(f"f {a + 1} {b + 1} {c + 1}\n" for a, b, c in FACES))
+    (folder / "empty.stl").write_bytes(b"")
     (folder / "part.dae").write_text('<?xml version="1.0"?><COLLADA xmlns="http://www.collada.org/2005/11/COLLADASchema" version="1.4.1"/>\n')
 
 

@@ -31,6 +31,7 @@ from .model.result import Result, Unreadable
 from .model.units import unit_verdict
 from .project import drift as drift_
 from .project import fixing, linter
+from .project.compatibility import verdicts
 from .project.config import Config, ConfigError
 from .project.semantic import described
 from .project.workspace import Aside, Entry, Models, Target, assemble, fragment_includers, model_targets, models_below, plan, unchecked_library, unread, xacro_sources
@@ -267,7 +268,7 @@ def check_target(target: Target, session: Session) -> Result | Unreadable:
     audited = _audit(loaded, config, options.audit, session) if options.audit is not None else None
     return Result(
         path, tuple(diagnostics), loaded, target.arguments, includes=tuple(document.includes), needs_argument=document.missing_argument,
-        meshes=meshes, audit=audited,
+        meshes=meshes, audit=audited, compatibility=verdicts(diagnostics, config.targets),
     )
 
 

@@ -14,6 +14,7 @@ if TYPE_CHECKING:
     from .load import Loaded
     from .meshes import MeshFile
     from .robot import Robot
+    from .targets import Verdict
 
 
 class Library(NamedTuple):
@@ -48,7 +49,8 @@ class Result:
     (``robot_name`` is kept). ``includes`` are the files the xacro expansion read;
     ``needs_argument`` a xacro argument the model needs and was not given; ``meshes``
     what ``lint`` read of each mesh file; ``audit`` the mass-property audit of
-    ``urdfcli inertia``."""
+    ``urdfcli inertia``; ``compatibility`` what each consumer of ``--target`` does
+    with the model, as urdfcli predicts it."""
 
     path: str
     diagnostics: tuple[Diagnostic, ...] = ()
@@ -59,6 +61,7 @@ class Result:
     needs_argument: str | None = None
     meshes: tuple[MeshFile, ...] = ()
     audit: Audit | None = None
+    compatibility: tuple[Verdict, ...] = ()
     robot_name: str | None = None  # the robot's name: told by ``loaded`` when it is there
     show_info: bool = True  # whether the text formats show its info diagnostics (its configuration's show-info)
 

@@ -19,6 +19,7 @@ from collections.abc import Callable
 from typing import NamedTuple
 
 from ..diagnostics import Diagnostic
+from ..read.memo import once
 from . import massprops
 from .kinematics import children_by_joint_name, walks
 from .load import Loaded
@@ -96,7 +97,7 @@ class Build(NamedTuple):
     base: str  # "fixed" or "floating"
     dof: int  # velocities (nv): each mimic joint counted when the consumer keeps it free
     changed: dict[str, str]  # joint -> what the consumer makes of it, where that is not what URDF says
-    notes: tuple[str, ...] = ()
+    broken: dict[str, str] = {}  # a body's top link -> why the consumer refuses the body as it builds it
 
 
 
@@ -116,6 +117,17 @@ def declared_matrix(link: Link) -> Matrix | None:
     if not any(inertial.origin.rpy):  # most inertials are not turned: no rotation to apply
         return tensor
     return massprops.rotate(tensor, massprops.rotation(inertial.origin.rpy))
+
+
+def declared_moments(loaded: Loaded, link: Link) -> Vector | None:
+    """The principal moments of a link's declared tensor, worked out once per model (the
+    consumers' rules and builds all ask for them)."""
+    return once(loaded, _declared_moments, link.name)
+
+
+def _declared_moments(loaded: Loaded, name: str) -> Vector | None:
+    tensor = declared_matrix(loaded.robot.links[name])
+    return massprops.principal_moments(tensor) if tensor is not None else None
 
 
 def primitive_volume(geometry: Geometry | None) -> float | None:
@@ -185,6 +197,8 @@ def combined(loaded: Loaded, links: list[str], part) -> tuple[float | None, Vect
         parts.append((mass, massprops.place(pose, com), massprops.rotate(tensor, pose[0])))
     if not parts:
         return 0.0, (0.0, 0.0, 0.0)
+    if len(parts) == 1 and len(links) == 1 and part is declared_part:  # the moments do not turn with the link
+        return parts[0][0], declared_moments(loaded, loaded.robot.links[links[0]])
     if len(parts) == 1:
         return parts[0][0], massprops.principal_moments(parts[0][2])
     mass = sum(p[0] for p in parts)

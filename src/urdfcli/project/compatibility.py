@@ -13,16 +13,8 @@ from collections.abc import Iterable
 
 from ..diagnostics import Diagnostic, Severity
 from ..model.targets import Consumer, Profile, Verdict
-from ..rules import REGISTRY, Kind
-
-NOT_ABOUT_THE_MODEL = (Kind.TARGET, Kind.LOADING, Kind.SOURCES)  # a consumer's own rules, its real load, the xacro files as written
-
-
-def about_the_model(code: str) -> bool:
-    """Whether a rule judges the model a consumer reads: neither a consumer's own rule nor
-    one about the xacro sources (a consumer reads their expansion)."""
-    rule = REGISTRY.get(code)
-    return rule is not None and rule.kind not in NOT_ABOUT_THE_MODEL
+from ..rules import REGISTRY
+from ..rules.targets import about_the_model
 
 
 def refused_by(diagnostic: Diagnostic, consumer: Consumer) -> bool:
@@ -31,7 +23,8 @@ def refused_by(diagnostic: Diagnostic, consumer: Consumer) -> bool:
         return False
     if diagnostic.code.startswith(consumer.prefix):
         return True
-    return about_the_model(diagnostic.code) and diagnostic.code not in consumer.loads_anyway
+    rule = REGISTRY.get(diagnostic.code)
+    return rule is not None and about_the_model(rule) and diagnostic.code not in consumer.loads_anyway
 
 
 def verdict(diagnostics: Iterable[Diagnostic], chosen: Profile) -> Verdict:

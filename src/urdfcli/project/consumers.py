@@ -139,7 +139,7 @@ def verify(loaded, diagnostics: list, chosen) -> list:
         return [loaded.diagnostic("C004", f"{chosen.name} cannot be loaded here: {why}", robot.at)]
     with model_file(loaded) as path:
         [outcome] = load(chosen.target, [path], chosen.variants, packages_of(loaded))
-        messages = [m._replace(text=m.text.replace(path, loaded.document.shown)) for m in LOADERS[chosen.target].said(outcome, path)]
+        messages = [m._replace(text=_in_words_of(m.text, path, loaded.document.shown)) for m in LOADERS[chosen.target].said(outcome, path)]
     found = []
     for message in messages:
         if message.severity == "error":
@@ -152,6 +152,17 @@ def verify(loaded, diagnostics: list, chosen) -> list:
         did = "loaded it" if outcome.accepted else "refused it"
         found.append(loaded.diagnostic("C002", f"urdfcli predicted that {chosen.name} {said} the model, but it {did}", robot.at))
     return found
+
+
+def _in_words_of(text: str, path: str, shown: str) -> str:
+    """A consumer's message about the file it was given, as the user knows it: the file's
+    ``PATH:LINE:`` prefix left out (the diagnostic is placed there), its other mentions made
+    the input's name."""
+    import re
+
+    for given in dict.fromkeys((os.path.abspath(path), path)):
+        text = re.sub(re.escape(given) + r":\d+: ", "", text).replace(given, shown)
+    return text
 
 
 def _placed(loaded, code: str, message: str, said):

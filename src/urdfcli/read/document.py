@@ -127,7 +127,7 @@ class Document:
         end = text.offset(line + 1) if text is not None else None
         if text is None or line < 1:
             return None
-        starts = text.starts()
+        starts = text.starts
         index = bisect.bisect_left(starts, end if end is not None else len(text.text)) - 1
         return index if index >= 0 else None
 

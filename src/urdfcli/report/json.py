@@ -9,6 +9,7 @@ from ..diagnostics import Severity
 from .base import Reporter
 from .escape import json_escape
 from .lines import checked, counts, diagnostic_dict
+from .targets import compatibility_dicts
 
 if TYPE_CHECKING:
     from ..model.result import Result
@@ -28,6 +29,8 @@ def file_dict(result: Result, files=None) -> dict:
         entry["arguments"] = dict(result.arguments)
     if result.meshes:  # lint: each mesh file as read (format, triangles, unit, size...)
         entry["meshes"] = [mesh.as_dict() for mesh in result.meshes]
+    if result.compatibility:  # --target: what each consumer does with the model
+        entry["compatibility"] = compatibility_dicts(result)
     return entry
 
 

@@ -5,7 +5,10 @@ from __future__ import annotations
 import json
 import re
 
+from ..diagnostics import Severity
 from ..rules import PLACED, Remedy, Rule, RuleSet
+from ..rules.targets import about_the_model
+from ..targets import TARGETS
 from ..version import __version__
 
 PREFIXES = {
@@ -22,7 +25,7 @@ PREFIXES = {
     "F": "Mesh files",
     "P": "Packages",
     "K": "SRDF (MoveIt's semantic description, checked against its URDF)",
-    "C": "Targets (with --target NAME: C1 MuJoCo, C2 Drake, C3 Pinocchio, C4 PyBullet, C5 Gazebo, C6 KDL, C7 Isaac Sim)",
+    "C": "Targets (with --target NAME: " + ", ".join(f"{c.prefix} {c.title}" for c in TARGETS.values()) + ")",
     "S": "Style (off by default)",
     "U": "Suppression comments",
 }
@@ -58,6 +61,9 @@ def facts(rule: Rule) -> str:
     fix = rule.fixable
     if fix is not None:
         parts.append("fixable with --fix (safe)" if fix.value == "safe" else "fixable with --fix --unsafe-fixes (unsafe)")
+    if rule.severity is Severity.ERROR and about_the_model(rule):
+        loading = [c.title for c in TARGETS.values() if rule.code in c.loads_anyway]
+        parts.append(f"{', '.join(loading)} load{'s' if len(loading) == 1 else ''} the model anyway" if loading else "every --target consumer refuses the model")
     return "; ".join(parts)
 
 

@@ -72,3 +72,65 @@ def build_dict(built: Build) -> dict:
         "changed": built.changed,
         "total_mass": sum(b.mass for b in built.bodies if b.mass is not None),
     }
+
+
+def compatibility_lines(result) -> list[Line]:
+    """The compatibility table of one model (``check --target``): one row per consumer, its
+    verdict and the first reason with its place."""
+    verdicts = result.compatibility
+    if not verdicts:
+        return []
+    width = max(len(_consumer(v)) for v in verdicts)
+    said = max(len(v.outcome) for v in verdicts)
+    lines: list[Line] = [[(f"Compatibility of {escape(result.shown)} (urdfcli's prediction):", "bold")]]
+    for verdict in verdicts:
+        style = "red" if verdict.refuses else "yellow" if verdict.changes else "green"
+        outcome = f"{verdict.outcome:<{said}}" if verdict.reason is not None else verdict.outcome
+        row: Line = [(f"  {escape(_consumer(verdict)):<{width}}  ", "bold"), (outcome, style)]
+        if verdict.reason is not None:
+            row.append((f"  {escape(_place(verdict.reason))}: {verdict.reason.code} {escape(verdict.reason.message)}", "dim"))
+        lines.append(row)
+    return lines
+
+
+def _consumer(verdict) -> str:
+    """``MuJoCo``, or ``Pinocchio (pinocchio:mimic)`` for a variant."""
+    return f"{verdict.title} ({verdict.profile})" if ":" in verdict.profile else verdict.title
+
+
+def _place(diagnostic) -> str:
+    location = diagnostic.location
+    return f"{location.file}:{location.line}" if location.line else location.file
+
+
+def compatibility_dicts(result) -> list[dict]:
+    """The compatibility table as JSON: each consumer's verdict and its first reason."""
+    return [
+        {"target": v.profile, "consumer": v.title, "verdict": "refuses" if v.refuses else "loads with changes" if v.changes else "loads",
+         "changes": v.changes,
+         "reason": None if v.reason is None else {"code": v.reason.code, "message": v.reason.message, "path": v.reason.location.file,
+                                                  "line": v.reason.location.line, "column": v.reason.location.column}}
+        for v in result.compatibility
+    ]
+
+
+def registry_markdown() -> str:
+    """The section of docs/targets.md made from the registry: the targets, their variants and the
+    versions they follow, and which plain errors each consumer loads the model with all the same."""
+    from ..rules import REGISTRY
+    from ..rules.targets import about_the_model
+    from ..targets import ALL, TARGETS
+
+    consumers = list(TARGETS.values())
+    lines = ["| target | consumer | rules | follows | variants |", "|---|---|---|---|---|"]
+    for consumer in consumers:
+        variants = "; ".join(f"`{consumer.name}:{v.name}`: `{v.means}`" for v in consumer.variants) or "-"
+        lines.append(f"| `{consumer.name}` | {consumer.title} | {consumer.prefix}xx | {consumer.follows} | {variants} |")
+    lines += ["", f"`--target {ALL}` (or `targets = [\"{ALL}\"]`) is every consumer in its default profile.", "",
+              "Plain errors (rules that are no consumer's) and the consumers that load the model all the same "
+              "(L: loads it; -: refuses it), measured on one case each in tests/target_cases.py:", "",
+              "| rule | " + " | ".join(c.title for c in consumers) + " |", "|---|" + "---|" * len(consumers)]
+    for code, rule in REGISTRY.items():
+        if rule.severity.value == "error" and about_the_model(rule):
+            lines.append(f"| {code} {rule.name} | " + " | ".join("L" if code in c.loads_anyway else "-" for c in consumers) + " |")
+    return "\n".join(lines) + "\n"

@@ -19,6 +19,7 @@ from .check_urdf import tree_lines
 from .console import Line, Output, Stream, rich_console, write
 from .escape import escape
 from .lines import diagnostic_lines, fixable_line, library_lines, plural, summary_line, wrap_line
+from .targets import compatibility_lines
 
 if TYPE_CHECKING:
     from rich.console import Console
@@ -69,6 +70,7 @@ class TextReporter(Reporter):
                     write(output.out, [[(f"==> {escape(result.label if result.arguments else result.shown)} <==", "bold")]])
                 write(output.out, semantic_text(result.loaded) if result.loaded.semantic is not None else tree_text(result))
             write(output.err, self._diagnostics(result, output.err))
+            write(output.err, compatibility_lines(result))
         self._summary(results, output.err, fixes=True)
 
     def lint(self, results: list[Result]) -> None:
@@ -85,6 +87,7 @@ class TextReporter(Reporter):
     def _all(self, results: list[Result], fixes: bool) -> None:
         for result in results:
             write(self.output.out, self._diagnostics(result, self.output.out))
+            write(self.output.out, compatibility_lines(result))
         self._summary(results, self.output.out, fixes)
 
     def _diagnostics(self, result: Result, target: Stream | Console) -> Iterator[Line]:

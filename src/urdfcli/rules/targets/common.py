@@ -60,6 +60,28 @@ def mimic_joints(loaded: Loaded) -> list:
     return [joint for joint in joints_of(loaded, MIMICKED) if joint.mimic is not None]
 
 
+def once(loaded: Loaded, code: str, meshes: list, kind: str, what: str, hint: str):
+    """One diagnostic for every mesh of a kind (``meshes``: (link, geometry) pairs): placed at
+    the first, about every link that has one. ``what`` reads "CONSUMER rejects link 'L': WHY",
+    the first mesh's name and how many more follow it."""
+    name, geometry = meshes[0]
+    more = f" (and {len(meshes) - 1} more {kind} meshes)" if len(meshes) > 1 else ""
+    return loaded.diagnostic(code, f"{what.format(link=name)} '{geometry.filename}'{more}", geometry.at, hint,
+                             subjects=tuple(dict.fromkeys(n for n, _ in meshes)))
+
+
+def mimics_said_once(loaded: Loaded, code: str, what: str, hint: str):
+    """One diagnostic naming every mimic joint: ``what`` reads "CONSUMER makes ... {joints} ...",
+    at the first joint's <mimic>, about each mimic joint and the joints they follow."""
+    joints = mimic_joints(loaded)
+    if not joints:
+        return
+    several = len(joints) > 1
+    listed = f"{len(joints)} mimic joints ({names(j.name for j in joints)})" if several else f"mimic joint '{joints[0].name}' (of '{joints[0].mimic.joint}')"
+    yield loaded.diagnostic(code, what.format(joints=listed, they="they move" if several else "it moves"), mimic_at(joints[0]), hint,
+                            subjects=tuple(dict.fromkeys(name for j in joints for name in (j.name, j.mimic.joint))))
+
+
 def names(items, most: int = 3) -> str:
     """``'a', 'b', 'c' and 2 more``."""
     items = list(items)
@@ -67,4 +89,4 @@ def names(items, most: int = 3) -> str:
     return shown + (f" and {len(items) - most} more" if len(items) > most else "")
 
 
-__all__ = ["BOUNDED", "MIMICKED", "about_joint", "add_limit", "inertial_at", "inverted_limits", "joints_of", "limit_at", "link_at", "mimic_at", "mimic_joints", "names", "number", "without_limit"]
+__all__ = ["BOUNDED", "MIMICKED", "about_joint", "add_limit", "inertial_at", "inverted_limits", "joints_of", "limit_at", "link_at", "mimic_at", "mimic_joints", "mimics_said_once", "names", "number", "once", "without_limit"]

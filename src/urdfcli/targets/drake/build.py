@@ -56,6 +56,8 @@ def build(loaded: Loaded, chosen: Profile) -> Build:
             changed[joint.name] = "revolute with limits (its <limit> lower and upper are kept)"
         elif joint.type == "floating":
             changed[joint.name] = "no joint: the child is a free body"
+        elif joint.type in ("revolute", "prismatic") and joint.limit is not None and not joint.limit.has_lower and not joint.limit.has_upper:
+            changed[joint.name] = "unlimited (its <limit> has no lower and upper)"
     floating_roots = [r for r in roots(robot) if r != "world"]  # a link named world is Drake's world body
     dof += 6 * len(floating_roots)
     return Build(chosen, tuple(bodies), {}, "floating" if floating_roots else "fixed", dof, changed)
@@ -63,7 +65,7 @@ def build(loaded: Loaded, chosen: Profile) -> Build:
 
 # The plain errors whose models it loads all the same (tests/target_cases.py: PLAIN_ERRORS, one case each)
 LOADS_ANYWAY = frozenset({
-    "D013", "F001", "I001", "I005", "J003", "J006", "R003", "R004", "T001", "V001", "V007", "X002",
+    "D013", "F001", "I001", "I005", "J003", "J006", "M001", "R003", "R004", "T001", "V001", "V007", "X002",
 })
 
 CONSUMER = Consumer("drake", "Drake", "C2", "drake 1.51.1 (PyPI), Parser(plant).AddModels on AddMultibodyPlantSceneGraph", (), build, LOADS_ANYWAY)

@@ -8,36 +8,47 @@ from __future__ import annotations
 from ...model import massprops
 from .. import build
 from ...rules.base import ERROR, INFO, WARNING, Kind, check, explain
-from ...rules.targets.common import about_joint, inverted_limits, joints_of, limit_at, link_at, mimic_at, mimic_joints, names, number
-from ...rules.targets.examples import FIXED_JOINT, FLOATING_JOINT, INVERTED_LIMITS, MIMIC_GRIPPER, ONE_FINGER, ORDERED_LIMITS, TRIANGLE_BROKEN, TRIANGLE_KEPT, rover
+from ...rules.targets.common import about_joint, inverted_limits, joints_of, limit_at, link_at, mimics_said_once, names, number
+from ...rules.targets.examples import CHASSIS, FIXED_JOINT, FLOATING_JOINT, INVERTED_LIMITS, MIMIC_GRIPPER, ONE_FINGER, ORDERED_LIMITS, TRIANGLE_BROKEN, TRIANGLE_KEPT, rover
 
 
 @check(
     "C501", "gazebo-drops-link", WARNING, "Gazebo drops a massless link with its joint and subtree.", kind=Kind.TARGET, target="gazebo",
     doc=explain(
-        """With `--target gazebo`: finds a link with no `<inertial>` or no positive mass that
-        Gazebo does not lump into a parent (its joint moves, or its fixed joint is kept
-        with `preserveFixedJoint`), and says which links below it go with it.""",
+        """With `--target gazebo`: finds a link with no `<inertial>` or a mass within 1e-6 kg
+        of 0 (its fixed children's lumped in), and says which links go with it: all below
+        it when its joint moves (or its fixed joint is kept with `preserveFixedJoint`),
+        those below its moving joints when it is lumped into its parent. When no link is
+        left, C507 says so instead.""",
         """sdformat leaves such a link out of the SDF "not modeled in sdf", with its parent
         joint and every link below it (parser_urdf.cc, `CreateSDF`); sdformat 12 writes
-        this only to a debug log. A massless root empties the model.""",
+        this only to a debug log. A mass within 1e-6 kg of 0 counts as none
+        (`ignition::math::equal`), and a massless link on a fixed joint, lumped into its
+        parent, still takes the moving joints below it and their links.""",
         rover("pan", "continuous", inertial=False),
         rover("pan", "continuous"),
     ),
 )
 def drops_link(loaded, given):
-    dropped = build(loaded, given.profile).dropped
-    for link, why in dropped.items():
-        if why.startswith("below "):
-            continue
-        below = [name for name, reason in dropped.items() if reason == f"below {link}, which is dropped"]
-        also = f" and the {len(below)} link{'s' if len(below) > 1 else ''} below it ({names(below)})" if below else ""
+    built = build(loaded, given.profile)
+    if not built.bodies:
+        return  # nothing is left: C507's
+    causes: dict[str, list[str]] = {}  # the massless link -> the links that go because of it
+    for link, why in built.dropped.items():
+        cause = why.split(",")[0][len("below "):] if why.startswith("below ") else link
+        causes.setdefault(cause, []).append(link)
+    for cause, gone in causes.items():
+        why = built.dropped.get(cause)
+        if why is not None:
+            below = gone[1:]
+            also = f" and the {len(below)} link{'s' if len(below) > 1 else ''} below it ({names(below)})" if below else ""
+            message = f"Gazebo drops link '{cause}'{also}: {why}"
+        else:  # a massless link lumped on a fixed joint: the moving joints below it go
+            message = f"Gazebo drops link{'s' if len(gone) > 1 else ''} {names(gone)}: {'they hang' if len(gone) > 1 else 'it hangs'} below '{cause}', which has no mass (sdformat does not go below it)"
         yield loaded.diagnostic(
-            "C501",
-            f"Gazebo drops link '{link}'{also}: {why}",
-            link_at(loaded, link),
-            "give it an <inertial> with a small positive mass and tensor",
-            subjects=(link, *below),
+            "C501", message, link_at(loaded, cause),
+            "give it an <inertial> with a small positive mass and tensor (more than 1e-6 kg)",
+            subjects=(cause, *gone) if why is None else tuple(gone),
         )
 
 
@@ -144,7 +155,7 @@ def floating_joint(loaded, given):
 @check(
     "C506", "gazebo-drops-mimic", WARNING, "Gazebo (sdformat 12) drops <mimic>.", kind=Kind.TARGET, target="gazebo",
     doc=explain(
-        """With `--target gazebo`: finds a joint with a `<mimic>`.""",
+        """With `--target gazebo`: says, once per model, which joints have a `<mimic>`.""",
         """sdformat 12 does not convert `<mimic>` (SDFormat 1.9 has no mimic): the joint moves on
         its own, so a gripper's second finger does not follow the first. sdformat 14 (Gazebo
         Harmonic) converts it to `<axis><mimic>` (gazebosim/sdformat pull request 1333).""",
@@ -153,9 +164,83 @@ def floating_joint(loaded, given):
     ),
 )
 def drops_mimic(loaded, given):
-    for joint in mimic_joints(loaded):
-        yield about_joint(
-            loaded, "C506", joint,
-            f"Gazebo (sdformat 12) drops the <mimic> of joint '{joint.name}': it moves on its own, not with '{joint.mimic.joint}'",
-            "drive it with a mimic joint plugin, or use Gazebo Harmonic (sdformat 14), which converts <mimic>", at=mimic_at(joint),
+    yield from mimics_said_once(
+        loaded, "C506", "Gazebo (sdformat 12) drops the <mimic> of {joints}: {they} freely",
+        "drive them with a mimic joint plugin, or use Gazebo Harmonic (sdformat 14), which converts <mimic>",
+    )
+
+
+@check(
+    "C507", "gazebo-empty-model", ERROR, "Gazebo refuses a model in which no link keeps a mass.", kind=Kind.TARGET, target="gazebo",
+    doc=explain(
+        """With `--target gazebo`: finds a model whose root (or each link on a joint from
+        `world`) has no `<inertial>` or a mass within 1e-6 kg of 0 once its fixed
+        children are lumped into it: sdformat drops it and everything below it.""",
+        """sdformat leaves nothing in the model and Gazebo refuses it: "A model must have at
+        least one link" (parser_urdf.cc, `CreateSDF`; sdf/Model.cc). The ROS-Industrial arms
+        (ABB, FANUC, KUKA, Motoman support packages) have no `<inertial>` at all: they
+        display in RViz and cannot be spawned.""",
+        rover("pan", "continuous").replace(CHASSIS, '<link name="chassis"/>'),
+        rover("pan", "continuous"),
+    ),
+)
+def empty_model(loaded, given):
+    built = build(loaded, given.profile)
+    root = loaded.root
+    if built.bodies or root is None:
+        return
+    links = [name for name in loaded.robot.links if name != "world"]
+    yield loaded.diagnostic(
+        "C507",
+        f"Gazebo refuses the model: no link keeps a mass ({built.dropped.get(root, 'the links below world have none')} for root link '{root}'), "
+        f"so sdformat drops all {len(links)} links and finds none ('A model must have at least one link')",
+        link_at(loaded, root),
+        "give the links <inertial> elements with their masses (at least the root and every link on a moving joint)",
+        subjects=tuple(links),
+    )
+
+
+@check(
+    "C508", "gazebo-nan-pose", ERROR, "Gazebo refuses a link whose lumped centre of mass is NaN.", kind=Kind.TARGET, target="gazebo",
+    doc=explain(
+        """With `--target gazebo`: finds a link into which sdformat lumps, through fixed joints,
+        a child whose `<inertial>` has mass 0 while the mass lumped so far is 0 too.""",
+        """sdformat's lumping divides by the sum of the two masses (`dMassAdd` in
+        parser_urdf.cc): 0/0 makes the centre of mass NaN, which every later lumping keeps,
+        and Gazebo refuses the model ("Pose values must be finite"). Massless frames with
+        a zero `<inertial>` chained on fixed joints do it (talos, anymal).""",
+        rover("camera", "fixed", more='<link name="lens"><inertial><mass value="0"/><inertia ixx="0" ixy="0" ixz="0" iyy="0" iyz="0" izz="0"/></inertial></link>\n  '
+              '<joint name="lens_joint" type="fixed"><parent link="camera"/><child link="lens"/></joint>').replace('<mass value="0.1"/>', '<mass value="0"/>'),
+        rover("camera", "fixed", more='<link name="lens"/>\n  <joint name="lens_joint" type="fixed"><parent link="camera"/><child link="lens"/></joint>').replace('<mass value="0.1"/>', '<mass value="0"/>'),
+    ),
+)
+def nan_pose(loaded, given):
+    for top, why in build(loaded, given.profile).broken.items():
+        yield loaded.diagnostic(
+            "C508", f"Gazebo refuses link '{top}': {why} ('Pose values must be finite')", link_at(loaded, top),
+            "leave the <inertial> out of massless frame links (or give them a small mass)",
+            subjects=(top,),
         )
+
+
+@check(
+    "C509", "gazebo-name-collision", ERROR, "Gazebo refuses a link and a joint of one name.", kind=Kind.TARGET, target="gazebo",
+    doc=explain(
+        """With `--target gazebo`: finds a link and a joint with the same name, both kept in
+        the SDF model (the link not lumped or dropped, the joint not lumped).""",
+        """URDF keeps links and joints apart, SDFormat does not: Gazebo refuses the model
+        ("Joint with name [NAME] ... has a name collision. Please rename this joint";
+        sdf/Model.cc).""",
+        rover("gripper", "continuous").replace('name="gripper_joint"', 'name="gripper"'),
+        rover("gripper", "continuous"),
+    ),
+)
+def name_collision(loaded, given):
+    built = build(loaded, given.profile)
+    for body in built.bodies:
+        joint = loaded.robot.joints.get(body.top)
+        if joint is not None and joint.child not in built.dropped and any(joint.child == b.top for b in built.bodies):
+            yield about_joint(
+                loaded, "C509", joint, f"Gazebo refuses joint '{joint.name}': link '{body.top}' has the same name",
+                "rename the joint (such as '{}_joint')".format(joint.name),
+            )

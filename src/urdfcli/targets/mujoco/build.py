@@ -11,6 +11,7 @@ from ...model.robot import Link
 from ...model.targets import WATER, Body, Build, Consumer, Profile, combined, declared_part, fused, joint_dof, moving, primitive_volume, tree_joints
 
 MJMINVAL = 1e-15  # MuJoCo's mjMINVAL: a moving body's mass and moments must exceed it
+MJEPS = 1e-14  # MuJoCo's mjEPS: a declared tensor's smallest eigenvalue must reach it (mjuu_fullInertia)
 
 
 class Options(NamedTuple):
@@ -37,10 +38,15 @@ def compiler_options(loaded: Loaded) -> Options:
 def part(link: Link, options: Options, fusing: bool = False):
     """A link's mass properties in MuJoCo: declared, or with no ``<inertial>`` (inertiafromgeom
     auto) those of its collision shapes at 1000 kg/m³ (unknown for a mesh). Fusing static
-    bodies (``fusestatic``), MuJoCo counts a negative mass as none, its tensor kept (measured)."""
+    bodies (``fusestatic``), MuJoCo counts a negative mass as none, its tensor kept (measured).
+    With ``balanceinertia``, a tensor breaking A + B >= C has its principal moments replaced by
+    their mean, link by link before fusing (src/user/user_objects.cc)."""
     if weighed_by_geometry(link, options):
         return geometry_body(link)
     found = declared_part(link)
+    if found is not None and options.balanceinertia and massprops.triangle_violation(found[2], rel_tol=1e-9) is not None:
+        mean = sum(massprops.principal_moments(found[2])) / 3.0
+        found = (found[0], found[1], massprops.diagonal(mean, mean, mean))
     if fusing and found is not None and found[0] < 0:
         return 0.0, found[1], found[2]
     return found

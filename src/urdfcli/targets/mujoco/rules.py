@@ -5,13 +5,14 @@ src/user/user_model.cc and user_objects.cc."""
 from __future__ import annotations
 
 from ...model import massprops
+from ...model.kinematics import roots
 from ...model.meshes import MeshFiles
-from ...model.targets import mesh_extension
+from ...model.targets import declared_moments, mesh_extension
 from .. import build
-from .build import MJMINVAL, compiler_options, geometry_body, weighed_by_geometry
+from .build import MJEPS, MJMINVAL, compiler_options, geometry_body, weighed_by_geometry
 from ...read.meshfile import stl_header
 from ...rules.base import ERROR, INFO, WARNING, Kind, check, explain
-from ...rules.targets.common import BOUNDED, inertial_at, joints_of, limit_at, link_at, names, number
+from ...rules.targets.common import BOUNDED, inertial_at, joints_of, limit_at, link_at, names, number, once
 from ...rules.targets.examples import INVERTED_LIMITS, ORDERED_LIMITS, TRIANGLE_BROKEN, TRIANGLE_KEPT, WRIST_BOX, arm, meshed, wrist_inertial
 
 DECODED = (".stl", ".obj", ".msh")  # the mesh files MuJoCo 4.0 decodes without a plugin
@@ -73,7 +74,7 @@ def triangle_inequality(loaded, given):
         if inertial is None or inertial.inertia is None:
             continue
         tensor = massprops.matrix(inertial.inertia)
-        positive = not massprops.is_zero(tensor) and massprops.principal_moments(tensor)[0] > 0  # else C103's
+        positive = not massprops.is_zero(tensor) and declared_moments(loaded, link)[0] > 0  # else C103's
         broken = massprops.triangle_violation(tensor, rel_tol=1e-9) if positive else None  # MuJoCo compares without a margin
         if broken is not None:
             a, b, c = broken
@@ -86,16 +87,18 @@ def triangle_inequality(loaded, given):
             )
 
 
-@check("C103", "mujoco-inertia-not-positive", ERROR, "MuJoCo rejects an inertia without positive eigenvalues.", kind=Kind.TARGET, target="mujoco")
+@check("C103", "mujoco-inertia-not-positive", ERROR, "MuJoCo rejects an inertia whose smallest eigenvalue is below 1e-14.", kind=Kind.TARGET, target="mujoco")
 def inertia_not_positive(loaded, given):
     """## What it does
     With `--target mujoco`: finds a declared inertia, on any link (the root and fixed
-    links too), that is not all zero but has a principal moment that is zero or
-    negative (`izz="0"` on a rod included). An all-zero tensor is C101's.
+    links too), that is not all zero but has a principal moment below MuJoCo's
+    `mjEPS` (1e-14): zero, negative, or positive and that small. An all-zero tensor
+    is C101's.
 
     ## Why is this bad?
     MuJoCo reads every URDF tensor as `fullinertia` and refuses to load the model:
-    "inertia must have positive eigenvalues" (src/user/user_objects.cc).
+    "inertia must have positive eigenvalues" (`mjuu_fullInertia`, src/user/user_util.cc).
+    A CAD export of a tiny part (1e-16 kg·m²) is refused as a negative one is.
 
     ## Example
     ```xml
@@ -118,11 +121,11 @@ def inertia_not_positive(loaded, given):
         tensor = massprops.matrix(inertial.inertia)
         if massprops.is_zero(tensor):
             continue
-        smallest = massprops.principal_moments(tensor)[0]
-        if smallest <= 0:
+        smallest = declared_moments(loaded, link)[0]
+        if smallest < MJEPS:
             yield loaded.diagnostic(
                 "C103",
-                f"MuJoCo rejects link '{name}': its inertia has a principal moment of {number(smallest)}; all must be positive",
+                f"MuJoCo rejects link '{name}': its inertia has a principal moment of {number(smallest)}; all must be at least 1e-14",
                 inertial.inertia_at or inertial.at,
                 "recompute the tensor (inertia --suggest prints one for its geometry)",
                 subjects=(name,),
@@ -136,15 +139,6 @@ def _meshes(loaded, discardvisual: bool):
             geometry = shape.geometry
             if geometry is not None and geometry.kind == "mesh" and geometry.filename:
                 yield name, geometry
-
-
-def _once(loaded, code: str, meshes: list, kind: str, why: str, hint: str):
-    """One diagnostic for every mesh of a kind: placed at the first, about every link that has one."""
-    name, geometry = meshes[0]
-    more = f" (and {len(meshes) - 1} more {kind} meshes)" if len(meshes) > 1 else ""
-    return loaded.diagnostic(
-        code, f"MuJoCo rejects link '{name}': {why} '{geometry.filename}'{more}", geometry.at, hint, subjects=tuple(dict.fromkeys(n for n, _ in meshes))
-    )
 
 
 @check(
@@ -167,7 +161,7 @@ def mesh_format(loaded, given):
             found.setdefault(extension, []).append((name, geometry))
     for extension, meshes in found.items():
         kind = extension or "extension-less"
-        yield _once(loaded, "C104", meshes, kind, f"it has no decoder for {kind} mesh", "convert the meshes to .stl or .obj for MuJoCo")
+        yield once(loaded, "C104", meshes, kind, "MuJoCo rejects link '{link}': it has no decoder for " + kind + " mesh", "convert the meshes to .stl or .obj for MuJoCo")
 
 
 @check(
@@ -185,8 +179,7 @@ def mesh_format(loaded, given):
 def package_uri(loaded, given):
     meshes = [(name, g) for name, g in _meshes(loaded, compiler_options(loaded).discardvisual) if g.filename.startswith("package://")]
     if meshes:  # said once per model
-        yield _once(
-            loaded, "C105", meshes, "package://", "it does not resolve",
+        yield once(loaded, "C105", meshes, "package://", "MuJoCo rejects link '{link}': it does not resolve",
             "give MuJoCo a copy with paths relative to the model (`urdfcli expand` then replace package://PKG/ by the package's path), or set <mujoco><compiler meshdir=.../></mujoco>",
         )
 
@@ -221,7 +214,7 @@ def stl_decoder(loaded, given):
         if problem is not None:
             found.setdefault(problem, []).append((name, geometry))
     for (why, hint), meshes in found.items():
-        yield _once(loaded, "C109", meshes, "such", why, hint)
+        yield once(loaded, "C109", meshes, "such", "MuJoCo rejects link '{link}': " + why, hint)
 
 
 def _stl_problem(header) -> tuple[str, str] | None:
@@ -327,21 +320,76 @@ def fixed_base(loaded, given):
     </robot>
     ```
     """
-    root = loaded.root
-    if root is None:
+    tops = [root for root in roots(loaded.robot)]
+    if not tops:
         return
+    root = tops[0]
     built = build(loaded, given.profile)
-    fused = [link for body in built.bodies for link in body.links[1:]] + [link for link in built.dropped if link not in (root, "world")]
-    if root == "world" and not fused:
+    fused = [link for body in built.bodies for link in body.links[1:]] + [link for link in built.dropped if link not in (*tops, "world")]
+    if tops == ["world"] and not fused:
         return
     several = len(fused) > 1
     also = f"{'links' if several else 'link'} {names(fused)} {'are' if several else 'is'} fused into {'their' if several else 'its'} parent body" if fused else ""
-    welds = f"MuJoCo welds root link '{root}' to the world and fuses it into the world body" if root != "world" else "In MuJoCo, "
+    welded = [top for top in tops if top != "world"]
+    welds = (f"MuJoCo welds root link{'s' if len(welded) > 1 else ''} {names(welded)} to the world and fuses {'them' if len(welded) > 1 else 'it'} into the world body"
+             if welded else "In MuJoCo, ")
     yield loaded.diagnostic(
         "C108",
-        welds + ("; " if fused and root != "world" else "") + also,
+        welds + ("; " if fused and welded else "") + also,
         link_at(loaded, root),
         "for a free base, join the root to a massless 'world' link by a floating joint; "
         'keep fused links with <mujoco><compiler fusestatic="false"/></mujoco>',
-        subjects=(root, *fused),
+        subjects=(*tops, *fused),
     )
+
+
+@check(
+    "C110", "mujoco-mesh-missing", ERROR, "MuJoCo refuses a collision mesh file that does not exist.", kind=Kind.TARGET, target="mujoco",
+    doc=explain(
+        """With `--target mujoco`: finds a collision mesh (and a visual one when the model
+        sets `discardvisual="false"`) named by a path that leads to no file (relative paths
+        from the model's folder, as MuJoCo reads them; `package://` is C105's).""",
+        """MuJoCo refuses to load the model: "Error opening file" (src/user/user_mesh.cc).
+        A missing visual mesh is no matter to MuJoCo, which drops the visuals.""",
+        meshed("../meshes/gone.stl"),
+        meshed("../meshes/arm.stl"),
+    ),
+)
+def mesh_missing(loaded, given):
+    files = MeshFiles.of(loaded)
+    for name, geometry in _meshes(loaded, compiler_options(loaded).discardvisual):
+        if "://" in geometry.filename and not geometry.filename.startswith("file://"):
+            continue
+        path = files.path(geometry.filename)
+        if path is not None and not path.exists():
+            yield loaded.diagnostic(
+                "C110", f"MuJoCo rejects link '{name}': mesh file '{geometry.filename}' does not exist", geometry.at,
+                "fix the path (relative to the model's folder) or add the file", subjects=(name,),
+            )
+
+
+@check(
+    "C111", "mujoco-shape-size", ERROR, "MuJoCo refuses a collision shape of zero or negative size.", kind=Kind.TARGET, target="mujoco",
+    doc=explain(
+        """With `--target mujoco`: finds a collision box, cylinder or sphere (and a visual one
+        when the model sets `discardvisual="false"`) with a size, radius or length of 0 or
+        less.""",
+        """MuJoCo refuses to load the model: "size 0 must be positive in geom"
+        (src/user/user_objects.cc); urdfdom and RViz take a zero size (V008 only warns).""",
+        '<link name="plate">\n  <collision><geometry><box size="0.4 0.4 0"/></geometry></collision>\n</link>',
+        '<link name="plate">\n  <collision><geometry><box size="0.4 0.4 0.01"/></geometry></collision>\n</link>',
+    ),
+)
+def shape_size(loaded, given):
+    discardvisual = compiler_options(loaded).discardvisual
+    for name, link in loaded.robot.links.items():
+        for shape in link.collisions if discardvisual else (*link.visuals, *link.collisions):
+            geometry = shape.geometry
+            if geometry is None or geometry.kind not in ("box", "cylinder", "sphere"):
+                continue
+            sizes = geometry.size if geometry.kind == "box" else (geometry.radius, geometry.length) if geometry.kind == "cylinder" else (geometry.radius,)
+            if sizes is not None and any(size is not None and size <= 0 for size in sizes):
+                yield loaded.diagnostic(
+                    "C111", f"MuJoCo rejects link '{name}': its {geometry.kind} has a size of {number(min(v for v in sizes if v is not None))}",
+                    geometry.at, "give the shape a positive size, or leave it out", subjects=(name,),
+                )

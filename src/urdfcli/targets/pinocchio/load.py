@@ -14,8 +14,13 @@ def built(path: str, variants: frozenset[str], packages: Packages) -> dict:
     if "free-flyer" in variants:
         arguments.append(pinocchio.JointModelFreeFlyer())
     model = pinocchio.buildModelFromUrdf(*arguments, mimic=True) if "mimic" in variants else pinocchio.buildModelFromUrdf(*arguments)
+    bodies = {}  # each joint's first body frame: the link it moves (the links fixed to it come after)
+    for frame in model.frames:
+        if str(frame.type).endswith("BODY"):
+            bodies.setdefault(frame.parentJoint, frame.name)
     joints = [{"name": model.names[i], "type": model.joints[i].shortname(), "nq": model.joints[i].nq, "nv": model.joints[i].nv,
-               "mass": float(model.inertias[i].mass), "inertia": [float(v) for v in _principal(model.inertias[i])]} for i in range(1, model.njoints)]
+               "child": bodies.get(i), "mass": float(model.inertias[i].mass), "inertia": [float(v) for v in _principal(model.inertias[i])]}
+              for i in range(1, model.njoints)]
     frames = [{"name": f.name, "type": str(f.type).rsplit(".", 1)[-1]} for f in model.frames]
     universe = model.inertias[0]
     return {"joints": joints, "frames": frames, "nq": model.nq, "nv": model.nv, "universe_mass": float(universe.mass),

@@ -4,12 +4,14 @@
 from __future__ import annotations
 
 import math
+from pathlib import Path
 
 from ...model import massprops
 from ...model.load import Loaded
 from ...model.massprops import Vector
 from ...model.mesh_summaries import scaled_bounds
 from ...model.meshes import MeshFiles
+from ...read.meshfile import stl_header
 from ...model.robot import Geometry, Link
 from ...model.targets import Body, Build, Consumer, Profile, Variant, declared_mass, declared_matrix, joint_dof, mesh_extension, moving, tree_joints, valid_tensor
 
@@ -30,12 +32,15 @@ def box_moments(loaded: Loaded, link: Link, mass: float) -> Vector | None:
     points and a mesh the hull of its vertices (BulletUrdfImporter.cpp), each boxed with
     its margins (an .obj file a compound of them). None when a mesh's bounds are unknown
     (not read, or ``check``)."""
+    if not loaded.reads_meshes and any(shape.geometry is not None and shape.geometry.kind == "mesh" for shape in link.collisions):
+        return None  # a mesh's bounds are not read in this run
     inertial = link.inertial
     frame = massprops.transform(inertial.origin.xyz, inertial.origin.rpy) if inertial is not None else massprops.ORIGIN
     back = (massprops.transpose(frame[0]), tuple(-v for v in massprops.apply(massprops.transpose(frame[0]), frame[1])))
-    poses = [massprops.compose(back, massprops.transform(shape.origin.xyz, shape.origin.rpy)) for shape in link.collisions]
-    if len(poses) == 1 and poses[0] == massprops.ORIGIN and link.collisions[0].geometry is not None:
-        geometry = link.collisions[0].geometry
+    shapes = [shape for shape in link.collisions if extracted(loaded, shape.geometry)]
+    poses = [massprops.compose(back, massprops.transform(shape.origin.xyz, shape.origin.rpy)) for shape in shapes]
+    if len(poses) == 1 and poses[0] == massprops.ORIGIN and shapes[0].geometry is not None:
+        geometry = shapes[0].geometry
         if geometry.kind == "box" and geometry.size is not None:
             return _diagonal(massprops.box(mass, geometry.size))
         if geometry.kind == "sphere" and geometry.radius is not None:
@@ -44,7 +49,7 @@ def box_moments(loaded: Loaded, link: Link, mass: float) -> Vector | None:
             box = shape_box(loaded, geometry)
             return _diagonal(massprops.box(mass, tuple(2 * h for h in box[1]))) if box is not None else None
     low, high = [math.inf] * 3, [-math.inf] * 3
-    for shape, pose in zip(link.collisions, poses):
+    for shape, pose in zip(shapes, poses):
         box = shape_box(loaded, shape.geometry)
         if box is None:
             return None
@@ -58,6 +63,19 @@ def box_moments(loaded: Loaded, link: Link, mass: float) -> Vector | None:
     if not poses:  # an empty compound: a box of the margin alone
         low, high = [0.0] * 3, [0.0] * 3
     return _diagonal(massprops.box(mass, tuple(h - lo + 2 * MARGIN for lo, h in zip(low, high))))
+
+
+def extracted(loaded: Loaded, geometry: Geometry | None) -> bool:
+    """Whether Bullet makes a shape of a collision geometry: it leaves out ("cannot extract
+    mesh") an STL file that is not a binary STL of at least one triangle (LoadMeshFromSTL.h)."""
+    if geometry is None or geometry.kind != "mesh" or not geometry.filename or mesh_extension(geometry.filename) != ".stl" or not loaded.reads_meshes:
+        return True
+    path = MeshFiles.of(loaded).path(geometry.filename)
+    try:
+        header = stl_header(path) if path is not None and path.is_file() else None
+    except OSError:
+        return True
+    return header is None or (bool(header.triangles) and header.binary)
 
 
 def _diagonal(tensor) -> Vector:
@@ -93,6 +111,35 @@ def mesh_bounds(loaded: Loaded, geometry: Geometry) -> tuple[Vector, Vector] | N
     if summary.low is None:
         return None
     return scaled_bounds(summary, tuple(geometry.scale))  # type: ignore[arg-type]
+
+
+MESH_READERS = (".dae", ".stl", ".obj", ".cdf")  # the last four characters UrdfFindMeshFile.h takes
+
+
+def missing_mesh(uri: str, files: MeshFiles, model: Path | None, folders_with: dict[str, list[Path]] | None = None) -> str | None:
+    """Why PyBullet cannot find a mesh (UrdfFindMeshFile.h), None when it finds it: the
+    extension (its last four characters) must be one it reads; ``package://`` or
+    ``model://`` is dropped and the rest looked up under the packages it is given (those
+    urdfcli resolves) and under each folder above the model. A plain path that leads
+    nowhere is D004's. ``folders_with`` keeps, per first name of a path, the folders above
+    the model that hold it (each folder looked at once per model)."""
+    if len(uri) <= 4 or uri[-4:].lower() not in MESH_READERS:
+        return f"it has no reader for mesh '{uri}' (it reads .stl, .obj, .dae and .cdf files)"
+    for prefix in ("package://", "model://"):
+        if not uri.startswith(prefix):
+            continue
+        path = files.path(uri)
+        if path is not None and path.exists():
+            return None
+        rest = uri[len(prefix):].lstrip("/")
+        first = rest.split("/", 1)[0]
+        found = folders_with if folders_with is not None else {}
+        if first not in found:
+            above = [model.parent, *model.parent.parents] if model is not None else []
+            found[first] = [folder for folder in above if (folder / first).exists()]
+        if not any((folder / rest).is_file() for folder in found[first]) and not Path(rest).is_file():
+            return f"it cannot find mesh '{uri}' ('cannot find ... in any directory in urdf path')"
+    return None
 
 
 def link_inertia(loaded: Loaded, link: Link, from_file: bool) -> tuple[float | None, Vector | None, str]:
@@ -132,6 +179,8 @@ def build(loaded: Loaded, chosen: Profile) -> Build:
             continue
         if joint.type in ("revolute", "prismatic") and limit is not None and limit.lower > limit.upper:
             changed[joint.name] = "unlimited (lower > upper)"
+        elif joint.type in ("revolute", "prismatic") and limit is not None and not limit.has_lower and not limit.has_upper:
+            changed[joint.name] = "unlimited (its <limit> has no lower and upper)"
         if joint.mimic is not None:
             changed[joint.name] = "a free degree of freedom (<mimic> ignored)"
         dof += joint_dof(joint)
@@ -143,7 +192,7 @@ def build(loaded: Loaded, chosen: Profile) -> Build:
 
 # The plain errors whose models it loads all the same (tests/target_cases.py: PLAIN_ERRORS, one case each)
 LOADS_ANYWAY = frozenset({
-    "D013", "I001", "I005", "J007", "J008", "J009", "M001", "N003", "N006", "R003", "V001", "V002", "V003",
+    "D013", "F001", "I001", "I005", "J007", "J008", "J009", "M001", "N003", "N006", "R003", "V001", "V002", "V003",
     "V006", "V007", "V010", "X002",
 })
 

@@ -4,11 +4,13 @@
 from __future__ import annotations
 
 from ...model import massprops
-from ...model.targets import declared_matrix, valid_tensor
+from ...model.meshes import MeshFiles
+from ...model.targets import declared_matrix, declared_moments, mesh_extension, valid_tensor
 from .. import build
+from .build import missing_mesh
 from ...rules.base import ERROR, INFO, WARNING, Kind, check, explain
-from ...rules.targets.common import about_joint, add_limit, inverted_limits, joints_of, limit_at, link_at, names, number, without_limit
-from ...rules.targets.examples import FIXED_JOINT, FLOATING_JOINT, INVERTED_LIMITS, NO_LIMIT, ORDERED_LIMITS, TRIANGLE_BROKEN, TRIANGLE_KEPT, WITH_LIMIT
+from ...rules.targets.common import about_joint, inverted_limits, joints_of, limit_at, link_at, names, number, once
+from ...rules.targets.examples import FIXED_JOINT, FLOATING_JOINT, INVERTED_LIMITS, ORDERED_LIMITS, TRIANGLE_BROKEN, TRIANGLE_KEPT
 
 RECOMPUTED_APART = 0.1  # a recomputed tensor further than this (relative) from the declared one is a change worth saying
 
@@ -16,8 +18,8 @@ RECOMPUTED_APART = 0.1  # a recomputed tensor further than this (relative) from 
 @check("C401", "pybullet-default-inertial", WARNING, "PyBullet gives a link without <inertial> 1 kg.", kind=Kind.TARGET, target="pybullet")
 def default_inertial(loaded, given):
     """## What it does
-    With `--target pybullet`: finds a link without `<inertial>` (other than one named
-    `world`).
+    With `--target pybullet`: says, once per model, which links have no `<inertial>`
+    (other than one named `world`).
 
     ## Why is this bad?
     PyBullet gives it a mass of 1 kg and a unit inertia tensor ("No inertial data for
@@ -44,15 +46,16 @@ def default_inertial(loaded, given):
     ```
     """
     tensor = " and a unit inertia tensor" if "inertia-from-file" in given.profile.variants else ""
-    for name, link in loaded.robot.links.items():
-        if link.inertial is None and name != "world":
-            yield loaded.diagnostic(
-                "C401",
-                f"PyBullet gives link '{name}' a mass of 1 kg{tensor}: it has no <inertial>",
-                link.at,
-                'give it an <inertial> (a frame: <mass value="0"/> and a zero tensor)',
-                subjects=(name,),
-            )
+    links = [link for name, link in loaded.robot.links.items() if link.inertial is None and name != "world"]
+    if links:
+        several = len(links) > 1
+        yield loaded.diagnostic(
+            "C401",
+            f"PyBullet gives {len(links)} link{'s' if several else ''} without <inertial> ({names(link.name for link in links)}) a mass of 1 kg{tensor} {'each' if several else ''}".rstrip(),
+            links[0].at,
+            'give each an <inertial> (a frame: <mass value="0"/> and a zero tensor)',
+            subjects=tuple(link.name for link in links),
+        )
 
 
 @check("C402", "pybullet-recomputes-inertia", WARNING, "PyBullet recomputes inertia tensors from collision shapes.", kind=Kind.TARGET, target="pybullet")
@@ -93,7 +96,7 @@ def recomputes_inertia(loaded, given):
         declared = declared_matrix(link)
         if declared is None or not body.mass:
             continue
-        moments = massprops.principal_moments(declared)
+        moments = declared_moments(loaded, link)
         if body.moments is None:  # from a mesh's bounding box: changed, by how much the mesh says
             changed.append((body.top, moments, moments))
             continue
@@ -220,21 +223,61 @@ def floating_base(loaded, given):
 
 
 @check(
-    "C407", "pybullet-joint-without-limit", ERROR, "PyBullet refuses a revolute or prismatic joint without <limit>.", kind=Kind.TARGET, target="pybullet",
+    "C408", "pybullet-mesh-not-found", ERROR, "PyBullet refuses a mesh it cannot find or has no reader for.", kind=Kind.TARGET, target="pybullet",
     doc=explain(
-        """With `--target pybullet`: finds a revolute or prismatic joint without `<limit>`.""",
-        """PyBullet's own URDF parser, like urdfdom's (J003), refuses it: "Joint is of type
-        REVOLUTE but it does not specify limits" (UrdfParser.cpp, `parseJoint`), and
-        `loadURDF` raises "Cannot load URDF file.". MuJoCo, Drake and Isaac Sim take the
-        same file, so a model checked only with them fails here.""",
-        NO_LIMIT,
-        WITH_LIMIT,
+        """With `--target pybullet`: finds a visual or collision mesh whose file name does not
+        end in `.stl`, `.obj`, `.dae` or `.cdf`, or that PyBullet cannot find the way it
+        looks: it drops `package://` and tries the rest under the packages it is given (`--load`
+        gives it those urdfcli finds) and under each folder above the model
+        (UrdfFindMeshFile.h). A missing file with a plain path is D004's.""",
+        """`loadURDF` raises "Cannot load URDF file." and says why only on its `b3Warning` lines
+        ("cannot find '...' in any directory in urdf path", "invalid mesh filename extension").
+        Ogre `.mesh` files and packages PyBullet is not told of are common in ROS models.""",
+        '<link name="torso">\n  <visual><geometry><mesh filename="package://my_robot/meshes/torso.mesh"/></geometry></visual>\n</link>',
+        '<link name="torso">\n  <visual><geometry><mesh filename="package://my_robot/meshes/arm.stl"/></geometry></visual>\n</link>',
     ),
 )
-def joint_without_limit(loaded, given):
-    for joint in without_limit(loaded):
-        yield about_joint(
-            loaded, "C407", joint,
-            f"PyBullet refuses joint '{joint.name}': a {joint.type} joint without <limit>",
-            add_limit(joint),
+def mesh_not_found(loaded, given):
+    files = MeshFiles.of(loaded)
+    model = loaded.document.file
+    problems: dict[str, str | None] = {}  # uri -> why PyBullet cannot find it: each looked up once
+    folders: dict[str, list] = {}
+    found: dict[tuple[str, str], list] = {}  # (why, package or extension) -> the links and meshes: said once each
+    for name, link in loaded.robot.links.items():
+        for shape in (*link.visuals, *link.collisions):
+            geometry = shape.geometry
+            if geometry is None or geometry.kind != "mesh" or not geometry.filename:
+                continue
+            uri = geometry.filename
+            if uri not in problems:
+                problems[uri] = missing_mesh(uri, files, model, folders)
+            if problems[uri] is not None:
+                kind = uri.split("://", 1)[1].split("/", 1)[0] if "://" in uri and "find" in problems[uri] else mesh_extension(uri)
+                found.setdefault((problems[uri].split("'")[0], kind), []).append((name, geometry))
+    for (why, kind), meshes in found.items():
+        reader = "reader" in why
+        yield once(
+            loaded, "C408", meshes, kind if reader else f"package '{kind}'",
+            "PyBullet refuses link '{link}': " + (f"it has no reader for {kind} meshes, such as" if reader else "it cannot find (in any folder above the model, nor among the packages urdfcli finds)"),
+            "convert the mesh to .stl or .obj" if reader else "give PyBullet the package (pybullet.setAdditionalSearchPath), or a path it can find",
         )
+
+
+@check(
+    "C409", "pybullet-unbounded-limit", WARNING, "PyBullet leaves a joint whose <limit> has no lower and upper unlimited.", kind=Kind.TARGET, target="pybullet",
+    doc=explain(
+        """With `--target pybullet`: finds a revolute or prismatic joint whose `<limit>` gives
+        neither `lower` nor `upper`.""",
+        """PyBullet's parser reads the missing bounds as 0 and -1 (UrdfParser.cpp), which Bullet
+        takes for "no limit": the joint turns freely, where urdfdom, Pinocchio, Gazebo and KDL
+        hold it at [0, 0].""",
+        '<joint name="wheel" type="revolute"><parent link="base"/><child link="wheel"/><limit effort="35" velocity="20"/></joint>',
+        '<joint name="wheel" type="continuous"><parent link="base"/><child link="wheel"/><limit effort="35" velocity="20"/></joint>',
+    ),
+)
+def unbounded_limit(loaded, given):
+    for joint in joints_of(loaded, ("revolute", "prismatic")):
+        limit = joint.limit
+        if limit is not None and not limit.has_lower and not limit.has_upper:
+            yield about_joint(loaded, "C409", joint, f"PyBullet leaves joint '{joint.name}' unlimited: its <limit> has no lower and no upper",
+                              "give lower and upper, or make it continuous", at=limit_at(joint))
