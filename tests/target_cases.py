@@ -72,6 +72,7 @@ CASES = {
     "ascii-stl-collision": arm(link("link1", extra=mesh("part_ascii.stl"))),
     "obj-collision": arm(link("link1", extra=mesh("part.obj"))),
     "dae-collision": arm(link("link1", extra=mesh("part.dae"))),
+    "obj-flat-object-first": arm(link("link1", extra=mesh("parts.obj"))),
     "material-two-colours": arm(None, None, '<material name="paint"><color rgba="1 0 0 1"/></material>',
                                 base=link("base_link", extra=BOX + '<visual><geometry><box size="0.1 0.1 0.1"/></geometry>'
                                           '<material name="paint"><color rgba="0 1 0 1"/></material></visual>')),
@@ -195,6 +196,7 @@ FACTS = [
     ("tiny-inertia", "mujoco", "inertia must have positive eigenvalues", "C103"),
     ("zero-length-cylinder", "mujoco", "must be positive in geom", "C111"),
     ("collision-mesh-missing", "mujoco", "Error opening file 'missing.stl'", "C110"),
+    ("obj-flat-object-first", "mujoco", "mesh volume is too small", "C112"),
     ("material-nowhere", "drake", "Material 'steel' not previously defined, but has no color or texture", "C207"),
     ("texture-unknown-package", "drake", "refers to unknown package 'no_such_package'", "C208"),
     ("shared-actuator", "drake", "already contains a joint actuator named 'motor'", "C209"),
@@ -213,7 +215,8 @@ FACES = ((0, 2, 1), (0, 1, 3), (0, 3, 2), (1, 2, 3))
 
 
 def write_meshes(folder: Path) -> None:
-    """part.stl (binary), part_ascii.stl, part.obj, empty.stl (no bytes) and part.dae (a stand-in: only its extension is judged)."""
+    """part.stl (binary), part_ascii.stl, part.obj, parts.obj (a flat object, then part.obj's), empty.stl (no bytes)
+    and part.dae (a stand-in: only its extension is judged)."""
     triangles = b"".join(
         struct.pack("<12fH", 0, 0, 0, *TETRAHEDRON[a], *TETRAHEDRON[b], *TETRAHEDRON[c], 0) for a, b, c in FACES
     )
@@ -225,6 +228,8 @@ def write_meshes(folder: Path) -> None:
     (folder / "part_ascii.stl").write_text(f"solid part\n{facets}endsolid part\n")
     vertices = "".join(f"v {x} {y} {z}\n" for x, y, z in TETRAHEDRON)
     (folder / "part.obj").write_text(vertices + "".join(f"f {a + 1} {b + 1} {c + 1}\n" for a, b, c in FACES))
+    plate = "o plate\nv 0 0 0\nv 0.05 0 0\nv 0.05 0.05 0\nv 0 0.05 0\nf 1 2 3\nf 1 3 4\n"  # flat, and first: all MuJoCo reads
+    (folder / "parts.obj").write_text(plate + "o part\n" + vertices + "".join(f"f {a + 5} {b + 5} {c + 5}\n" for a, b, c in FACES))
     (folder / "empty.stl").write_bytes(b"")
     (folder / "part.dae").write_text('<?xml version="1.0"?><COLLADA xmlns="http://www.collada.org/2005/11/COLLADASchema" version="1.4.1"/>\n')
 

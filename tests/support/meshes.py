@@ -119,4 +119,9 @@ def example_package(root: Path) -> Path:
     write(meshes / "arm_open.stl", open_box())
     write(meshes / "arm_fine.stl", fine())
     (meshes / "arm_lfs.stl").write_text(LFS_POINTER)
+    write(meshes / "arm.obj", box())
+    plate = "o plate\nv 0 0 0\nv 0.1 0 0\nv 0.1 0.1 0\nv 0 0.1 0\nf 1 2 3\nf 1 3 4\n"  # a flat object first, then the arm
+    arm = box()
+    (meshes / "arm_parts.obj").write_text(plate + "o arm\n" + "".join(f"v {x:.9g} {y:.9g} {z:.9g}\n" for x, y, z in arm.vertices)
+                                          + "".join("f " + " ".join(str(i + 5) for i in face) + "\n" for face in arm.faces))
     return root

@@ -52,6 +52,7 @@ class MeshSummary(NamedTuple):
     solid: Solid | None = None
     problem: MeshError | None = None
     skipped: str | None = None
+    first_volume: float | None = None  # an .obj of several objects: the volume its first object encloses, m³ (MuJoCo reads that one alone)
 
     @property
     def size(self) -> Vector | None:
@@ -111,7 +112,20 @@ def summarise(kind: str, found: Triangles) -> MeshSummary:
     del used, points
     kept, corners, closed = _welded(vertices, faces, low, high)
     solid = _tetrahedra(vertices, kept, (low + high) / 2, hull=False) if closed else _hull(vertices[corners])
-    return MeshSummary(kind, len(faces), _vector(low), _vector(high), found.unit, closed, solid)
+    first = _enclosed(vertices, faces[:found.first_object]) if found.first_object is not None else None
+    return MeshSummary(kind, len(faces), _vector(low), _vector(high), found.unit, closed, solid, first_volume=first)
+
+
+def _enclosed(vertices, faces) -> float:
+    """The volume triangles enclose (their signed tetrahedra from their centre, summed), m³."""
+    import numpy
+
+    if not len(faces):
+        return 0.0
+    corners = vertices[faces].astype(numpy.float64)
+    centre = corners.reshape(-1, 3).mean(axis=0)
+    a, b, c = (corners[:, i] - centre for i in range(3))
+    return abs(float(numpy.einsum("ij,ij->", a, numpy.cross(b, c)))) / 6.0
 
 
 def _vector(values) -> Vector:

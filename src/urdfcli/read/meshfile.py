@@ -59,6 +59,7 @@ class Triangles(NamedTuple):
     vertices: numpy.ndarray  # (n, 3) floats (float32 for a binary STL), in the file's units
     faces: numpy.ndarray  # (m, 3) int64 indices into vertices
     unit: float | None  # metres per unit the file declares (COLLADA <unit meter>), None when it declares none
+    first_object: int | None = None  # OBJ of several objects: how many of the faces (the first ones) its first object holds
 
 
 def format_of(path: Path | str) -> str:
@@ -193,6 +194,7 @@ def _soup(corners: numpy.ndarray) -> Triangles:
 _OBJ_VERTEX = re.compile(rb"^[ \t]*v[ \t]+([^\r\n]*)", re.MULTILINE)
 _OBJ_FACE = re.compile(rb"^[ \t]*f[ \t]+([^\r\n]*)", re.MULTILINE)
 _OBJ_SLASHES = re.compile(rb"/\S*")
+_OBJ_GROUP = re.compile(rb"^[ \t]*[og](?:[ \t]|$)", re.MULTILINE)  # where an object (o) or a group (g) begins
 
 
 def read_obj(data: bytes) -> Triangles:
@@ -222,7 +224,18 @@ def read_obj(data: bytes) -> Triangles:
             "truncated",
             f"the OBJ file is truncated or broken: face 'f {face.decode(errors='replace')}' names a vertex it does not have ({len(vertices)} vertices)",
         )
-    return Triangles(vertices, _fans(indices, counts), None)
+    return Triangles(vertices, _fans(indices, counts), None, _first_object(data, counts))
+
+
+def _first_object(data: bytes, counts) -> int | None:
+    """How many triangles the first object of an OBJ file holds, when an ``o`` or ``g``
+    line after its first face begins another (tinyobjloader's shapes); None for one object."""
+    first_face = _OBJ_FACE.search(data)
+    boundary = _OBJ_GROUP.search(data, first_face.start()) if first_face is not None else None
+    if boundary is None:
+        return None
+    polygons = len(_OBJ_FACE.findall(data, 0, boundary.start()))
+    return int((counts[:polygons] - 2).sum())
 
 
 def _obj_vertices(lines: list[bytes]):

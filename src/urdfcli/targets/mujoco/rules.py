@@ -369,6 +369,42 @@ def mesh_missing(loaded, given):
 
 
 @check(
+    "C112", "mujoco-obj-first-object", ERROR, "MuJoCo reads the first object of an .obj file alone: it refuses one that encloses no volume.",
+    kind=Kind.TARGET, target="mujoco",
+    doc=explain(
+        """With `--target mujoco`, where mesh files are read (`lint`, `inertia`; `check`
+        reads none): finds a collision mesh (and a visual one when the model sets
+        `discardvisual="false"`) whose `.obj` file holds several objects (an `o` or `g` line
+        after its first faces) and whose first object encloses less than 1e-15 m³, its
+        scale applied: a flat plate or a single sheet exported first.""",
+        """MuJoCo 4.0 reads the first object of an `.obj` file alone, and refuses to load
+        the model: "mesh volume is too small" (src/user/user_mesh.cc). PyBullet, Drake,
+        RViz and Gazebo read every object of the file, so the file looks right everywhere
+        else.""",
+        meshed("../meshes/arm_parts.obj"),
+        meshed("../meshes/arm.obj"),
+    ),
+)
+def obj_first_object(loaded, given):
+    if not loaded.reads_meshes:
+        return
+    files = MeshFiles.of(loaded)
+    for name, geometry in _meshes(loaded, compiler_options(loaded).discardvisual):
+        if mesh_extension(geometry.filename) != ".obj" or geometry.filename.startswith("package://"):  # C105 says package://
+            continue
+        path = files.path(geometry.filename)
+        if path is None or not path.is_file():
+            continue
+        first = loaded.meshes.summary(path).first_volume
+        scale = abs(geometry.scale[0] * geometry.scale[1] * geometry.scale[2])
+        if first is not None and first * scale < MJMINVAL:
+            yield loaded.diagnostic(
+                "C112", f"MuJoCo rejects link '{name}': it reads only the first object of '{geometry.filename}', which encloses no volume",
+                geometry.at, "put the solid object first in the file, or merge the file's objects into one", subjects=(name,),
+            )
+
+
+@check(
     "C111", "mujoco-shape-size", ERROR, "MuJoCo refuses a collision shape of zero or negative size.", kind=Kind.TARGET, target="mujoco",
     doc=explain(
         """With `--target mujoco`: finds a collision box, cylinder or sphere (and a visual one
