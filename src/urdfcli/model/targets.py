@@ -184,6 +184,14 @@ def fused(loaded: Loaded, keeps_joint) -> dict[str, list[str]]:
 def combined(loaded: Loaded, links: list[str], part) -> tuple[float | None, Vector | None]:
     """Total mass and principal moments of links joined rigidly, each link's
     (mass, com, tensor in link axes) from ``part(link)`` (None: unknown)."""
+    if len(links) == 1:  # most bodies: one link, in its own axes (no pose to compose)
+        found = part(loaded.robot.links[links[0]])
+        if found is None:
+            return None, None
+        mass, _, tensor = found
+        if mass == 0 and massprops.is_zero(tensor):
+            return 0.0, (0.0, 0.0, 0.0)
+        return mass, declared_moments(loaded, loaded.robot.links[links[0]]) if part is declared_part else massprops.principal_moments(tensor)
     parts = []
     poses = body_poses(loaded, links)
     for name in links:
@@ -197,8 +205,6 @@ def combined(loaded: Loaded, links: list[str], part) -> tuple[float | None, Vect
         parts.append((mass, massprops.place(pose, com), massprops.rotate(tensor, pose[0])))
     if not parts:
         return 0.0, (0.0, 0.0, 0.0)
-    if len(parts) == 1 and len(links) == 1 and part is declared_part:  # the moments do not turn with the link
-        return parts[0][0], declared_moments(loaded, loaded.robot.links[links[0]])
     if len(parts) == 1:
         return parts[0][0], massprops.principal_moments(parts[0][2])
     mass = sum(p[0] for p in parts)

@@ -328,14 +328,16 @@ def package_not_found(loaded, given):
     ```
     """
     files = MeshFiles.of(loaded)
-    said: set[str] = set()
+    looked_up: set[str] = set()  # each package looked up once, through its first URI: found or said
     for at, kind, uri in loaded.robot.resources:
         if not uri.startswith("package://"):
             continue
         package = uri[len("package://"):].split("/", 1)[0]
-        if package in said or files.path(uri) is not None:
+        if package in looked_up:
             continue
-        said.add(package)
+        looked_up.add(package)
+        if files.path(uri) is not None:
+            continue
         yield loaded.diagnostic(
             "C208", f"Drake refuses {kind} '{uri}': it knows no package '{package}' (urdfcli finds none)", at,
             f"give urdfcli and Drake the package: -P {package or 'NAME'}=DIR here, parser.package_map().Add('{package or 'NAME'}', DIR) in Drake",

@@ -4,6 +4,7 @@
 from __future__ import annotations
 
 import math
+import os
 from pathlib import Path
 
 from ...model import massprops
@@ -116,7 +117,7 @@ def mesh_bounds(loaded: Loaded, geometry: Geometry) -> tuple[Vector, Vector] | N
 MESH_READERS = (".dae", ".stl", ".obj", ".cdf")  # the last four characters UrdfFindMeshFile.h takes
 
 
-def missing_mesh(uri: str, files: MeshFiles, model: Path | None, folders_with: dict[str, list[Path]] | None = None) -> str | None:
+def missing_mesh(uri: str, files: MeshFiles, model: Path | None, folders_with: dict[str, list[str]] | None = None) -> str | None:
     """Why PyBullet cannot find a mesh (UrdfFindMeshFile.h), None when it finds it: the
     extension (its last four characters) must be one it reads; ``package://`` or
     ``model://`` is dropped and the rest looked up under the packages it is given (those
@@ -134,10 +135,10 @@ def missing_mesh(uri: str, files: MeshFiles, model: Path | None, folders_with: d
         rest = uri[len(prefix):].lstrip("/")
         first = rest.split("/", 1)[0]
         found = folders_with if folders_with is not None else {}
-        if first not in found:
-            above = [model.parent, *model.parent.parents] if model is not None else []
-            found[first] = [folder for folder in above if (folder / first).exists()]
-        if not any((folder / rest).is_file() for folder in found[first]) and not Path(rest).is_file():
+        if first not in found:  # (plain os.path: this runs for every mesh of every model)
+            above = [str(folder) for folder in (model.parent, *model.parent.parents)] if model is not None else []
+            found[first] = [folder for folder in above if os.path.exists(os.path.join(folder, first))]
+        if not any(os.path.isfile(os.path.join(folder, rest)) for folder in found[first]) and not os.path.isfile(rest):
             return f"it cannot find mesh '{uri}' ('cannot find ... in any directory in urdf path')"
     return None
 
