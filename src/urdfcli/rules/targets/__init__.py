@@ -17,11 +17,11 @@ from ..base import Kind, Rule
 from . import load
 
 MODULES = (load, mujoco, drake, pinocchio, pybullet, gazebo, kdl, isaac)
-NOT_ABOUT_THE_MODEL = (Kind.TARGET, Kind.LOADING, Kind.SOURCES)  # a consumer's own rules, its real load, the xacro files as written
+NOT_ABOUT_THE_MODEL = (Kind.TARGET, Kind.LOADING, Kind.SOURCES, Kind.SEMANTIC)  # a consumer's own rules, its real load, the xacro files as written, an SRDF (no consumer here reads one)
 
 
 def about_the_model(rule: Rule) -> bool:
     """Whether a rule judges the model a consumer reads: neither a consumer's own rule nor
-    one about the xacro sources (a consumer reads their expansion). Its errors are the plain
+    one about the xacro sources (a consumer reads their expansion) or an SRDF. Its errors are the plain
     errors each consumer refuses, unless it loads the model anyway (``Consumer.loads_anyway``)."""
     return rule.kind not in NOT_ABOUT_THE_MODEL
