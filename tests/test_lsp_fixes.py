@@ -78,3 +78,42 @@ async def test_fix_all_applies_every_safe_fix_of_the_file(tmp_path):
         after = await editor.diagnostics(model)
         assert "X005" not in {d.code for d in after} and "V009" in {d.code for d in after}
         assert await actions_for(editor, model, [], only=[types.CodeActionKind.SourceFixAll]) == []
+
+
+
+LIBRARY = f"""<?xml version="1.0"?>
+<robot {XACRO_NS}>
+  <xacro:macro name="turned" params="name rpy">
+    <link name="${{name}}"/>
+    <joint name="${{name}}_joint" type="fixed">
+      <parent link="base_link"/>
+      <child link="${{name}}"/>
+      <origin xyz="0 0 0.1" rpy="${{rpy}}"/>
+    </joint>
+  </xacro:macro>
+</robot>
+"""
+CALLING = f"""<?xml version="1.0"?>
+<robot name="arm" {XACRO_NS}>
+  <xacro:include filename="turned.xacro"/>
+  <link name="base_link"/>
+  <xacro:turned name="camera" rpy="0 0 90"/>
+</robot>
+"""
+
+
+@pytest.mark.asyncio
+async def test_a_mistake_shown_at_the_macro_call_that_caused_it_offers_its_fix_there(tmp_path):
+    (tmp_path / "turned.xacro").write_text(LIBRARY)
+    model = tmp_path / "arm.urdf.xacro"
+    model.write_text(CALLING)
+    async with editing(tmp_path, tmp_path / "cache") as editor:
+        editor.open(model)
+        found = await editor.diagnostics(model)
+        call = CALLING.splitlines().index('  <xacro:turned name="camera" rpy="0 0 90"/>')
+        (at_call,) = [d for d in found if d.code == "V009" and d.range.start.line == call]  # where it was typed
+        (fix,) = [a for a in await actions_for(editor, model, [at_call]) if "radians" in a.title]
+        editor.apply(fix)
+        assert '<xacro:turned name="camera" rpy="0 0 1.570796"/>' in editor.texts[model]  # the value, where it was written
+        assert "V009" not in {d.code for d in await editor.diagnostics(model)}
+        assert (tmp_path / "turned.xacro").read_text() == LIBRARY

@@ -72,12 +72,15 @@ def fix_title(fix: Fix) -> str:
 
 
 def own_fixes(diagnostics: Iterable[Diagnostic], path: str, code: str, line: int) -> list[Fix]:
-    """The fixes of the diagnostics of ``code`` at ``line`` (0-based) of ``path``, each once."""
+    """The fixes of the diagnostics of ``code`` at ``line`` (0-based) of ``path``, each once:
+    written there, or made by a macro called there (the editor shows those at the call too)."""
     found = []
     for diagnostic in diagnostics:
         location = diagnostic.location
-        if diagnostic.code == code and diagnostic.fix is not None and diagnostic.fix.available and location.line == line + 1 \
-                and not location.expanded and os.path.abspath(location.file) == path and diagnostic.fix not in found:
+        if diagnostic.code != code or diagnostic.fix is None or not diagnostic.fix.available or location.expanded or diagnostic.fix in found:
+            continue
+        places = [(location.file, location.line), *((call.file, call.line) for call in location.trace)]
+        if any(at == line + 1 and os.path.abspath(file) == path for file, at in places):
             found.append(diagnostic.fix)
     return found
 

@@ -127,9 +127,12 @@ def _preferred(definitions: list[Definition], macro: str | None) -> list[Definit
 
 
 def uses_parameters(text: str, offset: int) -> bool:
-    """Whether the start tag at ``offset`` (or the first one after it) uses a parameter
-    of the macro whose body holds it, in a ``${...}``: what a call's arguments change."""
-    start = text.find("<", offset)
+    """Whether the start tag at ``offset`` (or around it: a diagnostic about an attribute
+    is placed at the attribute; else the first one after it) uses a parameter of the
+    macro whose body holds it, in a ``${...}``: what a call's arguments change."""
+    start = text.rfind("<", 0, offset + 1)
+    if start < 0 or ">" in text[start:offset]:
+        start = text.find("<", offset)
     macro = _macro_at(text, start) if start >= 0 else None
     if macro is None:
         return False
