@@ -43,6 +43,7 @@ from ..diagnostics import Severity
 from ..report.escape import escape
 from ..report.rules import page
 from ..rules import REGISTRY, Remedy
+from ..rules.suppression import U001
 from ..version import __version__
 from .engine import Checked, Checker, Fix, Mark, Navigator
 from .places import Place, Point
@@ -316,7 +317,7 @@ class UrdfServer(LanguageServer):
             code_description=types.CodeDescription(href=link) if link else None,
             source="urdfcli",
             related_information=related or None,
-            tags=[types.DiagnosticTag.Unnecessary] if found.code == "U001" else None,
+            tags=[types.DiagnosticTag.Unnecessary] if found.code == U001.code else None,
             data={"subjects": list(found.subjects)},
         )
 
