@@ -41,6 +41,7 @@ includes a command's children). Targets are reported, never asserted.
 
 from __future__ import annotations
 
+import argparse
 import compileall
 import importlib.metadata
 import os
@@ -60,11 +61,25 @@ GENERATED = ROOT / "benchmarks" / "generated"
 BIN = Path(sys.executable).parent
 SMALL = FIXTURES / "seed000" / "my_robot.urdf"
 MACRO_CALLS = 1_500
-QUICK = "--quick" in sys.argv[1:]
-EDITOR_ONLY = "--editor" in sys.argv[1:]  # the editor server's figures alone
-# --baseline REV: the same urdfcli commands at git revision REV (its src/ on PYTHONPATH, with
-# this venv's packages), measured in the same run, in turn with the others: "before" beside "now"
-BASELINE_REV = sys.argv[sys.argv.index("--baseline") + 1] if "--baseline" in sys.argv[1:] else None
+
+
+def _arguments():
+    parser = argparse.ArgumentParser(
+        prog="benchmarks/run.py",
+        description="urdfcli against check_urdf, xacro and yourdfpy, side by side, as ratios (the cases: this file's docstring).",
+    )
+    parser.add_argument("--quick", action="store_true", help="fewer repetitions, and no 100,000-link tree")
+    parser.add_argument("--editor", action="store_true", help="the editor server's figures alone")
+    parser.add_argument("--baseline", metavar="REV", help="also urdfcli at git revision REV, in the same run, in turn with now")
+    return parser.parse_args() if __name__ == "__main__" else parser.parse_args([])
+
+
+ARGUMENTS = _arguments()
+QUICK = ARGUMENTS.quick
+EDITOR_ONLY = ARGUMENTS.editor
+# the same urdfcli commands at BASELINE_REV (its src/ on PYTHONPATH, with this venv's
+# packages), measured in the same run, in turn with the others: "before" beside "now"
+BASELINE_REV = ARGUMENTS.baseline
 BASELINE = GENERATED / "baseline"
 
 

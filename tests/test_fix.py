@@ -24,6 +24,7 @@ from pathlib import Path
 
 import pytest
 from conftest import example_robot_data, require_tool, run_cli
+from models import CRATE
 from differential import canonical
 from support.meshes import box, example_package, write
 
@@ -240,24 +241,6 @@ def test_a_literal_in_a_macro_body_is_edited_when_every_call_needs_it(cli, here)
 
 
 # -- inertia: the tensor from the geometry ----------------------------------------------------------
-CRATE = """<?xml version="1.0"?>
-<robot name="crate">
-  <link name="base_link"/>
-  <joint name="lift" type="prismatic">
-    <parent link="base_link"/>
-    <child link="crate"/>
-    <axis xyz="0 0 1"/>
-    <limit lower="0" upper="0.5" effort="100" velocity="0.2"/>
-  </joint>
-  <link name="crate">
-    <inertial>
-      <mass value="2"/>
-      <inertia ixx="1" ixy="0" ixz="0" iyy="1" iyz="0" izz="1"/>
-    </inertial>
-    <collision><origin xyz="0 0 0.1"/><geometry><box size="0.4 0.3 0.2"/></geometry></collision>
-  </link>
-</robot>
-"""
 
 
 def test_the_inertia_and_centre_of_mass_from_the_collision_geometry(cli, here):
@@ -580,7 +563,7 @@ def test_configuration_turns_fixing_on(cli, here):
 def test_check_fixes_what_check_finds(cli, here):
     put(here, {"arm.urdf": ARM})
     done = run_cli("check", "--isolated", "--fix", "--unsafe-fixes", "arm.urdf", cwd=here)
-    assert done.returncode == 0 and "2 fixed, 0 remaining" in done.stderr.decode()
+    assert done.returncode == 0 and "2 fixed, 0 remaining" in done.stdout.decode()
     assert "rpy='0 0 1.570796'" in (here / "arm.urdf").read_text()
 
 

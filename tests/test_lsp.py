@@ -16,6 +16,7 @@ from urllib.request import url2pathname
 
 import pytest
 from conftest import FIXTURES, run_cli
+from models import CRATE
 from lsp_client import Wire, editing, position, server_memory_kib, uri
 from lsprotocol import types
 from ros_workspace import line_of, make_repository
@@ -282,31 +283,10 @@ async def test_a_code_action_adds_a_noqa_comment_that_silences_the_diagnostic(re
         assert "U001" not in {d.code for d in editor.latest(library)}  # the comment silences something
 
 
-BOX = """<?xml version="1.0"?>
-<robot name="crate">
-  <link name="base_link"/>
-  <joint name="lift" type="prismatic">
-    <parent link="base_link"/>
-    <child link="crate"/>
-    <axis xyz="0 0 1"/>
-    <limit lower="0" upper="0.5" effort="100" velocity="0.2"/>
-  </joint>
-  <link name="crate">
-    <inertial>
-      <mass value="2"/>
-      <inertia ixx="1" ixy="0" ixz="0" iyy="1" iyz="0" izz="1"/>
-    </inertial>
-    <visual><geometry><box size="0.4 0.3 0.2"/></geometry></visual>
-    <collision><geometry><box size="0.4 0.3 0.2"/></geometry></collision>
-  </link>
-</robot>
-"""
-
-
 @pytest.mark.asyncio
 async def test_a_code_action_replaces_an_inertial_by_the_one_inertia_suggest_gives(tmp_path, cache):
     model = tmp_path / "crate.urdf"
-    model.write_text(BOX)
+    model.write_text(CRATE)
     suggested = run_cli("inertia", "--suggest", str(model)).stdout.decode()
     async with editing(tmp_path, cache) as editor:
         editor.open(model)

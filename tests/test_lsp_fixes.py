@@ -8,29 +8,12 @@ from pathlib import Path
 
 import pytest
 from lsp_client import TIMEOUT, editing, uri
+from models import FIXABLE_ARM
 from lsprotocol import types
 
 pytestmark = pytest.mark.filterwarnings("error::pytest_lsp.LspSpecificationWarning")
 
 XACRO_NS = 'xmlns:xacro="http://www.ros.org/wiki/xacro"'
-MODEL = f"""<?xml version="1.0"?>
-<robot name="arm" {XACRO_NS}>
-  <xacro:macro name="xacro:part" params="n">
-    <link name="part_${{n}}"/>
-  </xacro:macro>
-  <xacro:property name="count" value="${{len(list(range(2)))}}"/>
-  <link name="base_link"/>
-  <link name="arm_link"/>
-  <xacro:part n="${{count}}"/>
-  <joint name="part_joint" type="fixed"><parent link="base_link"/><child link="part_2"/></joint>
-  <joint name="arm_joint" type="revolute">
-    <parent link="base_link"/>
-    <child link="arm_link"/>
-    <origin xyz="0 0 0.1" rpy="0 0 90"/>
-    <limit lower="-1" upper="1" effort="10" velocity="1"/>
-  </joint>
-</robot>
-"""
 
 
 async def actions_for(editor, path: Path, diagnostics: list[types.Diagnostic], only: list[str] | None = None) -> list[types.CodeAction]:
@@ -43,7 +26,7 @@ async def actions_for(editor, path: Path, diagnostics: list[types.Diagnostic], o
 @pytest.mark.asyncio
 async def test_a_diagnostic_offers_the_fix_lint_writes(tmp_path):
     model = tmp_path / "arm.urdf.xacro"
-    model.write_text(MODEL)
+    model.write_text(FIXABLE_ARM)
     async with editing(tmp_path, tmp_path / "cache") as editor:
         editor.open(model)
         found = await editor.diagnostics(model)
@@ -54,13 +37,13 @@ async def test_a_diagnostic_offers_the_fix_lint_writes(tmp_path):
         editor.apply(fix)
         assert '<origin xyz="0 0 0.1" rpy="0 0 1.570796"/>' in editor.texts[model]
         assert "V009" not in {d.code for d in await editor.diagnostics(model)}
-        assert model.read_text() == MODEL  # the editor's text is fixed; the file is the editor's to save
+        assert model.read_text() == FIXABLE_ARM  # the editor's text is fixed; the file is the editor's to save
 
 
 @pytest.mark.asyncio
 async def test_fix_all_applies_every_safe_fix_of_the_file(tmp_path):
     model = tmp_path / "arm.urdf.xacro"
-    model.write_text(MODEL)
+    model.write_text(FIXABLE_ARM)
     async with editing(tmp_path, tmp_path / "cache") as editor:
         editor.open(model)
         found = await editor.diagnostics(model)
@@ -78,7 +61,6 @@ async def test_fix_all_applies_every_safe_fix_of_the_file(tmp_path):
         after = await editor.diagnostics(model)
         assert "X005" not in {d.code for d in after} and "V009" in {d.code for d in after}
         assert await actions_for(editor, model, [], only=[types.CodeActionKind.SourceFixAll]) == []
-
 
 
 LIBRARY = f"""<?xml version="1.0"?>

@@ -16,6 +16,7 @@ from pathlib import Path
 
 import pytest
 from conftest import run_cli
+from models import FIXABLE_ARM
 from nvim_client import Neovim, process_alive
 from ros_workspace import XACRO, line_of, make_colcon_workspace, make_repository
 
@@ -260,24 +261,6 @@ def test_uris_are_published_as_the_client_sent_them(tmp_path, editor):
 
 
 # -- the fixes lint --fix writes ----------------------------------------------------------------------------------
-FIXABLE = """<?xml version="1.0"?>
-<robot name="arm" xmlns:xacro="http://www.ros.org/wiki/xacro">
-  <xacro:macro name="xacro:part" params="n">
-    <link name="part_${n}"/>
-  </xacro:macro>
-  <xacro:property name="count" value="${len(list(range(2)))}"/>
-  <link name="base_link"/>
-  <link name="arm_link"/>
-  <xacro:part n="${count}"/>
-  <joint name="part_joint" type="fixed"><parent link="base_link"/><child link="part_2"/></joint>
-  <joint name="arm_joint" type="revolute">
-    <parent link="base_link"/>
-    <child link="arm_link"/>
-    <origin xyz="0 0 0.1" rpy="0 0 90"/>
-    <limit lower="-1" upper="1" effort="10" velocity="1"/>
-  </joint>
-</robot>
-"""
 
 
 def wait_for_text(nvim: Neovim, path: Path, wanted: str) -> str:
@@ -291,12 +274,12 @@ def wait_for_text(nvim: Neovim, path: Path, wanted: str) -> str:
 def test_neovim_applies_the_quick_fix_and_the_fix_all_that_lint_fix_writes(tmp_path, editor):
     (tmp_path / ".git").mkdir()
     model = tmp_path / "arm.urdf.xacro"
-    model.write_text(FIXABLE)
+    model.write_text(FIXABLE_ARM)
     written = tmp_path / "by_lint" / "arm.urdf.xacro"  # what `urdfcli lint --fix` writes of the same file
     written.parent.mkdir()
-    written.write_text(FIXABLE)
+    written.write_text(FIXABLE_ARM)
     run_cli("lint", "--fix", "--isolated", str(written), cwd=tmp_path)
-    assert written.read_text() != FIXABLE
+    assert written.read_text() != FIXABLE_ARM
     nvim = editor()
     nvim.open(model)
     assert {"X005", "V009"} <= {code for code, _ in shown(nvim.wait(model))}
@@ -310,4 +293,4 @@ def test_neovim_applies_the_quick_fix_and_the_fix_all_that_lint_fix_writes(tmp_p
     text = wait_for_text(nvim, model, 'name="part"')
     assert text == written.read_text().replace('rpy="0 0 90"', 'rpy="0 0 1.570796"')
     assert "X005" not in {code for code, _ in shown(nvim.wait(model))}
-    assert model.read_text() == FIXABLE  # the buffer is fixed; saving it is the user's
+    assert model.read_text() == FIXABLE_ARM  # the buffer is fixed; saving it is the user's

@@ -27,7 +27,6 @@ from .common import (
     UrdfOption,
     choose,
     format_option,
-    report_unreadable,
     session_for,
     split_inputs,
 )
@@ -81,20 +80,9 @@ def check(
     with session_for(options) as session:
         outcome = fixes.run(api.find_models(paths, session), session, asked, progress=CtrlC.stop_if_pressed)
         found = outcome.fixed.run
-        fixes.report_failed(output, outcome.fixed.failed)
+        fixes.report(outcome, session, output, asked, statistics)
         if diff:
-            report_unreadable(output, found.unreadable)
-            fixes.print_diff(outcome, output)
             raise SystemExit(Exit.CANNOT_RUN if found.unreadable else Exit.PROBLEMS if outcome.changed else Exit.OK)
-        fixes.report_failed(output, fixes.write_files(outcome))
-        report_unreadable(output, found.unreadable)
-        if statistics:
-            report.statistics(found.results, output, "check", output_format=options.format)
-        else:
-            report.reporter(options.format)(output, session.files).check(found.results)
-        line = fixes.summary(outcome, asked)
-        if line is not None and not quiet:
-            output.err.file.write(line + "\n")
     failing = Severity.WARNING.rank if strict else Severity.ERROR.rank
     if found.unreadable:
         raise SystemExit(Exit.CANNOT_RUN)

@@ -9,6 +9,7 @@ import typer
 
 from ..report.escape import escape
 from ..report.lines import plural
+from .common import report_unreadable
 
 if TYPE_CHECKING:
     from .. import api
@@ -137,6 +138,33 @@ def summary(outcome: Outcome, asked: Fixing) -> str | None:
     if not fixed and not asked.fix:
         return None
     return f"{fixed} fixed, {sum(len(r.diagnostics) for r in results)} remaining"
+
+
+def report(outcome: Outcome, session: Session, output: Output, asked: Fixing, statistics: bool) -> None:
+    """What `check` and `lint` print after fixing: the files that could not be read or fixed;
+    then with --diff the diff alone, otherwise the files written, the report (or its
+    --statistics) and the summary line, on standard output after a text report and on
+    standard error after one a program reads."""
+    from .. import report as reports
+    from ..options import RuleSet
+
+    found = outcome.fixed.run
+    report_unreadable(output, found.unreadable)
+    report_failed(output, outcome.fixed.failed)
+    if asked.diff:
+        print_diff(outcome, output)
+        return
+    report_failed(output, write_files(outcome))
+    options = session.options
+    view = "check" if options.rule_set is RuleSet.CHECK else "lint"
+    if statistics:
+        reports.statistics(found.results, output, view, output_format=options.format)
+    else:
+        reporter = reports.reporter(options.format)(output, session.files)
+        (reporter.check if view == "check" else reporter.lint)(found.results)
+    line = summary(outcome, asked)
+    if line is not None and not output.quiet:
+        (output.out if reports.resolve(options.format) == "text" else output.err).file.write(line + "\n")
 
 
 def _fixes(count: int) -> str:

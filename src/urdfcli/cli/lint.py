@@ -7,7 +7,6 @@ from typing import Annotated
 
 import typer
 
-from .. import report
 from ..diagnostics import Severity
 from ..options import Options, RuleSet
 from ..report.console import Output, rich_console
@@ -28,7 +27,6 @@ from .common import (
     UrdfOption,
     choose,
     format_option,
-    report_unreadable,
     session_for,
     split_inputs,
 )
@@ -93,19 +91,7 @@ def lint(
         with Progress(output) as progress:
             outcome = fixes.run(files, session, asked, progress=progress.update)
         found = outcome.fixed.run
-        report_unreadable(output, found.unreadable)
-        fixes.report_failed(output, outcome.fixed.failed)
-        if diff:
-            fixes.print_diff(outcome, output)
-        else:
-            fixes.report_failed(output, fixes.write_files(outcome))
-            if statistics:
-                report.statistics(found.results, output, "lint", output_format=options.format)
-            else:
-                report.reporter(options.format)(output, session.files).lint(found.results)
-            line = fixes.summary(outcome, asked)
-            if line is not None and not quiet:
-                (output.out if report.resolve(options.format) == "text" else output.err).file.write(line + "\n")
+        fixes.report(outcome, session, output, asked, statistics)
     if found.unreadable:
         raise SystemExit(Exit.CANNOT_RUN)
     if diff:
