@@ -163,7 +163,9 @@ def test_lint_interrupted_restores_the_terminal(after):
     data = example_robot_data()
     models = sorted((data / "robots").rglob("*.urdf"))[:30]
     out, code = on_terminal("lint", "-P", f"example-robot-data={data}", *map(str, models), interrupt_after=after)
-    assert code == 130
+    # 130, or ended by the signal itself: CPython does that at exit when the interrupt reached code
+    # it ran for a library (scipy's modules, while trimesh imports them); a shell shows 130 for both
+    assert code in (130, -signal.SIGINT)
     assert "urdfcli: interrupted" in text(out)
     assert cursor_restored(out)
     assert "Traceback" not in text(out)
