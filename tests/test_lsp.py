@@ -91,6 +91,30 @@ async def test_a_library_is_checked_through_the_models_that_include_it_with_its_
 
 
 @pytest.mark.asyncio
+async def test_a_library_edit_checks_and_publishes_first_the_model_the_user_looked_at_last(repository, cache):
+    library, rover_model, arm_model = wheel(repository), rover(repository), repository / "description" / "urdf" / "arm.urdf.xacro"
+    async with editing(repository, cache) as editor:
+        for model in (rover_model, arm_model):
+            editor.open(model)
+            await editor.diagnostics(model)
+        # the library opened from one model (its macro's definition), then from the other
+        for looked, other in ((arm_model, rover_model), (rover_model, arm_model)):
+            value = "0.04"  # (as on disk)
+            assert await editor.definition(looked, "<xacro:wheel ", 8)  # the user in this model
+            editor.open(library)
+            await editor.diagnostics(library)
+            for typed in ("0.05", "0.06"):  # keystrokes in the library
+                mark = editor.mark()
+                editor.edit(library, f'name="wheel_length" value="{value}"', f'name="wheel_length" value="{typed}"')
+                value = typed
+                await editor.diagnostics(library, mark)
+                await editor.diagnostics(other, mark)
+                published = [p.uri for p in editor.published[mark:]]
+                assert published.index(uri(looked)) < published.index(uri(library)) < published.index(uri(other)), (looked.name, published)
+            editor.close(library)
+
+
+@pytest.mark.asyncio
 async def test_a_model_publishes_each_diagnostic_to_the_file_it_points_into(repository, cache):
     model, library = rover(repository), wheel(repository)
     async with editing(repository, cache) as editor:

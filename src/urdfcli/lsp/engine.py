@@ -63,7 +63,8 @@ class Checked(NamedTuple):
     marks: dict[str, list[Mark]]  # file -> its diagnostics
     reads: frozenset[str]  # the files the check read: a change to any calls for it again
     run: api.Run | None  # the models navigation keeps (None: none yet)
-    models: frozenset[str] = frozenset()  # the models (with their arguments) this check went through
+    models: Mapping[str, frozenset[str]] = {}  # each model (with its arguments) this check went through -> the files it read
+    library: bool = False  # checked through models other than itself (a file they include)
 
 
 class Completion(NamedTuple):
@@ -195,7 +196,9 @@ class Checker:
                     marks.setdefault(call.place.file, []).append(call)
         for reason in [*map(str, run.unreadable), *(n for r in run.results if r.library for n in r.library.notes)]:
             marks[path].append(self._problem(path, reason, Severity.INFO))
-        return Checked(marks, frozenset({path, *_files(run.models)}), self.runs.get(path), frozenset(m.label for m in run.models))
+        models = {m.label: frozenset(_files([m])) for m in run.models}
+        library = any(_absolute(m.path) != path for m in run.models)
+        return Checked(marks, frozenset({path, *_files(run.models)}), self.runs.get(path), models, library)
 
     def mark(self, diagnostic: Diagnostic, note: str = "") -> Mark:
         location = diagnostic.location

@@ -4,7 +4,9 @@ protocol's messages in, checks on one checking thread, diagnostics and answers o
 Checks are scheduled, not run per keystroke: a change after a pause starts a
 check at once, one that follows another within ``DEBOUNCE_SECONDS`` waits until
 the changes pause that long. The file changed last is checked first, then the
-other open files whose last check read it. A change to what the running check
+other open files whose last check read it; when that file is a library checked
+through the models that include it, the open model the user looked at last (or
+from which the library was opened) is checked and published before it. A change to what the running check
 reads gives that check up (an expansion it waits for is stopped), as does any
 change once it has run ``PREEMPT_SECONDS``: a runaway expression in one file holds
 up no other.
@@ -29,6 +31,8 @@ import os
 import queue
 import sys
 import threading
+import time
+from collections.abc import Mapping
 from concurrent.futures import Future
 from typing import NamedTuple
 
@@ -98,7 +102,13 @@ class Contribution(NamedTuple):
 
     found: dict[str, list[types.Diagnostic]]
     reads: frozenset[str]
-    models: frozenset[str]  # the models (with their arguments) it went through
+    models: Mapping[str, frozenset[str]]  # each model (with its arguments) it went through -> the files it read
+    library: bool  # checked through models other than the file itself
+
+    def covered_by(self, own: Contribution, file: str) -> bool:
+        """Whether ``own``, the check of ``file``, went through every model of this check
+        that read ``file``: then it found all that this one finds in it."""
+        return bool(self.models) and all(label in own.models for label, reads in self.models.items() if file in reads)
 
 
 class Running(NamedTuple):
@@ -162,6 +172,8 @@ class UrdfServer(LanguageServer):
         self.checked: set[str] = set()  # open files checked since their list was last published: published even if unchanged
         self.shown: dict[str, tuple[int | None, list[types.Diagnostic]]] = {}  # file -> its last published version and list
         self.uris: dict[str, str] = {}  # open file -> its URI as the client sent it
+        self.looked: dict[str, float] = {}  # open file -> when the user last did something in it, or in a file opened from it
+        self.opened_from: dict[str, str] = {}  # open file -> the file the user was in when opening it
         self.running: Running | None = None
         self.timer: asyncio.TimerHandle | None = None
         self.last_change = 0.0  # the event loop's time of the last change
@@ -191,6 +203,25 @@ class UrdfServer(LanguageServer):
         """The open files whose last check read ``path``, and ``path`` itself."""
         return {path} | {file for file, found in self.contributions.items() if path in found.reads}
 
+    def look(self, path: str) -> None:
+        """The user does something in ``path`` (opens, edits, saves it, asks about it); in a
+        library, in the file it was opened from too (the model it was opened from)."""
+        now = time.monotonic()
+        self.looked[path] = now
+        found = self.contributions.get(path)
+        if path in self.opened_from and found is not None and found.library:
+            self.looked[self.opened_from[path]] = now
+
+    def watched_model(self, changed: str | None, paths: set[str]) -> str | None:
+        """Of the models among ``paths``, the one the user looked at last, when ``changed``
+        is a library checked through models: its check runs, and is published, before
+        the library's own through them all."""
+        found = self.contributions.get(changed) if changed is not None else None
+        if found is None or not found.library:
+            return None
+        models = [path for path in paths if path != changed and path in self.contributions and not self.contributions[path].library]
+        return max(models, key=lambda path: self.looked.get(path, 0.0), default=None)
+
     def navigate(self) -> Navigator:
         self.navigator.sync(self.open_files())
         return self.navigator
@@ -204,6 +235,9 @@ class UrdfServer(LanguageServer):
             self.dirty[path] = now
         if changed in self.dirty:
             self.dirty[changed] = now + 1e-6  # the file the user works on comes first
+        watched = self.watched_model(changed, paths)
+        if watched is not None:
+            self.dirty[watched] = now + 2e-6  # but before a library, the model the user looks at
         running = self.running
         if running is not None and (changed in running.reads or changed == running.path or now - running.started > PREEMPT_SECONDS):
             self.checker.give_up()
@@ -257,7 +291,7 @@ class UrdfServer(LanguageServer):
         """Keep what the check of ``path`` found, and publish what is ready."""
         before = self.contributions.get(path)
         found = {file: [self.diagnostic(m) for m in marks] for file, marks in checked.marks.items()}
-        self.contributions[path] = Contribution(found, checked.reads, checked.models)
+        self.contributions[path] = Contribution(found, checked.reads, checked.models, checked.library)
         self.navigator.keep(path, checked.run, texts)
         self.pending |= {path, *found, *(before.found if before else ())}
         self.checked.add(path)
@@ -267,8 +301,8 @@ class UrdfServer(LanguageServer):
         """Publish each pending file whose every contributing check is current: when
         its list or version changed, and an open file just checked in any case.
 
-        An open file's own check that went through every model another check went
-        through found all that one finds in it: that one is not waited for."""
+        An open file's own check that went through every model of another check that
+        read the file found all that one finds in it: that one is not waited for."""
         busy = set(self.dirty) | ({self.running.path} if self.running else set())
         versions = self.versions()
         for file in sorted(self.pending):
@@ -277,7 +311,7 @@ class UrdfServer(LanguageServer):
                 checked
                 for checked, found in self.contributions.items()
                 if checked in busy and (file in found.found or file in found.reads)
-                and not (own is not None and found.models and found.models <= own.models)
+                and not (own is not None and found.covered_by(own, file))
             ]
             if waited or file in busy:
                 continue
@@ -297,6 +331,8 @@ class UrdfServer(LanguageServer):
         found = self.contributions.pop(path, None)
         self.dirty.pop(path, None)
         self.uris.pop(path, None)
+        self.looked.pop(path, None)
+        self.opened_from = {file: opener for file, opener in self.opened_from.items() if path not in (file, opener)}
         self.pending |= {path, *(found.found if found else ())}
         self.navigator.sync(self.open_files())
         self.navigator.keep(path, None)
@@ -341,6 +377,7 @@ class UrdfServer(LanguageServer):
         if document is None:
             self.window_log_message(types.LogMessageParams(types.MessageType.Log, f"no answer for {escape(uri)}: not open"))
             return None
+        self.look(path)
         at = document.position_from_client_units(position)
         return path, at.line, at.character
 
@@ -436,6 +473,10 @@ def build(package_paths: tuple[str, ...] = ()) -> UrdfServer:
         path = checkable(params.text_document.uri)
         if path is not None:
             ls.uris[path] = params.text_document.uri
+            opener = max((file for file in ls.looked if file != path), key=ls.looked.__getitem__, default=None)
+            if opener is not None:
+                ls.opened_from[path] = opener
+            ls.look(path)
             ls.thread.submit(ls.checker.forget)  # the disk may have changed while it was closed
             ls.navigator.forget()
             ls.schedule(path, ls.dependents(path))
@@ -444,12 +485,14 @@ def build(package_paths: tuple[str, ...] = ()) -> UrdfServer:
     def did_change(ls: UrdfServer, params: types.DidChangeTextDocumentParams) -> None:
         path = checkable(params.text_document.uri)
         if path is not None:
+            ls.look(path)
             ls.schedule(path, ls.dependents(path))
 
     @server.feature(types.TEXT_DOCUMENT_DID_SAVE)
     def did_save(ls: UrdfServer, params: types.DidSaveTextDocumentParams) -> None:
         path = checkable(params.text_document.uri)
         if path is not None:
+            ls.look(path)
             ls.thread.submit(ls.checker.forget)
             ls.navigator.forget()
             ls.schedule(path, ls.dependents(path))
@@ -507,6 +550,7 @@ def build(package_paths: tuple[str, ...] = ()) -> UrdfServer:
         path = checkable(params.text_document.uri)
         if path is None or params.text_document.uri not in ls.workspace.text_documents:
             return None
+        ls.look(path)
         return [
             types.DocumentSymbol(escape(name) or '""', SYMBOL_KINDS[kind], ls.range(place), ls.range(place), detail=escape(f"{kind} {detail}".strip()))
             for kind, name, detail, place in ls.navigate().symbols(path)
@@ -517,6 +561,7 @@ def build(package_paths: tuple[str, ...] = ()) -> UrdfServer:
         path = checkable(params.text_document.uri)
         if path is None or params.text_document.uri not in ls.workspace.text_documents:
             return None
+        ls.look(path)
         only = [str(getattr(kind, "value", kind)) for kind in params.context.only or ()]
         found = []
         for diagnostic in params.context.diagnostics if asked(types.CodeActionKind.QuickFix, only) else ():
