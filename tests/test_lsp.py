@@ -437,9 +437,12 @@ async def test_a_client_that_counts_in_utf8_gets_its_units(tmp_path, cache):
 def test_the_other_commands_never_import_the_server():
     from test_startup import imported
 
+    server = {"pygls", "lsprotocol", "urdfcli.lsp", "urdfcli.lsp.server"}
     modules = imported("check", str(FIXTURES / "seed000" / "my_robot.urdf"))
-    assert "urdfcli.cli.lsp" in modules
-    assert not {"pygls", "lsprotocol", "urdfcli.lsp", "urdfcli.lsp.server"} & set(modules)
+    assert not server & set(modules)
+    listed = imported("--help")
+    assert "urdfcli.cli.lsp" in listed  # the command is there, for the help's list
+    assert not server & set(listed)
 
 
 # -- protocol hygiene ----------------------------------------------------------------------------------

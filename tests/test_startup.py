@@ -28,7 +28,13 @@ def imported(*args: str) -> list[str]:
 @pytest.mark.parametrize("args", [["--version"], ["--help"], ["check", "--help"], ["lint", "--help"]])
 def test_the_version_and_the_help_import_no_rule_and_no_library(args):
     modules = imported(*args)
-    assert "urdfcli.cli.check" in modules  # the commands are there, for their help
+    commands = [m for m in modules if m.startswith("urdfcli.cli.") and m not in ("urdfcli.cli.common", "urdfcli.cli.interrupt")]
+    if args == ["--version"]:
+        assert commands == []  # the version is said before any command is built
+    elif args == ["--help"]:
+        assert "urdfcli.cli.check" in modules and "urdfcli.cli.lsp" in modules  # every command, for the list
+    else:
+        assert set(commands) == {f"urdfcli.cli.{args[0]}", "urdfcli.cli.fixes"}  # that command alone (and what check and lint share)
     rules = [m for m in modules if m.startswith("urdfcli.rules.") and m not in ("urdfcli.rules.base", "urdfcli.rules.suggestions")]
     assert rules == []  # (rules.base: what a rule set is, for the options)
     assert not {"urdfcli.api", "urdfcli.session", "urdfcli.model.load", "urdfcli.project.linter", "lxml"} & set(modules)

@@ -147,6 +147,24 @@ def test_expansion_in_the_worker_is_the_expansion_in_process(path: Path):
         expander.close()
 
 
+def test_the_names_xacro_gives_expressions_are_known_before_the_first_expansion_ends(monkeypatch):
+    """The source rules ask for them after the model is read: by then the worker may be
+    freeing a large expansion, or have retired; they were asked of it while it was ready."""
+    model = FIXTURES / "urdf02_gazebo" / "urdf" / "car.urdf.xacro"
+    expander = Expander()
+    asked = []
+    run = expander.worker.run
+    monkeypatch.setattr(expander.worker, "run", lambda function, *args: asked.append(function) or run(function, *args))
+    try:
+        expander.expand(model.read_bytes(), str(model), {}, PackageResolver((), model))
+        names = expander.global_names()
+        expander.expand(model.read_bytes(), str(model), {}, PackageResolver((), model))
+    finally:
+        expander.close()
+    assert asked == ["global_names", "expand_here", "expand_here"]  # once, first
+    assert names is not None and "math" in names.names
+
+
 ODD_DOCUMENTS = [
     '<?xml version="1.0" encoding="UTF-8"?>\r\n<!-- a <link> in a comment -->\r\n<robot name="r" xmlns:xacro="http://www.ros.org/wiki/xacro">'
     '<?pi <x>?><link\n   name="é&amp;&#x41;" a="1&#10;2"><![CDATA[ <joint> ]]></link>\t<xacro:if value="1"><link name="b"/></xacro:if></robot>',

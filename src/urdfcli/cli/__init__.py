@@ -12,26 +12,34 @@ import gc
 import inspect
 import os
 import sys
+from importlib import import_module
 
 import typer
 
 from ..version import __version__
-from . import check, diff, drift, expand, graph, inertia, lint, lsp, rules, tree
-from .common import CtrlC
+from .interrupt import CtrlC
 
+# Each command by name: its module and function, imported when the command is built (a run
+# builds only the command it runs; the help, all of them).
 COMMANDS = {
-    "expand": expand.expand,
-    "check": check.check,
-    "tree": tree.tree,
-    "graph": graph.graph,
-    "inertia": inertia.inertia,
-    "lint": lint.lint,
-    "diff": diff.diff,
-    "drift": drift.drift,
-    "rules": rules.rules,
-    "rule": rules.rule,
-    "lsp": lsp.lsp,
+    "expand": ("expand", "expand"),
+    "check": ("check", "check"),
+    "tree": ("tree", "tree"),
+    "graph": ("graph", "graph"),
+    "inertia": ("inertia", "inertia"),
+    "lint": ("lint", "lint"),
+    "diff": ("diff", "diff"),
+    "drift": ("drift", "drift"),
+    "rules": ("rules", "rules"),
+    "rule": ("rules", "rule"),
+    "lsp": ("lsp", "lsp"),
 }
+
+
+def command(name: str):
+    """The function of command ``name`` (its module imported now)."""
+    module, function = COMMANDS[name]
+    return getattr(import_module(f".{module}", __name__), function)
 
 
 def _version(value: bool) -> None:
@@ -65,12 +73,24 @@ def build_app(names: tuple[str, ...] = tuple(COMMANDS)) -> typer.Typer:
         pass
 
     for name in names:
-        command = COMMANDS[name]
-        app.command(name=name, help=reflow(command.__doc__ or ""))(command)
+        function = command(name)
+        app.command(name=name, help=reflow(function.__doc__ or ""))(function)
     return app
 
 
-app = build_app()
+def __getattr__(name: str):
+    """``app``: the command line with every command, built when first asked for."""
+    if name != "app":
+        raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
+    return build_app()
+
+
+def program_for(argv: list[str]) -> typer.Typer:
+    """The command line a run needs: the command it names alone, none for ``--version``
+    (which answers before any command), else every command (the help lists them all)."""
+    if argv and argv[0] in COMMANDS:
+        return build_app((argv[0],))
+    return build_app(() if argv[:1] == ["--version"] else tuple(COMMANDS))
 
 
 def main(argv: list[str] | None = None) -> int:
@@ -87,8 +107,7 @@ def main(argv: list[str] | None = None) -> int:
         rich_utils.COLOR_SYSTEM = None
     ctrl_c = CtrlC.install()
     try:
-        program = build_app((argv[0],)) if argv and argv[0] in COMMANDS else app  # (the help lists them all)
-        code = program(args=argv, prog_name="urdfcli", standalone_mode=False)
+        code = program_for(argv)(args=argv, prog_name="urdfcli", standalone_mode=False)
         if code == INTERRUPTED or ctrl_c.pressed:  # typer's answer to Ctrl-C; or one a library swallowed
             sys.stderr.write("urdfcli: interrupted\n")
             return INTERRUPTED

@@ -15,7 +15,6 @@ from .common import (
     LIBRARIES_HELP,
     ColorOption,
     ConfigOption,
-    CtrlC,
     Exit,
     InputsArgument,
     IsolatedOption,
@@ -30,6 +29,7 @@ from .common import (
     session_for,
     split_inputs,
 )
+from .interrupt import CtrlC
 from .fixes import DiffOption, FixOption, UnsafeFixesOption
 
 FORMATS = ("auto", "text", "concise", "json", "sarif", "github", "check_urdf")

@@ -3,8 +3,6 @@
 from __future__ import annotations
 
 import contextlib
-import signal
-import threading
 from collections.abc import Iterator
 from enum import IntEnum
 from pathlib import Path
@@ -96,15 +94,17 @@ QuietOption = Annotated[
 
 
 def _targets(values: list[str] | None) -> list[str] | None:
+    if not values:
+        return []  # (no consumer imported when none is asked for)
     from ..targets import profiles
 
-    for value in values or ():
+    for value in values:
         for text in value.split(","):
             try:
                 profiles(text)
             except ValueError as error:
                 raise typer.BadParameter(str(error)) from None
-    return values or []
+    return values
 
 
 TargetOption = Annotated[
@@ -129,39 +129,6 @@ LIBRARIES_HELP = (
 
 def format_option(help: str, metavar: str = "FORMAT"):
     return Annotated[str, typer.Option("--format", "-f", metavar=metavar, help=help, case_sensitive=False)]
-
-
-class CtrlC:
-    """The SIGINT handler of a command: raise KeyboardInterrupt, and remember it. A
-    library may swallow the exception (trimesh catches BaseException while it imports
-    scipy): the command still stops at the next model (:meth:`stop_if_pressed`), or
-    ends with exit code 130."""
-
-    def __init__(self) -> None:
-        self.pressed = False
-        self.previous = None
-
-    @classmethod
-    def install(cls) -> CtrlC:
-        handler = cls()
-        if threading.current_thread() is threading.main_thread():  # signals reach the main thread only
-            handler.previous = signal.signal(signal.SIGINT, handler)
-        return handler
-
-    def uninstall(self) -> None:
-        if self.previous is not None:
-            signal.signal(signal.SIGINT, self.previous)
-
-    def __call__(self, signum, frame) -> None:
-        self.pressed = True
-        raise KeyboardInterrupt
-
-    @staticmethod
-    def stop_if_pressed(*_) -> None:
-        """Raise KeyboardInterrupt when Ctrl-C was pressed (a progress callback)."""
-        handler = signal.getsignal(signal.SIGINT)
-        if isinstance(handler, CtrlC) and handler.pressed:
-            raise KeyboardInterrupt
 
 
 def fail(message: str) -> SystemExit:

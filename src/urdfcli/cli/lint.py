@@ -16,7 +16,6 @@ from .common import (
     LIBRARIES_HELP,
     ColorOption,
     ConfigOption,
-    CtrlC,
     Exit,
     IsolatedOption,
     QuietOption,
@@ -30,6 +29,7 @@ from .common import (
     session_for,
     split_inputs,
 )
+from .interrupt import CtrlC
 from .fixes import AddNoqaOption, DiffOption, FixOption, UnsafeFixesOption
 
 FORMATS = ("auto", "text", "concise", "json", "sarif", "github")

@@ -45,6 +45,9 @@ class Expander:
         """Expand the xacro document ``data`` read from ``file`` (None: stdin); ``given``
         texts stand for the files of those paths (an editor's unsaved buffers). Raises
         ExpansionError, also when the expansion runs out of time or memory."""
+        # The names are asked before the first expansion, of a worker that is ready: after
+        # a large one it frees the expansion's memory (or retires and starts again) first.
+        self.global_names()
         try:
             return self.worker.run("expand_here", data, file, mappings, resolver, given or {})
         except sandbox.LimitExceeded as error:
