@@ -101,16 +101,19 @@ async def test_a_library_edit_checks_and_publishes_first_the_model_the_user_look
         for looked, other in ((arm_model, rover_model), (rover_model, arm_model)):
             value = "0.04"  # (as on disk)
             assert await editor.definition(looked, "<xacro:wheel ", 8)  # the user in this model
+            mark = editor.mark()
             editor.open(library)
-            await editor.diagnostics(library)
+            for path in (library, looked, other):  # the library, and the models that read it checked again
+                await editor.diagnostics(path, mark)
             for typed in ("0.05", "0.06"):  # keystrokes in the library
                 mark = editor.mark()
                 editor.edit(library, f'name="wheel_length" value="{value}"', f'name="wheel_length" value="{typed}"')
                 value = typed
                 await editor.diagnostics(library, mark)
                 await editor.diagnostics(other, mark)
-                published = [p.uri for p in editor.published[mark:]]
-                assert published.index(uri(looked)) < published.index(uri(library)) < published.index(uri(other)), (looked.name, published)
+                published = [(p.uri, p.version) for p in editor.published[mark:]]
+                first = {uri(path): next(i for i, (u, version) in enumerate(published) if u == uri(path) and version == editor.versions[path]) for path in (looked, library, other)}
+                assert first[uri(looked)] < first[uri(library)] < first[uri(other)], (looked.name, published)
             editor.close(library)
 
 

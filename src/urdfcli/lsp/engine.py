@@ -63,7 +63,7 @@ class Checked(NamedTuple):
     marks: dict[str, list[Mark]]  # file -> its diagnostics
     reads: frozenset[str]  # the files the check read: a change to any calls for it again
     run: api.Run | None  # the models navigation keeps (None: none yet)
-    models: Mapping[str, frozenset[str]] = {}  # each model (with its arguments) this check went through -> the files it read
+    models: Mapping[tuple, frozenset[str]] = {}  # each model this check went through (its absolute path, its arguments) -> the files it read
     library: bool = False  # checked through models other than itself (a file they include)
 
 
@@ -196,7 +196,7 @@ class Checker:
                     marks.setdefault(call.place.file, []).append(call)
         for reason in [*map(str, run.unreadable), *(n for r in run.results if r.library for n in r.library.notes)]:
             marks[path].append(self._problem(path, reason, Severity.INFO))
-        models = {m.label: frozenset(_files([m])) for m in run.models}
+        models = {(_absolute(m.path), m.arguments): frozenset(_files([m])) for m in run.models}  # (a library's check names models relative, their own absolute)
         library = any(_absolute(m.path) != path for m in run.models)
         return Checked(marks, frozenset({path, *_files(run.models)}), self.runs.get(path), models, library)
 

@@ -102,13 +102,13 @@ class Contribution(NamedTuple):
 
     found: dict[str, list[types.Diagnostic]]
     reads: frozenset[str]
-    models: Mapping[str, frozenset[str]]  # each model (with its arguments) it went through -> the files it read
+    models: Mapping[tuple, frozenset[str]]  # each model it went through (its absolute path, its arguments) -> the files it read
     library: bool  # checked through models other than the file itself
 
     def covered_by(self, own: Contribution, file: str) -> bool:
         """Whether ``own``, the check of ``file``, went through every model of this check
         that read ``file``: then it found all that this one finds in it."""
-        return bool(self.models) and all(label in own.models for label, reads in self.models.items() if file in reads)
+        return bool(self.models) and all(model in own.models for model, reads in self.models.items() if file in reads)
 
 
 class Running(NamedTuple):
