@@ -90,8 +90,9 @@ def is_zero(m: Matrix) -> bool:
     return scale_of(m) == 0.0
 
 
-def is_positive_semidefinite(m: Matrix, rel_tol: float = 1e-9) -> bool:
-    """No principal moment below -rel_tol of the largest element.
+def is_positive_semidefinite(m: Matrix, rel_tol: float = 1e-9, moments: Vector | None = None) -> bool:
+    """No principal moment below -rel_tol of the largest element (``moments``: the
+    tensor's principal moments, where they were worked out already).
 
     The closed-form eigenvalues lose about eight digits on degenerate tensors (a
     rank-one tensor with all elements equal comes out at -5e-9): a smallest moment
@@ -100,7 +101,7 @@ def is_positive_semidefinite(m: Matrix, rel_tol: float = 1e-9) -> bool:
     scale = scale_of(m)
     if scale == 0:
         return True
-    smallest = principal_moments(m)[0] / scale
+    smallest = (moments if moments is not None else principal_moments(m))[0] / scale
     if smallest >= -rel_tol or smallest < -1e-6:
         return smallest >= -rel_tol
     m = normalised(m)  # elements in [-1, 1]: no overflow or underflow in the products
@@ -120,9 +121,10 @@ def determinant(m: Matrix) -> float:
     )
 
 
-def triangle_violation(m: Matrix, rel_tol: float = 1e-6) -> tuple[float, float, float] | None:
-    """The principal moments when the two smaller sum to less than the largest."""
-    a, b, c = principal_moments(m)
+def triangle_violation(m: Matrix, rel_tol: float = 1e-6, moments: Vector | None = None) -> tuple[float, float, float] | None:
+    """The principal moments when the two smaller sum to less than the largest (``moments``:
+    those of ``m``, where they were worked out already)."""
+    a, b, c = moments if moments is not None else principal_moments(m)
     if a + b < c * (1.0 - rel_tol):
         return a, b, c
     return None

@@ -122,12 +122,18 @@ def declared_matrix(link: Link) -> Matrix | None:
 def declared_moments(loaded: Loaded, link: Link) -> Vector | None:
     """The principal moments of a link's declared tensor, worked out once per model (the
     consumers' rules and builds all ask for them)."""
-    return once(loaded, _declared_moments, link.name)
+    tensor = declared_matrix(link)
+    return tensor_moments(loaded, tensor) if tensor is not None else None
 
 
-def _declared_moments(loaded: Loaded, name: str) -> Vector | None:
-    tensor = declared_matrix(loaded.robot.links[name])
-    return massprops.principal_moments(tensor) if tensor is not None else None
+def tensor_moments(loaded: Loaded, tensor: Matrix) -> Vector:
+    """The principal moments of a tensor of the model, worked out once per model for each
+    value: each consumer judges the same declared tensors (valid, positive, triangle)."""
+    return once(loaded, _tensor_moments, tensor)
+
+
+def _tensor_moments(loaded: Loaded, tensor: Matrix) -> Vector:
+    return massprops.principal_moments(tensor)
 
 
 def primitive_volume(geometry: Geometry | None) -> float | None:
@@ -153,14 +159,18 @@ def moving(joint: Joint | None) -> bool:
     return joint is not None and joint.type not in (None, "fixed")
 
 
-def tree_joints(loaded: Loaded) -> list[Joint]:
-    """The joints of the tree below each root, parents before children."""
+def tree_joints(loaded: Loaded) -> tuple[Joint, ...]:
+    """The joints of the tree below each root, parents before children (once per model)."""
+    return once(loaded, _tree_joints)
+
+
+def _tree_joints(loaded: Loaded) -> tuple[Joint, ...]:
     children = children_by_joint_name(loaded.robot)
     found = []
     for order in walks(loaded.robot).values():
         for link in order:
             found.extend(joint for joint in children.get(link, ()) if joint.child != link)
-    return found
+    return tuple(found)
 
 
 def fused(loaded: Loaded, keeps_joint) -> dict[str, list[str]]:
@@ -214,6 +224,19 @@ def combined(loaded: Loaded, links: list[str], part) -> tuple[float | None, Vect
     return mass, massprops.principal_moments(tensor)
 
 
+def declared_body(loaded: Loaded, links: tuple[str, ...]) -> tuple[float | None, Vector | None]:
+    """Total mass and principal moments of links joined rigidly, as each declares them: the
+    body Gazebo lumps, Pinocchio and MuJoCo fuse, worked out once per model for every
+    consumer that builds it (see :func:`combined`)."""
+    if len(links) == 1:  # most bodies: the link's own mass and moments
+        return combined(loaded, list(links), declared_part)
+    return once(loaded, _declared_body, links)
+
+
+def _declared_body(loaded: Loaded, links: tuple[str, ...]) -> tuple[float | None, Vector | None]:
+    return combined(loaded, list(links), declared_part)
+
+
 def declared_part(link: Link):
     """A link's declared (mass, com, tensor in link axes); a link without ``<inertial>`` has none."""
     mass, tensor = declared_mass(link), declared_matrix(link)
@@ -224,9 +247,12 @@ def declared_part(link: Link):
     return mass, link.inertial.origin.xyz, tensor
 
 
-def valid_tensor(mass: float, tensor: Matrix, rel_tol: float = 1e-9) -> bool:
-    """Positive semi-definite with principal moments meeting the triangle inequality."""
-    return massprops.is_positive_semidefinite(tensor, rel_tol) and massprops.triangle_violation(tensor) is None
+def valid_tensor(mass: float, tensor: Matrix, rel_tol: float = 1e-9, moments: Vector | None = None) -> bool:
+    """Positive semi-definite with principal moments meeting the triangle inequality
+    (``moments``: the tensor's, where they were worked out already)."""
+    if moments is None:
+        moments = massprops.principal_moments(tensor)
+    return massprops.is_positive_semidefinite(tensor, rel_tol, moments) and massprops.triangle_violation(tensor, moments=moments) is None
 
 
 def joint_dof(joint: Joint) -> int:

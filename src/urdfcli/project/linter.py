@@ -50,8 +50,9 @@ def run_rules(loaded: Loaded, config: Config, rule_set: RuleSet) -> list[Diagnos
         if rule.kind is not Kind.TARGET:
             found.extend(rule.run(loaded, rule.given(options.get(rule.code))))
             continue
+        consumer = rule.consumer
         for profile in config.targets:
-            if profile.target == rule.consumer:
+            if profile.target == consumer:
                 found.extend(rule.run(loaded, rule.given(profile=profile)))
     return found
 

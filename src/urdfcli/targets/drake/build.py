@@ -9,26 +9,27 @@ from ...model import massprops
 from ...model.kinematics import roots
 from ...model.load import Loaded
 from ...model.robot import Link
-from ...model.targets import WATER, Body, Build, Consumer, Profile, combined, declared_part, joint_dof, moving, tree_joints, valid_tensor
+from ...model.targets import WATER, Body, Build, Consumer, Profile, combined, declared_moments, declared_part, joint_dof, moving, tree_joints, valid_tensor
 
 
-def part(link: Link):
+def part(loaded: Loaded, link: Link):
     """Drake's mass properties: declared, or for an invalid inertia a solid sphere of
     water of the declared mass (1 kg when the mass is not positive)."""
     found = declared_part(link)
     if found is None or link.inertial is None:
         return found
     mass, com, tensor = found
-    if replaces(link):
+    if replaces(loaded, link):
         mass = mass if mass > 0 else 1.0
         radius = (3.0 * mass / (4.0 * math.pi * WATER)) ** (1.0 / 3.0)
         return mass, com, massprops.sphere(mass, radius)
     return found
 
 
-def replaces(link: Link) -> bool:
+def replaces(loaded: Loaded, link: Link) -> bool:
     """Whether Drake replaces a link's inertia (ParseSpatialInertia: the checks of
-    SpatialInertia::IsPhysicallyValid fail)."""
+    SpatialInertia::IsPhysicallyValid fail), judged on the principal moments every
+    consumer reads (worked out once per model)."""
     found = declared_part(link)
     if found is None or link.inertial is None:
         return False
@@ -37,16 +38,16 @@ def replaces(link: Link) -> bool:
         return True
     if mass == 0:
         return not massprops.is_zero(tensor)
-    return not valid_tensor(mass, tensor, 1e-14)
+    return not valid_tensor(mass, tensor, 1e-14, declared_moments(loaded, link))
 
 
 def build(loaded: Loaded, chosen: Profile) -> Build:
     robot = loaded.robot
     bodies = []
     for name, link in robot.links.items():
-        mass, moments = combined(loaded, [name], part)
+        mass, moments = combined(loaded, [name], lambda link: part(loaded, link))
         joint = loaded.parent_joint(name)
-        source = "a solid water sphere (its inertia is not physical)" if replaces(link) else "declared"
+        source = "a solid water sphere (its inertia is not physical)" if replaces(loaded, link) else "declared"
         bodies.append(Body((name,), joint if moving(joint) else None, mass, moments, source))
     changed = {}
     dof = 0

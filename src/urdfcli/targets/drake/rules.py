@@ -5,6 +5,7 @@ from __future__ import annotations
 
 from ...model import massprops
 from ...model.meshes import MeshFiles
+from ...read.memo import once as memo
 from ...model.targets import declared_mass, mesh_extension
 from .build import replaces
 from ...rules.base import ERROR, INFO, WARNING, Kind, check, explain
@@ -32,7 +33,7 @@ CONVEX = (".obj", ".vtk", ".gltf")  # the collision meshes Drake 1.51 makes a co
 )
 def replaces_inertia(loaded, given):
     for name, link in loaded.robot.links.items():
-        if not replaces(link):
+        if not replaces(loaded, link):
             continue
         mass = declared_mass(link)
         used = mass if mass > 0 else 1.0
@@ -243,13 +244,21 @@ def floating_base(loaded, given):
     )
 
 
-def _simple_transmissions(loaded):
+def _simple_transmissions(loaded) -> tuple:
     """The transmissions Drake makes actuators of: a type (its <type>, else its ``type``
-    attribute) naming a SimpleTransmission; it skips the others with a warning."""
+    attribute) naming a SimpleTransmission; it skips the others with a warning. Listed
+    once per model (C209 and C213 read them)."""
+    return memo(loaded, _transmissions)
+
+
+def _transmissions(loaded) -> tuple:
+    found = []
     for block in loaded.robot.blocks("transmission"):
-        kind = block.findtext("type") if block.find("type") is not None else block.get("type")
+        written = block.find("type")
+        kind = (written.text or "") if written is not None else block.get("type")
         if kind and "SimpleTransmission" in kind:
-            yield block
+            found.append(block)
+    return tuple(found)
 
 
 def _has_colour(material) -> bool:

@@ -9,7 +9,7 @@ from ...model.kinematics import children_by_joint_name, walks
 from ...model.load import Loaded
 from ...model.robot import Joint
 from ...model.massprops import number
-from ...model.targets import Body, Build, Consumer, Profile, combined, declared_mass, declared_part, fused, joint_dof, tree_joints
+from ...model.targets import Body, Build, Consumer, Profile, declared_body, declared_mass, fused, joint_dof, tree_joints
 
 
 def preserved_joints(loaded: Loaded) -> set[str]:
@@ -18,11 +18,18 @@ def preserved_joints(loaded: Loaded) -> set[str]:
     kept = set()
     for block in loaded.robot.blocks("gazebo"):
         reference = block.get("reference")
-        for tag in ("preserveFixedJoint", "disableFixedJointLumping"):
-            element = block.find(tag)
-            if reference and element is not None and (element.text or "").strip() == "true":
-                kept.add(reference)
+        if not reference:
+            continue
+        seen = set()  # the first element of each tag decides, as find() gives it
+        for element in block:
+            if element.tag in KEEPS and element.tag not in seen:
+                seen.add(element.tag)
+                if (element.text or "").strip() == "true":
+                    kept.add(reference)
     return kept
+
+
+KEEPS = ("preserveFixedJoint", "disableFixedJointLumping")
 
 
 NO_MASS = 1e-6  # sdformat 12 compares a mass with 0 by ignition::math::equal, whose tolerance is 1e-6
@@ -98,7 +105,7 @@ def build(loaded: Loaded, chosen: Profile) -> Build:
             return
         if link != "world" and not lumped(joint):
             links = members[link]
-            mass, moments = combined(loaded, links, declared_part)
+            mass, moments = declared_body(loaded, tuple(links))
             moving = joint if joint is not None and joint.type != "fixed" else None
             bodies.append(Body(tuple(links), moving, mass, moments, "declared (lumped)" if len(links) > 1 else "declared"))
             if found.nan:

@@ -5,7 +5,7 @@ from __future__ import annotations
 
 from ...model.load import Loaded
 from ...model.robot import Link
-from ...model.targets import Body, Build, Consumer, Profile, combined, declared_mass, declared_part, joint_dof, moving, tree_joints
+from ...model.targets import Body, Build, Consumer, Profile, declared_body, declared_mass, joint_dof, moving, tree_joints
 
 
 def zero_equivalent(link: Link) -> bool:
@@ -44,7 +44,7 @@ def build(loaded: Loaded, chosen: Profile) -> Build:
         mass = declared_mass(written)
         if mass:
             source = f"declared by {written.name} (written unchecked)" if name in merged else "declared (written unchecked)"
-            moments = combined(loaded, [written.name], declared_part)[1]
+            moments = declared_body(loaded, (written.name,))[1]
         else:
             source, mass, moments = "derived by the physics engine from the collision shapes (mass 0 is unset in USD)", None, None
         bodies.append(Body((name, merged[name]) if name in merged else (name,), joint if moving(joint) else None, mass, moments, source))

@@ -4,7 +4,7 @@
 from __future__ import annotations
 
 from ...model.load import Loaded
-from ...model.targets import Body, Build, Consumer, Profile, combined, declared_mass, declared_part, joint_dof, moving, tree_joints
+from ...model.targets import Body, Build, Consumer, Profile, declared_body, declared_mass, joint_dof, moving, tree_joints
 
 
 def build(loaded: Loaded, chosen: Profile) -> Build:
@@ -14,7 +14,7 @@ def build(loaded: Loaded, chosen: Profile) -> Build:
         joint = loaded.parent_joint(name)
         if name == root:
             continue  # the root is the tree's base, not a segment
-        mass, moments = combined(loaded, [name], declared_part)
+        mass, moments = declared_body(loaded, (name,))
         bodies.append(Body((name,), joint if moving(joint) else None, mass, moments, "declared"))
     for joint in tree_joints(loaded):
         if joint.type in ("floating", "planar"):

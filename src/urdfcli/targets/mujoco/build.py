@@ -7,8 +7,9 @@ from typing import NamedTuple
 
 from ...model import massprops
 from ...model.load import Loaded
+from ...read.memo import once
 from ...model.robot import Link
-from ...model.targets import WATER, Body, Build, Consumer, Profile, combined, declared_part, fused, joint_dof, moving, primitive_volume, tree_joints
+from ...model.targets import WATER, Body, Build, Consumer, Profile, combined, declared_body, declared_mass, declared_part, fused, joint_dof, moving, primitive_volume, tree_joints
 
 MJMINVAL = 1e-15  # MuJoCo's mjMINVAL: a moving body's mass and moments must exceed it
 MJEPS = 1e-14  # MuJoCo's mjEPS: a declared tensor's smallest eigenvalue must reach it (mjuu_fullInertia)
@@ -22,7 +23,12 @@ class Options(NamedTuple):
 
 
 def compiler_options(loaded: Loaded) -> Options:
-    """The ``<mujoco><compiler .../></mujoco>`` options the model sets over the URDF defaults."""
+    """The ``<mujoco><compiler .../></mujoco>`` options the model sets over the URDF defaults
+    (read once per model: the build and most rules ask)."""
+    return once(loaded, _compiler_options)
+
+
+def _compiler_options(loaded: Loaded) -> Options:
     found = Options()
     for block in loaded.robot.blocks("mujoco"):
         for compiler in block.iter("compiler"):
@@ -50,6 +56,13 @@ def part(link: Link, options: Options, fusing: bool = False):
     if fusing and found is not None and found[0] < 0:
         return 0.0, found[1], found[2]
     return found
+
+
+def as_declared(loaded: Loaded, links: list[str], options: Options) -> bool:
+    """Whether :func:`part` takes the mass properties of links none of which is weighed by
+    its geometry as they are declared: no ``balanceinertia``, no negative mass to fuse."""
+    fusing = len(links) > 1
+    return not options.balanceinertia and not (fusing and any((declared_mass(loaded.robot.links[n]) or 0.0) < 0 for n in links))
 
 
 def weighed_by_geometry(link: Link, options: Options) -> bool:
@@ -87,8 +100,11 @@ def build(loaded: Loaded, chosen: Profile) -> Build:
             for link in links:
                 dropped[link] = "fused into the world body"
             continue
-        mass, moments = combined(loaded, links, lambda link: part(link, options, fusing=len(links) > 1))
         weighed = [n for n in links if weighed_by_geometry(loaded.robot.links[n], options)]
+        if weighed or not as_declared(loaded, links, options):
+            mass, moments = combined(loaded, links, lambda link: part(link, options, fusing=len(links) > 1))
+        else:  # the body every consumer fusing these links builds
+            mass, moments = declared_body(loaded, tuple(links))
         source = f"{', '.join(weighed)}: collision geometry at 1000 kg/m³" if weighed else "declared"
         bodies.append(Body(tuple(links), joint if moving(joint) else None, mass, moments, source))
     changed = {}

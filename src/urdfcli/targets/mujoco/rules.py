@@ -7,9 +7,10 @@ from __future__ import annotations
 from ...model import massprops
 from ...model.kinematics import roots
 from ...model.meshes import MeshFiles
-from ...model.targets import declared_moments, mesh_extension
+from ...model.targets import declared_moments, mesh_extension, tensor_moments
 from .. import build
 from .build import MJEPS, MJMINVAL, compiler_options, geometry_body, weighed_by_geometry
+from ...read.memo import once as memo
 from ...read.meshfile import stl_header
 from ...rules.base import ERROR, INFO, WARNING, Kind, check, explain
 from ...rules.targets.common import BOUNDED, inertial_at, joints_of, limit_at, link_at, names, number, once
@@ -75,7 +76,7 @@ def triangle_inequality(loaded, given):
             continue
         tensor = massprops.matrix(inertial.inertia)
         positive = not massprops.is_zero(tensor) and declared_moments(loaded, link)[0] > 0  # else C103's
-        broken = massprops.triangle_violation(tensor, rel_tol=1e-9) if positive else None  # MuJoCo compares without a margin
+        broken = massprops.triangle_violation(tensor, rel_tol=1e-9, moments=tensor_moments(loaded, tensor)) if positive else None  # MuJoCo compares without a margin
         if broken is not None:
             a, b, c = broken
             yield loaded.diagnostic(
@@ -132,13 +133,20 @@ def inertia_not_positive(loaded, given):
             )
 
 
-def _meshes(loaded, discardvisual: bool):
+def _meshes(loaded, discardvisual: bool) -> tuple:
+    """(link, geometry) of each mesh MuJoCo reads, listed once per model for the mesh rules."""
+    return memo(loaded, _mesh_list, discardvisual)
+
+
+def _mesh_list(loaded, discardvisual: bool) -> tuple:
+    found = []
     for name, link in loaded.robot.links.items():
         shapes = link.collisions if discardvisual else (*link.visuals, *link.collisions)
         for shape in shapes:
             geometry = shape.geometry
             if geometry is not None and geometry.kind == "mesh" and geometry.filename:
-                yield name, geometry
+                found.append((name, geometry))
+    return tuple(found)
 
 
 @check(

@@ -4,7 +4,7 @@ src/parsers/urdf/model.cpp and model.hxx (the tree walk)."""
 from __future__ import annotations
 
 from ...model.load import Loaded
-from ...model.targets import Body, Build, Consumer, Profile, Variant, combined, declared_part, fused, joint_dof, moving, tree_joints
+from ...model.targets import Body, Build, Consumer, Profile, Variant, declared_body, fused, joint_dof, moving, tree_joints
 
 
 def build(loaded: Loaded, chosen: Profile) -> Build:
@@ -12,7 +12,7 @@ def build(loaded: Loaded, chosen: Profile) -> Build:
     bodies = []
     for top, links in members.items():
         joint = loaded.parent_joint(top)
-        mass, moments = combined(loaded, links, declared_part)
+        mass, moments = declared_body(loaded, tuple(links))
         bodies.append(Body(tuple(links), joint if moving(joint) else None, mass, moments, "declared"))
     mimic = "mimic" in chosen.variants
     changed, dof = {}, 0

@@ -14,7 +14,7 @@ from ...model.mesh_summaries import scaled_bounds
 from ...model.meshes import MeshFiles
 from ...read.meshfile import stl_header
 from ...model.robot import Geometry, Link
-from ...model.targets import Body, Build, Consumer, Profile, Variant, declared_mass, declared_matrix, joint_dof, mesh_extension, moving, tree_joints, valid_tensor
+from ...model.targets import Body, Build, Consumer, Profile, Variant, declared_mass, declared_matrix, declared_moments, joint_dof, mesh_extension, moving, tree_joints, valid_tensor
 
 
 MARGIN = 0.001  # gUrdfDefaultCollisionMargin (BulletUrdfImporter.cpp): each collision shape's and each link's compound shape's
@@ -35,10 +35,12 @@ def box_moments(loaded: Loaded, link: Link, mass: float) -> Vector | None:
     (not read, or ``check``)."""
     if not loaded.reads_meshes and any(shape.geometry is not None and shape.geometry.kind == "mesh" for shape in link.collisions):
         return None  # a mesh's bounds are not read in this run
+    shapes = [shape for shape in link.collisions if extracted(loaded, shape.geometry)]
+    if not shapes:  # an empty compound: a box of the margin alone
+        return _diagonal(massprops.box(mass, (2 * MARGIN,) * 3))
     inertial = link.inertial
     frame = massprops.transform(inertial.origin.xyz, inertial.origin.rpy) if inertial is not None else massprops.ORIGIN
     back = (massprops.transpose(frame[0]), tuple(-v for v in massprops.apply(massprops.transpose(frame[0]), frame[1])))
-    shapes = [shape for shape in link.collisions if extracted(loaded, shape.geometry)]
     poses = [massprops.compose(back, massprops.transform(shape.origin.xyz, shape.origin.rpy)) for shape in shapes]
     if len(poses) == 1 and poses[0] == massprops.ORIGIN and shapes[0].geometry is not None:
         geometry = shapes[0].geometry
@@ -61,8 +63,6 @@ def box_moments(loaded: Loaded, link: Link, mass: float) -> Vector | None:
         centre = massprops.place(pose, centre)
         for i in range(3):
             low[i], high[i] = min(low[i], centre[i] - half[i]), max(high[i], centre[i] + half[i])
-    if not poses:  # an empty compound: a box of the margin alone
-        low, high = [0.0] * 3, [0.0] * 3
     return _diagonal(massprops.box(mass, tuple(h - lo + 2 * MARGIN for lo, h in zip(low, high))))
 
 
@@ -157,9 +157,10 @@ def link_inertia(loaded: Loaded, link: Link, from_file: bool) -> tuple[float | N
         tensor = declared_matrix(link)
         if tensor is None or mass is None:
             return mass, None, "declared"
-        if not valid_tensor(mass, tensor):
+        moments = declared_moments(loaded, link)
+        if not valid_tensor(mass, tensor, moments=moments):
             return mass, (0.0, 0.0, 0.0), "zero (the declared tensor is not physical)"
-        return mass, massprops.principal_moments(tensor), "declared"
+        return mass, moments, "declared"
     if mass is None:
         return None, None, "declared mass"
     return mass, box_moments(loaded, link, mass), "declared mass, tensor from the collision shapes' bounding box"

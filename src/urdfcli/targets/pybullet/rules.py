@@ -174,7 +174,7 @@ def zeroes_inertia(loaded, given):
         tensor = declared_matrix(link)
         if tensor is None or link.inertial.mass is None or massprops.is_zero(tensor):
             continue
-        if not valid_tensor(link.inertial.mass, tensor):
+        if not valid_tensor(link.inertial.mass, tensor, moments=declared_moments(loaded, link)):
             yield loaded.diagnostic(
                 "C405",
                 f"PyBullet sets the inertia of link '{name}' to zero: its tensor is not physical",
