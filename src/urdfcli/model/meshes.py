@@ -118,13 +118,13 @@ def mesh_properties(loaded: Loaded, filename: str, scale: Vector) -> Properties:
     """Volume, centre, tensor per unit mass and bounds (lowest and highest corner) of
     a mesh of ``loaded``, ``scale`` applied; its file read once per session. Raises
     GeometryUnknown. A mesh that is not closed has no inside: its convex hull stands in."""
-    name = Path(filename).name
     path = MeshFiles.of(loaded).path(filename)
     if path is None:
         raise GeometryUnknown(f"mesh {filename} cannot be resolved")
     if not path.is_file():
         raise GeometryUnknown(f"mesh {filename} not found ({path})")
     found = loaded.meshes.summary(path)
+    name = Path(filename).name  # (for the messages below)
     if found.problem is not None:
         raise GeometryUnknown(f"mesh {name} cannot be read: {found.problem.message}")
     if found.skipped is not None:

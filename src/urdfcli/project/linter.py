@@ -18,20 +18,16 @@ from ..model.written import place_fixes
 from ..read.document import SUPPRESSION_MARK
 from ..read.files import SourceFiles
 from ..read.positions import may_contain
-from ..rules import REGISTRY, Kind, Remedy, Rule, RuleSet
+from ..rules import REGISTRY, Kind, Remedy, RuleSet, checks
 from . import suppressions
 from .config import Config
 
 
-def runs(rule: Rule, rule_set: RuleSet) -> bool:
-    """Whether a run of ``rule_set`` runs the check ``rule`` (a target rule: for the targets asked for)."""
-    return rule.function is not None and rule_set.holds(rule.rule_set)
-
-
 def ran(code: str, rule_set: RuleSet) -> bool:
-    """Whether the diagnostics of ``code`` can be there (a rule said while reading always can)."""
+    """Whether the diagnostics of ``code`` can be there (a rule said while reading always can;
+    a check, when the rule set runs it; a target rule, for the targets asked for)."""
     rule = REGISTRY.get(code)
-    return rule is None or rule.function is None or runs(rule, rule_set)
+    return rule is None or rule.function is None or rule_set.holds(rule.rule_set)
 
 
 def run_rules(loaded: Loaded, config: Config, rule_set: RuleSet) -> list[Diagnostic]:
@@ -41,9 +37,7 @@ def run_rules(loaded: Loaded, config: Config, rule_set: RuleSet) -> list[Diagnos
     robot could be read; the others need a robot."""
     options = config.rule_options()
     found: list[Diagnostic] = []
-    for rule in REGISTRY.values():
-        if not runs(rule, rule_set):
-            continue
+    for rule in checks(rule_set):
         ready = loaded.xacro_sources is not None if rule.kind is Kind.SOURCES else loaded.semantic is not None if rule.kind is Kind.SEMANTIC else loaded.modelled
         if not ready or not (rule.kind is Kind.TREE or config.enabled(rule)):
             continue

@@ -209,17 +209,27 @@ def source_files(root: Path, recursive: bool = True) -> Iterable[Path]:
         if folder != root and ((folder / "CATKIN_IGNORE").exists() or (folder / "COLCON_IGNORE").exists()):
             continue
         try:
-            entries = sorted(folder.iterdir())
+            with os.scandir(folder) as listing:  # (the entries know their type: no stat for each mesh file)
+                entries = sorted(listing, key=lambda entry: entry.name)
         except OSError:
             continue
         for entry in entries:
-            if entry.name.startswith("."):
+            name = entry.name
+            if name.startswith("."):
                 continue
-            if entry.name.endswith(XACRO_SUFFIXES):
-                if entry.is_file():
-                    yield entry
-            elif recursive and entry.name not in SKIP_DIRS and entry.is_dir():
-                stack.append(entry)
+            if name.endswith(XACRO_SUFFIXES):
+                if _is(entry.is_file):
+                    yield folder / name
+            elif recursive and name not in SKIP_DIRS and _is(entry.is_dir):
+                stack.append(folder / name)
+
+
+def _is(test: Callable[[], bool]) -> bool:
+    """A directory entry's type test (which follows a link, as Path's does); false when it cannot tell."""
+    try:
+        return test()
+    except OSError:
+        return False
 
 
 class Index:

@@ -51,8 +51,21 @@ def registry() -> MappingProxyType[str, Rule]:
     """Every rule by code (the rule modules imported the first time it is asked for)."""
     found = globals().get("REGISTRY")
     if found is None:
-        found = globals()["REGISTRY"] = MappingProxyType(_registry())
+        found = MappingProxyType(_registry())
+        globals()["CHECKS"] = MappingProxyType({kind: _checks(found, kind) for kind in RuleSet})
+        globals()["REGISTRY"] = found
     return found
+
+
+def _checks(rules: MappingProxyType[str, Rule], rule_set: RuleSet) -> tuple[Rule, ...]:
+    return tuple(rule for rule in rules.values() if rule.function is not None and rule_set.holds(rule.rule_set))
+
+
+def checks(rule_set: RuleSet) -> tuple[Rule, ...]:
+    """The check rules (those with a function) a run of ``rule_set`` runs, by code: worked
+    out with the registry, once, not for each model."""
+    registry()
+    return globals()["CHECKS"][rule_set]
 
 
 def rule(code: str) -> Rule:
@@ -81,6 +94,6 @@ def severity_of(code: str) -> Severity:
 
 
 __all__ = [
-    "MODULES", "PLACED", "REGISTRY", "SECTIONS", "Given", "Kind", "Option", "Remedy", "Rule", "RuleSet", "UnknownRule", "cleandoc", "example_code", "explain",
-    "lookup", "registry", "rule", "sections", "severity_of",
+    "MODULES", "PLACED", "REGISTRY", "SECTIONS", "Given", "Kind", "Option", "Remedy", "Rule", "RuleSet", "UnknownRule", "checks", "cleandoc", "example_code",
+    "explain", "lookup", "registry", "rule", "sections", "severity_of",
 ]

@@ -321,8 +321,13 @@ def file_not_found(loaded, given):
     """
     base = input_folder(loaded)
     missing_folders: dict = {}
+    exists: dict = {}  # each file asked of the disk once (a mesh is often a link's visual and its collision)
     for at, kind, uri, path in resolved_resources(loaded):
-        if path is None or path.exists():  # None: a package not found (D005), a network address
+        if path is None:  # a package not found (D005), a network address
+            continue
+        if path not in exists:
+            exists[path] = path.exists()
+        if exists[path]:
             continue
         if not path.parent.is_dir():
             missing_folders.setdefault(path.parent, []).append((at, kind, uri, path))
