@@ -113,27 +113,50 @@ def declared_matrix(link: Link) -> Matrix | None:
     inertial = link.inertial
     if inertial is None or inertial.inertia is None:
         return None
-    tensor = massprops.matrix(inertial.inertia)
-    if not any(inertial.origin.rpy):  # most inertials are not turned: no rotation to apply
+    return _turned(massprops.matrix(inertial.inertia), inertial.origin.rpy)
+
+
+def _turned(tensor: Matrix, rpy) -> Matrix:
+    if not any(rpy):  # most inertials are not turned: no rotation to apply
         return tensor
-    return massprops.rotate(tensor, massprops.rotation(inertial.origin.rpy))
+    return massprops.rotate(tensor, massprops.rotation(rpy))
+
+
+class DeclaredTensor(NamedTuple):
+    """A link's declared ``<inertia>``, as every consumer judges it: as written (in the
+    inertial frame's axes), in the link's axes, the principal moments of each (the same
+    object where the inertial is not turned), and whether it is all zero."""
+
+    written: Matrix
+    tensor: Matrix
+    moments: Vector  # of ``tensor``
+    written_moments: Vector  # of ``written``
+    zero: bool
+
+
+def declared_tensors(loaded: Loaded) -> dict[str, DeclaredTensor]:
+    """Each link's declared tensor and its principal moments, worked out once per model: the
+    consumers' rules and builds all judge them (valid, positive, triangle inequality)."""
+    return once(loaded, _declared_tensors)
+
+
+def _declared_tensors(loaded: Loaded) -> dict[str, DeclaredTensor]:
+    found = {}
+    for name, link in loaded.robot.links.items():
+        inertial = link.inertial
+        if inertial is None or inertial.inertia is None:
+            continue
+        written = massprops.matrix(inertial.inertia)
+        tensor = _turned(written, inertial.origin.rpy)
+        moments = massprops.principal_moments(tensor)
+        found[name] = DeclaredTensor(written, tensor, moments, moments if tensor is written else massprops.principal_moments(written), massprops.is_zero(written))
+    return found
 
 
 def declared_moments(loaded: Loaded, link: Link) -> Vector | None:
-    """The principal moments of a link's declared tensor, worked out once per model (the
-    consumers' rules and builds all ask for them)."""
-    tensor = declared_matrix(link)
-    return tensor_moments(loaded, tensor) if tensor is not None else None
-
-
-def tensor_moments(loaded: Loaded, tensor: Matrix) -> Vector:
-    """The principal moments of a tensor of the model, worked out once per model for each
-    value: each consumer judges the same declared tensors (valid, positive, triangle)."""
-    return once(loaded, _tensor_moments, tensor)
-
-
-def _tensor_moments(loaded: Loaded, tensor: Matrix) -> Vector:
-    return massprops.principal_moments(tensor)
+    """The principal moments of a link's declared tensor (see :func:`declared_tensors`)."""
+    found = declared_tensors(loaded).get(link.name)
+    return found.moments if found is not None else None
 
 
 def primitive_volume(geometry: Geometry | None) -> float | None:
@@ -202,15 +225,16 @@ def combined(loaded: Loaded, links: list[str], part) -> tuple[float | None, Vect
         if mass == 0 and massprops.is_zero(tensor):
             return 0.0, (0.0, 0.0, 0.0)
         return mass, declared_moments(loaded, loaded.robot.links[links[0]]) if part is declared_part else massprops.principal_moments(tensor)
-    parts = []
-    poses = body_poses(loaded, links)
+    found = {}
     for name in links:
-        found = part(loaded.robot.links[name])
-        if found is None:
+        own = part(loaded.robot.links[name])
+        if own is None:
             return None, None
-        mass, com, tensor = found
-        if mass == 0 and massprops.is_zero(tensor):
-            continue
+        if not (own[0] == 0 and massprops.is_zero(own[2])):  # a massless frame adds nothing: not placed
+            found[name] = own
+    poses = body_poses(loaded, [links[0], *found]) if found else {}
+    parts = []
+    for name, (mass, com, tensor) in found.items():
         pose = poses[name]
         parts.append((mass, massprops.place(pose, com), massprops.rotate(tensor, pose[0])))
     if not parts:

@@ -27,6 +27,9 @@ def refused_by(diagnostic: Diagnostic, consumer: Consumer) -> bool:
     return rule is not None and about_the_model(rule) and diagnostic.code not in consumer.loads_anyway
 
 
+COUNTED = (Severity.ERROR, Severity.WARNING)
+
+
 def verdict(diagnostics: Iterable[Diagnostic], chosen: Profile) -> Verdict:
     """What ``chosen``'s consumer does with the model the diagnostics are about."""
     consumer = chosen.consumer
@@ -38,5 +41,5 @@ def verdict(diagnostics: Iterable[Diagnostic], chosen: Profile) -> Verdict:
 
 
 def verdicts(diagnostics: Iterable[Diagnostic], profiles: Iterable[Profile]) -> tuple[Verdict, ...]:
-    found = list(diagnostics)
+    found = [d for d in diagnostics if d.severity in COUNTED]  # the notes (info) are neither refusals nor changes
     return tuple(verdict(found, chosen) for chosen in profiles)

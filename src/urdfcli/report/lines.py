@@ -13,7 +13,7 @@ from .escape import escape
 
 if TYPE_CHECKING:
     from ..model.result import Result
-    from ..read.files import SourceFiles
+    from ..read.files import SourceFile, SourceFiles
 
 TRACE_LEVELS = 3  # macro calls shown under a diagnostic
 
@@ -71,7 +71,22 @@ def longest_path(line: str) -> int:
     return max((len(found) for found in _PATH.findall(line)), default=0)
 
 
-def excerpt_lines(diagnostic: Diagnostic, files: SourceFiles, width: int | None = None) -> list[str]:
+class SourcesOnce:
+    """The session's files for one model's report, each looked up once: its diagnostics quote
+    lines of the same few files, and a look-up checks the file on disk (a ``stat``)."""
+
+    def __init__(self, files: SourceFiles) -> None:
+        self.files = files
+        self._found: dict[str, SourceFile | None] = {}
+
+    def line(self, name: str, number: int) -> str | None:
+        if name not in self._found:
+            self._found[name] = self.files.get(name)
+        found = self._found[name]
+        return found.line(number) if found is not None else None
+
+
+def excerpt_lines(diagnostic: Diagnostic, files: SourceFiles | SourcesOnce, width: int | None = None) -> list[str]:
     """The diagnostic's source line, numbered, with a caret under its column: the line
     cut at 160 characters, or with ``width``, to fit that many columns, around the caret."""
     location = diagnostic.location
@@ -112,7 +127,7 @@ def fix_line(diagnostic: Diagnostic) -> str | None:
     return escape(f"    no fix: {fix.reason}") if fix.reason else None
 
 
-def details(diagnostic: Diagnostic, files: SourceFiles | None, width: int | None = None) -> list[str]:
+def details(diagnostic: Diagnostic, files: SourceFiles | SourcesOnce | None, width: int | None = None) -> list[str]:
     """The lines under a diagnostic: its macro calls, its hint, its fix, its source excerpt
     (fitting ``width`` columns, when given)."""
     hint = ["    hint: " + escape(diagnostic.hint)] if diagnostic.hint else []
@@ -173,7 +188,7 @@ def summary_line(results: list[Result]) -> str:
 STYLES = {"error": "bold red", "warning": "yellow", "info": "cyan"}
 
 
-def diagnostic_lines(diagnostic: Diagnostic, files: SourceFiles | None, width: int | None = None) -> list[Line]:
+def diagnostic_lines(diagnostic: Diagnostic, files: SourceFiles | SourcesOnce | None, width: int | None = None) -> list[Line]:
     """A diagnostic, its macro calls and hint, and (given the files) its source line.
     With ``width``, a message, note or hint longer than that (beside the one path it
     names) goes on over indented lines, and a source excerpt is cut to fit it around its

@@ -9,7 +9,7 @@ from ...model import massprops
 from ...model.kinematics import roots
 from ...model.load import Loaded
 from ...model.robot import Link
-from ...model.targets import WATER, Body, Build, Consumer, Profile, combined, declared_moments, declared_part, joint_dof, moving, tree_joints, valid_tensor
+from ...model.targets import WATER, Body, Build, Consumer, Profile, combined, declared_mass, declared_part, declared_tensors, joint_dof, moving, tree_joints, valid_tensor
 
 
 def part(loaded: Loaded, link: Link):
@@ -30,15 +30,15 @@ def replaces(loaded: Loaded, link: Link) -> bool:
     """Whether Drake replaces a link's inertia (ParseSpatialInertia: the checks of
     SpatialInertia::IsPhysicallyValid fail), judged on the principal moments every
     consumer reads (worked out once per model)."""
-    found = declared_part(link)
-    if found is None or link.inertial is None:
+    declared = declared_tensors(loaded).get(link.name)
+    mass = declared_mass(link)
+    if declared is None or mass is None:  # no <inertial>, or one without a mass or a tensor: nothing to judge
         return False
-    mass, _, tensor = found
     if mass < 0:
         return True
     if mass == 0:
-        return not massprops.is_zero(tensor)
-    return not valid_tensor(mass, tensor, 1e-14, declared_moments(loaded, link))
+        return not massprops.is_zero(declared.tensor)
+    return not valid_tensor(mass, declared.tensor, 1e-14, declared.moments)
 
 
 def build(loaded: Loaded, chosen: Profile) -> Build:

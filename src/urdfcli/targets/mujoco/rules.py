@@ -7,7 +7,7 @@ from __future__ import annotations
 from ...model import massprops
 from ...model.kinematics import roots
 from ...model.meshes import MeshFiles
-from ...model.targets import declared_moments, mesh_extension, tensor_moments
+from ...model.targets import declared_tensors, mesh_extension
 from .. import build
 from .build import MJEPS, MJMINVAL, compiler_options, geometry_body, weighed_by_geometry
 from ...read.memo import once as memo
@@ -70,14 +70,11 @@ def massless_body(loaded, given):
 def triangle_inequality(loaded, given):
     if compiler_options(loaded).balanceinertia:
         return
-    for name, link in loaded.robot.links.items():
-        inertial = link.inertial
-        if inertial is None or inertial.inertia is None:
-            continue
-        tensor = massprops.matrix(inertial.inertia)
-        positive = not massprops.is_zero(tensor) and declared_moments(loaded, link)[0] > 0  # else C103's
-        broken = massprops.triangle_violation(tensor, rel_tol=1e-9, moments=tensor_moments(loaded, tensor)) if positive else None  # MuJoCo compares without a margin
+    for name, declared in declared_tensors(loaded).items():
+        positive = not declared.zero and declared.moments[0] > 0  # else C103's
+        broken = massprops.triangle_violation(declared.written, rel_tol=1e-9, moments=declared.written_moments) if positive else None  # MuJoCo compares without a margin
         if broken is not None:
+            inertial = loaded.robot.links[name].inertial
             a, b, c = broken
             yield loaded.diagnostic(
                 "C102",
@@ -115,15 +112,12 @@ def inertia_not_positive(loaded, given):
     </link>
     ```
     """
-    for name, link in loaded.robot.links.items():
-        inertial = link.inertial
-        if inertial is None or inertial.inertia is None:
+    for name, declared in declared_tensors(loaded).items():
+        if declared.zero:
             continue
-        tensor = massprops.matrix(inertial.inertia)
-        if massprops.is_zero(tensor):
-            continue
-        smallest = declared_moments(loaded, link)[0]
+        smallest = declared.moments[0]
         if smallest < MJEPS:
+            inertial = loaded.robot.links[name].inertial
             yield loaded.diagnostic(
                 "C103",
                 f"MuJoCo rejects link '{name}': its inertia has a principal moment of {number(smallest)}; all must be at least 1e-14",

@@ -5,7 +5,7 @@ from __future__ import annotations
 
 from ...model import massprops
 from ...model.meshes import MeshFiles
-from ...model.targets import declared_matrix, declared_moments, mesh_extension, valid_tensor
+from ...model.targets import declared_matrix, declared_moments, declared_tensors, mesh_extension, valid_tensor
 from .. import build
 from .build import missing_mesh
 from ...rules.base import ERROR, INFO, WARNING, Kind, check, explain
@@ -91,12 +91,12 @@ def recomputes_inertia(loaded, given):
     if "inertia-from-file" in given.profile.variants:
         return
     changed = []
+    tensors = declared_tensors(loaded)
     for body in build(loaded, given.profile).bodies:
-        link = loaded.robot.links[body.top]
-        declared = declared_matrix(link)
+        declared = tensors.get(body.top)
         if declared is None or not body.mass:
             continue
-        moments = declared_moments(loaded, link)
+        moments = declared.moments
         if body.moments is None:  # from a mesh's bounding box: changed, by how much the mesh says
             changed.append((body.top, moments, moments))
             continue
