@@ -5,6 +5,7 @@ from __future__ import annotations
 
 from ...model.load import Loaded
 from ...model.massprops import number
+from ...read.memo import once as memo
 
 
 def link_at(loaded: Loaded, name: str) -> int | None:
@@ -37,8 +38,13 @@ BOUNDED = ("revolute", "prismatic")  # the joints URDF gives a <limit> with a lo
 MIMICKED = ("revolute", "continuous", "prismatic")  # the joints a <mimic> makes follow another
 
 
-def joints_of(loaded: Loaded, kinds: tuple[str, ...]) -> list:
-    return [joint for joint in loaded.robot.joints.values() if joint.type in kinds]
+def joints_of(loaded: Loaded, kinds: tuple[str, ...]) -> tuple:
+    """The joints of these types, listed once per model (most consumers' rules ask)."""
+    return memo(loaded, _joints_of, kinds)
+
+
+def _joints_of(loaded: Loaded, kinds: tuple[str, ...]) -> tuple:
+    return tuple(joint for joint in loaded.robot.joints.values() if joint.type in kinds)
 
 
 def inverted_limits(loaded: Loaded) -> list:

@@ -4,6 +4,7 @@ _impl/link_hierarchy.py). Isaac Sim's Kit post-processing is not modelled."""
 from __future__ import annotations
 
 from ...model.load import Loaded
+from ...read.memo import once
 from ...model.robot import Link
 from ...model.targets import Body, Build, Consumer, Profile, declared_body, declared_mass, joint_dof, moving, tree_joints
 
@@ -23,21 +24,33 @@ def zero_equivalent(link: Link) -> bool:
 def merged_child(loaded: Loaded, link: Link) -> str | None:
     """The inertial-only child whose inertia the converter writes onto ``link`` (a link with
     shapes but no inertial data): the first one on a fixed joint (``_fixed_dummy_inertia_children``)."""
-    if not zero_equivalent(link) or not (link.visuals or link.collisions):
-        return None
+    return merged_children(loaded).get(link.name)
+
+
+def merged_children(loaded: Loaded) -> dict[str, str]:
+    """Each link -> its merged child (see :func:`merged_child`), found in one pass over the
+    joints per model."""
+    return once(loaded, _merged_children)
+
+
+def _merged_children(loaded: Loaded) -> dict[str, str]:
+    links = loaded.robot.links
+    found: dict[str, str] = {}
     for joint in loaded.robot.joints.values():
-        child = loaded.robot.links.get(joint.child)
-        if joint.parent == link.name and joint.type == "fixed" and child is not None:
-            if not zero_equivalent(child) and not (child.visuals or child.collisions):
-                return child.name
-    return None
+        parent, child = links.get(joint.parent), links.get(joint.child)
+        if joint.type != "fixed" or parent is None or child is None or joint.parent in found:
+            continue
+        if zero_equivalent(parent) and (parent.visuals or parent.collisions) and not zero_equivalent(child) and not (child.visuals or child.collisions):
+            found[joint.parent] = child.name
+    return found
 
 
 def build(loaded: Loaded, chosen: Profile) -> Build:
     bodies, changed, dof = [], {}, 0
-    merged = {name: child for name, link in loaded.robot.links.items() if (child := merged_child(loaded, link))}
+    merged = merged_children(loaded)
+    absorbed = set(merged.values())
     for name, link in loaded.robot.links.items():
-        if name in merged.values():
+        if name in absorbed:
             continue
         joint = loaded.parent_joint(name)
         written = loaded.robot.links[merged[name]] if name in merged else link
