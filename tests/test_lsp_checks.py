@@ -120,3 +120,20 @@ def test_an_edit_expands_each_model_whose_sources_changed_once(workspace, monkey
     finally:
         checker.close()
 
+
+def test_a_librarys_check_names_each_model_as_the_models_own_check_does(workspace, monkeypatch):
+    # (a library's check finds its models by names relative to the working folder; the server
+    # publishes a model's list without waiting for a library's check only when it knows the
+    # model's own check went through the same models)
+    monkeypatch.chdir(workspace)
+    library, first = str(workspace / "urdf" / "arm_macro.xacro"), str(workspace / "urdf" / "robot_0.urdf.xacro")
+    texts = {path: Path(path).read_text() for path in (library, first)}
+    checker = Checker()
+    try:
+        through = checker.check(library, texts)
+        own = checker.check(first, texts)
+        assert through.library and not own.library, through.marks
+        assert set(own.models) == {(first, ())} and set(own.models) < set(through.models), (own.models, through.models)
+        assert first in through.models[(first, ())] and library in through.models[(first, ())]  # what that model read
+    finally:
+        checker.close()

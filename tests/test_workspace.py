@@ -278,6 +278,21 @@ def test_a_repository_in_a_folder_named_src_is_searched_alone_unless_that_is_a_w
     assert search_roots(library, PackageIndex()) == ([src / "my_robot", src], True)
 
 
+def test_a_repository_that_is_one_package_is_searched_alone(tmp_path):
+    """A package whose own folder is its repository, in no workspace (~/code/my_robot_description):
+    the folder beside it holds other repositories, none of them searched for its models."""
+    from urdfcli.project.workspace import search_roots
+
+    code = tmp_path / "code"
+    library = write(code / "my_robot_description" / "urdf" / "wheel.xacro", WHEEL)
+    write(code / "my_robot_description" / "package.xml", package_xml("my_robot_description"))
+    (code / "my_robot_description" / ".git").mkdir()
+    write(code / "other_robot" / "package.xml", package_xml("other_robot"))
+    (code / "other_robot" / ".git").mkdir()
+    write(code / "other_robot" / "urdf" / "other.urdf.xacro", f'<robot name="other" {XACRO}><link name="a"/></robot>\n')
+    assert search_roots(library, PackageIndex()) == ([code / "my_robot_description"], True)
+
+
 def test_only_the_models_that_include_the_library_are_expanded(repository):
     # a broken model that includes only inertia.xacro: expanding it would fail
     write(repository / "description/urdf/broken.urdf.xacro", f"""\

@@ -107,7 +107,7 @@ class PackageIndex:
     def local_roots(self, package_dir: Path) -> list[Path]:
         """The folders whose packages are siblings of package_dir, nearest first: the
         repository root or workspace ``src`` (whichever comes first), then a workspace
-        ``src`` above that repository; else the package's parent folder."""
+        ``src`` above that repository; else the package's own repository, or its parent folder."""
         if package_dir not in self._roots:
             self._roots[package_dir] = _local_roots(package_dir)
         return list(self._roots[package_dir])
@@ -200,7 +200,11 @@ def _local_roots(package_dir: Path) -> list[Path]:
             break
         if not roots and (folder / ".git").exists():
             roots.append(folder)
-    return roots or [package_dir.parent]
+    if roots:
+        return roots
+    # a repository that is one package, in no workspace: the folder holding it holds
+    # other repositories, not its siblings
+    return [package_dir] if (package_dir / ".git").exists() else [package_dir.parent]
 
 
 class PackageResolver:
