@@ -7,6 +7,7 @@ a program that only asks for ``--help`` imports no rule), and does not change.
 
 from __future__ import annotations
 
+from functools import cache
 from importlib import import_module
 from types import MappingProxyType, ModuleType
 
@@ -51,21 +52,15 @@ def registry() -> MappingProxyType[str, Rule]:
     """Every rule by code (the rule modules imported the first time it is asked for)."""
     found = globals().get("REGISTRY")
     if found is None:
-        found = MappingProxyType(_registry())
-        globals()["CHECKS"] = MappingProxyType({kind: _checks(found, kind) for kind in RuleSet})
-        globals()["REGISTRY"] = found
+        found = globals()["REGISTRY"] = MappingProxyType(_registry())
     return found
 
 
-def _checks(rules: MappingProxyType[str, Rule], rule_set: RuleSet) -> tuple[Rule, ...]:
-    return tuple(rule for rule in rules.values() if rule.function is not None and rule_set.holds(rule.rule_set))
-
-
+@cache
 def checks(rule_set: RuleSet) -> tuple[Rule, ...]:
     """The check rules (those with a function) a run of ``rule_set`` runs, by code: worked
-    out with the registry, once, not for each model."""
-    registry()
-    return globals()["CHECKS"][rule_set]
+    out once a process, not for each model."""
+    return tuple(rule for rule in registry().values() if rule.function is not None and rule_set.holds(rule.rule_set))
 
 
 def rule(code: str) -> Rule:
