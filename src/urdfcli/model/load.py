@@ -16,7 +16,6 @@ from typing import TYPE_CHECKING
 from ..diagnostics import Diagnostic, Location
 from ..read import positions
 from ..read.document import STDIN, SUPPRESSION_MARK, Document, Inputs, read_document
-from ..read.memo import once
 from ..read.packages import PackageResolver
 from ..read.xml import XmlError, parse
 from .mesh_summaries import MeshSummaries
@@ -27,11 +26,6 @@ if TYPE_CHECKING:
     import networkx as nx
 
     from .sources import XacroSources
-
-
-def _place(loaded: Loaded, at: int | None, attribute: str | None) -> tuple[Location, str | None]:
-    """Where element ``at`` (or its attribute) was written, and its element path."""
-    return loaded.document.locate(at, attribute), loaded.document.element_path(at)
 
 
 class Loaded:
@@ -74,11 +68,8 @@ class Loaded:
     def diagnostic(
         self, code: str, message: str, at: int | None, hint: str | None = None, attribute: str | None = None, subjects: tuple[str, ...] = ()
     ) -> Diagnostic:
-        """A diagnostic about the element ``at`` (see :meth:`Document.diagnostic`), its place
-        worked out once per model: rules, the consumers' above all, say several things of
-        one link or joint."""
-        location, element = once(self, _place, at, attribute)
-        return Diagnostic(code, message, location, element, hint, subjects=subjects)
+        """A diagnostic about the element ``at`` (see :meth:`Document.diagnostic`)."""
+        return self.document.diagnostic(code, message, at, hint, attribute, subjects)
 
     def value(self, at: int | None, attribute: str) -> str | None:
         """The value of an attribute of element ``at`` as the model's text has it (the

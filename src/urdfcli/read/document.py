@@ -81,6 +81,7 @@ class Document:
         self.readable = data is not None  # whether a model could be read
         self.missing_argument: str | None = None  # a xacro argument the expansion needed and had no value for
         self.tree: Element | None = None  # the file's tree (elements only), when it was parsed whole to tell whether it uses xacro
+        self.places: dict[tuple[int | None, str | None], tuple[Location, str | None]] = {}  # (element, attribute) -> where, its path
 
     @property
     def shown(self) -> str:
@@ -89,8 +90,13 @@ class Document:
     def diagnostic(
         self, code: str, message: str, at: int | None, hint: str | None = None, attribute: str | None = None, subjects: tuple[str, ...] = ()
     ) -> Diagnostic:
-        """A diagnostic about the element ``at`` (or one of its attributes), located where it was written."""
-        return Diagnostic(code, message, self.locate(at, attribute), self.element_path(at), hint, subjects=subjects)
+        """A diagnostic about the element ``at`` (or one of its attributes), located where it
+        was written: each place worked out once (rules, the consumers' above all, say several
+        things of one link or joint)."""
+        place = self.places.get((at, attribute))
+        if place is None:
+            place = self.places[at, attribute] = (self.locate(at, attribute), self.element_path(at))
+        return Diagnostic(code, message, place[0], place[1], hint, subjects=subjects)
 
     def locate(self, at: int | None, attribute: str | None = None) -> Location:
         """Where the ``<`` of element ``at`` was written; with ``attribute``, where that
