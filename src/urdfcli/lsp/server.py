@@ -95,6 +95,7 @@ class CheckingThread:
                 future.set_result(function(*args))
             except Exception as error:  # noqa: BLE001 - given to whoever waits for it
                 future.set_exception(error)
+            del future, function, args  # (a check's texts are not kept until the next job)
 
 
 class Contribution(NamedTuple):
@@ -181,6 +182,7 @@ class UrdfServer(LanguageServer):
         self.shut_down = False
         self.exit_code = 1  # the protocol's: 0 only for an exit after a shutdown
         self.links = rule_links()
+        self.memory = Memory()
 
     def report_server_error(self, error: Exception, source) -> None:
         """Logged, never shown in a pop-up: a request gets its error response anyway."""
@@ -284,7 +286,7 @@ class UrdfServer(LanguageServer):
             self.keep(path, checked, texts)
         # The collector runs seldom while a model is read (the command line's setting: a
         # fifth of a check's time otherwise); the garbage of the checks goes now, while idle.
-        self.thread.submit(give_back_memory)
+        self.thread.submit(self.memory.give_back)
         self.navigator.sync(self.open_files())  # what it holds of texts changed or closed goes too
 
     def keep(self, path: str, checked: Checked, texts: dict[str, str]) -> None:
@@ -338,7 +340,7 @@ class UrdfServer(LanguageServer):
         self.navigator.keep(path, None)
         self.thread.submit(self.checker.sync, self.open_files())  # its file on disk stands for it again
         self.publish_ready()
-        self.thread.submit(give_back_memory)
+        self.thread.submit(self.memory.give_back)
 
     # -- protocol values -----------------------------------------------------------------
     def diagnostic(self, mark: Mark) -> types.Diagnostic:
@@ -392,21 +394,29 @@ class UrdfServer(LanguageServer):
         return [d for d in (shown[1] if shown else ()) if _within(position, d.range)]
 
 
-def give_back_memory() -> None:
-    """Collect the garbage, and give the memory freed back to the system: glibc's
-    allocator keeps what a large file's check freed otherwise (hundreds of MiB after
-    a 50 MB model), though nothing uses it.
+class Memory:
+    """Gives the memory a check freed back to the system: the garbage collected, then
+    glibc's allocator trimmed (it keeps what a large file's check freed otherwise,
+    hundreds of MiB after a 50 MB model, though nothing uses it).
 
     Python's attribute cache is emptied first: it holds on to the attribute names
     looked up last, strings a check made, each a few bytes that keep a whole MiB
-    arena of Python's allocator in use (after a 5.5 MB model: 38 arenas, 20% more
-    memory than before it was opened). It fills again at the next lookups."""
-    sys._clear_type_cache()
-    gc.collect()
-    try:
-        ctypes.CDLL("libc.so.6").malloc_trim(0)
-    except (OSError, AttributeError):  # not glibc: its allocator decides
-        pass
+    arena of Python's allocator in use. It fills again at the next lookups.
+
+    ``malloc_trim`` is looked up once, here: a look-up makes ctypes objects that live
+    on, and made after a large file's check they would stay in its arenas too."""
+
+    def __init__(self) -> None:
+        try:
+            self._trim = ctypes.CDLL("libc.so.6").malloc_trim
+        except (OSError, AttributeError):  # not glibc: its allocator decides
+            self._trim = None
+
+    def give_back(self) -> None:
+        sys._clear_type_cache()
+        gc.collect()
+        if self._trim is not None:
+            self._trim(0)
 
 
 def merged(contributions) -> list[types.Diagnostic]:
@@ -613,6 +623,17 @@ SYMBOL_KINDS = {
 }
 
 
+def make_converters(protocol: LanguageServerProtocol) -> None:
+    """The protocol's converters for every message the server handles, made now rather than
+    when the first such message arrives: made while a large file is open (its first
+    ``didClose``), they would keep arenas of Python's allocator that its checks filled in
+    use once it is closed."""
+    for method in {*protocol.fm.builtin_features, *protocol.fm.features, types.CANCEL_REQUEST}:
+        message = types.METHOD_TO_TYPES.get(method, (None,))[0]
+        if message is not None:
+            protocol.fm.converter.get_structure_hook(message)
+
+
 def serve(package_paths: tuple[str, ...] = ()) -> int:
     """Run the server on standard input and output until the client ends it (or is
     gone); ``package_paths`` are ``-P`` options. The exit code, as the protocol says:
@@ -628,6 +649,7 @@ def serve(package_paths: tuple[str, ...] = ()) -> int:
     # What lives as long as the server (the protocol's types and converters, the rules) is
     # set aside from the collector's scans, here and in the xacro worker forked from it:
     # a collection after each check then takes about a millisecond, not 40.
+    make_converters(server.protocol)
     gc.collect()
     gc.freeze()
     server.checker.warm()
