@@ -94,7 +94,7 @@ def generated_from(urdf: Path, session: Session) -> GeneratedFrom | None:
     if found is None:
         return None
     head = found.data[:HEAD_BYTES]
-    return find_source(urdf, head, lambda: session.packages.enclosing_package(urdf.resolve().parent), lambda folder: session.index.scan([folder]))
+    return find_source(urdf, head, lambda: session.packages.enclosing_package(session.packages.real_path(urdf).parent), lambda folder: session.index.scan([folder]))
 
 
 def generated_urdfs(paths: Iterable[str], session: Session) -> list[str]:

@@ -517,6 +517,8 @@ def unread(aside: tuple[Aside, ...], results: list[Result]) -> list[Result]:
     (not counted as checked): a fragment is never expanded alone, where its missing
     context would be reported as its mistakes. One note per include, whatever
     number of files it may name."""
+    if not aside:
+        return []
     read = {_resolved(file) for result in results for file in (result.path, *result.includes) if file != STDIN}
     found = []
     for file in aside:
@@ -635,7 +637,7 @@ UNDEFINED = frozenset(rule.code for rule in (structure.X003, joint_link_not_foun
 
 def assemble(
     entries: list[Entry], outcome: Callable[[Target], Result | Unreadable], includers: Callable[[str], list[Target]] = lambda path: [],
-    generated_from: Callable[[str], Path | None] = lambda path: None,
+    generated_from: Callable[[str], Path | None] = lambda path: None, real_path: Callable[[Path], Path] = Path.resolve,
 ) -> tuple[list[Result], list[Unreadable]]:
     """The results to show, in the order the files were given, and the reasons
     some inputs could not be read.
@@ -649,11 +651,13 @@ def assemble(
     models include it, it is a fragment of them, and is checked through them
     instead (its missing context is no mistake). ``generated_from(path)`` names the
     xacro source a generated URDF was made from: what a model reading that source
-    found is not said again at the copy.
+    found is not said again at the copy. ``real_path`` is ``Path.resolve``, or the
+    session's, which asks the disk once a file.
     """
     models = [outcome(target) for entry in entries if not entry.library for target in entry.targets]
-    unused = _unused_in_all([m for m in models if isinstance(m, Result)])
-    at_source = _found_at_sources([m for m in models if isinstance(m, Result)], generated_from)
+    resolved = functools.cache(lambda file: real_path(Path(file)) if file != STDIN else Path(file))
+    unused = _unused_in_all([m for m in models if isinstance(m, Result)], resolved)
+    at_source = _found_at_sources([m for m in models if isinstance(m, Result)], generated_from, resolved)
     results, unreadable, shown_keys = [], [], set()
     for entry in entries:
         if not entry.library:
@@ -684,7 +688,9 @@ def assemble(
     return results, unreadable
 
 
-def _found_at_sources(models: list[Result], generated_from: Callable[[str], Path | None]) -> Callable[[Result], set[tuple[str, str]]]:
+def _found_at_sources(
+    models: list[Result], generated_from: Callable[[str], Path | None], resolved: Callable[[str], Path]
+) -> Callable[[Result], set[tuple[str, str]]]:
     """For a generated URDF whose xacro source another model of the run read, what
     that model found (code and message): said there, at the line of the source, and
     not again at the generated copy. What differs (a copy not generated again) stays."""
@@ -692,7 +698,7 @@ def _found_at_sources(models: list[Result], generated_from: Callable[[str], Path
     for model in models:
         for file in (model.path, *model.includes):
             if file != STDIN:
-                readers.setdefault(_resolved(file), []).append(model)
+                readers.setdefault(resolved(file), []).append(model)
     found = {id(model): {(d.code, d.message) for d in model.diagnostics} for model in models}
 
     def copied(result: Result) -> set[tuple[str, str]]:
@@ -728,26 +734,26 @@ def _through(diagnostic: Diagnostic, model: Result) -> Diagnostic:
     return diagnostic._replace(model=model.label)
 
 
-def _unused_in_all(models: list[Result]) -> Callable[[Diagnostic], bool]:
+def _unused_in_all(models: list[Result], resolved: Callable[[str], Path]) -> Callable[[Diagnostic], bool]:
     """Whether to keep a diagnostic: a U001 only when every model of the run that
     read its file reports it. A noqa in a shared macro may silence something for
     one model and nothing for another; it is useless only when useless for all."""
     read: list[set[Path]] = []
     counts: dict[tuple, int] = {}
     for model in models:
-        read.append({_resolved(file) for file in (model.path, *model.includes)})
-        for place in {_place(d) for d in model.diagnostics if d.code == UNUSED_SUPPRESSION.code}:
+        read.append({resolved(file) for file in (model.path, *model.includes)})
+        for place in {_place(d, resolved) for d in model.diagnostics if d.code == UNUSED_SUPPRESSION.code}:
             counts[place] = counts.get(place, 0) + 1
     agreed = {place for place, count in counts.items() if count == sum(place[0] in files for files in read)}
-    return lambda diagnostic: diagnostic.code != UNUSED_SUPPRESSION.code or _place(diagnostic) in agreed
+    return lambda diagnostic: diagnostic.code != UNUSED_SUPPRESSION.code or _place(diagnostic, resolved) in agreed
 
 
 def _resolved(file: str) -> Path:
     return Path(file).resolve() if file != STDIN else Path(file)
 
 
-def _place(diagnostic: Diagnostic) -> tuple:
-    return (_resolved(diagnostic.path), *_key(diagnostic)[2:])
+def _place(diagnostic: Diagnostic, resolved: Callable[[str], Path]) -> tuple:
+    return (resolved(diagnostic.path), *_key(diagnostic)[2:])
 
 
 def _fresh(diagnostic: Diagnostic, in_own_file: bool, shown_keys: set) -> bool:
@@ -791,7 +797,7 @@ def _library_result(entry: Entry, outcome, shown_keys: set, unreadable: list[Unr
             continue
         checked_through.append(target.label)
         used.append(model)
-    unused = _unused_in_all(used)
+    unused = _unused_in_all(used, functools.cache(_resolved))
     for model in used:  # mistakes written in the library, and whatever breaks a model that uses it
         found += [_through(d, model) for d in model.diagnostics if unused(d) and (_same(d.path, library) or d.severity is Severity.ERROR)]
     if not checked_through and fragment:

@@ -56,6 +56,7 @@ class PackageIndex:
         self._enclosing: dict[Path, Path | None] = {}
         self._roots: dict[Path, list[Path]] = {}
         self._manifests: dict[tuple[str, int, int], Manifest | None] = {}
+        self._real: dict[str, Path] = {}  # an absolute path -> its real path
 
     def __getstate__(self) -> dict:
         """What a copy in the xacro worker gets: the texts given stay here (the worker is given them itself)."""
@@ -67,6 +68,16 @@ class PackageIndex:
         self._scans.clear()
         self._enclosing.clear()
         self._roots.clear()
+        self._real.clear()
+
+    def real_path(self, path: Path) -> Path:
+        """``path.resolve()``, asked of the disk once (a dozen ``lstat`` calls): a run asks
+        it of each input for its package, for its xacro source and among the other inputs."""
+        key = os.path.abspath(path)
+        found = self._real.get(key)
+        if found is None:
+            found = self._real[key] = Path(key).resolve()
+        return found
 
     def package_name(self, manifest: Path) -> str | None:
         """The ``<name>`` declared in a package.xml, or None when unreadable."""
@@ -241,7 +252,7 @@ class PackageResolver:
     @cached_property
     def _own(self) -> Path | None:
         """The package the input is in: looked for only when a look-up needs it."""
-        return self.index.enclosing_package(self._input_file.resolve().parent) if self._input_file else None
+        return self.index.enclosing_package(self.index.real_path(self._input_file).parent) if self._input_file else None
 
     @cached_property
     def _local_roots(self) -> list[Path]:
