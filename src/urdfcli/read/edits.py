@@ -16,7 +16,6 @@ from __future__ import annotations
 
 import bisect
 import os
-import tempfile
 from collections.abc import Iterable
 from pathlib import Path
 
@@ -85,6 +84,8 @@ def apply(data: bytes, edits: Iterable[tuple[int, int, str]]) -> bytes:
 def write(path: str | os.PathLike, data: bytes) -> None:
     """Replace the file at ``path`` by ``data`` atomically, keeping its permissions; a
     symbolic link is kept, and the file it names replaced."""
+    import tempfile  # (here: only a run that writes a fix needs it)
+
     target = Path(os.path.realpath(path))
     mode = target.stat().st_mode & 0o7777 if target.exists() else None
     handle, temporary = tempfile.mkstemp(prefix=f".{target.name}.", suffix=".urdfcli", dir=target.parent)
