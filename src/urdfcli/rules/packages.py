@@ -118,7 +118,7 @@ def dependency_undeclared(loaded, given) -> Iterator[Diagnostic]:
             continue
         reported[key] = [0, kind, where]
     for (file, package), (others, kind, where) in reported.items():
-        owner = index.enclosing_package(Path(file).resolve().parent) if not file.startswith("<") else None
+        owner = index.enclosing_package(index.real_path(Path(file)).parent) if not file.startswith("<") else None
         manifest = index.manifest(owner / "package.xml") if owner is not None else None
         if manifest is None or manifest.name in (None, package) or package in manifest.dependencies:
             continue
