@@ -169,12 +169,15 @@ class Placer:
         return self._attribute(site, change.attribute, old, change.value, affected)
 
     def _insert_child(self, site: _Site, change: InsertChild) -> Spot:
-        start, tag_end, end = site.source.spans[site.element]
+        span = site.source.span(site.element)
+        if span is None:
+            raise Unplaceable(f"the element at {self.where(site)} cannot be read")
+        start, tag_end, end = span
         text = site.source.text
         if text[tag_end - 2:tag_end] == "/>":
             raise Unplaceable(f"<{_tag(site.source, start)}> at {self.where(site)} has no children to write it among")
         own = _indentation(text, start)
-        child = site.source.starts[site.element + 1] if site.element + 1 < len(site.source.starts) else None
+        child = site.source.start(site.element + 1)
         inner = _indentation(text, child) if child is not None and child < end and "\n" in text[tag_end:child] else own + "  "
         return Spot(Edit(site.file, tag_end, tag_end, "\n" + inner + change.markup), frozenset((at, CHILD) for at in site.instances))
 

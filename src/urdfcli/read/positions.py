@@ -221,6 +221,29 @@ class Text:
             return []
         return [(a, b, c) for a, b, c in found]
 
+    def span(self, index: int) -> tuple[int, int, int] | None:
+        """``spans[index]`` alone, found by scanning the text from the element's ``<``
+        to its end tag only (a fix inserted into one element of a large model need not
+        work out every element's); None when the text there is not well-formed."""
+        start = self.start(index)
+        if start is None:
+            return None
+        tags = self._tags(start)
+        first = next(tags, None)
+        if first is None or first.start() != start or self.text[start + 1] == "/":
+            return None
+        if first.group(1):  # <tag/>
+            return start, first.end(), first.end()
+        depth = 1
+        for match in tags:
+            if self.text[match.start() + 1] != "/":
+                depth += not match.group(1)
+                continue
+            depth -= 1
+            if depth == 0:
+                return start, first.end(), match.end()
+        return None
+
     def position(self, offset: int) -> tuple[int, int]:
         """1-based line and column (in characters) of an offset."""
         self._asked += 1
