@@ -17,7 +17,7 @@ from pathlib import Path
 from typing import NamedTuple
 
 from ..diagnostics import Diagnostic, Location
-from . import positions, xacro_warnings
+from . import positions
 from .expanded import ExpansionError, Origins
 from .packages import PackageIndex, PackageResolver
 from .files import STDIN_NAME, SourceFile, SourceFiles
@@ -280,6 +280,9 @@ def read_document(
         document.missing_argument = error.missing_argument
         return document, [Diagnostic(error.code, error.message, location, hint=error.hint)]
     document = Document(path, result.text.encode("utf-8"), file, True, result.text, result.includes, result.origins, files)
-    warnings = [xacro_warnings.warning(text, origin.location() if origin is not None else Location(shown), files) for text, origin in result.warnings]
-    return document, warnings
+    if not result.warnings:
+        return document, []
+    from . import xacro_warnings  # (only for an expansion xacro warned about: its words, fifteen patterns)
+
+    return document, [xacro_warnings.warning(text, origin.location() if origin is not None else Location(shown), files) for text, origin in result.warnings]
 

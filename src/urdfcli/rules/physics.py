@@ -371,9 +371,10 @@ def _tensor_verdict(tensor) -> tuple[str | None, tuple | None]:
     breaking the triangle), or (None, None) for a tensor a body can have."""
     if massprops.is_negligible(tensor):
         return "I004", None
-    if not massprops.is_positive_semidefinite(tensor):
-        return "I005", massprops.principal_moments(tensor)
-    broken = massprops.triangle_violation(tensor)
+    moments = massprops.principal_moments(tensor)  # worked out once for both questions
+    if not massprops.is_positive_semidefinite(tensor, moments=moments):
+        return "I005", moments
+    broken = massprops.triangle_violation(tensor, moments=moments)
     return ("I006", broken) if broken is not None else (None, None)
 
 
