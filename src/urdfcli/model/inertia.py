@@ -139,18 +139,24 @@ def shape_part(loaded: Loaded, shape: Shape) -> tuple[float, Vector, Matrix]:
 
 def primitive(geometry) -> tuple[float, Matrix]:
     """Volume and tensor per unit mass of a box, cylinder or sphere."""
+    _measurable(geometry)
     if geometry.kind == "box":
-        dims = geometry.size
-        if min(dims) <= 0:
-            raise GeometryUnknown("box size is not positive")
-        return massprops.box_volume(dims), massprops.box(1.0, dims)
+        return massprops.box_volume(geometry.size), massprops.box(1.0, geometry.size)
     if geometry.kind == "cylinder":
+        return massprops.cylinder_volume(geometry.radius, geometry.length), massprops.cylinder(1.0, geometry.radius, geometry.length)
+    return massprops.sphere_volume(geometry.radius), massprops.sphere(1.0, geometry.radius)
+
+
+def _measurable(geometry) -> None:
+    """Raises GeometryUnknown for a box, cylinder or sphere without size."""
+    if geometry.kind == "box":
+        if min(geometry.size) <= 0:
+            raise GeometryUnknown("box size is not positive")
+    elif geometry.kind == "cylinder":
         if geometry.radius <= 0 or geometry.length <= 0:
             raise GeometryUnknown("cylinder radius or length is not positive")
-        return massprops.cylinder_volume(geometry.radius, geometry.length), massprops.cylinder(1.0, geometry.radius, geometry.length)
-    if geometry.radius <= 0:
+    elif geometry.radius <= 0:
         raise GeometryUnknown("sphere radius is not positive")
-    return massprops.sphere_volume(geometry.radius), massprops.sphere(1.0, geometry.radius)
 
 
 def shape_bounds(loaded: Loaded, shape: Shape) -> tuple[Vector, Vector]:
@@ -160,17 +166,19 @@ def shape_bounds(loaded: Loaded, shape: Shape) -> tuple[Vector, Vector]:
     if geometry.kind == "mesh":
         low, high = mesh_properties(loaded, geometry.filename, tuple(geometry.scale))[3]
     else:
-        primitive(geometry)  # raises on a shape without size
+        _measurable(geometry)
         if geometry.kind == "box":
-            half = tuple(d / 2.0 for d in geometry.size)
+            x, y, z = geometry.size
+            high = (x / 2.0, y / 2.0, z / 2.0)
         elif geometry.kind == "cylinder":
-            half = (geometry.radius, geometry.radius, geometry.length / 2.0)
+            high = (geometry.radius, geometry.radius, geometry.length / 2.0)
         else:
-            half = (geometry.radius,) * 3
-        low, high = tuple(-h for h in half), half
-    if not any(shape.origin.rpy):  # not turned: moved only (most shapes; a tenth of the time)
-        xyz = shape.origin.xyz
-        return tuple(v + d for v, d in zip(low, xyz)), tuple(v + d for v, d in zip(high, xyz))  # type: ignore[return-value]
+            high = (geometry.radius,) * 3
+        low = (-high[0], -high[1], -high[2])
+    origin = shape.origin
+    if not any(origin.rpy):  # not turned: moved only (most shapes; a tenth of the time)
+        x, y, z = origin.xyz
+        return (low[0] + x, low[1] + y, low[2] + z), (high[0] + x, high[1] + y, high[2] + z)
     pose = massprops.transform(shape.origin.xyz, shape.origin.rpy)
     corners = [massprops.place(pose, (x, y, z)) for x in (low[0], high[0]) for y in (low[1], high[1]) for z in (low[2], high[2])]
     return tuple(min(c[i] for c in corners) for i in range(3)), tuple(max(c[i] for c in corners) for i in range(3))  # type: ignore[return-value]
@@ -185,13 +193,10 @@ def extent(loaded: Loaded, link: Link, shapes=None) -> tuple[Vector, Vector] | N
     if not shapes or _mis_scaled(loaded, shapes):
         return None
     try:
-        boxes = [shape_bounds(loaded, shape) for shape in shapes]
+        lows, highs = zip(*(shape_bounds(loaded, shape) for shape in shapes))
     except GeometryUnknown:
         return None
-    return (
-        tuple(min(b[0][i] for b in boxes) for i in range(3)),  # type: ignore[return-value]
-        tuple(max(b[1][i] for b in boxes) for i in range(3)),
-    )
+    return tuple(map(min, zip(*lows))), tuple(map(max, zip(*highs)))  # type: ignore[return-value]
 
 
 def _mis_scaled(loaded: Loaded, shapes) -> bool:

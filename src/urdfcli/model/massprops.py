@@ -193,14 +193,20 @@ def rotate(tensor: Matrix, r: Matrix) -> Matrix:
 
 def parallel_axis(tensor: Matrix, mass: float, offset: Vector) -> Matrix:
     """Move a tensor about the centre of mass to a point ``offset`` away: I + m(|r|²E − r rᵀ)."""
-    r2 = sum(c * c for c in offset)
-    return tuple(
-        tuple(tensor[i][j] + mass * ((r2 if i == j else 0.0) - offset[i] * offset[j]) for j in range(3)) for i in range(3)
-    )  # type: ignore[return-value]
+    x, y, z = offset
+    r2 = 0 + x * x + y * y + z * z  # (as sum() adds: from the integer 0)
+    (a00, a01, a02), (a10, a11, a12), (a20, a21, a22) = tensor
+    return (
+        (a00 + mass * (r2 - x * x), a01 + mass * (0.0 - x * y), a02 + mass * (0.0 - x * z)),
+        (a10 + mass * (0.0 - y * x), a11 + mass * (r2 - y * y), a12 + mass * (0.0 - y * z)),
+        (a20 + mass * (0.0 - z * x), a21 + mass * (0.0 - z * y), a22 + mass * (r2 - z * z)),
+    )
 
 
 def add(a: Matrix, b: Matrix) -> Matrix:
-    return tuple(tuple(a[i][j] + b[i][j] for j in range(3)) for i in range(3))  # type: ignore[return-value]
+    (a00, a01, a02), (a10, a11, a12), (a20, a21, a22) = a
+    (b00, b01, b02), (b10, b11, b12), (b20, b21, b22) = b
+    return ((a00 + b00, a01 + b01, a02 + b02), (a10 + b10, a11 + b11, a12 + b12), (a20 + b20, a21 + b21, a22 + b22))
 
 
 def combine(parts: Iterable[tuple[float, Vector, Matrix]]) -> tuple[float, Vector, Matrix]:
@@ -223,7 +229,11 @@ def relative_difference(a: Matrix, b: Matrix) -> float:
     scale = max(scale_of(a), scale_of(b))
     if scale == 0:
         return 0.0
-    return max(abs(a[i][j] - b[i][j]) for i in range(3) for j in range(3)) / scale
+    (a00, a01, a02), (a10, a11, a12), (a20, a21, a22) = a
+    (b00, b01, b02), (b10, b11, b12), (b20, b21, b22) = b
+    return max(
+        abs(a00 - b00), abs(a01 - b01), abs(a02 - b02), abs(a10 - b10), abs(a11 - b11), abs(a12 - b12), abs(a20 - b20), abs(a21 - b21), abs(a22 - b22)
+    ) / scale
 
 
 def is_identity(m: Matrix) -> bool:
@@ -234,7 +244,7 @@ def is_identity(m: Matrix) -> bool:
 def tidy(m: Matrix, rel_tol: float = 1e-5) -> Matrix:
     """Zero the elements that are rounding noise next to the largest (e.g. cos(1.5708))."""
     floor = rel_tol * scale_of(m)
-    return tuple(tuple(0.0 if abs(v) <= floor else v for v in row) for row in m)  # type: ignore[return-value]
+    return tuple(tuple([0.0 if abs(v) <= floor else v for v in row]) for row in m)  # type: ignore[return-value]
 
 
 def normalised(m: Matrix) -> Matrix:

@@ -591,8 +591,9 @@ def verdict(loaded: Loaded, link: Link, tolerance: float = massprops.TOLERANCE, 
     if found is None or found.expected is None or massprops.is_zero(found.expected):
         return None
     source = found.implied.source
-    turned = axes_apart(found.declared, found.expected) if massprops.moments_difference(found.declared, found.expected) <= tolerance else 0.0
-    if found.difference > 2 * tolerance and turned > TURNED:
+    apart = found.difference > 2 * tolerance  # else no axes are wrong: most tensors, not compared further
+    turned = axes_apart(found.declared, found.expected) if apart and massprops.moments_difference(found.declared, found.expected) <= tolerance else 0.0
+    if turned > TURNED:
         negated = massprops.negated_products(found.declared)
         if massprops.relative_difference(negated, found.expected) <= tolerance:  # the sign of its products only
             return Verdict(
@@ -607,8 +608,8 @@ def verdict(loaded: Loaded, link: Link, tolerance: float = massprops.TOLERANCE, 
             f"the {source} gives {tensor_text(found.expected, found.declared)}",
             "the axes are swapped or rotated: `urdfcli inertia --suggest` prints the tensor on the geometry's axes",
         )
-    swapped = _long_axis_swapped(found.declared, found.expected)
-    if swapped is not None and found.difference > 2 * tolerance:
+    swapped = _long_axis_swapped(found.declared, found.expected) if apart else None
+    if swapped is not None:
         axis, about, largest = swapped
         return Verdict(
             "rotated", 90.0,
