@@ -154,6 +154,8 @@ def diagonal(x: float, y: float, z: float) -> Matrix:
 def rotation(rpy: Vector) -> Matrix:
     """URDF fixed-axis roll-pitch-yaw: R = Rz(yaw) Ry(pitch) Rx(roll)."""
     r, p, y = rpy
+    if not (r or p or y):
+        return IDENTITY  # most frames are not turned
     cr, sr, cp, sp, cy, sy = math.cos(r), math.sin(r), math.cos(p), math.sin(p), math.cos(y), math.sin(y)
     return (
         (cy * cp, cy * sp * sr - sy * cr, cy * sp * cr + sy * sr),
@@ -187,7 +189,10 @@ def apply(a: Matrix, v: Vector) -> Vector:
 
 
 def rotate(tensor: Matrix, r: Matrix) -> Matrix:
-    """The tensor expressed in the frame where the body's axes are rotated by r: R I Rᵀ."""
+    """The tensor expressed in the frame where the body's axes are rotated by r: R I Rᵀ
+    (the tensor itself when r is the identity, as most frames' rotation is)."""
+    if r == IDENTITY:
+        return tensor
     return multiply(multiply(r, tensor), transpose(r))
 
 
@@ -216,12 +221,14 @@ def combine(parts: Iterable[tuple[float, Vector, Matrix]]) -> tuple[float, Vecto
     mass = sum(m for m, _, _ in parts)
     if mass <= 0:
         return 0.0, (0.0, 0.0, 0.0), ZERO
-    com = tuple(sum(m * c[i] for m, c, _ in parts) / mass for i in range(3))
+    x = y = z = 0  # summed as sum() would
+    for m, c, _ in parts:
+        x, y, z = x + m * c[0], y + m * c[1], z + m * c[2]
+    com = (x / mass, y / mass, z / mass)
     total = ZERO
     for m, c, tensor in parts:
-        offset = tuple(c[i] - com[i] for i in range(3))
-        total = add(total, parallel_axis(tensor, m, offset))  # type: ignore[arg-type]
-    return mass, com, total  # type: ignore[return-value]
+        total = add(total, parallel_axis(tensor, m, (c[0] - com[0], c[1] - com[1], c[2] - com[2])))
+    return mass, com, total
 
 
 def relative_difference(a: Matrix, b: Matrix) -> float:

@@ -359,7 +359,7 @@ def _link_box(loaded, shapes, skipped: set[int]):
             low, high = shape_bounds(loaded, shape)
         except GeometryUnknown:
             return UNMEASURED
-        if max(h - lo for lo, h in zip(low, high)) > PLACEHOLDER:
+        if high[0] - low[0] > PLACEHOLDER or high[1] - low[1] > PLACEHOLDER or high[2] - low[2] > PLACEHOLDER:
             lows.append(low)
             highs.append(high)
     if not lows:
