@@ -294,10 +294,11 @@ class UrdfServer(LanguageServer):
         before = self.contributions.get(path)
         found = {file: [self.diagnostic(m) for m in marks] for file, marks in checked.marks.items()}
         self.contributions[path] = Contribution(found, checked.reads, checked.models, checked.library)
-        self.navigator.keep(path, checked.run, texts)
         self.pending |= {path, *found, *(before.found if before else ())}
         self.checked.add(path)
         self.publish_ready()
+        # after publishing: the models it lets go of are freed then (a large model's take 15 ms)
+        self.navigator.keep(path, checked.run, texts)
 
     def publish_ready(self) -> None:
         """Publish each pending file whose every contributing check is current: when
