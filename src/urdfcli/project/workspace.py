@@ -258,7 +258,7 @@ class Index:
                 stamp = 0
             listed = self._listed.get((root, recursive))
             if listed is None or listed[0] != stamp:
-                listed = self._listed[(root, recursive)] = (stamp, [file.resolve() for file in source_files(root, recursive)])
+                listed = self._listed[(root, recursive)] = (stamp, [self.packages.real_path(file) for file in source_files(root, recursive)])
             self.scanned[root] = listed[1]
             files += listed[1]
         return list(dict.fromkeys(files))
