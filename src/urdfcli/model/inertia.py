@@ -84,8 +84,10 @@ def is_frame(link: Link) -> bool:
     inertial = link.inertial
     if inertial is None:
         return True
+    if inertial.mass != 0:
+        return False
     tensor = declared_tensor(link)
-    return inertial.mass == 0 and (tensor is None or massprops.is_zero(tensor))
+    return tensor is None or massprops.is_zero(tensor)
 
 
 # -- implied by geometry ---------------------------------------------------------------
@@ -306,26 +308,38 @@ def reach(loaded: Loaded, link: Link) -> Reach | None:
     # when it does not (or when the centre lies outside it, where the bound is not monotone)
     box = extent(loaded, link, implied(loaded, link).shapes)
     first = _reach(inertial, box)
-    inside = box is not None and all(lo <= c <= h for lo, h, c in zip(*box, inertial.origin.xyz))
-    if first is not None and inside and declared is not None and all(declared.tensor[i][i] <= OVERREACH * first.bounds[i] for i in range(3)):
+    if first is not None and declared is not None and _inside(inertial.origin.xyz, box) and _within(declared.tensor, first.bounds):
         return first
     return _reach(inertial, extent(loaded, link))
+
+
+def _inside(point: Vector, box: tuple[Vector, Vector]) -> bool:
+    (x0, y0, z0), (x1, y1, z1) = box
+    x, y, z = point
+    return x0 <= x <= x1 and y0 <= y <= y1 and z0 <= z <= z1
+
+
+def _within(tensor: Matrix, bounds: Vector) -> bool:
+    """Whether each moment is within OVERREACH of its bound."""
+    return tensor[0][0] <= OVERREACH * bounds[0] and tensor[1][1] <= OVERREACH * bounds[1] and tensor[2][2] <= OVERREACH * bounds[2]
 
 
 def _reach(inertial, box) -> Reach | None:
     if box is None:
         return None
     low, high = box
-    sides = tuple(h - lo for lo, h in zip(low, high))
+    sides = (high[0] - low[0], high[1] - low[1], high[2] - low[2])
     volume = sides[0] * sides[1] * sides[2]
     if volume <= 0 or inertial.mass / volume > DENSEST:
         return None
-    spread = []
-    for lo, h, c in zip(low, high, inertial.origin.xyz):
-        spread.append((h - c) * (c - lo) if lo <= c <= h else max(h - c, c - lo) ** 2)
-    x, y, z = spread
+    x, y, z = (_spread(lo, h, c) for lo, h, c in zip(low, high, inertial.origin.xyz))
     m = inertial.mass
-    return Reach((m * (y + z), m * (x + z), m * (x + y)), sides)  # type: ignore[arg-type]
+    return Reach((m * (y + z), m * (x + z), m * (x + y)), sides)
+
+
+def _spread(lo: float, h: float, c: float) -> float:
+    """The most variance along one axis of a mass held in [lo, h] with its mean at c."""
+    return (h - c) * (c - lo) if lo <= c <= h else max(h - c, c - lo) ** 2
 
 
 # -- the whole robot -------------------------------------------------------------------

@@ -251,7 +251,12 @@ def is_identity(m: Matrix) -> bool:
 def tidy(m: Matrix, rel_tol: float = 1e-5) -> Matrix:
     """Zero the elements that are rounding noise next to the largest (e.g. cos(1.5708))."""
     floor = rel_tol * scale_of(m)
-    return tuple(tuple([0.0 if abs(v) <= floor else v for v in row]) for row in m)  # type: ignore[return-value]
+    (a, b, c), (d, e, f), (g, h, i) = m
+    return (
+        (0.0 if abs(a) <= floor else a, 0.0 if abs(b) <= floor else b, 0.0 if abs(c) <= floor else c),
+        (0.0 if abs(d) <= floor else d, 0.0 if abs(e) <= floor else e, 0.0 if abs(f) <= floor else f),
+        (0.0 if abs(g) <= floor else g, 0.0 if abs(h) <= floor else h, 0.0 if abs(i) <= floor else i),
+    )
 
 
 def normalised(m: Matrix) -> Matrix:
@@ -280,7 +285,8 @@ def _cross(a: Vector, b: Vector) -> Vector:
 
 
 def scaled(m: Matrix, factor: float) -> Matrix:
-    return tuple(tuple(v * factor for v in row) for row in m)  # type: ignore[return-value]
+    (a, b, c), (d, e, f), (g, h, i) = m
+    return ((a * factor, b * factor, c * factor), (d * factor, e * factor, f * factor), (g * factor, h * factor, i * factor))
 
 
 def moments_difference(a: Matrix, b: Matrix) -> float:

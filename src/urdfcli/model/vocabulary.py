@@ -170,7 +170,7 @@ def unknown_markup(top: Element, index: Callable[[Element], int]) -> Iterator[Un
         if not KNOWN_ATTRIBUTES[tag].issuperset(element.keys()):  # most elements: decided here
             yield from unknown_attributes(element, index(element), tag)
         children = KNOWN_CHILDREN.get(tag)
-        if children is None:
+        if children is None or not len(element):  # (most elements hold none: no loop set up for them)
             continue
         walked = WALKED[tag]
         inside = []

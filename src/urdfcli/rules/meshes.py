@@ -378,7 +378,8 @@ def _placed(boxes):
 
 
 def _centre(box) -> tuple[float, ...]:
-    return tuple((lo + h) / 2 for lo, h in zip(*box))
+    (x0, y0, z0), (x1, y1, z1) = box
+    return ((x0 + x1) / 2, (y0 + y1) / 2, (z0 + z1) / 2)
 
 
 def _diagonal(box) -> float:
