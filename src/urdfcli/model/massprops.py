@@ -199,7 +199,7 @@ def rotate(tensor: Matrix, r: Matrix) -> Matrix:
 def parallel_axis(tensor: Matrix, mass: float, offset: Vector) -> Matrix:
     """Move a tensor about the centre of mass to a point ``offset`` away: I + m(|r|²E − r rᵀ)."""
     x, y, z = offset
-    r2 = 0 + x * x + y * y + z * z  # (as sum() adds: from the integer 0)
+    r2 = x * x + y * y + z * z
     (a00, a01, a02), (a10, a11, a12), (a20, a21, a22) = tensor
     return (
         (a00 + mass * (r2 - x * x), a01 + mass * (0.0 - x * y), a02 + mass * (0.0 - x * z)),
