@@ -157,6 +157,28 @@ def test_a_package_found_nowhere_and_not_declared_is_a_warning_too(packages):
     assert {d.message.split("'")[1] for d in diagnostics(model, "P001")} == {"no_such_package"}
 
 
+def test_its_own_package_named_by_its_folder_is_no_dependency(tmp_path):
+    """example-robot-data's layout: the folder example-robot-data holds the package named
+    example_robot_descriptions, and its URDFs write package://example-robot-data/. The URI
+    names the package itself (D005 says which name to write); declaring a dependency on
+    it, as a fix would, gives rosdep a key nobody provides."""
+    root = tmp_path / "example-robot-data"
+    write(root / "package.xml", package_xml("example_robot_descriptions"))
+    write(root / "robots" / "arm" / "meshes" / "arm.stl", "solid arm\nendsolid arm\n")
+    model = write(root / "robots" / "arm" / "urdf" / "arm.urdf", """\
+        <robot name="arm">
+          <link name="base_link"><visual><geometry><mesh filename="package://example-robot-data/robots/arm/meshes/arm.stl"/></geometry></visual></link>
+          <link name="tool"><visual><geometry><mesh filename="package://sick_description/meshes/mount.stl"/></geometry></visual></link>
+          <joint name="j" type="fixed"><parent link="base_link"/><child link="tool"/></joint>
+        </robot>
+        """)
+    assert {d.message.split("'")[1] for d in diagnostics(model, "P001")} == {"sick_description"}  # another package found nowhere still is one
+    assert any("example_robot_descriptions" in (d.hint or "") for d in diagnostics(model, "D005"))
+    run_cli("lint", "--fix", str(model))
+    manifest = (root / "package.xml").read_text()
+    assert "<exec_depend>sick_description</exec_depend>" in manifest and "example-robot-data" not in manifest
+
+
 def test_a_package_a_macro_parameter_names_is_judged_at_each_call_when_every_call_names_it(packages):
     model = model_using(packages, """
         <xacro:macro name="part" params="name pkg:=my_robot">

@@ -82,7 +82,10 @@ def dependency_undeclared(loaded, given) -> Iterator[Diagnostic]:
     workspace gives a plain name (or leaves the plain default), each is judged
     where it is written. Any other variable is left alone. A package that cannot
     be found here is flagged too (X004 and D005 say it is missing; this, that a
-    fresh workspace would not install it either).
+    fresh workspace would not install it either), unless it is the name of the
+    file's own package folder: that is the package itself, named by its folder
+    instead of its `<name>` (D005 says which to write), and declaring a
+    dependency on it would only make rosdep fail on a key nobody provides.
 
     ## Why is this bad?
     It works where the package happens to be installed, and breaks in a fresh
@@ -125,6 +128,8 @@ def dependency_undeclared(loaded, given) -> Iterator[Diagnostic]:
         folder = loaded.resolver.find(package)
         if folder is not None and folder.resolve() == owner:
             continue  # its own, under another name (-P NAME=DIR)
+        if folder is None and owner.name == package:
+            continue  # its own, by its folder's name: D005 says which name to write, no dependency is missing
         more = f" (and {others} more use{'s' if others > 1 else ''} in this file)" if others else ""
         name = shown(owner / "package.xml")
         yield Diagnostic(
