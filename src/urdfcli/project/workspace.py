@@ -519,10 +519,11 @@ def unread(aside: tuple[Aside, ...], results: list[Result]) -> list[Result]:
     number of files it may name."""
     if not aside:
         return []
-    read = {_resolved(file) for result in results for file in (result.path, *result.includes) if file != STDIN}
+    resolved = _resolver()
+    read = {resolved(file) for result in results for file in (result.path, *result.includes) if file != STDIN}
     found = []
     for file in aside:
-        if _resolved(file.path) in read:
+        if resolved(file.path) in read:
             continue
         includer, written = file.includers[0]
         if file.certain:
@@ -655,7 +656,7 @@ def assemble(
     session's, which asks the disk once a file.
     """
     models = [outcome(target) for entry in entries if not entry.library for target in entry.targets]
-    resolved = functools.cache(lambda file: real_path(Path(file)) if file != STDIN else Path(file))
+    resolved = _resolver(real_path)
     unused = _unused_in_all([m for m in models if isinstance(m, Result)], resolved)
     at_source = _found_at_sources([m for m in models if isinstance(m, Result)], generated_from, resolved)
     results, unreadable, shown_keys = [], [], set()
@@ -669,7 +670,7 @@ def assemble(
                 missing = result.errors and all(d.code in MISSING_CONTEXT for d in result.errors)
                 through = includers(entry.path) if missing else []
                 if through:  # a fragment: its errors alone are its missing context
-                    results.append(_library_result(entry._replace(targets=through, library=True), outcome, shown_keys, unreadable, fragment=True))
+                    results.append(_library_result(entry._replace(targets=through, library=True), outcome, shown_keys, unreadable, resolved, fragment=True))
                     break
                 if missing and any(d.code in UNDEFINED for d in result.errors) and _nameless(entry.path):  # a part nothing here includes
                     note = f"a fragment (its <robot> has no name) that no model includes: not checked ({result.errors[0].message})"
@@ -684,7 +685,7 @@ def assemble(
                 )
                 results.append(result.but(diagnostics=shown_now))
             continue
-        results.append(_library_result(entry, outcome, shown_keys, unreadable))
+        results.append(_library_result(entry, outcome, shown_keys, unreadable, resolved))
     return results, unreadable
 
 
@@ -748,8 +749,9 @@ def _unused_in_all(models: list[Result], resolved: Callable[[str], Path]) -> Cal
     return lambda diagnostic: diagnostic.code != UNUSED_SUPPRESSION.code or _place(diagnostic, resolved) in agreed
 
 
-def _resolved(file: str) -> Path:
-    return Path(file).resolve() if file != STDIN else Path(file)
+def _resolver(real_path: Callable[[Path], Path] = Path.resolve) -> Callable[[str], Path]:
+    """A file's real path (standard input stays as it is), each asked of ``real_path`` once."""
+    return functools.cache(lambda file: real_path(Path(file)) if file != STDIN else Path(file))
 
 
 def _place(diagnostic: Diagnostic, resolved: Callable[[str], Path]) -> tuple:
@@ -765,7 +767,9 @@ def _fresh(diagnostic: Diagnostic, in_own_file: bool, shown_keys: set) -> bool:
     return True
 
 
-def _library_result(entry: Entry, outcome, shown_keys: set, unreadable: list[Unreadable], fragment: bool = False) -> Result:
+def _library_result(
+    entry: Entry, outcome, shown_keys: set, unreadable: list[Unreadable], resolved: Callable[[str], Path], fragment: bool = False
+) -> Result:
     """A library's (or a fragment's) result: what the models that read it found in it, and
     what breaks them; a library no model could check is expanded on its own, a fragment never."""
     library = Path(entry.path).resolve()
@@ -797,7 +801,7 @@ def _library_result(entry: Entry, outcome, shown_keys: set, unreadable: list[Unr
             continue
         checked_through.append(target.label)
         used.append(model)
-    unused = _unused_in_all(used, functools.cache(_resolved))
+    unused = _unused_in_all(used, resolved)
     for model in used:  # mistakes written in the library, and whatever breaks a model that uses it
         found += [_through(d, model) for d in model.diagnostics if unused(d) and (_same(d.path, library) or d.severity is Severity.ERROR)]
     if not checked_through and fragment:
