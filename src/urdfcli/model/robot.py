@@ -369,18 +369,20 @@ class Reader:
         self.report("G002", f"unknown shape <{kind}> in <geometry>", shape, "URDF shapes are box, cylinder, sphere and mesh")
         return None
 
-    def repeated(self, element: "Element", tags: tuple[str, ...]) -> None:
-        """G004: a second child of one of ``tags``, which every parser leaves unread."""
-        seen: set[str] = set()
+    def first_children(self, element: "Element", repeated: tuple[str, ...]) -> "dict[str, Element]":
+        """The first child of each tag (see :func:`first_children`), and G004 for a second
+        child of one of ``repeated``, which every parser leaves unread: one pass over the children."""
+        found: dict[str, Element] = {}
         for child in element:
-            if child.tag in tags:
-                if child.tag in seen:
-                    self.report("G004", f"<{tag_name(element)}> holds a second <{child.tag}>; only the first is used", child)
-                seen.add(child.tag)
+            tag = child.tag
+            if tag not in found:
+                found[tag] = child
+            elif tag in repeated:
+                self.report("G004", f"<{tag_name(element)}> holds a second <{tag}>; only the first is used", child)
+        return found
 
     def shape(self, element: "Element", visual: bool) -> Shape:
-        self.repeated(element, ("origin", "geometry", "material") if visual else ("origin", "geometry"))
-        found = first_children(element)
+        found = self.first_children(element, ("origin", "geometry", "material") if visual else ("origin", "geometry"))
         origin = self.pose(found.get("origin"))
         geometry = self.geometry(element, found.get("geometry"))
         material_name = colour = material_at = None
@@ -394,8 +396,7 @@ class Reader:
         return Shape(self._index[element], origin, geometry, material_name, colour, self.at(found.get("origin")), material_at)
 
     def inertial(self, element: "Element") -> Inertial:
-        self.repeated(element, ("origin", "mass", "inertia"))
-        found = first_children(element)
+        found = self.first_children(element, ("origin", "mass", "inertia"))
         origin = self.pose(found.get("origin"))
         mass_element = found.get("mass")
         mass = None
@@ -642,7 +643,10 @@ IDENTITY = Pose()
 def first_children(element: "Element") -> "dict[str, Element]":
     """The first child of each tag, as ``element.find(tag)`` gives it, in one pass
     over the children (a model has millions of these lookups)."""
-    return {child.tag: child for child in reversed(element)}  # the first of a tag written last, and kept
+    found: dict[str, Element] = {}
+    for child in element:  # (forwards: lxml makes a list to go backwards)
+        found.setdefault(child.tag, child)
+    return found
 
 
 def _where(document: Document, at: int) -> str:

@@ -227,6 +227,8 @@ def is_xacro(file: SourceFile) -> bool:
     data = file.data
     ascii = positions.ascii_compatible(data)
     if ascii:
+        if b"$" not in data and b"xacro" not in data:
+            return False  # neither mark anywhere: no comment to take out
         data = _without_comments(data)
         if b"$" not in data and b"xacro" not in data:
             return False  # neither mark in markup written in ASCII: nothing to parse

@@ -32,6 +32,7 @@ from .xml import XmlError, parse
 SKIP_DIRS = {"build", "install", "log", "devel", "node_modules", "__pycache__", "site-packages"}
 MAX_SCAN_DEPTH = 8
 MAX_SCAN_DIRS = 20_000
+IGNORE_MARKS = ("CATKIN_IGNORE", "COLCON_IGNORE")  # a folder holding either is left out, with all below it
 
 
 class PackageError(ValueError):
@@ -71,12 +72,19 @@ class PackageIndex:
         self._real.clear()
 
     def real_path(self, path: Path) -> Path:
-        """``path.resolve()``, asked of the disk once (a dozen ``lstat`` calls): a run asks
-        it of each input for its package, for its xacro source and among the other inputs."""
+        """``path.resolve()``, asked of the disk once: a run asks it of each input for its
+        package, for its xacro source and among the other inputs, and of each file of the
+        folders it lists. Each folder is resolved once (a dozen ``lstat`` calls), a name
+        in it that is no link with one ``lstat``."""
         key = os.path.abspath(path)
         found = self._real.get(key)
         if found is None:
-            found = self._real[key] = Path(key).resolve()
+            parent = os.path.dirname(key)
+            if parent == key or os.path.islink(key):
+                found = Path(key).resolve()
+            else:  # a name that is no link is where its folder really is: one lstat, the folder resolved once
+                found = self.real_path(parent) / os.path.basename(key)
+            self._real[key] = found
         return found
 
     def package_name(self, manifest: Path) -> str | None:
@@ -191,11 +199,15 @@ def _walk(root: Path, package_name) -> Iterator[tuple[str, Path]]:
             if name:
                 yield name, folder
             continue  # ROS packages do not nest
-        if depth >= MAX_SCAN_DEPTH or (folder / "CATKIN_IGNORE").exists() or (folder / "COLCON_IGNORE").exists():
+        if depth >= MAX_SCAN_DEPTH:
             continue
         try:
+            with os.scandir(folder) as listing:  # (the entries know their type: no stat for each file)
+                entries = list(listing)
+            if any(entry.name in IGNORE_MARKS and os.path.exists(entry.path) for entry in entries):
+                continue
             children = sorted(
-                (p for p in folder.iterdir() if p.is_dir() and not p.name.startswith(".") and p.name not in SKIP_DIRS),
+                (Path(entry.path) for entry in entries if not entry.name.startswith(".") and entry.name not in SKIP_DIRS and entry.is_dir()),
                 reverse=True,
             )
         except OSError:
