@@ -37,7 +37,9 @@ Models are written under ``benchmarks/generated/``. Every measurement is a
 separate process with its output discarded; the two commands of a comparison
 run in turn, and a ratio is the median of urdfcli's runs over the median of the
 other's (wall time; memory is peak resident set size, from ``wait4``, which
-includes a command's children). Targets are reported, never asserted.
+includes a command's children, as does the processor time shown beside each
+time: user and system, which the machine's load changes less than the wall
+time). Targets are reported, never asserted.
 """
 
 from __future__ import annotations
@@ -90,10 +92,11 @@ class Measure:
     seconds: float
     mib: float
     status: int
+    cpu: float = 0.0  # processor time (user and system, its children included): the load changes it less than the wall time
     before: Measure | None = None  # the same command at the baseline revision, when one is given
 
     def __str__(self) -> str:
-        return f"{_seconds(self.seconds)}, {self.mib:.0f} MiB"
+        return f"{_seconds(self.seconds)} (processor {_seconds(self.cpu)}), {self.mib:.0f} MiB"
 
 
 class Command(list):
@@ -106,29 +109,32 @@ def _seconds(value: float) -> str:
     return f"{value * 1000:.0f} ms" if value < 1 else f"{value:.2f} s"
 
 
-def _once(command: list[str]) -> tuple[float, float, int]:
+def _once(command: list[str]) -> tuple[float, float, int, float]:
     start = time.perf_counter()
     process = subprocess.Popen(command, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
     _, wait_status, usage = os.wait4(process.pid, 0)
     seconds = time.perf_counter() - start
     process.returncode = os.waitstatus_to_exitcode(wait_status)
-    return seconds, usage.ru_maxrss / 1024, process.returncode  # ru_maxrss: KiB on Linux
+    return seconds, usage.ru_maxrss / 1024, process.returncode, usage.ru_utime + usage.ru_stime  # ru_maxrss: KiB on Linux
 
 
 def measure(*commands: list[str], runs: int) -> list[Measure]:
-    """Median wall time and peak RSS of each command, the commands run in turn ``runs``
+    """Median wall time, processor time and peak RSS of each command, the commands run in turn ``runs``
     times; an urdfcli command's twin at the baseline revision runs in turn with them, and
     its figures are the ``before`` of the command's."""
     twins = [getattr(command, "twin", None) for command in commands]
     run = [*commands, *(twin for twin in twins if twin is not None)]
     for command in commands:
         print("  " + " ".join(Path(p).name if os.sep in p else p for p in command[:4]) + (" ..." if len(command) > 4 else ""), flush=True)
-    samples: list[list[tuple[float, float, int]]] = [[] for _ in run]
+    samples: list[list[tuple[float, float, int, float]]] = [[] for _ in run]
     for _ in range(runs):
         for index, command in enumerate(run):
             samples[index].append(_once(command))
     found = [
-        Measure(statistics.median(s for s, _, _ in runs_of), statistics.median(m for _, m, _ in runs_of), max(c for _, _, c in runs_of))
+        Measure(
+            statistics.median(s for s, _, _, _ in runs_of), statistics.median(m for _, m, _, _ in runs_of), max(c for _, _, c, _ in runs_of),
+            statistics.median(p for _, _, _, p in runs_of),
+        )
         for runs_of in samples
     ]
     ours, befores = found[: len(commands)], iter(found[len(commands):])

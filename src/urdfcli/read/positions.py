@@ -22,6 +22,8 @@ from functools import cached_property
 
 _AFTER_NAME = frozenset(" \t\n/>")
 _ELEMENT = re.compile(r"<(?![!?/])")
+_START = re.Match.start
+_MARKUP = re.compile(r"<[!?]")  # where a comment, CDATA section, processing instruction or DOCTYPE may begin
 _DOCTYPE = re.compile(r"<!DOCTYPE(?:[^\[>]|\[.*?\])*>", re.DOTALL)  # its internal subset in brackets
 # A start tag (name, attributes with quoted values that may hold '>', then '/>' or '>') or an end tag.
 _TAG = re.compile(r"""<(?:/[^>]*>|[^\s/>!?](?:[^>"'/]|/(?!>)|"[^"]*"|'[^']*')*(/?)>)""")
@@ -102,17 +104,9 @@ class Text:
         """Comments, CDATA, processing instructions and DOCTYPE that hold a '<' of their own."""
         text = self.text
         holes = []
-        # the next '<!' and '<?', each searched again only once passed (-1: none left)
-        marks = {"<!": text.find("<!"), "<?": text.find("<?")}
         at = 0
-        while True:
-            for mark, found in marks.items():
-                if 0 <= found < at:
-                    marks[mark] = text.find(mark, at)
-            pending = [found for found in marks.values() if found >= 0]
-            if not pending:
-                return holes
-            at = min(pending)
+        while (found := _MARKUP.search(text, at)) is not None:  # the next '<!' or '<?'
+            at = found.start()
             end = _markup_end(text, at)
             if end is None:  # not closed: no markup to step over
                 at += 2
@@ -120,22 +114,28 @@ class Text:
             if text.find("<", at + 1, end) >= 0:
                 holes.append((at, end))
             at = end
+        return holes
 
     def _between_holes(self, pattern: re.Pattern, begin: int = 0, end: int | None = None) -> Iterator[re.Match]:
-        """The matches of ``pattern`` between ``begin`` and ``end``, outside the holes."""
+        """The matches of ``pattern`` between ``begin`` and ``end``, outside the holes
+        (chained in C: a model's element starts are many)."""
+        return itertools.chain.from_iterable(pattern.finditer(self.text, a, b) for a, b in self._outside_holes(begin, end))
+
+    def _outside_holes(self, begin: int, end: int | None) -> Iterator[tuple[int, int]]:
+        """The stretches of text between ``begin`` and ``end`` that no hole covers."""
         end = len(self.text) if end is None else end
         for hole_start, hole_end in self._holes:
             if hole_start >= end:
                 break
             if hole_end > begin:
-                yield from pattern.finditer(self.text, begin, hole_start)
+                yield begin, hole_start
                 begin = hole_end
-        yield from pattern.finditer(self.text, begin, end)
+        yield begin, end
 
     @cached_property
     def starts(self) -> list[int]:
         """The offset of every element's ``<``, in document order."""
-        return [match.start() for match in self._between_holes(_ELEMENT)]
+        return list(map(_START, self._between_holes(_ELEMENT)))
 
     def start(self, index: int, tag: str | None = None) -> int | None:
         """The offset of the ``<`` of the element ``index`` (in document order), checked
@@ -143,10 +143,10 @@ class Text:
         a diagnostic near the top of a large model costs nearly nothing."""
         found = self._found
         while len(found) <= index:
-            batch = [m.start() for m in itertools.islice(self._scan, max(1024, index + 1 - len(found)))]
-            if not batch:
+            known = len(found)
+            found.extend(map(_START, itertools.islice(self._scan, max(1024, index + 1 - known))))
+            if len(found) == known:
                 return None
-            found.extend(batch)
         start = found[index]
         if tag is None:
             return start
