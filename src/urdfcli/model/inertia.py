@@ -195,6 +195,8 @@ def extent(loaded: Loaded, link: Link, shapes=None) -> tuple[Vector, Vector] | N
     if not shapes or _mis_scaled(loaded, shapes):
         return None
     try:
+        if len(shapes) == 1:  # (most links: its own box)
+            return shape_bounds(loaded, shapes[0])
         lows, highs = zip(*(shape_bounds(loaded, shape) for shape in shapes))
     except GeometryUnknown:
         return None
@@ -293,8 +295,9 @@ class Reach(NamedTuple):
     sides: Vector
 
 
-def reach(loaded: Loaded, link: Link) -> Reach | None:
-    """None when the link has no measurable geometry, or geometry too small to hold its mass.
+def reach(loaded: Loaded, link: Link, declared: Body | None) -> Reach | None:
+    """None when the link has no measurable geometry, or geometry too small to hold its mass;
+    ``declared`` is the link's :func:`declared_body`.
 
     Along each axis, a mass held in [lo, hi] with its mean at c has a variance of at most
     (hi - c)(c - lo) (the Bhatia-Davis inequality); a moment is the mass times the sum of
@@ -302,7 +305,6 @@ def reach(loaded: Loaded, link: Link) -> Reach | None:
     inertial = link.inertial
     if inertial is None or not (inertial.mass or 0) > 0:
         return None
-    declared = declared_body(link)
     # the shapes already measured first: a box that holds the tensor proves nothing, and a
     # larger one around the same centre would not either, so the other meshes are read only
     # when it does not (or when the centre lies outside it, where the bound is not monotone)

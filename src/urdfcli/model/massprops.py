@@ -83,7 +83,9 @@ def is_negligible(m: Matrix) -> bool:
 
 
 def scale_of(m: Matrix) -> float:
-    return max(map(abs, (*m[0], *m[1], *m[2])))
+    """The largest element's size (written out: asked about seven times per link by the inertia rules)."""
+    (a, b, c), (d, e, f), (g, h, i) = m
+    return max(abs(a), abs(b), abs(c), abs(d), abs(e), abs(f), abs(g), abs(h), abs(i))
 
 
 def is_zero(m: Matrix) -> bool:

@@ -16,9 +16,10 @@ from ..model import massprops
 from ..model.inertia import OVERREACH, assess, axes_apart, declared_body, reach
 from ..model.massprops import number, tensor_text
 from ..model.numbers import format_number
+from ..model.units import mis_scaled
 from ..read.memo import once
 from .base import INFO, UNSAFE, WARNING, Kind, Option, Remedy, RuleSet, check
-from .physics import absorbed, has_invalid_tensor
+from .physics import absorbed, invalid_tensors
 
 if TYPE_CHECKING:
     from ..model.load import Loaded
@@ -55,6 +56,34 @@ def _declaring(loaded):
 
 def _assess(loaded, link, options):
     return model.assess(loaded, link, options.get("density") or None)
+
+
+def written_alike(loaded) -> dict[str, tuple]:
+    """Each declaring link's name -> what the geometry rules judge it by, as it was read:
+    its inertial's values and its shapes' (each value the very object the reader made of
+    its text: links that write the same texts share them) and which meshes are in a wrong
+    unit. Links alike in all of it are judged once: the fingers of a hand, the wheels of
+    a base, a generated chain (a third of the links of the published models)."""
+    return once(loaded, _written_alike)
+
+
+def _written_alike(loaded) -> dict[str, tuple]:
+    skipped = mis_scaled(loaded)
+    found = {}
+    for link in _declaring(loaded):
+        inertial = link.inertial
+        found[link.name] = (
+            inertial.mass, id(inertial.origin), id(inertial.inertia),
+            tuple(_shape_as_read(shape, skipped) for shape in link.visuals), tuple(_shape_as_read(shape, skipped) for shape in link.collisions),
+        )
+    return found
+
+
+def _shape_as_read(shape, skipped: set[int]) -> tuple | None:
+    geometry = shape.geometry
+    if geometry is None:
+        return None
+    return (id(shape.origin), geometry.kind, id(geometry.size), id(geometry.radius), id(geometry.length), geometry.filename, id(geometry.scale), shape.at in skipped)
 
 
 def _implies(found) -> str | None:
@@ -203,12 +232,13 @@ def _groups_within(loaded, tolerance: float) -> list:
 
 def _placeholder_groups(loaded, options) -> list:
     groups = defaultdict(list)
+    invalid = _invalid(loaded)
     for link in _declaring(loaded):
         tensor = model.declared_tensor(link)
         # light frames lost in their bodies draw nothing; the identity is I007's
         if (
             not absorbed(loaded, link) and not massprops.is_negligible(tensor)
-            and not massprops.is_identity(tensor) and not has_invalid_tensor(loaded, link)  # I007, I005 and I006 say it
+            and not massprops.is_identity(tensor) and link.name not in invalid  # I007, I005 and I006 say it
         ):
             groups[tensor].append(link)
     found = []
@@ -384,21 +414,40 @@ def geometry_mismatch(loaded, given):
     </link>
     ```
     """
+    options = given.options
+    reported = _reported_elsewhere(loaded, options)
+    alike = written_alike(loaded)
+    judged: dict[tuple, Verdict | None] = {}  # links written alike, and alike lost in their bodies or not: one verdict
     for link in _declaring(loaded):
-        found = _verdict(loaded, link, given.options)
+        if link.name in reported:
+            continue  # I005, I006 or I008 says what is wrong with its tensor
+        light = absorbed(loaded, link)
+        key = (alike[link.name], light)
+        if key not in judged:
+            judged[key] = _verdict(loaded, link, options)
+        found = judged[key]
         if found is not None:
-            severity = INFO if absorbed(loaded, link) else None  # turned axes of a link lost in its body: a note
+            severity = INFO if light else None  # turned axes of a link lost in its body: a note
             yield loaded.diagnostic("I009", f"inertia of link '{link.name}': {found.message}", link.inertial.inertia_at, found.hint, subjects=(link.name,))._replace(severity=severity)
 
 
-def _verdict(loaded, link, options):
-    """:func:`urdfcli.inertia.verdict`, unless another rule already reports the link's tensor."""
-    tensor = model.declared_tensor(link)
-    if massprops.is_identity(tensor) or has_invalid_tensor(loaded, link) or any(link in wrong for _, wrong, _ in placeholder_groups(loaded, options)):
+def _verdict(loaded, link, options) -> Verdict | None:
+    """:func:`verdict`, unless I007 (the identity) or I010 (turned as its shapes are) says what is wrong with the tensor."""
+    if massprops.is_identity(model.declared_tensor(link)) or _rotated_with_shapes(loaded, link, options) is not None:
         return None
-    if _rotated_with_shapes(loaded, link, options) is not None:
-        return None  # I010 explains it
     return verdict(loaded, link, options["tolerance"], options.get("density") or None)
+
+
+def _reported_elsewhere(loaded, options) -> set[str]:
+    """The links whose tensor I005, I006 (no body can have it) or I008 (a placeholder shared
+    by links it does not fit) report: gathered once, not looked for in their lists link by link."""
+    return _invalid(loaded).union(link.name for _, wrong, _ in placeholder_groups(loaded, options) for link in wrong)
+
+
+def _invalid(loaded) -> set[str]:
+    """The links whose tensor no body can have (I005, I006)."""
+    invalid = invalid_tensors(loaded)
+    return {link.name for code in ("I005", "I006") for link, _ in invalid[code]}
 
 
 def _rotated_with_shapes(loaded, link, options):
@@ -454,8 +503,13 @@ def frame_rotated(loaded, given):
     </link>
     ```
     """
+    alike = written_alike(loaded)
+    judged: dict[tuple, tuple | None] = {}  # links written alike: one answer
     for link in _declaring(loaded):
-        match = _rotated_with_shapes(loaded, link, given.options)
+        key = alike[link.name]
+        if key not in judged:
+            judged[key] = _rotated_with_shapes(loaded, link, given.options)
+        match = judged[key]
         if match is None:
             continue
         found, (rpy, left) = match
@@ -572,7 +626,7 @@ def verdict(loaded: Loaded, link: Link, tolerance: float = massprops.TOLERANCE, 
     if declared is None or massprops.is_negligible(declared.tensor):
         return None
     light = absorbed(loaded, link)  # lost in its body: only a rotation, which a formula got wrong, is worth saying
-    limits = reach(loaded, link) if not light else None
+    limits = reach(loaded, link, declared) if not light else None
     if limits is not None:
         worst = max(range(3), key=lambda i: declared.tensor[i][i] / limits.bounds[i] if limits.bounds[i] > 0 else math.inf)
         moment, most = declared.tensor[worst][worst], limits.bounds[worst]

@@ -362,8 +362,8 @@ def _link_box(loaded, shapes, skipped: set[int]):
         if high[0] - low[0] > PLACEHOLDER or high[1] - low[1] > PLACEHOLDER or high[2] - low[2] > PLACEHOLDER:
             lows.append(low)
             highs.append(high)
-    if not lows:
-        return None
+    if len(lows) < 2:  # (most links: none, or one shape's own box)
+        return (lows[0], highs[0]) if lows else None
     return tuple(map(min, zip(*lows))), tuple(map(max, zip(*highs)))
 
 

@@ -376,8 +376,3 @@ def _tensor_verdict(tensor) -> tuple[str | None, tuple | None]:
         return "I005", moments
     broken = massprops.triangle_violation(tensor, moments=moments)
     return ("I006", broken) if broken is not None else (None, None)
-
-
-def has_invalid_tensor(loaded, link) -> bool:
-    invalid = invalid_tensors(loaded)
-    return any(link is found for code in ("I005", "I006") for found, _ in invalid[code])
