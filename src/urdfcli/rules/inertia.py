@@ -242,8 +242,9 @@ def _placeholder_groups(loaded, options) -> list:
         ):
             groups[tensor].append(link)
     found = []
+    signatures = geometry_signatures(loaded)
     for tensor, links in groups.items():
-        if len(links) < 2 or len({geometry_signature(link) for link in links}) == 1:
+        if len(links) < 2 or len({signatures[link.name] for link in links}) == 1:
             continue  # one link, or copies of one part: same geometry and tensor (I012 compares their masses)
         assessed = {link.name: _assess(loaded, link, options) for link in links}
         sizes = [massprops.scale_of(a.expected) for a in assessed.values() if a is not None and a.expected is not None]
@@ -276,6 +277,16 @@ def geometry_signature(link) -> tuple:
     finger, four wheels) have the same."""
     shapes = [s for s in link.collisions if s.geometry is not None] or [s for s in link.visuals if s.geometry is not None]
     return tuple(sorted((g.kind, g.filename or "", g.scale, g.size or (), g.radius or 0.0, g.length or 0.0) for g in (s.geometry for s in shapes)))
+
+
+def geometry_signatures(loaded) -> dict[str, tuple]:
+    """Each link's :func:`geometry_signature` (of the links that declare a tensor), worked
+    out once: I008 and I012 compare them."""
+    return once(loaded, _geometry_signatures)
+
+
+def _geometry_signatures(loaded) -> dict[str, tuple]:
+    return {link.name: geometry_signature(link) for link in _declaring(loaded)}
 
 
 MIRROR_RATIO = 5.0  # copies of one part this many times apart in mass: one mass is wrong
@@ -323,9 +334,10 @@ def copies_differ_in_mass(loaded, given):
     ```
     """
     copies = defaultdict(list)
+    signatures = geometry_signatures(loaded)
     for link in _declaring(loaded):
         tensor = model.declared_tensor(link)
-        signature = geometry_signature(link)
+        signature = signatures[link.name]
         if signature and not massprops.is_negligible(tensor):
             copies[signature, tensor].append(link)
     for links in copies.values():
