@@ -10,7 +10,7 @@ import shutil
 
 import numpy
 import pytest
-from conftest import FIXTURES, audited, model, run_cli
+from conftest import FIXTURES, audited, lint_file, model, run_cli
 from lxml import etree
 
 from urdfcli.model import inertia, massprops
@@ -536,3 +536,33 @@ def test_xacro_never_offers_to_replace_a_macro_that_makes_the_whole_link(tmp_pat
     assert f"<!-- link 'left_finger': its <inertial> is written at {path}:4, in the body of xacro macro 'gripper': replace it there with -->" in out
     assert "replace the call" not in out and "<xacro:gripper" not in out.split("left_finger")[1]
     assert "<inertial>" in out.split("left_finger")[-1]
+
+
+def test_links_written_alike_are_each_named_and_judged_in_their_own_body(tmp_path):
+    """Links written alike share one verdict, but each is named in its own diagnostic, and one
+    lost in a heavier body it is fixed to is a note where the moving ones are warnings."""
+    finger = """
+  <link name="{name}">
+    <collision><geometry><box size="0.02 0.02 0.1"/></geometry></collision>
+    <inertial><mass value="0.01"/><inertia ixx="6.66667e-07" ixy="0" ixz="0" iyy="8.66667e-06" iyz="0" izz="8.66667e-06"/></inertial>
+  </link>
+  <joint name="{name}_joint" type="{kind}"><parent link="palm"/><child link="{name}"/>{limit}</joint>"""
+    limit = '<axis xyz="0 1 0"/><limit lower="0" upper="1" effort="1" velocity="1"/>'
+    fingers = "".join(finger.format(name=name, kind=kind, limit=limit if kind == "revolute" else "")
+                      for name, kind in (("finger_1", "revolute"), ("finger_2", "revolute"), ("finger_fixed", "fixed")))
+    path = tmp_path / "hand.urdf"
+    path.write_text(f"""<robot name="hand">
+  <link name="palm">
+    <collision><geometry><box size="0.1 0.1 0.02"/></geometry></collision>
+    <inertial><mass value="1"/><inertia ixx="0.000866667" ixy="0" ixz="0" iyy="0.000866667" iyz="0" izz="0.00166667"/></inertial>
+  </link>{fingers}
+</robot>
+""")
+    found = {d.subjects: d for d in lint_file(path).diagnostics if d.code == "I009"}
+    assert set(found) == {("finger_1",), ("finger_2",), ("finger_fixed",)}
+    for name, diagnostic in found.items():
+        assert diagnostic.message.startswith(f"inertia of link '{name[0]}': "), diagnostic.message
+    for moving in ("finger_1", "finger_2"):  # a warning: more than 10 g can reach in the box
+        assert found[(moving,)].severity == "warning" and "4.3 times the most 0.01 kg can reach" in found[(moving,)].message
+    fixed = found[("finger_fixed",)]  # lost in the palm: only its turned axes are said, as a note
+    assert fixed.severity == "info" and "on axes 90° away" in fixed.message, fixed.message
