@@ -25,7 +25,8 @@ It measures every target of "What must hold" in one run:
    keystrokes are, one at a time: in a 51-link xacro model; in a macro library
    that nine models include, with one of them open too (and the time until
    that model's list arrives); in PR2's URDF; in a
-   URDF of 3,000 links (``--editor`` measures these alone);
+   URDF of 3,000 links, copies of one link, and in the same tree with no two
+   links alike (``--editor`` measures these alone);
 6. ``lint`` on the 69 URDFs with their meshes (``-P example-robot-data=...``, every
    mesh read) against loading each model once with ``yourdfpy.URDF.load(...,
    load_meshes=True)`` in one process, what a Python user would write;
@@ -195,18 +196,28 @@ JOINT = """  <joint name="joint_{i}" type="revolute">
 """
 
 
-def generate_tree(links: int) -> Path:
-    """A tree of ``links`` links, three children per link."""
-    path = GENERATED / f"tree_{links}.urdf"
+def generate_tree(links: int, distinct: bool = False) -> Path:
+    """A tree of ``links`` links, three children per link: copies of one link, or with
+    ``distinct`` each link its own length and mass (and the tensor of its box)."""
+    path = GENERATED / f"tree_{links}{'_distinct' if distinct else ''}.urdf"
     with path.open("w", encoding="utf-8") as out:
         out.write(f'<?xml version="1.0"?>\n<robot name="tree_{links}">\n')
         out.write('  <material name="grey"><color rgba="0.5 0.5 0.5 1"/></material>\n')
         for i in range(links):
-            out.write(LINK.format(i=i))
+            out.write(_distinct_link(i) if distinct else LINK.format(i=i))
         for i in range(1, links):
             out.write(JOINT.format(i=i, parent=(i - 1) // 3))
         out.write("</robot>\n")
     return path
+
+
+def _distinct_link(i: int) -> str:
+    """LINK with its own length (0.2 m and 0.1 mm more for each link) and mass."""
+    length, mass = 0.2 + i * 1e-4, 1.0 + i * 1e-3
+    side, end = mass * (0.1**2 + length**2) / 12, mass * 2 * 0.1**2 / 12
+    return (LINK.format(i=i).replace('<mass value="1.0"/>', f'<mass value="{mass:.4f}"/>')
+            .replace('ixx="0.0104" ixy="0" ixz="0" iyy="0.0104" iyz="0" izz="0.0008"', f'ixx="{side:.6g}" ixy="0" ixz="0" iyy="{side:.6g}" iyz="0" izz="{end:.6g}"')
+            .replace('size="0.1 0.1 0.35"', f'size="0.1 0.1 {length:.4f}"'))
 
 
 MACRO = """<?xml version="1.0"?>
@@ -603,6 +614,8 @@ def editor_cases(rows: list[Row]) -> None:
         EditorCase(f"xacro model of {EDITOR_LINKS + 1} links", [model], model, '<xacro:property name="mass" value="', 0.100),
         EditorCase(f"macro library included by {LIBRARY_MODELS} models, one of them open", [models[0], library], library, '<xacro:property name="arm_mass" value="', 0.300),
         EditorCase("URDF of 3,000 links", [generate_tree(3_000)], GENERATED / "tree_3000.urdf", '<mass value="', 0.300),
+        # the same tree with no two links alike: what no sharing of work between equal links helps
+        EditorCase("URDF of 3,000 distinct links", [generate_tree(3_000, distinct=True)], GENERATED / "tree_3000_distinct.urdf", '<mass value="', 0.300),
     ]
     package = corpus_package()
     if package is not None:
