@@ -50,13 +50,17 @@ def header_source(head: bytes) -> str | None:
     return match.group(1).decode("utf-8", "replace").removesuffix("-->") if match else None
 
 
-def find_source(urdf: Path, head: bytes, package: Callable[[], Path | None], files_below: Callable[[Path], list[Path]]) -> GeneratedFrom | None:
+def find_source(
+    urdf: Path, head: bytes, package: Callable[[], Path | None], files_below: Callable[[Path], list[Path]],
+    real_path: Callable[[Path], Path] = Path.resolve,
+) -> GeneratedFrom | None:
     """The xacro file ``urdf`` was generated from (see the module's documentation), or
-    None; ``package()`` gives the package holding it, asked only when needed, and
-    ``files_below(folder)`` the xacro and URDF files below a folder."""
+    None; ``package()`` gives the package holding it, asked only when needed,
+    ``files_below(folder)`` the xacro and URDF files below a folder (their real paths),
+    and ``real_path`` is ``Path.resolve`` or the session's, which asks the disk once a file."""
     named = header_source(head)
     if named is not None:
-        found = _header_file(urdf, named, package, files_below)
+        found = _header_file(urdf, named, package, files_below, real_path)
         return GeneratedFrom(found, named) if found is not None else None
     if urdf.suffix != ".urdf":
         return None
@@ -66,16 +70,19 @@ def find_source(urdf: Path, head: bytes, package: Callable[[], Path | None], fil
     return None
 
 
-def _header_file(urdf: Path, named: str, package_of: Callable[[], Path | None], files_below: Callable[[Path], list[Path]]) -> Path | None:
+def _header_file(
+    urdf: Path, named: str, package_of: Callable[[], Path | None], files_below: Callable[[Path], list[Path]], real_path: Callable[[Path], Path],
+) -> Path | None:
     written = Path(named.replace("\\", "/"))
     beside = urdf.parent / written.name
     for candidate in ([urdf.parent / written] if not written.is_absolute() else []) + [beside, written]:
-        if candidate.is_file() and candidate.resolve() != urdf.resolve():
+        if candidate.is_file() and real_path(candidate) != real_path(urdf):
             return candidate
     package = package_of()
     if package is None:
         return None
-    found = [file for file in files_below(package) if file.name == written.name and file != urdf.resolve()]
+    name = written.name
+    found = [file for file in files_below(package) if file.name == name and file != real_path(urdf)]
     return max(found, key=lambda file: _common_tail(file.parts, written.parts), default=None)
 
 
@@ -94,7 +101,8 @@ def generated_from(urdf: Path, session: Session) -> GeneratedFrom | None:
     if found is None:
         return None
     head = found.data[:HEAD_BYTES]
-    return find_source(urdf, head, lambda: session.packages.enclosing_package(session.packages.real_path(urdf).parent), lambda folder: session.index.scan([folder]))
+    packages = session.packages
+    return find_source(urdf, head, lambda: packages.enclosing_package(packages.real_path(urdf).parent), lambda folder: session.index.scan([folder]), packages.real_path)
 
 
 def generated_urdfs(paths: Iterable[str], session: Session) -> list[str]:
