@@ -63,7 +63,7 @@ def written_alike(loaded) -> dict[str, tuple]:
     its inertial's values and its shapes' (each value the very object the reader made of
     its text: links that write the same texts share them) and which meshes are in a wrong
     unit. Links alike in all of it are judged once: the fingers of a hand, the wheels of
-    a base, a generated chain (a third of the links of the published models)."""
+    a base, a generated chain (three in ten of the published models' links)."""
     return once(loaded, _written_alike)
 
 
