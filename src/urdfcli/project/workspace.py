@@ -43,7 +43,7 @@ from typing import NamedTuple
 from ..diagnostics import Diagnostic, Location, Severity
 from ..model.sources import XacroSources
 from ..read.document import STDIN, Document
-from ..read.packages import IGNORE_MARKS, MAX_SCAN_DIRS, SKIP_DIRS, PackageIndex, PackageResolver
+from ..read.packages import IGNORE_MARKS, MAX_SCAN_DIRS, SKIP_DIRS, PackageIndex, PackageResolver, entry_is
 from ..read.files import SourceFile, SourceFiles
 from ..read.xacro_scan import XacroFile, XacroGlobals, shown
 from ..rules import structure
@@ -218,18 +218,10 @@ def source_files(root: Path, recursive: bool = True) -> Iterable[Path]:
             if name.startswith("."):
                 continue
             if name.endswith(XACRO_SUFFIXES):
-                if _is(entry.is_file):
+                if entry_is(entry.is_file):
                     yield folder / name
-            elif recursive and name not in SKIP_DIRS and _is(entry.is_dir):
+            elif recursive and name not in SKIP_DIRS and entry_is(entry.is_dir):
                 stack.append(folder / name)
-
-
-def _is(test: Callable[[], bool]) -> bool:
-    """A directory entry's type test (which follows a link, as Path's does); false when it cannot tell."""
-    try:
-        return test()
-    except OSError:
-        return False
 
 
 class Index:

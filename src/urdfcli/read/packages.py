@@ -207,12 +207,20 @@ def _walk(root: Path, package_name) -> Iterator[tuple[str, Path]]:
             if any(entry.name in IGNORE_MARKS and os.path.exists(entry.path) for entry in entries):
                 continue
             children = sorted(
-                (Path(entry.path) for entry in entries if not entry.name.startswith(".") and entry.name not in SKIP_DIRS and entry.is_dir()),
+                (Path(entry.path) for entry in entries if not entry.name.startswith(".") and entry.name not in SKIP_DIRS and entry_is(entry.is_dir)),
                 reverse=True,
             )
         except OSError:
             continue
         stack.extend((child, depth + 1) for child in children)
+
+
+def entry_is(test: Callable[[], bool]) -> bool:
+    """A directory entry's type test (which follows a link, as Path's does); false when it cannot tell."""
+    try:
+        return test()
+    except OSError:
+        return False
 
 
 def _local_roots(package_dir: Path) -> list[Path]:
