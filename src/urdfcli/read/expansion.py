@@ -1,10 +1,11 @@
 """In-process xacro expansion that remembers where every element was written.
 
 The real ``xacro`` package does the expansion. Before xacro sees a file, every
-element gets an origin attribute (file, line, occurrence on that line); xacro
-copies attributes through includes and macro bodies, so after expansion each
-element still says where it was written. The attributes are then stripped, so
-the output is exactly what the ``xacro`` tool prints.
+element is marked with where it was written (file, line, column), as DOM user
+data, which minidom hands to each copy of a node through its handler (xacro
+copies each macro body it expands); so after expansion each element still says
+where it was written. The marks are no part of the document: the output is
+exactly what the ``xacro`` tool prints.
 
 This module runs in the bounded worker (:func:`expand_here`, asked for by
 :meth:`urdfcli.read.xacro.Expander.expand`): only the worker imports xacro.
@@ -36,10 +37,24 @@ from .xml import XmlError, parse
 if TYPE_CHECKING:
     from .packages import PackageResolver
 
-ORIGIN = "urdfcli-origin"
+ORIGIN = "urdfcli-origin"  # an element's user data: the Origin where it was written
+# The same for one of xacro's own tags: it tells where xacro is, but the element xacro
+# makes of such a tag (<xacro:element>) is given no origin (the expanded line is shown).
+XACRO_TAG_ORIGIN = "urdfcli-xacro-tag-origin"
 DEFINED = "urdfcli_defined"  # a xacro symbol table's attribute: where each lazy property was defined
-TRACE = "urdfcli-trace"  # the macro calls whose output starts at this element, innermost first
+TRACE = "urdfcli-trace"  # an element's user data: the macro calls whose output starts at it (indices), innermost first
 XACRO_PREFIX = "xacro:"
+
+
+class _KeptOnCopies(xml.dom.UserDataHandler):
+    """Gives each copy minidom makes of a marked node (xacro copies each macro body it
+    expands, and each block it inserts) the node's marks."""
+
+    def handle(self, operation, key, data, src, dst) -> None:
+        dst.setUserData(key, data, self)
+
+
+_KEPT_ON_COPIES = _KeptOnCopies()
 
 
 class NearbyNodeList(xml.dom.minicompat.NodeList):
@@ -70,23 +85,9 @@ class NearbyNodeList(xml.dom.minicompat.NodeList):
         del self[self._near(node)]
 
 
-def parse_origin(value: str) -> Origin | None:
-    place = _place(value)
-    return Origin(place[2], place[0], place[1] or None) if place is not None else None
-
-
-def _place(value: str) -> tuple[int, int, str] | None:
-    """Line, column (0: none) and file of an origin attribute's ``LINE:COLUMN:FILE``."""
-    try:
-        line, column, file = value.split(":", 2)
-        return int(line), int(column), file
-    except ValueError:
-        return None
-
-
 def tagged_dom(data: bytes, file: str) -> xml.dom.minidom.Document:
     """``data`` parsed as xacro parses it (minidom, its only parse here), every element
-    marked with where its ``<`` was written (``LINE:COLUMN:FILE``): the text's element
+    marked (user data ORIGIN) with where its ``<`` was written: the text's element
     starts, in document order, are the elements'. Raises XmlError when urdfcli's reader
     refuses the document (not well-formed, entities declared), which then says what is
     wrong where; ExpansionError when only xacro's parser refuses it."""
@@ -103,7 +104,8 @@ def tagged_dom(data: bytes, file: str) -> xml.dom.minidom.Document:
     starts = text.element_starts(len(elements))
     for at, element in enumerate(elements):
         line, column = text.position(starts[at]) if starts is not None else (0, 0)  # unknown then
-        element.setAttribute(ORIGIN, f"{line}:{column}:{file}")
+        key = XACRO_TAG_ORIGIN if element.tagName.startswith(XACRO_PREFIX) else ORIGIN
+        element.setUserData(key, Origin(file, line, column or None), _KEPT_ON_COPIES)
         element.childNodes = NearbyNodeList(element.childNodes)
     doc.childNodes = NearbyNodeList(doc.childNodes)
     return doc
@@ -112,13 +114,12 @@ def tagged_dom(data: bytes, file: str) -> xml.dom.minidom.Document:
 class _Session:
     """Patches xacro's module functions for one expansion, and undoes it."""
 
-    TRACKED = ("eval_all", "handle_macro_call", "grab_property", "grab_macro", "process_include")
+    TRACKED = ("eval_all", "grab_property", "grab_macro", "process_include")
     TOUCHED = ("check_attrs", "reqd_attrs")
 
     def __init__(self, find_package: Callable[[str], Path | None], given: dict[str, bytes]):
         self.find_package = find_package
         self.given = given  # texts that stand for files (absolute path -> bytes)
-        self.xacro_origins: dict[int, tuple[object, Origin]] = {}
         self.stack: list[object] = []
         self.touched: object | None = None
         self.saved: dict[tuple[object, str], object] = {}  # (module or class, name) -> the original
@@ -131,11 +132,9 @@ class _Session:
     # -- where is xacro now --------------------------------------------------
     def origin_of(self, node) -> Origin | None:
         while node is not None and getattr(node, "nodeType", None) == xml.dom.Node.ELEMENT_NODE:
-            if node.hasAttribute(ORIGIN):
-                return parse_origin(node.getAttribute(ORIGIN))
-            entry = self.xacro_origins.get(id(node))
-            if entry is not None and entry[0] is node:
-                return entry[1]
+            origin = node.getUserData(ORIGIN) or node.getUserData(XACRO_TAG_ORIGIN)
+            if origin is not None:
+                return origin
             node = node.parentNode
         return None
 
@@ -188,32 +187,13 @@ class _Session:
         child = body.firstChild
         while child is not None:
             if child.nodeType == xml.dom.Node.ELEMENT_NODE:
-                before = child.getAttribute(TRACE)
-                child.setAttribute(TRACE, f"{before} {index}" if before else str(index))
-            child = child.nextSibling
-
-    def hide_xacro_origins(self, node) -> None:
-        """xacro rejects unknown attributes on its own tags: keep their origin aside."""
-        child = node.firstChild
-        while child is not None:
-            if child.nodeType == xml.dom.Node.ELEMENT_NODE and child.tagName.startswith(XACRO_PREFIX):
-                if child.hasAttribute(ORIGIN):
-                    origin = parse_origin(child.getAttribute(ORIGIN))
-                    child.removeAttribute(ORIGIN)
-                    if origin is not None:
-                        self.xacro_origins[id(child)] = (child, origin)
+                child.setUserData(TRACE, (child.getUserData(TRACE) or ()) + (index,), _KEPT_ON_COPIES)
             child = child.nextSibling
 
     # -- patches ---------------------------------------------------------------
-    def track(self, name: str, original):
-        calling = name == "handle_macro_call"
-
+    def track(self, original):
         def tracked(node, *args, **kwargs):
-            if name == "eval_all":
-                self.hide_xacro_origins(node)
             self.stack.append(node)
-            if calling:
-                self.calling.append(node)
             try:
                 return original(node, *args, **kwargs)
             except Exception as error:
@@ -221,8 +201,23 @@ class _Session:
                 raise
             finally:
                 self.stack.pop()
-                if calling:
-                    self.calling.pop()
+
+        return tracked
+
+    def track_call(self, original):
+        """:meth:`track` for ``handle_macro_call``, which also keeps the macro calls xacro is inside."""
+
+        def tracked(node, *args, **kwargs):
+            self.stack.append(node)
+            self.calling.append(node)
+            try:
+                return original(node, *args, **kwargs)
+            except Exception as error:
+                self.locate(error)
+                raise
+            finally:
+                self.stack.pop()
+                self.calling.pop()
 
         return tracked
 
@@ -307,7 +302,8 @@ class _Session:
 
     def __enter__(self):
         for name in self.TRACKED:
-            self.patch(xacro, name, self.track(name, getattr(xacro, name)))
+            self.patch(xacro, name, self.track(getattr(xacro, name)))
+        self.patch(xacro, "handle_macro_call", self.track_call(xacro.handle_macro_call))
         for name in self.TOUCHED:
             self.patch(xacro, name, self.touch(getattr(xacro, name)))
         self.patch(xacro, "parse", self.parse)
@@ -335,32 +331,27 @@ def _untraced(origin: Origin | None) -> Origin | None:
 
 
 def _collect_origins(doc: xml.dom.minidom.Document, calls: list[Call]) -> Origins:
-    """Strip the origin and trace attributes, in document order, iteratively.
+    """The marks of the expanded document's elements, in document order, iteratively.
 
-    An element's trace is its own stamps (innermost first) then its parent's. The
-    elements of one macro body share their origin texts, read once each."""
+    An element's trace is its own stamps (innermost first) then its parent's."""
     files: dict[str, int] = {}
     traces: dict[tuple[int, ...], int] = {(): 0}
-    read: dict[str, tuple[int, int, int]] = {}  # origin text -> file index, line, column
     places = array("i")
     element = xml.dom.Node.ELEMENT_NODE
     stack: list[tuple[object, tuple[int, ...]]] = [(doc.documentElement, ())]
     while stack:
         node, trace = stack.pop()
-        stamps = node.getAttributeNode(TRACE)
+        stamps = node.getUserData(TRACE)
         if stamps is not None:
-            trace = tuple(int(i) for i in stamps.value.split()) + trace
-            node.removeAttributeNode(stamps)
-        origin = node.getAttributeNode(ORIGIN)
-        place = None
-        if origin is not None:
-            place = read.get(origin.value)
-            if place is None and (found := _place(origin.value)) is not None:
-                line, column, file = found
-                place = read[origin.value] = (files.setdefault(file, len(files)), line, column)
-            node.removeAttributeNode(origin)
-        places.extend((*place, traces.setdefault(trace, len(traces))) if place is not None else (-1, 0, 0, 0))
-        stack.extend(reversed([(c, trace) for c in node.childNodes if c.nodeType == element]))
+            trace = stamps + trace
+        origin = node.getUserData(ORIGIN)
+        if origin is None:
+            places.extend((-1, 0, 0, 0))
+        else:
+            places.extend((files.setdefault(origin.file, len(files)), origin.line, origin.column or 0, traces.setdefault(trace, len(traces))))
+        for child in reversed(node.childNodes):
+            if child.nodeType == element:
+                stack.append((child, trace))
     return Origins(list(files), [(c.file, c.line, c.column, c.macro) for c in calls], list(traces), places)
 
 
