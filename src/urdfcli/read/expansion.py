@@ -205,9 +205,13 @@ class _Session:
         return tracked
 
     def track_call(self, original):
-        """:meth:`track` for ``handle_macro_call``, which also keeps the macro calls xacro is inside."""
+        """:meth:`track` for ``handle_macro_call``, which also keeps the macro calls xacro is
+        inside. xacro asks it of every element; one not in xacro's namespace is no call,
+        and xacro answers so at once."""
 
         def tracked(node, *args, **kwargs):
+            if not node.tagName.startswith(XACRO_PREFIX):
+                return original(node, *args, **kwargs)
             self.stack.append(node)
             self.calling.append(node)
             try:
