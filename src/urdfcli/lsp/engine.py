@@ -20,7 +20,6 @@ Paths are absolute.
 from __future__ import annotations
 
 import difflib
-import gc
 import os
 import threading
 from collections.abc import Iterable, Mapping
@@ -173,11 +172,6 @@ class Checker:
         if self.giving_up.is_set():
             return None  # given up before it began
         self.sync(texts)
-        # A model is many objects and few cycles: the collector would walk those of a large
-        # model again and again while they are made (a tenth of its check); the server
-        # collects once its checks are done.
-        collecting = gc.isenabled()
-        gc.disable()
         try:
             run = api.run([path], self.session)
         except GivenUp:
@@ -189,9 +183,6 @@ class Checker:
             self.runs.pop(path, None)
             message = f"urdfcli internal error ({type(error).__name__}: {error}); please report this bug with the file"
             return Checked({path: [self._problem(path, message)]}, frozenset({path}), None)
-        finally:
-            if collecting:
-                gc.enable()
         if self.giving_up.is_set():  # what an expansion stopped for it found is not the model's
             return None
         if path not in self.runs or any(m.robot is not None for m in run.models):

@@ -63,11 +63,9 @@ def written_alike(loaded) -> dict[str, tuple]:
     its inertial's values and its shapes' (each value the very object the reader made of
     its text: links that write the same texts share them) and which meshes are in a wrong
     unit. Links alike in all of it are judged once: the fingers of a hand, the wheels of
-    a base, a generated chain (three in ten of the published models' links)."""
-    return once(loaded, _written_alike)
-
-
-def _written_alike(loaded) -> dict[str, tuple]:
+    a base, a generated chain (three in ten of the published models' links). Each rule
+    works it out again rather than keeping it with the model: kept, it would hold some
+    hundred bytes a link for as long as the model is open."""
     skipped = mis_scaled(loaded)
     found = {}
     for link in _declaring(loaded):
