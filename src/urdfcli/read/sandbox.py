@@ -44,10 +44,9 @@ class Worker:
     The process is forked at the first job; the job (function name, arguments,
     the caller's environment and working folder) is pickled to it, and its answer
     pickled back. One that ran out of time is killed, one that died is reported;
-    either is replaced at the next job. The process frees a job's cyclic garbage
-    when the next job comes, before running it (a command that expands one file
-    never pays for it: the process's end frees it); one that kept more than
-    RETIRE_MIB of memory then retires, so that every job has its whole allowance.
+    either is replaced at the next job. After answering, the process frees the
+    job's cyclic garbage while the caller goes on; one that kept more than
+    RETIRE_MIB of memory retires, so that every job has its whole allowance.
     Where ``os.fork`` is missing, jobs run in this process, unbounded.
     """
 
@@ -156,14 +155,13 @@ def _stop(owner: int, pid: int, *pipes: int) -> None:
 def _serve(jobs: int, answers: int, memory_mib: int) -> None:
     status = 0
     try:
-        # A job's cyclic garbage is freed between jobs (below), not while one runs:
-        # collecting during an expansion took a quarter of xacro's time on 1,500 macro
-        # calls, and freed 2 MiB. A job that makes cycles without end still meets the
-        # memory limit.
+        # A job's cyclic garbage is freed after it (below), not while it runs: collecting
+        # during an expansion took a quarter of xacro's time on 1,500 macro calls, and
+        # freed 2 MiB. A job that makes cycles without end still meets the memory limit.
         gc.disable()
         # What the worker inherited is the parent's, never its garbage: set aside, the
-        # collection between jobs walks only what jobs made (a full walk of a freshly
-        # started command's objects took 7 ms).
+        # collection after a job walks only what jobs made (a full walk of a freshly
+        # started command's objects took 7 ms, which the first expansion waited for).
         gc.freeze()
         _limit_memory(memory_mib)
         baseline = _memory_used(RESIDENT)
@@ -171,17 +169,14 @@ def _serve(jobs: int, answers: int, memory_mib: int) -> None:
             job = _read_message(jobs, None)
             if not job:
                 break  # the parent is gone
-            # xacro's DOM is cyclic: the last job's is freed only now that another job
-            # has come (on 1,500 macro calls, a fifth of a second that a command checking
-            # one file spent beside its own work, until its end stopped this process).
-            gc.collect()
-            if _memory_used(RESIDENT) > baseline + RETIRE_MIB * 1024 * 1024:
-                _write_message(answers, _RETIRING)  # the parent gives the job to a new process
-                break
             outcome = _outcome(job, memory_mib)
             job = None
             _write_message(answers, _dumps_outcome(outcome))
             outcome = None
+            gc.collect()  # xacro's DOM is cyclic: freed while the parent goes on
+            if _memory_used(RESIDENT) > baseline + RETIRE_MIB * 1024 * 1024:
+                _write_message(answers, _RETIRING)
+                break
     except BaseException:  # noqa: BLE001 - the parent reports an empty answer
         status = 1
     finally:
