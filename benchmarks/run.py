@@ -669,10 +669,13 @@ def machine() -> str:
 
 def compile_urdfcli() -> None:
     """Byte-compile urdfcli as an installer would, so that no run measures compiling its
-    sources (an editable install under PYTHONDONTWRITEBYTECODE=1 would, every time)."""
+    sources (an editable install under PYTHONDONTWRITEBYTECODE=1 would, every time): the
+    installed package, and this checkout's src/, which runs with --baseline (in a
+    worktree other than the installed one, they differ)."""
     import urdfcli
 
-    compileall.compile_dir(str(Path(urdfcli.__file__).parent), quiet=1, force=True)  # (its staleness test reads only the time, to the second)
+    for folder in {Path(urdfcli.__file__).parent.resolve(), (ROOT / "src" / "urdfcli").resolve()}:
+        compileall.compile_dir(str(folder), quiet=1, force=True)  # (its staleness test reads only the time, to the second)
 
 
 def extract_baseline(revision: str) -> None:
