@@ -191,9 +191,17 @@ class _Session:
             child = child.nextSibling
 
     # -- patches ---------------------------------------------------------------
-    def track(self, original):
+    def track(self, original, calls: bool = False):
+        """``original`` wrapped to keep where xacro is; with ``calls`` (``handle_macro_call``),
+        also the macro calls it is inside. xacro asks that of every element; one not in
+        xacro's namespace is no call, and xacro answers so at once."""
+
         def tracked(node, *args, **kwargs):
+            if calls and not node.tagName.startswith(XACRO_PREFIX):
+                return original(node, *args, **kwargs)
             self.stack.append(node)
+            if calls:
+                self.calling.append(node)
             try:
                 return original(node, *args, **kwargs)
             except Exception as error:
@@ -201,27 +209,8 @@ class _Session:
                 raise
             finally:
                 self.stack.pop()
-
-        return tracked
-
-    def track_call(self, original):
-        """:meth:`track` for ``handle_macro_call``, which also keeps the macro calls xacro is
-        inside. xacro asks it of every element; one not in xacro's namespace is no call,
-        and xacro answers so at once."""
-
-        def tracked(node, *args, **kwargs):
-            if not node.tagName.startswith(XACRO_PREFIX):
-                return original(node, *args, **kwargs)
-            self.stack.append(node)
-            self.calling.append(node)
-            try:
-                return original(node, *args, **kwargs)
-            except Exception as error:
-                self.locate(error)
-                raise
-            finally:
-                self.stack.pop()
-                self.calling.pop()
+                if calls:
+                    self.calling.pop()
 
         return tracked
 
@@ -307,7 +296,7 @@ class _Session:
     def __enter__(self):
         for name in self.TRACKED:
             self.patch(xacro, name, self.track(getattr(xacro, name)))
-        self.patch(xacro, "handle_macro_call", self.track_call(xacro.handle_macro_call))
+        self.patch(xacro, "handle_macro_call", self.track(xacro.handle_macro_call, calls=True))
         for name in self.TOUCHED:
             self.patch(xacro, name, self.touch(getattr(xacro, name)))
         self.patch(xacro, "parse", self.parse)
