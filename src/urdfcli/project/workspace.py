@@ -43,7 +43,7 @@ from typing import NamedTuple
 from ..diagnostics import Diagnostic, Location, Severity
 from ..model.sources import XacroSources
 from ..read.document import STDIN, Document
-from ..read.packages import IGNORE_MARKS, MAX_SCAN_DIRS, SKIP_DIRS, PackageIndex, PackageResolver, entry_is
+from ..read.packages import MAX_SCAN_DIRS, SKIP_DIRS, PackageIndex, PackageResolver, entry_is, marked_ignored
 from ..read.files import SourceFile, SourceFiles
 from ..read.xacro_scan import XacroFile, XacroGlobals, shown
 from ..rules import structure
@@ -211,8 +211,8 @@ def source_files(root: Path, recursive: bool = True) -> Iterable[Path]:
                 entries = sorted(listing, key=lambda entry: entry.name)
         except OSError:
             continue
-        if folder != root and any(entry.name in IGNORE_MARKS and os.path.exists(entry.path) for entry in entries):
-            continue  # (told from the listing: no stat of two names in every folder)
+        if folder != root and marked_ignored(entries):
+            continue
         for entry in entries:
             name = entry.name
             if name.startswith("."):

@@ -204,7 +204,7 @@ def _walk(root: Path, package_name) -> Iterator[tuple[str, Path]]:
         try:
             with os.scandir(folder) as listing:  # (the entries know their type: no stat for each file)
                 entries = list(listing)
-            if any(entry.name in IGNORE_MARKS and os.path.exists(entry.path) for entry in entries):
+            if marked_ignored(entries):
                 continue
             children = sorted(
                 (Path(entry.path) for entry in entries if not entry.name.startswith(".") and entry.name not in SKIP_DIRS and entry_is(entry.is_dir)),
@@ -213,6 +213,12 @@ def _walk(root: Path, package_name) -> Iterator[tuple[str, Path]]:
         except OSError:
             continue
         stack.extend((child, depth + 1) for child in children)
+
+
+def marked_ignored(entries: list[os.DirEntry]) -> bool:
+    """A folder's listing holds CATKIN_IGNORE or COLCON_IGNORE: the folder is left out, with
+    all below it (told from the listing: no stat of two names in every folder)."""
+    return any(entry.name in IGNORE_MARKS and os.path.exists(entry.path) for entry in entries)
 
 
 def entry_is(test: Callable[[], bool]) -> bool:
