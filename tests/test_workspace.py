@@ -307,3 +307,20 @@ def test_only_the_models_that_include_the_library_are_expanded(repository):
     done, report = check_json("common/urdf/inertia.xacro", cwd=repository)
     assert done.returncode == 1  # it does include inertia.xacro, and is broken
     assert "description/urdf/broken.urdf.xacro" in report["files"][0]["checked_through"]
+
+
+@pytest.mark.parametrize("mark", ["COLCON_IGNORE", "CATKIN_IGNORE"])
+def test_a_folder_marked_ignored_is_left_out_of_the_search_and_the_package_scan(tmp_path, mark):
+    """colcon and catkin skip a folder that holds COLCON_IGNORE or CATKIN_IGNORE, and all below
+    it: its models are not checked and its packages are found nowhere."""
+    from urdfcli.project.workspace import source_files
+
+    for name in ("kept", "ignored"):
+        package = tmp_path / "src" / name / f"{name}_description"
+        (package / "urdf").mkdir(parents=True)
+        (package / "package.xml").write_text(package_xml(f"{name}_description"))
+        (package / "urdf" / f"{name}.urdf").write_text(f'<robot name="{name}"><link name="base"/></robot>\n')
+    (tmp_path / "src" / "ignored" / mark).write_text("")
+    found = [path.relative_to(tmp_path).as_posix() for path in source_files(tmp_path / "src")]
+    assert found == ["src/kept/kept_description/urdf/kept.urdf"]
+    assert [name for name, _ in PackageIndex().scan(tmp_path / "src")] == ["kept_description"]
