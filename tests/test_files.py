@@ -60,3 +60,31 @@ def test_an_edit_is_parsed_once_by_the_check_and_the_outline():
             assert path not in checker.session.files.reads  # the editor's text, never the file on disk
     finally:
         checker.close()
+
+
+def test_a_large_urdf_beside_a_library_is_read_once_by_its_edits(tmp_path):
+    """An edit of a library looks across the repository for the models that include it;
+    a URDF too large to keep in memory is not read again for that at every edit."""
+    from urdfcli.lsp.engine import Checker
+
+    (tmp_path / ".git").mkdir()
+    (tmp_path / "package.xml").write_text('<package format="3"><name>arm_description</name></package>\n')
+    library = tmp_path / "arm.xacro"
+    library.write_text('<robot xmlns:xacro="http://www.ros.org/wiki/xacro">\n'
+                       '  <xacro:macro name="arm"><link name="arm"/></xacro:macro>\n</robot>\n')
+    (tmp_path / "robot.urdf.xacro").write_text('<robot name="robot" xmlns:xacro="http://www.ros.org/wiki/xacro">\n'
+                                               '  <xacro:include filename="arm.xacro"/>\n  <xacro:arm/>\n</robot>\n')
+    large = tmp_path / "generated.urdf"
+    links = "".join(f'  <link name="l{i}"/>\n' for i in range(60_000))
+    large.write_text(f'<robot name="generated">\n{links}</robot>\n')
+    assert large.stat().st_size > 1 << 20  # not kept in memory between checks
+    checker = Checker()
+    try:
+        path, text = str(library), library.read_text()
+        for edit in range(3):
+            text = text.replace("</robot>", f"<!-- edit {edit} -->\n</robot>")
+            checked = checker.check(path, {path: text})
+            assert checked is not None
+        assert checker.session.files.reads[str(large)] == 1
+    finally:
+        checker.close()

@@ -285,7 +285,7 @@ class Index:
         """What reading ``file`` tells (read again when the file changes)."""
         if not file.name.endswith(".xacro"):
             self._read.add(file)
-        return workspace_file(file, self.files.get(shown(file)))
+        return self.files.derived(shown(file), workspace_file)
 
     def xacro_file(self, file: Path) -> XacroFile | None:
         """The scan of a xacro file (None: unreadable, not XML, or a plain URDF)."""
@@ -547,7 +547,7 @@ def plan(paths: list[str], config_for, package_paths: tuple[str, ...] = (), pack
         config = config_for(path)
         # only a file named .xacro can be a library: a plain URDF is never read twice
         library = Path(path).resolve() if path != STDIN and path.endswith(".xacro") else None
-        alone = workspace_file(library, files.get(shown(library))) if library is not None else None
+        alone = files.derived(shown(library), workspace_file) if library is not None else None
         if alone is not None and alone.kind == "library":  # else no look-up at all
             index = index or Index(config.package_paths + package_paths, packages, files)
             if index.kind(library) == "model":

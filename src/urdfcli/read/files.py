@@ -15,15 +15,20 @@ what was read and parsed, so that a test can hold the promise.
 
 from __future__ import annotations
 
+import contextlib
 import os
 import weakref
 from collections import Counter
+from collections.abc import Callable
 from functools import cached_property
 from pathlib import Path
+from typing import Any, TypeVar
 
 from .positions import Text, decode
 from .xacro_scan import XacroFile, scan
 from .xml import WHOLE_UP_TO, Element, XmlError, parse
+
+T = TypeVar("T")
 
 STDIN_NAME = "<stdin>"
 
@@ -124,6 +129,7 @@ class SourceFiles:
         self._stamps: dict[str, tuple[int, int]] = {}  # of the large files
         self._given: dict[str, bytes] = {}
         self._given_files: dict[str, SourceFile] = {}  # made when first read, named as first asked for
+        self._derived: dict[tuple[str, Callable], tuple[tuple[int, int], Any]] = {}  # (key, what) -> (file stamp, value)
         self.reads: Counter[str] = Counter()  # file key -> times read from disk
         self.parses: Counter[str] = Counter()  # file key -> XML trees made of it
 
@@ -173,6 +179,24 @@ class SourceFiles:
         else:
             self._kept[key] = (stamp, found)
         return found
+
+    def derived(self, name: str | os.PathLike, compute: Callable[[Path, SourceFile | None], T]) -> T:
+        """``compute(path, file)`` (file None: unreadable), kept until the file changes on
+        disk: a large file is not kept in memory, and what a look across the workspace
+        asks of every file would read it again each time. Worked out anew for a given text."""
+        key = file_key(name)
+        stamp = None
+        if key not in self._given:
+            with contextlib.suppress(OSError):
+                status = os.stat(key)
+                stamp = status.st_mtime_ns, status.st_size
+        known = self._derived.get((key, compute))
+        if stamp is not None and known is not None and known[0] == stamp:
+            return known[1]
+        value = compute(Path(key), self.get(name))
+        if stamp is not None:
+            self._derived[key, compute] = (stamp, value)
+        return value
 
     def get(self, name: str | os.PathLike) -> SourceFile | None:
         """The file ``name``, or None when it cannot be read."""
