@@ -29,7 +29,7 @@ from conftest import FIXTURES, all_fixture_models
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from urdfcli.model.numbers import NumberError, VectorLengthError, parse_double, parse_vector
+from urdfcli.model.numbers import NumberError, VectorLengthError, parse_double, parse_doubles, parse_vector
 from urdfcli.read.xml import XmlError
 from urdfcli.read.xml import parse as parse_bytes
 
@@ -236,6 +236,27 @@ def test_a_vector_reads_as_its_components_do(text):
             parse_vector(text)
     else:
         assert parse_vector(text) == expected
+
+
+_NUMBER_TEXT = st.text(alphabet="0123456789.eE+- ", max_size=12) | st.floats(width=64).map(repr) | st.sampled_from(["0", "1e400", "nan", "", " 1"])
+
+
+@settings(max_examples=1000, deadline=None)
+@given(st.lists(_NUMBER_TEXT | st.none(), min_size=1, max_size=6).map(tuple))
+def test_several_numbers_read_at_once_as_each_reads(texts):
+    """The one-step read of several numbers (an inertia tensor's) gives what parse_double
+    gives for each, or leaves them to parse_double when one is missing or refused."""
+    values = parse_doubles(texts)
+    try:
+        expected = tuple(parse_double(text) for text in texts) if None not in texts else None
+    except NumberError:
+        expected = None
+    if expected is None:
+        assert values is None
+    elif any(text.strip() != text for text in texts):  # white space around a number: left to parse_double
+        assert values is None
+    else:
+        assert values == expected
 
 
 @settings(max_examples=300, deadline=None)

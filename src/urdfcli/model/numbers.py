@@ -57,6 +57,23 @@ def parse_double(text: str) -> float:
     return _malformed(text)
 
 
+def parse_doubles(texts: tuple[str | None, ...]) -> tuple[float, ...] | None:
+    """The values of several attributes at once when each is a plain finite number
+    (an inertia tensor's six): as in parse_double, float() then accepts exactly
+    urdfdom's numbers. None when one is missing or not such a number: parse_double
+    on each then says which and why."""
+    if None in texts:
+        return None
+    joined = "".join(texts)  # type: ignore[arg-type]
+    if joined.strip(_DECIMAL_CHARACTERS):
+        return None
+    try:
+        values = tuple(map(float, texts))  # type: ignore[arg-type]
+    except ValueError:  # an empty text, or a sign or point alone
+        return None
+    return values if all(map(math.isfinite, values)) else None
+
+
 def _malformed(text: str):
     raise NumberError("V001", f"{shown(text)} is not a number")
 

@@ -16,7 +16,7 @@ from typing import TYPE_CHECKING, NamedTuple
 from ..diagnostics import Applicability, Diagnostic, Fix, SetAttribute
 from ..read.document import Document, tag_name
 from ..read.xml import Element, top_level
-from .numbers import NumberError, VectorLengthError, format_number, parse_double, parse_vector
+from .numbers import NumberError, VectorLengthError, format_number, parse_double, parse_doubles, parse_vector
 
 if TYPE_CHECKING:
     from .vocabulary import Unknown
@@ -412,9 +412,13 @@ class Reader:
             texts = tuple(map(inertia_element.get, INERTIA_KEYS))
             inertia = self._tensors.get(texts)
             if inertia is None:
-                values = {key: self.number(inertia_element, key, required=True) for key in INERTIA_KEYS}
-                if None not in values.values():
-                    inertia = self._tensors[texts] = values
+                plain = parse_doubles(texts)  # the common case: six plain numbers, read in one step
+                if plain is not None:
+                    inertia = self._tensors[texts] = dict(zip(INERTIA_KEYS, plain))
+                else:  # each value read on its own, for its diagnostic
+                    values = {key: self.number(inertia_element, key, required=True) for key in INERTIA_KEYS}
+                    if None not in values.values():
+                        inertia = self._tensors[texts] = values
         return Inertial(self._index[element], origin, mass, inertia, self.at(mass_element), self.at(inertia_element), self.at(found.get("origin")))  # type: ignore[arg-type]
 
     def link(self, element: "Element") -> Link:

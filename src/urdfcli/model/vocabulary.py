@@ -179,7 +179,8 @@ def unknown_markup(top: Element, index: Callable[[Element], int]) -> Iterator[Un
             if "{" in name:
                 name = tag_name(child)
             if name in walked:
-                inside.append((child, name))
+                if len(child) or not KNOWN_ATTRIBUTES[name].issuperset(child.keys()):  # else nothing unknown: not visited
+                    inside.append((child, name))
             elif name not in children and not _is_foreign(name):
                 if name in GAZEBO_TAGS or _gazebo_material(child):
                     yield Unknown(index(child), tag, name, False, gazebo=True, holder=index(element), owner=owner)
