@@ -103,27 +103,33 @@ def _implied_named(loaded: Loaded, name: str, density: float | None) -> Implied:
 
 
 def _implied(loaded: Loaded, link: Link, density: float | None) -> Implied:
-    collisions = tuple(s for s in link.collisions if s.geometry is not None)
-    kind, shapes = ("collision", collisions) if collisions else ("visual", tuple(s for s in link.visuals if s.geometry is not None))
+    shapes = tuple([s for s in link.collisions if s.geometry is not None])
+    kind = "collision"
     if not shapes:
-        return Implied(None, "no collision or visual geometry")
-    names = ", ".join(s.geometry.kind for s in shapes)
-    source = f"{kind} {names}" if len(shapes) == 1 else f"{kind} shapes ({names})"
+        kind, shapes = "visual", tuple([s for s in link.visuals if s.geometry is not None])
+        if not shapes:
+            return Implied(None, "no collision or visual geometry")
+    if len(shapes) == 1:  # (most links)
+        source = f"{kind} {shapes[0].geometry.kind}"
+    else:
+        source = f"{kind} shapes ({', '.join([s.geometry.kind for s in shapes])})"
     if _mis_scaled(loaded, shapes):
         return Implied(None, f"a {kind} mesh is in a wrong unit (F003)", shapes=shapes)
     try:
         parts = [shape_part(loaded, shape) for shape in shapes]
     except GeometryUnknown as error:
         return Implied(None, str(error), shapes=shapes)
-    volume = sum(v for v, _, _ in parts)
+    volume = sum([v for v, _, _ in parts])
     if volume <= 0:
         return Implied(None, f"{source} has no volume", shapes=shapes)
     mass = density * volume if density is not None else (link.inertial.mass if link.inertial else None)
     if mass is None or mass <= 0:
         return Implied(None, "no mass to spread over the geometry", volume, shapes)
-    total, com, tensor = massprops.combine(
-        (mass * v / volume, centre, massprops.scaled(unit, mass * v / volume)) for v, centre, unit in parts
-    )
+    bodies = []
+    for v, centre, unit in parts:
+        share = mass * v / volume  # spread by volume
+        bodies.append((share, centre, massprops.scaled(unit, share)))
+    total, com, tensor = massprops.combine(bodies)
     return Implied(Body(total, com, tensor), source, volume, shapes)
 
 
@@ -334,7 +340,8 @@ def _reach(inertial, box) -> Reach | None:
     volume = sides[0] * sides[1] * sides[2]
     if volume <= 0 or inertial.mass / volume > DENSEST:
         return None
-    x, y, z = (_spread(lo, h, c) for lo, h, c in zip(low, high, inertial.origin.xyz))
+    cx, cy, cz = inertial.origin.xyz
+    x, y, z = _spread(low[0], high[0], cx), _spread(low[1], high[1], cy), _spread(low[2], high[2], cz)
     m = inertial.mass
     return Reach((m * (y + z), m * (x + z), m * (x + y)), sides)
 

@@ -73,8 +73,13 @@ small to matter to its body's dynamics; the physics rules leave its tensor alone
 
 
 def floored(m: Matrix) -> Matrix:
-    """The tensor with the elements below ZERO_FLOOR set to zero."""
-    return tuple(tuple(0.0 if abs(v) < ZERO_FLOOR else v for v in row) for row in m)  # type: ignore[return-value]
+    """The tensor with the elements below ZERO_FLOOR set to zero (written out: asked of every declared tensor)."""
+    (a, b, c), (d, e, f), (g, h, i) = m
+    return (
+        (0.0 if abs(a) < ZERO_FLOOR else a, 0.0 if abs(b) < ZERO_FLOOR else b, 0.0 if abs(c) < ZERO_FLOOR else c),
+        (0.0 if abs(d) < ZERO_FLOOR else d, 0.0 if abs(e) < ZERO_FLOOR else e, 0.0 if abs(f) < ZERO_FLOOR else f),
+        (0.0 if abs(g) < ZERO_FLOOR else g, 0.0 if abs(h) < ZERO_FLOOR else h, 0.0 if abs(i) < ZERO_FLOOR else i),
+    )
 
 
 def is_negligible(m: Matrix) -> bool:
@@ -179,6 +184,8 @@ def multiply(a: Matrix, b: Matrix) -> Matrix:
 
 
 def transpose(a: Matrix) -> Matrix:
+    if a is IDENTITY:  # most frames' rotation: kept the very object, which rotate() passes by
+        return a
     (a00, a01, a02), (a10, a11, a12), (a20, a21, a22) = a
     return ((a00, a10, a20), (a01, a11, a21), (a02, a12, a22))
 
@@ -220,16 +227,17 @@ def combine(parts: Iterable[tuple[float, Vector, Matrix]]) -> tuple[float, Vecto
     """Total mass, centre of mass and tensor about it, of bodies given as
     (mass, centre, tensor about that centre, already in the common frame)."""
     parts = list(parts)
-    mass = sum(m for m, _, _ in parts)
+    mass = sum([m for m, _, _ in parts])
     if mass <= 0:
         return 0.0, (0.0, 0.0, 0.0), ZERO
     x = y = z = 0  # summed as sum() would
-    for m, c, _ in parts:
-        x, y, z = x + m * c[0], y + m * c[1], z + m * c[2]
-    com = (x / mass, y / mass, z / mass)
+    for m, (cx, cy, cz), _ in parts:
+        x, y, z = x + m * cx, y + m * cy, z + m * cz
+    cx, cy, cz = x / mass, y / mass, z / mass
+    com = (cx, cy, cz)
     total = ZERO
     for m, c, tensor in parts:
-        total = add(total, parallel_axis(tensor, m, (c[0] - com[0], c[1] - com[1], c[2] - com[2])))
+        total = add(total, parallel_axis(tensor, m, (c[0] - cx, c[1] - cy, c[2] - cz)))
     return mass, com, total
 
 

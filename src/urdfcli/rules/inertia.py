@@ -7,7 +7,7 @@ link's geometry implies comes from :mod:`urdfcli.inertia`.
 from __future__ import annotations
 
 import math
-from collections import defaultdict
+from collections import Counter, defaultdict
 from typing import TYPE_CHECKING, NamedTuple
 
 from ..diagnostics import Fix
@@ -50,7 +50,8 @@ def _naming(links) -> str:
 def _declaring(loaded):
     """Links with positive mass and a tensor (frame links and broken inertials left out)."""
     for link in loaded.robot.links.values():
-        if link.inertial is not None and link.inertial.inertia and (link.inertial.mass or 0) > 0:
+        inertial = link.inertial
+        if inertial is not None and inertial.inertia and (inertial.mass or 0) > 0:
             yield link
 
 
@@ -240,9 +241,8 @@ def _placeholder_groups(loaded, options) -> list:
         ):
             groups[tensor].append(link)
     found = []
-    signatures = geometry_signatures(loaded)
     for tensor, links in groups.items():
-        if len(links) < 2 or len({signatures[link.name] for link in links}) == 1:
+        if len(links) < 2 or len({geometry_signature(link) for link in links}) == 1:
             continue  # one link, or copies of one part: same geometry and tensor (I012 compares their masses)
         assessed = {link.name: _assess(loaded, link, options) for link in links}
         sizes = [massprops.scale_of(a.expected) for a in assessed.values() if a is not None and a.expected is not None]
@@ -275,16 +275,6 @@ def geometry_signature(link) -> tuple:
     finger, four wheels) have the same."""
     shapes = [s for s in link.collisions if s.geometry is not None] or [s for s in link.visuals if s.geometry is not None]
     return tuple(sorted((g.kind, g.filename or "", g.scale, g.size or (), g.radius or 0.0, g.length or 0.0) for g in (s.geometry for s in shapes)))
-
-
-def geometry_signatures(loaded) -> dict[str, tuple]:
-    """Each link's :func:`geometry_signature` (of the links that declare a tensor), worked
-    out once: I008 and I012 compare them."""
-    return once(loaded, _geometry_signatures)
-
-
-def _geometry_signatures(loaded) -> dict[str, tuple]:
-    return {link.name: geometry_signature(link) for link in _declaring(loaded)}
 
 
 MIRROR_RATIO = 5.0  # copies of one part this many times apart in mass: one mass is wrong
@@ -331,12 +321,11 @@ def copies_differ_in_mass(loaded, given):
     <joint name="fingers" type="fixed"><parent link="left_finger"/><child link="right_finger"/></joint>
     ```
     """
+    tensors = [(link, tensor) for link in _declaring(loaded) if not massprops.is_negligible(tensor := model.declared_tensor(link))]
+    sharing = Counter(tensor for _, tensor in tensors)  # copies share their tensor: only those links' shapes are compared
     copies = defaultdict(list)
-    signatures = geometry_signatures(loaded)
-    for link in _declaring(loaded):
-        tensor = model.declared_tensor(link)
-        signature = signatures[link.name]
-        if signature and not massprops.is_negligible(tensor):
+    for link, tensor in tensors:
+        if sharing[tensor] > 1 and (signature := geometry_signature(link)):
             copies[signature, tensor].append(link)
     for links in copies.values():
         light = min(links, key=lambda link: link.inertial.mass)
