@@ -318,7 +318,7 @@ class Reader:
         if element is None:
             self.report("V005", f"<{tag_name(parent)}> has no <geometry>", parent)
             return None
-        shapes = list(element)  # comments are not read
+        shapes = element[:]  # comments are not read
         if not shapes:
             self.report("G001", "<geometry> holds no shape (box, cylinder, sphere or mesh)", element)
             return None
@@ -373,7 +373,7 @@ class Reader:
         """The first child of each tag (see :func:`first_children`), and G004 for a second
         child of one of ``repeated``, which every parser leaves unread: one pass over the children."""
         found: dict[str, Element] = {}
-        for child in element:
+        for child in element[:]:  # (see first_children)
             tag = child.tag
             if tag not in found:
                 found[tag] = child
@@ -429,7 +429,7 @@ class Reader:
         inertial = None
         visuals: list[Shape] = []
         collisions: list[Shape] = []
-        for child in element:  # one pass, in the order written
+        for child in element[:]:  # one pass, in the order written (see first_children)
             tag = child.tag
             if tag == "visual":
                 visuals.append(self.shape(child, visual=True))
@@ -523,7 +523,7 @@ class Reader:
         if parent is None or child is None:
             missing = " and ".join(t for t, v in (("<parent link>", parent), ("<child link>", child)) if v is None)
             self.report("J004", f"joint '{shown}' has no {missing}", element)
-        parts = tuple((tag, self._index[found[tag]]) for tag in JOINT_PARTS if tag in found)
+        parts = tuple([(tag, self._index[found[tag]]) for tag in JOINT_PARTS if tag in found])
         return Joint(name if name is not None else "", self._index[element], joint_type, parent, child, origin, axis, limit, mimic, parts, safety, dynamics)
 
     @staticmethod
@@ -648,7 +648,7 @@ def first_children(element: "Element") -> "dict[str, Element]":
     """The first child of each tag, as ``element.find(tag)`` gives it, in one pass
     over the children (a model has millions of these lookups)."""
     found: dict[str, Element] = {}
-    for child in element:  # (forwards: lxml makes a list to go backwards)
+    for child in element[:]:  # (a slice: lxml makes it in one step, faster than it iterates)
         found.setdefault(child.tag, child)
     return found
 
