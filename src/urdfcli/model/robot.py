@@ -562,7 +562,7 @@ class Reader:
             index[root] = 0
             self.top_level(robot, element)
             if self.vocabulary:
-                robot.unknown.extend(vocabulary.unknown_markup(element, index.__getitem__))
+                robot.unknown.extend(vocabulary.unknown_markup(element, index))
         if not robot.links:
             self.report("R004", "the robot has no <link>", root)
         robot.visual_materials = self._inline_materials

@@ -8,7 +8,7 @@ report.
 
 from __future__ import annotations
 
-from collections.abc import Callable, Iterator
+from collections.abc import Iterator, Mapping
 from typing import TYPE_CHECKING, NamedTuple
 
 from ..read.document import tag_name
@@ -151,41 +151,43 @@ def unknown_attributes(element: Element, at: int, tag: str | None = None) -> Ite
             yield Unknown(at, tag, name, True, _typo_of(name, known - set(names)))
 
 
-def unknown_markup(top: Element, index: Callable[[Element], int]) -> Iterator[Unknown]:
-    """What is unknown in one element written at the top level of ``<robot>``: the
-    element itself as a child of ``<robot>``, and inside it, one walk over the URDF
-    elements (not into other formats' blocks)."""
+def unknown_markup(top: Element, positions: Mapping[Element, int]) -> list[Unknown]:
+    """What is unknown in one element written at the top level of ``<robot>``, in
+    document order: the element itself as a child of ``<robot>``, and inside it the
+    URDF elements (not other formats' blocks). ``positions`` holds each element of
+    ``top``, in document order, with its index (other elements may follow)."""
+    index = positions.__getitem__
     name = tag_name(top)
     if name not in KNOWN_CHILDREN["robot"]:
         if not _is_foreign(name):
             gazebo = name in GAZEBO_TAGS or _gazebo_material(top)
-            yield Unknown(index(top), "robot", name, False, None if gazebo else _typo_of(name, KNOWN_CHILDREN["robot"]), gazebo)
-        return
+            return [Unknown(index(top), "robot", name, False, None if gazebo else _typo_of(name, KNOWN_CHILDREN["robot"]), gazebo)]
+        return []
     if name not in SCHEMA or name in OPAQUE:
-        return
+        return []
     owner = top.get("name") if name in ("link", "joint") else None
-    stack = [(top, name)]
-    while stack:
-        element, tag = stack.pop()
-        if not KNOWN_ATTRIBUTES[tag].issuperset(element.keys()):  # most elements: decided here
-            yield from unknown_attributes(element, index(element), tag)
-        children = KNOWN_CHILDREN.get(tag)
-        if children is None or not len(element):  # (most elements hold none: no loop set up for them)
-            continue
-        walked = WALKED[tag]
-        inside = []
-        for child in element[:]:  # (a slice: lxml makes it in one step, faster than it iterates)
-            name = child.tag
-            if "{" in name:
-                name = tag_name(child)
-            if name in walked:
-                if len(child) or not KNOWN_ATTRIBUTES[name].issuperset(child.keys()):  # else nothing unknown: not visited
-                    inside.append((child, name))
-            elif name not in children and not _is_foreign(name):
-                if name in GAZEBO_TAGS or _gazebo_material(child):
-                    yield Unknown(index(child), tag, name, False, gazebo=True, holder=index(element), owner=owner)
-                else:
-                    present = {tag_name(c) for c in element}
-                    missing = {c for c in children if c in REPEATED or c not in present}
-                    yield Unknown(index(child), tag, name, False, _typo_of(name, missing), holder=index(element), owner=owner)
-        stack.extend(reversed(inside))
+    found: list[Unknown] = []
+    walked: dict[Element, str] = {}  # the elements whose children are examined -> their tag
+    # One pass over the elements as the reader numbered them (a parent comes before its
+    # children), not a walk down the tree: lxml hands out children slowly.
+    for element in positions:
+        parent = element.getparent()
+        tag = "robot" if element is top else walked.get(parent)
+        if tag is None:
+            continue  # inside an element not walked into, or not in top at all
+        name = element.tag
+        if "{" in name:
+            name = tag_name(element)
+        if name in WALKED[tag]:
+            if not KNOWN_ATTRIBUTES[name].issuperset(element.keys()):  # most elements: decided here
+                found.extend(unknown_attributes(element, index(element), name))
+            if name in KNOWN_CHILDREN:
+                walked[element] = name
+        elif name not in KNOWN_CHILDREN[tag] and not _is_foreign(name):
+            if name in GAZEBO_TAGS or _gazebo_material(element):
+                found.append(Unknown(index(element), tag, name, False, gazebo=True, holder=index(parent), owner=owner))
+            else:
+                present = {tag_name(c) for c in parent}
+                missing = {c for c in KNOWN_CHILDREN[tag] if c in REPEATED or c not in present}
+                found.append(Unknown(index(element), tag, name, False, _typo_of(name, missing), holder=index(parent), owner=owner))
+    return found
