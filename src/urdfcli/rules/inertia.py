@@ -13,7 +13,7 @@ from typing import TYPE_CHECKING, NamedTuple
 from ..diagnostics import Fix
 from ..model import inertia as model
 from ..model import massprops
-from ..model.inertia import OVERREACH, assess, axes_apart, declared_body, reach
+from ..model.inertia import OVERREACH, Assessment, axes_apart, declared_body, reach
 from ..model.massprops import number, tensor_text
 from ..model.numbers import format_number
 from ..model.units import mis_scaled
@@ -23,7 +23,6 @@ from .physics import absorbed, invalid_tensors
 
 if TYPE_CHECKING:
     from ..model.load import Loaded
-    from ..model.robot import Link
 
 ROOT_MASS = 0.001  # kg: a lighter root is the usual answer to KDL's complaint
 SIZE_RATIO = 2.0  # links this many times apart in mass or size cannot share one honest tensor
@@ -422,19 +421,22 @@ def geometry_mismatch(loaded, given):
             continue  # I005, I006 or I008 says what is wrong with its tensor
         light = absorbed(loaded, link)
         key = (alike[link.name], light)
-        if key not in judged:
-            judged[key] = _verdict(loaded, link, options)
-        found = judged[key]
+        if key in judged:
+            found = judged[key]
+        else:
+            found = judged[key] = _verdict(loaded, link, light, options)
         if found is not None:
             severity = INFO if light else None  # turned axes of a link lost in its body: a note
             yield loaded.diagnostic("I009", f"inertia of link '{link.name}': {found.message}", link.inertial.inertia_at, found.hint, subjects=(link.name,))._replace(severity=severity)
 
 
-def _verdict(loaded, link, options) -> Verdict | None:
-    """:func:`verdict`, unless I007 (the identity) or I010 (turned as its shapes are) says what is wrong with the tensor."""
-    if massprops.is_identity(model.declared_tensor(link)) or _rotated_with_shapes(loaded, link, options) is not None:
+def _verdict(loaded, link, light: bool, options) -> Verdict | None:
+    """:func:`verdict`, unless I007 (the identity) or I010 (turned as its shapes are) says what is wrong with the tensor;
+    ``light``: whether the link is lost in its body (:func:`absorbed`)."""
+    found = _assess(loaded, link, options)
+    if found is None or massprops.is_identity(found.declared) or _rotated(found, options["tolerance"]) is not None:
         return None
-    return verdict(loaded, link, options["tolerance"], options.get("density") or None)
+    return verdict(loaded, found, light, options["tolerance"], options.get("density") or None)
 
 
 def _reported_elsewhere(loaded, options) -> set[str]:
@@ -453,10 +455,15 @@ def _rotated_with_shapes(loaded, link, options):
     """(assessment, (rpy, difference once rotated)) when I010 reports the link: rotated as
     its shapes are, the tensor fits within the tolerance, or comes at least twice as close."""
     found = _assess(loaded, link, options)
-    if found is None or not found.off(options["tolerance"]):
+    return _rotated(found, options["tolerance"]) if found is not None else None
+
+
+def _rotated(found, tolerance: float):
+    """:func:`_rotated_with_shapes` of the link's assessment."""
+    if not found.off(tolerance):
         return None
     rotated = model.rotated_fit(found)
-    if rotated is None or (rotated[1] > options["tolerance"] and rotated[1] > found.difference / 2):
+    if rotated is None or (rotated[1] > tolerance and rotated[1] > found.difference / 2):
         return None
     return found, rotated
 
@@ -613,18 +620,20 @@ def _long_axis_swapped(declared, expected) -> tuple[str, float, float] | None:
     return "xyz"[axis], about, about / declared_moments[0]
 
 
-def verdict(loaded: Loaded, link: Link, tolerance: float = massprops.TOLERANCE, density: float | None = None) -> Verdict | None:
-    """The one thing the geometry proves wrong about the link's tensor, if any.
+def verdict(loaded: Loaded, found: Assessment, light: bool, tolerance: float = massprops.TOLERANCE, density: float | None = None) -> Verdict | None:
+    """The one thing the geometry proves wrong about a link's tensor, if any: ``found`` is its
+    assessment (at ``density``), ``light`` whether it is lost in its body (:func:`absorbed`).
 
     In order: a moment larger than any distribution of the mass in the geometry's bounding
     box allows; principal moments that match the geometry's on axes that do not; with a
     density, any difference beyond the tolerance from that uniform body; a tensor orders of
     magnitude below a uniform body's. Anything else (a CAD tensor within a few times of the
     uniform body's) is left alone."""
+    link = found.link
     declared = declared_body(link)
     if declared is None or massprops.is_negligible(declared.tensor):
         return None
-    light = absorbed(loaded, link)  # lost in its body: only a rotation, which a formula got wrong, is worth saying
+    # a light link, lost in its body: only a rotation, which a formula got wrong, is worth saying
     limits = reach(loaded, link, declared) if not light else None
     if limits is not None:
         worst = max(range(3), key=lambda i: declared.tensor[i][i] / limits.bounds[i] if limits.bounds[i] > 0 else math.inf)
@@ -640,8 +649,7 @@ def verdict(loaded: Loaded, link: Link, tolerance: float = massprops.TOLERANCE, 
                 f"the tensor, the centre of mass or the mass is wrong{' (units?)' if factor >= UNITS_FACTOR else ''}; "
                 "`urdfcli inertia --suggest` prints a uniform body's values as a start",
             )
-    found = assess(loaded, link, density)
-    if found is None or found.expected is None or massprops.is_zero(found.expected):
+    if found.expected is None or massprops.is_zero(found.expected):
         return None
     source = found.implied.source
     apart = found.difference > 2 * tolerance  # else no axes are wrong: most tensors, not compared further
