@@ -451,15 +451,10 @@ def _invalid(loaded) -> set[str]:
     return {link.name for code in ("I005", "I006") for link, _ in invalid[code]}
 
 
-def _rotated_with_shapes(loaded, link, options):
-    """(assessment, (rpy, difference once rotated)) when I010 reports the link: rotated as
-    its shapes are, the tensor fits within the tolerance, or comes at least twice as close."""
-    found = _assess(loaded, link, options)
-    return _rotated(found, options["tolerance"]) if found is not None else None
-
-
 def _rotated(found, tolerance: float):
-    """:func:`_rotated_with_shapes` of the link's assessment."""
+    """(the assessment, (rpy, difference once rotated)) when I010 reports the link it
+    assessed: rotated as its shapes are, the tensor fits within the tolerance, or comes at
+    least twice as close."""
     if not found.off(tolerance):
         return None
     rotated = model.rotated_fit(found)
@@ -514,7 +509,8 @@ def frame_rotated(loaded, given):
     for link in _declaring(loaded):
         key = alike[link.name]
         if key not in judged:
-            judged[key] = _rotated_with_shapes(loaded, link, given.options)
+            assessed = _assess(loaded, link, given.options)
+            judged[key] = _rotated(assessed, given.options["tolerance"]) if assessed is not None else None
         match = judged[key]
         if match is None:
             continue
