@@ -470,13 +470,32 @@ class EditorCase:
 
 
 def _cpu_seconds(pid: int) -> float:
-    """The processor time of a process and of its children still running (the xacro worker)."""
-    def own(process: str) -> float:
+    """The processor time of a process and of those under it still running (the server
+    under its supervisor, its xacro worker)."""
+    def own(process: int) -> float:
         fields = Path(f"/proc/{process}/stat").read_text().rsplit(")", 1)[1].split()
         return (int(fields[11]) + int(fields[12])) / os.sysconf("SC_CLK_TCK")  # utime, stime
 
-    children = [p.name for p in Path("/proc").iterdir() if p.name.isdigit() and _parent(p.name) == pid]
-    return own(str(pid)) + sum(own(child) for child in children)
+    return sum(own(process) for process in _tree(pid))
+
+
+def _memory_mib(pid: int) -> float:
+    """The memory of a process and of those under it: their proportional set sizes summed
+    (a page they share counted once in all)."""
+    def own(process: int) -> int:
+        rollup = Path(f"/proc/{process}/smaps_rollup").read_text()
+        return int(next(row.split()[1] for row in rollup.splitlines() if row.startswith("Pss:")))
+
+    return sum(own(process) for process in _tree(pid)) / 1024
+
+
+def _tree(pid: int) -> list[int]:
+    """``pid`` and the processes under it."""
+    parents = {int(p.name): _parent(p.name) for p in Path("/proc").iterdir() if p.name.isdigit()}
+    tree = [pid]
+    for member in tree:
+        tree += [child for child, parent in parents.items() if parent == member]
+    return tree
 
 
 def _parent(process: str) -> int | None:
@@ -489,7 +508,7 @@ def _parent(process: str) -> int | None:
 async def _edit_latencies(case: EditorCase, edits: int, server: list[str]) -> tuple[list[float], float, float, list[float]]:
     """Seconds from each edit sent to the server until the edited file's diagnostics of
     that version arrive, the processor time the server and its xacro worker spent per
-    edit, the server's resident memory at the end (MiB), and the seconds from each edit
+    edit, the memory of the server's processes at the end (MiB), and the seconds from each edit
     until the list of the other open file (the model a library is opened from) arrives."""
     import asyncio
 
@@ -547,8 +566,7 @@ async def _edit_latencies(case: EditorCase, edits: int, server: list[str]) -> tu
             if path != case.edited:
                 others.append(await published_after(from_fs_path(str(path)), sent) - sent)
     cpu = (_cpu_seconds(pid) - cpu) / edits
-    status = Path(f"/proc/{pid}/status").read_text()
-    rss = int(next(row.split()[1] for row in status.splitlines() if row.startswith("VmRSS:"))) / 1024
+    rss = _memory_mib(pid)
     await client.shutdown_async(None)
     client.exit(None)
     await client.stop()

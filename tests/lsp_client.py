@@ -183,9 +183,33 @@ async def editing(root: Path, cache: Path, **options):
 
 
 def server_memory_kib(editor: Editor) -> int:
-    """The server process's resident memory (VmRSS), in KiB."""
-    status = Path(f"/proc/{editor.server.pid}/status").read_text()
-    return int(next(line.split()[1] for line in status.splitlines() if line.startswith("VmRSS:")))
+    """The memory of the server's processes (the supervisor, the server it runs, their
+    xacro workers): the sum of their proportional set sizes (a page shared by several
+    counted once in all), in KiB."""
+    return sum(_pss_kib(pid) for pid in process_tree(editor.server.pid))
+
+
+def process_tree(pid: int) -> list[int]:
+    """``pid`` and the processes under it, running now."""
+    parents = {}
+    for entry in Path("/proc").iterdir():
+        if entry.name.isdigit():
+            try:
+                parents[int(entry.name)] = int((entry / "stat").read_text().rsplit(") ", 1)[1].split()[1])
+            except (OSError, IndexError, ValueError):  # gone meanwhile
+                continue
+    tree = [pid]
+    for member in tree:
+        tree += [child for child, parent in parents.items() if parent == member]
+    return tree
+
+
+def _pss_kib(pid: int) -> int:
+    try:
+        rollup = Path(f"/proc/{pid}/smaps_rollup").read_text()
+    except OSError:  # gone meanwhile
+        return 0
+    return int(next(line.split()[1] for line in rollup.splitlines() if line.startswith("Pss:")))
 
 
 class Wire:

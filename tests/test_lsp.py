@@ -10,6 +10,7 @@ import re
 import shutil
 import subprocess
 import sys
+import time
 from pathlib import Path
 from urllib.parse import urlparse
 from urllib.request import url2pathname
@@ -516,9 +517,10 @@ async def test_memory_is_given_back_when_a_large_file_is_closed(tmp_path, cache)
         await editor.diagnostics(small)
         for _ in range(2):
             editor.edit(small, 'name="l5"', 'name="l5x"')
-            await editor.diagnostics(small)
+            checked_small = await editor.diagnostics(small)
             editor.edit(small, 'name="l5x"', 'name="l5"')
             await editor.diagnostics(small)
+        assert checked_small  # (the link renamed, its joint names one that is not)
         await asyncio.sleep(1)
         before = server_memory_kib(editor)
         editor.open(large)
@@ -529,10 +531,12 @@ async def test_memory_is_given_back_when_a_large_file_is_closed(tmp_path, cache)
         mark = editor.mark()
         editor.close(large)
         assert await editor.diagnostics(large, mark) == []
-        await asyncio.sleep(1)
-        after = server_memory_kib(editor)
+        # the supervisor replaces the server, which held far less than its peak
+        deadline = time.monotonic() + 60
+        while (after := server_memory_kib(editor)) - before > before / 10 and time.monotonic() < deadline:
+            await asyncio.sleep(0.5)
         print(f"server memory before, with and after a 5.5 MB file: {before // 1024}, {opened // 1024}, {after // 1024} MiB")
         assert opened - before > 50 * 1024  # it was held while open
-        assert after - before < 20 * 1024, (before, after)  # KiB: what stays is Python's allocator's arenas (4-11 MiB), not the file
-        if after - before > before / 10:  # the bound asked for: within 10% of the level before
-            pytest.xfail(f"{(after - before) // 1024} MiB more than before the file was opened ({after / before - 1:.0%}; at most 10% is asked)")
+        assert after - before <= before / 10, (before, after)  # within 10% of the level before
+        editor.edit(small, 'name="l5"', 'name="l5x"')  # and the new server checks what is open
+        assert [d.code for d in await editor.diagnostics(small)] == [d.code for d in checked_small]

@@ -14,6 +14,7 @@ NEEDED = ("pygls", "lsprotocol")
 def lsp(
     package_path: PackagePathOption = None,
     stdio: Annotated[bool, typer.Option("--stdio", help="Accepted for the clients that pass it: standard input and output are the only transport.")] = False,
+    in_process: Annotated[bool, typer.Option("--in-process", hidden=True, help="Serve in this process: what the supervisor runs.")] = False,
 ) -> None:
     """Run the language server for editors: diagnostics of URDF and xacro files as you type, hover, go to definition, completion and quick fixes.
 
@@ -22,6 +23,13 @@ def lsp(
     from ..read.packages import PackageError
 
     try:
+        if not in_process:  # a small process that passes messages to the server and replaces it to give memory back
+            import lsprotocol  # noqa: F401 - said missing here, not by the server it would start
+            import pygls  # noqa: F401
+
+            from ..lsp import supervisor
+
+            raise typer.Exit(supervisor.supervise(tuple(package_path or ())))
         from ..lsp import server
     except ModuleNotFoundError as error:
         if (error.name or "").partition(".")[0] not in NEEDED:

@@ -52,6 +52,7 @@ from ..version import __version__
 from .engine import Checked, Checker, Fix, Mark, Navigator
 from .places import Place, Point
 from .rulepages import rule_links
+from .supervisor import OPEN_DOCUMENTS
 
 # Long enough to take in the changes an editor sends together (a paste, a completion,
 # an auto-indent), short enough not to be felt: changes further apart than this, as
@@ -604,6 +605,13 @@ def build(package_paths: tuple[str, ...] = ()) -> UrdfServer:
     @server.feature(types.EXIT)
     def exit_(ls: UrdfServer, params: None) -> None:
         ls.exit_code = 0 if ls.shut_down else 1
+
+    @server.feature(OPEN_DOCUMENTS)
+    def open_documents(ls: UrdfServer, params) -> list[dict]:
+        """The supervisor's: the documents open, as the client's didOpen gives them, the
+        one the user looked at last at the end (a server that replaces this one checks it first)."""
+        documents = sorted(ls.workspace.text_documents.values(), key=lambda d: ls.looked.get(checkable(d.uri) or "", 0.0))
+        return [{"uri": d.uri, "languageId": d.language_id or "", "version": d.version or 0, "text": d.source} for d in documents]
 
     return server
 
