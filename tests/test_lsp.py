@@ -5,6 +5,7 @@ it includes from another (tests/ros_workspace.py)."""
 from __future__ import annotations
 
 import asyncio
+import io
 import json
 import re
 import shutil
@@ -18,7 +19,7 @@ from urllib.request import url2pathname
 import pytest
 from conftest import FIXTURES, run_cli
 from models import CRATE
-from lsp_client import Wire, editing, position, server_memory_kib, uri
+from lsp_client import Wire, editing, position, process_tree, server_memory_kib, uri
 from lsprotocol import types
 from ros_workspace import line_of, make_repository
 
@@ -477,6 +478,35 @@ def test_exit_without_shutdown_is_exit_code_1(repository, cache):
     assert wire.exit_code() == 1
 
 
+def test_the_server_ends_with_its_supervisor_killed(repository, cache):
+    wire = Wire(repository, cache)
+    wire.initialize(repository)
+    server = process_tree(wire.process.pid)
+    assert len(server) == 3  # the supervisor, the server, its xacro worker
+    wire.process.kill()
+    wire.process.wait()
+    deadline = time.monotonic() + 5
+    while any(Path(f"/proc/{pid}").exists() and b") Z" not in Path(f"/proc/{pid}/stat").read_bytes() for pid in server[1:]) and time.monotonic() < deadline:
+        time.sleep(0.02)
+    assert time.monotonic() < deadline
+
+
+@pytest.mark.parametrize(
+    ("stream", "bodies"),
+    [
+        (b"Content-Length: 2\r\n\r\n{}Content-Length: 4\r\nContent-Type: x\r\n\r\nnull", [b"{}", b"null"]),
+        (b"Content-Length: 5\r\n\r\n{}", []),  # cut short: the end
+        (b"X-Other: 1\r\n\r\nContent-Length: 2\r\n\r\n[]", [b"[]"]),  # a header block without a length is skipped
+        (b"Content-Length: -1\r\n\r\nContent-Length: 1\r\n\r\n1", [b"1"]),
+    ],
+)
+def test_the_supervisor_reads_messages_as_framed(stream, bodies):
+    from urdfcli.lsp.supervisor import read_message
+
+    reader = io.BytesIO(stream)
+    assert list(iter(lambda: read_message(reader), None)) == bodies
+
+
 @pytest.mark.asyncio
 async def test_completion_and_definition_of_link_names_a_macro_writes_with_its_prefix(repository, cache):
     library = wheel(repository)
@@ -523,6 +553,7 @@ async def test_memory_is_given_back_when_a_large_file_is_closed(tmp_path, cache)
         assert checked_small  # (the link renamed, its joint names one that is not)
         await asyncio.sleep(1)
         before = server_memory_kib(editor)
+        first_server = process_tree(editor.server.pid)[1]
         editor.open(large)
         await editor.diagnostics(large)
         editor.edit(large, 'name="l5"', 'name="l5x"')
@@ -538,5 +569,9 @@ async def test_memory_is_given_back_when_a_large_file_is_closed(tmp_path, cache)
         print(f"server memory before, with and after a 5.5 MB file: {before // 1024}, {opened // 1024}, {after // 1024} MiB")
         assert opened - before > 50 * 1024  # it was held while open
         assert after - before <= before / 10, (before, after)  # within 10% of the level before
-        editor.edit(small, 'name="l5"', 'name="l5x"')  # and the new server checks what is open
+        # a new server, which checks what is open and answers as the first did
+        assert process_tree(editor.server.pid)[1] != first_server
+        editor.edit(small, 'name="l5"', 'name="l5x"')
         assert [d.code for d in await editor.diagnostics(small)] == [d.code for d in checked_small]
+        assert "l4" in await editor.hover(small, '<parent link="l4"/>', len('<parent link="l'))
+        assert len(editor.registrations) == 1  # its watched files are the first server's, registered once
