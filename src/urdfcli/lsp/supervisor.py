@@ -9,7 +9,8 @@ the file was opened, which no collection gives back; a process's end does. So wh
 client has closed a file and the server holds far less than its peak did (:data:`LET_GO`),
 the supervisor starts a new server, gives it the client's ``initialize`` and the
 documents the old one has open, sends it the client's messages from then on, and lets
-the old one answer what it was asked, then end. The new server checks the open
+the old one answer what it was asked, then end (its input closed, as when a client is
+gone). The new server checks the open
 documents again and publishes their diagnostics.
 
 It imports nothing of the server's (pygls, the rules): it stays small. Only Linux tells a
@@ -24,6 +25,7 @@ import os
 import subprocess
 import sys
 import threading
+import time
 from pathlib import Path
 from typing import BinaryIO
 
@@ -31,10 +33,11 @@ OPEN_DOCUMENTS = "urdfcli/openDocuments"  # the server's own request: its open d
 LET_GO = 64 * 1024  # KiB: a server whose peak was this much above what it holds now is replaced
 SETTLE = 1.0  # seconds after the client's last didClose before the server's memory is looked at
 STARTING = 60.0  # seconds a new server may take to answer initialize
-ANSWERING = 5.0  # seconds a running server may take to answer the supervisor
+ANSWERING = 5.0  # seconds a server may take to answer the supervisor, and a replaced one the client
 OWN = "urdfcli-supervisor-"  # the ids of the supervisor's own requests
-# What the supervisor looks for in the client's messages; one without any of these is passed on unread
-_NOTED = (b"initialize", b"shutdown", b"exit", b"didClose")
+# What the supervisor looks for in the client's messages (a request's id, the methods it
+# follows); one without any of these is passed on unread
+_NOTED = (b'"id"', b"initialize", b"shutdown", b"exit", b"didClose")
 
 
 def read_message(stream: BinaryIO) -> bytes | None:
@@ -88,6 +91,7 @@ class Server:
         self.process = subprocess.Popen(command, stdin=subprocess.PIPE, stdout=subprocess.PIPE)
         self.replacement = replacement  # its registrations are the first server's: the client has them
         self.retired = False  # replaced: only its answers to the client's requests go on
+        self.asked: set = set()  # the ids of the client's requests it has not answered yet
         self.relay: threading.Thread | None = None  # its messages to the client
         self._writing = threading.Lock()
 
@@ -141,6 +145,8 @@ class Supervisor:
             self.initialized |= method == "initialized"
             self.shut_down |= method == "shutdown"
             with self.routing:
+                if method is not None and "id" in found:
+                    self.server.asked.add(_key(found["id"]))
                 self.server.send(body)
             if method == "textDocument/didClose":
                 self._settle()
@@ -169,6 +175,10 @@ class Supervisor:
         while (body := read_message(server.process.stdout)) is not None:
             if OWN.encode() in body and self._answered(body):
                 continue
+            if server.asked and (b'"result"' in body or b'"error"' in body):
+                found = parsed(body)
+                if "method" not in found:
+                    server.asked.discard(_key(found.get("id")))
             if server.retired:
                 found = parsed(body)
                 if "method" in found or "id" not in found:
@@ -243,9 +253,15 @@ class Supervisor:
                 new.send(message("initialized", {}))
             for document in documents["result"]:
                 new.send(message("textDocument/didOpen", {"textDocument": document}))
-        self._ask(old, "shutdown", None, ANSWERING)  # after what the client asked it before
-        old.send(message("exit", None))
+        deadline = time.monotonic() + ANSWERING  # it answers what the client asked it, then ends
+        while old.asked and time.monotonic() < deadline:
+            time.sleep(0.01)
         old.close()
+
+
+def _key(id_) -> str:
+    """A request's id as a key: 1 and "1" are two ids."""
+    return json.dumps(id_)
 
 
 def supervise(package_paths: tuple[str, ...] = ()) -> int:
