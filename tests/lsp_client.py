@@ -186,7 +186,7 @@ def server_memory_kib(editor: Editor) -> int:
     """The memory of the server's processes (the supervisor, the server it runs, their
     xacro workers): the sum of their proportional set sizes (a page shared by several
     counted once in all), in KiB."""
-    return sum(_pss_kib(pid) for pid in process_tree(editor.server.pid))
+    return sum(pss_kib(pid) for pid in process_tree(editor.server.pid))
 
 
 def process_tree(pid: int) -> list[int]:
@@ -204,7 +204,7 @@ def process_tree(pid: int) -> list[int]:
     return tree
 
 
-def _pss_kib(pid: int) -> int:
+def pss_kib(pid: int) -> int:
     try:
         rollup = Path(f"/proc/{pid}/smaps_rollup").read_text()
     except OSError:  # gone meanwhile

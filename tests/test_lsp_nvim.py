@@ -17,7 +17,7 @@ from pathlib import Path
 import pytest
 from conftest import run_cli
 from models import FIXABLE_ARM
-from lsp_client import process_tree
+from lsp_client import pss_kib, process_tree
 from nvim_client import Neovim, process_alive
 from ros_workspace import XACRO, line_of, make_colcon_workspace, make_repository
 
@@ -185,6 +185,36 @@ def test_a_huge_paste_is_checked_answered_and_undone(tmp_path, editor):
     mark = nvim.mark()
     nvim.nvim.command("normal! u")
     assert nvim.wait(model, mark) == []
+
+
+# -- a large buffer closed ----------------------------------------------------------------------------
+def test_closing_a_large_buffer_gives_its_memory_back_and_editing_goes_on(tmp_path, editor):
+    model, library = repository(tmp_path / "acme")
+    large = tmp_path / "acme" / "large.urdf"
+    inertial = '<inertial><mass value="1"/><inertia ixx="1" ixy="0" ixz="0" iyy="1" iyz="0" izz="1"/></inertial>'
+    large.write_text('<robot name="large">\n  <link name="base_link"/>\n' + chain(20_000).replace("<collision>", inertial + "<collision>") + "</robot>\n")  # 5 MB
+    nvim = editor()
+    nvim.open(model)
+    nvim.wait(model)
+    time.sleep(1)
+    server = process_tree(nvim.server_pid())  # the supervisor, the server, its xacro worker
+    before = sum(map(pss_kib, server))
+    nvim.open(large)
+    nvim.wait(large)
+    opened = sum(map(pss_kib, process_tree(nvim.server_pid())))
+    nvim.nvim.command(f"bwipeout {nvim.buffers.pop(large)}")  # didClose
+    deadline = time.monotonic() + 60
+    while process_tree(nvim.server_pid())[1] == server[1] and time.monotonic() < deadline:
+        time.sleep(0.2)
+    time.sleep(1)
+    after = sum(map(pss_kib, process_tree(nvim.server_pid())))
+    print(f"server memory before, with and after a 5 MB buffer: {before // 1024}, {opened // 1024}, {after // 1024} MiB")
+    assert opened - before > 100 * 1024 and after - before <= before / 10
+    assert nvim.servers() == 1 and not process_alive(server[1])  # replaced, under the same supervisor
+    nvim.type(model, 'parent="base_link"', "x", offset=len('parent="base_link'))  # a link that is not: J005 at the call
+    assert ("J005", line_of(model, '<xacro:wheel prefix="left"')) in shown(nvim.wait(model))
+    answer = nvim.request(model, "textDocument/hover", '<xacro:wheel prefix="left"', 1)
+    assert "J005" in answer["result"]["contents"]["value"]
 
 
 # -- the client gone --------------------------------------------------------------------------------------
