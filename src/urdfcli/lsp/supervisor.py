@@ -10,8 +10,7 @@ client has closed a file and the server holds far less than its peak did (:data:
 the supervisor starts a new server, gives it the client's ``initialize`` and the
 documents the old one has open, sends it the client's messages from then on, and lets
 the old one answer what it was asked, then end (its input closed, as when a client is
-gone). The new server checks the open
-documents again and publishes their diagnostics.
+gone). The new server checks the open documents again and publishes their diagnostics.
 
 It imports nothing of the server's (pygls, the rules): it stays small. Only Linux tells a
 process's peak (``/proc``); elsewhere the server is never replaced.
@@ -175,15 +174,13 @@ class Supervisor:
         while (body := read_message(server.process.stdout)) is not None:
             if OWN.encode() in body and self._answered(body):
                 continue
-            if server.asked and (b'"result"' in body or b'"error"' in body):
-                found = parsed(body)
-                if "method" not in found:
-                    server.asked.discard(_key(found.get("id")))
-            if server.retired:
-                found = parsed(body)
-                if "method" in found or "id" not in found:
-                    continue
-            elif server.replacement and b"client/registerCapability" in body:
+            answer = server.asked and (b'"result"' in body or b'"error"' in body)
+            found = parsed(body) if answer or server.retired else {}
+            if "id" in found and "method" not in found:
+                server.asked.discard(_key(found["id"]))
+            elif server.retired:
+                continue
+            if server.replacement and b"client/registerCapability" in body:
                 found = parsed(body)
                 if found.get("method") == "client/registerCapability":
                     server.send(json.dumps({"jsonrpc": "2.0", "id": found.get("id"), "result": None}).encode())
