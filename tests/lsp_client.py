@@ -217,10 +217,10 @@ class Wire:
     client never sends (invalid params, changes to documents never opened, exit
     without shutdown): the raw JSON-RPC exchange, read on a thread of its own."""
 
-    def __init__(self, root: Path, cache: Path):
+    def __init__(self, root: Path, cache: Path, command: tuple[str, ...] = ("-m", "urdfcli", "lsp")):
         environment = {**os.environ, "XDG_CACHE_HOME": str(cache)}
         self.process = subprocess.Popen(
-            [sys.executable, "-m", "urdfcli", "lsp"], cwd=root, env=environment, stdin=subprocess.PIPE, stdout=subprocess.PIPE, stderr=subprocess.PIPE
+            [sys.executable, *command], cwd=root, env=environment, stdin=subprocess.PIPE, stdout=subprocess.PIPE, stderr=subprocess.PIPE
         )
         self.received: list[dict] = []
         self.next_id = 0

@@ -480,6 +480,16 @@ def test_exit_without_shutdown_is_exit_code_1(repository, cache):
     assert wire.exit_code() == 1
 
 
+def test_a_folder_named_urdfcli_in_the_workspace_is_not_the_server_run(tmp_path, cache):
+    (tmp_path / "urdfcli").mkdir()
+    (tmp_path / "urdfcli" / "__init__.py").write_text("raise SystemExit('the workspace folder was imported')")
+    wire = Wire(tmp_path, cache, ("-P", "-m", "urdfcli", "lsp"))  # as the urdfcli program starts: its folder, not the workspace, on the path
+    assert "capabilities" in wire.request("initialize", {"processId": None, "rootUri": uri(tmp_path), "capabilities": {}})["result"]
+    assert wire.request("shutdown", None)["result"] is None
+    wire.notify("exit", None)
+    assert wire.exit_code() == 0
+
+
 def test_the_server_ends_with_its_supervisor_killed(repository, cache):
     wire = Wire(repository, cache)
     wire.initialize(repository)

@@ -264,5 +264,7 @@ def _key(id_) -> str:
 def supervise(package_paths: tuple[str, ...] = ()) -> int:
     """Run the server (``urdfcli lsp --in-process``) under a supervisor on standard input
     and output; the exit code is the server's."""
-    command = [sys.executable, "-m", "urdfcli", "lsp", "--in-process", *(f"--package-path={path}" for path in package_paths)]
+    # -P: the working folder (the user's workspace) is not put first on the module path,
+    # where a folder of it named urdfcli would be imported in place of urdfcli
+    command = [sys.executable, "-P", "-m", "urdfcli", "lsp", "--in-process", *(f"--package-path={path}" for path in package_paths)]
     return Supervisor(command, sys.stdin.buffer, sys.stdout.buffer).run()
