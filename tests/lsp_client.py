@@ -204,6 +204,15 @@ def process_tree(pid: int) -> list[int]:
     return tree
 
 
+def process_alive(pid: int) -> bool:
+    """Whether ``pid`` runs (a process ended but not yet waited for does not)."""
+    try:
+        with open(f"/proc/{pid}/stat") as stat:
+            return stat.read().split(") ")[-1].split()[0] != "Z"
+    except (FileNotFoundError, ProcessLookupError):  # gone before the open, or between the open and the read
+        return False
+
+
 def pss_kib(pid: int) -> int:
     try:
         rollup = Path(f"/proc/{pid}/smaps_rollup").read_text()

@@ -290,11 +290,3 @@ def position(text: str, needle: str, offset: int = 0) -> tuple[int, int]:
     """The 0-based line and character ``offset`` characters into the first ``needle``."""
     at = text.index(needle) + offset
     return text.count("\n", 0, at), at - (text.rfind("\n", 0, at) + 1)
-
-
-def process_alive(pid: int) -> bool:
-    try:
-        with open(f"/proc/{pid}/stat") as stat:
-            return stat.read().split(") ")[-1].split()[0] != "Z"
-    except (FileNotFoundError, ProcessLookupError):  # gone before the open, or between the open and the read
-        return False

@@ -17,8 +17,8 @@ from pathlib import Path
 import pytest
 from conftest import run_cli
 from models import FIXABLE_ARM
-from lsp_client import pss_kib, process_tree
-from nvim_client import Neovim, process_alive
+from lsp_client import process_alive, process_tree, pss_kib
+from nvim_client import Neovim
 from ros_workspace import XACRO, line_of, make_colcon_workspace, make_repository
 
 # Neovim sends a change at most every 150 ms while typing goes on; a server that published
@@ -189,7 +189,7 @@ def test_a_huge_paste_is_checked_answered_and_undone(tmp_path, editor):
 
 # -- a large buffer closed ----------------------------------------------------------------------------
 def test_closing_a_large_buffer_gives_its_memory_back_and_editing_goes_on(tmp_path, editor):
-    model, library = repository(tmp_path / "acme")
+    model, _ = repository(tmp_path / "acme")
     large = tmp_path / "acme" / "large.urdf"
     inertial = '<inertial><mass value="1"/><inertia ixx="1" ixy="0" ixz="0" iyy="1" iyz="0" izz="1"/></inertial>'
     large.write_text('<robot name="large">\n  <link name="base_link"/>\n' + chain(20_000).replace("<collision>", inertial + "<collision>") + "</robot>\n")  # 5 MB
