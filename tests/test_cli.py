@@ -38,6 +38,25 @@ def test_options_read_as_words_and_every_command_has_color(command):
         assert re.search(r"--format\s+-f\s+(FORMAT|dot)\s", line), line
 
 
+ALL_COMMANDS = (*COMMANDS, "diff", "drift", "lsp")
+
+
+@pytest.mark.parametrize("command", ALL_COMMANDS)
+def test_every_option_help_shows_whole(command):
+    """The help screen shows each option's help text as written: rich reads `[word]` as
+    markup and drops it (`in [tool.urdfcli]` once showed as `in )`)."""
+    import typer.main
+
+    from urdfcli.cli import build_app
+
+    text = " ".join(re.sub(r"[│╭╰─╮╯]", " ", run_cli(command, "--help", env={"COLUMNS": "400"}).stdout.decode()).split())
+    click_command = typer.main.get_command(build_app((command,))).commands[command]
+    for parameter in click_command.params:
+        help_text = getattr(parameter, "help", None)
+        if help_text and not getattr(parameter, "hidden", False):
+            assert " ".join(help_text.split()) in text, (parameter.name, help_text)
+
+
 def test_lint_help_paragraphs_wrap_as_one():
     """The docstring's own line breaks do not show: no short line inside a paragraph."""
     text = run_cli("lint", "--help", env={"COLUMNS": "80"}).stdout.decode()

@@ -159,14 +159,19 @@ def test_drift_command_finds_the_urdfs_generated_from_a_changed_library(tmp_path
     (package / "urdf" / "other.xacro").write_text(f'<robot name="o" xmlns:xacro="http://www.ros.org/wiki/xacro"><link name="a"/></robot>\n')
     done = run_cli("drift", "urdf/other.xacro", cwd=package)
     assert (done.returncode, done.stdout, done.stderr) == (0, b"", b"")
-    # fixed: the URDF regenerated keeping its header
+    # the safe fixes leave it alone: regenerating it changes the robot, and would drop an edit made to the URDF
     urdf = package / "urdf" / "kr16_2.urdf"
-    header = urdf.read_text().split("<robot", 1)[0]
+    before = urdf.read_text()
+    header = before.split("<robot", 1)[0]
     done = run_cli("lint", "--fix", "--select", "X110", "urdf/kr16_2.urdf", cwd=package)
+    assert "0 fixed, 1 remaining" in done.stdout.decode() and urdf.read_text() == before, done.stdout.decode()
+    assert "X110 warning" in done.stdout.decode()
+    # fixed with the unsafe fixes: the URDF regenerated keeping its header
+    done = run_cli("lint", "--fix", "--unsafe-fixes", "--select", "X110", "urdf/kr16_2.urdf", cwd=package)
     assert "1 fixed, 0 remaining" in done.stdout.decode(), done.stdout.decode()
     text = urdf.read_text()
     assert text.split("<robot", 1)[0] == header and '<link name="flange"/>' in text
-    done = run_cli("lint", "--fix", "--select", "X110", "urdf/kr16_2.urdf", cwd=package)
+    done = run_cli("lint", "--fix", "--unsafe-fixes", "--select", "X110", "urdf/kr16_2.urdf", cwd=package)
     assert "0 fixed, 0 remaining" in done.stdout.decode() and urdf.read_text() == text  # nothing left to fix
     done = run_cli("drift", cwd=package)
     assert done.returncode == 0, done.stdout.decode()

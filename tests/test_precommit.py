@@ -226,6 +226,26 @@ def test_commits_to_a_ros_repository_check_libraries_through_their_models(tmp_pa
     assert re.search(r"urdfcli lint\.+\(no files to check\)Skipped", out)
 
 
+def test_the_fix_hook_keeps_an_edit_made_to_a_generated_urdf_and_the_drift_hook_says_it(tmp_path, hooks):
+    """A limit changed by hand in a committed generated URDF: regenerating it (X110's fix,
+    unsafe) would silently drop the edit, so the fix hook leaves the file as staged; the
+    drift hook fails the commit, naming the difference."""
+    repo = tmp_path / "kuka_experimental"
+    package = kuka_package(repo, generated_with_flange=True)
+    commit = installed(repo, hooks, "urdfcli-fix", "urdfcli-drift")
+    urdf = package / "urdf" / "kr16_2.urdf"
+    code, out = commit("the package, its URDF generated from its xacro")
+    assert code == 0, out
+
+    edited = urdf.read_text().replace('upper="0.6108652381980153"', 'upper="0.7"', 1)
+    assert edited != urdf.read_text()
+    urdf.write_text(edited)
+    code, out = commit("joint a2 reaches further, in the URDF", "kuka_kr16_support/urdf/kr16_2.urdf")
+    assert code == 1, out
+    assert re.search(r"urdfcli fix\.+Passed", out) and urdf.read_text() == edited  # the edit kept
+    assert re.search(r"urdfcli drift\.+Failed", out) and "X110 warning: kr16_2.urdf does not match" in out
+
+
 def test_drift_hook_fails_a_commit_whose_xacro_leaves_the_generated_urdf_behind(tmp_path, hooks):
     """urdfcli-drift on real commits to a package built like kuka_kr16_support: a change to the
     macro file alone fails (the URDF generated from the model including it no longer matches);

@@ -10,6 +10,7 @@ import textwrap
 
 import pytest
 from conftest import run_cli
+from differential import real_xacro
 from ros_workspace import make_ros_workspace
 
 BAXTER = "src/baxter_common/baxter_description/urdf"
@@ -197,3 +198,62 @@ def test_a_fragment_nothing_includes_is_named_once_without_its_missing_context(t
             "not checked (name 'name' is not defined, when evaluating expression 'name')",
             "0 files checked: 0 errors, 0 warnings",
         ]
+
+
+def _arm_with_fragment(root, reads: str):
+    """A package like ur_description: ur5e.xacro declares robot_model and includes ur.xacro, a
+    fragment that declares prefix and calls the arm's macro with ``reads`` for its prefix."""
+    package = root / "repo" / "arm_description"
+    (root / "repo" / ".git").mkdir(parents=True)
+    (package / "urdf").mkdir(parents=True)
+    (package / "package.xml").write_text('<package format="3"><name>arm_description</name></package>\n')
+    (package / "urdf" / "arm_macro.xacro").write_text(
+        '<robot xmlns:xacro="http://ros.org/wiki/xacro">\n  <xacro:macro name="arm" params="prefix">\n'
+        '    <link name="${prefix}base_link"/>\n  </xacro:macro>\n</robot>\n'
+    )
+    (package / "urdf" / "ur.xacro").write_text(
+        '<robot xmlns:xacro="http://ros.org/wiki/xacro" name="$(arg robot_model)">\n'
+        '  <xacro:arg name="prefix" default=""/>\n  <xacro:include filename="$(find arm_description)/urdf/arm_macro.xacro"/>\n'
+        f'  <xacro:arm\n    prefix="{reads}"/>\n</robot>\n'
+    )
+    (package / "urdf" / "ur5e.xacro").write_text(
+        '<robot xmlns:xacro="http://ros.org/wiki/xacro" name="ur5e">\n  <xacro:arg name="robot_model" default="ur5e"/>\n'
+        '  <xacro:include filename="$(find arm_description)/urdf/ur.xacro"/>\n</robot>\n'
+    )
+    return package
+
+
+def test_an_argument_misspelt_in_a_fragment_is_an_error_with_the_name_meant(tmp_path):
+    """$(arg prefx) where only prefix is declared: xacro refuses every model, and no
+    [tool.urdfcli] models setting can be what is missing: an error at the call, naming prefix."""
+    package = _arm_with_fragment(tmp_path, "$(arg prefx)")
+    (package / "urdf" / "alone.xacro").write_text(  # the real xacro, on the fragment made whole ($(find) aside)
+        (package / "urdf" / "ur.xacro").read_text().replace("$(find arm_description)/urdf/", "").replace("$(arg robot_model)", "ur5e"))
+    xacro = real_xacro(package / "urdf" / "alone.xacro")
+    (package / "urdf" / "alone.xacro").unlink()
+    assert xacro.returncode != 0 and "Undefined substitution argument prefx" in xacro.stderr
+    for command in ("check", "lint"):
+        done = run_cli(command, "--format", "concise", "arm_description/urdf/ur.xacro", cwd=tmp_path / "repo")
+        out = (done.stdout + done.stderr).decode()
+        assert done.returncode == 1, out
+        assert "arm_description/urdf/ur.xacro:4:3: X003 error: Undefined substitution argument prefx (" in out
+        assert "hint: did you mean $(arg prefix)? No <xacro:arg> declares 'prefx')" in out
+        assert "needs xacro argument" not in out
+
+
+def test_a_fragment_whose_models_all_need_arguments_is_a_gap_lint_fails_on(tmp_path):
+    """An argument no file declares and no name is close to (given on xacro's command line): the
+    models cannot be expanded without it; the fragment, which cannot be read alone, is
+    then checked by nothing. X006, as for a library: lint fails, check passes."""
+    _arm_with_fragment(tmp_path, "$(arg prefix)$(arg arm_side)")
+    done = run_cli("lint", "--format", "concise", "arm_description/urdf/ur.xacro", cwd=tmp_path / "repo")
+    out = done.stdout.decode()
+    assert done.returncode == 1, out
+    assert out.startswith("arm_description/urdf/ur.xacro: X006 warning: xacro fragment not checked: no model that includes it "
+                          "could check it (arm_description/urdf/ur5e.xacro needs 'arm_side')")
+    done = run_cli("check", "arm_description/urdf/ur.xacro", cwd=tmp_path / "repo")
+    assert done.returncode == 0 and "X006 warning" in done.stderr.decode()
+    (tmp_path / "repo" / "pyproject.toml").write_text('[tool.urdfcli]\nmodels = { "arm_description/urdf/ur5e.xacro" = [["arm_side:=left_"]] }\n')
+    done = run_cli("lint", "arm_description/urdf/ur.xacro", cwd=tmp_path / "repo")
+    assert done.returncode == 0 and "X006" not in done.stdout.decode(), done.stdout.decode()
+    assert "fragment, checked through arm_description/urdf/ur5e.xacro [arm_side:=left_]" in done.stdout.decode()

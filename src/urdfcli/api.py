@@ -35,7 +35,7 @@ from .project.compatibility import verdicts
 from .project.config import Config, ConfigError
 from .project.semantic import described
 from .project.workspace import Aside, Entry, Models, Target, assemble, fragment_includers, model_targets, models_below, plan, unchecked_library, unread, xacro_sources
-from .read.document import STDIN, InputError, read_document
+from .read.document import STDIN, Document, InputError, read_document
 from .read.xacro_scan import shown
 from .read.edits import EditError
 from .read.edits import apply as edit_text
@@ -244,6 +244,10 @@ def check_target(target: Target, session: Session) -> Result | Unreadable:
 
     try:
         resolver = session.resolver(config.package_paths, None if path == STDIN else Path(path))
+        if target.fragment:  # it cannot be read on its own: only why its models did not check it
+            document = Document(path, b"", Path(path), is_xacro=True, files=session.files)
+            loaded = Loaded(document, diagnostics=[unchecked_library(path, target.unchecked, fragment=True)], resolver=resolver)
+            return Result(path, tuple(linter.lint(loaded, config, rule_set)), None, target.arguments)
         if target.alone:  # a library: its own xacro, and what the source rules find in it
             document, found = read_document(path, session.inputs, resolver, arguments)
             if target.unchecked:

@@ -20,7 +20,7 @@ FixOption = Annotated[
     bool | None,
     typer.Option(
         "--fix/--no-fix",
-        help="Apply the safe fixes in place, then report what remains (default: `fix` in [tool.urdfcli]).",
+        help="Apply the safe fixes in place, then report what remains (default: `fix` of the configuration's tool.urdfcli table).",
         show_default=False,
     ),
 ]
@@ -28,8 +28,8 @@ UnsafeFixesOption = Annotated[
     bool | None,
     typer.Option(
         "--unsafe-fixes/--no-unsafe-fixes",
-        help="With --fix or --diff, also the fixes that change the robot (a tensor, a scale, a pose, a limit, the expansion) "
-        "(default: `unsafe-fixes` in [tool.urdfcli]).",
+        help="With --fix or --diff, also the fixes that change the robot (a tensor, a scale, a pose, a limit, the expansion, a generated URDF regenerated) "
+        "(default: `unsafe-fixes` of the configuration's tool.urdfcli table).",
         show_default=False,
     ),
 ]

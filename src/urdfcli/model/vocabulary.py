@@ -12,6 +12,7 @@ from collections.abc import Iterator, Mapping
 from typing import TYPE_CHECKING, NamedTuple
 
 from ..read.document import tag_name
+from ..read.names import typo_of
 
 if TYPE_CHECKING:
     from ..read.xml import Element
@@ -96,26 +97,6 @@ KNOWN_CHILDREN = {tag: frozenset(children | set(EXTENSIONS.get(tag, ({}, {}))[1]
 WALKED = {tag: frozenset(c for c in children if c in SCHEMA and c not in OPAQUE) for tag, children in KNOWN_CHILDREN.items()}
 
 
-def _edits(a: str, b: str) -> int:
-    """Edits (insertion, deletion, substitution, swap of neighbours) from a to b."""
-    previous, current = None, list(range(len(b) + 1))
-    for i in range(1, len(a) + 1):
-        before, previous, current = previous, current, [i] + [0] * len(b)
-        for j in range(1, len(b) + 1):
-            cost = a[i - 1] != b[j - 1]
-            current[j] = min(previous[j] + 1, current[j - 1] + 1, previous[j - 1] + cost)
-            if before is not None and j > 1 and a[i - 1] == b[j - 2] and a[i - 2] == b[j - 1]:
-                current[j] = min(current[j], before[j - 2] + 1)
-    return current[len(b)]
-
-
-def _typo_of(word: str, candidates) -> str | None:
-    """The candidate ``word`` is a misspelling of: one edit away (two for longer words), case aside."""
-    allowed = 1 if len(word) <= 4 else 2
-    scored = sorted((_edits(word.lower(), c.lower()), c) for c in candidates)
-    return scored[0][1] if scored and scored[0][0] <= allowed else None
-
-
 class Unknown(NamedTuple):
     """Markup that neither URDF nor a known extension defines where it is written."""
 
@@ -148,7 +129,7 @@ def unknown_attributes(element: Element, at: int, tag: str | None = None) -> Ite
         return  # the common case, decided in one step
     for name in names:
         if name not in known and not _is_foreign(name):
-            yield Unknown(at, tag, name, True, _typo_of(name, known - set(names)))
+            yield Unknown(at, tag, name, True, typo_of(name, known - set(names)))
 
 
 def unknown_markup(top: Element, positions: Mapping[Element, int]) -> list[Unknown]:
@@ -161,7 +142,7 @@ def unknown_markup(top: Element, positions: Mapping[Element, int]) -> list[Unkno
     if name not in KNOWN_CHILDREN["robot"]:
         if not _is_foreign(name):
             gazebo = name in GAZEBO_TAGS or _gazebo_material(top)
-            return [Unknown(index(top), "robot", name, False, None if gazebo else _typo_of(name, KNOWN_CHILDREN["robot"]), gazebo)]
+            return [Unknown(index(top), "robot", name, False, None if gazebo else typo_of(name, KNOWN_CHILDREN["robot"]), gazebo)]
         return []
     if name not in SCHEMA or name in OPAQUE:
         return []
@@ -189,5 +170,5 @@ def unknown_markup(top: Element, positions: Mapping[Element, int]) -> list[Unkno
             else:
                 present = {tag_name(c) for c in parent}
                 missing = {c for c in KNOWN_CHILDREN[tag] if c in REPEATED or c not in present}
-                found.append(Unknown(index(element), tag, name, False, _typo_of(name, missing), holder=index(parent), owner=owner))
+                found.append(Unknown(index(element), tag, name, False, typo_of(name, missing), holder=index(parent), owner=owner))
     return found

@@ -20,7 +20,7 @@ from collections.abc import Callable, Iterable
 from pathlib import Path
 from typing import TYPE_CHECKING, NamedTuple
 
-from ..diagnostics import Applicability, Diagnostic, Edit, Fix, Location, Severity
+from ..diagnostics import Diagnostic, Edit, Fix, Location, Severity
 from ..model.load import Loaded, load
 from ..read.document import InputError
 from ..read.packages import PackageError
@@ -167,18 +167,19 @@ def drift(loaded: Loaded, config: Config, session: Session) -> list[Diagnostic]:
 
 def regeneration_fix(loaded: Loaded, source: GeneratedFrom, found: Loaded, arguments: dict[str, str | None]) -> Fix:
     """The fix that writes the URDF again from its source's expansion, its header kept
-    (safe: the URDF says it is made from that source, and is made as xacro makes it);
-    none when the difference may come from xacro arguments, whose values are not known."""
+    (unsafe, as X110 declares: the robot loaded from the URDF changes, and an edit made to
+    it by hand goes); none when the difference may come from xacro arguments, whose
+    values are not known."""
     title = f"regenerate {_name(loaded)} from {_shown(source.file)}"
     if arguments:
-        return Fix(title, Applicability.SAFE, reason=f"it may have been generated with other values of {', '.join(arguments)}: regenerate it by hand with those")
+        return Fix(title, X110.fix, reason=f"it may have been generated with other values of {', '.join(arguments)}: regenerate it by hand with those")
     written = loaded.document.files.get(loaded.document.shown)
     expanded = found.document.expanded_text
     if written is None or expanded is None:
-        return Fix(title, Applicability.SAFE, reason="the texts to compare cannot be read")
+        return Fix(title, X110.fix, reason="the texts to compare cannot be read")
     head = len(_before_root(written.text))
     body = regenerated(written.text, expanded)[head:]
-    return Fix(title, Applicability.SAFE, edits=(Edit(loaded.document.shown, head, len(written.text), body),))
+    return Fix(title, X110.fix, edits=(Edit(loaded.document.shown, head, len(written.text), body),))
 
 
 def expand_source(source: Path, config: Config, session: Session) -> Loaded | str:

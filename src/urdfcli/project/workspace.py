@@ -442,6 +442,7 @@ class Target(NamedTuple):
     arguments: tuple[tuple[str, str], ...] = ()  # from [tool.urdfcli] models
     alone: bool = False
     unchecked: str = ""  # alone: why the models that include it could not check it
+    fragment: bool = False  # alone: a file that cannot be read on its own; only why no model checked it is said
 
     @property
     def label(self) -> str:
@@ -796,17 +797,20 @@ def _library_result(
     unused = _unused_in_all(used, resolved)
     for model in used:  # mistakes written in the library, and whatever breaks a model that uses it
         found += [_through(d, model) for d in model.diagnostics if unused(d) and (_same(d.path, library) or d.severity is Severity.ERROR)]
+    # When models include it but none could check it, that is a gap (X006) the config closes.
+    reasons = needing + [f"{label} does not read it with {arguments}" for label, arguments in unread]
     if not checked_through and fragment:
         notes += [f"not checked through {label}: it does not read this file with {arguments}" for label, arguments in unread]
         notes.append("a fragment of the models that include it (it cannot be read on its own), and none read it: not checked")
-    elif not checked_through:
-        # Checked on its own; when models include it but none could check it, that is a gap (X006) the config closes.
+        if reasons:
+            said = outcome(Target(entry.path, alone=True, unchecked="; ".join(reasons), fragment=True))
+            found += said.diagnostics if isinstance(said, Result) else ()
+    elif not checked_through:  # checked on its own
         notes += [
             f"not checked through {label}: it does not read this file with {arguments}; "
             "list argument sets under which it does in [tool.urdfcli] models"
             for label, arguments in unread
         ]
-        reasons = needing + [f"{label} does not read it with {arguments}" for label, arguments in unread]
         alone = outcome(Target(entry.path, alone=True, unchecked="; ".join(reasons)))
         if isinstance(alone, Unreadable):
             unreadable.append(alone)
@@ -827,11 +831,12 @@ def _library_result(
     return Result(entry.path, tuple(diagnostics), library=Library(tuple(checked_through), tuple(notes), fragment=fragment))
 
 
-def unchecked_library(path: str, unchecked: str) -> Diagnostic:
-    """X006: a library that no model including it could check."""
+def unchecked_library(path: str, unchecked: str, fragment: bool = False) -> Diagnostic:
+    """X006: a library (or a fragment, which cannot be read alone) that no model including it could check."""
+    what = "xacro fragment not checked" if fragment else "xacro library checked on its own only"
     return Diagnostic(
         "X006",
-        f"xacro library checked on its own only: no model that includes it could check it ({unchecked})",
+        f"{what}: no model that includes it could check it ({unchecked})",
         Location("<stdin>" if path == STDIN else path),
         hint='list their argument sets in [tool.urdfcli] models, e.g. models = { "urdf/robot.urdf.xacro" = [["name:=robot"]] }',
     )

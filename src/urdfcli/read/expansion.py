@@ -31,6 +31,7 @@ import xacro.substitution_args
 from ..diagnostics import Call
 from . import guard
 from .expanded import Expansion, ExpansionError, Origin, Origins, PackageNotFound, display_path
+from .names import typo_of
 from .positions import Text, decode
 from .xml import XmlError, parse
 
@@ -428,6 +429,21 @@ def global_names() -> tuple[list[str], dict[str, list[str]]]:
 _UNDEFINED_ARGUMENT = re.compile(r"\bUndefined substitution argument (\w+)")  # xacro's words for $(arg NAME) without a value
 
 
+def _missing_argument(message: str) -> tuple[str | None, str | None]:
+    """For xacro's error on ``$(arg NAME)`` without a value: NAME, an argument the model
+    needs from its caller, or (None, a hint) when NAME is a misspelling of an argument
+    declared before it (``prefx`` for ``prefix``): a mistake to fix, not a value to give."""
+    found = _UNDEFINED_ARGUMENT.search(message)
+    if found is None:
+        return None, None
+    name = found.group(1)
+    declared = xacro.substitution_args_context.get("arg") or {}
+    meant = typo_of(name, declared)
+    if meant is None:
+        return name, None
+    return None, f"did you mean $(arg {meant})? No <xacro:arg> declares '{name}'"
+
+
 def expand_here(data: bytes, file: str | None, mappings: dict[str, str], resolver: PackageResolver, given: dict[str, bytes]) -> Expansion:
     """:meth:`urdfcli.read.xacro.Expander.expand`, here in this process and unbounded."""
     shown = display_path(file) if file else "<stdin>"
@@ -458,10 +474,10 @@ def expand_here(data: bytes, file: str | None, mappings: dict[str, str], resolve
                 message += f" {resolver.where()}"
             origin = _where_raised(error)
             current_file = xacro.filestack[-1] if xacro.filestack else file
-            missing = _UNDEFINED_ARGUMENT.search(message) if code == "X003" else None
+            missing, hint = _missing_argument(message) if code == "X003" else (None, None)
             raise ExpansionError(
                 message, origin, display_path(current_file) if current_file else shown, code,
-                tuple(dict.fromkeys(xacro.all_includes)), missing.group(1) if missing else None, getattr(error, "urdfcli_hint", None),
+                tuple(dict.fromkeys(xacro.all_includes)), missing, hint or getattr(error, "urdfcli_hint", None),
             ) from None
         finally:
             includes = list(dict.fromkeys(xacro.all_includes))

@@ -26,8 +26,10 @@ X110 = declare(
         '<!-- regenerated: xacro kr16_2.xacro -o kr16_2.urdf -->\n<robot name="kuka_kr16_2">\n  <link name="link_6"/>\n'
         '  <link name="flange"/>\n  <joint name="joint_a6-flange" type="fixed">\n    <parent link="link_6"/>\n'
         '    <child link="flange"/>\n  </joint>\n</robot>'),
-    fix=Applicability.SAFE,
+    fix=Applicability.UNSAFE,
     fix_doc="Writes the URDF again from the source's expansion, everything before `<robot` (the XML declaration, xacro's "
-    "banner, comments) kept: the URDF says it is made from that source, and is then made as xacro makes it. When the "
-    "difference may come from xacro arguments, whose values are not known, there is no fix.",
+    "banner, comments) kept: the URDF says it is made from that source, and is then made as xacro makes it. Unsafe: "
+    "it changes the robot that whatever loads the URDF gets (its limits, poses, masses), and an edit made to the URDF "
+    "by hand is lost with the rest (make it in the xacro source first). When the difference may come from xacro "
+    "arguments, whose values are not known, there is no fix.",
 )

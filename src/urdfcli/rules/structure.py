@@ -56,11 +56,12 @@ X005 = declare("X005", "xacro-warning", WARNING, "xacro warned while expanding t
     "(safe: xacro reads both the same). Its other warnings have no fix.")
 
 X006 = declare("X006", "library-unchecked", WARNING, "A xacro library that no model including it could check, for want of xacro arguments.", explain(
-    "Flags a xacro library (macros and properties only) given to urdfcli when no model of its repository that "
-    "includes it could check it: each fails to expand for want of a xacro argument, or does not read the library "
+    "Flags a xacro library (macros and properties only), or a fragment (a file its models include that cannot be "
+    "read on its own), given to urdfcli when no model of its repository that "
+    "includes it could check it: each fails to expand for want of a xacro argument, or does not read the file "
     "with the arguments it is checked with (an include under `xacro:if`, such as a gripper included only with "
     "`hand:=true`). The library could then be checked on its own only: its xacro syntax, not the links and joints "
-    "its macros make. A library that no model includes is not flagged.",
+    "its macros make; the fragment not at all. A library that no model includes is not flagged.",
     "A mistake in a macro (a joint naming a link that does not exist) shows only when a model calls it. Without "
     "the arguments the models need, a pre-commit hook passes a broken library.",
     '# pyproject.toml, for a model urdf/robot.urdf.xacro that reads $(arg name) and has no default\n[tool.urdfcli]',

@@ -1,0 +1,28 @@
+"""A name written where another was meant: the misspelling of a known name, by edits."""
+
+from __future__ import annotations
+
+from collections.abc import Iterable
+
+
+def typo_of(word: str, candidates: Iterable[str]) -> str | None:
+    """The candidate ``word`` is a misspelling of: one edit away (two for longer words), case aside."""
+    allowed = 1 if len(word) <= 4 else 2
+    scored = sorted((_edits(word.lower(), c.lower()), c) for c in candidates)
+    return scored[0][1] if scored and scored[0][0] <= allowed else None
+
+
+def _edits(a: str, b: str) -> int:
+    """Edits (insertion, deletion, substitution, swap of neighbours) from a to b."""
+    previous, current = None, list(range(len(b) + 1))
+    for i in range(1, len(a) + 1):
+        before, previous, current = previous, current, [i] + [0] * len(b)
+        for j in range(1, len(b) + 1):
+            cost = a[i - 1] != b[j - 1]
+            current[j] = min(previous[j] + 1, current[j - 1] + 1, previous[j - 1] + cost)
+            if before is not None and j > 1 and a[i - 1] == b[j - 2] and a[i - 2] == b[j - 1]:
+                current[j] = min(current[j], before[j - 2] + 1)
+    return current[len(b)]
+
+
+__all__ = ["typo_of"]
