@@ -566,3 +566,24 @@ def test_links_written_alike_are_each_named_and_judged_in_their_own_body(tmp_pat
         assert found[(moving,)].severity == "warning" and "4.3 times the most 0.01 kg can reach" in found[(moving,)].message
     fixed = found[("finger_fixed",)]  # lost in the palm: only its turned axes are said, as a note
     assert fixed.severity == "info" and "on axes 90° away" in fixed.message, fixed.message
+
+
+def test_a_model_without_masses_is_said_to_be_one_and_its_shaped_links_not_called_frames(tmp_path):
+    """ROS-Industrial's support packages: meshes and joints, no <inertial> anywhere. A link that
+    collides, or that a joint moves, is a part without <inertial>, not a frame; the total says
+    the model has no masses."""
+    path = tmp_path / "arm.urdf"
+    path.write_text(
+        '<robot name="arm">\n  <link name="base_link"><collision><geometry><box size="0.2 0.2 0.1"/></geometry></collision></link>\n'
+        '  <link name="link_1"><visual><geometry><cylinder radius="0.05" length="0.3"/></geometry></visual></link>\n'
+        '  <link name="tool0"/>\n'
+        '  <joint name="joint_1" type="revolute"><parent link="base_link"/><child link="link_1"/><axis xyz="0 0 1"/>'
+        '<limit lower="-3" upper="3" effort="0" velocity="2"/></joint>\n'
+        '  <joint name="joint_tool0" type="fixed"><parent link="link_1"/><child link="tool0"/></joint>\n</robot>\n'
+    )
+    out = run_cli("inertia", str(path)).stdout.decode()
+    assert "base_link  massless: no <inertial>" in out and "link_1  massless: no <inertial>" in out
+    assert "tool0  massless frame link" in out
+    assert "total  no link declares a mass: a kinematic model" in out
+    data = json.loads(run_cli("inertia", "--format", "json", str(path)).stdout)
+    assert [link["expected_from"] for link in data["links"]] == ["massless: no <inertial>", "massless: no <inertial>", "massless frame link"]

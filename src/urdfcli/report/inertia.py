@@ -31,9 +31,20 @@ def _tensor(tensor) -> dict[str, float] | None:
     return None if tensor is None else {k: float(v) for k, v in massprops.as_dict(tensor).items()}
 
 
-def expected_from(entry: LinkAudit) -> str:
-    if entry.frame:
+def massless(link, loaded: Loaded) -> str:
+    """What a massless link is: a frame (no shape: tool0, the virtual links between the
+    joints of a hip; or a shape but no collision, fixed to its parent or the root: a
+    footprint drawn as a dot), or a part that declares no mass (one that collides, or
+    that moves with a shape: an industrial arm's links without <inertial>)."""
+    joint = loaded.parent_joint(link.name)
+    if not link.collisions and (not link.visuals or joint is None or joint.type == "fixed"):
         return "massless frame link"
+    return "massless: no <inertial>" if link.inertial is None else "massless: mass 0"
+
+
+def expected_from(entry: LinkAudit, loaded: Loaded) -> str:
+    if entry.frame:
+        return massless(entry.link, loaded)
     if entry.assessment is None:
         return "no inertia tensor declared"
     return entry.assessment.implied.source
@@ -55,7 +66,7 @@ def link_dict(entry: LinkAudit, loaded: Loaded) -> dict:
         "inertia": _tensor(declared),
         "principal": _vector(massprops.principal_moments(declared)) if declared is not None else None,
         "expected": _tensor(found.expected) if found is not None else None,
-        "expected_from": expected_from(entry),
+        "expected_from": expected_from(entry, loaded),
         "problems": [diagnostic_dict(d) for d in entry.problems],
     }
 
@@ -89,7 +100,7 @@ def audit_lines(audit: Audit, show_name: bool) -> list[Line]:
     for entry in audit.links:
         link, found = entry.link, entry.assessment
         if entry.frame and not entry.problems and not entry.from_density:
-            lines.append([(escape(link.name), "bold"), ("  massless frame link", "dim")])
+            lines.append([(escape(link.name), "bold"), (f"  {massless(link, loaded)}", "dim")])
             continue
         inertial = link.inertial
         header: Line = [(escape(link.name), "bold")]
@@ -111,7 +122,9 @@ def audit_lines(audit: Audit, show_name: bool) -> list[Line]:
         if entry.problems:
             lines.append(_row("problems", ", ".join(f"{d.code} {REGISTRY[d.code].name}" for d in dict.fromkeys(entry.problems)), "yellow"))
     body = audit.total
-    if body is not None:
+    if body is not None and body.mass == 0:
+        lines.append([("total", "bold"), ("  no link declares a mass: a kinematic model (simulators and dynamics libraries need masses)", "yellow")])
+    elif body is not None:
         lines.append([("total", "bold"), (f"  mass {number(body.mass)}  com {' '.join(map(number, body.com))} (in '{escape(loaded.root or '')}' frame, joints at zero)", "")])
         lines.append(_row("inertia", tensor_text(body.tensor) + "  about the centre of mass"))
     for built in audit.targets:
