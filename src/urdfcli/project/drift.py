@@ -105,6 +105,14 @@ def generated_from(urdf: Path, session: Session) -> GeneratedFrom | None:
     return find_source(urdf, head, lambda: packages.enclosing_package(packages.real_path(urdf).parent), lambda folder: session.index.scan([folder]), packages.real_path)
 
 
+def lost_source(urdf: Path, session: Session) -> str | None:
+    """The PATH a URDF's header says xacro generated it from, when no such file is found
+    (beside it, or in its package): the URDF cannot be compared."""
+    found = session.files.get(urdf)
+    named = header_source(found.data[:HEAD_BYTES]) if found is not None else None
+    return named if named is not None and generated_from(urdf, session) is None else None
+
+
 def generated_urdfs(paths: Iterable[str], session: Session) -> list[str]:
     """The generated URDFs that ``paths`` concern: each among them, each below a folder
     among them, and each generated from a xacro file among them or from one that may
@@ -113,9 +121,11 @@ def generated_urdfs(paths: Iterable[str], session: Session) -> list[str]:
 
     found: dict[Path, str] = {}
 
-    def consider(urdf: Path, shown: str, sources: set[Path] | None = None) -> None:
+    def consider(urdf: Path, shown: str, sources: set[Path] | None = None, asked: bool = False) -> None:
         source = generated_from(urdf, session)
         if source is None:
+            if asked and lost_source(urdf, session) is not None:  # a URDF asked about: that it cannot be compared is said
+                found.setdefault(urdf.resolve(), shown)
             return
         origin = source.file.resolve()
         if sources is None or origin in sources or any(session.index.reaches(origin, s) for s in sources):
@@ -133,7 +143,7 @@ def generated_urdfs(paths: Iterable[str], session: Session) -> list[str]:
                 if not file.name.endswith(".xacro"):
                     consider(file, _shown(file), {given.resolve()})
         elif given.is_file():
-            consider(given, path)
+            consider(given, path, asked=True)
     return list(found.values())
 
 
@@ -142,16 +152,20 @@ def enabled(config: Config, path: str) -> bool:
     return config.enabled(X110, path)
 
 
-def drift(loaded: Loaded, config: Config, session: Session) -> list[Diagnostic]:
+def drift(loaded: Loaded, config: Config, session: Session, lost: bool = False) -> list[Diagnostic]:
     """X110 for a URDF read from a file (not named .xacro), when it was generated from a
     xacro file whose expansion no longer matches it (an info when the source cannot be
-    expanded)."""
+    expanded; with ``lost``, also when the source its header names is not found)."""
     document = loaded.document
     if document.file is None or document.file.name.endswith(".xacro") or not loaded.modelled:
         return []
     source = generated_from(document.file, session)
     if source is None:
-        return []
+        named = lost_source(document.file, session) if lost else None
+        if named is None:
+            return []
+        message = f"{_name(loaded)} says it was generated from {named}, which is neither beside it nor in its package: not compared"
+        return [_diagnostic(loaded, message, None, Severity.INFO)]
     found = expand_source(source.file, config, session)
     if isinstance(found, str):
         return [_diagnostic(loaded, f"{_name(loaded)} says it was generated from {_shown(source.file)}, which was not compared: {found}", None, Severity.INFO)]
