@@ -241,12 +241,28 @@ def summary(comparison: Comparison, urdf: str, source: GeneratedFrom) -> str:
     if differing:
         counted = [f"{len(elements)} {_plural(tag, len(elements))}" for tag, elements in differing.items()]
         verb = "differs" if sum(len(e) for e in differing.values()) == 1 else "differ"
-        first = next(c for c in changes if c.field is not None and c.field != "pose" and c.kind != "renamed" and c.element not in whole)
+        first = min((c for c in changes if c.field is not None and c.field != "pose" and c.kind != "renamed" and c.element not in whole), key=_weight)
         pieces.append(f"{_and(counted)} {verb} ({element_words(first.element)} {first.field}: {text(first.old)} here, {text(first.new)} in {xacro})")
     if not pieces:  # only poses moved: cannot happen without a change above, kept for safety
         pieces.append(f"{comparison.count('changed')} values differ")
     generated = "which generated it" if source.header is not None else "beside it"
     return f"{urdf} does not match {_shown(source.file)}, {generated}: " + "; ".join(pieces)
+
+
+# The difference a summary names: what changes how the robot moves first, a colour last.
+_JOINT_FIELDS = ("type", "parent", "child", "axis", "origin", "limit", "mimic")
+_LINK_FIELDS = ("inertial", "collision", "visual")
+
+
+def _weight(change: Change) -> int:
+    field = change.field or ""
+    if "material" in field:
+        return len(_JOINT_FIELDS) + len(_LINK_FIELDS)
+    fields = _JOINT_FIELDS if _tag(change.element) == "joint" else _LINK_FIELDS if _tag(change.element) == "link" else ()
+    first = next((i for i, name in enumerate(fields) if field.startswith(name)), None)
+    if first is None:
+        return len(_JOINT_FIELDS) + len(_LINK_FIELDS) + 1
+    return first if fields is _JOINT_FIELDS else len(_JOINT_FIELDS) + first
 
 
 def _by_tag(changes: Iterable[Change]) -> str:
@@ -255,6 +271,14 @@ def _by_tag(changes: Iterable[Change]) -> str:
         names.setdefault(_tag(change.element), []).append(_name_in(change.element))
     parts = []
     for tag, found in names.items():
+        if tag == "gazebo":  # blocks named by the link or joint they are about, or none (the robot's)
+            about = [f"'{n}'" for n in found if not n.startswith("gazebo")]
+            robot = len(found) - len(about)
+            shown = _and(about[:MOST_NAMED] + ([f"{len(about) - MOST_NAMED} more"] if len(about) > MOST_NAMED else []))
+            words = ([f"<gazebo> blocks for {shown}" if len(about) > 1 else f"the <gazebo> block for {shown}"] if about else []) + (
+                [f"{robot} <gazebo> blocks for the robot" if robot > 1 else "a <gazebo> block for the robot"] if robot else [])
+            parts.append(_and(words))
+            continue
         shown = ", ".join(f"'{n}'" for n in found[:MOST_NAMED]) + (f" and {len(found) - MOST_NAMED} more" if len(found) > MOST_NAMED else "")
         parts.append(f"{_plural(tag, len(found))} {shown}")
     return _and(parts)
