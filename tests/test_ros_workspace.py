@@ -257,3 +257,15 @@ def test_a_fragment_whose_models_all_need_arguments_is_a_gap_lint_fails_on(tmp_p
     done = run_cli("lint", "arm_description/urdf/ur.xacro", cwd=tmp_path / "repo")
     assert done.returncode == 0 and "X006" not in done.stdout.decode(), done.stdout.decode()
     assert "fragment, checked through arm_description/urdf/ur5e.xacro [arm_side:=left_]" in done.stdout.decode()
+
+
+@pytest.mark.parametrize("command", ["tree", "graph", "inertia"])
+def test_a_library_given_to_draw_or_audit_names_the_model_to_give_instead(built, command, tmp_path):
+    """PR2's base macros make no robot by themselves: not 'R002 <robot> has no name' and
+    'R004 no <link>', but one line naming the model that includes them, exit 2, no drawing."""
+    library = "src/pr2_common/pr2_description/urdf/base_v0/base.urdf.xacro"
+    done = run_cli(command, library, *(["-o", str(tmp_path / "base.pdf")] if command == "graph" else []), cwd=built)
+    assert done.returncode == 2
+    assert done.stderr.decode() == (f"urdfcli: {library}: a xacro library (macros and properties only), which makes no robot by itself; "
+                                    "give a model that includes it: src/pr2_common/pr2_description/robots/pr2.urdf.xacro\n")
+    assert done.stdout == b"" and not list(tmp_path.iterdir())

@@ -129,6 +129,18 @@ def find_models(paths: list[str], session: Session) -> Models:
     return Models(files, tuple(aside))
 
 
+def library_models(path: str, session: Session) -> list[str] | None:
+    """For a xacro library (macros and properties only: it makes no robot by itself), the
+    models of its repository or workspace that include it; None for any other file."""
+    if path == STDIN or not path.endswith(".xacro"):
+        return None
+    try:
+        [entry] = plan([path], configured(session), session.package_paths, session.packages, session.files)
+    except PackageError as error:
+        raise UsageError(str(error)) from None
+    return list(dict.fromkeys(target.path for target in entry.targets)) if entry.library else None
+
+
 def run(paths: list[str], session: Session, progress: Progress | None = None, aside: tuple[Aside, ...] | None = None) -> Run:
     """Check each input as the session's options ask (see :class:`~urdfcli.options.Options`).
 
@@ -495,5 +507,5 @@ def _drift_of(path: str, session: Session) -> Result:
 
 __all__ = [
     "Difference", "Fixed", "Options", "Result", "Run", "RuleSet", "Session", "Unreadable", "UsageError", "audit", "check", "check_target", "diff",
-    "drift", "expand", "find_models", "fix", "lint", "run", "text_report", "xacro_arguments",
+    "drift", "expand", "find_models", "fix", "library_models", "lint", "run", "text_report", "xacro_arguments",
 ]

@@ -180,6 +180,14 @@ def report_unreadable(output: Output, unreadable: list[Unreadable]) -> None:
         output.err.file.write(f"urdfcli: {escape(found.reason)}\n")
 
 
+def no_robot_of_its_own(path: str, models: list[str]) -> str:
+    """Why a xacro library is not drawn or audited, and the model to give instead."""
+    if not models:
+        return f"{path}: a xacro library (macros and properties only), which makes no robot by itself, and no model of its repository or workspace includes it"
+    more = f" (one of {len(models)} that do)" if len(models) > 1 else ""
+    return f"{path}: a xacro library (macros and properties only), which makes no robot by itself; give a model that includes it: {models[0]}{more}"
+
+
 def not_a_robot(path: str) -> str:
     """Why an SRDF is not drawn or audited, and what to do with it instead."""
     return f"{path}: an SRDF (MoveIt's semantic description), which has no links of its own; `urdfcli check {path}` checks it against its URDF"

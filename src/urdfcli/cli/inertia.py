@@ -22,6 +22,7 @@ from .common import (
     choose,
     fail,
     format_option,
+    no_robot_of_its_own,
     not_a_robot,
     report_unreadable,
     session_for,
@@ -73,6 +74,10 @@ def inertia(
     )
     output = Output.standard(color)
     with session_for(options) as session:
+        for path in paths:
+            models = api.library_models(path, session)
+            if models is not None:
+                raise fail(no_robot_of_its_own(path, models))
         found = api.run(paths, session)
         report_unreadable(output, found.unreadable)
         if not found.results:
