@@ -208,6 +208,13 @@ def test_no_info_shows_warnings_and_errors_and_counts_the_info(tmp_path):
     assert len(lines) == 3
     text = run_cli("lint", str(model))
     assert " D003 " not in text.stdout.decode() and text.stdout.decode().endswith("1 file checked: 0 errors, 2 warnings, 1 info (not shown)\n")
+    # every format: a note hidden from the text is no code-scanning alert or JSON entry either; the summaries count it
+    document = json.loads(run_cli("lint", "--format", "json", str(model)).stdout)
+    assert [d["code"] for d in document["files"][0]["diagnostics"]] == ["M002", "D002"] and document["summary"]["info"] == 1
+    sarif = json.loads(run_cli("lint", "--format", "sarif", str(model)).stdout)
+    assert [r["ruleId"] for r in sarif["runs"][0]["results"]] == ["M002", "D002"]
+    assert "D003" not in run_cli("lint", "--format", "github", str(model)).stdout.decode()
+    assert "D003" in run_cli("lint", "--info", "--format", "sarif", str(model)).stdout.decode()
     write(tmp_path, "pyproject.toml", '[tool.urdfcli]\nshow-info = "no"\n')
     bad = run_cli("lint", str(model))
     assert bad.returncode == 2 and "show-info: expected true or false, not 'no'" in bad.stderr.decode()

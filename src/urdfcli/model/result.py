@@ -63,7 +63,7 @@ class Result:
     audit: Audit | None = None
     compatibility: tuple[Verdict, ...] = ()
     robot_name: str | None = None  # the robot's name: told by ``loaded`` when it is there
-    show_info: bool = True  # whether the text formats show its info diagnostics (its configuration's show-info)
+    show_info: bool = True  # whether its info diagnostics are shown, in every format (its configuration's show-info)
 
     def __post_init__(self) -> None:
         robot = self.loaded.robot if self.loaded is not None else None
@@ -88,7 +88,7 @@ class Result:
 
     @property
     def displayed(self) -> list[Diagnostic]:
-        """The diagnostics the text formats show: info too unless its configuration hides it."""
+        """The diagnostics the formats show (the summaries count all): info too unless its configuration hides it."""
         if self.show_info:
             return self.diagnostics
         return [d for d in self.diagnostics if d.severity is not Severity.INFO]

@@ -20,7 +20,7 @@ def file_dict(result: Result, files=None) -> dict:
         "path": result.path,
         "ok": result.ok,
         "robot": result.robot_name,
-        "diagnostics": [diagnostic_dict(d, files) for d in result.diagnostics],
+        "diagnostics": [diagnostic_dict(d, files) for d in result.displayed],
     }
     if result.library is not None:
         entry["checked_through"] = list(result.library.checked_through)

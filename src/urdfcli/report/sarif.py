@@ -95,7 +95,7 @@ def render(results) -> str:
                         "rules": [rule_descriptor(rule) for rule in rules],
                     }
                 },
-                "results": [result(d, index) for found in results for d in found.diagnostics],
+                "results": [result(d, index) for found in results for d in found.displayed],
                 "columnKind": "unicodeCodePoints",
             }
         ],
