@@ -531,6 +531,28 @@ def test_an_unprefixed_include_is_a_warning_and_a_prefixed_one_or_a_plugin_tag_i
     assert found(model, codes=("X107",)) == []
 
 
+def test_a_macro_called_without_the_prefix_is_a_warning_at_the_call_not_a_macro_called_nowhere(tmp_path):
+    """turtlebot3_manipulation's <RefLink ref="link1"/>: xacro 2 copies it into the URDF and
+    never calls the macro (its <gazebo> friction is lost). X107 at the call; no X104 'called
+    nowhere', no D010 'not URDF markup' for the same element."""
+    model = write(tmp_path / "robot.urdf.xacro", robot("""
+        <xacro:macro name="RefLink" params="ref">
+          <gazebo reference="${ref}"><mu1>0.2</mu1></gazebo>
+        </xacro:macro>
+        <link name="link1"/>
+        <RefLink ref="link1"/>
+        """))
+    real = subprocess.run([require_tool("xacro"), str(model)], capture_output=True, text=True, cwd=tmp_path)
+    assert real.returncode == 0 and '<RefLink ref="link1"/>' in real.stdout and "<mu1>" not in real.stdout  # never called
+    [warning] = diagnostics(model, "X107")
+    assert (warning.line, warning.column) == column_of(model, "<RefLink")
+    assert warning.message == "<RefLink> calls macro 'RefLink' without the xacro: prefix: xacro copies it into the URDF and never calls the macro"
+    codes = [d["code"] for d in json.loads(run_cli("lint", "--format", "json", "--isolated", str(model)).stdout)["files"][0]["diagnostics"]]
+    assert codes == ["X107"]
+    edit(model, "<RefLink ref", "<xacro:RefLink ref")
+    assert found(model, codes=("X107", "X104")) == []
+
+
 def test_xacros_deprecation_is_located_at_the_call_with_its_fix(tmp_path):
     write(tmp_path / "c.yaml", "a: 1\n")
     model = write(tmp_path / "robot.urdf.xacro", robot("""

@@ -13,6 +13,7 @@ from ..read.packages import cmake_project
 from .base import ERROR, INFO, PLACED, SAFE, WARNING, Kind, RuleSet, check
 from .meshes import others_there
 from .suggestions import close_matches
+from .xacro import unprefixed_calls
 
 ABSOLUTE = ("file", "absolute")  # the uri_style of a path of one machine
 
@@ -145,9 +146,10 @@ def unknown_markup(loaded, given):
     </link>
     ```
     """
+    calls = set(unprefixed_calls(loaded))
     for unknown in loaded.robot.unknown:
-        if unknown.typo_of or unknown.gazebo or (unknown.attribute and unknown.parent == "material" and unknown.name == "rgba"):
-            continue  # a typo is D001/D002's, Gazebo markup D011's, a material's rgba M005's or M001's
+        if unknown.typo_of or unknown.gazebo or (unknown.attribute and unknown.parent == "material" and unknown.name == "rgba") or unknown in calls:
+            continue  # a typo is D001/D002's, Gazebo markup D011's, a material's rgba M005's or M001's, a macro call without xacro: X107's
         if unknown.attribute:
             attributes = sorted(SCHEMA[unknown.parent][0])
             hint = f"<{unknown.parent}> takes {', '.join(attributes)}" if attributes else f"<{unknown.parent}> takes no attributes"

@@ -240,11 +240,12 @@ def macro_unused(loaded, given) -> Iterator[Diagnostic]:
     ```
     """
     sources = loaded.xacro_sources
+    called_unprefixed = {call.name for call in unprefixed_calls(loaded)}
     for file in sources.files:
         for definition in file.macros:
             name = definition.name.removeprefix("xacro:")
-            if not name or _used(sources, lambda f: f.any_call or name in f.calls):
-                continue
+            if not name or _used(sources, lambda f: f.any_call or name in f.calls) or name in called_unprefixed:
+                continue  # (a call without xacro: is X107's)
             where = "in this file, the files it includes, nor any other file of the workspace" if file.makes else "by any file of the workspace"
             yield _diagnostic("X104", f"macro '{name}' is called nowhere: not {where}", file, definition.place, "call it, or remove it")
 
@@ -424,13 +425,17 @@ def tag_unprefixed(loaded, given) -> Iterator[Diagnostic]:
     `<arg name=...>`, `<insert_block name=...>`, `<if value=...>` and
     `<unless value=...>` written without the `xacro:` prefix, at the top
     level of a xacro file or in a xacro element's body (not inside a link or a
-    plugin, where such tags may be someone else's).
+    plugin, where such tags may be someone else's); and a call of one of the
+    model's macros written without it (`<RefLink ref="link1"/>` for a macro
+    `RefLink`), where the expansion still holds it as URDF markup (not inside
+    another format's block).
 
     ## Why is this bad?
     xacro 1 read these with a deprecation warning; xacro 2 (ROS 2, and the
     `xacro` on PyPI) does not read them at all: the `<include>` is copied into
     the URDF, which every consumer ignores, and the file it names is never
-    included.
+    included; the macro is never called, so what it makes (a link's friction,
+    its colour in Gazebo) is missing.
 
     ## Example
     ```xml
@@ -456,6 +461,21 @@ def tag_unprefixed(loaded, given) -> Iterator[Diagnostic]:
                 "X107", f"<{old.tag}> without the xacro: prefix is not read by xacro: it is copied into the URDF and does nothing",
                 file, old.place, f"write <xacro:{old.tag} ...> (with xmlns:xacro=\"http://www.ros.org/wiki/xacro\" on <robot>)",
             )._replace(fix=_prefixed(file, old))
+    for call in unprefixed_calls(loaded):
+        yield loaded.diagnostic(
+            "X107", f"<{call.name}> calls macro '{call.name}' without the xacro: prefix: xacro copies it into the URDF and never calls the macro",
+            call.at, f"write <xacro:{call.name} .../>",
+        )
+
+
+def unprefixed_calls(loaded) -> list:
+    """The elements of the expansion (markup URDF does not define) named as a macro of the
+    model's files: calls written without ``xacro:``, which xacro 2 copies unexpanded."""
+    sources, robot = loaded.xacro_sources, loaded.robot
+    if sources is None or robot is None:
+        return []
+    macros = {macro.name.removeprefix("xacro:") for file in sources.reached for macro in file.macros}
+    return [unknown for unknown in robot.unknown if not unknown.attribute and unknown.name in macros]
 
 
 def _prefixed(file: XacroFile, old) -> Fix:
@@ -478,4 +498,6 @@ def _prefixed(file: XacroFile, old) -> Fix:
     return Fix(title, UNSAFE, edits=tuple(edits))
 
 
-__all__ = ["argument_unused", "macro_name_fixed", "macro_unused", "name_undefined", "parameter_unused", "property_unused", "tag_unprefixed"]
+__all__ = [
+    "argument_unused", "macro_name_fixed", "macro_unused", "name_undefined", "parameter_unused", "property_unused", "tag_unprefixed", "unprefixed_calls",
+]
