@@ -366,6 +366,10 @@ def test_a_dependency_is_declared_after_the_last_of_its_kind_in_its_indentation(
 ], ids=["before-export", "format-1"])
 def test_a_dependency_in_a_manifest_without_one_of_its_kind(cli, workspace, manifest, declared):
     put(workspace, {"src/my_robot/package.xml": manifest})
+    report = json.loads(cli("lint", "--isolated", "--format", "json", "--select", "P001", "src/my_robot/urdf/robot.urdf.xacro").stdout)
+    [diagnostic] = report["files"][0]["diagnostics"]
+    added = next(line.strip() for line in declared.split("\n") if "robot_meshes" in line)
+    assert diagnostic["hint"].startswith(f"add {added} to src/my_robot/package.xml")  # the line the fix adds (format 1: no <exec_depend>)
     cli("lint", "--isolated", "--fix", "--select", "P001", "src/my_robot/urdf/robot.urdf.xacro")
     assert (workspace / "src/my_robot/package.xml").read_text() == declared
 

@@ -76,7 +76,8 @@ def dependency_undeclared(loaded, given) -> Iterator[Diagnostic]:
     `exec_depend`, `build_export_depend`, `build_depend`, `test_depend` (or
     format 1's `run_depend`). The hint gives the line to add: `<depend>` for a
     file included or read while expanding, `<exec_depend>` for a mesh or any
-    other file used at run time. One diagnostic per file and package, at its
+    other file used at run time (in a format 1 manifest, `<build_depend>` and
+    `<run_depend>`, or `<run_depend>`). One diagnostic per file and package, at its
     first use. A package named by a macro's parameter (`$(find ${pkg})`,
     `package://${pkg}/`) is named by each call: when every call in the
     workspace gives a plain name (or leaves the plain default), each is judged
@@ -132,12 +133,13 @@ def dependency_undeclared(loaded, given) -> Iterator[Diagnostic]:
             continue  # its own, by its folder's name: D005 says which name to write, no dependency is missing
         more = f" (and {others} more use{'s' if others > 1 else ''} in this file)" if others else ""
         name = shown(owner / "package.xml")
+        fix = declaration(loaded.document.files.get(name), name, package, kind)
         yield Diagnostic(
             "P001",
             f"package '{package}' is used here{more} but {manifest.name}'s package.xml does not declare it",
             where(),
-            hint=f"add <{kind}>{package}</{kind}> to {name}: rosdep installs only declared dependencies",
-            fix=declaration(loaded.document.files.get(name), name, package, kind),
+            hint=f"{fix.title}: rosdep installs only declared dependencies",  # (a format 1 manifest's tags)
+            fix=fix,
         )
 
 
