@@ -323,7 +323,9 @@ def effort_velocity_zero(loaded, given):
     Flags a revolute, continuous or prismatic joint, not a mimic, whose `<limit>` gives
     `effort` or `velocity` as 0 or less. A joint that no `<transmission>` and no
     `<ros2_control>` names is passive (a caster, a propeller spun by a plugin, a
-    pendulum): zero limits there say it has no actuator, and are only noted (info);
+    pendulum): zero limits there say it has no actuator, and are only noted (info),
+    in one note for all such joints of the model (a description of the kinematics
+    alone, as ROS-Industrial's arms are, writes `effort="0"` on every joint);
     a negative limit is flagged wherever it is. Mimic joints are left alone: they
     follow another joint and are not driven.
 
@@ -364,6 +366,7 @@ def effort_velocity_zero(loaded, given):
     ```
     """
     driven = driven_joints(loaded)
+    passive = []  # (joint, its zero limits) of the joints nothing drives
     for joint in loaded.robot.joints.values():
         limit = joint.limit
         if joint.type not in ("revolute", "continuous", "prismatic") or limit is None or joint.mimic is not None:
@@ -378,9 +381,18 @@ def effort_velocity_zero(loaded, given):
             yield loaded.diagnostic("J014", message, joint.part("limit"), "give the actuator's real effort and velocity limits (the datasheet's peak torque or force, and speed)",
                                     subjects=(joint.name,)).with_fix(_NO_LIMIT_FIX)
         else:
-            message = f"joint '{joint.name}' has {bad}: no transmission or ros2_control drives it, so it is taken as passive (no actuator)"
-            yield loaded.diagnostic("J014", message, joint.part("limit"), "if an actuator drives it, give its real effort and velocity limits",
-                                    subjects=(joint.name,))._replace(severity=INFO).with_fix(_NO_LIMIT_FIX)
+            passive.append((joint, bad))
+    if len(passive) == 1:
+        joint, bad = passive[0]
+        message = f"joint '{joint.name}' has {bad}: no transmission or ros2_control drives it, so it is taken as passive (no actuator)"
+        yield loaded.diagnostic("J014", message, joint.part("limit"), "if an actuator drives it, give its real effort and velocity limits",
+                                subjects=(joint.name,))._replace(severity=INFO).with_fix(_NO_LIMIT_FIX)
+    elif passive:  # one note for the model: a description of the kinematics alone (ROS-Industrial's arms) writes effort="0" on every joint
+        names = [joint.name for joint, _ in passive]
+        shown = ", ".join(f"'{name}'" for name in names[:3]) + (f" and {len(names) - 3} more" if len(names) > 3 else "")
+        message = f"{len(names)} joints ({shown}) have a zero effort or velocity limit and no transmission or ros2_control drives them, so they are taken as passive (no actuator)"
+        yield loaded.diagnostic("J014", message, passive[0][0].part("limit"), "if actuators drive them, give their real effort and velocity limits",
+                                subjects=tuple(names))._replace(severity=INFO).with_fix(_NO_LIMIT_FIX)
 
 
 def _nothing(values) -> str:

@@ -209,9 +209,9 @@ def macro_unused(loaded, given) -> Iterator[Diagnostic]:
     Notes a `<xacro:macro>` that no `<xacro:NAME>` (nor `<xacro:call
     macro="NAME">`) calls in the model's files, the files their includes may
     reach, or any xacro file of the repository or workspace around it. Info
-    only: a library's macros serve packages this workspace may not hold. A
-    workspace with a computed call (`<xacro:call macro="${name}"/>`) draws
-    nothing.
+    only: a library's macros serve packages this workspace may not hold; the
+    macros of one file that nothing calls are one note. A workspace with a
+    computed call (`<xacro:call macro="${name}"/>`) draws nothing.
 
     ## Why is this bad?
     A macro nothing calls is checked by nothing: its mistakes show only the
@@ -242,12 +242,21 @@ def macro_unused(loaded, given) -> Iterator[Diagnostic]:
     sources = loaded.xacro_sources
     called_unprefixed = {call.name for call in unprefixed_calls(loaded)}
     for file in sources.files:
+        uncalled = []
         for definition in file.macros:
             name = definition.name.removeprefix("xacro:")
             if not name or _used(sources, lambda f: f.any_call or name in f.calls) or name in called_unprefixed:
                 continue  # (a call without xacro: is X107's)
-            where = "in this file, the files it includes, nor any other file of the workspace" if file.makes else "by any file of the workspace"
+            uncalled.append((name, definition))
+        where = "in this file, the files it includes, nor any other file of the workspace" if file.makes else "by any file of the workspace"
+        if len(uncalled) == 1:
+            name, definition = uncalled[0]
             yield _diagnostic("X104", f"macro '{name}' is called nowhere: not {where}", file, definition.place, "call it, or remove it")
+        elif uncalled:  # one note for the file: a library of colours or parts serves packages elsewhere
+            names = [name for name, _ in uncalled]
+            shown = ", ".join(f"'{name}'" for name in names[:3]) + (f" and {len(names) - 3} more" if len(names) > 3 else "")
+            yield _diagnostic("X104", f"{len(names)} macros of this file ({shown}) are called nowhere: not {where}", file, uncalled[0][1].place,
+                              "call them, or remove them")
 
 
 def _made_by_macros(origins) -> dict[tuple[int, int, int], list[int]]:
