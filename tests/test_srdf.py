@@ -240,6 +240,26 @@ def test_an_srdf_whose_robot_name_differs_from_the_urdf_beside_it_is_checked_aga
     )
 
 
+def test_a_moveit_configs_srdf_is_paired_with_the_urdf_named_as_it_is_in_the_robot_package_it_depends_on(tmp_path):
+    """ROS-Industrial's motoman_sia20d_moveit_config: sia20d.srdf says robot 'sia20d', the
+    support package it depends on holds sia20d.xacro of robot 'motoman_sia20d'. That file is
+    the one (not 'no URDF found'), and the mismatch is said."""
+    src = tmp_path / "src"
+    support, config = src / "motoman_sia20d_support", src / "motoman_sia20d_moveit_config"
+    (support / "urdf").mkdir(parents=True)
+    (config / "config").mkdir(parents=True)
+    (support / "package.xml").write_text('<package format="2"><name>motoman_sia20d_support</name></package>\n')
+    (config / "package.xml").write_text('<package format="2"><name>motoman_sia20d_moveit_config</name>'
+                                        "<exec_depend>motoman_sia20d_support</exec_depend></package>\n")
+    (support / "urdf" / "sia20d.xacro").write_text(ARM.format(name="motoman_sia20d", tip="foot", joint="knee"))
+    (config / "config" / "sia20d.srdf").write_text('<robot name="sia20d">\n  <group name="arm"><chain base_link="base" tip_link="foot"/></group>\n</robot>\n')
+    done, document = check("src/motoman_sia20d_moveit_config/config/sia20d.srdf", cwd=tmp_path)
+    [diagnostic] = document["files"][0]["diagnostics"]
+    assert (diagnostic["code"], diagnostic["severity"]) == ("K008", "warning") and done.returncode == 0
+    assert diagnostic["message"] == ("the SRDF is for robot 'sia20d', but src/motoman_sia20d_support/urdf/sia20d.xacro, named as it is, "
+                                     "describes robot 'motoman_sia20d': checked against it")
+
+
 def test_of_the_urdfs_that_may_be_its_robot_the_one_its_names_fit_is_chosen(tmp_path):
     """Built as example-robot-data's alex_description and solo_description: an SRDF that kept
     another variant's robot name (alex_psyonic_hands.srdf says 'alex_nub_hands') is checked

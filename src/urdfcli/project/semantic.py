@@ -10,9 +10,11 @@ folder, where one package holds several robots), then one named as the SRDF is
 one includes, and a xacro source before a generated URDF. A robot's name is read
 from its ``<robot name=...>`` as written (``$(arg name)`` resolved from the
 argument's default or the ``[tool.urdfcli] models`` setting), and confirmed by
-loading the model. The URDF named as the SRDF in its robot's folder is a
-candidate whatever name it gives (``go2.urdf`` says ``go2_description``, and an
-SRDF copied from another variant keeps that variant's name).
+loading the model. The URDF named as the SRDF in its robot's folder, or in a
+package the SRDF's package depends on (a MoveIt config's robot package), is a
+candidate whatever name it gives (``go2.urdf`` says ``go2_description``,
+``sia20d.xacro`` ``motoman_sia20d``, and an SRDF copied from another variant
+keeps that variant's name).
 
 Of the candidates, a few at most are loaded (:data:`TRIES`), and the SRDF is
 checked against the one that lacks the fewest of the link and joint names it
@@ -60,29 +62,31 @@ def robot_name(file: Path, index: Index, arguments: dict[str, str]) -> str | Non
     return name if "$" not in name else None
 
 
-def candidates(srdf: Path, index: Index, arguments_for: Callable[[Path], dict[str, str]]) -> Iterator[Path]:
-    """The URDF and xacro files that may describe the SRDF's robot, nearest first."""
-    folders: list[tuple[Path, bool]] = []
+def candidates(srdf: Path, index: Index, arguments_for: Callable[[Path], dict[str, str]]) -> Iterator[tuple[Path, bool]]:
+    """The URDF and xacro files that may describe the SRDF's robot, nearest first, each
+    with whether it is of the SRDF's package or of one its package.xml depends on (a
+    MoveIt config's robot package)."""
+    folders: list[tuple[Path, bool, bool]] = []  # (folder, searched below it, the SRDF's package or a dependency)
     package = index.packages.enclosing_package(srdf.parent)
     if package is not None:
-        folders.append((package, True))
+        folders.append((package, True, True))
         manifest = index.packages.manifest(package / "package.xml")
         find = index.finder(srdf)
         for dependency in sorted(manifest.dependencies if manifest is not None else ()):
             found = find(dependency)
             if found is not None:
-                folders.append((found, True))
+                folders.append((found, True, True))
     roots, recursive = search_roots(srdf, index.packages)
-    folders += [(root, recursive) for root in roots]
+    folders += [(root, recursive, False) for root in roots]
     seen: set[Path] = set()
-    for folder, below in folders:
+    for folder, below, depended in folders:
         files = [f.resolve() for f in source_files(folder, below) if not named_srdf(f.name)]
         included = {Path(i.value) for f in files if f.name.endswith(".xacro") for i in index.includes(f) if i.kind == "path"}
         order = sorted(files, key=lambda f: (-_shared(f, srdf), _stem(f) != _stem(srdf), f in included, f.name.endswith(".urdf"), str(f)))
         for file in order:
             if file not in seen:
                 seen.add(file)
-                yield file
+                yield file, depended
 
 
 def _shared(file: Path, srdf: Path) -> int:
@@ -121,13 +125,15 @@ def described(
         return None
     srdf = document.file.resolve()
     fits, failures, beside = [], [], False  # fits: (names the URDF lacks, order, path, model)
-    for order, file in enumerate(candidates(srdf, index, arguments_for)):
+    for order, (file, depended) in enumerate(candidates(srdf, index, arguments_for)):
         arguments = arguments_for(file)
         named = robot_name(file, index, arguments) == name
         if not named:
-            if beside or _stem(file) != _stem(srdf) or srdf.parent.parent not in file.parents:
+            if beside or _stem(file) != _stem(srdf) or not (depended or srdf.parent.parent in file.parents):
                 continue
-            beside = True  # named as the SRDF, in its robot's folder: a candidate whatever either says its name is
+            # named as the SRDF, in its robot's folder or in a package its package depends on (motoman_sia20d_support's
+            # sia20d.xacro for motoman_sia20d_moveit_config's sia20d.srdf): a candidate whatever either says its name is
+            beside = True
         path = shown(file)
         found = load(path, arguments)
         if isinstance(found, str) or not found.modelled or (named and found.robot.name != name) or not found.robot.links:
