@@ -124,3 +124,17 @@ def test_the_bytes_tell_what_the_parsed_document_says(declaration, pieces):
         assert not is_xacro(data)
         return
     assert is_xacro(data) is root.xpath(USES_XACRO)
+
+
+def test_a_launch_file_given_is_no_robot_not_a_xacro_file_to_expand(tmp_path):
+    """fanuc_m10ia_support's load_m10ia.launch holds $(find xacro): given to check, it is not
+    expanded (xacro would fail on package 'xacro') but said not to be a robot (R001)."""
+    from conftest import run_cli
+
+    launch = tmp_path / "load_m10ia.launch"
+    launch.write_text('<?xml version="1.0"?>\n<launch>\n  <param name="robot_description" '
+                      "command=\"$(find xacro)/xacro '$(find fanuc_m10ia_support)/urdf/m10ia.xacro'\" />\n</launch>\n")
+    done = run_cli("check", str(launch))
+    assert done.returncode == 1
+    assert done.stderr.decode().startswith(f"{launch}:2:1: R001 error: the root element is <launch>, not <robot>\n")
+    assert "X004" not in done.stderr.decode()

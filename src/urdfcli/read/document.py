@@ -221,7 +221,8 @@ def is_xacro(file: SourceFile) -> bool:
     namespace, or any element prefixed ``xacro:``), or ``${`` / ``$(`` in an attribute
     or in text outside comments. A namespace declaration alone is not use: xacro's
     output would read the same, at many times the cost. A document that is not
-    well-formed is not xacro: reading it says what is wrong. Where the bytes (in
+    well-formed is not xacro: reading it says what is wrong; nor is one whose root is
+    not ``<robot>`` (a launch file). Where the bytes (in
     ASCII), comments left out, cannot hold a mark, the tree is not searched for it:
     a generated URDF often keeps the ``$(find ...)`` of its source in a comment."""
     data = file.data
@@ -233,8 +234,8 @@ def is_xacro(file: SourceFile) -> bool:
         if b"$" not in data and b"xacro" not in data:
             return False  # neither mark in markup written in ASCII: nothing to parse
     root = file.tree
-    if root is None:
-        return False
+    if root is None or tag_name(root) != "robot":
+        return False  # not a robot (a launch file's $(find xacro)): reading it says so (R001)
     if next(root.iter(*_XACRO_TAGS), None) is not None:
         return True
     if (not ascii or b"<xacro:" in data) and root.xpath(_PREFIXED):
