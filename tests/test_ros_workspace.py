@@ -269,3 +269,29 @@ def test_a_library_given_to_draw_or_audit_names_the_model_to_give_instead(built,
     assert done.stderr.decode() == (f"urdfcli: {library}: a xacro library (macros and properties only), which makes no robot by itself; "
                                     "give a model that includes it: src/pr2_common/pr2_description/robots/pr2.urdf.xacro\n")
     assert done.stdout == b"" and not list(tmp_path.iterdir())
+
+
+def test_a_nameless_file_of_transmissions_nothing_includes_is_a_fragment_not_a_robot_without_links(tmp_path):
+    """turtlebot3_manipulation's transmission.xacro: one macro and its calls, transmissions of
+    joints its includer makes; no model here includes it. Not 'R002 no name', 'R004 no link'
+    and a D007 per transmission: one note."""
+    package = tmp_path / "repo" / "arm_description"
+    (tmp_path / "repo" / ".git").mkdir(parents=True)
+    (package / "urdf").mkdir(parents=True)
+    (package / "package.xml").write_text('<package format="2"><name>arm_description</name></package>\n')
+    (package / "urdf" / "transmission.xacro").write_text(
+        '<?xml version="1.0"?>\n<robot xmlns:xacro="http://ros.org/wiki/xacro">\n'
+        '  <xacro:macro name="SimpleTransmission" params="trans joint actuator">\n'
+        '    <transmission name="${trans}"><type>transmission_interface/SimpleTransmission</type>'
+        '<joint name="${joint}"><hardwareInterface>EffortJointInterface</hardwareInterface></joint></transmission>\n'
+        '  </xacro:macro>\n'
+        '  <xacro:SimpleTransmission trans="tran1" joint="joint1" actuator="motor1"/>\n'
+        '  <xacro:SimpleTransmission trans="tran2" joint="joint2" actuator="motor2"/>\n</robot>\n'
+    )
+    for command in ("check", "lint"):
+        done = run_cli(command, "arm_description/urdf/transmission.xacro", cwd=tmp_path / "repo")
+        out = (done.stdout + done.stderr).decode()
+        assert done.returncode == 0, out
+        assert ("arm_description/urdf/transmission.xacro: a fragment (its <robot> has no name) that no model includes: "
+                "not checked (it makes no link)") in out
+        assert "R002" not in out and "R004" not in out and "D007" not in out

@@ -665,8 +665,10 @@ def assemble(
                 if through:  # a fragment: its errors alone are its missing context
                     results.append(_library_result(entry._replace(targets=through, library=True), outcome, shown_keys, unreadable, resolved, fragment=True))
                     break
-                if missing and any(d.code in UNDEFINED for d in result.errors) and _nameless(entry.path):  # a part nothing here includes
-                    note = f"a fragment (its <robot> has no name) that no model includes: not checked ({result.errors[0].message})"
+                if missing and any(d.code in UNDEFINED or d.code == structure.R004.code for d in result.errors) and _nameless(entry.path):
+                    # a part nothing here includes: a name or a link its includer gives is missing, or it makes no link at all
+                    why = next((d.message for d in result.errors if d.code in UNDEFINED), "it makes no link")
+                    note = f"a fragment (its <robot> has no name) that no model includes: not checked ({why})"
                     results.append(Result(entry.path, library=Library((), (note,), unchecked=True, fragment=True)))
                     break
                 is_own = functools.cache(lambda file, path=entry.path: _same_input(file, path))
