@@ -764,3 +764,29 @@ def test_a_plain_error_counts_only_for_the_consumers_that_refuse_it(cases):
     verdicts = {row["target"]: row["verdict"] for row in document["files"][0]["compatibility"]}
     assert verdicts == {"mujoco": "loads", "drake": "loads", "pinocchio": "refuses", "pybullet": "refuses", "gazebo": "refuses",
                         "kdl": "refuses", "isaac": "loads with changes"}
+
+
+def test_gazebo_mimic_joints_a_mimic_plugin_drives_are_not_said_to_move_freely(tmp_path):
+    """robotiq_arg2f_85.gazebo.xacro: sdformat drops <mimic>, and keeps the <gazebo> plugin
+    (roboticsgroup's mimic joint plugin) that drives the joint in Gazebo; C506 names only the
+    mimic joints no such plugin drives."""
+    require_consumer("gazebo")
+    from urdfcli.targets.gazebo.load import command
+
+    body = ('<robot name="gripper"><link name="base"><inertial><mass value="1"/><inertia ixx="0.01" ixy="0" ixz="0" iyy="0.01" iyz="0" izz="0.01"/>'
+            '</inertial></link>{fingers}{plugin}</robot>\n')
+    finger = ('<link name="{n}"><inertial><mass value="0.1"/><inertia ixx="1e-4" ixy="0" ixz="0" iyy="1e-4" iyz="0" izz="1e-4"/></inertial></link>'
+              '<joint name="{n}_joint" type="revolute"><parent link="base"/><child link="{n}"/><axis xyz="0 0 1"/>'
+              '<limit lower="0" upper="1" effort="1" velocity="1"/>{mimic}</joint>')
+    fingers = (finger.format(n="left", mimic="") + finger.format(n="right", mimic='<mimic joint="left_joint"/>')
+               + finger.format(n="pad", mimic='<mimic joint="left_joint"/>'))
+    plugin = ('<gazebo><plugin filename="libroboticsgroup_gazebo_mimic_joint_plugin.so" name="mimic_right">'
+              '<joint>left_joint</joint><mimicJoint>right_joint</mimicJoint></plugin></gazebo>')
+    path = tmp_path / "gripper.urdf"
+    path.write_text(body.format(fingers=fingers, plugin=plugin))
+    converted = subprocess.run([*command(), "-p", str(path)], capture_output=True, text=True, timeout=60)
+    assert "<mimicJoint>right_joint</mimicJoint>" in converted.stdout and "libroboticsgroup_gazebo_mimic_joint_plugin.so" in converted.stdout
+    assert "<mimic" not in converted.stdout.replace("<mimicJoint>", "")  # the <mimic> itself is dropped
+    done = run_cli("lint", "--isolated", "--format", "json", "--target", "gazebo", str(path))
+    said = [d["message"] for d in json.loads(done.stdout)["files"][0]["diagnostics"] if d["code"] == "C506"]
+    assert said == ["Gazebo (sdformat 12) drops the <mimic> of mimic joint 'pad_joint' (of 'left_joint'): it moves freely"]

@@ -76,10 +76,10 @@ def once(loaded: Loaded, code: str, meshes: list, kind: str, what: str, hint: st
                              subjects=tuple(dict.fromkeys(n for n, _ in meshes)))
 
 
-def mimics_said_once(loaded: Loaded, code: str, what: str, hint: str):
-    """One diagnostic naming every mimic joint: ``what`` reads "CONSUMER makes ... {joints} ...",
+def mimics_said_once(loaded: Loaded, code: str, what: str, hint: str, taken_care_of: frozenset[str] = frozenset()):
+    """One diagnostic naming every mimic joint (but those ``taken_care_of``): ``what`` reads "CONSUMER makes ... {joints} ...",
     at the first joint's <mimic>, about each mimic joint and the joints they follow."""
-    joints = mimic_joints(loaded)
+    joints = [joint for joint in mimic_joints(loaded) if joint.name not in taken_care_of]
     if not joints:
         return
     several = len(joints) > 1

@@ -155,7 +155,9 @@ def floating_joint(loaded, given):
 @check(
     "C506", "gazebo-drops-mimic", WARNING, "Gazebo (sdformat 12) drops <mimic>.", kind=Kind.TARGET, target="gazebo",
     doc=explain(
-        """With `--target gazebo`: says, once per model, which joints have a `<mimic>`.""",
+        """With `--target gazebo`: says, once per model, which joints have a `<mimic>`, but
+        those a mimic joint plugin in a `<gazebo>` block drives (`<mimicJoint>NAME</mimicJoint>`
+        in a plugin whose file name says mimic, as roboticsgroup's).""",
         """sdformat 12 does not convert `<mimic>` (SDFormat 1.9 has no mimic): the joint moves on
         its own, so a gripper's second finger does not follow the first. sdformat 14 (Gazebo
         Harmonic) converts it to `<axis><mimic>` (gazebosim/sdformat pull request 1333).""",
@@ -167,6 +169,17 @@ def drops_mimic(loaded, given):
     yield from mimics_said_once(
         loaded, "C506", "Gazebo (sdformat 12) drops the <mimic> of {joints}: {they} freely",
         "drive them with a mimic joint plugin, or use Gazebo Harmonic (sdformat 14), which converts <mimic>",
+        plugin_mimics(loaded),
+    )
+
+
+def plugin_mimics(loaded) -> frozenset[str]:
+    """The joints a mimic joint plugin in a <gazebo> block drives (roboticsgroup's and its
+    forks: ``<plugin filename="lib..._mimic_joint_plugin.so"><mimicJoint>NAME</mimicJoint>``)."""
+    return frozenset(
+        (element.text or "").strip()
+        for block in loaded.robot.blocks("gazebo") for plugin in block.iter("plugin") if "mimic" in (plugin.get("filename") or "")
+        for element in plugin.iter("mimicJoint")
     )
 
 
