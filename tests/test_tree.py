@@ -270,3 +270,20 @@ def test_dof_leaves_out_mimic_joints_and_a_planar_joint_counts_three(tmp_path):
     assert result.stdout.decode().splitlines()[-1].endswith("4 DOF (2 mimic joints follow others, not counted), depth 2, 3 leaf links")
     summary = json.loads(run_cli("tree", "--format", "json", str(path)).stdout)["summary"]
     assert (summary["dof"], summary["mimic_joints"]) == (4, 2)
+
+
+def test_computed_limits_read_short_and_a_mimic_says_its_multiplier(tmp_path):
+    """fanuc's lrmate200id: xacro writes ${radians(170)} as 2.9670597283903604, which the tree
+    shows as 2.96706 (the degrees beside it exact); a value written short stays as written; the
+    lever of a parallel linkage follows joint_3 with multiplier -1: shown, not just 'mimics'."""
+    path = tmp_path / "arm.urdf"
+    path.write_text(
+        '<robot name="arm"><link name="base_link"/><link name="link_1"/><link name="lever"/>'
+        '<joint name="joint_1" type="revolute"><parent link="base_link"/><child link="link_1"/><axis xyz="0 0 1"/>'
+        '<limit lower="-2.9670597283903604" upper="1.57" effort="0" velocity="1"/></joint>'
+        '<joint name="joint_lever" type="revolute"><parent link="base_link"/><child link="lever"/><axis xyz="0 1 0"/>'
+        '<limit lower="-1" upper="1" effort="0" velocity="1"/><mimic joint="joint_1" multiplier="-1" offset="0.5"/></joint></robot>\n')
+    out = run_cli("tree", str(path)).stdout.decode()
+    assert "joint_1 (revolute, axis 0 0 1, -2.96706…1.57 rad (-170…89.95°))" in out
+    assert "mimics joint_1 × -1 + 0.5)" in out
+    assert "mimics joint_1 * -1 + 0.5)" in run_cli("tree", "--ascii", str(path)).stdout.decode()

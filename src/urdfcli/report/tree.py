@@ -91,6 +91,18 @@ def short(value: float) -> str:
     return "0" if text == "-0" else text
 
 
+def readable(value: float) -> str:
+    """A value as written when it is short (``1.57``), else to 6 significant digits: what
+    xacro computed (``2.9670597283903604`` for ``${radians(170)}``) reads ``2.96706``."""
+    text = format_number(value)
+    return text if len(text.lstrip("-").replace(".", "").lstrip("0")) <= 7 or "e" in text else short6(value)
+
+
+def short6(value: float) -> str:
+    text = f"{value:.6g}"
+    return "0" if text == "-0" else text
+
+
 def axis_text(axis: Vec3, number: Callable[[float], str] = format_number) -> str:
     return " ".join(number(v) for v in axis)
 
@@ -124,11 +136,14 @@ def joint_details(joint: Joint, ascii_only: bool = False) -> list[str]:
     parts = []
     if joint.type in MOVING_AXIS_TYPES:
         parts.append("axis " + axis_text(joint.axis))
-    limits = limit_text(joint, ascii_only=ascii_only)
+    limits = limit_text(joint, readable, ascii_only=ascii_only)
     if limits:
         parts.append(limits)
     if joint.mimic is not None:
-        parts.append(f"mimics {joint.mimic.joint}")
+        mimic = joint.mimic
+        factor = f" {'*' if ascii_only else '×'} {readable(mimic.multiplier)}" if mimic.multiplier != 1 else ""
+        offset = f" {'-' if mimic.offset < 0 else '+'} {readable(abs(mimic.offset))}" if mimic.offset else ""
+        parts.append(f"mimics {mimic.joint}{factor}{offset}")
     return parts
 
 
