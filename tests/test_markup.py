@@ -292,3 +292,11 @@ def test_files_in_a_missing_folder_are_one_diagnostic_a_missing_file_one_each(tm
     found_ = resources(tmp_path, body)
     assert [code for code, _ in found_] == ["D004", "D004", "D004"]
     assert found_[0][1] == "mesh '/nowhere/romeo/Torso.mesh' and 1 other file there: folder /nowhere/romeo does not exist"
+
+
+def test_an_inertia_writing_its_lower_triangle_is_one_note_not_three(tmp_path):
+    """kortex's robotiq_2f_85_macro.xacro writes iyx, izx and izy beside ixy, ixz and iyz: URDF
+    reads the upper triangle only. One D010 per <inertia>, naming the three."""
+    body = ('<link name="a"><inertial><mass value="1"/><inertia ixx="1" ixy="0" ixz="0" iyy="1" iyz="0" izz="1" '
+            'iyx="0" izx="0" izy="0"/></inertial></link>')
+    assert found(tmp_path, body) == [("D010", "info", "<inertia> has no attributes 'iyx', 'izx' and 'izy'; URDF consumers ignore them")]

@@ -115,7 +115,9 @@ def unknown_markup(loaded, given):
     defines where it is written, and that is not close to a URDF name missing
     there: a URDF element in the wrong place (`<origin>` directly in `<link>`),
     an old or private extension (`<verbose>`, `<self_filter>`), an attribute
-    on an element that takes none. Info: shown, never fails a run.
+    on an element that takes none (an element's unknown attributes are one note:
+    an `<inertia>` that also writes its lower triangle, `iyx`, `izx`, `izy`).
+    Info: shown, never fails a run.
 
     Known extensions draw nothing: Gazebo's tags inside `<gazebo>`, PyBullet's
     `<contact>` in a link, anything prefixed (`drake:`, `xacro:`), Isaac's
@@ -147,13 +149,12 @@ def unknown_markup(loaded, given):
     ```
     """
     calls = set(unprefixed_calls(loaded))
+    attributes_of: dict[int, list] = {}  # an element's unknown attributes: one diagnostic (an <inertia>'s iyx, izx, izy)
     for unknown in loaded.robot.unknown:
         if unknown.typo_of or unknown.gazebo or (unknown.attribute and unknown.parent == "material" and unknown.name == "rgba") or unknown in calls:
             continue  # a typo is D001/D002's, Gazebo markup D011's, a material's rgba M005's or M001's, a macro call without xacro: X107's
         if unknown.attribute:
-            attributes = sorted(SCHEMA[unknown.parent][0])
-            hint = f"<{unknown.parent}> takes {', '.join(attributes)}" if attributes else f"<{unknown.parent}> takes no attributes"
-            yield loaded.diagnostic("D010", f"<{unknown.parent}> has no attribute '{unknown.name}'; URDF consumers ignore it", unknown.at, hint, attribute=unknown.name)
+            attributes_of.setdefault(unknown.at, []).append(unknown)
             continue
         places = _belongs_in(unknown.name)
         if places:
@@ -161,6 +162,15 @@ def unknown_markup(loaded, given):
         else:
             hint = f"<{unknown.parent}> may hold " + ", ".join(f"<{c}>" for c in sorted(SCHEMA[unknown.parent][1]))
         yield loaded.diagnostic("D010", f"<{unknown.name}> is not URDF markup inside <{unknown.parent}>; URDF consumers ignore it", unknown.at, hint)
+    for at, unknowns in attributes_of.items():
+        tag, names = unknowns[0].parent, [u.name for u in unknowns]
+        takes = sorted(SCHEMA[tag][0])
+        hint = f"<{tag}> takes {', '.join(takes)}" if takes else f"<{tag}> takes no attributes"
+        if len(names) == 1:
+            yield loaded.diagnostic("D010", f"<{tag}> has no attribute '{names[0]}'; URDF consumers ignore it", at, hint, attribute=names[0])
+        else:
+            listed = ", ".join(f"'{name}'" for name in names[:-1]) + f" and '{names[-1]}'"
+            yield loaded.diagnostic("D010", f"<{tag}> has no attributes {listed}; URDF consumers ignore them", at, hint, attribute=names[0])
 
 
 @check("D011", "gazebo-tag-outside-gazebo", WARNING, "Gazebo markup written outside `<gazebo>`, where Gazebo never reads it.", rule_set=RuleSet.LINT)
