@@ -182,11 +182,13 @@ async def editing(root: Path, cache: Path, **options):
         await editor.stop()
 
 
-def server_memory_kib(editor: Editor) -> int:
+def server_memory_kib(editor: Editor, field: str = "Pss") -> int:
     """The memory of the server's processes (the supervisor, the server it runs, their
     xacro workers): the sum of their proportional set sizes (a page shared by several
-    counted once in all), in KiB."""
-    return sum(pss_kib(pid) for pid in process_tree(editor.server.pid))
+    counted once in all), in KiB. ``Pss_Anon``: their heaps alone, which no other
+    process shares (the libraries' pages are shared with every Python process running
+    beside the test, and their proportion moves with those)."""
+    return sum(pss_kib(pid, field) for pid in process_tree(editor.server.pid))
 
 
 def process_tree(pid: int) -> list[int]:
@@ -213,12 +215,12 @@ def process_alive(pid: int) -> bool:
         return False
 
 
-def pss_kib(pid: int) -> int:
+def pss_kib(pid: int, field: str = "Pss") -> int:
     try:
         rollup = Path(f"/proc/{pid}/smaps_rollup").read_text()
     except OSError:  # gone meanwhile
         return 0
-    return int(next(line.split()[1] for line in rollup.splitlines() if line.startswith("Pss:")))
+    return int(next(line.split()[1] for line in rollup.splitlines() if line.startswith(field + ":")))
 
 
 class Wire:

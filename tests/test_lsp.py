@@ -400,7 +400,7 @@ async def test_memory_stays_flat_over_two_thousand_edits(repository, cache):
         editor.open(model)
         await editor.diagnostics(model)
         await asyncio.sleep(0.5)
-        samples = [server_memory_kib(editor)]  # once the model is open and checked
+        samples = [server_memory_kib(editor, "Pss_Anon")]  # once the model is open and checked: the heaps, where a leak grows
         radius = 'parent="base_link" radius="0.1">'
         for edit in range(1, 2001):
             typed = f'parent="base_link" radius="0.{edit % 9 + 1}{edit}">'  # each text new
@@ -410,7 +410,7 @@ async def test_memory_stays_flat_over_two_thousand_edits(repository, cache):
                 await editor.diagnostics(model)  # each twentieth edit waits for its check: a hundred checks at least
             if edit in (400, 2000):
                 await asyncio.sleep(0.5)  # the server idle: its garbage collected
-                samples.append(server_memory_kib(editor))
+                samples.append(server_memory_kib(editor, "Pss_Anon"))
         print(f"server memory once open, after 400 and after 2,000 edits: {samples} KiB")
         assert samples[2] - samples[0] < 1024, samples  # KiB: less than 1 MiB over 2,000 edits and 100 checks or more
         # and from the 400th edit: the xacro worker forked again by then shares fewer pages with the server (-11 MiB)
