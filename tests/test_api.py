@@ -143,3 +143,17 @@ def test_checking_500_models_one_session_each_does_not_grow(tmp_path):
     assert done.returncode == 0, done.stderr
     grown = float(done.stdout.strip())
     assert grown < 50, f"grew by {grown:.1f} MB"
+
+
+def test_every_name_the_readme_gives_is_there_and_robot_is_none_for_what_holds_no_robot(tmp_path):
+    """The README's API: urdfcli.drift(paths) among them; result.robot is None when no robot
+    could be read (a package.xml given by mistake: R001), not a robot without a root."""
+    for name in ("check", "lint", "diff", "drift", "text_report", "Session", "Options", "UsageError", "Result"):
+        assert getattr(urdfcli, name) is not None
+    manifest = tmp_path / "package.xml"
+    manifest.write_text('<package format="3"><name>p</name></package>\n')
+    result = urdfcli.check(manifest)
+    assert [d.code for d in result.diagnostics] == ["R001"] and result.robot is None
+    urdf = tmp_path / "r.urdf"
+    urdf.write_text('<robot name="r"><link name="a"/></robot>\n')
+    assert urdfcli.drift([urdf]) == [] and list(urdfcli.check(urdf).robot.links) == ["a"]

@@ -13,7 +13,7 @@ from importlib import import_module
 from .version import __version__
 
 _EXPORTS = {
-    "UsageError": "api", "check": "api", "diff": "api", "lint": "api", "text_report": "api",
+    "UsageError": "api", "check": "api", "diff": "api", "drift": "api", "lint": "api", "text_report": "api",
     "Call": "diagnostics", "Diagnostic": "diagnostics", "Location": "diagnostics", "Severity": "diagnostics",
     "Options": "options", "Result": "model.result", "RuleSet": "options", "Session": "session",
 }
@@ -28,6 +28,6 @@ def __getattr__(name: str):
 
 
 __all__ = [
-    "Call", "Diagnostic", "Location", "Options", "Result", "RuleSet", "Session", "Severity", "UsageError", "__version__", "check", "diff", "lint",
-    "text_report",
+    "Call", "Diagnostic", "Location", "Options", "Result", "RuleSet", "Session", "Severity", "UsageError", "__version__", "check", "diff", "drift",
+    "lint", "text_report",
 ]

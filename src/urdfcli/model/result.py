@@ -72,8 +72,9 @@ class Result:
 
     @property
     def robot(self) -> Robot | None:
-        """The model read: ``robot.links`` and ``robot.joints`` by name."""
-        return self.loaded.robot if self.loaded is not None else None
+        """The model read: ``robot.links`` and ``robot.joints`` by name; None when no robot
+        could be read (not well-formed, a root that is not ``<robot>``, an SRDF)."""
+        return self.loaded.robot if self.loaded is not None and self.loaded.modelled else None
 
     @property
     def label(self) -> str:
