@@ -295,3 +295,20 @@ def test_of_the_urdfs_that_may_be_its_robot_the_one_its_names_fit_is_chosen(tmp_
     ]
     text = run_cli("check", str(quad / "srdf" / "quad.srdf"), cwd=tmp_path).stdout.decode()
     assert "checked against robot_data/robots/quad_description/robots/quad12.urdf\n" in text
+
+
+def test_the_command_lines_xacro_arguments_are_the_urdfs(tmp_path):
+    """check panda.srdf --urdf panda_arm.urdf.xacro hand:=true: the hand's links exist only
+    with hand:=true; the argument given is the URDF's, not dropped (25 false K001 and K002)."""
+    (tmp_path / "arm.urdf.xacro").write_text(
+        '<robot name="panda" xmlns:xacro="http://www.ros.org/wiki/xacro">\n  <xacro:arg name="hand" default="false"/>\n'
+        '  <link name="panda_link0"/><link name="panda_link8"/>\n'
+        '  <joint name="panda_joint1" type="revolute"><parent link="panda_link0"/><child link="panda_link8"/>'
+        '<limit lower="-1" upper="1" effort="1" velocity="1"/></joint>\n'
+        '  <xacro:if value="$(arg hand)"><link name="panda_hand"/>'
+        '<joint name="panda_hand_joint" type="fixed"><parent link="panda_link8"/><child link="panda_hand"/></joint></xacro:if>\n</robot>\n')
+    (tmp_path / "panda.srdf").write_text('<robot name="panda">\n  <group name="hand"><link name="panda_hand"/></group>\n</robot>\n')
+    done, document = check("panda.srdf", "--urdf", "arm.urdf.xacro", "hand:=true", cwd=tmp_path)
+    assert done.returncode == 0 and found(document) == [], document
+    done, document = check("panda.srdf", "--urdf", "arm.urdf.xacro", cwd=tmp_path)
+    assert done.returncode == 1 and [d["code"] for d in document["files"][0]["diagnostics"]] == ["K001"]

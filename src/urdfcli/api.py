@@ -294,10 +294,11 @@ def _described(loaded: Loaded, session: Session) -> Diagnostic | None:
 
 
 def _arguments_for(session: Session, file: Path) -> dict[str, str]:
-    """The xacro arguments a model is checked with: its configured ones, and the first
-    set ``[tool.urdfcli] models`` lists for it."""
+    """The xacro arguments the URDF of an SRDF is checked with: its configured ones, the
+    first set ``[tool.urdfcli] models`` lists for it, and those of the command line
+    (``check panda.srdf --urdf panda_arm.urdf.xacro hand:=true``)."""
     config = configured(session)(str(file))
-    return {**config.mappings_for(str(file)), **((config.argument_sets(str(file)) or [{}])[0])}
+    return {**config.mappings_for(str(file)), **((config.argument_sets(str(file)) or [{}])[0]), **session.options.mappings}
 
 
 def _load_urdf(session: Session, path: str, arguments: dict[str, str]) -> Loaded | str:
