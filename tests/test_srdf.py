@@ -312,3 +312,21 @@ def test_the_command_lines_xacro_arguments_are_the_urdfs(tmp_path):
     assert done.returncode == 0 and found(document) == [], document
     done, document = check("panda.srdf", "--urdf", "arm.urdf.xacro", cwd=tmp_path)
     assert done.returncode == 1 and [d["code"] for d in document["files"][0]["diagnostics"]] == ["K001"]
+
+
+@pytest.mark.parametrize(("kind", "severity"), [("fixed", "info"), ("floating", "error")])
+def test_a_virtual_joint_to_a_link_the_urdf_fixes_to_world_is_a_note_when_fixed(tmp_path, kind, severity):
+    """moveit_resources' panda: the URDF fixes panda_link0 to a 'world' link (for Gazebo) and the
+    SRDF's fixed virtual joint names panda_link0. MoveIt skips the virtual joint and the robot
+    stands as the URDF puts it: a note. A floating one would leave a mobile base fixed: an error."""
+    (tmp_path / "panda.urdf").write_text(
+        '<robot name="panda"><link name="world"/><link name="panda_link0"/><link name="panda_link1"/>'
+        '<joint name="world_joint" type="fixed"><parent link="world"/><child link="panda_link0"/></joint>'
+        '<joint name="panda_joint1" type="revolute"><parent link="panda_link0"/><child link="panda_link1"/>'
+        '<limit lower="-1" upper="1" effort="1" velocity="1"/></joint></robot>\n')
+    (tmp_path / "panda.srdf").write_text(
+        f'<robot name="panda">\n  <virtual_joint name="virtual_joint" type="{kind}" parent_frame="world" child_link="panda_link0"/>\n</robot>\n')
+    done, document = check("panda.srdf", "--urdf", "panda.urdf", cwd=tmp_path)
+    [diagnostic] = document["files"][0]["diagnostics"]
+    assert (diagnostic["code"], diagnostic["severity"]) == ("K007", severity)
+    assert done.returncode == (0 if severity == "info" else 1)

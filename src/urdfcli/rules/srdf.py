@@ -315,7 +315,10 @@ def _group_joints(loaded: Loaded, groups: dict, name: str, seen: frozenset = fro
     doc=explain(
         """
         Finds each `<virtual_joint>` whose `child_link` exists in the URDF but is
-        not its root link.
+        not its root link. A fixed virtual joint whose child the URDF already
+        fixes to its root (a Gazebo-style `world` link, `world` -> `panda_link0`)
+        is only noted (info): MoveIt skips it, and the robot stands as the URDF
+        says, which is what the fixed joint meant.
         """,
         """
         A virtual joint attaches the robot to the world: MoveIt uses it only when
@@ -334,11 +337,30 @@ def virtual_joint_not_at_root(loaded: Loaded, given: Given) -> Iterator[Diagnost
         return
     for virtual in loaded.semantic.virtual_joints:
         child = virtual.child
-        if child is not None and child.name in robot.links and child.name != root:
+        if child is None or child.name not in robot.links or child.name == root:
+            continue
+        if virtual.type == "fixed" and _fixed_to(loaded.described, child.name, root):
+            # a Gazebo-style URDF fixes the base to its 'world' link: MoveIt skips the virtual joint, and the robot stands as it says
             yield loaded.diagnostic(
-                "K007", f"virtual joint '{virtual.name}' has child '{child.name}', but the URDF's root link is '{root}'",
-                child.at, f"give child_link=\"{root}\"", attribute=child.attribute, subjects=(child.name,),
-            )
+                "K007", f"virtual joint '{virtual.name}' has child '{child.name}', which the URDF already fixes to its root link '{root}': "
+                "MoveIt skips the virtual joint, and the robot stands where the URDF puts it",
+                child.at, f"remove the virtual joint, or give child_link=\"{root}\"", attribute=child.attribute, subjects=(child.name,),
+            )._replace(severity=INFO)
+            continue
+        yield loaded.diagnostic(
+            "K007", f"virtual joint '{virtual.name}' has child '{child.name}', but the URDF's root link is '{root}'",
+            child.at, f"give child_link=\"{root}\"", attribute=child.attribute, subjects=(child.name,),
+        )
+
+
+def _fixed_to(model: Loaded, link: str, root: str) -> bool:
+    """Whether ``link`` hangs from ``root`` by fixed joints alone."""
+    while link != root:
+        joint = model.parent_joint(link)
+        if joint is None or joint.type != "fixed" or joint.parent is None:
+            return False
+        link = joint.parent
+    return True
 
 
 K008 = declare(
