@@ -249,14 +249,15 @@ def summary(comparison: Comparison, urdf: str, source: GeneratedFrom) -> str:
     return f"{urdf} does not match {_shown(source.file)}, {generated}: " + "; ".join(pieces)
 
 
-# The difference a summary names: what changes how the robot moves first, a colour last.
-_JOINT_FIELDS = ("type", "parent", "child", "axis", "origin", "limit", "mimic")
+# The difference a summary names: what changes how the robot moves first, a colour or a
+# mesh's path (an absolute one differs from machine to machine) last.
+_JOINT_FIELDS = ("type", "parent", "child", "axis", "origin", "limit", "mimic", "dynamics", "safety")
 _LINK_FIELDS = ("inertial", "collision", "visual")
 
 
 def _weight(change: Change) -> int:
     field = change.field or ""
-    if "material" in field:
+    if "material" in field or field.endswith("filename"):
         return len(_JOINT_FIELDS) + len(_LINK_FIELDS)
     fields = _JOINT_FIELDS if _tag(change.element) == "joint" else _LINK_FIELDS if _tag(change.element) == "link" else ()
     first = next((i for i, name in enumerate(fields) if field.startswith(name)), None)
