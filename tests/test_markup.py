@@ -300,3 +300,12 @@ def test_an_inertia_writing_its_lower_triangle_is_one_note_not_three(tmp_path):
     body = ('<link name="a"><inertial><mass value="1"/><inertia ixx="1" ixy="0" ixz="0" iyy="1" iyz="0" izz="1" '
             'iyx="0" izx="0" izy="0"/></inertial></link>')
     assert found(tmp_path, body) == [("D010", "info", "<inertia> has no attributes 'iyx', 'izx' and 'izy'; URDF consumers ignore them")]
+
+
+def test_a_gazebo_reference_whose_expression_lost_its_dollar_says_so(tmp_path):
+    """unitree go1's leg.xacro: <gazebo reference="{name}_thigh"> in a macro called for four legs.
+    Not 'did you mean RR_thigh?' (one leg of four): the $ is missing."""
+    path = tmp_path / "robot.urdf"
+    path.write_text('<robot name="r"><link name="FR_thigh"/><link name="RR_thigh"/><gazebo reference="{name}_thigh"><mu1>0.2</mu1></gazebo></robot>\n')
+    [diagnostic] = [d for d in lint_file(str(path), Config()).diagnostics if d.code == "D006"]
+    assert diagnostic.hint == "'{name}' lacks its $: xacro copies it as written; write '${name}'"

@@ -32,6 +32,19 @@ def _suggestion(word: str, known) -> str | None:
     return close[0] if close else None
 
 
+_UNEXPANDED = re.compile(r"(?<!\$)\{(\w+)\}")  # {name}: a xacro expression that lost its $
+
+
+def _name_hint(word: str, known) -> str | None:
+    """The hint of a name that is no link or joint: a ``{name}`` that xacro never read (its
+    ``$`` missing, so every call wrote the same text), else the name it is closest to."""
+    unexpanded = _UNEXPANDED.search(word)
+    if unexpanded is not None:
+        return f"'{unexpanded.group(0)}' lacks its $: xacro copies it as written; write '${unexpanded.group(0)}'"
+    close = _suggestion(word, known)
+    return f"did you mean '{close}'?" if close else None
+
+
 @check("D001", "unknown-element", WARNING, "A misspelt element: close to a URDF element missing where it is written.", rule_set=RuleSet.LINT)
 def unknown_element(loaded, given):
     """## What it does
@@ -479,8 +492,7 @@ def gazebo_reference(loaded, given):
     for element in loaded.robot.blocks("gazebo"):
         reference = element.get("reference")
         if reference is not None and reference not in known:
-            close = _suggestion(reference, known)
-            yield loaded.diagnostic("D006", f"<gazebo reference='{reference}'> names no link or joint", loaded.robot.place(element), f"did you mean '{close}'?" if close else None)
+            yield loaded.diagnostic("D006", f"<gazebo reference='{reference}'> names no link or joint", loaded.robot.place(element), _name_hint(reference, known))
 
 
 @check("D007", "transmission-joint-not-found", WARNING, "A transmission naming a joint that does not exist.", rule_set=RuleSet.LINT)
@@ -529,8 +541,7 @@ def transmission_joint(loaded, given):
         for joint in transmission.iterfind("joint"):
             name = joint.get("name")
             if name is not None and name not in joints:
-                close = _suggestion(name, joints)
-                yield loaded.diagnostic("D007", f"transmission '{transmission.get('name', '')}' names joint '{name}', which does not exist", loaded.robot.place(joint), f"did you mean '{close}'?" if close else None)
+                yield loaded.diagnostic("D007", f"transmission '{transmission.get('name', '')}' names joint '{name}', which does not exist", loaded.robot.place(joint), _name_hint(name, joints))
 
 
 @check("D013", "ros2-control-joint-not-found", ERROR, "A `<ros2_control>` joint that names no joint of the robot.")
