@@ -357,6 +357,11 @@ def fix(paths: list[str], session: Session, progress: Progress | None = None) ->
         return (config.fix if options.fix is None else options.fix), (config.unsafe_fixes if options.unsafe_fixes is None else options.unsafe_fixes)
 
     serial = session.using(options.but(jobs=1))  # the fixed texts are this process's: checked here
+    fixes_at: dict[tuple, int] = {(): 0}  # the texts fixed so far, as they stood after each round -> the fixes applied by then
+
+    def texts() -> tuple:
+        return tuple(sorted((file, session.files.read(file).data) for file in before))
+
     for round_ in range(fixing.MAX_ROUNDS + 1):
         found = run(paths, serial if before else session, progress if round_ == 0 else None)
         pairs = [(d, settings[1]) for result in found.results if (settings := chosen(result))[0] for d in result.diagnostics]
@@ -377,6 +382,12 @@ def fix(paths: list[str], session: Session, progress: Progress | None = None) ->
         if not written:
             break
         applied += selection.fixes
+        now = tuple((file, data) for file, data in texts() if data != before[file])
+        if now in fixes_at:  # a fix undid another's edit (two models wanting one value each its own way): back where it was
+            del applied[fixes_at[now]:]
+            found = run(paths, serial, None)  # what remains of the texts as they are
+            break
+        fixes_at[now] = len(applied)
     changed = {file: (data, session.files.read(file).data) for file, data in before.items()}
     return Fixed(found, applied, {file: pair for file, pair in changed.items() if pair[0] != pair[1]}, list(dict.fromkeys(failed)))
 
