@@ -706,3 +706,21 @@ def test_fixing_a_file_that_is_not_there_says_so_in_one_line(tmp_path, command):
     done = run_cli(*command, "r.urdf", "missing.urdf", cwd=tmp_path)
     said = done.stdout.decode() + done.stderr.decode()
     assert done.returncode == 2 and ("nothing to fix" if "--diff" in command else "0 fixed, 0 remaining") in said
+
+
+def test_a_package_outside_the_repository_is_never_written(here):
+    """A model of this repository calling a macro of a package found with -P (an installed
+    or vendored share): its tensor fix is in that package, which is not written."""
+    segment_models(here / "vendor")  # seg.xacro's package, found with -P; not this repository
+    repo = here / "repo"
+    (repo / ".git").mkdir(parents=True)
+    put(repo, {"robot/package.xml": '<package format="3"><name>robot</name></package>\n',
+               "robot/urdf/r.urdf.xacro": '<?xml version="1.0"?>\n<robot name="r" xmlns:xacro="http://www.ros.org/wiki/xacro">\n'
+                                          '  <xacro:include filename="$(find pkg)/urdf/seg.xacro"/>\n  <link name="base_link"/>\n'
+                                          '  <xacro:seg name="s1" parent="base_link" size="1.0"/>\n</robot>\n'})
+    before = snapshot(here)
+    done = run_cli("lint", "--isolated", "-P", f"pkg={here / 'vendor' / 'pkg'}", "--fix", "--unsafe-fixes", "--select", "I009", "robot/urdf/r.urdf.xacro", cwd=repo)
+    assert snapshot(here) == before
+    assert done.stderr.decode() == (f"urdfcli: {here / 'vendor' / 'pkg' / 'urdf' / 'seg.xacro'}: not written: it is outside the repository "
+                                    "or workspace of what was checked (a package found with -P, or installed)\n")
+    assert re.search(r"^0 fixed, 1 remaining", done.stdout.decode(), re.M) and done.returncode == 1

@@ -34,7 +34,7 @@ from .project import fixing, linter
 from .project.compatibility import verdicts
 from .project.config import Config, ConfigError
 from .project.semantic import described
-from .project.workspace import Aside, Entry, Models, Target, assemble, fragment_includers, model_targets, models_below, plan, unchecked_library, unread, xacro_sources
+from .project.workspace import Aside, Entry, Models, Target, assemble, fragment_includers, model_targets, models_below, plan, search_roots, unchecked_library, unread, xacro_sources
 from .read.document import STDIN, Document, InputError, read_document
 from .read.xacro_scan import shown
 from .read.edits import EditError
@@ -358,6 +358,7 @@ def fix(paths: list[str], session: Session, progress: Progress | None = None) ->
 
     serial = session.using(options.but(jobs=1))  # the fixed texts are this process's: checked here
     fixes_at: dict[tuple, int] = {(): 0}  # the texts fixed so far, as they stood after each round -> the fixes applied by then
+    ours = _writable(paths, session)
 
     def texts() -> tuple:
         return tuple(sorted((file, session.files.read(file).data) for file in before))
@@ -370,6 +371,9 @@ def fix(paths: list[str], session: Session, progress: Progress | None = None) ->
             break
         written = False
         for file, edits in selection.edits.items():
+            if not ours(file):
+                failed.append(f"{file}: not written: it is outside the repository or workspace of what was checked (a package found with -P, or installed)")
+                continue
             try:
                 data = session.files.read(file).data
                 new = edit_text(data, [(e.start, e.end, e.text) for e in edits])
@@ -390,6 +394,20 @@ def fix(paths: list[str], session: Session, progress: Progress | None = None) ->
         fixes_at[now] = len(applied)
     changed = {file: (data, session.files.read(file).data) for file, data in before.items()}
     return Fixed(found, applied, {file: pair for file, pair in changed.items() if pair[0] != pair[1]}, list(dict.fromkeys(failed)))
+
+
+def _writable(paths: list[str], session: Session) -> Callable[[str], bool]:
+    """Whether a fix may write a file: one of the repositories or workspaces of the inputs
+    (their search roots), never a package found elsewhere (-P, an installed share)."""
+    roots = set()
+    for path in paths:
+        if path == STDIN:
+            continue
+        given = Path(path).resolve()
+        roots.update(search_roots(given / "x" if given.is_dir() else given, session.packages)[0])
+        if given.is_dir():
+            roots.add(given)
+    return lambda file: file == STDIN or any(Path(file).resolve().is_relative_to(root) for root in roots)
 
 
 def audit(loaded: Loaded, config: Config, tolerance: float = massprops.TOLERANCE, density: float | None = None) -> Audit | None:
