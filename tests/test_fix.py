@@ -724,3 +724,19 @@ def test_a_package_outside_the_repository_is_never_written(here):
     assert done.stderr.decode() == (f"urdfcli: {here / 'vendor' / 'pkg' / 'urdf' / 'seg.xacro'}: not written: it is outside the repository "
                                     "or workspace of what was checked (a package found with -P, or installed)\n")
     assert re.search(r"^0 fixed, 1 remaining", done.stdout.decode(), re.M) and done.returncode == 1
+
+
+def test_add_noqa_silences_what_a_macro_made_at_the_call_not_in_the_shared_body(cli, here):
+    """b's seg call makes a tensor 100 times too small: the comment goes on b's call, not into
+    seg.xacro's body, where it would silence model a and any model to come."""
+    segment_models(here)
+    seg = (here / "pkg/urdf/seg.xacro").read_text()
+    done = cli("lint", "--isolated", "--add-noqa", "--select", "I009", "pkg/urdf/b.urdf.xacro")
+    assert "1 noqa comment" in done.stdout, done.stdout
+    assert (here / "pkg/urdf/seg.xacro").read_text() == seg
+    assert '<xacro:seg name="s1" parent="base_link" size="1.0"/>' in (here / "pkg/urdf/b.urdf.xacro").read_text()
+    assert "urdfcli: noqa: I009" in (here / "pkg/urdf/b.urdf.xacro").read_text()
+    assert cli("lint", "--isolated", "--select", "I009", "pkg/urdf/b.urdf.xacro").exit_code == 0
+    # model a, made wrong the same way, is still told
+    (here / "pkg/urdf/a.urdf.xacro").write_text((here / "pkg/urdf/a.urdf.xacro").read_text().replace('size="0.1"', 'size="1.0"'))
+    assert "I009 warning" in cli("lint", "--isolated", "--select", "I009", "pkg/urdf/a.urdf.xacro").stdout

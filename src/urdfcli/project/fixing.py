@@ -83,19 +83,22 @@ def counts(diagnostics: Iterable[Diagnostic], unsafe: bool) -> tuple[int, int]:
 def noqa_edits(diagnostics: Iterable[Diagnostic], files: SourceFiles) -> dict[str, list[Edit]]:
     """For every warning and error, the ``noqa`` comment that silences it: one per
     element, naming every code found there; one ``noqa-file`` comment per file for the
-    diagnostics on a whole file. A diagnostic with no place in a source (a line of the
-    xacro expansion) gets none."""
+    diagnostics on a whole file. What a macro call made is silenced at the outermost
+    call (in the model's own file), not in the macro's body, where the comment would
+    silence every call of every model, those to come too. A diagnostic with no place
+    in a source (a line of the xacro expansion) gets none."""
     groups: dict[tuple[str, int, int, bool], tuple[int | None, int | None, list[str]]] = {}
     for diagnostic in diagnostics:
         location = diagnostic.location
         if (diagnostic.severity or Severity.INFO) is Severity.INFO or location.expanded:
             continue
-        source = files.get(location.file)
-        found = noqa_edit(source, location.line or None, [diagnostic.code], location.column) if source is not None else None
+        place = location.trace[-1] if location.trace else location
+        source = files.get(place.file)
+        found = noqa_edit(source, place.line or None, [diagnostic.code], place.column) if source is not None else None
         if found is None:
             continue
-        key = (location.file, found[0], found[1], "noqa-file" in found[2])  # (the file's comment and its first element's may both go at its start)
-        line, column, codes = groups.setdefault(key, (location.line or None, location.column, []))
+        key = (place.file, found[0], found[1], "noqa-file" in found[2])  # (the file's comment and its first element's may both go at its start)
+        line, column, codes = groups.setdefault(key, (place.line or None, place.column, []))
         if diagnostic.code not in codes:
             codes.append(diagnostic.code)
     edits: dict[str, list[Edit]] = defaultdict(list)
