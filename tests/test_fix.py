@@ -740,3 +740,17 @@ def test_add_noqa_silences_what_a_macro_made_at_the_call_not_in_the_shared_body(
     # model a, made wrong the same way, is still told
     (here / "pkg/urdf/a.urdf.xacro").write_text((here / "pkg/urdf/a.urdf.xacro").read_text().replace('size="0.1"', 'size="1.0"'))
     assert "I009 warning" in cli("lint", "--isolated", "--select", "I009", "pkg/urdf/a.urdf.xacro").stdout
+
+
+def test_a_swapped_pair_written_as_a_property_and_its_negation_is_fixed_at_the_property(cli, here):
+    """lower="${swing}" upper="${-swing}" with swing 1.2: one edit, swing = -1.2, fixes both
+    bounds (it was refused as changing 'another value', the other bound of the same fix); a
+    sibling model of the folder defining its own 'swing' does not stop it."""
+    model = ('<?xml version="1.0"?>\n<robot name="{n}" xmlns:xacro="http://www.ros.org/wiki/xacro">\n'
+             '  <xacro:property name="swing" value="{v}"/>\n  <link name="base_link"/><link name="l1"/>\n'
+             '  <joint name="j3" type="revolute"><parent link="base_link"/><child link="l1"/><axis xyz="0 0 1"/>'
+             '<limit lower="${{swing}}" upper="${{-swing}}" effort="10" velocity="1"/></joint>\n</robot>\n')
+    put(here, {"p.urdf.xacro": model.format(n="p", v="-0.5"), "p2.urdf.xacro": model.format(n="p2", v="1.2")})
+    files = fixed(cli, here, "p2.urdf.xacro", "J010", "--unsafe-fixes", "--select", "J010", elements=("limit",))
+    assert files["p2.urdf.xacro"].decode() == model.format(n="p2", v="-1.2")
+    assert files["p.urdf.xacro"].decode() == model.format(n="p", v="-0.5")

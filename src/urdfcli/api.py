@@ -36,6 +36,7 @@ from .project.config import Config, ConfigError
 from .project.semantic import described
 from .project.workspace import Aside, Entry, Models, Target, assemble, fragment_includers, model_targets, models_below, plan, search_roots, unchecked_library, unread, xacro_sources
 from .read.document import STDIN, Document, InputError, read_document
+from .read.files import STDIN_NAME
 from .read.xacro_scan import shown
 from .read.edits import EditError
 from .read.edits import apply as edit_text
@@ -407,7 +408,7 @@ def _writable(paths: list[str], session: Session) -> Callable[[str], bool]:
         roots.update(search_roots(given / "x" if given.is_dir() else given, session.packages)[0])
         if given.is_dir():
             roots.add(given)
-    return lambda file: file == STDIN or any(Path(file).resolve().is_relative_to(root) for root in roots)
+    return lambda file: file in (STDIN, STDIN_NAME) or any(Path(file).resolve().is_relative_to(root) for root in roots)
 
 
 def audit(loaded: Loaded, config: Config, tolerance: float = massprops.TOLERANCE, density: float | None = None) -> Audit | None:

@@ -235,9 +235,10 @@ class Placer:
         head, tail = raw[:computed[0][1]], raw[computed[-1][2]:]
         start, end = _common(old, new)
         if old.startswith(head) and old.endswith(tail) and len(old) >= len(head) + len(tail):
-            if len(old) - end <= len(head):  # the change is in the literal text before the first ${...}
+            # (a change touching no literal character, such as a sign put before ${swing}, is the expression's)
+            if len(old) - end <= len(head) and start < len(head):  # the change is in the literal text before the first ${...}
                 return [Spot(Edit(site.file, base + start, base + len(old) - end, escape_attribute(new[start:len(new) - end], quote)), affected)]
-            if start >= len(old) - len(tail):  # in the literal text after the last one
+            if start >= len(old) - len(tail) and end < len(tail):  # in the literal text after the last one
                 begin = base + len(raw) - (len(old) - start)
                 return [Spot(Edit(site.file, begin, base + len(raw) - end, escape_attribute(new[start:len(new) - end], quote)), affected)]
             if len(computed) == 1 and computed[0][0] == "expression" and start >= len(head) and end >= len(tail):
@@ -329,7 +330,8 @@ class Placer:
                     raise Unplaceable(f"{what} ({file.name}:{file.position(definition.place)[0]}) is also read in {scan.name}, outside this model")
                 affected.update((i, read[1]) for i in self.instances(scan.name, read[0]))
         for scan in self._universe():
-            if _absolute(scan.name) not in self.scans and name in _names_read(scan):
+            defines = any(d.kind == "property" and d.name == name and d.macro is None for d in scan.definitions)
+            if _absolute(scan.name) not in self.scans and name in _names_read(scan) and not defines:  # (one that defines it reads its own)
                 raise Unplaceable(f"{what} ({file.name}:{file.position(definition.place)[0]}) may also be read in {scan.name}, outside this model")
         property_site = _Site(file.name, file.source, file, element, start, (), ())
         return self._attribute(property_site, written, old, new, frozenset(affected))
