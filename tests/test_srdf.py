@@ -330,3 +330,14 @@ def test_a_virtual_joint_to_a_link_the_urdf_fixes_to_world_is_a_note_when_fixed(
     [diagnostic] = document["files"][0]["diagnostics"]
     assert (diagnostic["code"], diagnostic["severity"]) == ("K007", severity)
     assert done.returncode == (0 if severity == "info" else 1)
+
+
+def test_the_json_of_an_srdf_names_its_robot_and_the_urdf_it_was_checked_against(tmp_path):
+    (tmp_path / "panda.urdf").write_text(ARM.format(name="panda", tip="foot", joint="knee"))
+    (tmp_path / "panda.srdf").write_text('<robot name="panda">\n  <group name="leg"><chain base_link="base" tip_link="foot"/></group>\n</robot>\n')
+    _, document = check("panda.srdf", cwd=tmp_path)
+    entry = document["files"][0]
+    assert (entry["robot"], entry["checked_against"]) == ("panda", "panda.urdf")
+    (tmp_path / "panda.urdf").unlink()
+    _, document = check("panda.srdf", cwd=tmp_path)
+    assert (document["files"][0]["robot"], document["files"][0]["checked_against"]) == ("panda", None)

@@ -67,8 +67,9 @@ class Result:
 
     def __post_init__(self) -> None:
         robot = self.loaded.robot if self.loaded is not None else None
-        if robot is not None:
-            object.__setattr__(self, "robot_name", robot.name)
+        semantic = self.loaded.semantic if self.loaded is not None else None
+        if robot is not None or semantic is not None:  # (an SRDF names its robot too)
+            object.__setattr__(self, "robot_name", robot.name if robot is not None else semantic.name)
 
     @property
     def robot(self) -> Robot | None:
