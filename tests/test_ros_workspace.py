@@ -251,6 +251,7 @@ def test_a_fragment_whose_models_all_need_arguments_is_a_gap_lint_fails_on(tmp_p
     assert done.returncode == 1, out
     assert out.startswith("arm_description/urdf/ur.xacro: X006 warning: xacro fragment not checked: no model that includes it "
                           "could check it (arm_description/urdf/ur5e.xacro needs 'arm_side')")
+    assert 'e.g. models = { "arm_description/urdf/ur5e.xacro" = [["arm_side:=VALUE"]] }' in out  # the model and argument it needs
     done = run_cli("check", "arm_description/urdf/ur.xacro", cwd=tmp_path / "repo")
     assert done.returncode == 0 and "X006 warning" in done.stderr.decode()
     (tmp_path / "repo" / "pyproject.toml").write_text('[tool.urdfcli]\nmodels = { "arm_description/urdf/ur5e.xacro" = [["arm_side:=left_"]] }\n')

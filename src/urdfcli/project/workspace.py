@@ -443,6 +443,7 @@ class Target(NamedTuple):
     alone: bool = False
     unchecked: str = ""  # alone: why the models that include it could not check it
     fragment: bool = False  # alone: a file that cannot be read on its own; only why no model checked it is said
+    needs: tuple[str, str] | None = None  # alone: a model that includes it and the xacro argument it needs
 
     @property
     def label(self) -> str:
@@ -772,6 +773,7 @@ def _library_result(
     notes: list[str] = []  # why a model could not be used, or that none includes it
     found: list[Diagnostic] = []
     needing: list[str] = []  # models that include it but cannot be expanded without arguments
+    needs: tuple[str, str] | None = None  # the first of them and the argument it needs, for the hint
     unread: list[tuple[str, str]] = []  # models that expand but do not read it: (label, with which arguments)
     used: list[Result] = []  # the models it was checked through
     for target in entry.targets:
@@ -781,6 +783,7 @@ def _library_result(
             continue
         if model.needs_argument is not None:  # the model cannot be expanded as it is: say how to make it, do not fail the library
             needing.append(f"{target.label} needs '{model.needs_argument}'")
+            needs = needs or (target.path, model.needs_argument)
             notes.append(
                 f"not checked through {target.label}: it needs xacro argument '{model.needs_argument}'; "
                 "list the argument sets it is checked with in [tool.urdfcli] models"
@@ -805,7 +808,7 @@ def _library_result(
         notes += [f"not checked through {label}: it does not read this file with {arguments}" for label, arguments in unread]
         notes.append("a fragment of the models that include it (it cannot be read on its own), and none read it: not checked")
         if reasons:
-            said = outcome(Target(entry.path, alone=True, unchecked="; ".join(reasons), fragment=True))
+            said = outcome(Target(entry.path, alone=True, unchecked="; ".join(reasons), fragment=True, needs=needs))
             found += said.diagnostics if isinstance(said, Result) else ()
     elif not checked_through:  # checked on its own
         notes += [
@@ -813,7 +816,7 @@ def _library_result(
             "list argument sets under which it does in [tool.urdfcli] models"
             for label, arguments in unread
         ]
-        alone = outcome(Target(entry.path, alone=True, unchecked="; ".join(reasons)))
+        alone = outcome(Target(entry.path, alone=True, unchecked="; ".join(reasons), needs=needs))
         if isinstance(alone, Unreadable):
             unreadable.append(alone)
         else:
@@ -833,14 +836,16 @@ def _library_result(
     return Result(entry.path, tuple(diagnostics), library=Library(tuple(checked_through), tuple(notes), fragment=fragment))
 
 
-def unchecked_library(path: str, unchecked: str, fragment: bool = False) -> Diagnostic:
-    """X006: a library (or a fragment, which cannot be read alone) that no model including it could check."""
+def unchecked_library(path: str, unchecked: str, fragment: bool = False, needs: tuple[str, str] | None = None) -> Diagnostic:
+    """X006: a library (or a fragment, which cannot be read alone) that no model including it
+    could check; ``needs``: a model that includes it and the argument it needs, for the hint."""
     what = "xacro fragment not checked" if fragment else "xacro library checked on its own only"
+    model, argument = needs if needs is not None else ("urdf/robot.urdf.xacro", "name")
     return Diagnostic(
         "X006",
         f"{what}: no model that includes it could check it ({unchecked})",
         Location("<stdin>" if path == STDIN else path),
-        hint='list their argument sets in [tool.urdfcli] models, e.g. models = { "urdf/robot.urdf.xacro" = [["name:=robot"]] }',
+        hint=f'list their argument sets in [tool.urdfcli] models (paths from the configuration\'s folder), e.g. models = {{ "{model}" = [["{argument}:=VALUE"]] }}',
     )
 
 
