@@ -174,13 +174,19 @@ def test_a_generated_urdf_says_only_what_its_source_does_not(built, tmp_path):
     assert ("I001", "pr2.urdf") in found  # the negative mass is the copy's own
 
 
+def repository_package(root, name: str):
+    """A package ``name`` with its urdf/ folder, in a git repository at ``root``/repo."""
+    package = root / "repo" / name
+    (root / "repo" / ".git").mkdir(parents=True, exist_ok=True)
+    (package / "urdf").mkdir(parents=True)
+    (package / "package.xml").write_text(f'<package format="2"><name>{name}</name></package>\n')
+    return package
+
+
 def test_a_fragment_nothing_includes_is_named_once_without_its_missing_context(tmp_path):
     """TALOS's left_arm.transmissions.urdf.xacro without the arm that includes it: its
     <robot> has no name and it reads the macro's 'name'; one note, no error, not counted."""
-    package = tmp_path / "repo" / "pkg"
-    (tmp_path / "repo" / ".git").mkdir(parents=True)
-    (package / "urdf").mkdir(parents=True)
-    (package / "package.xml").write_text('<package format="2"><name>pkg</name></package>\n')
+    package = repository_package(tmp_path, "pkg")
     (package / "urdf" / "t.xacro").write_text(
         '<robot xmlns:xacro="http://ros.org/wiki/xacro"><xacro:macro name="trans" params="name side">'
         '<transmission name="${name}_${side}"/></xacro:macro></robot>\n'
@@ -203,10 +209,7 @@ def test_a_fragment_nothing_includes_is_named_once_without_its_missing_context(t
 def _arm_with_fragment(root, reads: str):
     """A package like ur_description: ur5e.xacro declares robot_model and includes ur.xacro, a
     fragment that declares prefix and calls the arm's macro with ``reads`` for its prefix."""
-    package = root / "repo" / "arm_description"
-    (root / "repo" / ".git").mkdir(parents=True)
-    (package / "urdf").mkdir(parents=True)
-    (package / "package.xml").write_text('<package format="3"><name>arm_description</name></package>\n')
+    package = repository_package(root, "arm_description")
     (package / "urdf" / "arm_macro.xacro").write_text(
         '<robot xmlns:xacro="http://ros.org/wiki/xacro">\n  <xacro:macro name="arm" params="prefix">\n'
         '    <link name="${prefix}base_link"/>\n  </xacro:macro>\n</robot>\n'
@@ -276,10 +279,7 @@ def test_a_nameless_file_of_transmissions_nothing_includes_is_a_fragment_not_a_r
     """turtlebot3_manipulation's transmission.xacro: one macro and its calls, transmissions of
     joints its includer makes; no model here includes it. Not 'R002 no name', 'R004 no link'
     and a D007 per transmission: one note."""
-    package = tmp_path / "repo" / "arm_description"
-    (tmp_path / "repo" / ".git").mkdir(parents=True)
-    (package / "urdf").mkdir(parents=True)
-    (package / "package.xml").write_text('<package format="2"><name>arm_description</name></package>\n')
+    package = repository_package(tmp_path, "arm_description")
     (package / "urdf" / "transmission.xacro").write_text(
         '<?xml version="1.0"?>\n<robot xmlns:xacro="http://ros.org/wiki/xacro">\n'
         '  <xacro:macro name="SimpleTransmission" params="trans joint actuator">\n'
