@@ -405,7 +405,7 @@ def _writable(paths: list[str], session: Session) -> Callable[[str], bool]:
         if path == STDIN:
             continue
         given = Path(path).resolve()
-        roots.update(search_roots(given / "x" if given.is_dir() else given, session.packages)[0])
+        roots.update(search_roots(given / "x" if given.is_dir() else given, session.packages)[0])  # (a folder: as for a file in it)
         if given.is_dir():
             roots.add(given)
     return lambda file: file in (STDIN, STDIN_NAME) or any(Path(file).resolve().is_relative_to(root) for root in roots)
