@@ -169,7 +169,6 @@ class Placer:
         return self._attribute(site, change.attribute, old, change.value, affected)
 
     def _insert_child(self, site: _Site, change: InsertChild) -> Spot:
-        self._called_elsewhere(site)
         span = site.source.span(site.element)
         if span is None:
             raise Unplaceable(f"the element at {self.where(site)} cannot be read")
@@ -182,25 +181,7 @@ class Placer:
         inner = _indentation(text, child) if child is not None and child < end and "\n" in text[tag_end:child] else own + "  "
         return Spot(Edit(site.file, tag_end, tag_end, "\n" + inner + change.markup), frozenset((at, CHILD) for at in site.instances))
 
-    def _called_elsewhere(self, site: _Site) -> None:
-        """Raises Unplaceable when ``site`` is in the body of a macro that a file outside
-        this model calls: an edit there changes the other models too (a shared
-        ``seg.xacro`` whose tensor is right for one model's box and wrong for another's)."""
-        if site.scan is None:
-            return
-        names = {site.scan.macros[m].name.removeprefix("xacro:") for m in _macros_around(site.scan, site.element)}
-        if not names:
-            return
-        own = self._model_files()
-        for scan in self._universe():
-            if _absolute(scan.name) in own:
-                continue
-            called = next((call.name.rpartition(".")[2] for call in scan.calls if call.name.rpartition(".")[2] in names), None)
-            if called is not None:
-                raise Unplaceable(f"macro '{called}', whose body writes it at {self.where(site)}, is also called in {scan.name}, outside this model")
-
     def _attribute(self, site: _Site, attribute: str, old: str | None, new: str, affected: frozenset[Value]) -> list[Spot]:
-        self._called_elsewhere(site)
         text = site.source.text
         start = site.start
         tag = _START_TAG.match(text, start)
