@@ -180,12 +180,18 @@ def report_unreadable(output: Output, unreadable: list[Unreadable]) -> None:
         output.err.file.write(f"urdfcli: {escape(found.reason)}\n")
 
 
-def no_robot_of_its_own(path: str, models: list[str]) -> str:
-    """Why a xacro library is not drawn or audited, and the model to give instead."""
+def refuse_library(path: str, session) -> None:
+    """Exit 2 for a xacro library given to draw or audit: it makes no robot by itself;
+    the message names a model that includes it, to give instead."""
+    from .. import api  # (the library: imported when the command runs)
+
+    models = api.library_models(path, session)
+    if models is None:
+        return
     if not models:
-        return f"{path}: a xacro library (macros and properties only), which makes no robot by itself, and no model of its repository or workspace includes it"
+        raise fail(f"{path}: a xacro library (macros and properties only), which makes no robot by itself, and no model of its repository or workspace includes it")
     more = f" (one of {len(models)} that do)" if len(models) > 1 else ""
-    return f"{path}: a xacro library (macros and properties only), which makes no robot by itself; give a model that includes it: {models[0]}{more}"
+    raise fail(f"{path}: a xacro library (macros and properties only), which makes no robot by itself; give a model that includes it: {models[0]}{more}")
 
 
 def not_a_robot(path: str) -> str:

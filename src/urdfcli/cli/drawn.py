@@ -12,7 +12,7 @@ from ..report.targets import joint_notes, link_notes
 from ..rules import REGISTRY, Kind
 from ..rules.suggestions import close_matches
 from ..session import Session
-from .common import fail, no_robot_of_its_own, not_a_robot
+from .common import fail, not_a_robot, refuse_library
 
 
 def target_notes(builds) -> dict[str, str]:
@@ -29,9 +29,7 @@ def load_model(path: str, session: Session) -> Result:
     """One input to draw, with its configuration and the rules `check` runs (its
     errors are the model's errors, as `check` reports them): the first argument
     set ``[tool.urdfcli] models`` lists for it, under the command line's."""
-    models = api.library_models(path, session)
-    if models is not None:
-        raise fail(no_robot_of_its_own(path, models))
+    refuse_library(path, session)
     config = api.configured(session)(path)
     first_set = (config.argument_sets(path) or [{}])[0]
     found = api.check_target(api.Target(path), session.using(session.options.but(arguments=tuple({**first_set, **session.options.mappings}.items()))))

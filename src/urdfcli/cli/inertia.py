@@ -22,8 +22,8 @@ from .common import (
     choose,
     fail,
     format_option,
-    no_robot_of_its_own,
     not_a_robot,
+    refuse_library,
     report_unreadable,
     session_for,
     split_inputs,
@@ -75,9 +75,7 @@ def inertia(
     output = Output.standard(color)
     with session_for(options) as session:
         for path in paths:
-            models = api.library_models(path, session)
-            if models is not None:
-                raise fail(no_robot_of_its_own(path, models))
+            refuse_library(path, session)
         found = api.run(paths, session)
         report_unreadable(output, found.unreadable)
         if not found.results:

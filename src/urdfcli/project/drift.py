@@ -105,12 +105,11 @@ def generated_from(urdf: Path, session: Session) -> GeneratedFrom | None:
     return find_source(urdf, head, lambda: packages.enclosing_package(packages.real_path(urdf).parent), lambda folder: session.index.scan([folder]), packages.real_path)
 
 
-def lost_source(urdf: Path, session: Session) -> str | None:
-    """The PATH a URDF's header says xacro generated it from, when no such file is found
-    (beside it, or in its package): the URDF cannot be compared."""
+def named_source(urdf: Path, session: Session) -> str | None:
+    """The PATH a URDF's header says xacro generated it from (asked when no such file was
+    found, beside it or in its package: the URDF cannot be compared)."""
     found = session.files.get(urdf)
-    named = header_source(found.data[:HEAD_BYTES]) if found is not None else None
-    return named if named is not None and generated_from(urdf, session) is None else None
+    return header_source(found.data[:HEAD_BYTES]) if found is not None else None
 
 
 def generated_urdfs(paths: Iterable[str], session: Session) -> list[str]:
@@ -124,7 +123,7 @@ def generated_urdfs(paths: Iterable[str], session: Session) -> list[str]:
     def consider(urdf: Path, shown: str, sources: set[Path] | None = None, asked: bool = False) -> None:
         source = generated_from(urdf, session)
         if source is None:
-            if asked and lost_source(urdf, session) is not None:  # a URDF asked about: that it cannot be compared is said
+            if asked and named_source(urdf, session) is not None:  # a URDF asked about: that it cannot be compared is said
                 found.setdefault(urdf.resolve(), shown)
             return
         origin = source.file.resolve()
@@ -161,7 +160,7 @@ def drift(loaded: Loaded, config: Config, session: Session, lost: bool = False) 
         return []
     source = generated_from(document.file, session)
     if source is None:
-        named = lost_source(document.file, session) if lost else None
+        named = named_source(document.file, session) if lost else None
         if named is None:
             return []
         message = f"{_name(loaded)} says it was generated from {named}, which is neither beside it nor in its package: not compared"

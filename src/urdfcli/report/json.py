@@ -22,8 +22,8 @@ def file_dict(result: Result, files=None) -> dict:
         "robot": result.robot_name,
         "diagnostics": [diagnostic_dict(d, files) for d in result.displayed],
     }
-    described = result.loaded.described if result.loaded is not None else None
     if result.loaded is not None and result.loaded.semantic is not None:  # an SRDF: the URDF it was checked against
+        described = result.loaded.described
         entry["checked_against"] = described.path if described is not None and described.modelled else None
     if result.library is not None:
         entry["checked_through"] = list(result.library.checked_through)

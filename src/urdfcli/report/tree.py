@@ -85,9 +85,9 @@ def plural(n: int, word: str) -> str:
 # -- joint details, shared with the graph ----------------------------------------
 
 
-def short(value: float) -> str:
-    """A number for people: 4 significant digits, no ``-0``."""
-    text = f"{value:.4g}"
+def short(value: float, digits: int = 4) -> str:
+    """A number for people: 4 significant digits (or ``digits``), no ``-0``."""
+    text = f"{value:.{digits}g}"
     return "0" if text == "-0" else text
 
 
@@ -95,12 +95,7 @@ def readable(value: float) -> str:
     """A value as written when it is short (``1.57``), else to 6 significant digits: what
     xacro computed (``2.9670597283903604`` for ``${radians(170)}``) reads ``2.96706``."""
     text = format_number(value)
-    return text if len(text.lstrip("-").replace(".", "").lstrip("0")) <= 7 or "e" in text else short6(value)
-
-
-def short6(value: float) -> str:
-    text = f"{value:.6g}"
-    return "0" if text == "-0" else text
+    return text if len(text.lstrip("-").replace(".", "").lstrip("0")) <= 7 or "e" in text else short(value, 6)
 
 
 def axis_text(axis: Vec3, number: Callable[[float], str] = format_number) -> str:

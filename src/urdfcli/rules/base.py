@@ -242,3 +242,8 @@ def _did_you_mean(word: str, known) -> str:
     return f" (did you mean '{close[0]}'?)" if close else ""
 
 
+def names(items, most: int = 3) -> str:
+    """``'a', 'b', 'c' and 2 more``: what one diagnostic about several elements names."""
+    items = list(items)
+    shown = ", ".join(f"'{item}'" for item in items[:most])
+    return shown + (f" and {len(items) - most} more" if len(items) > most else "")

@@ -7,7 +7,7 @@ import math
 from ..diagnostics import Fix, SetAttribute
 from ..model.numbers import format_number
 from ..model.robot import MOVING_AXIS_TYPES
-from .base import ERROR, INFO, PLACED, UNSAFE, WARNING, RuleSet, check
+from .base import ERROR, INFO, PLACED, UNSAFE, WARNING, RuleSet, check, names
 
 FULL_TURN = 2 * math.pi - 1e-3  # a range written as -3.1416..3.1416 is a full turn
 UNIT_TOLERANCE = 1e-3  # an axis this close to length 1 is a unit axis written with few decimals
@@ -388,11 +388,10 @@ def effort_velocity_zero(loaded, given):
         yield loaded.diagnostic("J014", message, joint.part("limit"), "if an actuator drives it, give its real effort and velocity limits",
                                 subjects=(joint.name,))._replace(severity=INFO).with_fix(_NO_LIMIT_FIX)
     elif passive:  # one note for the model: a description of the kinematics alone (ROS-Industrial's arms) writes effort="0" on every joint
-        names = [joint.name for joint, _ in passive]
-        shown = ", ".join(f"'{name}'" for name in names[:3]) + (f" and {len(names) - 3} more" if len(names) > 3 else "")
-        message = f"{len(names)} joints ({shown}) have a zero effort or velocity limit and no transmission or ros2_control drives them, so they are taken as passive (no actuator)"
+        listed = [joint.name for joint, _ in passive]
+        message = f"{len(listed)} joints ({names(listed)}) have a zero effort or velocity limit and no transmission or ros2_control drives them, so they are taken as passive (no actuator)"
         yield loaded.diagnostic("J014", message, passive[0][0].part("limit"), "if actuators drive them, give their real effort and velocity limits",
-                                subjects=tuple(names))._replace(severity=INFO).with_fix(_NO_LIMIT_FIX)
+                                subjects=tuple(listed))._replace(severity=INFO).with_fix(_NO_LIMIT_FIX)
 
 
 def _nothing(values) -> str:

@@ -16,6 +16,7 @@ from collections.abc import Iterator
 from typing import TYPE_CHECKING
 
 from ..diagnostics import Diagnostic
+from ..model.kinematics import bodies
 from .base import ERROR, INFO, WARNING, Given, Kind, check, declare, explain
 from .suggestions import close_matches
 
@@ -339,7 +340,7 @@ def virtual_joint_not_at_root(loaded: Loaded, given: Given) -> Iterator[Diagnost
         child = virtual.child
         if child is None or child.name not in robot.links or child.name == root:
             continue
-        if virtual.type == "fixed" and _fixed_to(loaded.described, child.name, root):
+        if virtual.type == "fixed" and bodies(loaded.described)[child.name].top == root:  # fixed to the root
             # a Gazebo-style URDF fixes the base to its 'world' link: MoveIt skips the virtual joint, and the robot stands as it says
             yield loaded.diagnostic(
                 "K007", f"virtual joint '{virtual.name}' has child '{child.name}', which the URDF already fixes to its root link '{root}': "
@@ -351,16 +352,6 @@ def virtual_joint_not_at_root(loaded: Loaded, given: Given) -> Iterator[Diagnost
             "K007", f"virtual joint '{virtual.name}' has child '{child.name}', but the URDF's root link is '{root}'",
             child.at, f"give child_link=\"{root}\"", attribute=child.attribute, subjects=(child.name,),
         )
-
-
-def _fixed_to(model: Loaded, link: str, root: str) -> bool:
-    """Whether ``link`` hangs from ``root`` by fixed joints alone."""
-    while link != root:
-        joint = model.parent_joint(link)
-        if joint is None or joint.type != "fixed" or joint.parent is None:
-            return False
-        link = joint.parent
-    return True
 
 
 K008 = declare(

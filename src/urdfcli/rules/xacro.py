@@ -18,9 +18,10 @@ from collections.abc import Iterator
 
 from ..diagnostics import Diagnostic, Edit, Fix, Location
 from ..model.sources import XacroSources, bound, parameter_place, parameters
+from ..read.memo import once
 from ..read.xacro_scan import Place, XacroFile, free_names
 from . import structure
-from .base import ERROR, INFO, UNSAFE, WARNING, Kind, RuleSet, check
+from .base import ERROR, INFO, UNSAFE, WARNING, Kind, RuleSet, check, names
 from .suggestions import close_matches
 
 
@@ -253,9 +254,7 @@ def macro_unused(loaded, given) -> Iterator[Diagnostic]:
             name, definition = uncalled[0]
             yield _diagnostic("X104", f"macro '{name}' is called nowhere: not {where}", file, definition.place, "call it, or remove it")
         elif uncalled:  # one note for the file: a library of colours or parts serves packages elsewhere
-            names = [name for name, _ in uncalled]
-            shown = ", ".join(f"'{name}'" for name in names[:3]) + (f" and {len(names) - 3} more" if len(names) > 3 else "")
-            yield _diagnostic("X104", f"{len(names)} macros of this file ({shown}) are called nowhere: not {where}", file, uncalled[0][1].place,
+            yield _diagnostic("X104", f"{len(uncalled)} macros of this file ({names(name for name, _ in uncalled)}) are called nowhere: not {where}", file, uncalled[0][1].place,
                               "call them, or remove them")
 
 
@@ -479,7 +478,12 @@ def tag_unprefixed(loaded, given) -> Iterator[Diagnostic]:
 
 def unprefixed_calls(loaded) -> list:
     """The elements of the expansion (markup URDF does not define) named as a macro of the
-    model's files: calls written without ``xacro:``, which xacro 2 copies unexpanded."""
+    model's files: calls written without ``xacro:``, which xacro 2 copies unexpanded.
+    Worked out once per model (X107, X104 and D010 ask)."""
+    return once(loaded, _unprefixed_calls)
+
+
+def _unprefixed_calls(loaded) -> list:
     sources, robot = loaded.xacro_sources, loaded.robot
     if sources is None or robot is None:
         return []

@@ -6,6 +6,7 @@ from __future__ import annotations
 from ...model.load import Loaded
 from ...model.massprops import number
 from ...read.memo import once as memo
+from ..base import names
 
 
 def link_at(loaded: Loaded, name: str) -> int | None:
@@ -86,13 +87,6 @@ def mimics_said_once(loaded: Loaded, code: str, what: str, hint: str, taken_care
     listed = f"{len(joints)} mimic joints ({names(j.name for j in joints)})" if several else f"mimic joint '{joints[0].name}' (of '{joints[0].mimic.joint}')"
     yield loaded.diagnostic(code, what.format(joints=listed, they="they move" if several else "it moves"), mimic_at(joints[0]), hint,
                             subjects=tuple(dict.fromkeys(name for j in joints for name in (j.name, j.mimic.joint))))
-
-
-def names(items, most: int = 3) -> str:
-    """``'a', 'b', 'c' and 2 more``."""
-    items = list(items)
-    shown = ", ".join(f"'{item}'" for item in items[:most])
-    return shown + (f" and {len(items) - most} more" if len(items) > most else "")
 
 
 __all__ = ["BOUNDED", "MIMICKED", "about_joint", "add_limit", "inertial_at", "inverted_limits", "joints_of", "limit_at", "link_at", "mimic_at", "mimic_joints", "mimics_said_once", "names", "number", "once", "without_limit"]
