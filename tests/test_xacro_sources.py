@@ -341,6 +341,72 @@ def test_parameters_used_in_nested_macros_by_callees_or_forwarded_are_clean(tmp_
     assert found(model, codes=("X103",)) == []
 
 
+# The Robotiq 2F grippers' shape (ros-industrial robotiq): each variant's package defines
+# the same finger macros; a shared caller passes `stroke`, which only the 140 uses.
+FINGER_CALLER = '<xacro:macro name="finger_links" params="prefix stroke"><xacro:outer_knuckle prefix="${prefix}" stroke="${stroke}"/></xacro:macro>'
+
+
+def gripper(root: Path, size: str, knuckle_mesh: str) -> Path:
+    package = root / f"gripper_{size}"
+    write(package / "package.xml", package_xml(f"gripper_{size}"))
+    write(package / "urdf" / "fingers.xacro", library(FINGER_CALLER))
+    write(package / "urdf" / f"model_{size}_macro.xacro", library(f"""
+        <xacro:include filename="fingers.xacro"/>
+        <xacro:macro name="outer_knuckle" params="prefix stroke">
+          <link name="${{prefix}}outer_knuckle"><visual><geometry><mesh filename="{knuckle_mesh}"/></geometry></visual></link>
+        </xacro:macro>
+        <xacro:macro name="gripper_{size}" params="prefix"><xacro:finger_links prefix="${{prefix}}" stroke="{size}"/></xacro:macro>
+        """))
+    return write(package / "urdf" / f"model_{size}.urdf.xacro", robot(f'<xacro:include filename="model_{size}_macro.xacro"/><xacro:gripper_{size} prefix=""/>'))
+
+
+def test_a_parameter_a_same_named_variant_of_the_macro_uses_is_its_interface_not_a_mistake(tmp_path):
+    root = tmp_path / "robotiq"
+    (root / ".git").mkdir(parents=True)
+    small = gripper(root, "85", "package://gripper_85/meshes/outer_knuckle.stl")
+    assert found(small, codes=("X103",)) == [("X103", "model_85_macro.xacro", *column_of(small.with_name("model_85_macro.xacro"), "stroke", "params="))]
+    gripper(root, "140", "package://gripper_140/meshes/robotiq_arg2f_${stroke}_outer_knuckle.stl")
+    assert found(small, codes=("X103",)) == []
+
+
+def test_a_parameter_a_macro_of_the_same_parameter_list_uses_is_left_alone_where_a_call_is_computed(tmp_path):
+    # clearpath's shape: every platform macro takes wheel:='default', one generic call picks the platform
+    (tmp_path / ".git").mkdir()
+    j100 = write(tmp_path / "j100.urdf.xacro", library('<xacro:macro name="j100" params="wheel:=\'default\'"><link name="base_link"/></xacro:macro>'))
+    write(tmp_path / "a200.urdf.xacro", library('<xacro:macro name="a200" params="wheel:=\'default\'"><link name="base_link"/><link name="${wheel}_wheel"/></xacro:macro>'))
+    robot_file = write(tmp_path / "robot.urdf.xacro", robot("""
+        <xacro:include filename="j100.urdf.xacro"/>
+        <xacro:property name="platform" value="j100"/>
+        <xacro:call macro="${platform}" wheel="default"/>
+        """))
+    assert found(j100, codes=("X103",)) == []
+    edit(robot_file, '<xacro:call macro="${platform}" wheel="default"/>', '<xacro:j100 wheel="default"/>')
+    assert found(j100, codes=("X103",)) == [("X103", "j100.urdf.xacro", *column_of(j100, "wheel", "params="))]
+
+
+def test_a_parameter_no_macro_of_its_name_or_interface_uses_is_still_a_warning(tmp_path):
+    (tmp_path / ".git").mkdir()
+    model = write(tmp_path / "robot.urdf.xacro", robot("""
+        <xacro:macro name="wheel" params="prefix xyz *origin">
+          <link name="${prefix}_wheel"/>
+          <joint name="${prefix}_joint" type="fixed"><parent link="base_link"/><child link="${prefix}_wheel"/></joint>
+        </xacro:macro>
+        <xacro:macro name="caster" params="prefix xyz *origin">
+          <link name="${prefix}_caster"/>
+        </xacro:macro>
+        <link name="base_link"/>
+        <xacro:property name="part" value="wheel"/>
+        <xacro:call macro="${part}" prefix="left" xyz="0 0.2 0"><origin xyz="0 0.2 0"/></xacro:call>
+        <xacro:caster prefix="rear" xyz="0 0 0"><origin xyz="0 0 0"/></xacro:caster>
+        """))
+    write(tmp_path / "other.urdf.xacro", library('<xacro:macro name="wheel" params="prefix"><link name="${prefix}_wheel"/></xacro:macro>'))
+    warnings = diagnostics(model, "X103")
+    assert [(d.severity.value, d.line, d.column) for d in warnings] == [
+        ("warning", *column_of(model, "xyz", 'name="wheel"')), ("warning", *column_of(model, "*origin", 'name="wheel"')),
+        ("warning", *column_of(model, "xyz", 'name="caster"')), ("warning", *column_of(model, "*origin", 'name="caster"')),
+    ]
+
+
 # -- X105: names that do not depend on a parameter --------------------------------------
 NAMED_MACRO = """
     <xacro:macro name="wheel" params="side y">

@@ -37,6 +37,8 @@ class Facts(NamedTuple):
     forwarded: frozenset[str]  # parameters taken from the caller's scope (name:=^)
     free: frozenset[str]  # names a macro body reads that it does not define: its callers' (xacro's scope is the caller's)
     free_blocks: frozenset[str]  # blocks a macro body inserts that are not its own block parameters
+    variants: frozenset[tuple[str, str]]  # (macro, parameter as written): a macro of that name uses that parameter
+    interfaces: frozenset[tuple[str, str]]  # (parameter list, parameter): a macro taking that list uses that parameter
 
 
 def chain(file: XacroFile, macro: int | None) -> list[int]:
@@ -50,6 +52,42 @@ def chain(file: XacroFile, macro: int | None) -> list[int]:
 
 def parameters(file: XacroFile, macro: int) -> tuple[Parameter, ...]:
     return file.macros[macro].parameters
+
+
+def used_parameters(file: XacroFile, macro: int) -> frozenset[str]:
+    """The parameters (as written: ``*origin`` for a block) a macro's body, nested
+    macros included, uses: a name it reads in ``${...}`` (every name, where an
+    expression cannot be read), a block it inserts."""
+    return once(file, _used_parameters)[macro]
+
+
+def _used_parameters(file: XacroFile) -> list[frozenset[str]]:
+    read: list[set[str]] = [set() for _ in file.macros]
+    unreadable: set[int] = set()
+    inserted: list[set[str]] = [set() for _ in file.macros]
+    for expression in file.expressions:
+        names = free_names(expression.text)
+        for macro in chain(file, expression.macro):
+            if names is None:
+                unreadable.add(macro)
+            else:
+                read[macro].update(n.name for n in names)
+    for block in file.blocks:
+        for macro in chain(file, block.macro):
+            inserted[macro].add(block.name)
+    return [
+        frozenset(
+            p.shown for p in parameters(file, macro)
+            if (p.name in inserted[macro] if p.block else macro in unreadable or p.name in read[macro])
+        )
+        for macro in range(len(file.macros))
+    ]
+
+
+def interface(file: XacroFile, macro: int) -> str:
+    """A macro's parameter list, whatever their order and defaults: macros that one
+    computed call (``<xacro:call macro="${...}"/>``) may stand for share it."""
+    return " ".join(sorted(p.shown for p in parameters(file, macro)))
 
 
 def bound(file: XacroFile, macro: int | None) -> frozenset[str]:
@@ -108,21 +146,24 @@ def _facts_of(file: XacroFile) -> Facts:
         block.name for block in file.blocks
         if block.macro is not None and block.name not in {p.name for m in chain(file, block.macro) for p in parameters(file, m) if p.block}
     }
+    used = [(macro, parameter) for macro in range(len(file.macros)) for parameter in used_parameters(file, macro)]
     return Facts(
         frozenset(names), frozenset(arguments), any_argument,
         frozenset(calls), any("$" in c for c in calls),
         frozenset(b.name for b in file.blocks), frozenset(globals_), any_global,
         frozenset(forwarded), frozenset(free), frozenset(free_blocks),
+        frozenset((file.macros[m].name, p) for m, p in used), frozenset((interface(file, m), p) for m, p in used),
     )
 
 
 def merged(facts: Iterable[Facts]) -> Facts:
     facts = list(facts)
-    union = [frozenset().union(*(getattr(f, field) for f in facts)) for field in ("names", "arguments", "calls", "blocks", "globals", "forwarded", "free", "free_blocks")]
-    names, arguments, calls, blocks, globals_, forwarded, free, free_blocks = union
+    fields = ("names", "arguments", "calls", "blocks", "globals", "forwarded", "free", "free_blocks", "variants", "interfaces")
+    union = [frozenset().union(*(getattr(f, field) for f in facts)) for field in fields]
+    names, arguments, calls, blocks, globals_, forwarded, free, free_blocks, variants, interfaces = union
     return Facts(
         names, arguments, any(f.any_argument for f in facts), calls, any(f.any_call for f in facts),
-        blocks, globals_, any(f.any_global for f in facts), forwarded, free, free_blocks,
+        blocks, globals_, any(f.any_global for f in facts), forwarded, free, free_blocks, variants, interfaces,
     )
 
 
@@ -255,4 +296,7 @@ def _unique(files: list[XacroFile]) -> list[XacroFile]:
     return found
 
 
-__all__ = ["Facts", "MacroCall", "XacroSources", "bound", "chain", "file_facts", "merged", "parameter_place", "parameters"]
+__all__ = [
+    "Facts", "MacroCall", "XacroSources", "bound", "chain", "file_facts", "interface", "merged", "parameter_place",
+    "parameters", "used_parameters",
+]

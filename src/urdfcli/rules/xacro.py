@@ -17,9 +17,9 @@ import re
 from collections.abc import Iterator
 
 from ..diagnostics import Diagnostic, Edit, Fix, Location
-from ..model.sources import XacroSources, bound, parameter_place, parameters
+from ..model.sources import Facts, XacroSources, bound, interface, parameter_place, parameters, used_parameters
 from ..read.memo import once
-from ..read.xacro_scan import Place, XacroFile, free_names
+from ..read.xacro_scan import Parameter, Place, XacroFile, free_names
 from . import structure
 from .base import ERROR, INFO, UNSAFE, WARNING, Kind, RuleSet, check, names
 from .suggestions import close_matches
@@ -127,17 +127,15 @@ def property_unused(loaded, given) -> Iterator[Diagnostic]:
             yield _diagnostic("X102", f"property '{name}' is used nowhere", file, definition.place, f"use it as ${{{name}}}, or remove it")
 
 
-def _read_in_body(file: XacroFile, macro: int, name: str) -> bool:
-    for expression in file.expressions:
-        if file.within(expression.macro, macro):
-            names = free_names(expression.text)
-            if names is None or any(n.name == name for n in names):
-                return True
-    return False
-
-
-def _inserted_in_body(file: XacroFile, macro: int, name: str) -> bool:
-    return any(block.name == name and file.within(block.macro, macro) for block in file.blocks)
+def _used_elsewhere(facts: Facts, parameter: Parameter, macro: str, shape: str) -> bool:
+    """Whether a parameter of macro ``macro`` (with parameter list ``shape``) counts
+    as used outside its body, by what ``facts`` read."""
+    name = parameter.name
+    # a macro that may stand for this one uses it: the parameter is their shared interface
+    if (macro, parameter.shown) in facts.variants or (facts.any_call and (shape, parameter.shown) in facts.interfaces):
+        return True
+    # xacro evaluates a body in its caller's scope: another body may read the name, or insert the block
+    return name in facts.free_blocks if parameter.block else name in facts.free or name in facts.forwarded
 
 
 @check("X103", "macro-parameter-unused", WARNING, "A macro parameter its body never uses.", kind=Kind.SOURCES, rule_set=RuleSet.LINT)
@@ -149,6 +147,15 @@ def parameter_unused(loaded, given) -> Iterator[Diagnostic]:
     xacro evaluates a macro's body in its caller's scope, so a parameter also
     counts as used when a macro body anywhere in the workspace reads that name
     without defining it, or forwards it (`NAME:=^`).
+
+    Left alone: a parameter that a macro which may stand for this one takes
+    and uses. That is another macro of the same name in the workspace (a
+    variant: the Robotiq 2F-85's `outer_knuckle` ignores `stroke`, the
+    2F-140's names its meshes with it, and one shared caller passes it to
+    whichever is included), or, where the workspace calls a macro by a
+    computed name (`<xacro:call macro="${platform}"/>`), a macro with the
+    same parameter list. The parameter is their shared interface: removing it
+    would break the caller, and nothing is wrong with this macro.
 
     ## Why is this bad?
     Every call passes a value that changes nothing: an `xyz` meant for the
@@ -189,15 +196,14 @@ def parameter_unused(loaded, given) -> Iterator[Diagnostic]:
     sources = loaded.xacro_sources
     for file in sources.files:
         for macro, definition in enumerate(file.macros):
+            used, shape = used_parameters(file, macro), interface(file, macro)
             for parameter in parameters(file, macro):
                 name = parameter.name
+                if parameter.shown in used or _used(sources, lambda f: _used_elsewhere(f, parameter, definition.name, shape)):
+                    continue
                 if parameter.block:
-                    if _inserted_in_body(file, macro, name) or _used(sources, lambda f: name in f.free_blocks):
-                        continue
                     message = f"block parameter '*{name}' of macro '{definition.name}' is never inserted: the block each call gives is dropped"
                     hint = f'insert it with <xacro:insert_block name="{name}"/>, or remove *{name} from params'
-                elif _read_in_body(file, macro, name) or _used(sources, lambda f: name in f.free or name in f.forwarded):
-                    continue
                 else:
                     message = f"parameter '{name}' of macro '{definition.name}' is never used in its body: the value each call gives changes nothing"
                     hint = f"use it as ${{{name}}}, or remove it from params"
