@@ -412,6 +412,37 @@ def test_xacro_finds_the_right_call_for_jtbots_imu():
     assert sorted(re.findall(r'[whd]="([\d.]+)"', call)) == ["0.03", "0.03", "0.06"]
 
 
+def test_xacro_finds_the_call_of_a_macro_with_a_block_parameter_and_keeps_its_block(tmp_path):
+    """An inertial macro taking *origin (the tutorials' `inertial_cylinder`): the call is
+    tried with the block the model gives, whose rpy turns the tensor with the cylinder."""
+    path = tmp_path / "robot.urdf.xacro"
+    path.write_text(textwrap.dedent("""\
+        <robot name="r" xmlns:xacro="http://www.ros.org/wiki/xacro">
+          <xacro:macro name="inertial_cylinder" params="m r h *origin">
+            <inertial>
+              <xacro:insert_block name="origin"/>
+              <mass value="${m}"/>
+              <inertia ixx="${m*(3*r*r+h*h)/12}" ixy="0" ixz="0" iyy="${m*(3*r*r+h*h)/12}" iyz="0" izz="${m*r*r/2}"/>
+            </inertial>
+          </xacro:macro>
+          <link name="base"/>
+          <link name="roller">
+            <xacro:inertial_cylinder m="2" r="0.1" h="0.5"><origin xyz="0 0 0" rpy="0 1.5708 0"/></xacro:inertial_cylinder>
+            <collision><origin rpy="0 1.5708 0"/><geometry><cylinder radius="0.1" length="0.05"/></geometry></collision>
+          </link>
+          <joint name="roller_joint" type="continuous"><parent link="base"/><child link="roller"/><axis xyz="1 0 0"/></joint>
+        </robot>
+        """))
+    assert codes_by_link(audited(path))["roller"]
+    out = run_cli("inertia", "--suggest", "--xacro", str(path)).stdout.decode()
+    assert f'called at {path}:11 as <xacro:inertial_cylinder m="2" r="0.1" h="0.5"><origin xyz="0 0 0" rpy="0 1.5708 0"/></xacro:inertial_cylinder> -->' in out
+    call = out.split("<!-- the call that gives the geometry's values: -->\n")[1].splitlines()[0]
+    assert call == '<xacro:inertial_cylinder m="2" r="0.1" h="0.05"><origin xyz="0 0 0" rpy="0 1.5708 0"/></xacro:inertial_cylinder>'
+    # pasted in place of the call, it fixes the link as xacro expands it
+    path.write_text(re.sub(r"<xacro:inertial_cylinder m=.*</xacro:inertial_cylinder>", call, path.read_text()))
+    assert not codes_by_link(audited(path))["roller"]
+
+
 def test_density_computes_masses_from_volume(tmp_path):
     path = tmp_path / "cube.urdf"
     path.write_text('<robot name="c"><link name="root"/><link name="cube"><collision><geometry><box size="0.1 0.1 0.1"/></geometry></collision>'

@@ -21,6 +21,7 @@ from .load import Loaded
 from .massprops import Matrix, number
 from .numbers import NumberError, parse_double, parse_vector
 from .robot import INERTIA_KEYS, Link
+from .written import escape_attribute
 
 
 def suggestion(loaded: Loaded, entry: LinkAudit, density: float | None = None) -> str:
@@ -54,6 +55,20 @@ class MacroUse(NamedTuple):
     called_at: str | None
     written_at: str = ""  # FILE:LINE of the <inertial> in the macro's body
     inertial_only: bool = True  # the macro writes the <inertial> alone (not a whole link, or a gripper, around it)
+    blocks: tuple[str, ...] = ()  # the elements the call gives its block parameters (*origin), as written
+
+
+def _call(name: str, attributes: dict[str, str], blocks: tuple[str, ...] = ()) -> str:
+    """A macro call as XML: the blocks it gives its block parameters are its children."""
+    written = " ".join([f"<xacro:{name}", *(f'{k}="{escape_attribute(v)}"' for k, v in attributes.items())])
+    return f"{written}>{''.join(blocks)}</xacro:{name}>" if blocks else f"{written}/>"
+
+
+def _as_written(element) -> str:
+    """An element of a xacro source as XML, without the namespaces its document declares."""
+    alone = etree.fromstring(etree.tostring(element, with_tail=False))
+    etree.cleanup_namespaces(alone)
+    return etree.tostring(alone, encoding="unicode")
 
 
 def _written(loaded: Loaded, file: str, line: int, tag: str):
@@ -88,15 +103,16 @@ def macro_use(loaded: Loaded, link: Link) -> MacroUse | None:
     if any(etree.QName(a).localname == "link" for a in inside):  # the macro makes the link (or a gripper): its call is no <inertial>
         return MacroUse(name, macro.get("params", ""), f"{where.file}:{_line(loaded, where.file, macro)}", None, None,
                         f"{where.file}:{where.line}", inertial_only=False)
-    call, called_at = None, None
+    call, called_at, blocks = None, None, ()
     link_where = loaded.document.locate(link.at)
     source_link = _written(loaded, link_where.file, link_where.line, "link") if link_where.line and not link_where.expanded else None
     if source_link is not None:
         found = next((e for e in source_link.iter(etree.Element) if _is_xacro(e, name)), None)
         if found is not None:
-            attributes = " ".join(f'{k}="{v}"' for k, v in found.attrib.items())
-            call, called_at = f"<xacro:{name} {attributes}/>", f"{link_where.file}:{_line(loaded, link_where.file, found)}"
-    return MacroUse(name, macro.get("params", ""), f"{where.file}:{_line(loaded, where.file, macro)}", call, called_at, f"{where.file}:{where.line}")
+            blocks = tuple(_as_written(child) for child in found.iterchildren(etree.Element))
+            call, called_at = _call(name, dict(found.attrib), blocks), f"{link_where.file}:{_line(loaded, link_where.file, found)}"
+    return MacroUse(name, macro.get("params", ""), f"{where.file}:{_line(loaded, where.file, macro)}", call, called_at,
+                    f"{where.file}:{where.line}", blocks=blocks)
 
 
 def _macro_element(loaded: Loaded, use: MacroUse):
@@ -120,7 +136,10 @@ def matching_call(loaded: Loaded, link: Link, use: MacroUse, expander: Expander)
     macro = _macro_element(loaded, use)
     if found.body is None or len(found.shapes) != 1 or found.shapes[0].geometry.kind == "mesh" or macro is None:
         return None
-    required = [p.name for p in macro_parameters(use.params) if not p.block and p.default is None and not p.forward]
+    parameters = macro_parameters(use.params)
+    if any(p.block for p in parameters) and not use.blocks:  # the blocks a call gives are unknown: xacro expands none without them
+        return None
+    required = [p.name for p in parameters if not p.block and p.default is None and not p.forward]
     masses = [p for p in required if p.lower() in ("m", "mass") or "mass" in p.lower()]
     others = [p for p in required if p not in masses]
     dimensions = _dimensions(found.shapes[0].geometry)
@@ -129,7 +148,8 @@ def matching_call(loaded: Loaded, link: Link, use: MacroUse, expander: Expander)
     calls = []
     for order in dict.fromkeys(itertools.permutations(dimensions)):
         values = {masses[0]: found.body.mass, **dict(zip(others, order))}
-        calls.append(f"<xacro:{use.name} " + " ".join(f'{k}="{number(v)}"' for k, v in values.items()) + "/>")
+        # the call's own blocks: an <origin> given to the macro turns the tensor with it
+        calls.append(_call(use.name, {k: number(v) for k, v in values.items()}, use.blocks))
     namespace = etree.QName(macro).namespace
     probe = f'<robot name="probe" xmlns:xacro="{namespace}">{etree.tostring(macro, encoding="unicode", with_tail=False)}'
     probe += "".join(f'<link name="c{i}">{call}</link>' for i, call in enumerate(calls)) + "</robot>"
