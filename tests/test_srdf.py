@@ -341,3 +341,27 @@ def test_the_json_of_an_srdf_names_its_robot_and_the_urdf_it_was_checked_against
     (tmp_path / "panda.urdf").unlink()
     _, document = check("panda.srdf", cwd=tmp_path)
     assert (document["files"][0]["robot"], document["files"][0]["checked_against"]) == ("panda", None)
+
+
+def test_a_package_in_no_repository_or_workspace_is_searched_alone(tmp_path):
+    """example-robot-data unpacked in /tmp (or installed in a venv's share/): the folder holding
+    the package is not its workspace. An SRDF whose URDF the package lacks is one note; it is not
+    checked against another project's URDF of the same robot name there, nor stopped by that
+    project's broken configuration."""
+    data = tmp_path / "robot_data"
+    (data / "robots" / "arm_description" / "srdf").mkdir(parents=True)
+    (data / "package.xml").write_text('<package format="3"><name>robot_data</name></package>\n')
+    srdf = data / "robots" / "arm_description" / "srdf" / "arm.srdf"
+    srdf.write_text('<robot name="arm">\n  <group name="arm"><chain base_link="base" tip_link="a_tip"/></group>\n</robot>\n')
+    elsewhere = tmp_path / "someone_elses_test"
+    elsewhere.mkdir()
+    (elsewhere / "arm.urdf").write_text(ARM.format(name="arm", tip="other_tip", joint="j"))
+    (elsewhere / "urdfcli.toml").write_text("selct = ['J']\n")
+    done, document = check(str(srdf), cwd=tmp_path)
+    assert done.returncode == 0, done.stderr.decode()
+    [diagnostic] = document["files"][0]["diagnostics"]
+    assert diagnostic["code"] == "K008" and "no URDF of robot 'arm' found" in diagnostic["message"]
+    (data / "robots" / "arm_description" / "urdf").mkdir()
+    (data / "robots" / "arm_description" / "urdf" / "arm.urdf").write_text(ARM.format(name="arm", tip="a_tip", joint="j"))
+    done, document = check(str(srdf), cwd=tmp_path)
+    assert (done.returncode, found(document)) == (0, [])

@@ -168,11 +168,14 @@ def resolve_include(
 def search_roots(file: Path, packages: PackageIndex) -> tuple[list[Path], bool]:
     """The folders whose models may include ``file``, and whether to search below
     them: those the package resolver searches for its siblings (repository,
-    workspace ``src/``); for a file in no package, the repository holding it,
-    else its own folder alone."""
+    workspace ``src/``); for a package in neither, the package alone (the folder
+    holding it may be /tmp or a venv's share/: nothing says its other files belong
+    with it); for a file in no package, the repository holding it, else its own folder alone."""
     package = packages.enclosing_package(file.parent)
     if package is not None:
         roots = packages.local_roots(package)
+        if roots == [package.parent] and package.parent.name != "src" and not (package.parent / ".git").exists():
+            return [package], True
         # A repository in a folder named src (~/src/my_robot) is searched beyond only
         # when that src is a ROS workspace's: the package look-up widens only when it
         # must, a search for models would read every file there on every commit.
