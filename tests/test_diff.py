@@ -459,6 +459,78 @@ def test_text_groups_changes_by_element(tmp_path):
     ]
 
 
+COMPUTED = """<?xml version="1.0"?>
+<robot name="r" xmlns:xacro="http://www.ros.org/wiki/xacro">
+  <link name="base">
+    <inertial><mass value="${MASS}"/><inertia ixx="${IXX}" ixy="0" ixz="0" iyy="0.01" iyz="0" izz="0.01"/></inertial>
+    <visual><geometry><box size="${SIDE} 0.1 0.1"/></geometry></visual>
+  </link>
+  <link name="arm"/>
+  <joint name="j" type="revolute">
+    <parent link="base"/><child link="arm"/>
+    <origin xyz="0 0 ${SIDE}" rpy="0 0 ${pi/3}"/><axis xyz="0 0 1"/>
+    <limit lower="${-radians(LIMIT)}" upper="${radians(LIMIT)}" effort="1" velocity="1"/>
+  </joint>
+  <gazebo reference="base"><mu1>${MASS}</mu1></gazebo>
+</robot>
+"""
+
+
+def computed(**values: str) -> str:
+    text = COMPUTED
+    for name, value in values.items():
+        text = text.replace(name, value)
+    return text
+
+
+def test_computed_numbers_read_short_in_text_and_whole_in_json(tmp_path):
+    """What xacro computes (0.1+0.2 is 0.30000000000000004, radians(170) 2.9670597283903604)
+    reads as 6 digits in every text format, shapes and gazebo values alike; JSON keeps each bit."""
+    import math
+
+    old = write(tmp_path, "old.urdf.xacro", computed(MASS="0.1+0.2", IXX="0.01", SIDE="0.1*3", LIMIT="170"))
+    new = write(tmp_path, "new.urdf.xacro", computed(MASS="0.1+0.7", IXX="0.1/3", SIDE="0.1*7", LIMIT="160"))
+    done = run_cli("diff", old, new)
+    said = done.stdout.decode()
+    assert done.returncode == 1 and done.stderr == b""
+    assert "0000000" not in said and "9999999" not in said, said
+    lines = [line.split("  /")[0].strip() for line in said.splitlines()]
+    assert lines[0].endswith("robot 'r': 2 links, 1 joint, 1 DOF, 0.3 kg") and lines[1].endswith("0.8 kg")
+    assert {
+        "inertial mass: 0.3 -> 0.8 (+166.67 %)",
+        "inertial inertia ixx: 0.01 -> 0.0333333 (+233.33 %)",
+        "visual geometry box size: 0.3 0.1 0.1 -> 0.7 0.1 0.1",
+        "origin xyz: 0 0 0.3 -> 0 0 0.7 (moved 400 mm)",
+        "limit lower: -2.96706 -> -2.79253 (+5.88 %)",
+        "limit upper: 2.96706 -> 2.79253 (-5.88 %)",
+        "mu1: 0.3 -> 0.8",
+    } <= set(lines)
+    assert lines[-1].endswith("mass 0.3 kg -> 0.8 kg (+166.67 %); 1 link moved at zero joint positions")
+    for output_format in ("markdown", "github"):
+        shown = run_cli("diff", old, new, "--format", output_format).stdout.decode()
+        assert "limit upper: 2.96706 -> 2.79253" in shown and "0000000" not in shown, shown
+    document = json.loads(run_cli("diff", old, new, "--format", "json").stdout)
+    values = {change["field"]: (change["old"], change["new"]) for change in document["changes"]}
+    assert values["limit upper"] == (math.radians(170), math.radians(160))  # as xacro computes them (Python floats)
+    assert values["inertial mass"] == (0.1 + 0.2, 0.1 + 0.7) and values["mu1"] == (repr(0.1 + 0.2), repr(0.1 + 0.7))
+    # shape and shape kind changed: the numbers of its text read short too
+    cylinder = write(tmp_path, "cylinder.urdf.xacro", computed(MASS="0.1+0.2", IXX="0.01", SIDE="0.1*3", LIMIT="170").replace(
+        '<box size="${0.1*3} 0.1 0.1"/>', '<cylinder radius="${0.1*3}" length="${1/3}"/>'))
+    assert "visual geometry: box 0.3 0.1 0.1 -> cylinder radius 0.3 length 0.333333  " in run_cli("diff", old, cylinder).stdout.decode()
+
+
+def test_numbers_closer_than_six_digits_read_apart(tmp_path):
+    """At a small tolerance, two computed numbers that 6 digits make alike get the digits that tell them apart."""
+    old = write(tmp_path, "old.urdf.xacro", computed(MASS="0.1+0.2", IXX="0.01", SIDE="0.1*3", LIMIT="170"))
+    new = write(tmp_path, "new.urdf.xacro", computed(MASS="0.1+0.2+1e-8", IXX="0.01", SIDE="0.1*3", LIMIT="170+1e-7"))
+    lines = run_cli("diff", old, new, "--tolerance", "1e-12").stdout.decode().splitlines()
+    assert lines[1].endswith(" 0.30000001 kg") and lines[0].endswith(" 0.3 kg")
+    said = [line.split("  /")[0].strip() for line in lines]
+    assert "inertial mass: 0.3 -> 0.30000001 (+0.00000333 %)" in said
+    assert "limit upper: 2.967059728 -> 2.96705973 (+0.0000000588 %)" in said, said  # 2.96706 both at 6 digits
+    assert "mu1: 0.3 -> 0.30000001" in said
+
+
 def q(text: str) -> str:
     return f'"{text}"'
 

@@ -287,3 +287,14 @@ def test_computed_limits_read_short_and_a_mimic_says_its_multiplier(tmp_path):
     assert "joint_1 (revolute, axis 0 0 1, -2.96706…1.57 rad (-170…89.95°))" in out
     assert "mimics joint_1 × -1 + 0.5)" in out
     assert "mimics joint_1 * -1 + 0.5)" in run_cli("tree", "--ascii", str(path)).stdout.decode()
+
+
+def test_a_computed_small_limit_reads_short(tmp_path):
+    """${1/30000} is 3.3333333333333335e-05 in xacro's output: its exponent does not keep all its digits."""
+    path = tmp_path / "slide.urdf"
+    path.write_text(
+        '<robot name="slide"><link name="base_link"/><link name="carriage"/>'
+        '<joint name="slide" type="prismatic"><parent link="base_link"/><child link="carriage"/><axis xyz="1 0 0"/>'
+        f'<limit lower="0" upper="{1 / 30000!r}" effort="1" velocity="1"/></joint></robot>\n')
+    out = run_cli("tree", str(path)).stdout.decode()
+    assert "0…3.33333e-05 m" in out, out

@@ -25,7 +25,7 @@ includes and macro calls.
 
 
 import math
-from collections.abc import Iterable, Iterator
+from collections.abc import Callable, Iterable, Iterator
 from typing import Any, NamedTuple
 
 from ..read.memo import once
@@ -142,16 +142,16 @@ def shown(value: Any) -> Any:
     return value
 
 
-def text(value: Any) -> str:
-    """A value as a person reads it: numbers shortest, vectors space-separated."""
+def text(value: Any, number: Callable[[float], str] = format_number) -> str:
+    """A value as a person reads it: numbers shortest (or as ``number`` writes them), vectors space-separated."""
     if value is None:
         return "(none)"
     if isinstance(value, bool):
         return "yes" if value else "no"
     if isinstance(value, float):
-        return format_number(value)
+        return number(value)
     if isinstance(value, (list, tuple)):
-        return " ".join(text(v) for v in value)
+        return " ".join(text(v, number) for v in value)
     return str(value)
 
 

@@ -215,8 +215,7 @@ def expand_source(source: Path, config: Config, session: Session) -> Loaded | st
 
 def summary(comparison: Comparison, urdf: str, source: GeneratedFrom) -> str:
     """``kr16_2.urdf does not match kr16_2.xacro, which generated it: it lacks link 'flange' that kr16_2.xacro makes; 1 joint differs``."""
-    from ..model.compare import text
-    from ..report.diff import element_words
+    from ..report.diff import element_words, values_text
 
     xacro = source.file.name
     changes = comparison.changes
@@ -241,7 +240,8 @@ def summary(comparison: Comparison, urdf: str, source: GeneratedFrom) -> str:
         counted = [f"{len(elements)} {_plural(tag, len(elements))}" for tag, elements in differing.items()]
         verb = "differs" if sum(len(e) for e in differing.values()) == 1 else "differ"
         first = min((c for c in changes if c.field is not None and c.field != "pose" and c.kind != "renamed" and c.element not in whole), key=_weight)
-        pieces.append(f"{_and(counted)} {verb} ({element_words(first.element)} {first.field}: {text(first.old)} here, {text(first.new)} in {xacro})")
+        here, there = values_text(first.old, first.new)
+        pieces.append(f"{_and(counted)} {verb} ({element_words(first.element)} {first.field}: {here} here, {there} in {xacro})")
     if not pieces:  # only poses moved: cannot happen without a change above, kept for safety
         pieces.append(f"{comparison.count('changed')} values differ")
     generated = "which generated it" if source.header is not None else "beside it"

@@ -10,20 +10,27 @@ the new robot's line (a removal at the closest element the new robot has).
 from __future__ import annotations
 
 import re
-from typing import NamedTuple
+from functools import partial
+from typing import Any, NamedTuple
 
 from ..diagnostics import Location
 from ..model.compare import Change, Comparison, Totals, text
+from ..model.numbers import NumberError, parse_double
 from . import DIFF_FORMATS
 from .console import Line, Output, write
 from .escape import escape
 from .github import escape_data, escape_property
 from .json import dumps
 from .lines import plural
+from .tree import readable, significant_digits
 
 FORMATS = DIFF_FORMATS
 MARKS = {"added": "+", "removed": "-", "renamed": "~", "changed": "~"}
 STYLES = {"+": "green", "-": "red", "~": "yellow"}
+WRITTEN = 12
+"""A number of at most this many significant digits is shown as written (a person types
+no more); what xacro computes has 15 to 17 (``${radians(170)}``: 2.9670597283903604) and
+is shown to 6, or as many more as tell the old value from the new. JSON keeps them all."""
 _ELEMENT = re.compile(r"""^(?P<tag>[\w:.-]+)(?:\[@(?P<attribute>name|reference)=(?P<quote>['"])(?P<name>.*)(?P=quote)\])?(?:\[(?P<rank>\d+)\])?$""")
 
 
@@ -68,6 +75,38 @@ def where_made(location: Location | None) -> str:
     return f"{said} ({location.trace[0].phrase})" if location is not None and location.trace else said
 
 
+def number_text(value: float, digits: int = 6) -> str:
+    return readable(value, digits, WRITTEN)
+
+
+def value_text(value: Any, digits: int = 6) -> str:
+    """A value of a change as people read it (:data:`WRITTEN`): a number, the numbers of a
+    list, and those of a text (a shape ``box 0.30000000000000004 0.1 0.1``, a colour, a
+    gazebo value xacro computed) alike; a short number of a text is kept as written."""
+    if not isinstance(value, str):
+        return text(value, partial(number_text, digits=digits))
+    return " ".join(_token_text(token, digits) for token in value.split(" "))
+
+
+def _token_text(token: str, digits: int) -> str:
+    if significant_digits(token) <= WRITTEN:
+        return token
+    try:
+        return number_text(parse_double(token), digits)
+    except NumberError:  # a word with many digits in it: a name, a file
+        return token
+
+
+def values_text(old: Any, new: Any) -> tuple[str, str]:
+    """``old`` and ``new`` as :func:`value_text` writes them, with as many digits as tell them
+    apart (``0.3 -> 0.3000001`` at the default tolerance, more at a smaller one)."""
+    for digits in range(6, 18):
+        said = value_text(old, digits), value_text(new, digits)
+        if said[0] != said[1]:
+            return said
+    return value_text(old), value_text(new)  # the same number: a change of something else
+
+
 def percent(fraction: float) -> str:
     value = fraction * 100
     digits = 2 if abs(value) >= 0.1 else 2 - int(f"{abs(value):e}".split("e")[1]) if value else 0
@@ -82,13 +121,13 @@ def describe(change: Change) -> str:
     if field is None:
         return change.kind
     if change.kind == "added":
-        return f"{field} added" + (f": {text(change.new)}" if change.new is not None else "")
+        return f"{field} added" + (f": {value_text(change.new)}" if change.new is not None else "")
     if change.kind == "removed":
-        return f"{field} removed" + (f" (was {text(change.old)})" if change.old is not None else "")
+        return f"{field} removed" + (f" (was {value_text(change.old)})" if change.old is not None else "")
     if field == "pose":
         millimetres, degrees = change.moved or (0.0, 0.0)
         return f"pose at zero joint positions: moved {millimetres:.3g} mm, turned {degrees:.3g}°"
-    said = f"{field}: {text(change.old)} -> {text(change.new)}"
+    said = "{}: {} -> {}".format(field, *values_text(change.old, change.new))
     if change.relative is not None:
         said += f" ({percent(change.relative)})"
     elif change.moved is not None:
@@ -110,9 +149,20 @@ def mark(changes: list[Change]) -> str:
     return MARKS[whole.kind] if whole is not None else "~"
 
 
-def totals_text(totals: Totals) -> str:
+def totals_texts(comparison: Comparison) -> tuple[str, str]:
+    """What the old and the new robot amount to, their masses told apart."""
+    masses = values_text(*masses_of(comparison))
+    return totals_text(comparison.old, masses[0]), totals_text(comparison.new, masses[1])
+
+
+def masses_of(comparison: Comparison) -> tuple[float, float]:
+    """The total masses, a sum's last bits left out (0.1 + 0.2 kg is 0.3 kg, as written)."""
+    return round(comparison.old.mass, 9), round(comparison.new.mass, 9)
+
+
+def totals_text(totals: Totals, mass: str) -> str:
     name = f"robot '{totals.name}'" if totals.name is not None else "robot (no name)"
-    return f"{name}: {plural(totals.links, 'link')}, {plural(totals.joints, 'joint')}, {totals.dof} DOF, {text(round(totals.mass, 9))} kg"
+    return f"{name}: {plural(totals.links, 'link')}, {plural(totals.joints, 'joint')}, {totals.dof} DOF, {mass} kg"
 
 
 def summary_text(comparison: Comparison) -> str:
@@ -123,7 +173,7 @@ def summary_text(comparison: Comparison) -> str:
     follows = []
     if abs(old.mass - new.mass) > 1e-9 * max(old.mass, new.mass, 1.0):
         change = f" ({percent((new.mass - old.mass) / old.mass)})" if old.mass else ""
-        follows.append(f"mass {text(round(old.mass, 9))} kg -> {text(round(new.mass, 9))} kg{change}")
+        follows.append("mass {} kg -> {} kg".format(*values_text(*masses_of(comparison))) + change)
     if old.dof != new.dof:
         follows.append(f"{old.dof} DOF -> {new.dof}")
     if comparison.moved:
@@ -134,9 +184,10 @@ def summary_text(comparison: Comparison) -> str:
 # -- text --------------------------------------------------------------------------------
 def text_lines(difference: Difference) -> list[Line]:
     comparison = difference.comparison
+    old, new = totals_texts(comparison)
     lines: list[Line] = [
-        [("--- ", "red"), (escape(difference.old), "bold"), (f"  {escape(totals_text(comparison.old))}", "dim")],
-        [("+++ ", "green"), (escape(difference.new), "bold"), (f"  {escape(totals_text(comparison.new))}", "dim")],
+        [("--- ", "red"), (escape(difference.old), "bold"), (f"  {escape(old)}", "dim")],
+        [("+++ ", "green"), (escape(difference.new), "bold"), (f"  {escape(new)}", "dim")],
     ]
     poses = [change for change in comparison.changes if change.field == "pose"]
     for element, changes in groups(tuple(c for c in comparison.changes if c.field != "pose")).items():
@@ -218,13 +269,14 @@ def cell(value: str) -> str:
 
 def report_markdown(difference: Difference, output: Output) -> None:
     comparison = difference.comparison
+    old, new = totals_texts(comparison)
     lines = [
         f"### urdfcli diff: {cell(difference.old)} → {cell(difference.new)}",
         "",
         f"**{cell(summary_text(comparison))}**",
         "",
-        f"- old: {cell(totals_text(comparison.old))}",
-        f"- new: {cell(totals_text(comparison.new))}",
+        f"- old: {cell(old)}",
+        f"- new: {cell(new)}",
     ]
     if not comparison.same:
         lines += ["", "| | element | change | where |", "|---|---|---|---|"]

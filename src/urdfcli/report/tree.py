@@ -91,11 +91,17 @@ def short(value: float, digits: int = 4) -> str:
     return "0" if text == "-0" else text
 
 
-def readable(value: float) -> str:
-    """A value as written when it is short (``1.57``), else to 6 significant digits: what
-    xacro computed (``2.9670597283903604`` for ``${radians(170)}``) reads ``2.96706``."""
+def significant_digits(text: str) -> int:
+    """The significant digits a number's text has: 3 in ``-0.00123e5``, 1 in ``100``."""
+    return len(text.lower().lstrip("+-").partition("e")[0].replace(".", "").strip("0"))
+
+
+def readable(value: float, digits: int = 6, written: int = 7) -> str:
+    """A value as written when it is short (at most ``written`` significant digits: ``1.57``),
+    else to ``digits`` significant digits: what xacro computed (``2.9670597283903604`` for
+    ``${radians(170)}``, ``3.3333333333333335e-05`` for ``${1/30000}``) reads ``2.96706``."""
     text = format_number(value)
-    return text if len(text.lstrip("-").replace(".", "").lstrip("0")) <= 7 or "e" in text else short(value, 6)
+    return text if significant_digits(text) <= written else short(value, digits)
 
 
 def axis_text(axis: Vec3, number: Callable[[float], str] = format_number) -> str:
