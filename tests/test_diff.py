@@ -408,6 +408,7 @@ def test_revisions_read_their_includes_as_they_were(repository):
         ("link[@name='upper']", "inertial mass"), ("link[@name='lower']", "inertial mass"),
         ("joint[@name='lower_joint']", "origin xyz"), ("link[@name='lower']", "pose"),
     }
+    assert document["notes"] == []  # every file of the model is the revision's own
     mass = found[("link[@name='lower']", "inertial mass")]
     assert (mass["old"], mass["new"], mass["relative"]) == (1.0, 1.2, pytest.approx(0.2))
     # located in the macro file as it was at HEAD, with the call that made the link
@@ -428,6 +429,55 @@ def test_revisions_read_their_includes_as_they_were(repository):
     # github annotations name the file by its path in the repository
     done = run_cli("diff", "HEAD~1:urdf/arm.urdf.xacro", "HEAD:urdf/arm.urdf.xacro", "-f", "github", cwd=repository)
     assert "::notice file=urdf/macros/segment.xacro,line=7,col=" in done.stdout.decode()
+
+
+def workspace_robot(tmp_path, model: str):
+    """A colcon workspace of two repositories (ros_workspace.make_colcon_workspace): repo_a,
+    a git repository, holds acme_robot's robot.urdf.xacro, which puts a wheel of repo_b's
+    acme_wheels on its base; committed twice, the second time with a larger wheel."""
+    from ros_workspace import XACRO, make_colcon_workspace
+
+    repo_a, repo_b = make_colcon_workspace(tmp_path)
+    (repo_a / ".git").rmdir()
+    robot = repo_a / "robot" / "urdf" / "robot.urdf.xacro"
+    robot.parent.mkdir()
+    robot.write_text(model.replace("XACRO", XACRO))
+    git("init", "-q", cwd=repo_a)
+    git("add", "-A", cwd=repo_a)
+    git("commit", "-q", "-m", "first", cwd=repo_a)
+    robot.write_text(robot.read_text().replace('radius="0.1"', 'radius="0.12"'))
+    git("commit", "-q", "-am", "larger wheel", cwd=repo_a)
+    return repo_a, repo_b
+
+
+WHEELED = """<?xml version="1.0"?>
+<robot XACRO name="robot">
+  <xacro:include filename="$(find acme_wheels)/urdf/wheel.xacro"/>
+  <link name="base_link"/>
+  <xacro:wheel prefix="left" parent="base_link" radius="0.1"><origin xyz="0 0.17 0" rpy="-1.5708 0 0"/></xacro:wheel>
+</robot>
+"""
+
+
+def test_a_revision_reads_the_packages_of_sibling_repositories_as_they_are_now(tmp_path):
+    """repo_a at HEAD~1 holds no acme_wheels: it is read from repo_b, where the workspace
+    finds it now (as -P would), and the output says that its changes since are not seen."""
+    repo_a, repo_b = workspace_robot(tmp_path, WHEELED)
+    wheels = repo_b / "wheels"
+    done = run_cli("diff", "HEAD~1:robot/urdf/robot.urdf.xacro", "robot/urdf/robot.urdf.xacro", cwd=repo_a)
+    assert done.returncode == 1, done.stderr.decode()
+    lines = done.stdout.decode().splitlines()
+    note = f"repo_a at HEAD~1 has no package 'acme_wheels': read as it is now, in {wheels}"
+    assert lines[2] == f"note: {note}"
+    assert "    visual geometry cylinder radius: 0.1 -> 0.12 (+20.00 %)" in [line.split("  /")[0] for line in lines]
+    document = json.loads(run_cli("diff", "HEAD~1:robot/urdf/robot.urdf.xacro", "HEAD:robot/urdf/robot.urdf.xacro", "-f", "json", cwd=repo_a).stdout)
+    assert document["notes"] == [note, note.replace("HEAD~1", "HEAD")]
+    assert {c["field"] for c in document["changes"]} >= {"visual geometry cylinder radius", "collision geometry cylinder radius"}
+    markdown = run_cli("diff", "HEAD~1:robot/urdf/robot.urdf.xacro", "robot/urdf/robot.urdf.xacro", "-f", "markdown", cwd=repo_a).stdout.decode()
+    assert f"- note: {note}" in markdown.splitlines()
+    # -P repo_b reads it from there too: as it is now, said alike
+    done = run_cli("diff", "HEAD~1:robot/urdf/robot.urdf.xacro", "robot/urdf/robot.urdf.xacro", "-P", str(repo_b), "-f", "json", cwd=repo_a)
+    assert json.loads(done.stdout)["notes"] == [note]
 
 
 def test_revisions_that_cannot_be_read(repository):

@@ -65,9 +65,10 @@ class Session:
     def inputs(self) -> Inputs:
         return Inputs(self.files, self.packages, self.expander)
 
-    def resolver(self, extra: Iterable[str], input_file: Path | None) -> PackageResolver:
-        """The package look-up for one input: its configuration's package paths, then the session's."""
-        return self.packages.resolver((*extra, *self.package_paths), input_file)
+    def resolver(self, extra: Iterable[str], input_file: Path | None, fallback: PackageResolver | None = None) -> PackageResolver:
+        """The package look-up for one input: its configuration's package paths, then the
+        session's; ``fallback`` for what none of them holds."""
+        return self.packages.resolver((*extra, *self.package_paths), input_file, fallback)
 
     def forget(self) -> None:
         """Forget what was learnt of the folders on disk (which configuration file and

@@ -26,7 +26,8 @@ def diff(
         typer.Argument(
             metavar="OLD NEW [NAME:=VALUE]...",
             help="Two URDF or xacro files: a path, '-' for standard input, or REV:PATH for a file at a git revision "
-            "(as git show names it: HEAD~1:urdf/robot.urdf.xacro), read with its includes as they were then. "
+            "(as git show names it: HEAD~1:urdf/robot.urdf.xacro), read with its includes as they were then "
+            "(a package of another repository of the workspace as it is now, noted). "
             "NAME:=VALUE sets a xacro argument of both.",
             show_default=False,
         ),

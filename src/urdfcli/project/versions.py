@@ -3,8 +3,11 @@
 (see :mod:`urdfcli.read.revision`).
 
 A file of a revision is read from a temporary copy of the repository's tree;
-its packages are looked for there first. Every location is worked out before
-the copy is removed, and names its file ``REV:PATH``.
+its packages are looked for there first, and a package the copy lacks where the
+workspace around the repository finds it now (a sibling repository in ``ws/src``):
+the difference notes each package so read, whose changes since the revision it
+cannot see. Every location is worked out before the copy is removed, and names
+its file ``REV:PATH``.
 """
 
 from __future__ import annotations
@@ -22,7 +25,7 @@ from ..read.packages import PackageResolver
 from ..read.revision import Revision, RevisionError, checkout, revision_of
 from ..report.diff import Difference
 
-ResolverFor = Callable[[Iterable[str], "Path | None"], PackageResolver]  # (extra package paths, input file) -> resolver
+ResolverFor = Callable[..., PackageResolver]  # (extra package paths, input file[, fallback]) -> resolver
 
 
 class NotComparable(Exception):
@@ -38,12 +41,13 @@ def compare_versions(
         raise NotComparable("only one of OLD and NEW can be standard input ('-')")
     with contextlib.ExitStack() as stack:
         sides = [_open(given, mappings, inputs, resolver_for, stack) for given in (old, new)]
+        notes = tuple(note for loaded, folder, revision in sides if revision is not None for note in _read_as_now(loaded, folder, revision))
         comparison = compare(sides[0][0], sides[1][0], TOLERANCE if tolerance is None else tolerance)
         folders = [(folder, revision) for _, folder, revision in sides if revision is not None]
         if folders:
             comparison = Comparison(tuple(_renamed(change, folders) for change in comparison.changes), comparison.old, comparison.new)
     revisions = tuple(dict.fromkeys(revision.revision for _, _, revision in sides if revision is not None))
-    return Difference(old, new, comparison), revisions
+    return Difference(old, new, comparison, notes), revisions
 
 
 def _open(given: str, mappings: dict[str, str], inputs: Inputs, resolver_for: ResolverFor, stack: contextlib.ExitStack) -> tuple[Loaded, Path | None, Revision | None]:
@@ -57,7 +61,8 @@ def _open(given: str, mappings: dict[str, str], inputs: Inputs, resolver_for: Re
         if revision is not None:
             folder = stack.enter_context(checkout(revision))
             file = folder / revision.path
-            resolver = resolver_for((str(folder),), file)  # its own packages first, as they were
+            now = resolver_for((), revision.top / revision.path)  # the workspace around the repository, as it is
+            resolver = resolver_for((str(folder),), file, now)  # its own packages first, as they were
             loaded = load(str(file), inputs, resolver, mappings, reads_meshes=False)
         else:
             resolver = resolver_for((), None if given == STDIN else Path(given))
@@ -75,6 +80,33 @@ def _open(given: str, mappings: dict[str, str], inputs: Inputs, resolver_for: Re
         said = f"{reason.message}" if reason is not None else "no <robot> read"
         raise NotComparable(f"{shown}: cannot be read as a robot: {said}")
     return loaded, folder, revision
+
+
+def _read_as_now(loaded: Loaded, folder: Path, revision: Revision) -> list[str]:
+    """A note for each package of the workspace that the revision's copy lacks and its
+    expansion included files of: read as it is now, its changes since then unseen."""
+    fallback = loaded.resolver.fallback
+    own = fallback.index.enclosing_package(revision.top / revision.path) if fallback is not None else None
+    if own is None:
+        return []
+    workspace = [os.path.abspath(root) for root in (revision.top, *fallback.index.local_roots(own))]
+    packages: dict[Path, None] = {}
+    for include in loaded.document.includes:
+        path = os.path.abspath(include)
+        if _inside(path, os.path.abspath(folder)) or not any(_inside(path, root) for root in workspace):
+            continue  # the revision's own, or a package installed beside the workspace
+        package = fallback.index.enclosing_package(Path(path).parent)
+        if package is not None:
+            packages[package] = None
+    notes = []
+    for package in packages:
+        name = fallback.index.package_name(package / "package.xml")
+        notes.append(f"{revision.top.name} at {revision.revision} has no package '{name}': read as it is now, in {package}")
+    return notes
+
+
+def _inside(path: str, folder: str) -> bool:
+    return path == folder or path.startswith(folder.rstrip(os.sep) + os.sep)
 
 
 def _renamed(change: Change, folders: list[tuple[Path, Revision]]) -> Change:

@@ -12,7 +12,9 @@ did not have the package:
    ``.git``), or in the workspace ``src/`` folder when that comes first;
 6. then, when that repository sits inside a workspace ``src/`` folder (each
    repository cloned into ``ws/src/``, as ``vcs import`` lays them out), the
-   packages of the whole workspace.
+   packages of the whole workspace;
+7. a fallback resolver, when one is given: for a copy of a repository at a git
+   revision, where the workspace around the repository finds packages now.
 
 A package's name is the ``<name>`` in its ``package.xml``, never its folder name.
 """
@@ -131,8 +133,8 @@ class PackageIndex:
             self._roots[package_dir] = _local_roots(package_dir)
         return list(self._roots[package_dir])
 
-    def resolver(self, options: Iterable[str] = (), input_file: Path | None = None) -> PackageResolver:
-        return PackageResolver(options, input_file, index=self)
+    def resolver(self, options: Iterable[str] = (), input_file: Path | None = None, fallback: PackageResolver | None = None) -> PackageResolver:
+        return PackageResolver(options, input_file, index=self, fallback=fallback)
 
 
 def cmake_project(folder: Path) -> str | None:
@@ -245,9 +247,13 @@ def _local_roots(package_dir: Path) -> list[Path]:
 
 
 class PackageResolver:
-    def __init__(self, options: Iterable[str] = (), input_file: Path | None = None, env=None, index: PackageIndex | None = None):
+    def __init__(
+        self, options: Iterable[str] = (), input_file: Path | None = None, env=None, index: PackageIndex | None = None,
+        fallback: PackageResolver | None = None,
+    ):
         env = os.environ if env is None else env
         self.index = index if index is not None else PackageIndex()
+        self.fallback = fallback  # asked for what none of the places above holds
         self._explicit: dict[str, Path] = {}
         self._scan_roots: list[Path] = []
         for option in options:
@@ -273,7 +279,8 @@ class PackageResolver:
 
     def settings(self) -> tuple:
         """Where it looks, as given: two resolvers of equal settings find the same packages."""
-        return (tuple(self._explicit.items()), tuple(self._scan_roots), tuple(self._ament), self._input_file)
+        fallback = self.fallback.settings() if self.fallback is not None else None
+        return (tuple(self._explicit.items()), tuple(self._scan_roots), tuple(self._ament), self._input_file, fallback)
 
     @cached_property
     def _own(self) -> Path | None:
@@ -296,14 +303,17 @@ class PackageResolver:
 
     def where(self) -> str:
         """Where packages were looked for, as ``(looked in ...)`` for error messages."""
+        places = list(dict.fromkeys(self._places()))  # -P and ROS_PACKAGE_PATH may name one folder
+        if not places:
+            return "(the input is not inside a package and no package path is set: use -P NAME=DIR)"
+        return f"(looked in {', '.join(places)})"
+
+    def _places(self) -> list[str]:
         places = [f"-P {name}={path}" for name, path in self._explicit.items()]
         places += [str(p) for p in self._scan_roots]
         places += [f"{p}/share" for p in self._ament + self._workspace_prefixes]
         places += [str(p) for p in self._local_roots]
-        places = list(dict.fromkeys(places))  # -P and ROS_PACKAGE_PATH may name one folder
-        if not places:
-            return "(the input is not inside a package and no package path is set: use -P NAME=DIR)"
-        return f"(looked in {', '.join(places)})"
+        return places + (self.fallback._places() if self.fallback is not None else [])
 
     def _scan_into_cache(self, root: Path) -> None:
         if root in self._scanned:
@@ -340,7 +350,8 @@ class PackageResolver:
                 self._scan_into_cache(root)
                 if name in self._found:
                     break
-        return self._found.get(name)
+        found = self._found.get(name)
+        return found if found is not None or self.fallback is None else self.fallback.find(name)
 
     def misnamed(self, name: str) -> tuple[Path, str] | None:
         """A folder called ``name``, among the packages looked at, whose package.xml
@@ -351,7 +362,7 @@ class PackageResolver:
         for package, folder in known:
             if name and package and folder.name == name and package != name:
                 return folder, package
-        return None
+        return self.fallback.misnamed(name) if self.fallback is not None else None
 
     def resolve_uri(self, uri: str, base_dir: Path | None = None) -> Path | None:
         """The file on disk a mesh or texture URI names; never fetched from a network."""

@@ -35,11 +35,13 @@ _ELEMENT = re.compile(r"""^(?P<tag>[\w:.-]+)(?:\[@(?P<attribute>name|reference)=
 
 
 class Difference(NamedTuple):
-    """Two robots compared: the inputs as given, and what changed."""
+    """Two robots compared: the inputs as given, what changed, and what a reader should
+    know of how they were read (a package of a revision read as it is now)."""
 
     old: str
     new: str
     comparison: Comparison
+    notes: tuple[str, ...] = ()
 
     @property
     def same(self) -> bool:
@@ -188,6 +190,7 @@ def text_lines(difference: Difference) -> list[Line]:
     lines: list[Line] = [
         [("--- ", "red"), (escape(difference.old), "bold"), (f"  {escape(old)}", "dim")],
         [("+++ ", "green"), (escape(difference.new), "bold"), (f"  {escape(new)}", "dim")],
+        *([(f"note: {escape(note)}", "dim")] for note in difference.notes),
     ]
     poses = [change for change in comparison.changes if change.field == "pose"]
     for element, changes in groups(tuple(c for c in comparison.changes if c.field != "pose")).items():
@@ -249,6 +252,7 @@ def report_json(difference: Difference, output: Output) -> None:
     document = {
         "old": difference.old,
         "new": difference.new,
+        "notes": list(difference.notes),
         "changes": [change_dict(change) for change in comparison.changes],
         "summary": {
             "same": comparison.same,
@@ -277,6 +281,7 @@ def report_markdown(difference: Difference, output: Output) -> None:
         "",
         f"- old: {cell(old)}",
         f"- new: {cell(new)}",
+        *(f"- note: {cell(note)}" for note in difference.notes),
     ]
     if not comparison.same:
         lines += ["", "| | element | change | where |", "|---|---|---|---|"]
@@ -307,6 +312,7 @@ def annotation(change: Change, strip: tuple[str, ...]) -> str:
 
 def report_github(difference: Difference, output: Output, revisions: tuple[str, ...] = ()) -> None:
     strip = tuple(f"{revision}:" for revision in revisions)
+    output.out.file.writelines(f"::notice title=urdfcli diff::{escape_data(note)}\n" for note in difference.notes)
     output.out.file.writelines(annotation(change, strip) + "\n" for change in difference.comparison.changes)
 
 
