@@ -480,6 +480,22 @@ def test_a_revision_reads_the_packages_of_sibling_repositories_as_they_are_now(t
     assert json.loads(done.stdout)["notes"] == [note]
 
 
+def test_a_mesh_named_through_find_is_the_same_file_at_a_revision(tmp_path):
+    """xacro's $(find acme_robot) names the mesh by an absolute path: in the revision's
+    temporary copy at one side, in the working tree (or another copy) at the other. The
+    same place in the repository is the same file; another one is named REV:PATH."""
+    model = WHEELED.replace('<link name="base_link"/>', '<link name="base_link"><visual><geometry><mesh filename="$(find acme_robot)/meshes/base.stl"/></geometry></visual></link>')
+    repo_a, _ = workspace_robot(tmp_path, model)
+    for new in ("HEAD:robot/urdf/robot.urdf.xacro", "robot/urdf/robot.urdf.xacro"):
+        document = json.loads(run_cli("diff", "HEAD~1:robot/urdf/robot.urdf.xacro", new, "-f", "json", cwd=repo_a).stdout)
+        assert "visual geometry mesh filename" not in {c["field"] for c in document["changes"]}, document["changes"]
+    robot = repo_a / "robot" / "urdf" / "robot.urdf.xacro"
+    robot.write_text(robot.read_text().replace("meshes/base.stl", "meshes/body.stl"))
+    document = json.loads(run_cli("diff", "HEAD~1:robot/urdf/robot.urdf.xacro", "robot/urdf/robot.urdf.xacro", "-f", "json", cwd=repo_a).stdout)
+    (mesh,) = [c for c in document["changes"] if c["field"] == "visual geometry mesh filename"]
+    assert (mesh["old"], mesh["new"]) == ("HEAD~1:robot/meshes/base.stl", str(repo_a / "robot" / "meshes" / "body.stl"))
+
+
 def test_revisions_that_cannot_be_read(repository):
     done = run_cli("diff", "HEAD~5:urdf/arm.urdf.xacro", "HEAD:urdf/arm.urdf.xacro", cwd=repository)
     assert done.returncode == 2

@@ -26,6 +26,7 @@ includes and macro calls.
 
 import math
 from collections.abc import Callable, Iterable, Iterator
+from pathlib import Path
 from typing import Any, NamedTuple
 
 from ..read.memo import once
@@ -189,8 +190,9 @@ def element_name(tag: str, name: str) -> str:
 class Comparer:
     """Compares an old and a new loaded model (both with a robot read)."""
 
-    def __init__(self, old: Loaded, new: Loaded, tolerance: float = TOLERANCE) -> None:
+    def __init__(self, old: Loaded, new: Loaded, tolerance: float = TOLERANCE, place: Callable[[Path], Path] = lambda file: file) -> None:
         self.old, self.new = old, new
+        self.place = place
         self.a: Robot = old.robot  # type: ignore[assignment]
         self.b: Robot = new.robot  # type: ignore[assignment]
         self.numbers = Numbers(tolerance)
@@ -430,11 +432,14 @@ class Comparer:
 
     def same_file(self, x: str | None, y: str | None) -> bool:
         """Two mesh file names for one file: the same package:// URI written another way, or
-        two names that resolve to the same file on disk (xacro's $(find) gives an absolute path)."""
+        two names that resolve to the same file on disk (xacro's $(find) gives an absolute path)
+        or to the same place (:func:`compare`'s ``place``)."""
         if x is None or y is None:
             return False
         old_file = self.old.resolver.resolve_uri(x, self.old.document.file.parent if self.old.document.file else None)
         new_file = self.new.resolver.resolve_uri(y, self.new.document.file.parent if self.new.document.file else None)
+        if old_file is not None and new_file is not None and self.place(old_file) == self.place(new_file):
+            return True
         try:
             return old_file is not None and new_file is not None and old_file.exists() and old_file.samefile(new_file)
         except OSError:
@@ -597,9 +602,11 @@ is (1.6 and 0.6); another link in its place, of another mass, tensor and shape, 
 (what it holds: 0.4 at most)."""
 
 
-def compare(old: Loaded, new: Loaded, tolerance: float = TOLERANCE) -> Comparison:
-    """What changed from ``old`` to ``new`` (both with a robot read)."""
-    return Comparer(old, new, tolerance).run()
+def compare(old: Loaded, new: Loaded, tolerance: float = TOLERANCE, place: Callable[[Path], Path] = lambda file: file) -> Comparison:
+    """What changed from ``old`` to ``new`` (both with a robot read). ``place`` gives where a
+    file stands for (a file of a revision's copy: its place in the repository), for mesh
+    files named by absolute paths, which ``$(find)`` gives."""
+    return Comparer(old, new, tolerance, place).run()
 
 
 def totals(robot: Robot) -> Totals:

@@ -42,8 +42,8 @@ def compare_versions(
     with contextlib.ExitStack() as stack:
         sides = [_open(given, mappings, inputs, resolver_for, stack) for given in (old, new)]
         notes = tuple(note for loaded, folder, revision in sides if revision is not None for note in _read_as_now(loaded, folder, revision))
-        comparison = compare(sides[0][0], sides[1][0], TOLERANCE if tolerance is None else tolerance)
         folders = [(folder, revision) for _, folder, revision in sides if revision is not None]
+        comparison = compare(sides[0][0], sides[1][0], TOLERANCE if tolerance is None else tolerance, lambda file: _placed(file, folders))
         if folders:
             comparison = Comparison(tuple(_renamed(change, folders) for change in comparison.changes), comparison.old, comparison.new)
     revisions = tuple(dict.fromkeys(revision.revision for _, _, revision in sides if revision is not None))
@@ -89,13 +89,12 @@ def _read_as_now(loaded: Loaded, folder: Path, revision: Revision) -> list[str]:
     own = fallback.index.enclosing_package(revision.top / revision.path) if fallback is not None else None
     if own is None:
         return []
-    workspace = [os.path.abspath(root) for root in (revision.top, *fallback.index.local_roots(own))]
+    workspace = (revision.top, *fallback.index.local_roots(own))
     packages: dict[Path, None] = {}
-    for include in loaded.document.includes:
-        path = os.path.abspath(include)
-        if _inside(path, os.path.abspath(folder)) or not any(_inside(path, root) for root in workspace):
+    for include in map(Path, loaded.document.includes):
+        if _relative(include, folder) is not None or all(_relative(include, root) is None for root in workspace):
             continue  # the revision's own, or a package installed beside the workspace
-        package = fallback.index.enclosing_package(Path(path).parent)
+        package = fallback.index.enclosing_package(Path(os.path.abspath(include)).parent)
         if package is not None:
             packages[package] = None
     notes = []
@@ -105,13 +104,31 @@ def _read_as_now(loaded: Loaded, folder: Path, revision: Revision) -> list[str]:
     return notes
 
 
-def _inside(path: str, folder: str) -> bool:
-    return path == folder or path.startswith(folder.rstrip(os.sep) + os.sep)
+def _placed(file: Path, folders: list[tuple[Path, Revision]]) -> Path:
+    """A file of a revision's copy at its place in the repository (a mesh file ``$(find)``
+    named in the copy is the one the working tree names); any other file as it is."""
+    for folder, revision in folders:
+        inside = _relative(file, folder)
+        if inside is not None:
+            return revision.top / inside
+    return file
 
 
 def _renamed(change: Change, folders: list[tuple[Path, Revision]]) -> Change:
-    """A change whose locations name the files of a revision's copy as ``REV:PATH``."""
-    return change._replace(location=_located(change.location, folders), anchor=_located(change.anchor, folders))
+    """A change whose locations, and values naming files ($(find)'s mesh paths), name
+    the files of a revision's copy as ``REV:PATH``."""
+    return change._replace(
+        location=_located(change.location, folders), anchor=_located(change.anchor, folders),
+        old=_value_named(change.old, folders), new=_value_named(change.new, folders),
+    )
+
+
+def _value_named(value, folders: list[tuple[Path, Revision]]):
+    if not isinstance(value, str):
+        return value
+    for folder, revision in folders:  # the copy's folder is a fresh temporary name: met nowhere else
+        value = value.replace(f"{os.path.abspath(folder)}{os.sep}", f"{revision.revision}:")
+    return value
 
 
 def _located(location: Location | None, folders: list[tuple[Path, Revision]]) -> Location | None:
@@ -122,11 +139,16 @@ def _located(location: Location | None, folders: list[tuple[Path, Revision]]) ->
 
 
 def _named(file: str, folders: list[tuple[Path, Revision]]) -> str:
-    path = os.path.abspath(file)
     for folder, revision in folders:
-        try:
-            inside = Path(path).relative_to(os.path.abspath(folder))
-        except ValueError:
-            continue
-        return f"{revision.revision}:{inside.as_posix()}"
+        inside = _relative(Path(file), folder)
+        if inside is not None:
+            return f"{revision.revision}:{inside.as_posix()}"
     return file
+
+
+def _relative(file: Path, folder: Path) -> Path | None:
+    """``file``'s path inside ``folder``, or None when it is not inside."""
+    try:
+        return Path(os.path.abspath(file)).relative_to(os.path.abspath(folder))
+    except ValueError:
+        return None
