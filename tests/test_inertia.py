@@ -364,6 +364,28 @@ def test_text_output_lists_links_problems_and_total():
     assert "1 file audited: 3 problems" in err
 
 
+def test_a_tensor_many_times_off_says_how_many_times(tmp_path):
+    """1 kg filling a 10 cm cube: a uniform body has 0.00167 about each axis. 0.1 (60 times)
+    and 3.33e-05 (a 50th) read 98.3 % and 98 % apart as a fraction of the larger tensor,
+    as 20 times would (95 %): they are said in times; 0.0025 (1.5 times) in percent."""
+    def cube(name: str, moment: str) -> str:
+        return (f'<link name="{name}"><collision><geometry><box size="0.1 0.1 0.1"/></geometry></collision><inertial><mass value="1"/>'
+                f'<inertia ixx="{moment}" ixy="0" ixz="0" iyy="{moment}" iyz="0" izz="{moment}"/></inertial></link>'
+                f'<joint name="{name}_joint" type="fixed"><parent link="root"/><child link="{name}"/></joint>')
+    path = tmp_path / "cubes.urdf"
+    path.write_text(f'<robot name="cubes"><link name="root"/>{cube("heavy", "0.1")}{cube("light", "0.0000333")}{cube("near", "0.0025")}</robot>\n')
+    rows = [line.strip() for line in run_cli("inertia", str(path)).stdout.decode().splitlines() if line.strip().startswith("expected")]
+    assert rows == [
+        "expected   ixx=0.00167 iyy=0.00167 izz=0.00167  (collision box; declared 60 times larger)",
+        "expected   ixx=0.00167 iyy=0.00167 izz=0.00167  (collision box; declared 50 times smaller)",
+        "expected   ixx=0.00167 iyy=0.00167 izz=0.00167  (collision box; 33.3% apart)",
+    ]
+    # the rules word it alike: I009 at a density (water: 1 kg per litre, the declared mass)
+    err = run_cli("inertia", "--density", "1000", str(path)).stderr.decode()
+    assert "inertia of link 'light': it is 50 times smaller than what its collision box implies at density 1000: " in err
+    assert "inertia of link 'near': it is 33% off what its collision box implies at density 1000: " in err
+
+
 def paste_suggestions(source: str, suggestions: str) -> str:
     """The URDF with each suggested <inertial> pasted over the link's own."""
     root = etree.fromstring(source.encode())

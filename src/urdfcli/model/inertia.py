@@ -27,6 +27,7 @@ from .robot import Link, Shape
 from .units import mis_scaled
 
 TOLERANCE = massprops.TOLERANCE
+TIMES = 2.0  # a declared tensor this many times the expected one's size, or a this-many-th of it, is said so
 UNSAFE = Applicability.UNSAFE
 
 
@@ -56,6 +57,20 @@ class Assessment(NamedTuple):
 
     def off(self, tolerance: float) -> bool:
         return self.difference is not None and self.difference > tolerance
+
+    def times(self) -> str | None:
+        """``60 times larger`` (or ``smaller``): the declared tensor's size against the expected
+        one's, when one is :data:`TIMES` or more times the other. The difference, a fraction
+        of the larger tensor, nears 100 % however far apart they are: it cannot tell 3 from 60
+        times. None when they are closer in size, or when there is no expected tensor."""
+        if self.expected is None:
+            return None
+        declared, expected = massprops.scale_of(self.declared), massprops.scale_of(self.expected)
+        if declared == 0 or expected == 0 or max(declared, expected) < TIMES * min(declared, expected):
+            return None
+        ratio = max(declared, expected) / min(declared, expected)
+        size = f"{ratio:.1f}" if ratio < 10 else f"{ratio:.0f}"  # as the rules' messages give times: 2.5, 60
+        return f"{size} times {'larger' if declared > expected else 'smaller'}"
 
 
 # -- declared --------------------------------------------------------------------------

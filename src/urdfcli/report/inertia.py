@@ -116,7 +116,9 @@ def audit_lines(audit: Audit, show_name: bool) -> list[Line]:
             lines.append(_row("principal", " ".join(number(m) for m in massprops.principal_moments(found.declared))))
             if expected is not None:
                 style = "yellow" if found.off(audit.tolerance) else "green"
-                lines.append(_row("expected", f"{tensor_text(expected, found.declared)}  ({found.implied.source}; {found.difference:.1%} apart)", style))
+                times = found.times()
+                apart = f"declared {times}" if times is not None else f"{found.difference:.1%} apart"
+                lines.append(_row("expected", f"{tensor_text(expected, found.declared)}  ({found.implied.source}; {apart})", style))
             else:
                 lines.append(_row("expected", f"unknown: {found.implied.source}", "dim"))
         if entry.problems:

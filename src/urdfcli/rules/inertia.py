@@ -676,9 +676,11 @@ def verdict(loaded: Loaded, found: Assessment, light: bool, tolerance: float = m
             "the axes are swapped: `urdfcli inertia --suggest` prints the tensor on the geometry's axes",
         )
     if density is not None and found.off(tolerance):  # the link is said to be that uniform material
+        times = found.times()
+        off = f"{times} than" if times is not None else f"{found.difference:.0%} off"
         return Verdict(
             "density", found.difference,
-            f"it is {found.difference:.0%} off what its {source} implies at density {number(density)}: "
+            f"it is {off} what its {source} implies at density {number(density)}: "
             f"declared {tensor_text(found.declared, found.expected)}, expected {tensor_text(found.expected, found.declared)}",
             "`urdfcli inertia --suggest --density ...` prints the uniform body's <inertial>",
         )
