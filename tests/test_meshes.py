@@ -115,6 +115,32 @@ def test_check_opens_no_mesh_and_lint_reads_each_once(robot):
         assert session.meshes.reads == 1  # the next model reads it no more
 
 
+def test_a_missing_file_of_this_machine_is_not_called_another_machines(robot, tmp_path):
+    """xacro's $(find my_robot) gives this machine's path: the file is missing in the package,
+    and package:// names it on any machine (file://$(find ...) in the source is portable
+    already); a path in the input's repository is this machine's too; only a path in no
+    folder of this machine is another machine's."""
+    (tmp_path / ".git").mkdir()  # the repository holding the package
+    source = robot / "urdf" / "robot.urdf.xacro"
+
+    def hints(*uris: str) -> list[str]:
+        links = "".join(link(f"l{number}", mesh(uri)) for number, uri in enumerate(uris))
+        source.write_text(f'<robot name="r" xmlns:xacro="http://www.ros.org/wiki/xacro">\n{links}\n</robot>\n')
+        return [d.hint for d in found(str(source), "D004", RuleSet.CHECK)]
+
+    portable = "; write 'package://my_robot/meshes/{}' for the model to load on other machines too"
+    this = "a path of this machine, in package 'my_robot', where the file is missing"
+    assert hints("$(find my_robot)/meshes/gone/arm.stl", "$(find my_robot)/meshes/arm.stl") == [
+        this + portable.format("gone/arm.stl"),  # its folder is missing too
+        this + portable.format("arm.stl"),
+    ]
+    assert hints("file://$(find my_robot)/meshes/arm.stl", f"file://{robot.resolve()}/meshes/gone/arm.stl") == [
+        this, this + portable.format("gone/arm.stl")]
+    assert hints(f"{tmp_path}/meshes/arm.stl") == [f"a path of this machine, in {tmp_path}, where the file is missing"]
+    assert hints("file:///home/alice/ws/src/my_robot/meshes/arm.stl") == [
+        "a path of another machine: put the files in a ROS package and write package://PACKAGE/..."]
+
+
 # -- paths that work on one machine, or not in rviz ------------------------------------
 
 

@@ -353,6 +353,11 @@ class PackageResolver:
         found = self._found.get(name)
         return found if found is not None or self.fallback is None else self.fallback.find(name)
 
+    def workspace_of(self, path: Path) -> Path | None:
+        """The input's repository or workspace ``src`` folder that holds ``path`` (which need
+        not exist), or None: a path of this machine, not of another one."""
+        return next((root for root in self._local_roots if path.is_relative_to(root)), None)
+
     def misnamed(self, name: str) -> tuple[Path, str] | None:
         """A folder called ``name``, among the packages looked at, whose package.xml
         gives another name: (folder, that name). What a look-up by folder name missed."""

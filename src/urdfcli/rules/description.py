@@ -11,7 +11,7 @@ from ..model.meshes import input_folder, near_misses, resolved_resources, uri_st
 from ..model.vocabulary import SCHEMA
 from ..read.packages import cmake_project
 from .base import ERROR, INFO, PLACED, SAFE, WARNING, Kind, RuleSet, check
-from .meshes import others_there
+from .meshes import others_there, package_uri, written_with_find
 from .suggestions import close_matches
 from .xacro import unprefixed_calls
 
@@ -317,10 +317,12 @@ def file_not_found(loaded, given):
     `file://`, absolute or relative paths; never a network address) and flags
     a file that does not exist: an error for a mesh, a warning for a texture.
     Relative paths are taken from the input's folder. Files in a folder that
-    does not exist at all (an absolute path from another machine) are one
-    diagnostic per folder. Where a file differs only in case or extension (it
-    loads on macOS and Windows, not on Linux), or has the name in a `meshes/`
-    folder beside a folder above it, the hint names it. `check` reports it too:
+    does not exist at all are one diagnostic per folder. Where a file differs
+    only in case or extension (it loads on macOS and Windows, not on Linux), or
+    has the name in a `meshes/` folder beside a folder above it, the hint names
+    it; else an absolute path is told as this machine's (one `$(find pkg)`
+    gives: in a package, whose `package://` URI loads on other machines too;
+    in the input's repository or workspace) or another machine's. `check` reports it too:
     whether a file exists is a `stat`, no mesh is opened. A package that
     cannot be found is D005's.
 
@@ -358,7 +360,8 @@ def file_not_found(loaded, given):
             missing_folders.setdefault(path.parent, []).append((at, kind, uri, path))
             continue
         looked = f" (looked for {path})" if str(path) != uri else ""
-        found = loaded.diagnostic("D004", f"{kind} '{uri}' not found{looked}", at, _meant(loaded, uri, path, base))
+        hint = _meant(loaded, uri, path, base) or (_whose(loaded, at, uri, path) if uri_style(uri) in ABSOLUTE else None)
+        found = loaded.diagnostic("D004", f"{kind} '{uri}' not found{looked}", at, hint)
         found = found.with_fix(_file_fix(loaded, at, uri, path, base))
         yield found.with_severity(WARNING) if kind == "texture" else found
     for folder, uses in missing_folders.items():  # a missing folder is one cause: one diagnostic
@@ -366,9 +369,24 @@ def file_not_found(loaded, given):
         others = others_there(u for _, _, u, _ in uses)
         hint = _meant(loaded, uri, path, base)
         if hint is None and uri_style(uri) in ABSOLUTE:
-            hint = "a path of another machine: put the files in a ROS package and write package://PACKAGE/..."
+            hint = _whose(loaded, at, uri, path) or "a path of another machine: put the files in a ROS package and write package://PACKAGE/..."
         found = loaded.diagnostic("D004", f"{kind} '{uri}'{others}: folder {folder} does not exist", at, hint)
         yield found.with_severity(WARNING) if all(kind == "texture" for _, kind, _, _ in uses) else found
+
+
+def _whose(loaded, at: int, uri: str, path) -> str | None:
+    """The hint for an absolute path (``file://`` or plain, as ``$(find)`` gives) of this
+    machine to a missing file: in a package, the package:// URI that names it on any
+    machine (unless a xacro source wrote it ``file://$(find ...)``, portable already);
+    in the input's repository or workspace, where. None for another machine's path."""
+    portable = package_uri(loaded, path)
+    if portable is not None:
+        said = f"a path of this machine, in package '{_package_of(portable)}', where the file is missing"
+        if uri_style(uri) == "file" and written_with_find(loaded, at):
+            return said
+        return f"{said}; write '{portable}' for the model to load on other machines too"
+    folder = loaded.resolver.workspace_of(path) if loaded.resolver is not None else None
+    return f"a path of this machine, in {folder}, where the file is missing" if folder is not None else None
 
 
 def _meant(loaded, uri: str, path, base) -> str | None:

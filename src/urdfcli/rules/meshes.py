@@ -134,12 +134,12 @@ def path_not_portable(loaded, given):
     groups: dict = defaultdict(list)
     for at, kind, uri, path in resolved_resources(loaded):
         style = uri_style(uri)
-        if style is not None and path is not None and path.is_file() and not (style == "file" and _found_in_source(loaded, at)):
+        if style is not None and path is not None and path.is_file() and not (style == "file" and written_with_find(loaded, at)):
             groups[(style, path.parent)].append((at, kind, uri, path))
     for (style, _), found in groups.items():
         at, kind, uri, path = found[0]
         extra = others_there(u for _, _, u, _ in found)
-        portable = _package_uri(loaded, path)
+        portable = package_uri(loaded, path)
         fix = f"write {portable}" if portable else "put the files in a ROS package (a folder with a package.xml) and write package://PACKAGE/..."
         if style == "relative":
             message = f"{kind} '{uri}'{extra}: a relative path, which RViz and MoveIt cannot load (only package:// and file:// URIs)"
@@ -155,7 +155,7 @@ def _portable_fix(loaded, style: str, found) -> Fix:
         return Fix("write package:// URIs", SAFE, reason="a relative path is what MuJoCo, PyBullet and Drake read: write package:// by hand if the model is for ROS")
     changes = []
     for at, _, _, path in found:
-        portable = _package_uri(loaded, path)
+        portable = package_uri(loaded, path)
         if portable is None:
             return Fix("write package:// URIs", SAFE, reason=f"{path} is in no ROS package (no package.xml in a folder above it)")
         changes.append(SetAttribute(at, "filename", portable))
@@ -166,7 +166,7 @@ def _portable_fix(loaded, style: str, found) -> Fix:
 _FILENAME = re.compile(r"""\bfilename\s*=\s*(["'])(.*?)\1""", re.DOTALL)
 
 
-def _found_in_source(loaded, at: int) -> bool:
+def written_with_find(loaded, at: int) -> bool:
     """Whether the xacro source wrote the URI with ``$(find ...)``: a file:// URI made on each
     machine from its own package folder, which is portable."""
     location = loaded.document.locate(at)
@@ -181,7 +181,7 @@ def _found_in_source(loaded, at: int) -> bool:
     return written is not None and "$(find" in written.group(2)
 
 
-def _package_uri(loaded, path: Path) -> str | None:
+def package_uri(loaded, path: Path) -> str | None:
     """The package:// URI of a file inside a ROS package, or None."""
     index = loaded.resolver.index
     folder = index.enclosing_package(path.resolve().parent)
