@@ -346,6 +346,31 @@ def test_fixes_that_undo_each_other_stop_and_are_not_counted(cli, here):
     assert re.search(r"^0 fixed, ", done.stdout, re.M) and snapshot(here) == before, done.stdout
 
 
+def test_an_unsafe_fix_in_a_macro_another_model_expands_is_not_applied(cli, here):
+    """b's fix of the tensor in seg.xacro's body would give model a, whose 0.1 m box it fits,
+    a tensor a hundred times too large: fixing b alone leaves seg.xacro as it is, says why in
+    one line and counts no fix (it wrote the tensor and said 1 fixed)."""
+    segment_models(here)
+    before, a_found = snapshot(here), findings(cli, "pkg/urdf/a.urdf.xacro")
+    done = run_cli("lint", "--isolated", "--fix", "--unsafe-fixes", "pkg/urdf/b.urdf.xacro", cwd=here)
+    assert snapshot(here) == before
+    assert done.stderr.decode() == ("urdfcli: pkg/urdf/seg.xacro:9: I009 not fixed: macro 'seg', whose body it edits, "
+                                    "is also expanded by pkg/urdf/a.urdf.xacro, which is not among the models fixed\n")
+    assert re.search(r"^0 fixed, 1 remaining", done.stdout.decode(), re.M) and done.returncode == 1
+    assert findings(cli, "pkg/urdf/a.urdf.xacro") == a_found
+
+
+@pytest.mark.parametrize("given", [("pkg/urdf/a.urdf.xacro", "pkg/urdf/b.urdf.xacro"), ("pkg/urdf/seg.xacro",), ("-j", "2", "pkg/urdf/seg.xacro")])
+def test_a_fix_in_a_macro_body_is_applied_when_every_model_expanding_it_is_fixed(cli, here, given):
+    """Both models with a 1 m box: the one tensor fits both, and is written when both are fixed,
+    given by name or through the library they are checked through (in other processes too)."""
+    segment_models(here)
+    put(here, {"pkg/urdf/a.urdf.xacro": (here / "pkg/urdf/a.urdf.xacro").read_text().replace('size="0.1"', 'size="1.0"')})
+    done = run_cli("lint", "--isolated", "--fix", "--unsafe-fixes", "--select", "I009", *given, cwd=here)
+    assert (done.returncode, done.stderr.decode()) == (0, ""), done.stdout.decode()
+    assert re.search(r"^1 fixed, 0 remaining", done.stdout.decode(), re.M) and 'ixx="0.166667"' in (here / "pkg/urdf/seg.xacro").read_text()
+
+
 # -- meshes and packages ---------------------------------------------------------------------------
 PACKAGE = """<?xml version="1.0"?>
 <package format="3">

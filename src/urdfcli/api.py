@@ -367,7 +367,7 @@ def fix(paths: list[str], session: Session, progress: Progress | None = None) ->
     for round_ in range(fixing.MAX_ROUNDS + 1):
         found = run(paths, serial if before else session, progress if round_ == 0 else None)
         pairs = [(d, settings[1]) for result in found.results if (settings := chosen(result))[0] for d in result.diagnostics]
-        selection = fixing.select(pairs)
+        selection = fixing.select(_not_called_elsewhere(pairs, found, session, ours, failed))
         if not selection.edits or round_ == fixing.MAX_ROUNDS:
             break
         written = False
@@ -395,6 +395,28 @@ def fix(paths: list[str], session: Session, progress: Progress | None = None) ->
         fixes_at[now] = len(applied)
     changed = {file: (data, session.files.read(file).data) for file, data in before.items()}
     return Fixed(found, applied, {file: pair for file, pair in changed.items() if pair[0] != pair[1]}, list(dict.fromkeys(failed)))
+
+
+def _not_called_elsewhere(
+    pairs: list[tuple[Diagnostic, bool]], found: Run, session: Session, ours: Callable[[str], bool], failed: list[str]
+) -> list[tuple[Diagnostic, bool]]:
+    """The (diagnostic, unsafe) pairs but those whose unsafe fix edits the body of a macro
+    that a model this run does not fix expands too (see :func:`fixing.called_elsewhere`):
+    each of those is said in ``failed``. A file the run may not write is said so after."""
+    own: set[Path] | None = None  # the files the models being fixed read: asked only when a fix edits a macro's body
+    kept = []
+    for diagnostic, unsafe in pairs:
+        fix = diagnostic.fix
+        if fixing.applies(fix, unsafe) and not fix.safe and all(ours(edit.file) for edit in fix.edits):
+            if own is None:
+                read = (file for result in found.results for file in (result.path, *result.includes, *(result.library.read if result.library else ())))
+                own = {session.packages.real_path(Path(file)) for file in read if file not in (STDIN, STDIN_NAME)}
+            why = fixing.called_elsewhere(diagnostic, own, session.index)
+            if why is not None:
+                failed.append(why)
+                continue
+        kept.append((diagnostic, unsafe))
+    return kept
 
 
 def _writable(paths: list[str], session: Session) -> Callable[[str], bool]:

@@ -25,6 +25,7 @@ class Library(NamedTuple):
     notes: tuple[str, ...] = ()
     unchecked: bool = False  # a file of a folder that no model read: named in a note, not counted as checked
     fragment: bool = False  # a model's part in a file of its own, not a library of macros
+    read: tuple[str, ...] = ()  # the models it was checked through and the files their expansions read
 
 
 class Unreadable(NamedTuple):

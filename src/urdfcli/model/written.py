@@ -246,7 +246,7 @@ class Placer:
         if not _IDENTIFIER.fullmatch(name) or site.scan is None:
             raise Unplaceable(f"the value is computed by ${{{inner}}} at {self.where(site, at)}")
         scan = site.scan
-        macros = _macros_around(scan, site.element)
+        macros = scan.macros_at(scan.source.spans[site.element][0])
         for depth, macro in enumerate(macros):
             parameter = next((p for p in macro_parameters(scan.macros[macro].params) if p.name == name and not p.block), None)
             if parameter is None:
@@ -381,13 +381,6 @@ def _indentation(text: str, offset: int) -> str:
 def _is_xacro_tag(source: Text, element: int) -> bool:
     tag = _tag(source, source.spans[element][0]) or ""
     return tag.startswith("xacro:")
-
-
-def _macros_around(scan: XacroFile, element: int) -> list[int]:
-    """The macros whose bodies hold element ``element``, innermost first."""
-    start = scan.source.spans[element][0]
-    around = [m for m, macro in enumerate(scan.macros) if (span := scan.source.spans[macro.place.element])[0] < start < span[2]]
-    return sorted(around, key=lambda m: -scan.source.spans[scan.macros[m].place.element][0])
 
 
 def _names_read(scan: XacroFile) -> set[str]:

@@ -14,11 +14,14 @@ from __future__ import annotations
 
 from collections import defaultdict
 from collections.abc import Iterable
+from pathlib import Path
 from typing import NamedTuple
 
 from ..diagnostics import Diagnostic, Edit, Fix, Severity
 from ..read.files import SourceFiles
+from ..read.xacro_scan import shown
 from .suppressions import noqa_edit
+from .workspace import Index, search_roots
 
 MAX_ROUNDS = 10  # a fix may let another be found; this many rounds at most, as ruff does
 
@@ -56,6 +59,28 @@ def select(chosen: Iterable[tuple[Diagnostic, bool]]) -> Selection:
             taken[edit.file].append(edit)
         fixes.append(fix)
     return Selection({file: edits for file, edits in taken.items() if edits}, fixes)
+
+
+def called_elsewhere(diagnostic: Diagnostic, own: set[Path], index: Index) -> str | None:
+    """Why an unsafe fix is not applied, when it edits a macro's body (not a model's own
+    call or property) and a file of the repository or workspace outside ``own`` (the
+    files the models being fixed read) expands that macro: the edit would change the
+    other model too, where the value was right (a tensor fitting its box). None when
+    it may be applied. A safe fix keeps every model's meaning: never asked here."""
+    for edit in diagnostic.fix.edits:
+        file = index.packages.real_path(Path(edit.file))
+        scan = index.xacro_file(file)
+        macros = [scan.macros[m].name.removeprefix("xacro:") for m in scan.macros_at(edit.start)] if scan is not None else []
+        if not macros:
+            continue
+        others = sorted(index.calling(index.scan(*search_roots(file, index.packages)), set(macros)) - own)
+        if others:
+            more = f" (and {len(others) - 1} more)" if len(others) > 1 else ""
+            return (
+                f"{edit.file}:{scan.source.position(edit.start)[0]}: {diagnostic.code} not fixed: macro '{macros[0]}', whose body it edits, "
+                f"is also expanded by {shown(others[0])}{more}, which is not among the models fixed"
+            )
+    return None
 
 
 def _overlap(one: Edit, other: Edit) -> bool:

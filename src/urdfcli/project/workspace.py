@@ -358,6 +358,35 @@ class Index:
                         found.setdefault(target, []).append((file, include, text))
         return found
 
+    def calling(self, files: list[Path], macros: set[str]) -> set[Path]:
+        """The files among ``files`` whose expansion may call one of ``macros`` (names
+        without ``xacro:``): a file that calls one outside any macro body, or calls a
+        macro whose body calls one (on up), and a file that includes such a file."""
+        scans = {file: scan for file in files if (scan := self.xacro_file(file)) is not None}
+        names = set(macros)
+        found: set[Path] = set()
+        grown = True
+        while grown:
+            grown = False
+            for file, scan in scans.items():
+                for call in scan.calls:
+                    if call.name.rpartition(".")[2] not in names:  # (ns.name: a macro of an include with a namespace)
+                        continue
+                    if call.macro is None:
+                        grown |= file not in found
+                        found.add(file)
+                    elif (outer := scan.macros[call.macro].name.removeprefix("xacro:")) not in names:
+                        names.add(outer)
+                        grown = True
+        includers = self.includers(list(scans))
+        stack = list(found)
+        while stack:
+            for includer, _, _ in includers.get(stack.pop(), []):
+                if includer not in found:
+                    found.add(includer)
+                    stack.append(includer)
+        return found
+
     def top_level_models(self, files: list[Path]) -> list[Path]:
         """The models among ``files`` that none of them includes (by a resolved path)."""
         included = {Path(i.value) for file in files for i in self.includes(file) if i.kind == "path"}
@@ -836,7 +865,8 @@ def _library_result(
             places.add(place)
             if _fresh(diagnostic, False, shown_keys):
                 diagnostics.append(diagnostic)
-    return Result(entry.path, tuple(diagnostics), library=Library(tuple(checked_through), tuple(notes), fragment=fragment))
+    read = tuple(dict.fromkeys(file for model in used for file in (model.path, *model.includes)))
+    return Result(entry.path, tuple(diagnostics), library=Library(tuple(checked_through), tuple(notes), fragment=fragment, read=read))
 
 
 def unchecked_library(path: str, unchecked: str, fragment: bool = False, needs: tuple[str, str] | None = None) -> Diagnostic:

@@ -204,6 +204,12 @@ class XacroFile:
         at = _value_offset(self.source, start, tag_end, end, place)
         return self.source.position(at if at is not None else start)
 
+    def macros_at(self, offset: int) -> list[int]:
+        """The macros whose definitions hold the text at ``offset``, innermost first."""
+        spans = self.source.spans
+        around = [m for m, macro in enumerate(self.macros) if (span := spans[macro.place.element])[0] < offset < span[2]]
+        return sorted(around, key=lambda m: -spans[self.macros[m].place.element][0])
+
     def within(self, macro: int | None, outer: int) -> bool:
         """Whether the body of macro ``macro`` is (or is inside) that of ``outer``."""
         while macro is not None:
