@@ -593,6 +593,19 @@ def test_add_noqa_silences_what_remains(cli, here):
     assert (here / "arm.urdf").read_text() == written
 
 
+def test_add_noqa_exits_as_lint_does_for_what_no_comment_silences(cli, here):
+    """A file that is not XML (X001) is reported whatever the comments say: after --add-noqa
+    silenced arm.urdf, the run exits 1 as the lint after it does, and says what remains
+    (it exited 0)."""
+    put(here, {"arm.urdf": ARM, "broken.urdf": '<robot name="r">\n  <link name="a">\n</robot>\n'})
+    done = cli("lint", "--isolated", "--add-noqa", "arm.urdf", "broken.urdf")
+    assert re.search(r"^\d+ noqa comments written, 1 remaining$", done.stdout, re.M), done.stdout
+    after = cli("lint", "--isolated", "--format", "concise", "arm.urdf", "broken.urdf")
+    assert [line.split()[1] for line in after.stdout.splitlines() if line.startswith(("arm", "broken"))] == ["X001"], after.stdout
+    assert done.exit_code == after.exit_code == 1
+    assert cli("lint", "--isolated", "--add-noqa", "--exit-zero", "broken.urdf").exit_code == 0
+
+
 def test_add_noqa_silences_a_finding_on_the_whole_file_with_a_noqa_file_comment(cli, here):
     """A drifted generated URDF (X110, at its XML declaration) and a library no model
     could check (X006, no line): a noqa-file comment, after the declaration."""

@@ -13,6 +13,7 @@ from .common import report_unreadable
 
 if TYPE_CHECKING:
     from .. import api
+    from ..diagnostics import Diagnostic
     from ..report.console import Output
     from ..session import Session
 
@@ -39,7 +40,10 @@ DiffOption = Annotated[
 ]
 AddNoqaOption = Annotated[
     bool,
-    typer.Option("--add-noqa", help="Write a `urdfcli: noqa` comment, with its codes, on every element that still has a warning or an error."),
+    typer.Option(
+        "--add-noqa",
+        help="Write a `urdfcli: noqa` comment, with its codes, on every element that still has a warning or an error; exit 1 when one remains that no comment silences.",
+    ),
 ]
 
 
@@ -61,6 +65,7 @@ class Outcome(NamedTuple):
     fixed: api.Fixed
     changed: dict[str, tuple[bytes, bytes]]  # file -> (before, after), noqa comments included
     noqa: int  # comments written
+    remaining: tuple[Diagnostic, ...] | None = None  # with --add-noqa: the warnings and errors no comment silences
 
 
 def run(paths: list[str], session: Session, asked: Fixing, progress=None) -> Outcome:
@@ -76,18 +81,22 @@ def run(paths: list[str], session: Session, asked: Fixing, progress=None) -> Out
     fixed = api.fix(paths, session, progress)
     changed = dict(fixed.changed)
     noqa = 0
+    remaining = None
     if asked.add_noqa:
-        edits = fixing.noqa_edits((d for r in fixed.run.results for d in r.diagnostics), session.files)
-        for file, found in edits.items():
+        comments = fixing.noqa_edits((d for r in fixed.run.results for d in r.diagnostics), session.files)
+        remaining = list(comments.left)
+        for file, found in comments.edits.items():
             before = changed[file][0] if file in changed else session.files.read(file).data
             try:
                 after = apply(session.files.read(file).data, [(e.start, e.end, e.text) for e in found])
             except EditError as error:
                 fixed.failed.append(f"{file}: {error}")
+                remaining += comments.silenced[file]
                 continue
             changed[file] = (before, after)
             noqa += len(found)
-    return Outcome(fixed, changed, noqa)
+        remaining = tuple(remaining)
+    return Outcome(fixed, changed, noqa, remaining)
 
 
 def write_files(outcome: Outcome) -> list[str]:
@@ -132,8 +141,9 @@ def summary(outcome: Outcome, asked: Fixing) -> str | None:
     results = outcome.fixed.run.results
     if not results:
         return None
-    if outcome.noqa:
-        return f"{plural(outcome.noqa, 'noqa comment')} written"
+    if asked.add_noqa and (outcome.noqa or outcome.remaining):
+        left = f", {len(outcome.remaining)} remaining" if outcome.remaining else ""
+        return f"{plural(outcome.noqa, 'noqa comment')} written{left}"
     fixed = len(outcome.fixed.fixed)
     if not fixed and not asked.fix:
         return None

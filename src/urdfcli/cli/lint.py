@@ -98,9 +98,8 @@ def lint(
         raise SystemExit(Exit.PROBLEMS if outcome.changed and not exit_zero else Exit.OK)
     if exit_non_zero_on_fix and outcome.changed:
         raise SystemExit(Exit.PROBLEMS)
-    if add_noqa:
-        return
-    if not exit_zero and any(d.severity.rank >= Severity.WARNING.rank for r in found.results for d in r.diagnostics):
+    remaining = outcome.remaining if add_noqa else [d for r in found.results for d in r.diagnostics]  # (--add-noqa: what no comment silences)
+    if not exit_zero and any(d.severity.rank >= Severity.WARNING.rank for d in remaining):
         raise SystemExit(Exit.PROBLEMS)
 
 

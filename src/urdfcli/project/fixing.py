@@ -105,23 +105,38 @@ def counts(diagnostics: Iterable[Diagnostic], unsafe: bool) -> tuple[int, int]:
     return fixable, hidden
 
 
-def noqa_edits(diagnostics: Iterable[Diagnostic], files: SourceFiles) -> dict[str, list[Edit]]:
+class Comments(NamedTuple):
+    """The ``noqa`` comments to write: each file's edits, the diagnostics each file's
+    comments silence, and the warnings and errors no comment can silence (a file that
+    is not XML, a line of the xacro expansion)."""
+
+    edits: dict[str, list[Edit]]
+    silenced: dict[str, list[Diagnostic]]
+    left: list[Diagnostic]
+
+
+def noqa_edits(diagnostics: Iterable[Diagnostic], files: SourceFiles) -> Comments:
     """For every warning and error, the ``noqa`` comment that silences it: one per
     element, naming every code found there; one ``noqa-file`` comment per file for the
     diagnostics on a whole file. What a macro call made is silenced at the outermost
     call (in the model's own file), not in the macro's body, where the comment would
     silence every call of every model, those to come too. A diagnostic with no place
-    in a source (a line of the xacro expansion) gets none."""
+    in a source (a line of the xacro expansion) gets none, nor one of the codes no
+    comment silences (:data:`~.suppressions.UNSILENCEABLE`)."""
     groups: dict[tuple[str, int, int, bool], tuple[int | None, int | None, list[str]]] = {}
+    silenced: dict[str, list[Diagnostic]] = defaultdict(list)
+    left: list[Diagnostic] = []
     for diagnostic in diagnostics:
         location = diagnostic.location
-        if (diagnostic.severity or Severity.INFO) is Severity.INFO or location.expanded:
+        if (diagnostic.severity or Severity.INFO) is Severity.INFO:
             continue
         place = location.trace[-1] if location.trace else location
-        source = files.get(place.file)
+        source = files.get(place.file) if not location.expanded else None
         found = noqa_edit(source, place.line or None, [diagnostic.code], place.column) if source is not None else None
         if found is None:
+            left.append(diagnostic)
             continue
+        silenced[place.file].append(diagnostic)
         key = (place.file, found[0], found[1], "noqa-file" in found[2])  # (the file's comment and its first element's may both go at its start)
         line, column, codes = groups.setdefault(key, (place.line or None, place.column, []))
         if diagnostic.code not in codes:
@@ -131,4 +146,4 @@ def noqa_edits(diagnostics: Iterable[Diagnostic], files: SourceFiles) -> dict[st
         found = noqa_edit(files.get(file), line, codes, column)
         if found is not None:
             edits[file].append(Edit(file, *found))
-    return dict(edits)
+    return Comments(dict(edits), dict(silenced), left)
