@@ -574,6 +574,30 @@ def test_the_diff_names_a_file_given_by_its_absolute_path_as_patch_finds_it(here
     assert applied.returncode == 0, applied.stdout
 
 
+def test_the_diff_of_files_above_the_working_folder_applies_as_standard_error_says(here):
+    """`--diff ../other/urdf/arm.urdf` named it a/../other/urdf/arm.urdf, which patch (and git
+    apply) refuse: the paths of the whole diff are relative to the nearest folder above that
+    holds every file, and the command printed applies it from the working folder, as --fix
+    would have written them."""
+    put(here, {"other/urdf/arm.urdf": ARM, "work/arm.urdf": ARM, "fixed/other/urdf/arm.urdf": ARM, "fixed/work/arm.urdf": ARM})
+    work = here / "work"
+    done = run_cli("lint", "--isolated", "--diff", "--unsafe-fixes", "arm.urdf", "../other/urdf/arm.urdf", cwd=work)
+    names = re.findall(rb"^(?:---|\+\+\+) (\S+)", done.stdout, re.M)
+    assert names == [b"a/work/arm.urdf", b"b/work/arm.urdf", b"a/other/urdf/arm.urdf", b"b/other/urdf/arm.urdf"], done.stdout
+    said = done.stderr.decode()
+    assert said.endswith("the paths are relative to ..: apply the diff with `patch -p1 -d ..`\n"), said
+    command = re.search(r"`patch (.*)`", said).group(1).split()
+    applied = subprocess.run([require_tool("patch"), *command], input=done.stdout, cwd=work, capture_output=True)
+    assert applied.returncode == 0, applied.stdout
+    run_cli("lint", "--isolated", "--fix", "--unsafe-fixes", "work/arm.urdf", "other/urdf/arm.urdf", cwd=here / "fixed")
+    for name in ("work/arm.urdf", "other/urdf/arm.urdf"):
+        assert (here / name).read_bytes() == (here / "fixed" / name).read_bytes() != ARM.encode()
+    # every file below the working folder: named from it, and no line about where to apply it
+    put(here, {"below/urdf/arm.urdf": ARM})
+    below = run_cli("lint", "--isolated", "--diff", "--unsafe-fixes", "urdf/arm.urdf", cwd=here / "below")
+    assert below.stdout.startswith(b"--- a/urdf/arm.urdf\n") and b"relative to" not in below.stderr
+
+
 def test_a_fixed_file_reached_through_a_symbolic_link_is_written_where_it_is(cli, here):
     put(here, {"description/urdf/arm.urdf": ARM})
     (here / "arm.urdf").symlink_to(here / "description" / "urdf" / "arm.urdf")

@@ -3,6 +3,7 @@ the files written (or the diff printed) and the line that says what was fixed.""
 
 from __future__ import annotations
 
+import os
 from typing import TYPE_CHECKING, Annotated, NamedTuple
 
 import typer
@@ -36,7 +37,11 @@ UnsafeFixesOption = Annotated[
 ]
 DiffOption = Annotated[
     bool,
-    typer.Option("--diff", help="Print the unified diff of the fixes (as `patch -p1` applies it) and write nothing; exit 1 when there is something to fix."),
+    typer.Option(
+        "--diff",
+        help="Print the unified diff of the fixes (as `patch -p1` applies it; `patch -p1 -d ..` for a file above the working folder, as it says) "
+        "and write nothing; exit 1 when there is something to fix.",
+    ),
 ]
 AddNoqaOption = Annotated[
     bool,
@@ -113,14 +118,16 @@ def write_files(outcome: Outcome) -> list[str]:
 
 
 def print_diff(outcome: Outcome, output: Output) -> None:
-    """The unified diff of every change, on standard output; what it would fix, on standard error."""
-    from ..read.edits import unified_diff
+    """The unified diff of every change, on standard output; what it would fix, on standard
+    error, and, when a file is outside the working folder, the folder its paths are relative to."""
+    from ..read.edits import diff_folder, unified_diff
 
     out = output.out.file
     out.flush()
     binary = getattr(out, "buffer", None)  # the diff is the files' own bytes, whatever their encoding
+    folder = diff_folder(outcome.changed)
     for file, (before, after) in outcome.changed.items():
-        diff = unified_diff(file, before, after)
+        diff = unified_diff(file, before, after, folder)
         if binary is not None:
             binary.write(diff)
         else:
@@ -131,6 +138,8 @@ def print_diff(outcome: Outcome, output: Output) -> None:
         what = [_fixes(fixes)] if fixes else []
         what += [plural(outcome.noqa, "noqa comment")] if outcome.noqa else []
         output.err.file.write(f"would apply {' and '.join(what)} in {plural(len(outcome.changed), 'file')}\n")
+        if folder != os.curdir:  # ('..' components only: nothing of an input)
+            output.err.file.write(f"the paths are relative to {folder}: apply the diff with `patch -p1 -d {folder}`\n")
     elif outcome.fixed.run.results:  # (no file read: the message that says why is all)
         output.err.file.write("nothing to fix\n")
 

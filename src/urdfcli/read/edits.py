@@ -105,13 +105,28 @@ def write(path: str | os.PathLike, data: bytes) -> None:
         raise
 
 
-def unified_diff(name: str, old: bytes, new: bytes) -> bytes:
+def diff_folder(names: Iterable[str]) -> str:
+    """The folder a diff of these files is written relative to: the working folder
+    (``.``) when each file is below it, else the nearest folder above it that holds them
+    all (``..``, ``../..``): ``patch`` and ``git apply`` refuse a path with ``..`` in it,
+    or an absolute one. Standard input and a file on another drive are left as named."""
+    here = os.getcwd()
+    files = [os.path.abspath(name) for name in names if _on_disk(name)]
+    try:
+        return os.path.relpath(os.path.commonpath([here, *files]), here)
+    except ValueError:  # another drive
+        return os.curdir
+
+
+def unified_diff(name: str, old: bytes, new: bytes, folder: str = os.curdir) -> bytes:
     """The unified diff that makes ``new`` of ``old`` (``--- a/NAME`` ``+++ b/NAME``, NAME
-    relative to the working folder when the file is below it), as ``patch -p1`` applies
+    relative to ``folder`` when the file is below it), as ``patch -p1 -d FOLDER`` applies
     it: lines compared as bytes, so that line ends and the file's encoding are kept."""
     import difflib
 
-    shown = os.path.relpath(name) if os.path.isabs(name) and _below(name, os.getcwd()) else name
+    base = os.path.abspath(folder)
+    full = os.path.abspath(name)
+    shown = os.path.relpath(full, base) if _on_disk(name) and _below(full, base) else name
     lines = []
     for line in difflib.diff_bytes(
         difflib.unified_diff, old.splitlines(keepends=True), new.splitlines(keepends=True), os.fsencode(f"a/{shown}"), os.fsencode(f"b/{shown}")
@@ -120,6 +135,11 @@ def unified_diff(name: str, old: bytes, new: bytes) -> bytes:
         if not line.endswith((b"\n", b"\r")):
             lines.append(b"\n\\ No newline at end of file\n")
     return b"".join(lines)
+
+
+def _on_disk(name: str) -> bool:
+    """Whether a file name is a path (not standard input, ``-`` or ``<stdin>``)."""
+    return name != "-" and not name.startswith("<")
 
 
 def _below(path: str, folder: str) -> bool:
