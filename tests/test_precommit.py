@@ -264,7 +264,7 @@ def test_drift_hook_fails_a_commit_whose_xacro_leaves_the_generated_urdf_behind(
     assert code == 1, out
     assert re.search(r"urdfcli drift\.+Failed", out)
     assert ("kuka_kr16_support/urdf/kr16_2.urdf:1:1: X110 warning: kr16_2.urdf does not match kuka_kr16_support/urdf/kr16_2.xacro, "
-            "which generated it: 1 joint differs (joint 'joint_a2' limit upper: 0.6108652381980153 here, 0.6981317007977318 in kr16_2.xacro)") in out
+            "which generated it: 1 joint differs (joint 'joint_a2' limit upper: 0.610865 here, 0.698132 in kr16_2.xacro)") in out
 
     urdf.write_text(regenerated(urdf.read_text(), generate(package / "urdf" / "kr16_2.xacro", "unused")))
     code, out = commit("joint a2 reaches further, the URDF regenerated")
