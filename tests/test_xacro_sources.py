@@ -437,6 +437,48 @@ def test_a_fixed_name_made_by_one_call_is_info(tmp_path):
     assert info.severity.value == "info" and "can be called once per robot" in info.message and "${" in info.hint
 
 
+def test_the_fixed_names_of_a_macro_called_once_are_one_info_at_the_first(tmp_path):
+    """A vendor's robot macro names every link and joint, on purpose: one note for the
+    macro, naming how many and which, not one per name (13 lines for Doosan's m1013)."""
+    model = write(tmp_path / "robot.urdf.xacro", robot("""
+        <xacro:macro name="arm" params="parent">
+          <link name="arm_base"/>
+          <joint name="arm_base_joint" type="fixed"><parent link="${parent}"/><child link="arm_base"/></joint>
+          <link name="arm_tip"/>
+          <joint name="arm_tip_joint" type="fixed"><parent link="arm_base"/><child link="arm_tip"/></joint>
+        </xacro:macro>
+        <link name="base_link"/>
+        <xacro:arm parent="base_link"/>
+        """))
+    [info] = diagnostics(model, "X105")
+    assert info.severity.value == "info" and (info.line, info.column) == column_of(model, 'arm_base"', "<link")
+    assert info.message == (
+        "macro 'arm' names 4 links and joints ('arm_base', 'arm_base_joint', 'arm_tip' and 1 more) whatever its parameters: it can be called once per robot"
+    )
+    assert info.hint == 'build the names from a parameter, such as name="${prefix}arm_base"'
+
+
+def test_the_fixed_names_two_calls_make_twice_are_one_error_naming_them(tmp_path):
+    """The error names what the calls make twice; a name only one call makes (under a
+    condition) is not among them."""
+    model = write(tmp_path / "robot.urdf.xacro", robot("""
+        <xacro:macro name="wheel" params="side">
+          <link name="wheel_link"/>
+          <joint name="wheel_joint" type="continuous"><parent link="base_link"/><child link="wheel_link"/></joint>
+          <xacro:if value="${side == 'left'}"><link name="left_only"/></xacro:if>
+        </xacro:macro>
+        <link name="base_link"/>
+        <xacro:wheel side="left"/>
+        <xacro:wheel side="right"/>
+        """))
+    [error] = diagnostics(model, "X105")
+    calls = ["{}:{}:{}".format(model.name, *column_of(model, f'<xacro:wheel side="{side}"')) for side in ("left", "right")]
+    assert error.severity.value == "error" and (error.line, error.column) == column_of(model, 'wheel_link"', "<link")
+    assert error.message.replace(str(tmp_path) + "/", "") == (
+        f"macro 'wheel' names 2 links and joints ('wheel_link', 'wheel_joint') whatever its parameters: its two calls (at {calls[0]} and {calls[1]}) make each of them twice"
+    )
+
+
 @pytest.mark.parametrize("link", ["${side}_wheel_link", "${prefix}wheel_link"])
 def test_a_name_built_from_a_parameter_or_a_property_that_differs_between_calls_is_clean(tmp_path, link):
     model = write(tmp_path / "robot.urdf.xacro", robot(NAMED_MACRO.format(link=link) + """

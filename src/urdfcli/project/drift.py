@@ -24,6 +24,7 @@ from ..diagnostics import Diagnostic, Edit, Fix, Location, Severity
 from ..model.load import Loaded, load
 from ..read.document import InputError
 from ..read.packages import PackageError
+from ..rules.base import joined
 from ..rules.drift import X110
 from .config import Config
 
@@ -241,7 +242,7 @@ def summary(comparison: Comparison, urdf: str, source: GeneratedFrom) -> str:
         verb = "differs" if sum(len(e) for e in differing.values()) == 1 else "differ"
         first = min((c for c in changes if c.field is not None and c.field != "pose" and c.kind != "renamed" and c.element not in whole), key=_weight)
         here, there = values_text(first.old, first.new)
-        pieces.append(f"{_and(counted)} {verb} ({element_words(first.element)} {first.field}: {here} here, {there} in {xacro})")
+        pieces.append(f"{joined(counted)} {verb} ({element_words(first.element)} {first.field}: {here} here, {there} in {xacro})")
     if not pieces:  # only poses moved: cannot happen without a change above, kept for safety
         pieces.append(f"{comparison.count('changed')} values differ")
     generated = "which generated it" if source.header is not None else "beside it"
@@ -274,14 +275,14 @@ def _by_tag(changes: Iterable[Change]) -> str:
         if tag == "gazebo":  # blocks named by the link or joint they are about, or none (the robot's)
             about = [f"'{n}'" for n in found if not n.startswith("gazebo")]
             robot = len(found) - len(about)
-            shown = _and(about[:MOST_NAMED] + ([f"{len(about) - MOST_NAMED} more"] if len(about) > MOST_NAMED else []))
+            shown = joined(about[:MOST_NAMED] + ([f"{len(about) - MOST_NAMED} more"] if len(about) > MOST_NAMED else []))
             words = ([f"<gazebo> blocks for {shown}" if len(about) > 1 else f"the <gazebo> block for {shown}"] if about else []) + (
                 [f"{robot} <gazebo> blocks for the robot" if robot > 1 else "a <gazebo> block for the robot"] if robot else [])
-            parts.append(_and(words))
+            parts.append(joined(words))
             continue
         shown = ", ".join(f"'{n}'" for n in found[:MOST_NAMED]) + (f" and {len(found) - MOST_NAMED} more" if len(found) > MOST_NAMED else "")
         parts.append(f"{_plural(tag, len(found))} {shown}")
-    return _and(parts)
+    return joined(parts)
 
 
 def _tag(element: str) -> str:
@@ -297,10 +298,6 @@ def _plural(tag: str, count: int) -> str:
     if count == 1:
         return tag
     return tag + ("es" if tag.endswith(("s", "x", "ch", "sh")) else "s")
-
-
-def _and(parts: list[str]) -> str:
-    return ", ".join(parts[:-1]) + " and " + parts[-1] if len(parts) > 1 else "".join(parts)
 
 
 def _explaining_arguments(changes: tuple[Change, ...], source: Loaded, session: Session) -> dict[str, str | None]:

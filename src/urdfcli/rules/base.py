@@ -247,3 +247,9 @@ def names(items, most: int = 3) -> str:
     items = list(items)
     shown = ", ".join(f"'{item}'" for item in items[:most])
     return shown + (f" and {len(items) - most} more" if len(items) > most else "")
+
+
+def joined(parts) -> str:
+    """``a, b and c``."""
+    parts = list(parts)
+    return ", ".join(parts[:-1]) + " and " + parts[-1] if len(parts) > 1 else "".join(parts)

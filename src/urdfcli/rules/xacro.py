@@ -21,7 +21,7 @@ from ..model.sources import Facts, XacroSources, bound, interface, parameter_pla
 from ..read.memo import once
 from ..read.xacro_scan import Parameter, Place, XacroFile, free_names
 from . import structure
-from .base import ERROR, INFO, UNSAFE, WARNING, Kind, RuleSet, check, names
+from .base import ERROR, INFO, UNSAFE, WARNING, Kind, RuleSet, check, joined, names
 from .suggestions import close_matches
 
 
@@ -296,10 +296,13 @@ def macro_name_fixed(loaded, given) -> Iterator[Diagnostic]:
     Looks at each `<link>`, `<joint>` and `<transmission>` written in a macro's
     body with a fixed name (no `${...}`, no `$(...)`) and counts the calls of
     the macro that made one in the expanded model: two calls or more make two
-    elements of one name, an error, which names the two calls; one call is
-    info, since the macro can then be used only once per robot. A name built
-    from a parameter or a property (`${prefix}wheel`) is never flagged: the
-    duplicate-name rules (N004, N005) judge what it expands to.
+    elements of one name, an error, which names two of the calls; one call is
+    info, since the macro can then be used only once per robot (as vendors
+    write a robot's macro, on purpose). One diagnostic per macro, at its first
+    fixed name, names them all: the error those made twice, else the info
+    every fixed name. A name built from a parameter or a property
+    (`${prefix}wheel`) is never flagged: the duplicate-name rules (N004, N005)
+    judge what it expands to.
 
     ## Why is this bad?
     The second call of the macro defines the link or joint again: check_urdf
@@ -334,23 +337,40 @@ def macro_name_fixed(loaded, given) -> Iterator[Diagnostic]:
     files = {name: index for index, name in enumerate(origins.files)}
     made = None
     for file in loaded.xacro_sources.files:
+        fixed: dict[int, list] = {}  # macro index: (element, the call chains that made it), as written
         for element in file.made:
             if "$" in element.name or file.name not in files:
                 continue
             made = made if made is not None else _made_by_macros(origins)
             line, column = file.position(Place(element.place.element))
             traces = list(dict.fromkeys(made.get((files[file.name], line, column), [])))
-            if not traces:
-                continue
-            macro = file.macros[element.macro].name
-            what = f"macro '{macro}' names {element.tag} '{element.name}' whatever its parameters"
-            hint = f'build the name from a parameter, such as name="${{prefix}}{element.name}"'
-            if len(traces) > 1:
-                first, second = _differing(origins, traces[0], traces[1])
-                calls = f"{len(traces)} calls" if len(traces) > 2 else "two calls"
-                yield _diagnostic("X105", f"{what}: its {calls} (at {first} and {second}) make {element.tag} '{element.name}' twice", file, element.place, hint)
-            else:
-                yield _diagnostic("X105", f"{what}: it can be called once per robot", file, element.place, hint, severity=INFO)
+            if traces:
+                fixed.setdefault(element.macro, []).append((element, traces))
+        for macro, elements in fixed.items():
+            yield _fixed_names(origins, file, file.macros[macro].name, elements)
+
+
+def _fixed_names(origins, file: XacroFile, macro: str, elements: list) -> Diagnostic:
+    """X105 for one macro: an error naming the elements its calls made twice, else info naming
+    every fixed name (one note for the macro: a vendor's robot macro writes dozens, on purpose)."""
+    twice = [(element, traces) for element, traces in elements if len(traces) > 1]
+    named = [element for element, _ in twice or elements]
+    first = named[0]
+    if len(named) == 1:
+        what = f"macro '{macro}' names {first.tag} '{first.name}' whatever its parameters"
+        hint = f'build the name from a parameter, such as name="${{prefix}}{first.name}"'
+    else:
+        kinds = joined(dict.fromkeys(f"{element.tag}s" for element in named))
+        what = f"macro '{macro}' names {len(named)} {kinds} ({names(element.name for element in named)}) whatever its parameters"
+        hint = f'build the names from a parameter, such as name="${{prefix}}{first.name}"'
+    if not twice:
+        return _diagnostic("X105", f"{what}: it can be called once per robot", file, first.place, hint, severity=INFO)
+    traces = twice[0][1]
+    count = len({trace for _, traces in twice for trace in traces})
+    one, other = _differing(origins, traces[0], traces[1])
+    calls = f"{count} calls" if count > 2 else "two calls"
+    made_twice = f"{first.tag} '{first.name}' twice" if len(named) == 1 else "each of them twice"
+    return _diagnostic("X105", f"{what}: its {calls} (at {one} and {other}) make {made_twice}", file, first.place, hint)
 
 
 @check("X106", "xacro-name-undefined", WARNING, "A name in a macro body that nothing defines.", kind=Kind.SOURCES)
