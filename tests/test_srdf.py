@@ -94,6 +94,20 @@ def test_the_generated_srdf_is_checked_too(workspace):
     assert document["files"][0]["diagnostics"][0]["hint"] == "did you mean 'panda_finger_joint1'?"
 
 
+def test_a_link_the_urdf_has_with_a_prefix_cut_off_is_no_suggestion(workspace):
+    """Doosan's m1013.srdf names 'robotiq_85_base_link', a gripper link its URDF lacks:
+    'base_link', the robot's base, is not the fix. A misspelt link still gets its hint."""
+    srdf = workspace / PANDA / "panda.srdf"
+    edit(srdf, "</robot>", '  <disable_collisions link1="robotiq_85_panda_hand" link2="panda_link7" reason="Never"/>\n'
+                           '  <disable_collisions link1="panda_hnd" link2="panda_link6" reason="Never"/>\n</robot>')
+    done, document = check(f"{PANDA}/panda.srdf", cwd=workspace)
+    hints = {d["message"].split("'")[1]: d["hint"] for f in document["files"] for d in f["diagnostics"] if d["code"] == "K001"}
+    assert hints == {
+        "robotiq_85_panda_hand": f"use a link of {PANDA}/panda.urdf.xacro, or check that the SRDF is for this robot",
+        "panda_hnd": "did you mean 'panda_hand'?",
+    }
+
+
 def test_urdf_option_names_the_urdf_and_a_mismatch_is_said(built):
     root = built.parent
     done, document = check("--urdf", "src/franka_ros/franka_description/robots/panda/panda.urdf", f"{PANDA}/panda.srdf", cwd=root)

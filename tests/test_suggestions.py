@@ -1,12 +1,16 @@
-"""The "did you mean" search gives difflib's answer, with less of its work."""
+"""The "did you mean" search gives difflib's answer, with less of its work, and never a name
+that is the misspelt one with a whole prefix or suffix cut off."""
 
 from __future__ import annotations
 
 import difflib
 
+import pytest
+
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
+from urdfcli.read.names import cut_from, typo_of
 from urdfcli.rules.suggestions import close_matches
 
 NAMES = st.text(alphabet="abcde_12", max_size=8)  # few letters: many ties and near misses
@@ -15,10 +19,24 @@ NAMES = st.text(alphabet="abcde_12", max_size=8)  # few letters: many ties and n
 @settings(max_examples=2000, deadline=None)
 @given(NAMES, st.lists(NAMES, max_size=30), st.integers(1, 4), st.sampled_from([0.0, 0.3, 0.6, 0.8]))
 def test_the_same_names_as_difflib(word, candidates, n, cutoff):
-    assert close_matches(word, candidates, n, cutoff) == difflib.get_close_matches(word, candidates, n, cutoff)
+    kept = [candidate for candidate in candidates if not cut_from(word, candidate)]
+    assert close_matches(word, candidates, n, cutoff) == difflib.get_close_matches(word, kept, n, cutoff)
 
 
 def test_a_misspelt_link_among_many():
     links = [f"{side}_{part}_link" for side in ("left", "right") for part in ("shoulder", "elbow", "wrist", "finger", "thumb", "palm")]
     assert close_matches("left_elbw_link", links) == ["left_elbow_link"]
     assert close_matches("left_elbw_link", links, n=3) == difflib.get_close_matches("left_elbw_link", links, n=3)
+
+
+@pytest.mark.parametrize("suggest", [close_matches, lambda word, names: [typo_of(word, names)]])
+def test_a_name_cut_short_is_not_offered_and_a_typo_is(suggest):
+    """Doosan's SRDF names 'robotiq_85_base_link', which its URDF lacks: 'base_link' is the
+    robot's base, not the fix (difflib ranks it first). Real typos keep their hint."""
+    links = ["base_link", "link9", "tool0", "shoulder_link", "wrist_1_link"]
+    assert difflib.get_close_matches("robotiq_85_base_link", links) == ["base_link"]
+    for cut_short in ("robotiq_85_base_link", "base_link_2", "wrist_1_link_inertia"):
+        assert suggest(cut_short, links) in ([], [None]), cut_short
+    typos = {"link_9": "link9", "tool_0": "tool0", "shoulder_lnk": "shoulder_link", "wrist_1_lnk": "wrist_1_link"}
+    for typo, meant in typos.items():
+        assert suggest(typo, links) == [meant], typo

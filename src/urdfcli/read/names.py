@@ -8,8 +8,24 @@ from collections.abc import Iterable
 def typo_of(word: str, candidates: Iterable[str]) -> str | None:
     """The candidate ``word`` is a misspelling of: one edit away (two for longer words), case aside."""
     allowed = 1 if len(word) <= 4 else 2
-    scored = sorted((_edits(word.lower(), c.lower()), c) for c in candidates)
+    scored = sorted((_edits(word.lower(), c.lower()), c) for c in candidates if not cut_from(word, c))
     return scored[0][1] if scored and scored[0][0] <= allowed else None
+
+
+def cut_from(word: str, candidate: str) -> bool:
+    """Whether ``candidate`` is ``word`` with a whole prefix or suffix cut off, at a
+    separator (``base_link`` of ``robotiq_85_base_link``, ``arm`` of ``arm_2``), case
+    aside: another name, which a "did you mean" hint must not offer for a typo."""
+    word, candidate = word.lower(), candidate.lower()
+    if not candidate or len(candidate) >= len(word):
+        return False
+    if word.endswith(candidate):
+        cut = len(word) - len(candidate)
+    elif word.startswith(candidate):
+        cut = len(candidate)
+    else:
+        return False
+    return not word[cut - 1].isalnum() or not word[cut].isalnum()
 
 
 def _edits(a: str, b: str) -> int:
@@ -25,4 +41,4 @@ def _edits(a: str, b: str) -> int:
     return current[len(b)]
 
 
-__all__ = ["typo_of"]
+__all__ = ["cut_from", "typo_of"]

@@ -1,23 +1,31 @@
-"""The "did you mean" hints: the names closest to a misspelt one, as :mod:`difflib` ranks them."""
+"""The "did you mean" hints: the names closest to a misspelt one, as :mod:`difflib` ranks them,
+less those that are the misspelt name with a whole prefix or suffix cut off (another name)."""
 
 from __future__ import annotations
 
 import heapq
 from collections.abc import Iterable
 
+from ..read.names import cut_from
+
 
 def close_matches(word: str, candidates: Iterable[str], n: int = 1, cutoff: float = 0.6) -> list[str]:
-    """``difflib.get_close_matches(word, candidates, n, cutoff)``: the same list, found
-    sooner among many names. difflib scores every candidate that its two cheap
+    """``difflib.get_close_matches(word, candidates, n, cutoff)`` over the candidates
+    that are not ``word`` cut short (below): the same list, found sooner among many names. difflib scores every candidate that its two cheap
     upper bounds let through; here candidates are scored in the order of the
     tighter bound, and the scoring stops when that bound falls below the n-th best
-    score (a robot's names share most of their letters, so many pass the bounds)."""
+    score (a robot's names share most of their letters, so many pass the bounds).
+    A candidate that is ``word`` with a whole prefix or suffix cut off is never
+    offered: for ``robotiq_85_base_link``, ``base_link`` is the robot's base, not the
+    gripper's link misspelt."""
     from difflib import SequenceMatcher  # only when a name is misspelt
 
     matcher = SequenceMatcher()
     matcher.set_seq2(word)
     bounded = []
     for candidate in candidates:
+        if cut_from(word, candidate):
+            continue
         matcher.set_seq1(candidate)
         if matcher.real_quick_ratio() >= cutoff:
             bound = matcher.quick_ratio()
