@@ -117,8 +117,25 @@ def test_urdf_option_names_the_urdf_and_a_mismatch_is_said(built):
     assert done.returncode == 1 and codes[0] == "K008" and set(codes[1:]) == {"K001", "K002"}
     first = document["files"][0]["diagnostics"][0]
     assert first["severity"] == "warning" and first["message"] == (
-        "the SRDF is for robot 'panda', but src/pr2_common/pr2_description/robots/pr2.urdf.xacro describes robot 'pr2'"
+        "the SRDF is for robot 'panda', but src/pr2_common/pr2_description/robots/pr2.urdf.xacro describes robot 'pr2': checked against it"
     )
+    assert first["hint"] == ("if the SRDF is for robot 'pr2', write <robot name=\"pr2\"> in the SRDF (MoveIt's SRDF reader logs an error "
+                             "when the names differ); else give --urdf the URDF of robot 'panda'")
+
+
+def test_urdf_option_naming_the_robot_otherwise_says_the_srdf_was_checked_against_it(workspace):
+    """Interbotix names every arm's URDF robot 'interbotix_arm' and its SRDF 'wx250s': given
+    with --urdf, the URDF the SRDF's names all fit is the one; the way out is the name in the
+    SRDF (srdfdom's Model::initXml logs an error when the names differ), not --urdf again."""
+    urdf = workspace / "src/franka_ros/franka_description/robots/panda/panda.urdf"
+    edit(urdf, '<robot name="panda"', '<robot name="franka_arm"')
+    done, document = check("--urdf", str(urdf.relative_to(workspace)), f"{PANDA}/panda.srdf", cwd=workspace)
+    [diagnostic] = document["files"][0]["diagnostics"]
+    assert (diagnostic["code"], diagnostic["severity"]) == ("K008", "warning") and done.returncode == 0
+    assert diagnostic["message"] == (
+        "the SRDF is for robot 'panda', but src/franka_ros/franka_description/robots/panda/panda.urdf describes robot 'franka_arm': checked against it"
+    )
+    assert diagnostic["hint"] == "write <robot name=\"franka_arm\"> in the SRDF: MoveIt's SRDF reader logs an error when the names differ"
 
 
 def test_an_srdf_without_urdf_is_one_note_and_no_error(tmp_path):

@@ -119,7 +119,9 @@ def described(
             return _without(loaded, f"the URDF given with --urdf cannot be read: {why}")
         loaded.described = found
         if found.robot.name != name:
-            return _without(loaded, f"the SRDF is for robot '{name}', but {urdf} describes robot '{found.robot.name}'", Severity.WARNING, "give --urdf the URDF of this robot")
+            # the user named this URDF: its robot's, unless the SRDF's names do not fit it (then K001/K002 say which)
+            other = None if _unknown(semantic, found) == 0 else f"give --urdf the URDF of robot '{name}'"
+            return _named_otherwise(loaded, urdf, found, other)
         return None
     if name is None or document.file is None:
         return None
@@ -149,8 +151,7 @@ def described(
         _, _, path, found = min(fits, key=lambda fit: fit[:2])
         loaded.described = found
         if found.robot.name != name:
-            return _without(loaded, f"the SRDF is for robot '{name}', but {path}, named as it is, describes robot '{found.robot.name}': checked against it",
-                            Severity.WARNING, f"write <robot name=\"{found.robot.name}\"> in the SRDF: MoveIt's SRDF reader logs an error when the names differ")
+            return _named_otherwise(loaded, f"{path}, named as it is,", found)
         return None
     if failures:
         return _without(loaded, f"the URDF of robot '{name}' could not be read ({'; '.join(failures)}): the SRDF's names are not checked",
@@ -173,6 +174,17 @@ def _why(found: Loaded) -> str:
     if error is not None:
         return error.message
     return "it describes another robot" if found.modelled else "it holds no robot"
+
+
+def _named_otherwise(loaded: Loaded, urdf: str, found: Loaded, other: str | None = None) -> Diagnostic:
+    """K008 for the URDF the SRDF was checked against, whose robot has another name: a warning,
+    since srdfdom's Model::initXml logs an error when the names differ (and loads the SRDF all the same).
+    ``other``: the way out when the SRDF may be another robot's."""
+    name, urdf_name = loaded.semantic.name, found.robot.name
+    write = f"write <robot name=\"{urdf_name}\"> in the SRDF"
+    hint = (f"{write}: MoveIt's SRDF reader logs an error when the names differ" if other is None
+            else f"if the SRDF is for robot '{urdf_name}', {write} (MoveIt's SRDF reader logs an error when the names differ); else {other}")
+    return _without(loaded, f"the SRDF is for robot '{name}', but {urdf} describes robot '{urdf_name}': checked against it", Severity.WARNING, hint)
 
 
 def _without(loaded: Loaded, message: str, severity: Severity | None = None, hint: str | None = None) -> Diagnostic:

@@ -360,16 +360,17 @@ K008 = declare(
         """
         Says that an SRDF could not be checked against a URDF: no URDF or xacro
         file of its package or workspace describes a robot of its name, or the
-        one found cannot be read or expanded (it needs xacro arguments), or the
-        robot named with `--urdf` has another name. The URDF beside the SRDF
-        named as it is (`go2.urdf` for `go2.srdf`, in its robot's folder) may be
-        its robot's whatever name it gives: when it is the one whose links and
-        joints the SRDF names, it is checked against that one, and a warning
-        says the robot names differ.
+        one found cannot be read or expanded (it needs xacro arguments). A
+        warning says when the URDF it was checked against names its robot
+        otherwise: the URDF given with `--urdf`, or the URDF beside the SRDF
+        named as it is (`go2.urdf` for `go2.srdf`, in its robot's folder), which
+        may be its robot's whatever name it gives, and is taken when it is the
+        one whose links and joints the SRDF names.
         """,
         """
-        The SRDF's names are not checked at all. MoveIt pairs the SRDF with the
-        `robot_description` of the same robot; a name mismatch is an error there.
+        Without a URDF the SRDF's names are not checked at all. MoveIt pairs the
+        SRDF with the `robot_description` of the same robot, and its SRDF reader
+        (srdfdom) logs an error when the two robot names differ.
         """,
         '<robot name="no_such_robot">\n  <group name="arm"><chain base_link="base_link" tip_link="tool0"/></group>\n</robot>',
         '<robot name="example">\n  <group name="arm"><chain base_link="base_link" tip_link="tool0"/></group>\n</robot>',
