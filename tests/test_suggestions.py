@@ -38,5 +38,15 @@ def test_a_name_cut_short_is_not_offered_and_a_typo_is(suggest):
     for cut_short in ("robotiq_85_base_link", "base_link_2", "wrist_1_link_inertia"):
         assert suggest(cut_short, links) in ([], [None]), cut_short
     typos = {"link_9": "link9", "tool_0": "tool0", "shoulder_lnk": "shoulder_link", "wrist_1_lnk": "wrist_1_link"}
+
     for typo, meant in typos.items():
         assert suggest(typo, links) == [meant], typo
+
+
+def test_a_prefix_written_twice_is_offered_the_name_once():
+    """A macro that adds its prefix to a name already prefixed (PR2's gazebo reference
+    'double_stereo_double_stereo_link'): the name with the prefix once is what was meant,
+    though it is the word with a part cut off."""
+    links = ["double_stereo_link", "double_stereo_frame_joint", "base_link"]
+    assert close_matches("double_stereo_double_stereo_link", links) == ["double_stereo_link"]
+    assert close_matches("base_link_link", links) == ["base_link"]

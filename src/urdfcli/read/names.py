@@ -15,17 +15,21 @@ def typo_of(word: str, candidates: Iterable[str]) -> str | None:
 def cut_from(word: str, candidate: str) -> bool:
     """Whether ``candidate`` is ``word`` with a whole prefix or suffix cut off, at a
     separator (``base_link`` of ``robotiq_85_base_link``, ``arm`` of ``arm_2``), case
-    aside: another name, which a "did you mean" hint must not offer for a typo."""
+    aside: another name, which a "did you mean" hint must not offer for a typo. A cut
+    part that the candidate repeats is a prefix written twice, a mistake the hint is
+    for (``double_stereo_link`` of ``double_stereo_double_stereo_link``)."""
     word, candidate = word.lower(), candidate.lower()
     if not candidate or len(candidate) >= len(word):
         return False
     if word.endswith(candidate):
         cut = len(word) - len(candidate)
+        doubled = candidate.startswith(word[:cut])
     elif word.startswith(candidate):
         cut = len(candidate)
+        doubled = candidate.endswith(word[cut:])
     else:
         return False
-    return not word[cut - 1].isalnum() or not word[cut].isalnum()
+    return (not word[cut - 1].isalnum() or not word[cut].isalnum()) and not doubled
 
 
 def _edits(a: str, b: str) -> int:
