@@ -168,6 +168,32 @@ def make_colcon_workspace(root: Path) -> tuple[Path, Path]:
     return repo_a, repo_b
 
 
+def install_package(workspace: Path, package: Path, name: str, folders: dict[str, str], symlink: bool = True) -> Path:
+    """What ``colcon build`` installs of the ament_cmake package ``package`` into
+    ``workspace/install/NAME`` (one prefix per package, colcon's default): each of
+    ``folders``, a folder of its sources -> a folder of ``share/NAME`` (CMake's
+    ``install(DIRECTORY description/urdf DESTINATION share/${PROJECT_NAME})``), each file
+    linked to its source (``--symlink-install``) or copied; its package.xml; its name in
+    the ament index. Returns the share folder."""
+    import shutil
+
+    prefix = workspace / "install" / name
+    share = prefix / "share" / name
+    files = [(package / "package.xml", share / "package.xml")]
+    for source, destination in folders.items():
+        files += [(file, share / destination / file.relative_to(package / source)) for file in sorted((package / source).rglob("*")) if file.is_file()]
+    for file, installed in files:
+        installed.parent.mkdir(parents=True, exist_ok=True)
+        if symlink:
+            installed.symlink_to(file)
+        else:
+            shutil.copyfile(file, installed)
+    registered = prefix / "share" / "ament_index" / "resource_index" / "packages" / name
+    registered.parent.mkdir(parents=True, exist_ok=True)
+    registered.write_text("")
+    return share
+
+
 def edit(path: Path, old: str, new: str) -> None:
     text = path.read_text()
     assert old in text, f"{old!r} not in {path}"

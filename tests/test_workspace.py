@@ -4,12 +4,13 @@ models a library is checked through, and $(find) across a colcon workspace."""
 from __future__ import annotations
 
 import json
+import shutil
 import textwrap
 from pathlib import Path
 
 import pytest
 from conftest import run_cli
-from ros_workspace import WHEEL, XACRO, edit, line_of, make_colcon_workspace, make_repository, package_xml
+from ros_workspace import INERTIA, WHEEL, XACRO, edit, install_package, line_of, make_colcon_workspace, make_repository, package_xml
 
 from urdfcli.project.workspace import Index, resolve_include, workspace_file
 from urdfcli.read.files import SourceFiles
@@ -245,6 +246,76 @@ def test_a_colcon_workspace_resolves_packages_across_repositories(tmp_path):
     # and a library of repo_b is checked through the model in repo_a
     done, report = check_json(str(repo_b / "wheels/urdf/wheel.xacro"), cwd=tmp_path)
     assert done.returncode == 0 and report["files"][0]["checked_through"] == [str(model.relative_to(tmp_path))]
+
+
+# A caster macro kept in description/urdf, which the package installs to share/acme_wheels/urdf
+# (as ros2_control_demos installs description/ros2_control): its joint's yaw is in degrees (V009).
+CASTER = f"""\
+    <robot {XACRO}>
+      <xacro:macro name="caster" params="parent">
+        <link name="caster_link">
+          <visual><geometry><sphere radius="0.05"/></geometry></visual>
+          <collision><geometry><sphere radius="0.05"/></geometry></collision>
+          <inertial><mass value="0.2"/><inertia ixx="0.0002" ixy="0" ixz="0" iyy="0.0002" iyz="0" izz="0.0002"/></inertial>
+        </link>
+        <joint name="caster_joint" type="fixed">
+          <parent link="${{parent}}"/>
+          <child link="caster_link"/>
+          <origin xyz="0.2 0 -0.05" rpy="0 0 90"/>
+        </joint>
+      </xacro:macro>
+    </robot>
+    """
+
+WHEELED = f"""\
+    <robot name="r" {XACRO}>
+      <xacro:include filename="$(find acme_wheels)/urdf/wheel.xacro"/>
+      <xacro:include filename="$(find acme_wheels)/urdf/caster.xacro"/>
+      <link name="base_link"/>
+      <xacro:wheel prefix="left" parent="base_link" radius="0.1"><origin xyz="0 0 0"/></xacro:wheel>
+      <xacro:caster parent="base_link"/>
+    </robot>
+    """
+
+
+@pytest.mark.parametrize("symlink", [True, False], ids=["symlink-install", "copies"])
+def test_a_built_workspace_reports_and_fixes_its_packages_at_their_sources_not_their_install_copies(tmp_path, symlink):
+    """After `colcon build [--symlink-install]`, $(find acme_wheels) is the install space's
+    share folder, as ROS gives it (caster.xacro is only there at urdf/); what is wrong in
+    the files read there is said, and fixed, in the sources the user edits."""
+    repo_a, repo_b = make_colcon_workspace(tmp_path)
+    wheels = repo_b / "wheels"
+    write(wheels / "description" / "urdf" / "caster.xacro", CASTER)
+    edit(wheels / "urdf" / "wheel.xacro", '<axis xyz="0 0 1"/>', '<axis xyz="0 0 2"/>')
+    install_package(tmp_path / "ws", wheels, "acme_wheels", {"urdf": "urdf", "description/urdf": "urdf"}, symlink=symlink)
+    model = write(repo_a / "robot" / "urdf" / "robot.urdf.xacro", WHEELED)
+    done = run_cli("lint", "--format", "json", str(model), cwd=tmp_path / "ws")
+    found = {(d["code"], d["path"]) for f in json.loads(done.stdout)["files"] for d in f["diagnostics"]}
+    assert {("J011", "src/repo_b/wheels/urdf/wheel.xacro"), ("V009", "src/repo_b/wheels/description/urdf/caster.xacro")} <= found, found
+    assert not [path for _, path in found if path.startswith("install")], found
+    diff = run_cli("lint", "--fix", "--diff", "--unsafe-fixes", "--select", "V009", str(model), cwd=tmp_path / "ws").stdout.decode()
+    assert "--- a/src/repo_b/wheels/description/urdf/caster.xacro\n+++ b/src/repo_b/wheels/description/urdf/caster.xacro\n" in diff, diff
+    assert "install/" not in diff
+
+
+def test_a_package_only_installed_in_the_workspace_is_found_there(tmp_path):
+    """A package the workspace's install space holds and its src/ does not (built from
+    elsewhere): read from the install space, and no source is made up for it."""
+    repo_a, repo_b = make_colcon_workspace(tmp_path)
+    shutil.rmtree(repo_b / "wheels")
+    elsewhere = tmp_path / "elsewhere" / "acme_wheels"
+    write(elsewhere / "package.xml", package_xml("acme_wheels"))
+    write(elsewhere / "urdf" / "wheel.xacro", WHEEL.replace("$(find acme_common)/urdf/inertia.xacro", "inertia.xacro"))
+    write(elsewhere / "urdf" / "inertia.xacro", INERTIA)
+    write(elsewhere / "urdf" / "caster.xacro", CASTER)
+    install_package(tmp_path / "ws", elsewhere, "acme_wheels", {"urdf": "urdf"}, symlink=False)
+    model = write(repo_a / "robot" / "urdf" / "robot.urdf.xacro", WHEELED)
+    resolver = PackageResolver((), model)
+    share = tmp_path / "ws" / "install" / "acme_wheels" / "share" / "acme_wheels"
+    assert resolver.find("acme_wheels") == share
+    assert resolver.source_of(str(share / "urdf" / "caster.xacro")) == str(share / "urdf" / "caster.xacro")
+    done = run_cli("check", str(model), cwd=tmp_path / "ws")
+    assert done.returncode == 0, done.stderr.decode()
 
 
 @pytest.mark.parametrize("output_format", ["text", "concise", "json", "sarif", "github", "check_urdf"])

@@ -487,7 +487,7 @@ class Navigator:
         found = self.outline(file)
         if found is None:
             return None
-        include = resolve_include(value, found.declared, resolver.find)
+        include = resolve_include(value, found.declared, resolver.find, source_of=resolver.source_of)
         return Path(include.value) if include.kind == "path" else None
 
 

@@ -23,7 +23,7 @@ from typing import TYPE_CHECKING, NamedTuple
 from ..diagnostics import Diagnostic, Edit, Fix, Location, Severity
 from ..model.load import Loaded, load
 from ..read.document import InputError
-from ..read.packages import PackageError
+from ..read.packages import PackageError, common_tail
 from ..rules.base import joined
 from ..rules.drift import X110
 from .config import Config
@@ -84,16 +84,7 @@ def _header_file(
         return None
     name = written.name
     found = [file for file in files_below(package) if file.name == name and file != real_path(urdf)]
-    return max(found, key=lambda file: _common_tail(file.parts, written.parts), default=None)
-
-
-def _common_tail(a: tuple[str, ...], b: tuple[str, ...]) -> int:
-    count = 0
-    for x, y in zip(reversed(a), reversed(b)):
-        if x != y:
-            break
-        count += 1
-    return count
+    return max(found, key=lambda file: common_tail(file.parts, written.parts), default=None)
 
 
 def generated_from(urdf: Path, session: Session) -> GeneratedFrom | None:

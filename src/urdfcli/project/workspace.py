@@ -43,7 +43,7 @@ from typing import NamedTuple
 from ..diagnostics import Diagnostic, Location, Severity
 from ..model.sources import XacroSources
 from ..read.document import STDIN, Document
-from ..read.packages import MAX_SCAN_DIRS, SKIP_DIRS, PackageIndex, PackageResolver, entry_is, marked_ignored
+from ..read.packages import PackageIndex, PackageResolver, files_below
 from ..read.files import SourceFile, SourceFiles
 from ..read.xacro_scan import XacroFile, XacroGlobals, shown
 from ..rules import structure
@@ -142,9 +142,10 @@ _COMPUTED = re.compile(r"\$\{[^}]*\}|\$\([^)]*\)")
 
 def resolve_include(
     text: str, source: WorkspaceFile, find: Callable[[str], Path | None], arguments: dict[str, str] | None = None,
-    properties: dict[str, str] | None = None,
+    properties: dict[str, str] | None = None, source_of: Callable[[str], str] = str,
 ) -> Include:
-    """Where ``<xacro:include filename=text>`` in ``source`` leads, statically."""
+    """Where ``<xacro:include filename=text>`` in ``source`` leads, statically; ``source_of``
+    gives a file of the workspace's install space as its source (the resolver's)."""
     written = text
     text = substitute(text, source, find, arguments, properties)
     folder, _, name = text.replace("\\", "/").rpartition("/")
@@ -159,6 +160,7 @@ def resolve_include(
     path = Path(os.path.normpath(base / name))
     if any(c in name for c in "*?["):
         return Include("glob", str(path))
+    path = Path(source_of(str(path)))
     try:
         return Include("path", str(path.resolve()))
     except OSError:
@@ -204,27 +206,7 @@ def _workspace_src(src: Path) -> bool:
 
 def source_files(root: Path, recursive: bool = True) -> Iterable[Path]:
     """``*.xacro`` and ``*.urdf`` files below a folder, skipping hidden, build and ignored folders."""
-    budget = MAX_SCAN_DIRS
-    stack = [root]
-    while stack and budget > 0:
-        folder = stack.pop()
-        budget -= 1
-        try:
-            with os.scandir(folder) as listing:  # (the entries know their type: no stat for each mesh file)
-                entries = sorted(listing, key=lambda entry: entry.name)
-        except OSError:
-            continue
-        if folder != root and marked_ignored(entries):
-            continue
-        for entry in entries:
-            name = entry.name
-            if name.startswith("."):
-                continue
-            if name.endswith(XACRO_SUFFIXES):
-                if entry_is(entry.is_file):
-                    yield folder / name
-            elif recursive and name not in SKIP_DIRS and entry_is(entry.is_dir):
-                stack.append(folder / name)
+    return files_below(root, lambda name: name.endswith(XACRO_SUFFIXES), recursive)
 
 
 class Index:
@@ -275,14 +257,18 @@ class Index:
         return known[1]
 
     def finder(self, file: Path) -> Callable[[str], Path | None]:
-        """The package look-up the expansion of ``file`` would make (shared per package)."""
+        """The package look-up the expansion of ``file`` would make."""
+        return self.resolver(file).find
+
+    def resolver(self, file: Path) -> PackageResolver:
+        """The package resolver the expansion of ``file`` would use (shared per package)."""
         package = self.packages.enclosing_package(file.parent)
         if package not in self._resolvers:
             try:
                 self._resolvers[package] = self.packages.resolver(self._package_paths, file)
             except ValueError:  # a bad -P is reported when the model loads
                 self._resolvers[package] = self.packages.resolver((), file)
-        return self._resolvers[package].find
+        return self._resolvers[package]
 
     def source(self, file: Path) -> WorkspaceFile:
         """What reading ``file`` tells (read again when the file changes)."""
@@ -334,8 +320,8 @@ class Index:
         source = self.source(file)
         known = self._edges.get(key)
         if known is None or known[0] != source:
-            find = self.finder(file)
-            known = self._edges[key] = (source, [resolve_include(text, source, find, arguments, properties) for text in source.includes])
+            resolver = self.resolver(file)
+            known = self._edges[key] = (source, [resolve_include(text, source, resolver.find, arguments, properties, resolver.source_of) for text in source.includes])
         return known[1]
 
     def includers(self, files: list[Path]) -> dict[Path, list[tuple[Path, Include, str]]]:

@@ -21,7 +21,6 @@ import xml.dom.minicompat
 import xml.dom.minidom
 import xml.parsers.expat
 from array import array
-from collections.abc import Callable
 from pathlib import Path
 from typing import TYPE_CHECKING
 
@@ -118,8 +117,8 @@ class _Session:
     TRACKED = ("eval_all", "grab_property", "grab_macro", "process_include")
     TOUCHED = ("check_attrs", "reqd_attrs")
 
-    def __init__(self, find_package: Callable[[str], Path | None], given: dict[str, bytes]):
-        self.find_package = find_package
+    def __init__(self, resolver: PackageResolver, given: dict[str, bytes]):
+        self.resolver = resolver
         self.given = given  # texts that stand for files (absolute path -> bytes)
         self.stack: list[object] = []
         self.touched: object | None = None
@@ -263,6 +262,7 @@ class _Session:
             chain = " -> ".join(display_path(f) for f in [*xacro.filestack[:-1], filename] if f)
             xacro.filestack.pop()
             raise xacro.XacroException(f"include cycle: {chain}")
+        path = self.resolver.source_of(path)  # a file of the workspace's install space: its source, which the user edits
         try:
             data = self.given.get(os.path.abspath(path)) or Path(path).read_bytes()
         except OSError as error:
@@ -285,7 +285,7 @@ class _Session:
             ) from None
 
     def find(self, package: str) -> str:
-        folder = self.find_package(package)
+        folder = self.resolver.find(package)
         if folder is None:
             raise PackageNotFound(package)
         return str(folder)
@@ -381,6 +381,11 @@ def _package_uri_hint(filename: str) -> str | None:
     return f"xacro reads no package:// URI in <xacro:include>: write $(find {package})/{rest}"
 
 
+def _included(resolver: PackageResolver) -> tuple[str, ...]:
+    """The files xacro included, each once; a file of the workspace's install space as its source."""
+    return tuple(dict.fromkeys(resolver.source_of(file) for file in xacro.all_includes))
+
+
 def _short(error: BaseException) -> str:
     inner = getattr(error, "exc", None)
     if isinstance(inner, OSError) and error.args:
@@ -451,13 +456,13 @@ def expand_here(data: bytes, file: str | None, mappings: dict[str, str], resolve
         doc = tagged_dom(data, shown)
     except XmlError as error:
         raise ExpansionError(error.message, Origin(shown, error.line, error.column), shown, code=error.code) from None
-    session = _Session(resolver.find, given)
+    session = _Session(resolver, given)
     with session, contextlib.redirect_stderr(_Stderr(session)):
         xacro.init_stacks(file)
         try:
             xacro.process_doc(doc, mappings=dict(mappings))
         except ExpansionError as error:
-            error.includes = tuple(dict.fromkeys(xacro.all_includes))
+            error.includes = _included(resolver)
             raise
         except RecursionError as error:
             names = [m.body.getAttribute("name") for m in (xacro.macrostack or [])[-3:]]
@@ -474,13 +479,14 @@ def expand_here(data: bytes, file: str | None, mappings: dict[str, str], resolve
                 message += f" {resolver.where()}"
             origin = _where_raised(error)
             current_file = xacro.filestack[-1] if xacro.filestack else file
+            current_file = resolver.source_of(current_file) if current_file else current_file
             missing, hint = _missing_argument(message) if code == "X003" else (None, None)
             raise ExpansionError(
                 message, origin, display_path(current_file) if current_file else shown, code,
-                tuple(dict.fromkeys(xacro.all_includes)), missing, hint or getattr(error, "urdfcli_hint", None),
+                _included(resolver), missing, hint or getattr(error, "urdfcli_hint", None),
             ) from None
         finally:
-            includes = list(dict.fromkeys(xacro.all_includes))
+            includes = list(_included(resolver))
         if file is not None:
             banner = [
                 " %s " % ("=" * 83),

@@ -6,7 +6,8 @@ did not have the package:
 1. ``-P/--package-path`` options: ``NAME=DIR``, or a directory scanned for
    ``package.xml`` files;
 2. ``ROS_PACKAGE_PATH`` (directories scanned);
-3. ``AMENT_PREFIX_PATH`` (``PREFIX/share/NAME``);
+3. ``AMENT_PREFIX_PATH`` (``PREFIX/share/NAME``), then the ``install/`` space of the
+   colcon workspace the input is in;
 4. the package holding the input file;
 5. its siblings in the repository (the nearest folder above it holding
    ``.git``), or in the workspace ``src/`` folder when that comes first;
@@ -17,6 +18,12 @@ did not have the package:
    revision, where the workspace around the repository finds packages now.
 
 A package's name is the ``<name>`` in its ``package.xml``, never its folder name.
+
+A package the workspace builds is found in its ``install/`` space first, as ROS finds
+it: a package may install its files to other folders than its sources
+(``description/urdf`` to ``share/NAME/urdf``). But a file read there is read, reported
+on and fixed at its source in the workspace's ``src/`` (:meth:`PackageResolver.source_of`):
+the file a ``--symlink-install`` links to, or that a plain build copied.
 """
 
 from __future__ import annotations
@@ -231,6 +238,51 @@ def entry_is(test: Callable[[], bool]) -> bool:
         return False
 
 
+def files_below(root: Path, wanted: Callable[[str], bool], recursive: bool = True) -> Iterator[Path]:
+    """The files below a folder whose name is ``wanted``, skipping hidden, build and ignored folders."""
+    budget = MAX_SCAN_DIRS
+    stack = [root]
+    while stack and budget > 0:
+        folder = stack.pop()
+        budget -= 1
+        try:
+            with os.scandir(folder) as listing:  # (the entries know their type: no stat for each mesh file)
+                entries = sorted(listing, key=lambda entry: entry.name)
+        except OSError:
+            continue
+        if folder != root and marked_ignored(entries):
+            continue
+        for entry in entries:
+            name = entry.name
+            if name.startswith("."):
+                continue
+            if wanted(name):
+                if entry_is(entry.is_file):
+                    yield folder / name
+            elif recursive and name not in SKIP_DIRS and entry_is(entry.is_dir):
+                stack.append(folder / name)
+
+
+def common_tail(a: tuple[str, ...], b: tuple[str, ...]) -> int:
+    """How many parts two paths end with in common."""
+    count = 0
+    for x, y in zip(reversed(a), reversed(b)):
+        if x != y:
+            break
+        count += 1
+    return count
+
+
+def closest_file(package: Path, written: tuple[str, ...]) -> Path | None:
+    """The file of ``package`` named as the path ``written`` ends whose path ends the most
+    like it, when no other ends as much like it; else None."""
+    found = list(files_below(package, lambda name: name == written[-1]))
+    ranked = sorted(found, key=lambda file: common_tail(file.parts, written), reverse=True)
+    if not ranked or (len(ranked) > 1 and common_tail(ranked[0].parts, written) == common_tail(ranked[1].parts, written)):
+        return None
+    return ranked[0]
+
+
 def _local_roots(package_dir: Path) -> list[Path]:
     roots: list[Path] = []
     for folder in package_dir.parents:
@@ -276,6 +328,7 @@ class PackageResolver:
         self._found: dict[str, Path] = {}
         self._scanned: set[Path] = set()
         self._answers: dict[str, Path | None] = {}  # every look-up, found or not
+        self._sources: dict[str, str] = {}  # each installed file asked for -> its source (a copy's is searched for)
 
     def settings(self) -> tuple:
         """Where it looks, as given: two resolvers of equal settings find the same packages."""
@@ -292,14 +345,60 @@ class PackageResolver:
         return self.index.local_roots(self._own) if self._own else []
 
     @cached_property
+    def _workspace_source(self) -> Path | None:
+        """The ``src/`` folder of the colcon workspace the input is in, or None."""
+        return next((root for root in self._local_roots if root.name == "src"), None)
+
+    @cached_property
     def _workspace_prefixes(self) -> list[Path]:
         """The install space of the colcon workspace the input is in (merged, or one
         prefix per package): what ``source install/setup.bash`` would add."""
-        source = next((root for root in self._local_roots if root.name == "src"), None)
+        source = self._workspace_source
         install = source.parent / "install" if source is not None else None
         if install is None or not install.is_dir():
             return []
         return [install, *sorted(p for p in install.iterdir() if (p / "share").is_dir())]
+
+    def source_of(self, path: str) -> str:
+        """The file of the workspace's ``src/`` that ``path``, a file of its ``install/``
+        space, was installed from: the file the user edits, where diagnostics and fixes
+        belong. ``colcon build --symlink-install`` links each installed file to its
+        source; a plain build copies it to ``share/NAME/`` and its path below one of the
+        package's folders (``install(DIRECTORY description/urdf DESTINATION
+        share/${PROJECT_NAME})``): the source is the package's file of that name whose
+        path ends most like it. Any other path, or a copy of no such file, is given back."""
+        source = self._workspace_source
+        if source is None:
+            return path
+        absolute = Path(os.path.abspath(path))
+        try:
+            below = absolute.relative_to(source.parent / "install").parts
+        except ValueError:
+            return path
+        if not absolute.is_file():  # xacro cannot read it: nor is it read elsewhere (not kept: a build may make it)
+            return path
+        if path not in self._sources:
+            self._sources[path] = self._installed_from(absolute, below, source) or path
+        return self._sources[path]
+
+    def _installed_from(self, absolute: Path, below: tuple[str, ...], source: Path) -> str | None:
+        """The source of the installed file ``absolute`` (``below`` the install space), or None."""
+        real, real_source = self.index.real_path(absolute), self.index.real_path(source)
+        if real.is_relative_to(real_source):  # a symlink install: the link says where
+            return str(source / real.relative_to(real_source))
+        share = next((at for at in (0, 1) if below[at:at + 1] == ("share",)), None)  # merged, or one prefix per package
+        if share is None or len(below) < share + 3:
+            return None
+        package = self._source_package(below[share + 1])
+        copied = closest_file(package, below[share + 2:]) if package is not None else None
+        return str(copied) if copied is not None else None
+
+    def _source_package(self, name: str) -> Path | None:
+        """The folder in the workspace's ``src/`` of the package installed as ``name``: by its
+        package.xml, else by the CMake project name it is installed under."""
+        packages = self.index.scan(self._workspace_source)
+        found = next((folder for package, folder in packages if package == name), None)
+        return found if found is not None else next((folder for _, folder in packages if cmake_project(folder) == name), None)
 
     def where(self) -> str:
         """Where packages were looked for, as ``(looked in ...)`` for error messages."""
