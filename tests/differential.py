@@ -38,10 +38,10 @@ def check_urdf(path: Path, timeout: float = 10) -> ToolRun:
     return ToolRun(done.returncode, done.stdout, done.stderr)
 
 
-def real_xacro(path: Path, *args: str, cwd: Path | None = None) -> subprocess.CompletedProcess:
-    """The xacro CLI from PyPI, with $(find) answered from PACKAGES."""
+def real_xacro(path: Path, *args: str, cwd: Path | None = None, packages: dict[str, str] = PACKAGES) -> subprocess.CompletedProcess:
+    """The xacro CLI from PyPI, with $(find) answered from ``packages`` (name -> folder)."""
     tool = require_tool("xacro")
-    env = {**os.environ, "PYTHONPATH": str(SUPPORT), "URDFCLI_TEST_PACKAGES": json.dumps(PACKAGES)}
+    env = {**os.environ, "PYTHONPATH": str(SUPPORT), "URDFCLI_TEST_PACKAGES": json.dumps(packages)}
     return subprocess.run([tool, str(path), *args], capture_output=True, text=True, env=env, cwd=cwd, timeout=60)
 
 

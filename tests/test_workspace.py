@@ -298,6 +298,33 @@ def test_a_built_workspace_reports_and_fixes_its_packages_at_their_sources_not_t
     assert "install/" not in diff
 
 
+def test_an_include_of_a_layout_only_the_build_makes_says_where_the_sources_have_it(tmp_path):
+    """A fresh clone, not built: $(find acme_wheels)/urdf/caster.xacro is not in the sources,
+    which keep it in description/urdf. xacro fails the same way; the hint says where the
+    file is and how to check against the installed layout."""
+    from differential import real_xacro
+
+    repo_a, repo_b = make_colcon_workspace(tmp_path)
+    wheels = repo_b / "wheels"
+    write(wheels / "description" / "urdf" / "caster.xacro", CASTER)
+    model = write(repo_a / "robot" / "urdf" / "robot.urdf.xacro", WHEELED)
+    assert real_xacro(model, packages={"acme_wheels": str(wheels)}).returncode != 0
+    done, report = check_json(str(model), cwd=tmp_path / "ws")
+    [error] = report["files"][0]["diagnostics"]
+    assert (error["code"], error["message"]) == ("X003", "cannot include src/repo_b/wheels/urdf/caster.xacro: No such file or directory")
+    assert error["hint"] == (
+        "package 'acme_wheels' installs its files to other folders than its sources, which have it at "
+        "src/repo_b/wheels/description/urdf/caster.xacro: build the workspace (colcon build) and check again, "
+        "or give its installed share folder with -P acme_wheels=DIR"
+    )
+    share = install_package(tmp_path / "built", wheels, "acme_wheels", {"urdf": "urdf", "description/urdf": "urdf"})  # another workspace's build
+    assert run_cli("check", "-P", f"acme_wheels={share}", str(model), cwd=tmp_path / "ws").returncode == 0
+    # an include whose file the package holds nowhere: no hint
+    edit(model, "urdf/caster.xacro", "urdf/castor.xacro")
+    done, report = check_json(str(model), cwd=tmp_path / "ws")
+    assert [(d["code"], d.get("hint")) for d in report["files"][0]["diagnostics"]] == [("X003", None)]
+
+
 def test_a_package_only_installed_in_the_workspace_is_found_there(tmp_path):
     """A package the workspace's install space holds and its src/ does not (built from
     elsewhere): read from the install space, and no source is made up for it."""

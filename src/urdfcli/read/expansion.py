@@ -31,6 +31,7 @@ from ..diagnostics import Call
 from . import guard
 from .expanded import Expansion, ExpansionError, Origin, Origins, PackageNotFound, display_path
 from .names import typo_of
+from .packages import closest_file
 from .positions import Text, decode
 from .xml import XmlError, parse
 
@@ -119,6 +120,7 @@ class _Session:
 
     def __init__(self, resolver: PackageResolver, given: dict[str, bytes]):
         self.resolver = resolver
+        self.found: dict[str, Path] = {}  # each package $(find) gave: its folder
         self.given = given  # texts that stand for files (absolute path -> bytes)
         self.stack: list[object] = []
         self.touched: object | None = None
@@ -267,7 +269,7 @@ class _Session:
             data = self.given.get(os.path.abspath(path)) or Path(path).read_bytes()
         except OSError as error:
             failure = xacro.XacroException(f"cannot include {display_path(path)}: {error.strerror}", exc=error)
-            failure.urdfcli_hint = _package_uri_hint(filename)
+            failure.urdfcli_hint = _package_uri_hint(filename) or self.installed_elsewhere(path)
             xacro.filestack.pop()
             raise failure from None
         if not data.lstrip(b"\xef\xbb\xbf \t\r\n").startswith(b"<"):  # never show a line of a non-XML file
@@ -288,7 +290,25 @@ class _Session:
         folder = self.resolver.find(package)
         if folder is None:
             raise PackageNotFound(package)
+        self.found[package] = folder
         return str(folder)
+
+    def installed_elsewhere(self, path: str) -> str | None:
+        """For ``$(find NAME)/x/file`` that the sources of NAME, in the input's repository or
+        workspace, lack: where they have that file, and how to check against the folders
+        the package installs it to (ros2_control_demos installs ``description/ros2_control``
+        to ``share/NAME/ros2_control``); None when they have no file of that name."""
+        absolute = Path(os.path.abspath(path))
+        for name, folder in self.found.items():
+            if absolute.is_relative_to(folder) and self.resolver.workspace_of(folder) is not None:
+                found = closest_file(folder, absolute.relative_to(folder).parts)
+                if found is not None:
+                    return (
+                        f"package '{name}' installs its files to other folders than its sources, which have it at "
+                        f"{display_path(str(found))}: build the workspace (colcon build) and check again, or give its "
+                        f"installed share folder with -P {name}=DIR"
+                    )
+        return None
 
     def patch(self, owner: object, name: str, replacement) -> None:
         self.saved[owner, name] = getattr(owner, name)

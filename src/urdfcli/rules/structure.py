@@ -37,8 +37,11 @@ X002 = declare("X002", "xml-entity-declaration", ERROR, "The document declares X
     '<!DOCTYPE robot [<!ENTITY base "base_link">]>\n<robot name="r">\n  <link name="&base;"/>\n</robot>',
     '<robot name="r">\n  <link name="base_link"/>\n</robot>'))
 X003 = declare("X003", "xacro-error", ERROR, "xacro could not expand the file.", explain(
-    "Reports a xacro expansion error (unknown macro, undefined property or argument, bad expression) at the element being expanded.",
-    "Without an expansion there is no URDF: `xacro` fails the same way at launch time.",
+    "Reports a xacro expansion error (unknown macro, undefined property or argument, bad expression, an include that "
+    "cannot be read) at the element being expanded.",
+    "Without an expansion there is no URDF: `xacro` fails the same way at launch time, given the same packages. (An include "
+    "of `$(find pkg)/...` that only the package's install folder holds, not its sources, is found once the workspace is "
+    "built: the hint says so.)",
     '<robot name="r" xmlns:xacro="http://www.ros.org/wiki/xacro">\n  <link name="${base_name}"/>\n</robot>',
     '<robot name="r" xmlns:xacro="http://www.ros.org/wiki/xacro">\n  <xacro:property name="base_name" value="base_link"/>\n  <link name="${base_name}"/>\n</robot>'))
 X004 = declare("X004", "package-not-found", ERROR, "A `$(find pkg)` names a package that cannot be found.", explain(
