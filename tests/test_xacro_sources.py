@@ -194,6 +194,29 @@ def test_a_package_a_macro_parameter_names_is_judged_at_each_call_when_every_cal
     assert diagnostics(model, "P001") == []  # one call computes it: nothing is certain
 
 
+def test_a_macro_argument_carrying_a_folder_names_the_package_before_its_slash(packages):
+    """ros2_control_demos' shape: ``package://${mesh_package}/meshes/...`` with
+    mesh_package="ros2_control_demo_description/r6bot". The package is the part before
+    the ``/``, here the file's own: nothing to declare, and ``--fix`` writes nothing."""
+    write(packages / "my_robot" / "r6bot" / "meshes" / "link_0.stl", "solid l\nendsolid l\n")
+    write(packages / "my_robot" / "r6bot" / "urdf" / "inc" / "create_link.xacro", library("""
+        <xacro:macro name="create_link" params="link_name mesh_package mesh_name">
+          <link name="${link_name}"><visual><geometry><mesh filename="package://${mesh_package}/meshes/${mesh_name}.stl"/></geometry></visual></link>
+        </xacro:macro>
+        """))
+    model = model_using(packages, """
+        <xacro:include filename="$(find my_robot)/r6bot/urdf/inc/create_link.xacro"/>
+        <xacro:create_link link_name="base_link" mesh_package="my_robot/r6bot" mesh_name="link_0"/>
+        """)
+    manifest = (packages / "my_robot" / "package.xml").read_text()
+    assert diagnostics(model, "P001") == []
+    run_cli("lint", "--fix", "--select", "P001", str(model))
+    assert (packages / "my_robot" / "package.xml").read_text() == manifest
+    edit(model, 'mesh_package="my_robot/r6bot"', 'mesh_package="acme_meshes/r6bot"')  # another package's folder still needs it declared
+    [warning] = diagnostics(model, "P001")
+    assert "package 'acme_meshes'" in warning.message and warning.hint.startswith("add <exec_depend>acme_meshes</exec_depend>")
+
+
 def test_a_plain_urdf_is_checked_through_its_meshes(packages):
     model = write(packages / "my_robot" / "urdf" / "robot.urdf", """\
         <robot name="r">

@@ -25,6 +25,7 @@ from ..targets.kdl.load import LOADER as KDL
 from ..targets.mujoco.load import LOADER as MUJOCO
 from ..targets.pinocchio.load import LOADER as PINOCCHIO
 from ..targets.pybullet.load import LOADER as PYBULLET
+from ..read.packages import uri_package
 from .loading import Loader, Outcome, Packages
 
 LOADERS: dict[str, Loader] = {loader.name: loader for loader in (MUJOCO, DRAKE, PINOCCHIO, PYBULLET, GAZEBO, KDL, ISAAC)}
@@ -115,12 +116,11 @@ def packages_of(loaded) -> dict[str, str]:
     """The packages a model's ``package://`` URIs name, as urdfcli resolved them (a model.load.Loaded)."""
     found = {}
     for _, _, uri in loaded.robot.resources:
-        if uri.startswith("package://"):
-            name = uri[len("package://"):].split("/", 1)[0]
-            if name and name not in found:
-                folder = loaded.resolver.find(name)
-                if folder is not None:
-                    found[name] = str(folder)
+        name = uri_package(uri)
+        if name and name not in found:
+            folder = loaded.resolver.find(name)
+            if folder is not None:
+                found[name] = str(folder)
     return found
 
 

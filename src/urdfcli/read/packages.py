@@ -144,6 +144,17 @@ class PackageIndex:
         return PackageResolver(options, input_file, index=self, fallback=fallback)
 
 
+def named_package(path: str) -> str:
+    """The package the text after ``package://`` names: up to its first ``/``
+    (``pkg/meshes/arm.stl``; a macro argument that carries a folder too, ``pkg/sub``)."""
+    return path.split("/", 1)[0]
+
+
+def uri_package(uri: str) -> str | None:
+    """The package a ``package://`` URI names, or None for any other URI."""
+    return named_package(uri[len("package://"):]) if uri.startswith("package://") else None
+
+
 def cmake_project(folder: Path) -> str | None:
     """The ``project(NAME)`` of a package's CMakeLists.txt: the name ament_cmake
     installs and registers it under, whatever its package.xml says."""

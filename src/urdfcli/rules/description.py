@@ -9,7 +9,7 @@ from ..diagnostics import Fix, SetAttribute
 from ..model.kinematics import bodies
 from ..model.meshes import input_folder, near_misses, resolved_resources, uri_style
 from ..model.vocabulary import SCHEMA
-from ..read.packages import cmake_project
+from ..read.packages import cmake_project, uri_package
 from .base import ERROR, INFO, PLACED, SAFE, WARNING, Kind, RuleSet, check
 from .meshes import others_there, package_uri, written_with_find
 from .suggestions import close_matches
@@ -304,11 +304,6 @@ def visual_without_collision(loaded, given):
         )
 
 
-def _package_of(uri: str) -> str | None:
-    match = re.match(r"package://([^/]*)", uri)
-    return match.group(1) if match else None
-
-
 @check("D004", "resource-not-found", ERROR, "A mesh or texture file that does not exist.", kind=Kind.FILES, fix=SAFE,
        fix_doc="Names the file of its folder that differs only in case or extension, where the name was written (safe: the file meant is the one loaded on macOS and Windows)." f" {PLACED}")
 def file_not_found(loaded, given):
@@ -381,7 +376,7 @@ def _whose(loaded, at: int, uri: str, path) -> str | None:
     in the input's repository or workspace, where. None for another machine's path."""
     portable = package_uri(loaded, path)
     if portable is not None:
-        said = f"a path of this machine, in package '{_package_of(portable)}', where the file is missing"
+        said = f"a path of this machine, in package '{uri_package(portable)}', where the file is missing"
         if uri_style(uri) == "file" and written_with_find(loaded, at):
             return said
         return f"{said}; write '{portable}' for the model to load on other machines too"
@@ -413,7 +408,7 @@ def _file_fix(loaded, at: int, uri: str, path, base) -> Fix:
 
 def uri_like(loaded, uri: str, path, base) -> str:
     """``path`` written the way ``uri`` is: package://, file://, or a path from the input's folder."""
-    package = _package_of(uri)
+    package = uri_package(uri)
     if package:
         folder = loaded.resolver.find(package)
         if folder is not None and path.is_relative_to(folder):
@@ -456,7 +451,7 @@ def package_not_found(loaded, given):
         return
     missing: dict[str, list] = {}
     for at, kind, uri in loaded.robot.resources:
-        package = _package_of(uri)
+        package = uri_package(uri)
         if package is not None and loaded.resolver.find(package) is None:
             missing.setdefault(package, []).append((at, kind, uri))
     for package, uses in missing.items():  # one cause: one diagnostic, at the first use

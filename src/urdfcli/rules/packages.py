@@ -9,6 +9,7 @@ from pathlib import Path
 
 from ..diagnostics import Diagnostic, Edit, Fix, Location
 from ..model.sources import chain, parameters
+from ..read.packages import named_package, uri_package
 from ..read.xacro_scan import shown
 from .base import SAFE, WARNING, Kind, RuleSet, check
 
@@ -16,11 +17,6 @@ from .base import SAFE, WARNING, Kind, RuleSet, check
 # while expanding) and for one used at run time (a mesh, a texture, a parameter file)
 BUILD, RUN = "depend", "exec_depend"
 _VARIABLE = re.compile(r"\$\{\s*(\w+)\s*\}")
-
-
-def _package_of(uri: str) -> str | None:
-    match = re.match(r"package://([^/]*)", uri)
-    return match.group(1) if match else None
 
 
 def _uses(loaded) -> Iterator[tuple[str, str, str, Callable[[], Location]]]:
@@ -42,7 +38,7 @@ def _uses(loaded) -> Iterator[tuple[str, str, str, Callable[[], Location]]]:
                             yield where.name, package, kind, functools.partial(_at, where, place)
     elif loaded.modelled:
         for at, _, uri in loaded.robot.resources:
-            package = _package_of(uri)
+            package = uri_package(uri)
             if package:
                 yield loaded.document.shown, package, RUN, functools.partial(loaded.document.locate, at)
 
@@ -50,13 +46,15 @@ def _uses(loaded) -> Iterator[tuple[str, str, str, Callable[[], Location]]]:
 def _given(sources, file, use) -> list:
     """For ``$(find ${name})`` or ``package://${name}/`` in a macro whose parameter
     ``name`` every call gives as a plain name: (package, file, place) for each call
-    (empty when one call computes it, or nothing calls the macro)."""
+    (empty when one call computes it, or nothing calls the macro). A value with a folder
+    (``pkg/sub`` for ``package://${name}/meshes``) names the package before its ``/``."""
     variable = _VARIABLE.fullmatch(use.package)
     if variable is None or use.macro is None or not sources.complete:
         return []
     name = variable.group(1)
     macro = next((m for m in chain(file, use.macro) if any(p.name == name for p in parameters(file, m))), None)
-    return (sources.given_by_calls(file, macro, name) or []) if macro is not None else []
+    given = (sources.given_by_calls(file, macro, name) or []) if macro is not None else []
+    return [(named_package(value), where, place) for value, where, place in given]
 
 
 def _at(file, place) -> Location:
@@ -81,7 +79,8 @@ def dependency_undeclared(loaded, given) -> Iterator[Diagnostic]:
     first use. A package named by a macro's parameter (`$(find ${pkg})`,
     `package://${pkg}/`) is named by each call: when every call in the
     workspace gives a plain name (or leaves the plain default), each is judged
-    where it is written. Any other variable is left alone. A package that cannot
+    where it is written (a value carrying a folder too, `my_robot/arm` before
+    `/meshes/`, names the package before its `/`). Any other variable is left alone. A package that cannot
     be found here is flagged too (X004 and D005 say it is missing; this, that a
     fresh workspace would not install it either), unless it is the name of the
     file's own package folder: that is the package itself, named by its folder

@@ -6,6 +6,7 @@ from __future__ import annotations
 from ...model import massprops
 from ...model.meshes import MeshFiles
 from ...read.memo import once as memo
+from ...read.packages import uri_package
 from ...model.targets import declared_mass, mesh_extension
 from .build import replaces
 from ...rules.base import ERROR, INFO, WARNING, Kind, check, explain
@@ -339,9 +340,9 @@ def package_not_found(loaded, given):
     files = MeshFiles.of(loaded)
     looked_up: set[str] = set()  # each package looked up once, through its first URI: found or said
     for at, kind, uri in loaded.robot.resources:
-        if not uri.startswith("package://"):
+        package = uri_package(uri)
+        if package is None:
             continue
-        package = uri[len("package://"):].split("/", 1)[0]
         if package in looked_up:
             continue
         looked_up.add(package)
