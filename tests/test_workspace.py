@@ -422,3 +422,69 @@ def test_a_folder_marked_ignored_is_left_out_of_the_search_and_the_package_scan(
     found = [path.relative_to(tmp_path).as_posix() for path in source_files(tmp_path / "src")]
     assert found == ["src/kept/kept_description/urdf/kept.urdf"]
     assert [name for name, _ in PackageIndex().scan(tmp_path / "src")] == ["kept_description"]
+
+
+def husky(root: Path, extras: str) -> Path:
+    """Husky's description: the model includes ``$(arg urdf_extras)``, whose default
+    (empty.urdf, a placeholder) a file it includes declares: no search follows it,
+    the model's expansion reads it."""
+    (root / ".git").mkdir(parents=True)
+    package = root / "husky_description"
+    write(package / "package.xml", package_xml("husky_description"))
+    write(package / "urdf" / "husky_macro.urdf.xacro", f"""\
+        <?xml version="1.0"?>
+        <robot {XACRO}>
+          <xacro:arg name="urdf_extras" default="$(optenv CPR_URDF_EXTRAS empty.urdf)"/>
+          <xacro:macro name="husky" params="prefix">
+            <link name="${{prefix}}base_link"/>
+          </xacro:macro>
+        </robot>
+        """)
+    write(package / "urdf" / "husky.urdf.xacro", f"""\
+        <?xml version="1.0"?>
+        <robot name="husky" {XACRO}>
+          <xacro:include filename="$(find husky_description)/urdf/husky_macro.urdf.xacro"/>
+          <xacro:husky prefix=""/>
+          <xacro:include filename="$(arg urdf_extras)"/>
+        </robot>
+        """)
+    write(package / "urdf" / "empty.urdf", extras)
+    return package
+
+
+PLACEHOLDER = "<robot>\n  <!-- a placeholder which is included by default from husky.urdf.xacro -->\n</robot>\n"
+
+
+def lint_json(*args, cwd):
+    done = run_cli("lint", "--format", "json", *args, cwd=cwd)
+    return done, json.loads(done.stdout or b"null")
+
+
+def test_a_placeholder_urdf_a_model_reads_is_its_fragment_not_a_broken_robot(tmp_path):
+    """Not 'R002 no name', 'R004 no link' at Husky's empty.urdf: a part of the model that
+    includes it, checked through it."""
+    husky(tmp_path / "repo", PLACEHOLDER)
+    for command in ("lint", "check"):
+        done = run_cli(command, "husky_description", cwd=tmp_path / "repo")
+        out = (done.stdout + done.stderr).decode()
+        assert done.returncode == 0, out
+        assert "husky_description/urdf/empty.urdf: fragment, checked through husky_description/urdf/husky.urdf.xacro" in out
+        assert "R002" not in out and "R004" not in out
+    # what breaks the model stays the model's, as when it is linted alone
+    edit(tmp_path / "repo/husky_description/urdf/husky_macro.urdf.xacro", '<link name="${prefix}base_link"/>',
+         '<link name="${prefix}base_link"/><joint name="${prefix}j" type="fixed"><parent link="${prefix}base_link"/><child link="arm"/></joint>')
+    done, folder = lint_json("husky_description", cwd=tmp_path / "repo")
+    _, alone = lint_json("husky_description/urdf/husky.urdf.xacro", cwd=tmp_path / "repo")
+    found = {f["path"]: [(d["code"], d["path"], d["line"], d["message"]) for d in f["diagnostics"]] for f in folder["files"]}
+    assert done.returncode == 1 and found["husky_description/urdf/empty.urdf"] == []
+    assert found["husky_description/urdf/husky.urdf.xacro"] == [(d["code"], d["path"], d["line"], d["message"]) for d in alone["files"][0]["diagnostics"]]
+    assert [code for code, *_ in found["husky_description/urdf/husky.urdf.xacro"]] == ["J005"]
+
+
+@pytest.mark.parametrize("include", ["$(arg urdf_extras)", "empty.urdf"])  # read by the model; found by the search too
+def test_a_urdf_that_holds_a_robot_is_checked_as_one_whoever_includes_it(tmp_path, include):
+    package = husky(tmp_path / "repo", '<robot>\n  <link name="camera"/>\n</robot>\n')
+    edit(package / "urdf" / "husky.urdf.xacro", "$(arg urdf_extras)", include)
+    done = run_cli("lint", "--format", "concise", "husky_description", cwd=tmp_path / "repo")
+    assert "husky_description/urdf/empty.urdf:1:1: R002 error: <robot> has no 'name' attribute" in done.stdout.decode()
+

@@ -26,7 +26,11 @@ A file that another file of a folder includes is not linted on its own when
 the folder is: it is one of its models' parts (a *fragment*, such as Baxter's
 end effectors), checked through the models that read it. A file given alone
 that cannot be read without an error, and that models around it include, is
-checked through them too.
+checked through them too, as is one that a model given with it read (an include
+the search could not follow: Husky's ``$(arg urdf_extras)``, whose default an
+included file declares). A plain URDF is such a part only when it holds no robot
+(no name, no link, no joint: a placeholder); one that holds a robot is checked as
+one, whoever includes it.
 """
 
 from __future__ import annotations
@@ -505,7 +509,8 @@ def models_below(folder: Path, index: Index) -> Models:
     ``*.xacro`` file that is a model (ROS 1's ``ur5.xacro``), unless a file there
     includes it: a fragment (Baxter's ``left_end_effector.urdf.xacro``, a model's
     parts in their own file, a file included through a name computed from a macro
-    parameter) is checked through the models that read it, never expanded alone.
+    parameter, a plain URDF that holds no robot) is checked through the models that
+    read it, never expanded alone.
     Libraries are checked through the models that include them. ``index`` is the session's."""
     files = list(source_files(folder))
     resolved = {file: file.resolve() for file in files}
@@ -516,7 +521,7 @@ def models_below(folder: Path, index: Index) -> Models:
         if not (file.name.endswith(MODEL_SUFFIXES) or (file.name.endswith(".xacro") and index.kind(path) == "model")):
             continue
         found = includers.get(path)
-        if not found:
+        if not found or not part_of_model(str(file)):  # a plain URDF that holds a robot is one, whoever includes it
             models.append(file)
         else:
             written = tuple((shown(includer), text) for includer, _, text in found)
@@ -584,7 +589,8 @@ def plan(paths: list[str], config_for, package_paths: tuple[str, ...] = (), pack
 
 def fragment_includers(config_for, package_paths: tuple[str, ...] = (), packages: PackageIndex | None = None, files: SourceFiles | None = None):
     """``includers(path)``: the runs of the models around a xacro file given as a model
-    that include it (none for any other file). Asked only of a model that cannot be
+    that include it (and around a plain URDF that holds no robot: see :func:`fragment_shaped`;
+    none for any other file). Asked only of a model that cannot be
     read alone without an error, which may be a fragment of them (the search reads the
     repository or workspace around it)."""
     packages = packages if packages is not None else PackageIndex()
@@ -593,7 +599,7 @@ def fragment_includers(config_for, package_paths: tuple[str, ...] = (), packages
 
     def includers(path: str) -> list[Target]:
         nonlocal index
-        if path == STDIN or not path.endswith(".xacro"):
+        if path == STDIN or not (path.endswith(".xacro") or fragment_shaped(path)):
             return []
         config = config_for(path)
         index = index or Index(config.package_paths + package_paths, packages, files)
@@ -668,7 +674,9 @@ def assemble(
     session's, which asks the disk once a file.
     """
     models = [outcome(target) for entry in entries if not entry.library for target in entry.targets]
+    runs = {target: outcome(target) for entry in entries if not entry.library for target in entry.targets}
     resolved = _resolver(real_path)
+    readers = _readers(runs, resolved)
     unused = _unused_in_all([m for m in models if isinstance(m, Result)], resolved)
     at_source = _found_at_sources([m for m in models if isinstance(m, Result)], generated_from, resolved)
     results, unreadable, shown_keys = [], [], set()
@@ -681,10 +689,13 @@ def assemble(
                     continue
                 missing = result.errors and all(d.code in MISSING_CONTEXT for d in result.errors)
                 through = includers(entry.path) if missing else []
-                if through:  # a fragment: its errors alone are its missing context
-                    results.append(_library_result(entry._replace(targets=through, library=True), outcome, shown_keys, unreadable, resolved, fragment=True))
+                # a model of this run whose expansion read it (an include the search could not follow)
+                read_by = [] if through or not missing or not part_of_model(entry.path) else readers(entry.path)
+                if through or read_by:  # a fragment: its errors alone are its missing context
+                    fragment = entry._replace(targets=through or read_by, library=True)
+                    results.append(_library_result(fragment, outcome, shown_keys, unreadable, resolved, fragment=True, theirs=bool(read_by)))
                     break
-                if missing and any(d.code in UNDEFINED or d.code == structure.R004.code for d in result.errors) and _nameless(entry.path):
+                if missing and any(d.code in UNDEFINED or d.code == structure.R004.code for d in result.errors) and fragment_shaped(entry.path):
                     # a part nothing here includes: a name or a link its includer gives is missing, or it makes no link at all
                     why = next((d.message for d in result.errors if d.code in UNDEFINED), "it makes no link")
                     note = f"a fragment (its <robot> has no name) that no model includes: not checked ({why})"
@@ -725,20 +736,43 @@ def _found_at_sources(
     return copied
 
 
+def _readers(runs: dict[Target, Result | Unreadable], resolved: Callable[[str], Path]) -> Callable[[str], list[Target]]:
+    """``readers(path)``: the runs of the models given whose expansion read ``path`` (not itself)."""
+    read: dict[Path, list[Target]] = {}
+    for target, result in runs.items():
+        if isinstance(result, Result):
+            for file in result.includes:
+                read.setdefault(resolved(file), []).append(target)
+    return lambda path: [t for t in read.get(resolved(path), []) if resolved(t.path) != resolved(path)] if path != STDIN else []
+
+
 _ROBOT_START = re.compile(rb"<robot\b[^>]*>")
+_MAKES = re.compile(rb"<(?:link|joint)\b")
+_COMMENT = re.compile(rb"<!--.*?-->", re.DOTALL)
 
 
-def _nameless(path: str) -> bool:
-    """Whether a xacro file's <robot> has no name: a robot always has one, a part of one
-    written for another file to include need not."""
-    if path == STDIN or not path.endswith(".xacro"):
+def fragment_shaped(path: str) -> bool:
+    """Whether a file is a part written for another file to include, not a robot: its
+    <robot> has no name (a robot always has one). A plain URDF must also hold no <link>
+    and no <joint>, such as Husky's empty.urdf placeholder: one that does is a robot
+    missing its name, whoever includes it."""
+    if path == STDIN or not path.endswith((".xacro", ".urdf")):
         return False
     try:
         with open(path, "rb") as stream:
-            found = _ROBOT_START.search(stream.read(1 << 16))
+            head = stream.read(1 << 16)
     except OSError:
         return False
-    return found is not None and re.search(rb"\sname\s*=", found.group(0)) is None
+    found = _ROBOT_START.search(head)
+    if found is None or re.search(rb"\sname\s*=", found.group(0)) is not None:
+        return False
+    return path.endswith(".xacro") or b"xacro" in head or _MAKES.search(_COMMENT.sub(b"", head)) is None
+
+
+def part_of_model(path: str) -> bool:
+    """Whether a file that cannot be read alone may be a part of the models that read
+    it: any xacro file; a plain URDF only when it holds no robot (:func:`fragment_shaped`)."""
+    return path.endswith(".xacro") or fragment_shaped(path)
 
 
 def _through(diagnostic: Diagnostic, model: Result) -> Diagnostic:
@@ -782,10 +816,12 @@ def _fresh(diagnostic: Diagnostic, in_own_file: bool, shown_keys: set) -> bool:
 
 
 def _library_result(
-    entry: Entry, outcome, shown_keys: set, unreadable: list[Unreadable], resolved: Callable[[str], Path], fragment: bool = False
+    entry: Entry, outcome, shown_keys: set, unreadable: list[Unreadable], resolved: Callable[[str], Path], fragment: bool = False,
+    theirs: bool = False,
 ) -> Result:
     """A library's (or a fragment's) result: what the models that read it found in it, and
-    what breaks them; a library no model could check is expanded on its own, a fragment never."""
+    what breaks them; a library no model could check is expanded on its own, a fragment never.
+    ``theirs``: the models are inputs of the run too, which say what breaks them themselves."""
     library = Path(entry.path).resolve()
     checked_through: list[str] = []
     notes: list[str] = []  # why a model could not be used, or that none includes it
@@ -819,7 +855,7 @@ def _library_result(
         used.append(model)
     unused = _unused_in_all(used, resolved)
     for model in used:  # mistakes written in the library, and whatever breaks a model that uses it
-        found += [_through(d, model) for d in model.diagnostics if unused(d) and (_same(d.path, library) or d.severity is Severity.ERROR)]
+        found += [_through(d, model) for d in model.diagnostics if unused(d) and (_same(d.path, library) or (d.severity is Severity.ERROR and not theirs))]
     # When models include it but none could check it, that is a gap (X006) the config closes.
     reasons = needing + [f"{label} does not read it with {arguments}" for label, arguments in unread]
     if not checked_through and fragment:
