@@ -488,3 +488,79 @@ def test_a_urdf_that_holds_a_robot_is_checked_as_one_whoever_includes_it(tmp_pat
     done = run_cli("lint", "--format", "concise", "husky_description", cwd=tmp_path / "repo")
     assert "husky_description/urdf/empty.urdf:1:1: R002 error: <robot> has no 'name' attribute" in done.stdout.decode()
 
+
+def interbotix(root: Path) -> Path:
+    """Interbotix's arms: the model includes ``urdf/${robot_model}.urdf.xacro``, whose default
+    names an arm of another repository; wx250s.urdf.xacro, one arm's macro, includes the
+    arm's control in its body."""
+    (root / ".git").mkdir(parents=True)
+    package = root / "arm_descriptions"
+    write(package / "package.xml", package_xml("arm_descriptions"))
+    write(package / "urdf" / "arm.urdf.xacro", f"""\
+        <?xml version="1.0"?>
+        <robot name="arm" {XACRO}>
+          <xacro:arg name="robot_model" default="px100"/>
+          <xacro:property name="robot_model" value="$(arg robot_model)"/>
+          <xacro:include filename="$(find arm_descriptions)/urdf/${{robot_model}}.urdf.xacro"/>
+          <xacro:arm_macro/>
+        </robot>
+        """)
+    write(package / "urdf" / "wx250s.urdf.xacro", f"""\
+        <?xml version="1.0"?>
+        <robot {XACRO}>
+          <xacro:macro name="arm_macro">
+            <link name="base_link"/>
+            <xacro:include filename="$(find arm_descriptions)/urdf/control.urdf.xacro"/>
+          </xacro:macro>
+        </robot>
+        """)
+    write(package / "urdf" / "control.urdf.xacro", f'<?xml version="1.0"?>\n<robot {XACRO}>\n  <gazebo reference="base_link"/>\n</robot>\n')
+    return package
+
+
+def test_a_library_a_model_may_include_through_a_computed_name_says_so_and_names_the_setting(tmp_path):
+    """Not 'a xacro library that no model includes': the model that computes its name did
+    not expand; and the file it includes is pointed at what it says."""
+    repo = tmp_path / "repo"
+    interbotix(repo)
+    done = run_cli("lint", "arm_descriptions", cwd=repo)
+    out = done.stdout.decode()  # lint reports on standard output
+    notes = [line for line in out.splitlines() if line.startswith("arm_descriptions/urdf/") and " error: " not in line]
+    assert "no model includes" not in out
+    assert notes[0].startswith(
+        "arm_descriptions/urdf/wx250s.urdf.xacro: may be included by arm_descriptions/urdf/arm.urdf.xacro through "
+        "'$(find arm_descriptions)/urdf/${robot_model}.urdf.xacro', a file name computed from what it is given, "
+        "and that model did not expand with its default arguments ("
+    )
+    assert notes[0].endswith(
+        'list the argument sets it is checked with in [tool.urdfcli] models, e.g. '
+        'models = { "arm_descriptions/urdf/arm.urdf.xacro" = [["robot_model:=wx250s"]] } (paths from the configuration\'s folder)'
+    )
+    assert notes[1] == ("arm_descriptions/urdf/control.urdf.xacro: not checked: included by arm_descriptions/urdf/wx250s.urdf.xacro, "
+                        "whose expansion did not read it (see what it says)")
+    # the setting it names: the library is checked through the model, which reads both
+    write(repo / "urdfcli.toml", '[models]\n"arm_descriptions/urdf/arm.urdf.xacro" = [["robot_model:=wx250s"]]\n')
+    done = run_cli("lint", "arm_descriptions", cwd=repo)
+    out = done.stdout.decode() + done.stderr.decode()
+    assert done.returncode == 0, out
+    assert "wx250s.urdf.xacro: xacro library, checked through arm_descriptions/urdf/arm.urdf.xacro [robot_model:=wx250s]" in out
+    assert "not checked" not in out and "may be included" not in out
+
+
+def test_a_file_its_includer_reads_only_under_a_condition_is_not_sent_to_see_what_it_says(tmp_path):
+    """The includer expands cleanly and says nothing: the note names what to do instead."""
+    (tmp_path / ".git").mkdir()
+    write(tmp_path / "urdf" / "base.urdf.xacro", f"""\
+        <robot name="base" {XACRO}>
+          <xacro:arg name="gripper" default="false"/>
+          <link name="base_link"/>
+          <xacro:if value="$(arg gripper)"><xacro:include filename="gripper.urdf.xacro"/></xacro:if>
+        </robot>
+        """)
+    write(tmp_path / "urdf" / "gripper.urdf.xacro", f'<robot {XACRO}>\n  <gazebo reference="base_link"/>\n</robot>\n')
+    done = run_cli("lint", "urdf", cwd=tmp_path)
+    assert done.returncode == 0
+    assert done.stdout.decode().splitlines()[0] == (
+        "urdf/gripper.urdf.xacro: not checked: included by urdf/base.urdf.xacro, whose expansion did not read it "
+        "(under a condition, or in a macro not called): list argument sets of a model that reads it in [tool.urdfcli] models"
+    )

@@ -176,7 +176,7 @@ def run(paths: list[str], session: Session, progress: Progress | None = None, as
 
     includers = fragment_includers(config_for, session.package_paths, session.packages, session.files) if session.options.libraries else (lambda path: [])
     results, unreadable = assemble(entries, outcome, includers, _generated_from, session.packages.real_path)
-    results += unread(aside, [r for r in done.values() if isinstance(r, Result)])
+    results += unread(aside, [r for r in done.values() if isinstance(r, Result)], results)
     results = [replace(result, show_info=config_for(result.path).show_info) for result in results]
     if session.options.load:
         results = [loaded_into_targets(result, session) for result in results]

@@ -474,12 +474,24 @@ class Target(NamedTuple):
         return f"{self.path} [{' '.join(f'{k}:={v}' for k, v in self.arguments)}]"
 
 
+class Maybe(NamedTuple):
+    """A model that may include a library through a file name it computes from what it is
+    given (``$(find pkg)/urdf/${robot_model}.urdf.xacro``), none of whose runs reads it."""
+
+    model: str  # as shown
+    written: str  # the include, as written
+    runs: tuple[Target, ...]  # the model's runs
+    argument: tuple[str, str] | None = None  # the xacro argument, and its value, that name the library (when one does)
+
+
 class Entry(NamedTuple):
-    """A given file: a model and its runs, or a library and the models it is checked through."""
+    """A given file: a model and its runs, or a library and the models it is checked through
+    (and, when none is, those that may include it: ``maybe``)."""
 
     path: str
     targets: list[Target]
     library: bool = False
+    maybe: tuple[Maybe, ...] = ()
 
 
 MODEL_SUFFIXES = (".urdf", ".urdf.xacro", ".srdf", ".srdf.xacro")
@@ -529,22 +541,28 @@ def models_below(folder: Path, index: Index) -> Models:
     return Models(models, tuple(aside))
 
 
-def unread(aside: tuple[Aside, ...], results: list[Result]) -> list[Result]:
-    """For each file set aside that no model's expansion read, a result that says so
-    (not counted as checked): a fragment is never expanded alone, where its missing
-    context would be reported as its mistakes. One note per include, whatever
-    number of files it may name."""
+def unread(aside: tuple[Aside, ...], results: list[Result], shown: list[Result] = ()) -> list[Result]:
+    """For each file set aside that no model's expansion read (``results``: every run), a
+    result that says so (not counted as checked): a fragment is never expanded alone, where
+    its missing context would be reported as its mistakes. One note per include, whatever
+    number of files it may name; it points at what the includer's result says (in
+    ``shown``, the results shown) when it says why, else names the setting to use."""
     if not aside:
         return []
     resolved = _resolver()
     read = {resolved(file) for result in results for file in (result.path, *result.includes) if file != STDIN}
+    # an error (it did not expand) or a note says why; a warning of a model that expanded does not
+    saying = {resolved(result.path) for result in shown if result.errors or (result.library is not None and result.library.notes)}
     found = []
     for file in aside:
         if resolved(file.path) in read:
             continue
         includer, written = file.includers[0]
-        if file.certain:
+        if file.certain and resolved(includer) in saying:
             note = f"not checked: included by {includer}, whose expansion did not read it (see what it says)"
+        elif file.certain:
+            note = (f"not checked: included by {includer}, whose expansion did not read it (under a condition, or in a macro not called): "
+                    "list argument sets of a model that reads it in [tool.urdfcli] models")
         else:
             note = f"not checked: no model read it; {includer} includes '{written}', a file name computed from what it is given"
         found.append(Result(file.path, library=Library((), (note,), unchecked=True)))
@@ -583,7 +601,8 @@ def plan(paths: list[str], config_for, package_paths: tuple[str, ...] = (), pack
             entries.append(Entry(path, model_targets(path, config.argument_sets(path))))
             continue
         targets = _includers(library, index, config, config_for, packages, candidates_of)
-        entries.append(Entry(path, targets, library=True))
+        maybe = () if targets else _computing_includers(library, index, config, config_for, packages, candidates_of)
+        entries.append(Entry(path, targets, library=True, maybe=maybe))
     return entries
 
 
@@ -608,9 +627,9 @@ def fragment_includers(config_for, package_paths: tuple[str, ...] = (), packages
     return includers
 
 
-def _includers(file: Path, index: Index, config, config_for, packages: PackageIndex, candidates_of: dict) -> list[Target]:
-    """The runs of the top-level models of the repository or workspace around ``file``
-    (and those ``[tool.urdfcli] models`` lists) whose expansion may read it."""
+def _candidates(file: Path, index: Index, config, packages: PackageIndex, candidates_of: dict) -> list[Path]:
+    """The top-level models of the repository or workspace around ``file``, and those
+    ``[tool.urdfcli] models`` lists (not ``file`` itself)."""
     roots, recursive = search_roots(file, packages)
     key = (tuple(roots), recursive)
     if key not in candidates_of:
@@ -619,14 +638,63 @@ def _includers(file: Path, index: Index, config, config_for, packages: PackageIn
     for model, _ in config.models:
         if model not in candidates and model.is_file():
             candidates.append(model)
+    return [model for model in candidates if model != file]
+
+
+def _includers(file: Path, index: Index, config, config_for, packages: PackageIndex, candidates_of: dict) -> list[Target]:
+    """The runs of the models around ``file`` (see :func:`_candidates`) whose expansion may read it."""
     targets: list[Target] = []
-    for model in candidates:
-        if model == file:
-            continue
+    for model in _candidates(file, index, config, packages, candidates_of):
         sets = config_for(str(model)).argument_sets(str(model))
         if any(index.reaches(model, file, arguments) for arguments in (sets or [None])):
             targets += model_targets(shown(model), sets)
     return targets
+
+
+def _computing_includers(file: Path, index: Index, config, config_for, packages: PackageIndex, candidates_of: dict) -> tuple[Maybe, ...]:
+    """The models around ``file`` with an include whose file name is computed from their
+    arguments and may be ``file`` with other values: Interbotix's
+    ``$(find ...)/urdf/${robot_model}.urdf.xacro``, where the default robot_model names another
+    file. The search resolves an argument to its default; here it stays open."""
+    found = []
+    for model in _candidates(file, index, config, packages, candidates_of):
+        reached, _ = index.reachable(model)
+        for source in (index.source(path) for path in (model, *sorted(reached))):
+            written = _computed_include(source, file, index)
+            if written is not None:
+                runs = tuple(model_targets(shown(model), config_for(str(model)).argument_sets(str(model))))
+                found.append(Maybe(shown(model), written, runs, _naming_argument(written, dict(source.properties), file.name)))
+                break
+    return tuple(found)
+
+
+def _computed_include(source: WorkspaceFile, file: Path, index: Index) -> str | None:
+    """The first include of ``source`` whose file name its arguments compute and may be ``file``."""
+    # what its arguments compute is left open; other properties are what they are
+    open_source = source._replace(arguments=(), properties=tuple((k, v) for k, v in source.properties if "$(arg" not in v))
+    for written in source.includes:
+        if _COMPUTED.search(written.replace("\\", "/").rpartition("/")[2]) and resolve_include(written, open_source, index.finder(source.path)).may_be(file):
+            return written
+    return None
+
+
+_ARGUMENT = re.compile(r"\$\(\s*arg\s+(\w+)\s*\)")
+
+
+def _naming_argument(written: str, properties: dict[str, str], name: str) -> tuple[str, str] | None:
+    """The xacro argument, and its value, with which an include computing one part of its
+    file name (``$(arg x)``, or ``${p}`` of a property ``p`` that is ``$(arg x)``) names ``name``."""
+    written_name = written.replace("\\", "/").rpartition("/")[2]
+    computed = _COMPUTED.findall(written_name)
+    if len(computed) != 1:
+        return None
+    before, after = _COMPUTED.split(written_name)
+    value = re.fullmatch(re.escape(before) + "(.+)" + re.escape(after), name)
+    token = computed[0]
+    if token.startswith("${"):
+        token = properties.get(token[2:-1].strip(), "").strip()
+    argument = _ARGUMENT.fullmatch(token)
+    return (argument.group(1), value.group(1)) if argument and value else None
 
 
 def _same(file: str, library: Path) -> bool:
@@ -875,7 +943,8 @@ def _library_result(
             unreadable.append(alone)
         else:
             found += alone.diagnostics
-            if not entry.targets and all(d.severity is Severity.INFO for d in alone.diagnostics):  # its own mistakes say enough
+            notes += [_may_include(maybe, outcome) for maybe in entry.maybe]
+            if not entry.targets and not entry.maybe and all(d.severity is Severity.INFO for d in alone.diagnostics):  # its own mistakes say enough
                 notes.append("a xacro library that no model includes: checked on its own (its xacro, and its macros as written)")
     # One mistake written in a macro shows once, however many calls and models
     # made copies of it (the messages differ only by the names the calls gave).
@@ -889,6 +958,26 @@ def _library_result(
                 diagnostics.append(diagnostic)
     read = tuple(dict.fromkeys(file for model in used for file in (model.path, *model.includes)))
     return Result(entry.path, tuple(diagnostics), library=Library(tuple(checked_through), tuple(notes), fragment=fragment, read=read))
+
+
+def _may_include(maybe: Maybe, outcome) -> str:
+    """The note for a model that may include a library through a computed file name: why it
+    did not (it did not expand, or read another file), and the setting that makes it."""
+    run = outcome(maybe.runs[0])
+    arguments = "the arguments it is checked with" if maybe.runs[0].arguments else "its default arguments"
+    if isinstance(run, Unreadable):
+        why = f"cannot be read ({run.reason})"
+    elif run.needs_argument is not None:
+        why = f"needs xacro argument '{run.needs_argument}'"
+    elif run.robot_name is None and run.errors:
+        why = f"did not expand with {arguments} ({run.errors[0].message})"
+    else:
+        why = f"reads another file with {arguments}"
+    example = f'models, e.g. models = {{ "{maybe.model}" = [["{maybe.argument[0]}:={maybe.argument[1]}"]] }} (paths from the configuration\'s folder)' if maybe.argument else "models"
+    return (
+        f"may be included by {maybe.model} through '{maybe.written}', a file name computed from what it is given, "
+        f"and that model {why}: checked on its own; list the argument sets it is checked with in [tool.urdfcli] {example}"
+    )
 
 
 def unchecked_library(path: str, unchecked: str, fragment: bool = False, needs: tuple[str, str] | None = None) -> Diagnostic:
