@@ -763,8 +763,9 @@ def assemble(
                     fragment = entry._replace(targets=through or read_by, library=True)
                     results.append(_library_result(fragment, outcome, shown_keys, unreadable, resolved, fragment=True, theirs=bool(read_by)))
                     break
-                if missing and any(d.code in UNDEFINED or d.code == structure.R004.code for d in result.errors) and fragment_shaped(entry.path):
-                    # a part nothing here includes: a name or a link its includer gives is missing, or it makes no link at all
+                if missing and any(d.code in UNDEFINED or d.code == structure.R004.code for d in result.errors) and entry.path.endswith(".xacro") and fragment_shaped(entry.path):
+                    # a xacro part nothing here includes: a name or a link its includer gives is missing, or it makes no link at all
+                    # (an empty plain URDF nothing includes is a robot that failed, as check_urdf says: example-robot-data's ur3.urdf)
                     why = next((d.message for d in result.errors if d.code in UNDEFINED), "it makes no link")
                     note = f"a fragment (its <robot> has no name) that no model includes: not checked ({why})"
                     results.append(Result(entry.path, library=Library((), (note,), unchecked=True, fragment=True)))
