@@ -171,6 +171,11 @@ def one(tmp_path, old_text: str, new_text: str):
         ('forearm.stl" scale="0.001 0.001 0.001"/></geometry></visual>', 'forearm.stl" scale="1 1 1"/></geometry></visual>', "changed", "link[@name='forearm']",
          "visual geometry mesh scale", [0.001, 0.001, 0.001], [1, 1, 1], "visual geometry mesh scale: 0.001 0.001 0.001 -> 1 1 1"),
         ('<material name="grey"/>', '<material name="blue"/>', "changed", "link[@name='base_link']", "visual material", "grey", "blue", "visual material: grey -> blue"),
+        # name="" (as xacro macros write it) is no name: the material is the visual's own colour
+        ('<box size="0.02 0.08 0.02"/></geometry></visual>', '<box size="0.02 0.08 0.02"/></geometry><material name=""><color rgba="0.2 0.2 0.2 1"/></material></visual>',
+         "changed", "link[@name='camera_link']", "visual material colour", None, [0.2, 0.2, 0.2, 1], "visual material colour: (none) -> 0.2 0.2 0.2 1"),
+        ('<material name="grey"/>', '<material name=""><color rgba="0.5 0.5 0.5 1"/></material>', "changed", "link[@name='base_link']", "visual material",
+         "grey", "rgba 0.5 0.5 0.5 1", "visual material: grey -> rgba 0.5 0.5 0.5 1"),
         ('<color rgba="0 0 1 1"/>', '<color rgba="0 0 0.8 1"/>', "changed", "material[@name='blue']", "color rgba", [0, 0, 1, 1], [0, 0, 0.8, 1],
          "color rgba: 0 0 1 1 -> 0 0 0.8 1"),  # defined in a visual, and shared by name as any material
         ('<color rgba="0.5 0.5 0.5 1"/>', '<color rgba="0.6 0.6 0.6 1"/>', "changed", "material[@name='grey']", "color rgba", [0.5, 0.5, 0.5, 1], [0.6, 0.6, 0.6, 1],

@@ -157,6 +157,13 @@ def text(value: Any, number: Callable[[float], str] = format_number) -> str:
 
 
 # -- what a link, a joint and a shape hold ---------------------------------------------
+def material_text(shape: Shape) -> str | None:
+    """A visual's material: its name, or ``rgba R G B A`` for one without a name."""
+    if shape.material:
+        return shape.material
+    return f"rgba {text(shape.colour)}" if shape.colour is not None else None
+
+
 def geometry_text(geometry: Geometry | None) -> str | None:
     if geometry is None:
         return None
@@ -423,10 +430,12 @@ class Comparer:
                 else:
                     self.number(element, f"{field} geometry {h.kind} {key}", x, y, h.at, key)
         if visual:
-            old_material = self.materials.get(old.material or "", old.material)
-            if old_material != new.material:
-                self.change("changed", element, f"{field} material", old.material, new.material, self.here(new.material_at or new.at, "name"))
-            elif not new.material and not self.numbers.same_vector(old.colour, new.colour):
+            # name="" (xacro macros write it) is no name: such a material is known by its colour
+            old_name, new_name = old.material or None, new.material or None
+            matched = self.materials.get(old_name, old_name) if old_name else None
+            if matched != new_name:
+                self.change("changed", element, f"{field} material", material_text(old), material_text(new), self.here(new.material_at or new.at, "name" if new_name else None))
+            elif not new_name and not self.numbers.same_vector(old.colour, new.colour):
                 # a material without a name is not shared: its colour is the visual's own
                 self.change("changed", element, f"{field} material colour", old.colour, new.colour, self.here(new.material_at or new.at))
 
