@@ -170,7 +170,7 @@ def test_default_style_colours_types_and_shows_origins():
     dot = result.stdout.decode()
     assert '"joint:joint_pivot" [label="joint_pivot\\nrevolute\\naxis 0 0 1", color="#1f77b4", fontcolor="#1f77b4"];' in dot
     assert '"joint:joint_car" [label="joint_car\\nprismatic\\naxis -1 0 0", color="#ff7f0e"' in dot
-    assert '"link:shoulder_link_right" -> "joint:joint_car" [color="#ff7f0e", label="xyz: 10 0 -0.5\\nrpy: 0 0 3.142"];' in dot
+    assert '"link:shoulder_link_right" -> "joint:joint_car" [color="#ff7f0e", label="xyz: 10 0 -0.5\\nrpy: 0 0 3.14159"];' in dot
     legend = next(line for line in dot.splitlines() if line.startswith('"legend"'))
     assert [t for t in ("fixed", "revolute", "continuous", "prismatic") if f">{t}</font>" in legend] == ["fixed", "revolute", "prismatic"]
     assert "rankdir=TB" in dot and "mass" not in dot and "effort" not in dot
@@ -179,8 +179,27 @@ def test_default_style_colours_types_and_shows_origins():
 def test_limits_inertial_rankdir_options():
     dot = run_cli("graph", "-f", "dot", "--limits", "--inertial", "--rankdir", "LR", str(CRANE)).stdout.decode()
     assert "rankdir=LR" in dot
-    assert '"link:base_link" [label="base_link\\nmass 9e+05 kg"];' in dot
+    assert '"link:base_link" [label="base_link\\nmass 900000 kg"];' in dot
     assert "-3.14…3.14 rad (-179.9…179.9°)\\neffort 1000 N·m\\nvelocity 2 rad/s" in dot
+
+
+def test_numbers_read_as_written_or_to_6_digits_as_the_tree_shows_them(tmp_path):
+    """Kinova's j2s6s200: joint 5 sits at z -0.10375, which 4 digits drew as -0.1037, half a
+    millimetre off. Numbers are drawn as the tree shows them: as written up to 7 significant
+    digits, else to 6 (what xacro computed)."""
+    model = tmp_path / "arm.urdf"
+    model.write_text(
+        '<robot name="arm"><link name="base"><inertial><mass value="0.46784"/>'
+        '<inertia ixx="1" ixy="0" ixz="0" iyy="1" iyz="0" izz="1"/></inertial></link><link name="tip"/>'
+        '<joint name="j5" type="revolute"><parent link="base"/><child link="tip"/>'
+        '<origin xyz="0 0.0016 -0.10375" rpy="-1.5707963267948966 0 3.141592653589793"/><axis xyz="0 0 1"/>'
+        '<limit lower="0.5235987755982988" upper="5.759586531581287" effort="6.8" velocity="0.9843656"/></joint></robot>')
+    done = run_cli("graph", str(model), "--limits", "--inertial", "-o", "arm.gv", cwd=tmp_path)
+    assert done.returncode == 0, done.stderr
+    dot = (tmp_path / "arm.gv").read_text()
+    assert '[color="#1f77b4", label="xyz: 0 0.0016 -0.10375\\nrpy: -1.5708 0 3.14159"];' in dot
+    assert '"link:base" [label="base\\nmass 0.46784 kg"];' in dot
+    assert "0.523599…5.75959 rad (30…330°)\\neffort 6.8 N·m\\nvelocity 0.9843656 rad/s" in dot
 
 
 def test_collapse_fixed_merges_fixed_chains():

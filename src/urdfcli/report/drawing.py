@@ -19,7 +19,7 @@ from typing import NamedTuple
 from ..model.kinematics import children_by_joint_name, walk
 from ..model.robot import MOVING_AXIS_TYPES, Joint, Robot, Vec3
 from .escape import escape
-from .tree import axis_text, limit_text, short
+from .tree import axis_text, limit_text, readable
 
 # Colour per joint type (the palette of matplotlib's tab10, easy to tell apart).
 JOINT_COLOURS = {
@@ -128,18 +128,18 @@ def origin_lines(joint: Joint) -> list[str]:
     """``xyz: ...`` and ``rpy: ...``, each left out when zero."""
     parts = []
     if any(joint.origin.xyz):
-        parts.append("xyz: " + " ".join(short(v) for v in joint.origin.xyz))
+        parts.append("xyz: " + " ".join(readable(v) for v in joint.origin.xyz))
     if any(joint.origin.rpy):
-        parts.append("rpy: " + " ".join(short(v) for v in joint.origin.rpy))
+        parts.append("rpy: " + " ".join(readable(v) for v in joint.origin.rpy))
     return parts
 
 
 def joint_lines(joint: Joint, style: Style) -> list[str]:
     lines = [joint.name, joint.type or "unknown type"]
     if joint.type in MOVING_AXIS_TYPES:
-        lines.append("axis " + axis_text(joint.axis, short))
+        lines.append("axis " + axis_text(joint.axis, readable))
     if style.limits:
-        lines += limit_text(joint, short, full=True).split(", ")
+        lines += limit_text(joint, readable, full=True).split(", ")
     return lines
 
 
@@ -148,14 +148,14 @@ def link_lines(robot: Robot, names: list[str], style: Style) -> list[str]:
     lines = [names[0]]
     if style.inertial:
         inertial = robot.links[names[0]].inertial
-        lines.append("no inertial" if inertial is None or inertial.mass is None else f"mass {short(inertial.mass)} kg")
+        lines.append("no inertial" if inertial is None or inertial.mass is None else f"mass {readable(inertial.mass)} kg")
     shown = names[1:9]
     lines += [f"+ {name}" for name in shown]
     if len(names) > 1 + len(shown):
         lines.append(f"+ {len(names) - 1 - len(shown)} more")
     if style.inertial and len(names) > 1:
         masses = [robot.links[n].inertial.mass for n in names if robot.links[n].inertial and robot.links[n].inertial.mass]
-        lines.append(f"total mass {short(sum(masses))} kg")
+        lines.append(f"total mass {readable(sum(masses))} kg")
     return lines
 
 
