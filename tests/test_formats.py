@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import json
+import subprocess
 
 import pytest
 from conftest import run_cli
@@ -154,3 +155,71 @@ def test_sarif_relative_paths_stay_relative(models):
     typo, _ = models
     log = json.loads(run_cli("lint", "--format", "sarif", typo.name, cwd=typo.parent).stdout)
     assert log["runs"][0]["results"][0]["locations"][0]["physicalLocation"]["artifactLocation"]["uri"] == "typo.urdf"
+
+
+# -- paths GitHub finds: from the top of the repository ------------------------------------
+@pytest.fixture
+def workspace(tmp_path):
+    """A colcon workspace whose src/ holds a git repository with a model in a package."""
+    repository = tmp_path / "ws" / "src" / "my_robot"
+    urdf = repository / "my_robot_description" / "urdf"
+    urdf.mkdir(parents=True)
+    (urdf / "typo.urdf").write_text(TYPO)
+    subprocess.run(["git", "init", "-q", str(repository)], check=True)
+    return tmp_path / "ws", repository
+
+
+NO_WORKSPACE = {"GITHUB_WORKSPACE": ""}
+
+
+def sarif_locations(done) -> tuple[list[dict], dict | None]:
+    [sarif_run] = json.loads(done.stdout)["runs"]
+    return [r["locations"][0]["physicalLocation"]["artifactLocation"] for r in sarif_run["results"]], sarif_run.get("originalUriBaseIds")
+
+
+@pytest.mark.parametrize("where", ["above", "inside"])
+def test_github_and_sarif_name_files_from_the_top_of_their_repository(workspace, where):
+    """Jackal linted from its colcon workspace was annotated at src/jackal/..., from a folder
+    of it at jackal.gazebo: GitHub reads both from the repository's top, where neither is."""
+    folder, repository = workspace
+    cwd, target = (folder, "src/my_robot") if where == "above" else (repository / "my_robot_description" / "urdf", ".")
+    annotations = run_cli("lint", "--format", "github", target, cwd=cwd, env=NO_WORKSPACE).stdout.decode().splitlines()
+    assert [line.split(",")[0] for line in annotations] == ["::warning file=my_robot_description/urdf/typo.urdf"] * 2
+    locations, bases = sarif_locations(run_cli("lint", "--format", "sarif", target, cwd=cwd, env=NO_WORKSPACE))
+    assert locations == [{"uri": "my_robot_description/urdf/typo.urdf", "uriBaseId": "%SRCROOT%"}] * 2
+    assert bases == {"%SRCROOT%": {"uri": repository.as_uri() + "/"}}
+
+
+def test_sarif_gives_each_repository_its_base(workspace):
+    folder, repository = workspace
+    other = folder / "src" / "other_robot"
+    other.mkdir()
+    (other / "typo.urdf").write_text(TYPO)
+    subprocess.run(["git", "init", "-q", str(other)], check=True)
+    locations, bases = sarif_locations(run_cli("lint", "--format", "sarif", "--select", "M002", "src/my_robot", "src/other_robot", cwd=folder, env=NO_WORKSPACE))
+    assert locations == [{"uri": "my_robot_description/urdf/typo.urdf", "uriBaseId": "%SRCROOT%"}, {"uri": "typo.urdf", "uriBaseId": "%SRCROOT2%"}]
+    assert bases == {"%SRCROOT%": {"uri": repository.as_uri() + "/"}, "%SRCROOT2%": {"uri": other.as_uri() + "/"}}
+
+
+def test_a_checkout_without_git_is_named_from_github_workspace(models):
+    """actions/checkout downloads the repository without .git when git is too old: GITHUB_WORKSPACE is its top."""
+    typo, _ = models
+    inside = typo.parent / "urdf"
+    inside.mkdir()
+    typo.rename(inside / "typo.urdf")
+    env = {"GITHUB_WORKSPACE": str(typo.parent)}
+    annotation = run_cli("lint", "--format", "github", "--select", "M002", "typo.urdf", cwd=inside, env=env).stdout.decode()
+    assert annotation.startswith("::warning file=urdf/typo.urdf,line=5")
+    # a file in no repository and outside the workspace keeps its name
+    elsewhere = run_cli("lint", "--format", "github", "--select", "M002", "typo.urdf", cwd=inside, env=NO_WORKSPACE).stdout.decode()
+    assert elsewhere.startswith("::warning file=typo.urdf,line=5")
+
+
+def test_diff_annotations_name_files_from_the_top_of_their_repository(workspace):
+    folder, repository = workspace
+    urdf = repository / "my_robot_description" / "urdf"
+    (urdf / "new.urdf").write_text(TYPO.replace('size="1 1 1"', 'size="1 1 2"'))
+    done = run_cli("diff", "--format", "github", "src/my_robot/my_robot_description/urdf/typo.urdf",
+                   "src/my_robot/my_robot_description/urdf/new.urdf", cwd=folder, env=NO_WORKSPACE)
+    assert done.returncode == 1, done.stderr
+    assert done.stdout.decode().startswith("::notice file=my_robot_description/urdf/new.urdf,line=4,")

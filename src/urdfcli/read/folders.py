@@ -26,3 +26,9 @@ def nearest(start: Path, found_in: Callable[[Path], T | None], known: dict[Path,
     for seen in passed:
         known[seen] = answer
     return answer
+
+
+def repository_root(start: Path, known: dict[Path, Path | None]) -> Path | None:
+    """The top folder of the git repository holding ``start``: the nearest folder at or
+    above it with a ``.git`` (a folder, or the file of a worktree or a submodule)."""
+    return nearest(start, lambda folder: folder if (folder / ".git").exists() else None, known)

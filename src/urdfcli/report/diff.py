@@ -22,6 +22,7 @@ from .escape import escape
 from .github import escape_data, escape_property
 from .json import dumps
 from .lines import plural
+from .repository import RepositoryPaths
 from .tree import readable, significant_digits
 
 FORMATS = DIFF_FORMATS
@@ -293,14 +294,13 @@ def report_markdown(difference: Difference, output: Output) -> None:
 
 
 # -- github ------------------------------------------------------------------------------
-def annotation(change: Change, strip: tuple[str, ...]) -> str:
+def annotation(change: Change, strip: tuple[str, ...], paths: RepositoryPaths) -> str:
     location = change.anchor if change.kind == "removed" else change.location
     props = []
     if location is not None:
-        file = location.file
-        for prefix in strip:  # REV:PATH: the file at its path in the repository
-            if file.startswith(prefix):
-                file = file[len(prefix):]
+        prefix = next((p for p in strip if location.file.startswith(p)), None)
+        # REV:PATH names the file by its path in the repository already
+        file = location.file[len(prefix):] if prefix is not None else paths.path(location.file)
         props.append(f"file={escape_property(file)}")
         if location.line:
             props.append(f"line={location.line}")
@@ -313,7 +313,8 @@ def annotation(change: Change, strip: tuple[str, ...]) -> str:
 def report_github(difference: Difference, output: Output, revisions: tuple[str, ...] = ()) -> None:
     strip = tuple(f"{revision}:" for revision in revisions)
     output.out.file.writelines(f"::notice title=urdfcli diff::{escape_data(note)}\n" for note in difference.notes)
-    output.out.file.writelines(annotation(change, strip) + "\n" for change in difference.comparison.changes)
+    paths = RepositoryPaths.from_environment()
+    output.out.file.writelines(annotation(change, strip, paths) + "\n" for change in difference.comparison.changes)
 
 
 def report(difference: Difference, output: Output, name: str, revisions: tuple[str, ...] = ()) -> None:

@@ -1,4 +1,5 @@
-"""GitHub Actions workflow annotations."""
+"""GitHub Actions workflow annotations, each file named from the top of its repository
+(:mod:`.repository`), where GitHub looks for it."""
 
 from __future__ import annotations
 
@@ -8,6 +9,7 @@ from ..diagnostics import Diagnostic
 from .base import Reporter
 from .escape import escape
 from .lines import severity_name
+from .repository import RepositoryPaths
 
 if TYPE_CHECKING:
     from ..model.result import Result
@@ -24,9 +26,9 @@ def escape_property(text: str) -> str:
     return escape_data(text).replace(":", "%3A").replace(",", "%2C")
 
 
-def line(diagnostic: Diagnostic) -> str:
+def line(diagnostic: Diagnostic, paths: RepositoryPaths) -> str:
     location = diagnostic.location
-    props = [f"file={escape_property(location.file)}"]
+    props = [f"file={escape_property(paths.path(location.file))}"]
     if location.line:
         props.append(f"line={location.line}")
         if location.column:
@@ -43,4 +45,5 @@ class GithubReporter(Reporter):
     name = "github"
 
     def lint(self, results: list[Result]) -> None:
-        self.output.out.file.writelines(line(d) + "\n" for result in results for d in result.displayed)
+        paths = RepositoryPaths.from_environment()
+        self.output.out.file.writelines(line(d, paths) + "\n" for result in results for d in result.displayed)

@@ -3,6 +3,13 @@
 One run; ``tool.driver.rules`` lists every rule of the registry with its
 documentation; each result names its rule by id and index, its level, and a
 region whose ``startLine`` is the diagnostic's line (1 when it has none).
+
+A file in a git repository is named by its path from the repository's top
+(:mod:`.repository`), the ``uri`` GitHub code scanning matches against the
+repository's files, with a ``uriBaseId`` that ``originalUriBaseIds`` resolves to
+the repository's folder, as the SARIF specification asks of a relative reference
+(§3.4.4; GitHub ignores both). Another file keeps its name: a relative path as
+written, an absolute one as a ``file://`` URI.
 """
 
 from __future__ import annotations
@@ -17,6 +24,7 @@ from ..version import __version__
 from .base import Reporter
 from .escape import json_escape
 from .lines import severity_name
+from .repository import RepositoryPaths
 
 if TYPE_CHECKING:
     from ..model.result import Result
@@ -37,12 +45,28 @@ def rule_descriptor(rule: Rule) -> dict:
     }
 
 
-def artifact_uri(file: str) -> str:
-    path = Path(file)
-    return path.as_uri() if path.is_absolute() else path.as_posix()
+class Artifacts:
+    """The ``artifactLocation`` of each file of a run, and the repositories they name:
+    ``%SRCROOT%``, then ``%SRCROOT2%``... when the files are in several."""
+
+    def __init__(self, paths: RepositoryPaths) -> None:
+        self.paths = paths
+        self.bases: dict[Path, str] = {}
+
+    def location(self, file: str) -> dict:
+        root, path = self.paths.locate(file)
+        if root is None:
+            named = Path(file)
+            return {"uri": named.as_uri() if named.is_absolute() else named.as_posix()}
+        base = self.bases.setdefault(root, f"%SRCROOT{len(self.bases) + 1 if self.bases else ''}%")
+        return {"uri": path, "uriBaseId": base}
+
+    def original_uri_base_ids(self) -> dict:
+        """Each base id's folder, an absolute URI ending in ``/`` as the specification asks."""
+        return {base: {"uri": root.as_uri().rstrip("/") + "/"} for root, base in self.bases.items()}
 
 
-def result(diagnostic: Diagnostic, index: dict[str, int]) -> dict:
+def result(diagnostic: Diagnostic, index: dict[str, int], artifacts: Artifacts) -> dict:
     location = diagnostic.location
     region = {"startLine": location.line or 1}
     if location.column:
@@ -50,7 +74,7 @@ def result(diagnostic: Diagnostic, index: dict[str, int]) -> dict:
     notes = [diagnostic.through] if diagnostic.through else []
     notes += [f"hint: {diagnostic.hint}"] if diagnostic.hint else []
     message = "\n".join([diagnostic.message, *notes])
-    physical = {"artifactLocation": {"uri": artifact_uri(location.file)}, "region": region}
+    physical = {"artifactLocation": artifacts.location(location.file), "region": region}
     found = {
         "ruleId": diagnostic.code,
         "level": LEVELS[severity_name(diagnostic)],
@@ -64,42 +88,40 @@ def result(diagnostic: Diagnostic, index: dict[str, int]) -> dict:
     if diagnostic.model:
         found["properties"] = {"model": diagnostic.model}
     if location.trace:
-        found["relatedLocations"] = [related(i, call) for i, call in enumerate(location.trace)]
+        found["relatedLocations"] = [related(i, call, artifacts) for i, call in enumerate(location.trace)]
     return found
 
 
-def related(index: int, call) -> dict:
+def related(index: int, call, artifacts: Artifacts) -> dict:
     """A macro call that made the element: innermost first."""
     region = {"startLine": call.line or 1}
     if call.column:
         region["startColumn"] = call.column
     return {
         "id": index,
-        "physicalLocation": {"artifactLocation": {"uri": artifact_uri(call.file)}, "region": region},
+        "physicalLocation": {"artifactLocation": artifacts.location(call.file), "region": region},
         "message": {"text": f"in macro '{call.macro}' called here"},
     }
 
 
-def render(results) -> str:
+def render(results, paths: RepositoryPaths) -> str:
     rules = sorted(REGISTRY.values(), key=lambda r: r.code)
     index = {rule.code: i for i, rule in enumerate(rules)}
-    document = {
-        "$schema": SCHEMA,
-        "version": "2.1.0",
-        "runs": [
-            {
-                "tool": {
-                    "driver": {
-                        "name": "urdfcli",
-                        "version": __version__,
-                        "rules": [rule_descriptor(rule) for rule in rules],
-                    }
-                },
-                "results": [result(d, index) for found in results for d in found.displayed],
-                "columnKind": "unicodeCodePoints",
+    artifacts = Artifacts(paths)
+    run = {
+        "tool": {
+            "driver": {
+                "name": "urdfcli",
+                "version": __version__,
+                "rules": [rule_descriptor(rule) for rule in rules],
             }
-        ],
+        },
+        "results": [result(d, index, artifacts) for found in results for d in found.displayed],
+        "columnKind": "unicodeCodePoints",
     }
+    if artifacts.bases:
+        run["originalUriBaseIds"] = artifacts.original_uri_base_ids()
+    document = {"$schema": SCHEMA, "version": "2.1.0", "runs": [run]}
     return json_escape(json.dumps(document, indent=2, ensure_ascii=False))
 
 
@@ -109,4 +131,4 @@ class SarifReporter(Reporter):
     name = "sarif"
 
     def lint(self, results: list[Result]) -> None:
-        self.output.out.file.write(render(results) + "\n")
+        self.output.out.file.write(render(results, RepositoryPaths.from_environment()) + "\n")
