@@ -218,8 +218,7 @@ def test_a_library_its_models_include_only_with_an_argument_is_a_gap_the_models_
         "urdf/hand.xacro: X006 warning: xacro library checked on its own only: no model that includes it could check it "
         "(urdf/arm.urdf.xacro does not read it with its default arguments)"
     )
-    assert ("not checked through urdf/arm.urdf.xacro: it does not read this file with its default arguments; "
-            "list argument sets under which it does in [tool.urdfcli] models") in done.stderr.decode()
+    assert "not checked through" not in done.stderr.decode()  # X006 says it, once
     (tmp_path / "pyproject.toml").write_text('[tool.urdfcli]\nmodels = { "urdf/arm.urdf.xacro" = [[], ["hand:=true"]] }\n')
     done, report = check_json("urdf/hand.xacro", cwd=tmp_path)
     assert done.returncode == 0 and report["files"][0]["diagnostics"] == []
@@ -579,3 +578,82 @@ def test_a_file_its_includer_reads_only_under_a_condition_is_not_sent_to_see_wha
         "urdf/gripper.urdf.xacro: not checked: included by urdf/base.urdf.xacro, whose expansion did not read it "
         "(under a condition, or in a macro not called): list argument sets of a model that reads it in [tool.urdfcli] models"
     )
+
+
+def jackal_like(root: Path) -> None:
+    """Jackal's accessories: a model that includes its accessories' libraries, one under
+    conditions on environment variables ($(optenv)), and one always but calling its
+    macro only under such a condition; the mount's macro writes <metrial>."""
+    (root / ".git").mkdir()
+    write(root / "urdf" / "accessories" / "camera_mount.urdf.xacro", f"""\
+        <robot {XACRO}>
+          <xacro:macro name="camera_mount" params="prefix">
+            <link name="${{prefix}}_camera_mount">
+              <visual><geometry><box size="0.1 0.1 0.1"/></geometry><metrial name="dark_grey"/></visual>
+            </link>
+          </xacro:macro>
+        </robot>
+        """)
+    write(root / "urdf" / "accessories" / "laser.urdf.xacro", f"""\
+        <robot {XACRO}>
+          <xacro:macro name="laser" params="prefix">
+            <link name="${{prefix}}_laser"/>
+            <joint name="${{prefix}}_laser_joint" type="fixed"><parent link="${{prefix}}_mount"/><child link="${{prefix}}_laser"/></joint>
+          </xacro:macro>
+        </robot>
+        """)
+    write(root / "urdf" / "robot.urdf.xacro", f"""\
+        <robot name="jackal" {XACRO}>
+          <link name="base_link"/>
+          <link name="front_mount"/>
+          <joint name="front_mount_joint" type="fixed"><parent link="base_link"/><child link="front_mount"/></joint>
+          <xacro:if value="$(optenv URDFCLI_TEST_LASER 0)">
+            <xacro:unless value="$(optenv URDFCLI_TEST_LASER_OTHER 0)">
+              <xacro:include filename="accessories/laser.urdf.xacro"/>
+              <xacro:laser prefix="front"/>
+            </xacro:unless>
+          </xacro:if>
+          <xacro:include filename="accessories/camera_mount.urdf.xacro"/>
+          <xacro:if value="$(optenv URDFCLI_TEST_FLEA3 0)">
+            <xacro:camera_mount prefix="front"/>
+            <joint name="camera_joint" type="fixed"><parent link="front_mount"/><child link="front_camera_mount"/></joint>
+          </xacro:if>
+        </robot>
+        """)
+
+
+def test_a_library_read_but_none_of_whose_macros_is_called_is_not_checked_through_the_model(tmp_path):
+    """Jackal's camera_mount.urdf.xacro: jackal.urdf.xacro includes it always, but calls its
+    macro only with JACKAL_FLEA3=1. It was said to be checked through the model, and a
+    <metrial> in its macro passed: nothing of the macro was expanded."""
+    jackal_like(tmp_path)
+    done = run_cli("lint", "urdf/accessories/camera_mount.urdf.xacro", cwd=tmp_path, env={"URDFCLI_TEST_FLEA3": "0"})
+    out = done.stdout.decode()
+    assert done.returncode == 1, out
+    assert out.startswith(
+        "urdf/accessories/camera_mount.urdf.xacro: X006 warning: xacro library checked on its own only: no model that includes it "
+        "could check it (urdf/robot.urdf.xacro reads it but calls none of its macros ('camera_mount') with its default arguments)"
+    )
+    assert "e.g. URDFCLI_TEST_FLEA3=1 urdfcli lint urdf/accessories/camera_mount.urdf.xacro" in out
+    assert "checked through" not in out + done.stderr.decode()
+    # what the hint says to do checks the macro, and finds the typo
+    done = run_cli("lint", "urdf/accessories/camera_mount.urdf.xacro", cwd=tmp_path, env={"URDFCLI_TEST_FLEA3": "1"})
+    out = done.stdout.decode()
+    assert "D001" in out and "<metrial>" in out and "X006" not in out
+    assert "xacro library, checked through urdf/robot.urdf.xacro" in out
+
+
+def test_a_library_its_models_include_under_environment_variables_names_them_once(tmp_path):
+    """Jackal's accessories, included under conditions on $(optenv JACKAL_LASER 0): the
+    hint said to list argument sets in [tool.urdfcli] models, which set xacro arguments
+    only and cannot reach them, and the fact was said three times. It names the
+    variables to set (not one whose default already opens the way), once."""
+    jackal_like(tmp_path)
+    done = run_cli("lint", "urdf/accessories/laser.urdf.xacro", cwd=tmp_path, env={"URDFCLI_TEST_LASER": "0"})
+    out, err = done.stdout.decode(), done.stderr.decode()
+    assert out.count("does not read it with its default arguments") == 1 and "not checked through" not in out + err
+    assert ("hint: its models use it only under environment variables, which argument sets cannot set: check with them set, "
+            "e.g. URDFCLI_TEST_LASER=1 urdfcli lint urdf/accessories/laser.urdf.xacro") in out
+    assert "[tool.urdfcli] models" not in out and "URDFCLI_TEST_LASER_OTHER" not in out
+    done = run_cli("lint", "urdf/accessories/laser.urdf.xacro", cwd=tmp_path, env={"URDFCLI_TEST_LASER": "1"})
+    assert done.returncode == 0 and "xacro library, checked through urdf/robot.urdf.xacro" in done.stdout.decode()

@@ -264,7 +264,7 @@ def check_target(target: Target, session: Session) -> Result | Unreadable:
         if target.alone:  # a library: its own xacro, and what the source rules find in it
             document, found = read_document(path, session.inputs, resolver, arguments)
             if target.unchecked:
-                found.append(unchecked_library(path, target.unchecked, needs=target.needs))
+                found.append(unchecked_library(path, target.unchecked, needs=target.needs, environment=target.environment))
             loaded = Loaded(document, diagnostics=found, resolver=resolver, meshes=session.meshes, sources=sources(document))
             diagnostics = linter.lint(loaded, config, rule_set)
             return Result(path, tuple(diagnostics), None, target.arguments, includes=tuple(document.includes))
@@ -285,6 +285,7 @@ def check_target(target: Target, session: Session) -> Result | Unreadable:
     audited = _audit(loaded, config, options.audit, session) if options.audit is not None else None
     return Result(
         path, tuple(diagnostics), loaded, target.arguments, includes=tuple(document.includes), needs_argument=document.missing_argument,
+        called=tuple(sorted({call[3] for call in document.origins.calls})) if document.origins is not None else None,
         meshes=meshes, audit=audited, compatibility=verdicts(diagnostics, config.targets),
     )
 

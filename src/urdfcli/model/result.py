@@ -48,7 +48,9 @@ class Result:
     in ``[tool.urdfcli] models``. ``loaded`` (the document and robot read) is None
     for a library, an unreadable input, and a result sent back from another process
     (``robot_name`` is kept). ``includes`` are the files the xacro expansion read;
-    ``needs_argument`` a xacro argument the model needs and was not given; ``meshes``
+    ``needs_argument`` a xacro argument the model needs and was not given; ``called``
+    the names of the macros the expansion called (as written after ``xacro:``; None when
+    not known: no expansion, or one that failed); ``meshes``
     what ``lint`` read of each mesh file; ``audit`` the mass-property audit of
     ``urdfcli inertia``; ``compatibility`` what each consumer of ``--target`` does
     with the model, as urdfcli predicts it."""
@@ -60,6 +62,7 @@ class Result:
     library: Library | None = None
     includes: tuple[str, ...] = ()
     needs_argument: str | None = None
+    called: tuple[str, ...] | None = None
     meshes: tuple[MeshFile, ...] = ()
     audit: Audit | None = None
     compatibility: tuple[Verdict, ...] = ()

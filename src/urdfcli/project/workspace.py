@@ -49,7 +49,7 @@ from ..model.sources import XacroSources
 from ..read.document import STDIN, Document
 from ..read.packages import PackageIndex, PackageResolver, files_below
 from ..read.files import SourceFile, SourceFiles
-from ..read.xacro_scan import XacroFile, XacroGlobals, shown
+from ..read.xacro_scan import DIRECTIVES, XacroFile, XacroGlobals, is_xacro, local_name, shown
 from ..rules import structure
 from ..rules.structure import X004 as PACKAGE_NOT_FOUND
 from ..rules.tree import joint_link_not_found
@@ -466,6 +466,7 @@ class Target(NamedTuple):
     unchecked: str = ""  # alone: why the models that include it could not check it
     fragment: bool = False  # alone: a file that cannot be read on its own; only why no model checked it is said
     needs: tuple[str, str] | None = None  # alone: a model that includes it and the xacro argument it needs
+    environment: tuple[tuple[str, ...], ...] = ()  # alone: the ways environment variables make its models read it (NAME=VALUE each)
 
     @property
     def label(self) -> str:
@@ -484,14 +485,41 @@ class Maybe(NamedTuple):
     argument: tuple[str, str] | None = None  # the xacro argument, and its value, that name the library (when one does)
 
 
+Gate = tuple[str, str, str]  # (function, name, value): see Gates
+
+
+class Gates(NamedTuple):
+    """What the models that include a library read to decide whether to read it
+    (``include``: the conditions around each include leading to it, and the include's
+    file name) and whether to call its macros (``call``: the conditions around each
+    call). One set of gates a place (each place is one way in; all of its gates must
+    open), places under no condition left out. A gate is (function, name, value):
+    function "env" (``$(env)``, ``$(optenv)``) or "arg" (``$(arg)``), and the value
+    that opens it ("" when it cannot be told)."""
+
+    include: tuple[tuple[Gate, ...], ...] = ()
+    call: tuple[tuple[Gate, ...], ...] = ()
+
+    def environment(self, reading: bool, calling: bool) -> tuple[tuple[str, ...], ...]:
+        """The ways in (of reading the library, of calling its macros) that environment
+        variables alone open, each as its NAME=VALUE assignments."""
+        ways = (self.include if reading else ()) + (self.call if calling else ())
+        return tuple(dict.fromkeys(
+            tuple(dict.fromkeys(f"{name}={value or 'VALUE'}" for _, name, value in way)) for way in ways if all(g[0] == "env" for g in way)
+        ))
+
+
 class Entry(NamedTuple):
     """A given file: a model and its runs, or a library and the models it is checked through
-    (and, when none is, those that may include it: ``maybe``)."""
+    (and, when none is, those that may include it: ``maybe``), the macros it defines, and
+    what its models read to decide whether to read it and call them (``gates``)."""
 
     path: str
     targets: list[Target]
     library: bool = False
     maybe: tuple[Maybe, ...] = ()
+    macros: tuple[str, ...] = ()
+    gates: Gates = Gates()
 
 
 MODEL_SUFFIXES = (".urdf", ".urdf.xacro", ".srdf", ".srdf.xacro")
@@ -602,7 +630,10 @@ def plan(paths: list[str], config_for, package_paths: tuple[str, ...] = (), pack
             continue
         targets = _includers(library, index, config, config_for, packages, candidates_of)
         maybe = () if targets else _computing_includers(library, index, config, config_for, packages, candidates_of)
-        entries.append(Entry(path, targets, library=True, maybe=maybe))
+        scan = index.xacro_file(library)
+        macros = tuple(dict.fromkeys(m.name for m in scan.macros if m.name)) if scan is not None else ()
+        gates = _gates(library, macros, targets, index) if targets else Gates()
+        entries.append(Entry(path, targets, library=True, maybe=maybe, macros=macros, gates=gates))
     return entries
 
 
@@ -649,6 +680,81 @@ def _includers(file: Path, index: Index, config, config_for, packages: PackageIn
         if any(index.reaches(model, file, arguments) for arguments in (sets or [None])):
             targets += model_targets(shown(model), sets)
     return targets
+
+
+_READS = re.compile(r"\$\(\s*(optenv|env|arg)\s+([^\s()]+)([^()]*)\)")
+_FALSE = ("", "0", "false", "False")
+
+
+def _gates(library: Path, macros: tuple[str, ...], targets: list[Target], index: Index) -> Gates:
+    """What the models of ``targets`` read to decide whether to read ``library`` and whether
+    to call its ``macros``: the substitutions of the xacro:if and xacro:unless around each
+    include leading to it and each call of its macros (up to the macro body holding it,
+    whose own callers decide), and those of the include's file name."""
+    include: dict[tuple[Gate, ...], None] = {}
+    call: dict[tuple[Gate, ...], None] = {}
+    names = set(macros)
+    for model in dict.fromkeys(Path(t.path).resolve() for t in targets):
+        reached, _ = index.reachable(model)
+        files = [model, *sorted(reached)]
+        leading = {library}  # the files whose expansion reads the library
+        grown = True
+        while grown:
+            grown = False
+            for file in files:
+                if file not in leading and any(i.may_be(target) for i in index.includes(file) for target in leading):
+                    leading.add(file)
+                    grown = True
+        for file in files:
+            found = index.files.get(shown(file))
+            if found is None or found.tree is None or file == library:
+                continue
+            properties = dict(index.source(file).properties)
+            includes = iter(index.includes(file))
+            for element in found.tree.iter():
+                if not is_xacro(element):
+                    continue
+                local = local_name(element.tag)
+                if local == "include" and element.get("filename"):
+                    leads = next(includes, None)
+                    if leads is not None and any(leads.may_be(target) for target in leading):
+                        include[tuple(dict.fromkeys(_conditions(element, properties) + _read_by(element.get("filename"), properties, shown(library))))] = None
+                elif (element.get("macro", "") if local == "call" else "" if local in DIRECTIVES else local).rpartition(".")[2] in names:
+                    call[tuple(dict.fromkeys(_conditions(element, properties)))] = None
+    return Gates(tuple(way for way in include if way), tuple(way for way in call if way))
+
+
+def _conditions(element, properties: dict[str, str]) -> list[tuple[str, str, str]]:
+    """The gates of the xacro:if and xacro:unless around an element, up to a macro body, outermost first."""
+    found: list[Gate] = []
+    for around in element.iterancestors():
+        if not is_xacro(around):
+            continue
+        local = local_name(around.tag)
+        if local == "macro":
+            break
+        if local in ("if", "unless"):
+            found[:0] = _read_by(around.get("value") or "", properties, "1" if local == "if" else "0")
+    return found
+
+
+def _read_by(text: str, properties: dict[str, str], opening: str) -> list[tuple[str, str, str]]:
+    """The environment variables and arguments ``text`` reads, directly or through a
+    property's value, with the value that opens the gate: ``opening`` when the text is the
+    substitution alone, "" when it is computed from it. For a condition ("1" or "0"),
+    an optional variable whose default already opens it needs no value: it is left out."""
+    text = text.strip()
+    found = []
+    property_ = re.fullmatch(r"\$\{\s*([A-Za-z_]\w*)\s*\}", text)
+    if property_ is not None and property_.group(1) in properties:
+        text = properties[property_.group(1)].strip()  # ${use_laser}: what the property reads
+    for match in _READS.finditer(text):
+        function, name, default = match.group(1), match.group(2), match.group(3).strip()
+        alone = match.group(0) == text
+        if alone and opening in ("1", "0") and function == "optenv" and (default in _FALSE) == (opening == "0"):
+            continue  # its default opens it
+        found.append(("arg" if function == "arg" else "env", name, opening if alone else ""))
+    return found
 
 
 def _computing_includers(file: Path, index: Index, config, config_for, packages: PackageIndex, candidates_of: dict) -> tuple[Maybe, ...]:
@@ -899,6 +1005,7 @@ def _library_result(
     needs: tuple[str, str] | None = None  # the first of them and the argument it needs, for the hint
     unread: list[tuple[str, str]] = []  # models that expand but do not read it: (label, with which arguments)
     used: list[Result] = []  # the models it was checked through
+    uncalled: list[str] = []  # models that read it but call none of its macros
     for target in entry.targets:
         model = outcome(target)
         if isinstance(model, Unreadable):
@@ -922,24 +1029,29 @@ def _library_result(
             continue
         checked_through.append(target.label)
         used.append(model)
+    called = {name.rpartition(".")[2] for model in used for name in model.called or ()}
+    if entry.macros and used and all(model.called is not None for model in used) and not called & set(entry.macros):
+        # it was read, but what it is for was not expanded: nothing in its macros was checked
+        names = ", ".join(f"'{name}'" for name in entry.macros)
+        for target in entry.targets:
+            if target.label in checked_through:
+                arguments = "the arguments it is checked with" if target.arguments else "its default arguments"
+                uncalled.append(f"{target.label} reads it but calls none of its macros ({names}) with {arguments}")
+        checked_through = []
     unused = _unused_in_all(used, resolved)
     for model in used:  # mistakes written in the library, and whatever breaks a model that uses it
         found += [_through(d, model) for d in model.diagnostics if unused(d) and (_same(d.path, library) or (d.severity is Severity.ERROR and not theirs))]
     # When models include it but none could check it, that is a gap (X006) the config closes.
-    reasons = needing + [f"{label} does not read it with {arguments}" for label, arguments in unread]
+    reasons = needing + [f"{label} does not read it with {arguments}" for label, arguments in unread] + uncalled
+    environment = entry.gates.environment(reading=bool(unread), calling=bool(uncalled))
     if not checked_through and fragment:
         notes += [f"not checked through {label}: it does not read this file with {arguments}" for label, arguments in unread]
         notes.append("a fragment of the models that include it (it cannot be read on its own), and none read it: not checked")
         if reasons:
             said = outcome(Target(entry.path, alone=True, unchecked="; ".join(reasons), fragment=True, needs=needs))
             found += said.diagnostics if isinstance(said, Result) else ()
-    elif not checked_through:  # checked on its own
-        notes += [
-            f"not checked through {label}: it does not read this file with {arguments}; "
-            "list argument sets under which it does in [tool.urdfcli] models"
-            for label, arguments in unread
-        ]
-        alone = outcome(Target(entry.path, alone=True, unchecked="; ".join(reasons), needs=needs))
+    elif not checked_through:  # checked on its own: its X006 says why, and what would check it
+        alone = outcome(Target(entry.path, alone=True, unchecked="; ".join(reasons), needs=needs, environment=environment))
         if isinstance(alone, Unreadable):
             unreadable.append(alone)
         else:
@@ -981,17 +1093,21 @@ def _may_include(maybe: Maybe, outcome) -> str:
     )
 
 
-def unchecked_library(path: str, unchecked: str, fragment: bool = False, needs: tuple[str, str] | None = None) -> Diagnostic:
+def unchecked_library(
+    path: str, unchecked: str, fragment: bool = False, needs: tuple[str, str] | None = None, environment: tuple[tuple[str, ...], ...] = (),
+) -> Diagnostic:
     """X006: a library (or a fragment, which cannot be read alone) that no model including it
-    could check; ``needs``: a model that includes it and the argument it needs, for the hint."""
+    could check; ``needs``: a model that includes it and the argument it needs, for the hint;
+    ``environment``: the ways environment variables make its models use it (NAME=VALUE
+    each), which no argument set can give (``[tool.urdfcli] models`` sets xacro arguments only)."""
     what = "xacro fragment not checked" if fragment else "xacro library checked on its own only"
     model, argument = needs if needs is not None else ("urdf/robot.urdf.xacro", "name")
-    return Diagnostic(
-        "X006",
-        f"{what}: no model that includes it could check it ({unchecked})",
-        Location("<stdin>" if path == STDIN else path),
-        hint=f'list their argument sets in [tool.urdfcli] models (paths from the configuration\'s folder), e.g. models = {{ "{model}" = [["{argument}:=VALUE"]] }}',
-    )
+    if environment:
+        others = "".join(f" (or {' '.join(way)})" for way in environment[1:3])
+        hint = f"its models use it only under environment variables, which argument sets cannot set: check with them set, e.g. {' '.join(environment[0])} urdfcli lint {path}{others}"
+    else:
+        hint = f'list their argument sets in [tool.urdfcli] models (paths from the configuration\'s folder), e.g. models = {{ "{model}" = [["{argument}:=VALUE"]] }}'
+    return Diagnostic("X006", f"{what}: no model that includes it could check it ({unchecked})", Location("<stdin>" if path == STDIN else path), hint=hint)
 
 
 __all__ = [
