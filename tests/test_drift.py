@@ -118,8 +118,60 @@ def test_an_argument_that_may_explain_the_difference_is_named(tmp_path, monkeypa
     assert found.message.startswith("kr16_2.urdf does not match kr16_2.xacro, which generated it: it calls link 'left_base_link' what kr16_2.xacro calls 'base_link' and ")
     assert found.hint == (
         "regenerate it: urdfcli expand kr16_2.xacro -o kr16_2.urdf (it was expanded with the arguments' defaults; "
-        "the URDF may have been generated with other values of prefix:='', read where they differ)"
+        "the URDF may have been generated with other values of prefix:='': `urdfcli diff kr16_2.urdf kr16_2.xacro` shows what differs; "
+        "regenerate it with the values it was made with)"
     )
+
+
+OMX = """<?xml version="1.0"?>
+<robot name="omx" xmlns:xacro="http://www.ros.org/wiki/xacro">
+  <xacro:arg name="prefix" default=""/>
+  <xacro:arg name="use_gazebo" default="true"/>
+  <xacro:macro name="arm" params="prefix">
+    <link name="${prefix}link0"/>
+    <link name="${prefix}link1"/>
+    <joint name="${prefix}joint1" type="revolute">
+      <parent link="${prefix}link0"/><child link="${prefix}link1"/>
+      <axis xyz="0 0 1"/><limit lower="-1" upper="1" effort="1" velocity="1"/>
+    </joint>
+  </xacro:macro>
+  <xacro:macro name="arm_gazebo" params="prefix">
+    <gazebo reference="${prefix}link0"><material>Gazebo/Grey</material></gazebo>
+  </xacro:macro>
+  <xacro:macro name="arm_control" params="name prefix">
+    <ros2_control name="${name}" type="system"><joint name="${prefix}joint1"/></ros2_control>
+  </xacro:macro>
+  <xacro:arm prefix="$(arg prefix)"/>
+  <xacro:arm_control name="OMXSystem" prefix="$(arg prefix)"/>
+  <xacro:if value="$(arg use_gazebo)">
+    <xacro:arm_gazebo prefix="$(arg prefix)"/>
+  </xacro:if>
+</robot>
+"""
+
+
+def test_an_argument_passed_to_a_call_does_not_explain_an_element_always_made(tmp_path, monkeypatch):
+    """open_manipulator's omx_f.urdf lacks the <gazebo> blocks and ros2_control its xacro always
+    makes, with the names prefix:='' gives: the hint blamed prefix (read on the calls' lines)
+    and no fix was offered. No value of prefix makes them or not: the plain hint, and the fix."""
+    model = tmp_path / "omx.urdf.xacro"
+    model.write_text(OMX)
+    text = generate(model, "omx.urdf.xacro", use_gazebo="false")
+    text = re.sub(r"\s*<ros2_control .*?</ros2_control>", "", text, flags=re.DOTALL)
+    assert "<gazebo" not in text and "ros2_control" not in text
+    (tmp_path / "omx.urdf").write_text(text)
+    monkeypatch.chdir(tmp_path)
+    (found,) = x110(lint_file("omx.urdf"))
+    assert found.message.endswith("it lacks ros2_control 'OMXSystem' and the <gazebo> block for 'link0' that omx.urdf.xacro makes")
+    # the gazebo block is made under $(arg use_gazebo): that argument may explain it; prefix explains nothing
+    assert "other values of use_gazebo:='true'" in found.hint and "prefix" not in found.hint
+    assert found.fix.reason == "it may have been generated with other values of use_gazebo: regenerate it by hand with those"
+    # only the ros2_control block missing: nothing the arguments decide
+    (tmp_path / "omx.urdf").write_text(generate(model, "omx.urdf.xacro").replace("<ros2_control", "<!--").replace("</ros2_control>", "-->"))
+    (found,) = x110(lint_file("omx.urdf"))
+    assert found.message.endswith("it lacks ros2_control 'OMXSystem' that omx.urdf.xacro makes")
+    assert found.hint == "regenerate it: urdfcli expand omx.urdf.xacro -o omx.urdf, or `urdfcli diff omx.urdf omx.urdf.xacro` lists every difference"
+    assert found.fix.reason is None and found.fix.edits
 
 
 def test_a_source_that_does_not_expand_is_said_as_info(tmp_path, monkeypatch):

@@ -17,6 +17,7 @@ from __future__ import annotations
 import os
 import re
 from collections.abc import Callable, Iterable
+from fnmatch import fnmatchcase
 from pathlib import Path
 from typing import TYPE_CHECKING, NamedTuple
 
@@ -292,29 +293,121 @@ def _plural(tag: str, count: int) -> str:
 
 
 def _explaining_arguments(changes: tuple[Change, ...], source: Loaded, session: Session) -> dict[str, str | None]:
-    """The xacro arguments read (``$(arg NAME)``) on a line that made a differing element of
-    the source, or on a macro call that made it, with their defaults."""
-    lines = set()
+    """The xacro arguments that may explain the differences, with their defaults: for an
+    element the URDF lacks, one read by a condition (``xacro:if``, ``xacro:unless``) around
+    it, around a macro call that made it, or around or in the file name of the include
+    that brought it; for an element that differs, one its values are computed from, written
+    in it or passed to a macro parameter it reads. (An extra element of the URDF was made
+    by nothing in the source: no argument of it is known to explain it.)"""
+    files = [source.document.shown, *source.document.includes]
+    scans = [found.scan for file in files if (found := session.files.get(file)) is not None and found.scan is not None]
+    properties = {name: value for scanned in scans for name, value in scanned.properties}
+    names: set[str] = set()
     for change in changes:
         location = change.location if change.kind != "removed" else None
-        if location is None:
+        if location is None or not location.line:
             continue
-        lines.add((location.file, location.line))
-        lines.update((call.file, call.line) for call in location.trace)
-    names: set[str] = set()
-    files = source.document.files
-    for file, line in lines:
-        text = files.line(file, line) if line else None
-        if text and "$(" in text:
-            names.update(_ARGUMENT.findall(text))
+        element = _element_at(session, location.file, location.line, location.column)
+        if element is None:
+            continue
+        if change.field is None and change.kind != "renamed":  # made or not, as a whole
+            names |= _gating(element, location.file, location.trace, session, scans, properties)
+        else:
+            texts = [value for node in element.iter() for value in (*node.attrib.values(), node.text or "")]
+            names |= _computed_from(texts, location.trace, session, properties)
     defaults: dict[str, str | None] = {}
-    for file in [source.document.shown, *source.document.includes]:
-        read = session.files.get(file)
-        scanned = read.scan if read is not None else None
-        if scanned is not None:
-            for name, value in scanned.arguments:
-                defaults.setdefault(name, value)
+    for scanned in scans:
+        for name, value in scanned.arguments:
+            defaults.setdefault(name, value)
     return {name: defaults.get(name) for name in sorted(names)}
+
+
+_NAME = re.compile(r"[A-Za-z_]\w*")
+
+
+def _computed_from(texts: list[str], trace: tuple, session: Session, properties: dict[str, str]) -> set[str]:
+    """The arguments ``texts`` read: directly, through a property, or through the
+    parameters of the macro calls of ``trace`` (innermost first) that they name."""
+    found: set[str] = set()
+    for _ in range(len(trace) + 1):
+        joined_text = " ".join(texts)
+        found.update(_ARGUMENT.findall(joined_text))
+        named = {name for expression in re.findall(r"\$\{([^}]*)\}", joined_text) for name in _NAME.findall(expression)}
+        found.update(argument for name in named if name in properties for argument in _ARGUMENT.findall(properties[name]))
+        if not trace:
+            break
+        call = _element_at(session, trace[0].file, trace[0].line, trace[0].column)
+        if call is None:
+            break
+        texts = [value for key, value in call.attrib.items() if key in named]  # the parameters the values read
+        trace = trace[1:]
+    return found
+
+
+def _gating(element, file: str, trace: tuple, session: Session, scans: list, properties: dict[str, str]) -> set[str]:
+    """The arguments that decide whether ``element`` (made through the macro calls of
+    ``trace``, innermost first) is made: those of the conditions around it and around each
+    call, the parameters they read given by the calls, and those of the includes bringing
+    in the file where the outermost of them is written."""
+    from ..read.xacro_scan import is_xacro, local_name
+
+    found: set[str] = set()
+    place = element
+    while True:
+        conditions = []
+        in_macro = False
+        for around in place.iterancestors():
+            if is_xacro(around) and local_name(around.tag) in ("if", "unless"):
+                conditions.append(around.get("value") or "")
+            elif is_xacro(around) and local_name(around.tag) == "macro":
+                in_macro = True
+                break
+        found |= _computed_from(conditions, trace, session, properties) if in_macro else _computed_from(conditions, (), session, properties)
+        if not in_macro or not trace:
+            break
+        file, place = trace[0].file, _element_at(session, trace[0].file, trace[0].line, trace[0].column)
+        trace = trace[1:]
+        if place is None:
+            return found
+    return found | _including(file, scans, session, properties)
+
+
+def _including(file: str, scans: list, session: Session, properties: dict[str, str]) -> set[str]:
+    """The arguments of the includes (of the files the expansion read, ``scans``, the
+    model first) that may bring in ``file``: those of their file names and of the
+    conditions around them. None for the model itself."""
+    from ..read.xacro_scan import is_xacro, local_name
+
+    if not scans or _same_file(file, scans[0].name):
+        return set()
+    name = Path(file).name
+    found: set[str] = set()
+    for scanned in scans:
+        if _same_file(file, scanned.name):
+            continue
+        for node in session.files.get(scanned.name).elements:
+            written = node.get("filename") if is_xacro(node) and local_name(node.tag) == "include" else None
+            if not written:
+                continue
+            pattern = re.sub(r"\$\{[^}]*\}|\$\([^)]*\)", "*", written.replace("\\", "/").rpartition("/")[2])
+            if not fnmatchcase(name, pattern):
+                continue
+            conditions = [around.get("value") or "" for around in node.iterancestors() if is_xacro(around) and local_name(around.tag) in ("if", "unless")]
+            found |= _computed_from([written, *conditions], (), session, properties)
+    return found
+
+
+def _same_file(one: str, other: str) -> bool:
+    return one == other or os.path.abspath(one) == os.path.abspath(other)
+
+
+def _element_at(session: Session, file: str, line: int | None, column: int | None):
+    """The element of a source file whose start tag begins at ``line`` (and ``column``, when known)."""
+    found = session.files.get(file)
+    if found is None or not line:
+        return None
+    on_line = [element for element in found.elements if found.place_of(element)[0] == line]
+    return next((e for e in on_line if column is None or found.place_of(e)[1] in (None, column)), on_line[0] if on_line else None)
 
 
 def _hint(loaded: Loaded, source: GeneratedFrom, found: Loaded, arguments: dict[str, str | None], config: Config) -> str:
@@ -323,7 +416,8 @@ def _hint(loaded: Loaded, source: GeneratedFrom, found: Loaded, arguments: dict[
     if arguments:
         said = ", ".join(f"{name}:={value!r}" if value is not None else name for name, value in arguments.items())
         used = "with the values [tool.urdfcli.xacro-args] gives" if given else "with the arguments' defaults"
-        return f"{regenerate} (it was expanded {used}; the URDF may have been generated with other values of {said}, read where they differ)"
+        listed = f"`urdfcli diff {loaded.document.shown} {_shown(source.file)}`"
+        return f"{regenerate} (it was expanded {used}; the URDF may have been generated with other values of {said}: {listed} shows what differs; regenerate it with the values it was made with)"
     return f"{regenerate}, or `urdfcli diff {loaded.document.shown} {_shown(source.file)}` lists every difference"
 
 
