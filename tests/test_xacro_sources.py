@@ -623,6 +623,38 @@ def test_the_undefined_names_are_those_xacro_cannot_evaluate(tmp_path):
     assert flagged == failed == ["undefined_thing", "Pi"]
 
 
+def test_a_name_an_unprefixed_property_defines_is_x107s_alone(tmp_path):
+    """KUKA's kr210l150_macro.xacro: <property name="deg"/> without xacro:, and ${185*deg} in
+    the macro. xacro fails on the name (X003, once); the fix is the prefix (X107): no X106
+    at each use, whose hint offered 'degrees'."""
+    (tmp_path / ".git").mkdir()
+    write(tmp_path / "arm.xacro", library("""
+        <property name="deg" value="0.017453293"/>
+        <xacro:macro name="arm" params="prefix">
+          <link name="${prefix}base"/>
+          <link name="${prefix}link_1"/>
+          <joint name="${prefix}joint_a1" type="revolute">
+            <parent link="${prefix}base"/><child link="${prefix}link_1"/>
+            <limit lower="${-185*deg}" upper="${185*deg}" effort="0" velocity="${123*deg}"/>
+          </joint>
+          <link name="${prefix}link_2"/>
+          <joint name="${prefix}joint_a2" type="revolute">
+            <parent link="${prefix}link_1"/><child link="${prefix}link_2"/>
+            <limit lower="${-45*deg}" upper="${85*deg}" effort="0" velocity="${115*deg}"/>
+          </joint>
+        </xacro:macro>
+        """))
+    model = write(tmp_path / "robot.urdf.xacro", robot('<xacro:include filename="arm.xacro"/><xacro:arm prefix=""/>'))
+    real = subprocess.run([require_tool("xacro"), str(model)], capture_output=True, text=True, cwd=tmp_path)
+    assert real.returncode != 0 and "name 'deg' is not defined" in real.stderr
+    lib = tmp_path / "arm.xacro"
+    assert found(model, codes=("X003", "X106", "X107")) == [
+        ("X003", "arm.xacro", *column_of(lib, "<limit")), ("X107", "arm.xacro", line_of(lib, "<property"), 1),
+    ]
+    edit(lib, "<property", "<xacro:property")
+    assert found(model, codes=("X003", "X106", "X107")) == []
+
+
 @pytest.mark.parametrize("params", [
     "prefix parent *origin **content",
     "x:=1 y:=^ z:=^|d w:=${a * 2} v:='a b' u:=\"c d\" t:=$(arg t)",

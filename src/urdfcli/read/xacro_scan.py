@@ -152,6 +152,7 @@ class Old(NamedTuple):
 
     tag: str
     place: Place
+    value: str = ""  # the attribute that makes it xacro's: the file name, property name or condition
 
 
 class XacroFile:
@@ -310,7 +311,7 @@ class _Scanner:
                 self.attributes(element, at, macro)
             return macro
         if element.prefix is None and local in OLD_DIRECTIVES and element.get(OLD_DIRECTIVES[local]) is not None and _directive_place(element):
-            found.old.append(Old(local, Place(at)))
+            found.old.append(Old(local, Place(at), element.get(OLD_DIRECTIVES[local])))
         if macro is not None and local in NAMED and element.get("name") is not None and _in_body(element):
             found.made.append(Made(local, element.get("name"), Place(at, "name"), macro))
         self.attributes(element, at, macro)

@@ -389,7 +389,8 @@ def name_undefined(loaded, given) -> Iterator[Diagnostic]:
     name in scope. It is a warning, not an error: the model loads as long as
     its expansion never evaluates the name (a macro it does not call, a branch
     its call does not take); where the expansion does evaluate it, xacro's own
-    error (X003) says so at that line.
+    error (X003) says so at that line. A name a `<property>` written without
+    `xacro:` declares is left to X107, which says so once, at that tag.
 
     ## Why is this bad?
     xacro evaluates a macro's body only when it is called: a misspelt name in
@@ -422,13 +423,15 @@ def name_undefined(loaded, given) -> Iterator[Diagnostic]:
     """
     sources = loaded.xacro_sources
     failed = {(d.path, d.line) for d in loaded.diagnostics if d.code == structure.X003.code}
+    # a property written without xacro: is X107's to report, once, at its tag
+    unprefixed = {old.value for file in sources.files for old in file.old if old.tag == "property"}
     for file in sources.files:
         for expression in file.expressions:
             if expression.macro is None:
                 continue
             for name in free_names(expression.text) or ():
                 known = bound(file, expression.macro)
-                if name.name in known:
+                if name.name in known or name.name in unprefixed:
                     continue
                 if sources.xacro is None:
                     return  # without xacro's own names, any name may be one of them
