@@ -623,6 +623,27 @@ def test_the_undefined_names_are_those_xacro_cannot_evaluate(tmp_path):
     assert flagged == failed == ["undefined_thing", "Pi"]
 
 
+def test_the_name_suggested_for_an_undefined_one_is_one_the_macro_can_see(tmp_path):
+    """LMS1xx's sick_lms1xx macro reads ${mass}: the hint offered 'body_mass', a property of
+    create3_sim's robot in another repository of the workspace. Only the names of the
+    macro's files, and of those they include, are offered."""
+    src = tmp_path / "ws" / "src"
+    write(src / "create3" / "package.xml", package_xml("create3"))
+    write(src / "create3" / "urdf" / "create3.urdf.xacro", robot('<xacro:property name="body_mass" value="2.3"/><link name="base_link"/>', name="create3"))
+    write(src / "lms1xx" / "package.xml", package_xml("lms1xx"))
+    lib = write(src / "lms1xx" / "urdf" / "sick_lms1xx.urdf.xacro", library("""
+        <xacro:macro name="sick_lms1xx" params="frame">
+          <link name="${frame}"><inertial><mass value="${mass}"/><inertia ixx="1" ixy="0" ixz="0" iyy="1" iyz="0" izz="1"/></inertial></link>
+        </xacro:macro>
+        """))
+    [warning] = diagnostics(lib, "X106")
+    assert "mass" in warning.message and warning.hint == "add it to the params of macro 'sick_lms1xx', or define it with <xacro:property>"
+    write(src / "lms1xx" / "urdf" / "masses.xacro", library('<xacro:property name="body_mass" value="1.1"/>'))
+    edit(lib, '<xacro:macro name="sick_lms1xx"', '<xacro:include filename="masses.xacro"/><xacro:macro name="sick_lms1xx"')
+    [warning] = diagnostics(lib, "X106")
+    assert warning.hint == "did you mean 'body_mass'?"  # a file it includes: in its scope
+
+
 def test_a_name_an_unprefixed_property_defines_is_x107s_alone(tmp_path):
     """KUKA's kr210l150_macro.xacro: <property name="deg"/> without xacro:, and ${185*deg} in
     the macro. xacro fails on the name (X003, once); the fix is the prefix (X107): no X106

@@ -386,7 +386,9 @@ def name_undefined(loaded, given) -> Iterator[Diagnostic]:
     whole workspace, defines it (a parameter of the calling macro, say). Names
     a comprehension or lambda binds, and expressions Python cannot parse, are
     left alone. The warning is at the name's line and column, with the closest
-    name in scope. It is a warning, not an error: the model loads as long as
+    name the macro can see (its parameters and properties, xacro's names, the
+    properties of the files the model may read, not those of another robot of
+    the workspace). It is a warning, not an error: the model loads as long as
     its expansion never evaluates the name (a macro it does not call, a branch
     its call does not take); where the expansion does evaluate it, xacro's own
     error (X003) says so at that line. A name a `<property>` written without
@@ -448,7 +450,8 @@ def name_undefined(loaded, given) -> Iterator[Diagnostic]:
                     continue  # xacro's own error (X003) says it there
                 macro = file.macros[expression.macro].name
                 called = "nor by every call of it" if sources.calls(macro) else "nor for the whole document (nothing calls the macro)"
-                scope = sorted(known | sources.facts.globals | builtins)
+                # what the macro can see: not the properties of another robot of the workspace
+                scope = sorted(known | sources.reached_facts.globals | builtins)
                 close = close_matches(name.name, scope)
                 hint = f"did you mean '{close[0]}'?" if close else f"add it to the params of macro '{macro}', or define it with <xacro:property>"
                 yield Diagnostic("X106", f"name '{name.name}' is defined neither in macro '{macro}' {called}", location, hint=hint)
