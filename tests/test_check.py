@@ -124,6 +124,17 @@ def test_every_check_code_has_a_case():
     assert not untested
 
 
+@pytest.mark.parametrize("rgba, said", [("255 255 255 1", "V007"), ("1 1 x 1", "V001")])
+def test_a_colour_written_but_unreadable_is_one_finding_not_also_a_material_without_one(tmp_path, rgba, said):
+    """Jackal's novatel_smart6: <material name="white"><color rgba="255 255 255 1"/> in a visual
+    drew V007 and M002 'defined nowhere' (hint: give it a <color rgba>); at the top level,
+    M001 'has neither <color rgba> nor <texture>'. The colour is there: one mistake, one finding."""
+    colour = f'<material name="white"><color rgba="{rgba}"/></material>'
+    assert codes(tmp_path, robot(link_a(visual('<box size="1 1 1"/>', colour)))) == {said}
+    assert codes(tmp_path, robot(colour + link_a(visual('<box size="1 1 1"/>', '<material name="white"/>')))) == {said}
+    assert codes(tmp_path, robot(link_a(visual('<box size="1 1 1"/>', '<material name="white"/>')))) == {"M002"}  # no colour written
+
+
 def test_a_second_material_in_a_visual_is_said_and_a_mesh_scaled_to_nothing_too(tmp_path):
     two = robot(link_a(visual('<box size="1 1 1"/>', '<material name="red"><color rgba="1 0 0 1"/></material><material name="blue"><color rgba="0 0 1 1"/></material>')))
     assert "G004" in codes(tmp_path, two)

@@ -306,12 +306,13 @@ class Reader:
         rgba = self.rgba(element, color) if color is not None and color.get("rgba") is not None else None
         misplaced = element.get("rgba")  # a colour every parser ignores: it belongs in a <color> child
         moved = f'write it in a <color> child: <material name="{name}"><color rgba="{misplaced}"/></material>' if misplaced is not None else None
-        if top_level and rgba is None and texture_file is None:
+        unreadable = rgba is None and color is not None and color.get("rgba") is not None  # V007 or a number error said why
+        if top_level and rgba is None and texture_file is None and not unreadable:
             hint = "did you mean rgba=?" if color is not None and color.get("rgb") is not None else moved
             self.report("M001", f"material '{name}' has neither <color rgba> nor <texture filename>", element, hint)
         elif misplaced is not None and color is None:
             self.report("M005", f"material '{name}' has rgba=\"{misplaced}\" on the <material> element, where every parser ignores it", element, moved, "rgba")
-            self._misplaced_colours.add(self.at(element))  # one mistake: not also "defined nowhere" (M002)
+            self._misplaced_colours.add(self.at(element))
         return Material(name, self.at(element), rgba, texture_file, color.get("rgba") if color is not None else None)
 
     def geometry(self, parent: "Element", element: "Element | None") -> Geometry | None:
@@ -619,7 +620,9 @@ class Reader:
             if not material.name:
                 continue
             if material.rgba is None and material.texture is None:
-                if material.name not in robot.materials and material.name not in seen and material.at not in self._misplaced_colours:
+                # a colour written but unreadable (V007), or written on <material> (M005): one mistake, said once
+                unread = material.rgba_text is not None or material.at in self._misplaced_colours
+                if material.name not in robot.materials and material.name not in seen and not unread:
                     self.diagnostics.append(self.document.diagnostic("M002", f"material '{material.name}' is defined nowhere", material.at, "define it at the top level, or give it a <color rgba>"))
                 continue
             first = seen.setdefault(material.name, material)

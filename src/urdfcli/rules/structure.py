@@ -206,12 +206,13 @@ G004 = declare("G004", "element-repeated", WARNING, "A `<visual>`, `<collision>`
     '<link name="base_link">\n  <visual>\n    <geometry><box size="1 1 1"/></geometry>\n    <geometry><sphere radius="0.5"/></geometry>\n  </visual>\n</link>',
     '<link name="base_link">\n  <visual><geometry><box size="1 1 1"/></geometry></visual>\n  <visual><geometry><sphere radius="0.5"/></geometry></visual>\n</link>'))
 M001 = declare("M001", "material-without-color", ERROR, "A top-level material with neither colour nor texture.", explain(
-    "Flags a top-level `<material>` without `<color rgba>` or `<texture filename>`.",
+    "Flags a top-level `<material>` without `<color rgba>` or `<texture filename>`. A `<color rgba>` written but unreadable (a component out of range, V007; not a number, V001) is said by that rule alone.",
     "A material that defines nothing is a mistake, often `rgb=` written for `rgba=`. check_urdf logs that it has no colour and goes on (exit 0): the visuals that name it get none.",
     '<material name="grey"/>\n<link name="base_link"/>',
     '<material name="grey"><color rgba="0.5 0.5 0.5 1"/></material>\n<link name="base_link"/>'), **U)
 M002 = declare("M002", "material-undefined", WARNING, "A visual names a material defined nowhere.", explain(
-    "Flags a visual's `<material name>` without colour or texture whose name no top-level material defines. A material with an empty name is left alone: urdfdom never looks it up.",
+    "Flags a visual's `<material name>` without colour or texture whose name no top-level material defines. A material with an empty name is left alone: urdfdom never looks it up; "
+    "so is one whose colour is written but unreadable (V007, V001) or written on `<material>` (M005): that rule says so.",
     "check_urdf only warns, and RViz draws the visual in a default colour.",
     '<link name="base_link">\n  <visual><geometry><box size="1 1 1"/></geometry><material name="grey"/></visual>\n</link>',
     '<material name="grey"><color rgba="0.5 0.5 0.5 1"/></material>\n<link name="base_link">\n  <visual><geometry><box size="1 1 1"/></geometry><material name="grey"/></visual>\n</link>'))
