@@ -657,3 +657,55 @@ def test_a_library_its_models_include_under_environment_variables_names_them_onc
     assert "[tool.urdfcli] models" not in out and "URDFCLI_TEST_LASER_OTHER" not in out
     done = run_cli("lint", "urdf/accessories/laser.urdf.xacro", cwd=tmp_path, env={"URDFCLI_TEST_LASER": "1"})
     assert done.returncode == 0 and "xacro library, checked through urdf/robot.urdf.xacro" in done.stdout.decode()
+
+
+def spot(root: Path, arm: str) -> None:
+    """Spot's description: spot.urdf.xacro includes the arm's macro, a file named ``arm``,
+    only with the argument arm:=true."""
+    (root / ".git").mkdir(parents=True)
+    write(root / "urdf" / "spot.urdf.xacro", f"""\
+        <robot name="spot" {XACRO}>
+          <xacro:arg name="arm" default="false"/>
+          <link name="body"/>
+          <xacro:if value="$(arg arm)">
+            <xacro:include filename="{arm}"/>
+            <xacro:load_arm/>
+          </xacro:if>
+        </robot>
+        """)
+    write(root / "urdf" / arm, f"""\
+        <?xml version="1.0"?>
+        <robot name="spot_arm" {XACRO}>
+          <xacro:macro name="load_arm">
+            <link name="arm_link"/>
+            <joint name="arm_joint" type="fixed"><parent link="body"/><child link="arm_link"/></joint>
+          </xacro:macro>
+        </robot>
+        """)
+
+
+def test_a_urdf_file_that_is_a_xacro_library_is_one_as_if_named_xacro(tmp_path):
+    """Spot's spot_arm_macro.urdf: a <robot name=...> holding only a macro, which a model
+    includes. Not 'R004 the robot has no <link>': a library, checked through the models that
+    read it, exactly as the same text named .urdf.xacro."""
+    said = {}
+    for arm in ("spot_arm_macro.urdf", "spot_arm_macro.urdf.xacro"):
+        repo = tmp_path / arm
+        spot(repo, arm)
+        assert read_source(repo / "urdf" / arm).kind == "library"
+        write(repo / "arm.toml", '[models]\n"urdf/spot.urdf.xacro" = [["arm:=true"]]\n')  # the argument set that reads it
+        runs = [run_cli(*given, cwd=repo) for given in (("lint", "urdf"), ("check", f"urdf/{arm}"), ("check", "--config", "arm.toml", f"urdf/{arm}"))]
+        said[arm] = [(done.returncode, (done.stdout + done.stderr).decode().replace(arm, "ARM")) for done in runs]
+    assert said["spot_arm_macro.urdf"] == said["spot_arm_macro.urdf.xacro"]
+    assert [code for code, _ in said["spot_arm_macro.urdf"]] == [0, 0, 0] and "R004" not in str(said)
+    assert "urdf/ARM: xacro library, checked through urdf/spot.urdf.xacro [arm:=true]" in said["spot_arm_macro.urdf"][2][1]
+
+
+@pytest.mark.parametrize(("text", "kind"), [
+    (f'<robot name="r" {XACRO}><xacro:property name="r" value="1"/></robot>', "library"),
+    (f'<robot name="r" {XACRO}><xacro:property name="r" value="1"/><link name="a"/></robot>', "model"),  # it makes a link
+    (f'<robot name="r" {XACRO}></robot>', "model"),  # the namespace alone: loading it reads a plain URDF (R004)
+    ('<robot name="r"><link name="a"/></robot>', "model"),
+])
+def test_a_urdf_file_is_a_library_only_when_it_is_xacro_and_makes_nothing(tmp_path, text, kind):
+    assert read_source(write(tmp_path / "file.urdf", text)).kind == kind

@@ -34,7 +34,7 @@ from .project import fixing, linter
 from .project.compatibility import verdicts
 from .project.config import Config, ConfigError
 from .project.semantic import described
-from .project.workspace import Aside, Entry, Models, Target, assemble, fragment_includers, model_targets, models_below, plan, search_roots, unchecked_library, unread, xacro_sources
+from .project.workspace import LIBRARY_SUFFIXES, Aside, Entry, Models, Target, assemble, fragment_includers, model_targets, models_below, plan, search_roots, unchecked_library, unread, xacro_sources
 from .read.document import STDIN, Document, InputError, read_document
 from .read.files import STDIN_NAME
 from .read.xacro_scan import shown
@@ -133,7 +133,7 @@ def find_models(paths: list[str], session: Session) -> Models:
 def library_models(path: str, session: Session) -> list[str] | None:
     """For a xacro library (macros and properties only: it makes no robot by itself), the
     models of its repository or workspace that include it; None for any other file."""
-    if path == STDIN or not path.endswith(".xacro"):
+    if path == STDIN or not path.endswith(LIBRARY_SUFFIXES):
         return None
     try:
         [entry] = plan([path], configured(session), session.package_paths, session.packages, session.files)

@@ -7,7 +7,9 @@ made elsewhere. Any other file is a *model*: every plain URDF, a xacro file
 that makes a link, a joint or calls a macro at its top level, and a file that
 cannot be read as XML (loading it says why). Only ``xacro:if`` and
 ``xacro:unless`` blocks are looked into; when in doubt a file is a library,
-because a library is never reported as a broken robot.
+because a library is never reported as a broken robot. A file named ``.urdf``
+is xacro when loading it expands it (a xacro element, a ``${...}``): Spot's
+``spot_arm_macro.urdf``, a ``<robot>`` holding one macro, is a library too.
 
 A library given to ``check`` or ``lint`` is checked through the top-level
 models that include it, directly or through other files: the models of its
@@ -47,6 +49,7 @@ from typing import NamedTuple
 from ..diagnostics import Diagnostic, Location, Severity
 from ..model.sources import XacroSources
 from ..read.document import STDIN, Document
+from ..read.document import is_xacro as reads_as_xacro  # (the file; xacro_scan.is_xacro is an element)
 from ..read.packages import PackageIndex, PackageResolver, files_below
 from ..read.files import SourceFile, SourceFiles
 from ..read.xacro_scan import DIRECTIVES, XacroFile, XacroGlobals, is_xacro, local_name, shown
@@ -75,11 +78,10 @@ def workspace_file(path: Path, file: SourceFile | None) -> WorkspaceFile:
     raises: an unreadable file, or one that is not XML, is a model (loading it says why)."""
     if file is None:
         return WorkspaceFile(path, "model")
-    named_xacro = path.name.endswith(".xacro")
-    if not named_xacro and b"xacro" not in file.data:
-        return WorkspaceFile(path, "model")  # plain URDF
+    if not path.name.endswith(".xacro") and (b"xacro" not in file.data or not reads_as_xacro(file)):
+        return WorkspaceFile(path, "model")  # plain URDF, as loading it reads it
     found = file.scan
-    if found is None or (not named_xacro and not found.uses_xacro):
+    if found is None:
         return WorkspaceFile(path, "model")
     kind = "model" if found.makes else "library"
     return WorkspaceFile(path, kind, tuple(found.includes), tuple(found.arguments), tuple(found.properties))
@@ -523,6 +525,9 @@ class Entry(NamedTuple):
 
 
 MODEL_SUFFIXES = (".urdf", ".urdf.xacro", ".srdf", ".srdf.xacro")
+# The files that may be a library: a .urdf that is xacro and makes nothing is one
+# (Spot's spot_arm_macro.urdf, a macro that spot_macro.xacro includes).
+LIBRARY_SUFFIXES = (".xacro", ".urdf")
 
 
 class Aside(NamedTuple):
@@ -561,7 +566,8 @@ def models_below(folder: Path, index: Index) -> Models:
         if not (file.name.endswith(MODEL_SUFFIXES) or (file.name.endswith(".xacro") and index.kind(path) == "model")):
             continue
         found = includers.get(path)
-        if not found or not part_of_model(str(file)):  # a plain URDF that holds a robot is one, whoever includes it
+        # a plain URDF that holds a robot is one, whoever includes it; a .urdf that is a xacro library is a part
+        if not found or not (part_of_model(str(file)) or index.kind(path) == "library"):
             models.append(file)
         else:
             written = tuple((shown(includer), text) for includer, _, text in found)
@@ -616,8 +622,8 @@ def plan(paths: list[str], config_for, package_paths: tuple[str, ...] = (), pack
     candidates_of: dict[tuple, list[Path]] = {}  # the top-level models of each place searched, found once
     for path in paths:
         config = config_for(path)
-        # only a file named .xacro can be a library: a plain URDF is never read twice
-        library = Path(path).resolve() if path != STDIN and path.endswith(".xacro") else None
+        # a plain URDF is read only as far as telling it is not xacro (a .srdf is never a library)
+        library = Path(path).resolve() if path != STDIN and path.endswith(LIBRARY_SUFFIXES) else None
         alone = files.derived(shown(library), workspace_file) if library is not None else None
         if alone is not None and alone.kind == "library":  # else no look-up at all
             index = index or Index(config.package_paths + package_paths, packages, files)
