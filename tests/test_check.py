@@ -215,7 +215,7 @@ def test_json_format_follows_the_contract(tmp_path):
     assert [f["ok"] for f in report["files"]] == [True, False]
     assert report["files"][0]["robot"] == "jtbot"
     diagnostic = report["files"][1]["diagnostics"][0]
-    assert set(diagnostic) == {"code", "severity", "message", "path", "line", "column", "element", "hint", "model", "trace", "fix"}
+    assert set(diagnostic) == {"code", "severity", "message", "path", "line", "column", "element", "subjects", "hint", "model", "trace", "fix"}
     assert (diagnostic["code"], diagnostic["severity"], diagnostic["line"], diagnostic["element"]) == ("J003", "error", 1, "joint[@name='j']")
     errors = sum(d["severity"] == "error" for f in report["files"] for d in f["diagnostics"])
     warnings = sum(d["severity"] == "warning" for f in report["files"] for d in f["diagnostics"])

@@ -93,11 +93,11 @@ def test_json_contract(models, command):
     assert (broken_file["ok"], broken_file["robot"]) == (False, None)
     assert broken_file["diagnostics"] == [
         {"code": "X001", "severity": "error", "message": "Opening and ending tag mismatch: link line 2 and robot",
-         "path": str(broken), "line": 3, "column": 9, "element": None, "hint": None, "model": None, "trace": [], "fix": None}
+         "path": str(broken), "line": 3, "column": 9, "element": None, "subjects": [], "hint": None, "model": None, "trace": [], "fix": None}
     ]
     assert typo_file["diagnostics"][0] == {
         "code": "M002", "severity": "warning", "message": "material 'grey' is defined nowhere",
-        "path": str(typo), "line": 5, "column": 7, "element": "link[@name='base_link']/visual/material",
+        "path": str(typo), "line": 5, "column": 7, "element": "link[@name='base_link']/visual/material", "subjects": [],
         "hint": "define it at the top level, or give it a <color rgba>", "model": None, "trace": [], "fix": None,
     }
     warnings = 2 if command == "lint" else 1

@@ -337,7 +337,7 @@ def test_json_has_exactly_the_documented_shape():
     for link in data["links"]:
         assert set(link) == {"name", "path", "line", "column", "mass", "mass_used", "com", "inertia", "principal", "expected", "expected_from", "problems"}
         for problem in link["problems"]:
-            assert set(problem) == {"code", "severity", "message", "path", "line", "column", "element", "hint", "model", "trace", "fix"}
+            assert set(problem) == {"code", "severity", "message", "path", "line", "column", "element", "subjects", "hint", "model", "trace", "fix"}
     camera = next(link for link in data["links"] if link["name"] == "camera")
     assert camera["mass"] == pytest.approx(0.01) and camera["com"] == [0, 0, 0]
     assert set(camera["inertia"]) == tensor_keys and set(camera["expected"]) == tensor_keys

@@ -3,8 +3,10 @@ nothing here, next to a small model with the real defect, which still draws its 
 
 from __future__ import annotations
 
+import re
+
 import pytest
-from conftest import lint_file
+from conftest import lint_file, run_cli
 
 from urdfcli.diagnostics import Severity
 from urdfcli.project.config import Config
@@ -308,3 +310,40 @@ def test_axes_swapped_on_a_long_link_are_found_though_its_moments_are_not_the_ge
     assert "long along y, so its moment about y is its smallest, but the declared tensor turns hardest about y" in message
     right = BASE + arm("hand", box("0.1 0.2 0.05") + inertial(0.2, 0.0005, 0.0002, 0.0004))
     assert found(tmp_path, right, "I009") == []
+
+
+STANDOFF = """<?xml version="1.0"?>
+<robot name="tower" xmlns:xacro="http://www.ros.org/wiki/xacro">
+  <link name="base"/>
+  <xacro:macro name="standoff" params="name x">
+    <joint name="${name}_joint" type="fixed"><parent link="base"/><child link="${name}"/><origin xyz="${x} 0 0"/></joint>
+    <link name="${name}">
+      <collision><geometry><cylinder radius="0.004" length="0.2"/></geometry></collision>
+      <inertial>
+        <mass value="0.1"/>
+        <inertia ixx="0.0000008" ixy="0" ixz="0" iyy="0.000334" iyz="0" izz="0.000334"/>
+      </inertial>
+    </link>
+  </xacro:macro>
+  <xacro:standoff name="s1" x="0.1"/>
+  <xacro:standoff name="s2" x="0.2"/>
+  <xacro:standoff name="s3" x="0.3"/>
+  <xacro:standoff name="s4" x="0.4"/>
+</robot>
+"""
+
+
+def test_axes_swapped_in_a_macro_body_are_one_diagnostic_naming_every_link_its_calls_made(tmp_path):
+    """TurtleBot 4's tower standoffs: one tensor with swapped axes written once in a macro
+    called four times drew four I009 at one line, alike but for the link's name. It is one,
+    naming the links, whose fix writes the tensor once and leaves no I009."""
+    path = tmp_path / "tower.urdf.xacro"
+    path.write_text(STANDOFF)
+    [found] = [d for d in lint_file(str(path), Config.everything()).diagnostics if d.code == "I009"]
+    assert found.message.startswith("inertia of links 's1', 's2', 's3' and 1 more: izz=0.000334 (link axes) is 104.4 times the most")
+    assert found.subjects == ("s1", "s2", "s3", "s4") and (found.path, found.line) == (str(path), 10)
+    edits = found.fix.edits
+    assert edits and len({(e.start, e.end) for e in edits}) == len(edits), edits  # each literal of the body once
+    done = run_cli("lint", "--isolated", "--select", "I009", "--fix", "--unsafe-fixes", str(path))
+    assert re.search(r"^1 fixed, 0 remaining", done.stdout.decode(), re.M), done.stdout.decode()
+    assert [d.code for d in lint_file(str(path), Config.everything()).diagnostics if d.code == "I009"] == []

@@ -19,6 +19,7 @@ from ..read.document import SUPPRESSION_MARK
 from ..read.files import SourceFiles
 from ..read.positions import may_contain
 from ..rules import REGISTRY, Kind, Remedy, RuleSet, checks
+from ..rules.base import names
 from . import suppressions
 from .config import Config
 
@@ -55,7 +56,56 @@ def lint(loaded: Loaded, config: Config, rule_set: RuleSet = RuleSet.LINT, found
     """Every diagnostic of a loaded model that its configuration and suppressions leave,
     each with its fix placed in the sources (see :func:`with_fixes`); ``found``: what was
     found of it beside reading and the rules (a generated URDF's drift)."""
-    return with_fixes(loaded, configure(loaded, [*loaded.diagnostics, *(found or ()), *run_rules(loaded, config, rule_set)], config, rule_set))
+    kept = configure(loaded, [*loaded.diagnostics, *(found or ()), *run_rules(loaded, config, rule_set)], config, rule_set)
+    return with_fixes(loaded, written_once(kept))
+
+
+def written_once(diagnostics: list[Diagnostic]) -> list[Diagnostic]:
+    """One diagnostic for a mistake a macro's calls copied: those of one rule at one place of
+    the sources that say the same thing but for the name of their link or joint become one
+    naming them all (its ``subjects``), at the first; its fix is theirs together, which
+    :func:`with_fixes` places as one edit of the macro body. The rest stay as they are."""
+    groups: dict[object, list[Diagnostic]] = {}
+    for number, diagnostic in enumerate(diagnostics):
+        groups.setdefault(_copy_key(diagnostic) or number, []).append(diagnostic)
+    return [group[0] if len(group) == 1 else _together(group) for group in groups.values()]
+
+
+def _copy_key(diagnostic: Diagnostic) -> tuple | None:
+    """What copies of one written mistake share: the rule, the place, what is said but the name."""
+    if len(diagnostic.subjects) != 1 or diagnostic.line is None:
+        return None
+    quoted = f"'{diagnostic.subjects[0]}'"
+    if diagnostic.message.count(quoted) != 1:
+        return None
+    fix = diagnostic.fix
+    said = (fix.applicability, fix.reason, fix.title.replace(quoted, "")) if fix is not None else None
+    place = diagnostic.location
+    return (diagnostic.code, place.file, place.line, place.column, diagnostic.severity, diagnostic.model, diagnostic.hint, diagnostic.message.replace(quoted, ""), said)
+
+
+def _together(copies: list[Diagnostic]) -> Diagnostic:
+    first = copies[0]
+    subjects = tuple(dict.fromkeys(d.subjects[0] for d in copies))
+    fix = first.fix
+    if fix is not None:
+        fix = fix._replace(
+            title=_naming_all(fix.title, subjects), edits=tuple(dict.fromkeys(e for d in copies for e in d.fix.edits)),
+            changes=tuple(dict.fromkeys(c for d in copies for c in d.fix.changes)),
+        )
+    return first._replace(message=_naming_all(first.message, subjects), subjects=subjects, fix=fix)
+
+
+def _naming_all(text: str, subjects: tuple[str, ...]) -> str:
+    """``text`` naming ``subjects`` where it named the first: ``inertia of links 'a', 'b' and 'c': ...``
+    when the name qualifies a noun of its own (the verb stays right), else ``link 'a' (and 'b' alike) has ...``."""
+    quoted = f"'{subjects[0]}'"
+    head, found, tail = text.partition(quoted)
+    if not found:
+        return text
+    if head.endswith(("of link ", "of joint ")):
+        return f"{head[:-1]}s {names(subjects)}{tail}"
+    return f"{head}{quoted} (and {names(subjects[1:])} alike){tail}"
 
 
 def with_fixes(loaded: Loaded, diagnostics: list[Diagnostic]) -> list[Diagnostic]:

@@ -280,6 +280,7 @@ def diagnostic_dict(diagnostic: Diagnostic, files: SourceFiles | None = None) ->
         "line": diagnostic.location.line,
         "column": diagnostic.location.column,
         "element": diagnostic.element,
+        "subjects": list(diagnostic.subjects),
         "hint": diagnostic.hint,
         "model": diagnostic.model,
         "trace": [
