@@ -347,3 +347,12 @@ def test_axes_swapped_in_a_macro_body_are_one_diagnostic_naming_every_link_its_c
     done = run_cli("lint", "--isolated", "--select", "I009", "--fix", "--unsafe-fixes", str(path))
     assert re.search(r"^1 fixed, 0 remaining", done.stdout.decode(), re.M), done.stdout.decode()
     assert [d.code for d in lint_file(str(path), Config.everything()).diagnostics if d.code == "I009"] == []
+
+
+def test_any_rule_a_macro_multiplies_says_it_once_in_a_sentence_that_stays_right(tmp_path):
+    """I003 (mass 0, a tensor) in the same macro: 'link 'a' has ...' cannot become 'links ... has',
+    so the other links are named beside the first."""
+    path = tmp_path / "tower.urdf.xacro"
+    path.write_text(STANDOFF.replace('<mass value="0.1"/>', '<mass value="0"/>').replace('  <xacro:standoff name="s3" x="0.3"/>\n  <xacro:standoff name="s4" x="0.4"/>\n', ""))
+    [found] = [d for d in lint_file(str(path), Config.everything()).diagnostics if d.code == "I003"]
+    assert (found.message, found.subjects) == ("link 's1' (and 's2' alike) has mass 0 but a non-zero inertia tensor", ("s1", "s2"))
