@@ -709,3 +709,26 @@ def test_a_urdf_file_that_is_a_xacro_library_is_one_as_if_named_xacro(tmp_path):
 ])
 def test_a_urdf_file_is_a_library_only_when_it_is_xacro_and_makes_nothing(tmp_path, text, kind):
     assert read_source(write(tmp_path / "file.urdf", text)).kind == kind
+
+
+def test_a_model_run_with_two_argument_sets_shows_what_both_find_in_its_own_file_once(tmp_path):
+    """Jackal's P001 at its model's $(find) showed twice when the model was listed with two
+    argument sets (D006 in its included file, once): what both runs find alike is said once."""
+    write(tmp_path / "parts" / "package.xml", package_xml("acme_parts"))
+    write(tmp_path / "parts" / "urdf" / "parts.xacro", f'<robot {XACRO}><xacro:macro name="part" params=""><link name="part"/></xacro:macro></robot>\n')
+    write(tmp_path / "robot" / "package.xml", package_xml("acme_robot"))
+    write(tmp_path / "robot" / "urdf" / "robot.urdf.xacro", f"""\
+        <robot name="r" {XACRO}>
+          <xacro:arg name="extra" default="false"/>
+          <xacro:include filename="$(find acme_parts)/urdf/parts.xacro"/>
+          <link name="base_link"/>
+          <xacro:part/>
+          <joint name="j" type="fixed"><parent link="base_link"/><child link="part"/></joint>
+        </robot>
+        """)
+    (tmp_path / "pyproject.toml").write_text('[tool.urdfcli]\nmodels = { "robot/urdf/robot.urdf.xacro" = [[], ["extra:=true"]] }\n')
+    done = run_cli("lint", "--format", "json", "robot/urdf/robot.urdf.xacro", cwd=tmp_path)
+    report = json.loads(done.stdout)
+    assert [f.get("arguments") for f in report["files"]] == [None, {"extra": "true"}]
+    found = [(d["code"], d["line"]) for f in report["files"] for d in f["diagnostics"] if d["code"] == "P001"]
+    assert found == [("P001", 3)], report

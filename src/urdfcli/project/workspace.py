@@ -887,7 +887,7 @@ def assemble(
                 shown_now = tuple(
                     d if is_own(d.path) or len(models) == 1 else _through(d, result)  # one model: it found them all
                     for d in result.diagnostics
-                    if unused(d) and (d.code, d.message) not in copied and _fresh(d, is_own(d.path), shown_keys)
+                    if unused(d) and (d.code, d.message) not in copied and _fresh(d, is_own(d.path), shown_keys, entry.path)
                 )
                 results.append(result.but(diagnostics=shown_now))
             continue
@@ -987,12 +987,14 @@ def _place(diagnostic: Diagnostic, resolved: Callable[[str], Path]) -> tuple:
     return (resolved(diagnostic.path), *_key(diagnostic)[2:])
 
 
-def _fresh(diagnostic: Diagnostic, in_own_file: bool, shown_keys: set) -> bool:
-    """Whether to show a diagnostic: always in its input's own file, elsewhere the first time."""
+def _fresh(diagnostic: Diagnostic, in_own_file: bool, shown_keys: set, given: str | None = None) -> bool:
+    """Whether to show a diagnostic: in the own file of its input (``given``) once for that
+    input, however many argument sets it is run with; elsewhere the first time."""
     key = _key(diagnostic)
-    if not in_own_file and key in shown_keys:
+    seen = (given, key) if in_own_file else key
+    if seen in shown_keys:
         return False
-    shown_keys.add(key)
+    shown_keys.update((key, seen))
     return True
 
 
