@@ -56,6 +56,7 @@ from ..read.xacro_scan import DIRECTIVES, XacroFile, XacroGlobals, is_xacro, loc
 from ..rules import structure
 from ..rules.structure import X004 as PACKAGE_NOT_FOUND
 from ..rules.tree import joint_link_not_found
+from .drift import header_source
 from ..rules.suppression import U001 as UNUSED_SUPPRESSION
 from ..model.result import Library, Result, Unreadable
 
@@ -936,7 +937,8 @@ def fragment_shaped(path: str) -> bool:
     """Whether a file is a part written for another file to include, not a robot: its
     <robot> has no name (a robot always has one). A plain URDF must also hold no <link>
     and no <joint>, such as Husky's empty.urdf placeholder: one that does is a robot
-    missing its name, whoever includes it."""
+    missing its name, whoever includes it; so is one xacro generated (its header says
+    so: example-robot-data's empty ur3.urdf), a model's output, never a part."""
     if path == STDIN or not path.endswith((".xacro", ".urdf")):
         return False
     try:
@@ -947,7 +949,9 @@ def fragment_shaped(path: str) -> bool:
     found = _ROBOT_START.search(head)
     if found is None or re.search(rb"\sname\s*=", found.group(0)) is not None:
         return False
-    return path.endswith(".xacro") or b"xacro" in head or _MAKES.search(_COMMENT.sub(b"", head)) is None
+    if path.endswith(".xacro"):
+        return True
+    return header_source(head) is None and (b"xacro" in head or _MAKES.search(_COMMENT.sub(b"", head)) is None)
 
 
 def part_of_model(path: str) -> bool:
