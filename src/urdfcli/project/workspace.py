@@ -52,11 +52,10 @@ from ..read.document import STDIN, Document
 from ..read.document import is_xacro as reads_as_xacro  # (the file; xacro_scan.is_xacro is an element)
 from ..read.packages import PackageIndex, PackageResolver, files_below
 from ..read.files import SourceFile, SourceFiles
-from ..read.xacro_scan import DIRECTIVES, XacroFile, XacroGlobals, is_xacro, local_name, shown
+from ..read.xacro_scan import DIRECTIVES, XacroFile, XacroGlobals, header_source, is_xacro, local_name, shown
 from ..rules import structure
 from ..rules.structure import X004 as PACKAGE_NOT_FOUND
 from ..rules.tree import joint_link_not_found
-from .drift import header_source
 from ..rules.suppression import U001 as UNUSED_SUPPRESSION
 from ..model.result import Library, Result, Unreadable
 
