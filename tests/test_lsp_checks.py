@@ -137,3 +137,27 @@ def test_a_librarys_check_names_each_model_as_the_models_own_check_does(workspac
         assert first in through.models[(first, ())] and library in through.models[(first, ())]  # what that model read
     finally:
         checker.close()
+
+
+def test_a_mistake_shown_at_an_outer_call_names_the_macro_that_wrote_it(tmp_path):
+    """A mesh path an inner macro builds from the outer macro's parameter, wrong at the
+    model's call of the outer macro: shown there, saying it was written in macro 'inner'
+    (where the line is), not 'outer' (the macro called there)."""
+    (tmp_path / ".git").mkdir()
+    library = tmp_path / "lib.xacro"
+    library.write_text(f"""<robot {XACRO_NS}>
+  <xacro:macro name="inner" params="name">
+    <link name="${{name}}">
+      <visual><geometry><mesh filename="file://{tmp_path}/meshes/${{name}}.stl"/></geometry></visual>
+    </link>
+  </xacro:macro>
+  <xacro:macro name="outer" params="part">
+    <xacro:inner name="${{part}}"/>
+  </xacro:macro>
+</robot>
+""")
+    model = tmp_path / "model.urdf.xacro"
+    model.write_text(f'<robot name="r" {XACRO_NS}>\n  <xacro:include filename="lib.xacro"/>\n  <xacro:outer part="base"/>\n</robot>\n')
+    checked = Checker().check(str(model), {str(model): model.read_text(), str(library): library.read_text()})
+    [at_call] = [m for m in checked.marks[str(model)] if m.diagnostic.code == "D004"]
+    assert at_call.place.start.line + 1 == 3 and "(in macro 'inner', lib.xacro:4)" in at_call.message

@@ -223,10 +223,11 @@ class Checker:
             return []
         found: list[Mark] = []
         written = (_absolute(location.file), location.line, location.column)
+        maker = location.trace[0].macro  # the macro whose body wrote the element, whichever call is marked
         for call in location.trace:
             if not self._uses_parameters(*written):
                 break
-            found.append(self._at_call(mark, call))
+            found.append(self._at_call(mark, call, maker))
             written = (_absolute(call.file), call.line, call.column)
         return found
 
@@ -236,9 +237,9 @@ class Checker:
             return False
         return navigation.uses_parameters(source.text, offset(source, line - 1, (column or 1) - 1))
 
-    def _at_call(self, mark: Mark, call: Call) -> Mark:
-        """``mark`` at a call that caused it, its message saying where the macro wrote it."""
-        macro = escape(call.macro)
+    def _at_call(self, mark: Mark, call: Call, maker: str) -> Mark:
+        """``mark`` at a call that caused it, its message saying where macro ``maker`` wrote it."""
+        macro = escape(maker)
         written = f"{Path(mark.place.file).name}:{mark.place.start.line + 1}"
         message = f"{mark.message} (in macro '{macro}', {escape(written)})"
         return Mark(mark.diagnostic, self.place(_absolute(call.file), call.line, call.column), message, ((mark.place, f"written here in macro '{macro}'"),))
