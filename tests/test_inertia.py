@@ -106,6 +106,45 @@ def test_collision_shapes_win_over_visual_shapes(tmp_path):
     assert found.source == "visual sphere"
 
 
+def test_a_stand_in_collision_shape_is_not_the_body(tmp_path):
+    # Baxter's head: a 1 mm collision sphere on a 10 cm visual box. Filled, the sphere is a
+    # point mass (2.2e-7, 21,000 times below the declared tensor); the visual box is the body.
+    found = one_link(tmp_path, '<visual><geometry><box size="0.1 0.1 0.1"/></geometry></visual><collision><geometry><sphere radius="0.001"/></geometry></collision>')
+    assert found.source == "visual box, not its 50 times smaller collision geometry"
+    close(found.body.tensor, massprops.box(1, (0.1, 0.1, 0.1)))
+    # a collision shape a fifth of its visual's size is a coarse collision model, still the body
+    found = one_link(tmp_path, '<visual><geometry><box size="0.1 0.1 0.1"/></geometry></visual><collision><geometry><sphere radius="0.01"/></geometry></collision>')
+    assert found.source == "collision sphere"
+
+
+def test_the_fix_and_suggest_fill_what_the_impossible_diagnostic_measures(tmp_path):
+    path = tmp_path / "head.urdf"
+    path.write_text(textwrap.dedent("""\
+        <robot name="head_demo">
+          <link name="base"/>
+          <link name="head">
+            <visual><geometry><box size="0.1 0.1 0.1"/></geometry></visual>
+            <collision><geometry><sphere radius="0.001"/></geometry></collision>
+            <inertial>
+              <mass value="0.547767"/>
+              <inertia ixx="0.004641" ixy="0.000159" ixz="0.000242" iyy="0.003295" iyz="-0.001324" izz="0.003415"/>
+            </inertial>
+          </link>
+          <joint name="head_pan" type="revolute">
+            <parent link="base"/><child link="head"/><axis xyz="0 0 1"/>
+            <limit effort="50" lower="-1.39" upper="1.39" velocity="1"/>
+          </joint>
+        </robot>
+        """))
+    report = json.loads(run_cli("lint", "--format", "json", str(path)).stdout)
+    (found,) = report["files"][0]["diagnostics"]
+    assert found["code"] == "I009" and "inside the 0.1 x 0.1 x 0.1 m box its shapes fill: 0.00274" in found["message"]
+    box = massprops.number(massprops.box(0.547767, (0.1, 0.1, 0.1))[0][0])  # 0.000912945, within the 0.00274 the box allows
+    assert f'ixx="{box}"' in run_cli("inertia", "--suggest", str(path)).stdout.decode()
+    assert run_cli("lint", "--fix", "--unsafe-fixes", str(path)).returncode == 0  # fixed: nothing left to say
+    assert f'ixx="{box}" ixy="0" ixz="0" iyy="{box}" iyz="0" izz="{box}"' in path.read_text()
+
+
 def test_rotated_geometry(tmp_path):
     found = one_link(tmp_path, '<collision><origin rpy="0 0 1.5707963267948966"/><geometry><box size="0.4 0.2 0.1"/></geometry></collision>')
     close(massprops.tidy(found.body.tensor), massprops.box(1, (0.2, 0.4, 0.1)))

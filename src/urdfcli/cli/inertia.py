@@ -53,7 +53,7 @@ def inertia(
 ) -> None:
     """Audit each link's mass, centre of mass and inertia against physics and its geometry.
 
-    Per link: the declared tensor, its principal moments, the tensor the collision shapes (else the visual shapes) imply for the link's mass, and the problems. Then the whole robot at zero joint positions: total mass, centre of mass in the root link's frame, and the inertia about it.
+    Per link: the declared tensor, its principal moments, the tensor the collision shapes (else the visual shapes, or those when the collision shapes are a stand-in under a tenth of their size) imply for the link's mass, and the problems. Then the whole robot at zero joint positions: total mass, centre of mass in the root link's frame, and the inertia about it.
 
     Exit 0 when nothing is found, 1 on any warning or error, 2 when it cannot run.
     """

@@ -371,6 +371,12 @@ def geometry_mismatch(loaded, given):
       20 times below the uniform body's (a finger whose moment about its long axis would
       need its mass within a fifth of its radius of the axis).
 
+    The uniform body fills the collision shapes, else the visual shapes; and the visual
+    shapes when the collision shapes' bounding box is under a tenth of theirs on its
+    longest side: a 2 mm sphere on Baxter's 15 cm head is a stand-in, not the body (a
+    uniform body filling it would be a point mass, far below what the head can reach).
+    The fix and `urdfcli inertia --suggest` write that same body.
+
     With ``density`` (kg/m³) positive, the link is taken to be that uniform material: any
     tensor more than ``tolerance`` off the one it gives is flagged.
 
