@@ -302,6 +302,29 @@ def test_an_inertia_writing_its_lower_triangle_is_one_note_not_three(tmp_path):
     assert found(tmp_path, body) == [("D010", "info", "<inertia> has no attributes 'iyx', 'izx' and 'izy'; URDF consumers ignore them")]
 
 
+def test_a_lower_triangle_value_that_is_not_the_upper_ones_is_a_mistyped_moment(tmp_path):
+    """Fetch's fingers write iyx="0.002" and izx="0.002" beside ixy="0", ixz="0", iyy="0" and
+    izz="0": the diagonal moments typed one letter off, which URDF never reads. A warning
+    naming the moment meant; izy, repeating iyz, stays the note of a CAD exporter's habit."""
+    path = tmp_path / "robot.urdf"
+    path.write_text('<robot name="r"><link name="finger"><inertial><mass value="0.0798"/>'
+                    '<inertia ixx="0.002" ixy="0" ixz="0" iyx="0.002" iyy="0" iyz="0" izx="0.002" izy="0" izz="0"/>'
+                    '</inertial></link></robot>\n')
+    line = path.read_text()
+    shown = [(d.code, d.severity.value, d.message, d.hint, line[d.column - 1:d.column + 2]) for d in lint_file(str(path), Config()).diagnostics if d.code in MARKUP]
+    assert shown == [
+        ("D002", "warning", "<inertia> has no attribute 'iyx', and its value '0.002' differs from ixy's '0': no repeated product of inertia; it is ignored",
+         "probably a mistyped 'iyy' (one letter away), which URDF reads as '0'", "iyx"),
+        ("D002", "warning", "<inertia> has no attribute 'izx', and its value '0.002' differs from ixz's '0': no repeated product of inertia; it is ignored",
+         "probably a mistyped 'izz' (one letter away), which URDF reads as '0'", "izx"),
+        ("D010", "info", "<inertia> has no attribute 'izy'; URDF consumers ignore it", "<inertia> takes ixx, ixy, ixz, iyy, iyz, izz", "izy"),
+    ]
+    # the same values written alike ('-0.0' for '0', a CAD exporter's rounding) are a repeat
+    body = ('<link name="a"><inertial><mass value="1"/><inertia ixx="0.0129" ixy="0.0002" ixz="0.0007" iyy="0.0095" iyz="0" izz="0.0184" '
+            'iyx="2e-4" izx="0.00070000001" izy="-0.0"/></inertial></link>')
+    assert found(tmp_path, body) == [("D010", "info", "<inertia> has no attributes 'iyx', 'izx' and 'izy'; URDF consumers ignore them")]
+
+
 def test_a_gazebo_reference_whose_expression_lost_its_dollar_says_so(tmp_path):
     """unitree go1's leg.xacro: <gazebo reference="{name}_thigh"> in a macro called for four legs.
     Not 'did you mean RR_thigh?' (one leg of four): the $ is missing."""

@@ -8,11 +8,12 @@ report.
 
 from __future__ import annotations
 
-from collections.abc import Iterator, Mapping
+from collections.abc import Callable, Iterator, Mapping
 from typing import TYPE_CHECKING, NamedTuple
 
 from ..read.document import tag_name
 from ..read.names import typo_of
+from .numbers import parse_double
 
 if TYPE_CHECKING:
     from ..read.xml import Element
@@ -129,7 +130,31 @@ def unknown_attributes(element: Element, at: int, tag: str | None = None) -> Ite
         return  # the common case, decided in one step
     for name in names:
         if name not in known and not _is_foreign(name):
-            yield Unknown(at, tag, name, True, typo_of(name, known - set(names)))
+            meant = typo_of(name, known - set(names)) or (mistyped_moment(name, element.get) if tag == "inertia" else None)
+            yield Unknown(at, tag, name, True, meant)
+
+
+LOWER_TRIANGLE = {"iyx": "ixy", "izx": "ixz", "izy": "iyz"}  # not URDF; the upper triangle's name for each
+SAME_PRODUCT = 1e-3  # a lower-triangle value this close (relative to the tensor's largest) to its counterpart repeats it
+
+
+def mistyped_moment(name: str, value: Callable[[str], str | None]) -> str | None:
+    """For an ``<inertia>`` attribute ``name`` of the lower triangle (``iyx``, ``izx``, ``izy``)
+    whose value differs from its upper-triangle counterpart's (``ixy``...): the diagonal
+    moment of its row (``iyy``, ``izz``), one letter away, that it was typed for (Fetch's
+    fingers: ``iyx="0.002"`` beside ``ixy="0"`` and ``iyy="0"``). None when it repeats the
+    counterpart (a CAD exporter writing the whole matrix), or the counterpart is not written.
+    ``value`` gives an attribute's text."""
+    counterpart = LOWER_TRIANGLE.get(name)
+    written, other = value(name), value(counterpart) if counterpart else None
+    if counterpart is None or written is None or other is None:
+        return None
+    try:
+        numbers = [parse_double(text) for key in (*SCHEMA["inertia"][0], *LOWER_TRIANGLE) if (text := value(key)) is not None]
+        apart = abs(parse_double(written) - parse_double(other)) > SAME_PRODUCT * max(abs(n) for n in numbers)
+    except ValueError:  # not numbers (V001 says so for the upper triangle): as texts
+        apart = written.strip() != other.strip()
+    return f"i{name[1]}{name[1]}" if apart else None
 
 
 def unknown_markup(top: Element, positions: Mapping[Element, int]) -> list[Unknown]:

@@ -4,11 +4,13 @@ from __future__ import annotations
 
 import os
 import re
+from functools import partial
 
 from ..diagnostics import Fix, SetAttribute
 from ..model.kinematics import bodies
 from ..model.meshes import input_folder, near_misses, resolved_resources, uri_style
-from ..model.vocabulary import SCHEMA
+from ..model.numbers import shown
+from ..model.vocabulary import LOWER_TRIANGLE, SCHEMA, mistyped_moment
 from ..read.packages import cmake_project, uri_package
 from .base import ERROR, INFO, PLACED, SAFE, WARNING, Kind, RuleSet, check
 from .meshes import others_there, package_uri, written_with_find
@@ -92,7 +94,11 @@ def unknown_attribute(loaded, given):
     never suggested. Vendor attributes (Franka's `<dynamics K D mu_coulomb
     mu_viscous>`, ANYmal's `<limit command_effort current gear_velocity>`,
     Isaac's `dont_collapse`, PyBullet's collision `group`, `mask`, `concave`)
-    are not typos; other unknown attributes are D010 (info).
+    are not typos; other unknown attributes are D010 (info). An `<inertia>`'s
+    lower triangle (`iyx`, `izx`, `izy`) is a typo when its value differs from
+    the upper triangle's (`ixy`, `ixz`, `iyz`): the diagonal moment of its row,
+    one letter away, was meant (Fetch's fingers: `iyx="0.002"` beside `ixy="0"`
+    and `iyy="0"`); repeating it, it is D010's.
 
     ## Why is this bad?
     The attribute is ignored: the colour, limit or axis it meant to set keeps
@@ -114,7 +120,24 @@ def unknown_attribute(loaded, given):
     """
     for unknown in loaded.robot.unknown:
         if unknown.attribute and unknown.typo_of:
-            yield loaded.diagnostic("D002", f"<{unknown.parent}> has no attribute '{unknown.name}'; it is ignored", unknown.at, f"did you mean '{unknown.typo_of}'?", attribute=unknown.name)
+            message, hint = _misspelt_attribute(loaded, unknown)
+            yield loaded.diagnostic("D002", message, unknown.at, hint, attribute=unknown.name)
+
+
+def _misspelt_attribute(loaded, unknown) -> tuple[str, str]:
+    """D002's message and hint; for an ``<inertia>``'s lower-triangle name typed for a diagonal
+    moment (:func:`mistyped_moment`), the value that tells it from a repeated product of inertia."""
+    name, meant = unknown.name, unknown.typo_of
+    value = partial(loaded.value, unknown.at)
+    if unknown.parent != "inertia" or mistyped_moment(name, value) != meant:
+        return f"<{unknown.parent}> has no attribute '{name}'; it is ignored", f"did you mean '{meant}'?"
+    counterpart, read = LOWER_TRIANGLE[name], value(meant)
+    return (
+        f"<inertia> has no attribute '{name}', and its value {shown(value(name))} differs from {counterpart}'s {shown(value(counterpart))}: "
+        "no repeated product of inertia; it is ignored",
+        f"probably a mistyped '{meant}' (one letter away), which "
+        + (f"URDF reads as {shown(read)}" if read is not None else "is not written"),
+    )
 
 
 def _belongs_in(tag: str) -> list[str]:
@@ -129,7 +152,8 @@ def unknown_markup(loaded, given):
     there: a URDF element in the wrong place (`<origin>` directly in `<link>`),
     an old or private extension (`<verbose>`, `<self_filter>`), an attribute
     on an element that takes none (an element's unknown attributes are one note:
-    an `<inertia>` that also writes its lower triangle, `iyx`, `izx`, `izy`).
+    an `<inertia>` that also writes its lower triangle, `iyx`, `izx`, `izy`,
+    repeating the upper; a value that differs is a typo, D002's).
     Info: shown, never fails a run.
 
     Known extensions draw nothing: Gazebo's tags inside `<gazebo>`, PyBullet's
