@@ -132,6 +132,8 @@ def filled_shapes(loaded: Loaded, link: Link) -> tuple[str, tuple[Shape, ...], s
     visuals = tuple([s for s in link.visuals if s.geometry is not None])
     if not collisions or not visuals:
         return ("collision", collisions, "") if collisions else ("visual", visuals, "")
+    if {_measure(s.geometry) for s in collisions} & {_measure(s.geometry) for s in visuals}:
+        return "collision", collisions, ""  # a collision the size of a visual (most links): not a stand-in
     collision_box, visual_box = extent(loaded, link, collisions), extent(loaded, link, visuals)
     if collision_box is None or visual_box is None:
         return "collision", collisions, ""  # not measured: nothing shows they are a stand-in
@@ -140,6 +142,11 @@ def filled_shapes(loaded: Loaded, link: Link) -> tuple[str, tuple[Shape, ...], s
         return "collision", collisions, ""
     smaller = f"{visual_size / collision_size:.0f} times smaller" if collision_size > 0 else "sizeless"
     return "visual", visuals, f", not its {smaller} collision geometry"
+
+
+def _measure(geometry) -> tuple:
+    """A shape's geometry but for its place in the document: equal for one box, cylinder or mesh written twice."""
+    return geometry._replace(at=0)
 
 
 def _longest(box: tuple[Vector, Vector]) -> float:
