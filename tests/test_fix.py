@@ -434,6 +434,45 @@ def test_a_dependency_in_a_manifest_without_one_of_its_kind(cli, workspace, mani
     assert (workspace / "src/my_robot/package.xml").read_text() == declared
 
 
+def test_description_packages_using_each_other_get_run_dependencies_only(cli, here):
+    """Baxter's model includes its grippers' xacro from rethink_ee_description, whose
+    fingers load meshes from baxter_description. Both are read where the model is
+    expanded and loaded, not to build: a <build_depend> each way (what the fix wrote)
+    is a cycle in catkin's build order, and catkin stops."""
+    manifest = '<?xml version="1.0"?>\n<package>\n  <name>{}</name>\n  <buildtool_depend>catkin</buildtool_depend>\n</package>\n'
+    put(here, {
+        "robot_description/package.xml": manifest.format("robot_description"),
+        "robot_description/urdf/robot.urdf.xacro": f"""<?xml version="1.0"?>
+<robot name="r" {XACRO_NS}>
+  <xacro:include filename="$(find gripper_description)/urdf/gripper.xacro"/>
+  <link name="base_link"/>
+  <xacro:gripper parent="base_link"/>
+</robot>
+""",
+        "gripper_description/package.xml": manifest.format("gripper_description"),
+        "gripper_description/urdf/gripper.xacro": f"""<?xml version="1.0"?>
+<robot {XACRO_NS}>
+  <xacro:macro name="gripper" params="parent">
+    <link name="finger"><visual><geometry><mesh filename="package://robot_description/meshes/finger.stl"/></geometry></visual></link>
+    <joint name="finger_joint" type="fixed"><parent link="${{parent}}"/><child link="finger"/></joint>
+  </xacro:macro>
+</robot>
+""",
+    })
+    write(here / "robot_description/meshes/finger.stl", box())
+    (here / ".git").mkdir()
+    model = "robot_description/urdf/robot.urdf.xacro"
+    assert [c for c, _ in findings(cli, model, "--select", "P001")] == ["P001", "P001"]
+    cli("lint", "--isolated", "--fix", "--select", "P001", model)  # (xacro's $(find) needs ROS: no expansion compared)
+    assert findings(cli, model, "--select", "P001") == Counter()
+    files = snapshot(here)
+    added = "  <buildtool_depend>catkin</buildtool_depend>\n  <run_depend>{}</run_depend>\n"
+    assert files["robot_description/package.xml"].decode() == manifest.format("robot_description").replace(
+        "  <buildtool_depend>catkin</buildtool_depend>\n", added.format("gripper_description"))
+    assert files["gripper_description/package.xml"].decode() == manifest.format("gripper_description").replace(
+        "  <buildtool_depend>catkin</buildtool_depend>\n", added.format("robot_description"))
+
+
 def test_a_mesh_name_fixed_in_the_literal_part_of_a_computed_uri(cli, workspace):
     model = "src/my_robot/urdf/robot.urdf.xacro"
     files = fixed(cli, workspace, model, "D004", "--select", "D004", elements=("mesh",))

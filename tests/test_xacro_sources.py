@@ -109,14 +109,17 @@ def test_a_doc_depend_does_not_declare_a_package(packages):
     assert [c for c, *_ in found(model)] == ["P001"]
 
 
-def test_an_included_package_is_a_build_dependency_and_file_find_counts(packages):
+def test_an_included_package_is_a_run_dependency_and_file_find_counts(packages):
+    """An included file is read where the model is expanded (a launch file, rviz), not to
+    build: <exec_depend>, as for a mesh (a <depend> builds on it, and two description
+    packages using each other's files would make a cycle in the build order)."""
     model = model_using(packages, """
         <xacro:include filename="$(find acme_parts)/urdf/arm.xacro"/>
         <link name="base_link"><visual><geometry><mesh filename="file://$(find acme_meshes)/meshes/arm.stl"/></geometry></visual></link>
         <xacro:arm parent="base_link"/>
         """)
     warnings = {d.message.split("'")[1]: d for d in diagnostics(model, "P001")}
-    assert warnings["acme_parts"].hint.startswith("add <depend>acme_parts</depend>")
+    assert warnings["acme_parts"].hint.startswith("add <exec_depend>acme_parts</exec_depend>")
     assert (warnings["acme_parts"].line, warnings["acme_parts"].column) == column_of(model, "$(find acme_parts)")
     assert warnings["acme_meshes"].hint.startswith("add <exec_depend>acme_meshes</exec_depend>")
 

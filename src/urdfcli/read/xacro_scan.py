@@ -144,7 +144,6 @@ class PackageUse(NamedTuple):
     package: str
     place: Place
     macro: int | None
-    when: str  # "include" (a xacro:include), "expansion" (read while expanding: load_yaml) or "run" (a file used at run time)
 
 
 class Old(NamedTuple):
@@ -300,7 +299,7 @@ class _Scanner:
                     found.includes.append(element.get("filename"))
                 if element.get("ns"):
                     found.namespaces.append(element.get("ns"))
-                self.attributes(element, at, macro, include=True)
+                self.attributes(element, at, macro)
             elif local == "call":
                 found.calls.append(Call(element.get("macro") or "", Place(at, "macro"), macro, _plain_attributes(element)))
                 self.attributes(element, at, macro)
@@ -317,21 +316,21 @@ class _Scanner:
         self.attributes(element, at, macro)
         return macro
 
-    def attributes(self, element, at: int, macro: int | None, skip: tuple[str, ...] = (), include: bool = False) -> None:
+    def attributes(self, element, at: int, macro: int | None, skip: tuple[str, ...] = ()) -> None:
         for key, value in element.attrib.items():
             name = _written_name(element, key)
             if name in skip or not value:
                 continue
-            self.value(value, Place(at, name), macro, include=include and name == "filename")
+            self.value(value, Place(at, name), macro)
 
-    def value(self, text: str, place: Place, macro: int | None, include: bool = False) -> None:
+    def value(self, text: str, place: Place, macro: int | None) -> None:
         if "$" not in text and "package://" not in text:
             return
         for match in _PACKAGE_URI.finditer(text):
-            self.found.packages.append(PackageUse(match.group(1), place._replace(offset=place.offset + match.start()), macro, "run"))
-        self.lex(text, place, macro, include, inside="")
+            self.found.packages.append(PackageUse(match.group(1), place._replace(offset=place.offset + match.start()), macro))
+        self.lex(text, place, macro, inside="")
 
-    def lex(self, text: str, place: Place, macro: int | None, include: bool, inside: str) -> None:
+    def lex(self, text: str, place: Place, macro: int | None, inside: str) -> None:
         """Each ``${...}`` and ``$(...)`` of ``text``, as xacro reads them; ``inside``
         tells what holds the text ("": nothing, "$": an expression, "(": a substitution)."""
         found = self.found
@@ -344,15 +343,14 @@ class _Scanner:
             if token.group("expression") is not None:
                 inner = token.group("expression")
                 found.expressions.append(Expression(inner, where, macro, inside == "("))
-                self.lex(inner, where, macro, include, "$")
+                self.lex(inner, where, macro, "$")
             elif token.group("substitution") is not None:
                 inner = token.group("substitution")
                 function, _, argument = inner.strip().partition(" ")
                 found.substitutions.append(Substitution(function, argument.strip(), where, macro, inside == "$"))
                 if function == "find" and argument.strip():
-                    when = "include" if include else "expansion" if inside == "$" else "run"
-                    found.packages.append(PackageUse(argument.strip(), where._replace(offset=where.offset - 2), macro, when))
-                self.lex(inner, where, macro, include, "(")
+                    found.packages.append(PackageUse(argument.strip(), where._replace(offset=where.offset - 2), macro))
+                self.lex(inner, where, macro, "(")
             at = token.end()
 
 

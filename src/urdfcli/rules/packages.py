@@ -13,14 +13,11 @@ from ..read.packages import named_package, uri_package
 from ..read.xacro_scan import shown
 from .base import SAFE, WARNING, Kind, RuleSet, check
 
-# what to declare for a package used at build time (an included file, a YAML file read
-# while expanding) and for one used at run time (a mesh, a texture, a parameter file)
-BUILD, RUN = "depend", "exec_depend"
 _VARIABLE = re.compile(r"\$\{\s*(\w+)\s*\}")
 
 
-def _uses(loaded) -> Iterator[tuple[str, str, str, Callable[[], Location]]]:
-    """(file, package, what to declare, where) for every package a file of the model
+def _uses(loaded) -> Iterator[tuple[str, str, Callable[[], Location]]]:
+    """(file, package, where) for every package a file of the model
     names with a plain name: the xacro sources read statically (conditions and
     uncalled macros included), or a plain URDF's meshes and textures. ``where`` is
     worked out only for the use reported."""
@@ -29,18 +26,17 @@ def _uses(loaded) -> Iterator[tuple[str, str, str, Callable[[], Location]]]:
         own = {file.name for file in sources.files}
         for file in sources.files:
             for use in file.packages:
-                kind = RUN if use.when == "run" else BUILD
                 if use.package and "$" not in use.package:
-                    yield file.name, use.package, kind, functools.partial(_at, file, use.place)
+                    yield file.name, use.package, functools.partial(_at, file, use.place)
                 else:  # a macro's parameter: each call names the package, where every call gives a plain name
                     for package, where, place in _given(sources, file, use):
                         if where.name in own:
-                            yield where.name, package, kind, functools.partial(_at, where, place)
+                            yield where.name, package, functools.partial(_at, where, place)
     elif loaded.modelled:
         for at, _, uri in loaded.robot.resources:
             package = uri_package(uri)
             if package:
-                yield loaded.document.shown, package, RUN, functools.partial(loaded.document.locate, at)
+                yield loaded.document.shown, package, functools.partial(loaded.document.locate, at)
 
 
 def _given(sources, file, use) -> list:
@@ -63,7 +59,7 @@ def _at(file, place) -> Location:
 
 
 @check("P001", "package-dependency-undeclared", WARNING, "A file uses a package that its package.xml does not declare.", kind=Kind.SOURCES, rule_set=RuleSet.LINT, fix=SAFE, fix_doc="Adds the dependency to package.xml, after its last dependency of the same kind and in its indentation "
-       "(safe: a declaration; format 1 manifests get `run_depend`, and `build_depend` too for a file read while expanding).")
+       "(safe: a declaration; `exec_depend`, or `run_depend` in a format 1 manifest: the model's files are read where it is expanded and loaded, not to build).")
 def dependency_undeclared(loaded, given) -> Iterator[Diagnostic]:
     """## What it does
     For each file of the model that belongs to a package (a `package.xml` in
@@ -72,11 +68,13 @@ def dependency_undeclared(loaded, given) -> Iterator[Diagnostic]:
     condition does not install a package), and flags a package that is
     neither the file's own nor declared in its `package.xml` as `depend`,
     `exec_depend`, `build_export_depend`, `build_depend`, `test_depend` (or
-    format 1's `run_depend`). The hint gives the line to add: `<depend>` for a
-    file included or read while expanding, `<exec_depend>` for a mesh or any
-    other file used at run time (in a format 1 manifest, `<build_depend>` and
-    `<run_depend>`, or `<run_depend>`). One diagnostic per file and package, at its
-    first use. A package named by a macro's parameter (`$(find ${pkg})`,
+    format 1's `run_depend`). The hint gives the line to add: `<exec_depend>`
+    (in a format 1 manifest, `<run_depend>`), for an included file as for a
+    mesh: both are read where the model is expanded and loaded (a launch file,
+    rviz), not when the package builds, and a build dependency between two
+    description packages that use each other's files (a robot's and its
+    grippers') is a cycle that stops catkin. One diagnostic per file and
+    package, at its first use. A package named by a macro's parameter (`$(find ${pkg})`,
     `package://${pkg}/`) is named by each call: when every call in the
     workspace gives a plain name (or leaves the plain default), each is judged
     where it is written (a value carrying a folder too, `my_robot/arm` before
@@ -113,14 +111,13 @@ def dependency_undeclared(loaded, given) -> Iterator[Diagnostic]:
     """
     index = loaded.resolver.index
     reported: dict[tuple[str, str], list] = {}
-    for file, package, kind, where in _uses(loaded):
+    for file, package, where in _uses(loaded):
         key = (file, package)
         if key in reported:
             reported[key][0] += 1
-            reported[key][1] = BUILD if BUILD in (kind, reported[key][1]) else RUN
             continue
-        reported[key] = [0, kind, where]
-    for (file, package), (others, kind, where) in reported.items():
+        reported[key] = [0, where]
+    for (file, package), (others, where) in reported.items():
         owner = index.enclosing_package(index.real_path(Path(file)).parent) if not file.startswith("<") else None
         manifest = index.manifest(owner / "package.xml") if owner is not None else None
         if manifest is None or manifest.name in (None, package) or package in manifest.dependencies:
@@ -132,7 +129,7 @@ def dependency_undeclared(loaded, given) -> Iterator[Diagnostic]:
             continue  # its own, by its folder's name: D005 says which name to write, no dependency is missing
         more = f" (and {others} more use{'s' if others > 1 else ''} in this file)" if others else ""
         name = shown(owner / "package.xml")
-        fix = declaration(loaded.document.files.get(name), name, package, kind)
+        fix = declaration(loaded.document.files.get(name), name, package)
         yield Diagnostic(
             "P001",
             f"package '{package}' is used here{more} but {manifest.name}'s package.xml does not declare it",
@@ -147,39 +144,39 @@ _FORMAT = re.compile(r"""<package\b[^>]*\bformat\s*=\s*["'](\d+)["']""")
 _ALL_KINDS = ("depend", "exec_depend", "build_depend", "build_export_depend", "run_depend", "test_depend", "buildtool_depend", "buildtool_export_depend", "doc_depend")
 
 
-def declaration(source, name: str, package: str, kind: str) -> Fix:
-    """The edit that declares ``package`` in the package.xml ``source`` (named ``name``):
-    after the last dependency of the same kind, else after the last dependency of
-    any kind, else before ``<export>`` or ``</package>``, in the indentation there."""
-    title = f"add <{kind}>{package}</{kind}> to {name}"
+def declaration(source, name: str, package: str) -> Fix:
+    """The edit that declares ``package`` in the package.xml ``source`` (named ``name``)
+    as a run-time dependency: ``<exec_depend>``, or ``<run_depend>`` in a format 1
+    manifest. A file a model includes or meshes it loads are read where the model is
+    expanded and shown (launch, rviz), not to build; a build dependency between two
+    description packages that use each other's files is a cycle catkin stops on. The
+    line goes after the last dependency of the same tag, else after the last
+    dependency of any tag, else before ``<export>`` or ``</package>``, in the
+    indentation there."""
     if source is None:
-        return Fix(title, SAFE, reason=f"{name} cannot be read")
+        return Fix(f"add <exec_depend>{package}</exec_depend> to {name}", SAFE, reason=f"{name} cannot be read")
     text = source.text
     version = _FORMAT.search(text)
-    tags = [kind] if version is not None and version.group(1) != "1" else ["build_depend", "run_depend"] if kind == BUILD else ["run_depend"]
+    tag = "exec_depend" if version is not None and version.group(1) != "1" else "run_depend"
+    markup = f"<{tag}>{package}</{tag}>"
+    title = f"add {markup} to {name}"
     elements = [(m.group(1) or m.group(2), m) for m in _ELEMENT.finditer(text) if not _in_comment(text, m.start())]
-    edits = []
-    for tag in tags:
-        same = [m for found, m in elements if found == tag]
-        any_kind = [m for found, m in elements if found in _ALL_KINDS]
-        anchor = (same or any_kind or [None])[-1]
-        markup = f"<{tag}>{package}</{tag}>"
-        if anchor is not None:
-            line_end = text.find("\n", anchor.end())
-            at = len(text) if line_end < 0 else line_end
-            edits.append(Edit(name, at, at, "\n" + _indentation(text, anchor.start()) + markup))
-            continue
-        before = re.search(r"<export\b|</package\s*>", text)
-        if before is None:
-            return Fix(title, SAFE, reason=f"{name} has no </package> to write it before")
-        line_start = text.rfind("\n", 0, before.start()) + 1
-        own = _indentation(text, before.start())
-        indent = own + "  " if text[before.start():before.start() + 2] == "</" else own
-        if text[line_start:before.start()].strip():
-            edits.append(Edit(name, before.start(), before.start(), markup + "\n" + own))
-        else:
-            edits.append(Edit(name, line_start, line_start, indent + markup + "\n"))
-    return Fix(title if tags == [kind] else f"add {' and '.join(f'<{t}>{package}</{t}>' for t in tags)} to {name}", SAFE, edits=tuple(edits))
+    same = [m for found, m in elements if found == tag]
+    any_kind = [m for found, m in elements if found in _ALL_KINDS]
+    anchor = (same or any_kind or [None])[-1]
+    if anchor is not None:
+        line_end = text.find("\n", anchor.end())
+        at = len(text) if line_end < 0 else line_end
+        return Fix(title, SAFE, edits=(Edit(name, at, at, "\n" + _indentation(text, anchor.start()) + markup),))
+    before = re.search(r"<export\b|</package\s*>", text)
+    if before is None:
+        return Fix(title, SAFE, reason=f"{name} has no </package> to write it before")
+    line_start = text.rfind("\n", 0, before.start()) + 1
+    own = _indentation(text, before.start())
+    indent = own + "  " if text[before.start():before.start() + 2] == "</" else own
+    if text[line_start:before.start()].strip():
+        return Fix(title, SAFE, edits=(Edit(name, before.start(), before.start(), markup + "\n" + own),))
+    return Fix(title, SAFE, edits=(Edit(name, line_start, line_start, indent + markup + "\n"),))
 
 
 def _in_comment(text: str, at: int) -> bool:
