@@ -669,6 +669,16 @@ def test_add_noqa_exits_as_lint_does_for_what_no_comment_silences(cli, here):
     assert cli("lint", "--isolated", "--add-noqa", "--exit-zero", "broken.urdf").exit_code == 0
 
 
+def test_add_noqa_writes_no_comment_for_a_model_xacro_cannot_expand(cli, here):
+    """X003 (and X004) stop the expansion: no model is checked, whatever a comment says. The
+    comment --add-noqa wrote silenced nothing and the run exited 0; the editor offered it too."""
+    put(here, {"r.urdf.xacro": f'<robot name="r" {XACRO_NS}>\n  <link name="${{nope}}"/>\n</robot>\n'})
+    done = cli("lint", "--isolated", "--add-noqa", "r.urdf.xacro")
+    assert "noqa" not in (here / "r.urdf.xacro").read_text()
+    assert re.search(r"^0 noqa comments written, 1 remaining$", done.stdout, re.M), done.stdout
+    assert done.exit_code == 1
+
+
 def test_add_noqa_silences_a_finding_on_the_whole_file_with_a_noqa_file_comment(cli, here):
     """A drifted generated URDF (X110, at its XML declaration) and a library no model
     could check (X006, no line): a noqa-file comment, after the declaration."""

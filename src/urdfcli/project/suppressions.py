@@ -27,7 +27,7 @@ from ..diagnostics import Diagnostic, Location
 from ..read.document import SUPPRESSION_MARK
 from ..read.positions import Text
 from ..rules import REGISTRY
-from ..rules.structure import X001, X002
+from ..rules.structure import X001, X002, X003, X004
 from ..rules.suppression import U001, U002
 from .config import matches, selector
 
@@ -179,9 +179,10 @@ def apply(diagnostics: list[Diagnostic], suppressions: list[Suppression], enable
 
 
 # -- writing them -------------------------------------------------------------------------
-# codes a comment is not the fix for: a file that cannot be read is reported whatever the
-# comments say, and a comment about the comments (U001 unused, U002 unknown code) wants editing
-UNSILENCEABLE = (X001.code, X002.code, U001.code, U002.code)
+# codes a comment is not the fix for: a file that cannot be read or expanded (no model is
+# checked then) is reported whatever the comments say, and a comment about the comments
+# (U001 unused, U002 unknown code) wants editing
+UNSILENCEABLE = (X001.code, X002.code, X003.code, X004.code, U001.code, U002.code)
 
 
 def noqa_edit(source: Text, line: int | None, codes: list[str], column: int | None = None) -> tuple[int, int, str] | None:
