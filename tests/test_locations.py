@@ -336,7 +336,7 @@ def test_a_diagnostic_about_one_attribute_points_at_it(tmp_path, monkeypatch):
     )
     (tmp_path / "r.urdf.xacro").write_text(
         f'<robot name="r" {XACRO}>\n  <xacro:include filename="parts.xacro"/>\n  <xacro:part n="a"/>\n'
-        '  <link name="b" type="x" shade="blue"/>\n</robot>\n'
+        '  <link name="b" type="x" colour="blue"/>\n</robot>\n'
     )
     report = json.loads(run("lint", "r.urdf.xacro", "--select", "D010", "--format", "json", cwd=tmp_path).stdout)
     found = sorted((d["path"], d["line"], d["column"]) for d in report["files"][0]["diagnostics"])

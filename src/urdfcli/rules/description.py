@@ -153,9 +153,7 @@ def unknown_markup(loaded, given):
     an old or private extension (`<verbose>`, `<self_filter>`), an attribute
     on an element that takes none (an element's unknown attributes are one note:
     an `<inertia>` that also writes its lower triangle, `iyx`, `izx`, `izy`,
-    repeating the upper; a value that differs is a typo, D002's; the same
-    attributes on many elements of a tag are one note for the model, at the
-    first, saying on how many).
+    repeating the upper; a value that differs is a typo, D002's).
     Info: shown, never fails a run.
 
     Known extensions draw nothing: Gazebo's tags inside `<gazebo>`, PyBullet's
@@ -201,36 +199,15 @@ def unknown_markup(loaded, given):
         else:
             hint = f"<{unknown.parent}> may hold " + ", ".join(f"<{c}>" for c in sorted(SCHEMA[unknown.parent][1]))
         yield loaded.diagnostic("D010", f"<{unknown.name}> is not URDF markup inside <{unknown.parent}>; URDF consumers ignore it", unknown.at, hint)
-    notes = []  # (tag, diagnostic) of each element with unknown attributes
     for at, unknowns in attributes_of.items():
         tag, names = unknowns[0].parent, [u.name for u in unknowns]
         takes = sorted(SCHEMA[tag][0])
         hint = f"<{tag}> takes {', '.join(takes)}" if takes else f"<{tag}> takes no attributes"
         if len(names) == 1:
-            notes.append((tag, loaded.diagnostic("D010", f"<{tag}> has no attribute '{names[0]}'; URDF consumers ignore it", at, hint, attribute=names[0])))
+            yield loaded.diagnostic("D010", f"<{tag}> has no attribute '{names[0]}'; URDF consumers ignore it", at, hint, attribute=names[0])
         else:
             listed = ", ".join(f"'{name}'" for name in names[:-1]) + f" and '{names[-1]}'"
-            notes.append((tag, loaded.diagnostic("D010", f"<{tag}> has no attributes {listed}; URDF consumers ignore them", at, hint, attribute=names[0])))
-    yield from _alike_as_one(notes)
-
-
-def _alike_as_one(notes):
-    """The same note on many elements of one tag as one, at the first, saying at how
-    many places: a CAD exporter writes ``iyx``, ``izx`` and ``izy`` on every ``<inertia>``
-    (Fetch's 17), one habit. A note raised above info (a likely mistake) stays at
-    each element, where it is to be corrected."""
-    alike: dict[tuple[str, str, str | None], list] = {}
-    for tag, note in notes:
-        if note.severity not in (None, INFO):
-            yield note
-        else:
-            alike.setdefault((tag, note.message, note.hint), []).append(note)
-    for (tag, _, _), same in alike.items():
-        places = len({note.location[:3] for note in same})  # (file, line, column): a macro's calls write one place, shown once
-        if places == 1:
-            yield from same
-        else:
-            yield same[0]._replace(message=f"{same[0].message} (on {places} <{tag}> elements, the first here)")
+            yield loaded.diagnostic("D010", f"<{tag}> has no attributes {listed}; URDF consumers ignore them", at, hint, attribute=names[0])
 
 
 @check("D011", "gazebo-tag-outside-gazebo", WARNING, "Gazebo markup written outside `<gazebo>`, where Gazebo never reads it.", rule_set=RuleSet.LINT)
