@@ -25,7 +25,7 @@ from ..diagnostics import Diagnostic, Edit, Fix, Location, Severity
 from ..model.load import Loaded, load
 from ..read.document import InputError
 from ..read.packages import PackageError, common_tail
-from ..read.xacro_scan import header_source
+from ..read.xacro_scan import ARGUMENT, COMPUTED, header_source
 from ..rules.base import joined
 from ..rules.drift import X110
 from .config import Config
@@ -35,7 +35,6 @@ if TYPE_CHECKING:
     from ..session import Session
 
 HEAD_BYTES = 4096  # xacro's header is within the first lines
-_ARGUMENT = re.compile(r"\$\(\s*arg\s+([^\s()]+)\s*\)")
 MOST_NAMED = 3  # names given in a summary before "and N more"
 
 
@@ -325,9 +324,9 @@ def _computed_from(texts: list[str], trace: tuple, session: Session, properties:
     found: set[str] = set()
     for _ in range(len(trace) + 1):
         joined_text = " ".join(texts)
-        found.update(_ARGUMENT.findall(joined_text))
+        found.update(ARGUMENT.findall(joined_text))
         named = {name for expression in re.findall(r"\$\{([^}]*)\}", joined_text) for name in _NAME.findall(expression)}
-        found.update(argument for name in named if name in properties for argument in _ARGUMENT.findall(properties[name]))
+        found.update(argument for name in named if name in properties for argument in ARGUMENT.findall(properties[name]))
         if not trace:
             break
         call = _element_at(session, trace[0].file, trace[0].line, trace[0].column)
@@ -383,7 +382,7 @@ def _including(file: str, scans: list, session: Session, properties: dict[str, s
             written = node.get("filename") if is_xacro(node) and local_name(node.tag) == "include" else None
             if not written:
                 continue
-            pattern = re.sub(r"\$\{[^}]*\}|\$\([^)]*\)", "*", written.replace("\\", "/").rpartition("/")[2])
+            pattern = COMPUTED.sub("*", written.replace("\\", "/").rpartition("/")[2])
             if not fnmatchcase(name, pattern):
                 continue
             conditions = [around.get("value") or "" for around in node.iterancestors() if is_xacro(around) and local_name(around.tag) in ("if", "unless")]

@@ -52,7 +52,7 @@ from ..read.document import STDIN, Document
 from ..read.document import is_xacro as reads_as_xacro  # (the file; xacro_scan.is_xacro is an element)
 from ..read.packages import PackageIndex, PackageResolver, files_below
 from ..read.files import SourceFile, SourceFiles
-from ..read.xacro_scan import DIRECTIVES, XacroFile, XacroGlobals, header_source, is_xacro, local_name, shown
+from ..read.xacro_scan import ARGUMENT, COMPUTED, DIRECTIVES, XacroFile, XacroGlobals, header_source, is_xacro, local_name, shown
 from ..rules import structure
 from ..rules.structure import X004 as PACKAGE_NOT_FOUND
 from ..rules.tree import joint_link_not_found
@@ -143,7 +143,6 @@ def substitute(
     return text
 
 
-_COMPUTED = re.compile(r"\$\{[^}]*\}|\$\([^)]*\)")
 
 
 def resolve_include(
@@ -159,7 +158,7 @@ def resolve_include(
         return Include("unknown", written)
     base = Path(folder) if folder and Path(folder).is_absolute() else source.path.parent / folder if folder else source.path.parent
     if "$" in name:
-        pattern = _COMPUTED.sub("*", name)
+        pattern = COMPUTED.sub("*", name)
         if not pattern.strip("*"):
             return Include("unknown", written)  # a name computed whole: it may be any file
         return Include("pattern", os.path.normpath(base / pattern))
@@ -785,27 +784,26 @@ def _computed_include(source: WorkspaceFile, file: Path, index: Index) -> str | 
     # what its arguments compute is left open; other properties are what they are
     open_source = source._replace(arguments=(), properties=tuple((k, v) for k, v in source.properties if "$(arg" not in v))
     for written in source.includes:
-        if _COMPUTED.search(written.replace("\\", "/").rpartition("/")[2]) and resolve_include(written, open_source, index.finder(source.path)).may_be(file):
+        if COMPUTED.search(written.replace("\\", "/").rpartition("/")[2]) and resolve_include(written, open_source, index.finder(source.path)).may_be(file):
             return written
     return None
 
 
-_ARGUMENT = re.compile(r"\$\(\s*arg\s+(\w+)\s*\)")
 
 
 def _naming_argument(written: str, properties: dict[str, str], name: str) -> tuple[str, str] | None:
     """The xacro argument, and its value, with which an include computing one part of its
     file name (``$(arg x)``, or ``${p}`` of a property ``p`` that is ``$(arg x)``) names ``name``."""
     written_name = written.replace("\\", "/").rpartition("/")[2]
-    computed = _COMPUTED.findall(written_name)
+    computed = COMPUTED.findall(written_name)
     if len(computed) != 1:
         return None
-    before, after = _COMPUTED.split(written_name)
+    before, after = COMPUTED.split(written_name)
     value = re.fullmatch(re.escape(before) + "(.+)" + re.escape(after), name)
     token = computed[0]
     if token.startswith("${"):
         token = properties.get(token[2:-1].strip(), "").strip()
-    argument = _ARGUMENT.fullmatch(token)
+    argument = ARGUMENT.fullmatch(token)
     return (argument.group(1), value.group(1)) if argument and value else None
 
 

@@ -548,3 +548,10 @@ def header_source(head: bytes) -> str | None:
     match = _GENERATED.search(head)
     return match.group(1).decode("utf-8", "replace").removesuffix("-->") if match else None
 
+
+ARGUMENT = re.compile(r"\$\(\s*arg\s+([^\s()]+)\s*\)")
+"""``$(arg NAME)``, NAME its group."""
+
+COMPUTED = re.compile(r"\$\{[^}]*\}|\$\([^)]*\)")
+"""A ``${...}`` expression or a ``$(...)`` substitution: what a file name computes."""
+
