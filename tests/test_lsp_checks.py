@@ -161,3 +161,33 @@ def test_a_mistake_shown_at_an_outer_call_names_the_macro_that_wrote_it(tmp_path
     checked = Checker().check(str(model), {str(model): model.read_text(), str(library): library.read_text()})
     [at_call] = [m for m in checked.marks[str(model)] if m.diagnostic.code == "D004"]
     assert at_call.place.start.line + 1 == 3 and "(in macro 'inner', lib.xacro:4)" in at_call.message
+
+
+def test_a_mistake_of_the_macro_body_is_not_shown_at_a_call_that_only_named_its_element(tmp_path):
+    """A joint named ``${prefix}elbow`` without <limit>: the call's prefix named it, the body
+    forgot the limit, so the model's call shows nothing (the library does). A parent the call
+    passes that does not exist, and a prefix that makes a link twice, are the call's: shown there."""
+    (tmp_path / ".git").mkdir()
+    library = tmp_path / "arm.xacro"
+    library.write_text(f"""<robot {XACRO_NS}>
+  <xacro:macro name="arm" params="prefix parent">
+    <link name="${{prefix}}upper"/>
+    <joint name="${{prefix}}elbow" type="revolute">
+      <parent link="${{parent}}"/><child link="${{prefix}}upper"/>
+    </joint>
+  </xacro:macro>
+</robot>
+""")
+    model = tmp_path / "model.urdf.xacro"
+    model.write_text(f"""<robot name="r" {XACRO_NS}>
+  <xacro:include filename="arm.xacro"/>
+  <link name="world"/>
+  <xacro:arm prefix="left_" parent="world"/>
+  <xacro:arm prefix="right_" parent="wrld"/>
+  <xacro:arm prefix="right_" parent="world"/>
+</robot>
+""")
+    checked = Checker().check(str(model), {str(model): model.read_text(), str(library): library.read_text()})
+    at_calls = sorted((m.place.start.line + 1, m.diagnostic.code) for m in checked.marks[str(model)] if m.diagnostic.code[0] in "JN")
+    assert at_calls == [(5, "J005"), (6, "N004"), (6, "N005")], at_calls
+    assert {m.diagnostic.code for m in checked.marks[str(library)]} >= {"J003", "J005", "N004", "N005"}

@@ -356,3 +356,33 @@ def test_any_rule_a_macro_multiplies_says_it_once_in_a_sentence_that_stays_right
     path.write_text(STANDOFF.replace('<mass value="0.1"/>', '<mass value="0"/>').replace('  <xacro:standoff name="s3" x="0.3"/>\n  <xacro:standoff name="s4" x="0.4"/>\n', ""))
     [found] = [d for d in lint_file(str(path), Config.everything()).diagnostics if d.code == "I003"]
     assert (found.message, found.subjects) == ("link 's1' (and 's2' alike) has mass 0 but a non-zero inertia tensor", ("s1", "s2"))
+
+
+ARM = """<robot name="arms" xmlns:xacro="http://www.ros.org/wiki/xacro">
+  <link name="world"/>
+  <xacro:macro name="arm" params="prefix">
+    <link name="${prefix}upper"/>
+    <joint name="${prefix}shoulder" type="revolute">
+      <parent link="world"/><child link="${prefix}upper"/>
+      <limit lower="-1" upper="1" effort="ten" velocity="1"/>
+    </joint>
+    <joint name="${prefix}elbow" type="revolute"><parent link="${prefix}upper"/><child link="${prefix}fore"/></joint>
+    <link name="${prefix}fore"/>
+  </xacro:macro>
+  <xacro:arm prefix="left_"/>
+  <xacro:arm prefix="right_"/>
+</robot>
+"""
+
+
+def test_what_the_reader_finds_in_a_macro_body_is_said_once_for_its_calls(tmp_path):
+    """A joint without <limit> and a limit that is no number, written once in a macro called
+    for each arm: one diagnostic each, naming both joints (as the rules' findings are), not
+    one per call at the same line."""
+    path = tmp_path / "arms.urdf.xacro"
+    path.write_text(ARM)
+    found = {d.code: d for d in lint_file(str(path), Config.everything()).diagnostics if d.code in ("J003", "V001")}
+    assert [d.code for d in lint_file(str(path), Config.everything()).diagnostics].count("J003") == 1
+    assert found["J003"].message == "revolute joint 'left_elbow' (and 'right_elbow' alike) has no <limit>"
+    assert found["J003"].subjects == ("left_elbow", "right_elbow") and found["J003"].line == 9
+    assert found["V001"].subjects == ("left_shoulder", "right_shoulder"), found["V001"]

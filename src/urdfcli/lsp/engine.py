@@ -48,6 +48,7 @@ from .outline import Outline, encoded, outline
 from .places import Place, offset, offset_place, token_place
 
 OUTLINES_KEPT = 64  # outlines of files not open (included libraries) kept for navigation
+NAME_RULES = frozenset({"N004", "N005", "N006"})  # what they find is the element's own name: a call's ${prefix} can make it
 
 
 class Mark(NamedTuple):
@@ -215,27 +216,30 @@ class Checker:
 
     def _calls_that_caused(self, mark: Mark) -> list[Mark]:
         """The same diagnostic at each macro call whose arguments made the element it is
-        about: the innermost call when the element uses its macro's parameters, the call
-        around that one when the inner call passes its own macro's parameters on, and
-        so on. The element's own place is the related information."""
+        about: the innermost call when the element uses its macro's parameters (in its
+        ``name`` only for the rules about names), the call around that one when the inner
+        call passes its own macro's parameters on, and so on. The element's own place is
+        the related information."""
         location = mark.diagnostic.location
         if location.expanded or not location.line or not location.trace:
             return []
         found: list[Mark] = []
         written = (_absolute(location.file), location.line, location.column)
         maker = location.trace[0].macro  # the macro whose body wrote the element, whichever call is marked
+        names = mark.diagnostic.code in NAME_RULES
         for call in location.trace:
-            if not self._uses_parameters(*written):
+            if not self._uses_parameters(*written, names):
                 break
+            names = True  # (a call's every attribute is an argument)
             found.append(self._at_call(mark, call, maker))
             written = (_absolute(call.file), call.line, call.column)
         return found
 
-    def _uses_parameters(self, file: str, line: int | None, column: int | None) -> bool:
+    def _uses_parameters(self, file: str, line: int | None, column: int | None, names: bool) -> bool:
         source = self.session.files.get(file)
         if source is None or not line or source.line(line) is None:
             return False
-        return navigation.uses_parameters(source.text, offset(source, line - 1, (column or 1) - 1))
+        return navigation.uses_parameters(source.text, offset(source, line - 1, (column or 1) - 1), names)
 
     def _at_call(self, mark: Mark, call: Call, maker: str) -> Mark:
         """``mark`` at a call that caused it, its message saying where macro ``maker`` wrote it."""

@@ -29,6 +29,7 @@ _NAME_CHARACTERS = re.compile(r"[\w.-]*")
 _TYPED_NAME = re.compile(r"\w*$")
 _OPEN_EXPRESSION = re.compile(r"\$\{[^}]*$")
 _LONGEST_TAG = 65_536
+_OWN_NAME = re.compile(r"""\sname\s*=\s*(?:"[^"]*"|'[^']*')""")
 
 
 class Scope(NamedTuple):
@@ -126,10 +127,12 @@ def _preferred(definitions: list[Definition], macro: str | None) -> list[Definit
     return [d for d in definitions if d.macro == macro and macro] + [d for d in definitions if d.macro is None] or definitions
 
 
-def uses_parameters(text: str, offset: int) -> bool:
+def uses_parameters(text: str, offset: int, names: bool = True) -> bool:
     """Whether the start tag at ``offset`` (or around it: a diagnostic about an attribute
     is placed at the attribute; else the first one after it) uses a parameter of the
-    macro whose body holds it, in a ``${...}``: what a call's arguments change."""
+    macro whose body holds it, in a ``${...}``: what a call's arguments change. Without
+    ``names``, its ``name`` attribute does not count: a ``${prefix}`` that names a link
+    does not make what is wrong with the link's limits or shapes."""
     start = text.rfind("<", 0, offset + 1)
     if start < 0 or ">" in text[start:offset]:
         start = text.find("<", offset)
@@ -137,8 +140,9 @@ def uses_parameters(text: str, offset: int) -> bool:
     if macro is None:
         return False
     end = text.find(">", start, start + _LONGEST_TAG)
+    tag = text[start : end if end > 0 else start + _LONGEST_TAG]
     parameters = {p.name.lstrip("^") for p in macro_parameters(macro[1])}
-    return bool(parameters & expression_names(text[start : end if end > 0 else start + _LONGEST_TAG]))
+    return bool(parameters & expression_names(tag if names else _OWN_NAME.sub(" ", tag)))
 
 
 # -- hover ------------------------------------------------------------------------------

@@ -199,24 +199,28 @@ class Reader:
 
     # -- reporting -------------------------------------------------------------
     def report(
-        self, code: str, message: str, element: "Element | None", hint: str | None = None, attribute: str | None = None, fix: Fix | None = None
+        self, code: str, message: str, element: "Element | None", hint: str | None = None, attribute: str | None = None, fix: Fix | None = None,
+        subjects: tuple[str, ...] = (),
     ) -> None:
-        self.diagnostics.append(self.document.diagnostic(code, message, self.at(element), hint, attribute).with_fix(fix))
+        """``subjects``: the joint the message names (copies of one macro line, one per call, are then said once)."""
+        self.diagnostics.append(self.document.diagnostic(code, message, self.at(element), hint, attribute, subjects).with_fix(fix))
 
     # -- values ----------------------------------------------------------------
-    def number(self, element: "Element", attribute: str, required: bool = False, what: str = "") -> float | None:
+    def number(self, element: "Element", attribute: str, required: bool = False, joint: str | None = None) -> float | None:
+        """The attribute's value; ``joint``: the name of the joint it belongs to, said in a report."""
         text = element.get(attribute)
         value = self._numbers.get(text)
         if value is not None:
             return value
+        what, subjects = (f" (joint '{joint}')", (joint,)) if joint is not None else ("", ())
         if text is None:
             if required:
-                self.report("V004", f"<{tag_name(element)}> has no '{attribute}' attribute{what}", element)
+                self.report("V004", f"<{tag_name(element)}> has no '{attribute}' attribute{what}", element, subjects=subjects)
             return None
         try:
             value = parse_double(text)
         except NumberError as error:
-            self.report(error.code, f"{tag_name(element)} {attribute}: {error.reason}{what}", element, attribute=attribute)
+            self.report(error.code, f"{tag_name(element)} {attribute}: {error.reason}{what}", element, attribute=attribute, subjects=subjects)
             return None
         self._numbers[text] = value
         return value
@@ -440,17 +444,16 @@ class Reader:
                 inertial = self.inertial(child)
         return Link(name, self._index[element], inertial, tuple(visuals), tuple(collisions))
 
-    def joint_limit(self, joint_name: str, element: "Element") -> Limit:
+    def joint_limit(self, joint_name: str | None, element: "Element") -> Limit:
         key = (element.get("lower"), element.get("upper"), element.get("effort"), element.get("velocity"))
         limit = self._limits.get(key)
         if limit is not None:
             return limit
         reported = len(self.diagnostics)
-        what = f" (joint '{joint_name}')"
-        lower = self.number(element, "lower", what=what)
-        upper = self.number(element, "upper", what=what)
-        effort = self.number(element, "effort", required=True, what=what)
-        velocity = self.number(element, "velocity", required=True, what=what)
+        lower = self.number(element, "lower", joint=joint_name)
+        upper = self.number(element, "upper", joint=joint_name)
+        effort = self.number(element, "effort", required=True, joint=joint_name)
+        velocity = self.number(element, "velocity", required=True, joint=joint_name)
         limit = Limit(
             lower if lower is not None else 0.0,
             upper if upper is not None else 0.0,
@@ -468,12 +471,12 @@ class Reader:
         if name is None:
             self.report("N002", "<joint> has no 'name' attribute", element)
         shown = name if name is not None else "?"
-        what = f" (joint '{shown}')"
+        subjects = (name,) if name is not None else ()
         joint_type = element.get("type")
         if joint_type is None:
-            self.report("J001", f"joint '{shown}' has no 'type' attribute", element, f"the types are {', '.join(JOINT_TYPES)}")
+            self.report("J001", f"joint '{shown}' has no 'type' attribute", element, f"the types are {', '.join(JOINT_TYPES)}", subjects=subjects)
         elif joint_type not in JOINT_TYPES:
-            self.report("J002", f"joint '{shown}' has unknown type '{joint_type}'", element, f"the types are {', '.join(JOINT_TYPES)}")
+            self.report("J002", f"joint '{shown}' has unknown type '{joint_type}'", element, f"the types are {', '.join(JOINT_TYPES)}", subjects=subjects)
             joint_type = None
         found = first_children(element)
         origin = self.pose(found.get("origin"))
@@ -482,48 +485,48 @@ class Reader:
         if axis_element is not None and joint_type not in ("fixed", "floating"):
             axis = self.vector(axis_element, "xyz", (1.0, 0.0, 0.0)) or axis
         limit_element = found.get("limit")
-        limit = self.joint_limit(shown, limit_element) if limit_element is not None else None
+        limit = self.joint_limit(name, limit_element) if limit_element is not None else None
         if limit_element is None and joint_type in ("revolute", "prismatic"):
-            self.report("J003", f"{joint_type} joint '{shown}' has no <limit>", element, 'add <limit lower="..." upper="..." effort="..." velocity="..."/>')
+            self.report("J003", f"{joint_type} joint '{shown}' has no <limit>", element, 'add <limit lower="..." upper="..." effort="..." velocity="..."/>', subjects=subjects)
         safety = None
         safety_element = found.get("safety_controller")
         if safety_element is not None:
             safety = Safety(
-                self.number(safety_element, "soft_lower_limit", what=what), self.number(safety_element, "soft_upper_limit", what=what),
-                self.number(safety_element, "k_position", what=what), self.number(safety_element, "k_velocity", required=True, what=what),
+                self.number(safety_element, "soft_lower_limit", joint=name), self.number(safety_element, "soft_upper_limit", joint=name),
+                self.number(safety_element, "k_position", joint=name), self.number(safety_element, "k_velocity", required=True, joint=name),
             )
         calibration = found.get("calibration")
         if calibration is not None:
             for attribute in ("reference_position", "rising", "falling"):
-                self.number(calibration, attribute, what=what)
+                self.number(calibration, attribute, joint=name)
         mimic = None
         mimic_element = found.get("mimic")
         if mimic_element is not None:
-            multiplier = self.number(mimic_element, "multiplier", what=what)
-            offset = self.number(mimic_element, "offset", what=what)
+            multiplier = self.number(mimic_element, "multiplier", joint=name)
+            offset = self.number(mimic_element, "offset", joint=name)
             target = mimic_element.get("joint")
             if target is None:
-                self.report("V004", f"<mimic> of joint '{shown}' has no 'joint' attribute", mimic_element)
+                self.report("V004", f"<mimic> of joint '{shown}' has no 'joint' attribute", mimic_element, subjects=subjects)
             else:
                 mimic = Mimic(target, 1.0 if multiplier is None else multiplier, offset or 0.0)
         dynamics = None
         dynamics_element = found.get("dynamics")
         if dynamics_element is not None:
             if dynamics_element.get("damping") is None and dynamics_element.get("friction") is None:
-                self.report("J006", f"<dynamics> of joint '{shown}' has neither damping nor friction", dynamics_element)
+                self.report("J006", f"<dynamics> of joint '{shown}' has neither damping nor friction", dynamics_element, subjects=subjects)
             values = []
             for attribute in ("damping", "friction"):
-                value = self.number(dynamics_element, attribute, what=what)
+                value = self.number(dynamics_element, attribute, joint=name)
                 values.append(value)
                 if value is not None and value < 0:
                     self.report("V010", f"joint '{shown}' has {attribute} {format_number(value)}; it must not be negative", dynamics_element,
-                                f"a {attribute} coefficient is 0 or more", attribute)
+                                f"a {attribute} coefficient is 0 or more", attribute, subjects=subjects)
             dynamics = Dynamics(*values)
         parent = self._link_ref(found.get("parent"))
         child = self._link_ref(found.get("child"))
         if parent is None or child is None:
             missing = " and ".join(t for t, v in (("<parent link>", parent), ("<child link>", child)) if v is None)
-            self.report("J004", f"joint '{shown}' has no {missing}", element)
+            self.report("J004", f"joint '{shown}' has no {missing}", element, subjects=subjects)
         parts = tuple([(tag, self._index[found[tag]]) for tag in JOINT_PARTS if tag in found])
         return Joint(name if name is not None else "", self._index[element], joint_type, parent, child, origin, axis, limit, mimic, parts, safety, dynamics)
 
