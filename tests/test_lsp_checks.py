@@ -7,6 +7,7 @@ reach the session's worker."""
 
 from __future__ import annotations
 
+import textwrap
 from pathlib import Path
 
 import pytest
@@ -161,3 +162,25 @@ def test_a_mistake_shown_at_an_outer_call_names_the_macro_that_wrote_it(tmp_path
     checked = Checker().check(str(model), {str(model): model.read_text(), str(library): library.read_text()})
     [at_call] = [m for m in checked.marks[str(model)] if m.diagnostic.code == "D004"]
     assert at_call.place.start.line + 1 == 3 and "(in macro 'inner', lib.xacro:4)" in at_call.message
+
+
+def test_a_file_opened_at_its_symlink_in_the_install_space_gets_its_diagnostics(tmp_path, monkeypatch):
+    """After `colcon build --symlink-install`, a library opened at install/.../share/PKG/urdf
+    (where $(find) and go-to-definition in another tool lead) is a link to its source in src/,
+    where diagnostics are placed: the buffer the user has open shows them."""
+    from ros_workspace import install_package, make_colcon_workspace
+    from test_workspace import CASTER, WHEELED
+
+    repo_a, repo_b = make_colcon_workspace(tmp_path)
+    wheels = repo_b / "wheels"
+    (wheels / "description" / "urdf").mkdir(parents=True)
+    (wheels / "description" / "urdf" / "caster.xacro").write_text(textwrap.dedent(CASTER))
+    share = install_package(tmp_path / "ws", wheels, "acme_wheels", {"urdf": "urdf", "description/urdf": "urdf"})
+    model = repo_a / "robot" / "urdf" / "robot.urdf.xacro"
+    model.parent.mkdir(parents=True)
+    model.write_text(textwrap.dedent(WHEELED))
+    monkeypatch.chdir(tmp_path / "ws")
+    opened = str(share / "urdf" / "caster.xacro")
+    checked = Checker().check(opened, {opened: Path(opened).read_text(), str(model): model.read_text()})
+    assert "V009" in [m.diagnostic.code for m in checked.marks[opened]], checked.marks
+    assert not [file for file in checked.marks if "/src/" in file and file.endswith("caster.xacro")], list(checked.marks)
