@@ -7,6 +7,7 @@ reach the session's worker."""
 
 from __future__ import annotations
 
+import textwrap
 from pathlib import Path
 
 import pytest
@@ -191,3 +192,25 @@ def test_a_mistake_of_the_macro_body_is_not_shown_at_a_call_that_only_named_its_
     at_calls = sorted((m.place.start.line + 1, m.diagnostic.code) for m in checked.marks[str(model)] if m.diagnostic.code[0] in "JN")
     assert at_calls == [(5, "J005"), (6, "N004"), (6, "N005")], at_calls
     assert {m.diagnostic.code for m in checked.marks[str(library)]} >= {"J003", "J005", "N004", "N005"}
+
+
+def test_a_file_opened_at_its_symlink_in_the_install_space_gets_its_diagnostics(tmp_path, monkeypatch):
+    """After `colcon build --symlink-install`, a library opened at install/.../share/PKG/urdf
+    (where $(find) and go-to-definition in another tool lead) is a link to its source in src/,
+    where diagnostics are placed: the buffer the user has open shows them."""
+    from ros_workspace import install_package, make_colcon_workspace
+    from test_workspace import CASTER, WHEELED
+
+    repo_a, repo_b = make_colcon_workspace(tmp_path)
+    wheels = repo_b / "wheels"
+    (wheels / "description" / "urdf").mkdir(parents=True)
+    (wheels / "description" / "urdf" / "caster.xacro").write_text(textwrap.dedent(CASTER))
+    share = install_package(tmp_path / "ws", wheels, "acme_wheels", {"urdf": "urdf", "description/urdf": "urdf"})
+    model = repo_a / "robot" / "urdf" / "robot.urdf.xacro"
+    model.parent.mkdir(parents=True)
+    model.write_text(textwrap.dedent(WHEELED))
+    monkeypatch.chdir(tmp_path / "ws")
+    opened = str(share / "urdf" / "caster.xacro")
+    checked = Checker().check(opened, {opened: Path(opened).read_text(), str(model): model.read_text()})
+    assert "V009" in [m.diagnostic.code for m in checked.marks[opened]], checked.marks
+    assert not [file for file in checked.marks if "/src/" in file and file.endswith("caster.xacro")], list(checked.marks)

@@ -189,12 +189,14 @@ class Checker:
         if path not in self.runs or any(m.robot is not None for m in run.models):
             self.runs[path] = run  # navigation keeps the models of the last check that read any
         marks: dict[str, list[Mark]] = {path: []}
+        opened = _opened_as(texts)
         for diagnostic, note in _labelled(run.results):
             mark = self.mark(diagnostic, note)
-            marks.setdefault(mark.place.file, []).append(mark)
+            file = opened(mark.place.file)
+            marks.setdefault(file, []).append(mark)
             for call in self._calls_that_caused(mark):
-                if call.place.file in texts and call.place.file != mark.place.file:
-                    marks.setdefault(call.place.file, []).append(call)
+                if opened(call.place.file) in texts and opened(call.place.file) != file:
+                    marks.setdefault(opened(call.place.file), []).append(call)
         for reason in [*map(str, run.unreadable), *(n for r in run.results if r.library for n in r.library.notes)]:
             marks[path].append(self._problem(path, reason, Severity.INFO))
         models = {(_absolute(m.path), m.arguments): frozenset(_files([m])) for m in run.models}  # (a library's check names models relative, their own absolute)
@@ -528,6 +530,23 @@ def _models_reading(runs: dict[str, api.Run], path: str) -> list[Result]:
             if path in _files([model]):
                 found.setdefault(model.label, model)
     return list(found.values())
+
+
+def _opened_as(texts: Mapping[str, str]):
+    """The path under which the editor opened a file: a built workspace's ``install/``
+    holds symlinks into ``src/``, where diagnostics are placed; a buffer opened at the
+    link gets them."""
+    by_target = {os.path.realpath(path): path for path in texts}
+    seen: dict[str, str] = {}
+
+    def opened(file: str) -> str:
+        if file in texts:
+            return file
+        if file not in seen:
+            seen[file] = by_target.get(os.path.realpath(file), file)
+        return seen[file]
+
+    return opened
 
 
 def _absolute(file: str) -> str:
