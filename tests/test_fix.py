@@ -371,6 +371,24 @@ def test_a_fix_in_a_macro_body_is_applied_when_every_model_expanding_it_is_fixed
     assert re.search(r"^1 fixed, 0 remaining", done.stdout.decode(), re.M) and 'ixx="0.166667"' in (here / "pkg/urdf/seg.xacro").read_text()
 
 
+@pytest.mark.parametrize("given", ['size="$(arg size)"', 'size="${size}"'])
+def test_an_inertial_worked_out_from_a_xacro_argument_is_not_written_as_literals(cli, here, given):
+    """xArm's other_geometry: the box's size comes from an argument (through the macro's call, or
+    a property). A tensor worked out for this argument set, written as literals in the macro
+    body, would be wrong with any other: no fix, saying where the argument comes in."""
+    segment_models(here)
+    model = here / "pkg/urdf/a.urdf.xacro"
+    property_ = '  <xacro:property name="size" value="$(arg size)"/>\n' if "${" in given else ""
+    model.write_text(model.read_text().replace('size="0.1"', given).replace(
+        "  <xacro:include", f'  <xacro:arg name="size" default="1.0"/>\n{property_}  <xacro:include'))
+    [found] = [d for d in diagnostics(cli, "pkg/urdf/a.urdf.xacro") if d["code"] == "I009"]
+    assert found["fix"]["reason"] == ('the new values would be worked out from size="${size} ${size} ${size}" at pkg/urdf/seg.xacro:6, '
+                                      "which $(arg size) gives: they would fit this argument set only"), found["fix"]
+    before = snapshot(here)
+    cli("lint", "--isolated", "--fix", "--unsafe-fixes", "--select", "I009", "pkg/urdf/a.urdf.xacro")
+    assert snapshot(here) == before
+
+
 # -- meshes and packages ---------------------------------------------------------------------------
 PACKAGE = """<?xml version="1.0"?>
 <package format="3">

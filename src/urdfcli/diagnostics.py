@@ -111,6 +111,7 @@ class Fix(NamedTuple):
     edits: tuple[Edit, ...] = ()
     changes: tuple[Change, ...] = ()
     reason: str | None = None  # why there is no edit (the value is computed by an expression...)
+    inputs: tuple[tuple[int, str], ...] = ()  # (element, attribute): values the changes were worked out from, which must be the same for every call
 
     @property
     def available(self) -> bool:

@@ -472,7 +472,22 @@ def inertial_fix(loaded: Loaded, link: Link) -> Fix:
             changes.append(InsertChild(inertial.at, f'<origin xyz="{xyz}" rpy="0 0 0"/>'))
     if not changes:
         return Fix(title, UNSAFE, reason="the declared values are those already")
-    return Fix(f"{title}: {found.source}", UNSAFE, changes=tuple(changes))
+    return Fix(f"{title}: {found.source}", UNSAFE, changes=tuple(changes), inputs=_inputs(loaded, link))
+
+
+def _inputs(loaded: Loaded, link: Link) -> tuple[tuple[int, str], ...]:
+    """The values a suggested inertial is worked out from: the mass, and the size and
+    place of the shapes the body fills."""
+    found = [(link.inertial.mass_at, "value")] if link.inertial.mass_at is not None else []
+    for shape in filled_shapes(loaded, link)[1]:
+        geometry = shape.geometry
+        found += [(geometry.at, attribute) for attribute in _SIZED_BY[geometry.kind]]
+        if shape.origin_at is not None:
+            found += [(shape.origin_at, "xyz"), (shape.origin_at, "rpy")]
+    return tuple(found)
+
+
+_SIZED_BY = {"box": ("size",), "cylinder": ("radius", "length"), "sphere": ("radius",), "mesh": ("filename", "scale")}
 
 
 def _same(declared: float | None, value: float) -> bool:

@@ -155,6 +155,56 @@ class Placer:
         start = site.start if offset is None else offset
         return f"{site.file}:{site.source.position(start)[0]}"
 
+    def same_for_every_argument_set(self, at: int, attribute: str) -> None:
+        """Raises Unplaceable when value ``attribute`` of element ``at`` comes from a xacro
+        argument (or an environment variable): directly, through the parameters of the
+        macro calls that made it, or through a property. A value worked out from it
+        and written as a literal would fit this argument set only."""
+        site = self.site(at)
+        if site.scan is None:
+            return  # a plain URDF: every value is written as it is
+        raw = self._written(site, attribute)
+        if raw is not None:
+            self._given_by_arguments(site, raw, f'{attribute}="{raw}" at {self.where(site)}', 0)
+
+    def _written(self, site: _Site, attribute: str) -> str | None:
+        text = site.source.text
+        name = site.source.attribute(site.start, attribute)
+        value = _VALUE.match(text, name + len(attribute)) if name is not None else None
+        if value is None:
+            return None
+        return value.group(1) if value.group(1) is not None else value.group(2)
+
+    def _given_by_arguments(self, site: _Site, raw: str, what: str, depth: int) -> None:
+        for kind, _, _, inner in lexed(raw):
+            if kind == "substitution" and inner.split()[:1] in (["arg"], ["env"], ["optenv"]):
+                raise Unplaceable(f"the new values would be worked out from {what}, which $({inner}) gives: they would fit this argument set only")
+            if kind != "expression" or depth > 8:
+                continue
+            macros = site.scan.macros_at(site.start)
+            for name in dict.fromkeys(n.name for n in free_names(inner) or ()):
+                declared = [(m, p) for m in macros for p in macro_parameters(site.scan.macros[m].params) if p.name == name and not p.block]
+                if not declared:
+                    for file in self.scans.values():
+                        for definition in file.definitions:
+                            if definition.kind == "property" and definition.name == name and definition.value:
+                                self._given_by_arguments(site, definition.value, what, depth + 1)
+                    continue
+                macro, parameter = declared[0]
+                called = site.trace[0] if site.trace else None
+                if macro != macros[0] or called is None or called.macro.rpartition(".")[2] != site.scan.macros[macro].name.removeprefix("xacro:"):
+                    continue  # (the call that gives it is not known)
+                call_scan = self.scans.get(_absolute(called.file))
+                element = _index(call_scan.source, call_scan.source.offset(called.line, called.column)) if call_scan and called.line and called.column else None
+                if element is None:
+                    continue
+                call_site = _Site(called.file, call_scan.source, call_scan, element, call_scan.source.spans[element][0], site.trace[1:], ())
+                passed = self._written(call_site, name)
+                if passed is not None:
+                    self._given_by_arguments(call_site, passed, what, depth + 1)
+                elif parameter.default is not None:
+                    self._given_by_arguments(site, parameter.default, what, depth + 1)
+
     # -- a change ---------------------------------------------------------------------
     def place(self, change: Change) -> list[Spot]:
         """The edits that make ``change``; raises Unplaceable."""
@@ -404,6 +454,8 @@ def place_fixes(loaded: Loaded, diagnostics: list[Diagnostic]) -> list[Diagnosti
         if fix is None or not fix.changes:
             continue
         try:
+            for at, attribute in fix.inputs:
+                placer.same_for_every_argument_set(at, attribute)
             spots = [(change, placer.place(change)) for change in fix.changes]
         except Unplaceable as why:
             placed[number] = str(why)
