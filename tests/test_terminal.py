@@ -121,8 +121,9 @@ def test_the_concise_summary_is_a_line_of_its_own_on_a_terminal():
 
 
 def test_a_workspace_lint_on_a_terminal_fits_its_width(tmp_path):
-    """The test workspace on a terminal 100 columns wide: no line longer than that beside
-    the one path it names, every finding once, and nothing left of the progress bar."""
+    """The test workspace on a terminal 100 columns wide: messages, notes and hints wrapped
+    at that width alike (only a word longer than the room left would go past it; none
+    here is), every finding once, and nothing left of the progress bar."""
     from ros_workspace import make_ros_workspace
 
     src = make_ros_workspace(tmp_path)
@@ -131,8 +132,7 @@ def test_a_workspace_lint_on_a_terminal_fits_its_width(tmp_path):
     assert code == 1 and "Traceback" not in shown
     report = text(out[max(0, out.rfind(SHOW_CURSOR)):]).lstrip("\n")  # after the progress bar, if one was drawn (it hides the cursor)
     for line in report.splitlines():
-        longest = max((len(word) for word in line.split() if "/" in word), default=0)
-        assert len(line) <= 100 + longest, line
+        assert len(line) <= 100, line
     firsts = [line.split(" ")[0] for line in report.splitlines() if re.match(r"src/\S+:\d+:\d+: [A-Z]\d{3} ", line)]
     assert len(firsts) == len(set(firsts))  # nothing twice
     assert "\n12 files checked: 2 errors, 6 warnings, 5 info\n" in report
@@ -156,6 +156,25 @@ def test_a_long_source_line_is_cut_to_the_terminal_around_its_caret(tmp_path):
     assert lines[excerpt].startswith("     2 | ...")  # the start cut off, the caret's part shown
     caret = lines[excerpt + 1].index("^")
     assert lines[excerpt][caret:].startswith('size="1 1 -1"') or lines[excerpt][caret:].startswith("<box")
+
+
+def test_a_source_line_is_never_wrapped_and_the_caret_stays_under_its_column(tmp_path):
+    """xArm's <xacro:arg default="$(find xarm_controller)/config/..."> on an 80-column
+    terminal: the excerpt went past the width by the path it held, was wrapped like a
+    hint, and its caret landed two lines below its text. It is cut to the width now, the
+    caret on the next line, under its text."""
+    comment = "<!-- exported from /home/engineer/cad/exports/robot_arm/assembly/version_2/parts/link_a.step -->"
+    (tmp_path / "long.urdf").write_text(
+        f'<robot name="r">\n  <link name="a"><visual><geometry><box size="1 1 -1"/></geometry></visual>{comment}</link>\n</robot>\n'
+    )
+    out, code = on_terminal("lint", "long.urdf", cwd=tmp_path, env={"COLUMNS": "80"})
+    lines = text(out).splitlines()
+    assert code == 1
+    assert all(len(line) <= 80 for line in lines), lines
+    excerpt = next(i for i, line in enumerate(lines) if line.startswith("     2 | "))
+    assert len(lines[excerpt]) == 80 and lines[excerpt].endswith("...")  # cut, not wrapped
+    assert lines[excerpt + 1].startswith("       | ")
+    assert lines[excerpt][lines[excerpt + 1].index("^"):].startswith('size="1 1 -1"')
 
 
 @pytest.mark.parametrize("after", [0.2, 1.0, 2.0])  # while Python starts; while trimesh imports scipy (it swallows the exception); later

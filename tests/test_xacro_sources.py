@@ -516,6 +516,47 @@ def test_a_name_built_from_a_parameter_or_a_property_that_differs_between_calls_
     assert found(model, codes=("X105", "N004", "N005")) == []
 
 
+
+ATTACHED_MACRO = """
+    <xacro:arg name="with_world" default="true"/>
+    <xacro:macro name="arm" params="prefix attach_to create_attach_link:=true">
+      <xacro:if value="{condition}">
+        <link name="world"/>
+        <joint name="${{prefix}}world_joint" type="fixed"><parent link="world"/><child link="${{prefix}}base"/></joint>
+      </xacro:if>
+      <link name="${{prefix}}base"/>
+    </xacro:macro>
+"""
+
+
+@pytest.mark.parametrize("condition", ["${attach_to == 'world' and create_attach_link}", "${prefix == 'left_'}"])
+def test_a_fixed_name_under_a_condition_on_the_parameters_is_left_alone(tmp_path, condition):
+    """xArm's xarm_device macro writes <link name="world"/> under a condition on its
+    parameters, and its dual arm calls the macro twice, attached to "ground": whether a
+    call makes the link depends on the call, not 'whatever its parameters'."""
+    model = write(tmp_path / "robot.urdf.xacro", robot(ATTACHED_MACRO.format(condition=condition) + """
+        <xacro:arm prefix="left_" attach_to="world"/>
+        <link name="ground"/>
+        <joint name="ground_joint" type="fixed"><parent link="left_base"/><child link="ground"/></joint>
+        <xacro:arm prefix="right_" attach_to="ground" create_attach_link="false"/>
+        <joint name="right_joint" type="fixed"><parent link="ground"/><child link="right_base"/></joint>
+        """))
+    assert found(model, codes=("X105", "N004", "N005")) == []
+
+
+def test_a_fixed_name_under_a_condition_on_an_argument_is_still_info(tmp_path):
+    model = write(tmp_path / "robot.urdf.xacro", robot(ATTACHED_MACRO.format(condition="$(arg with_world)") + '<xacro:arm prefix="" attach_to="world"/>'))
+    [info] = diagnostics(model, "X105")
+    assert info.severity.value == "info" and info.message.startswith("macro 'arm' names link 'world' whatever its parameters")
+
+
+def test_a_fixed_name_two_calls_make_under_a_condition_on_the_parameters_is_left_to_n004(tmp_path):
+    model = write(tmp_path / "robot.urdf.xacro", robot(ATTACHED_MACRO.format(condition="${attach_to == 'world'}") + """
+        <xacro:arm prefix="left_" attach_to="world"/>
+        <xacro:arm prefix="right_" attach_to="world"/>
+        """))
+    assert [code for code, *_ in found(model, codes=("X105", "N004"))] == ["N004"]
+
 # -- X106: names in macro bodies --------------------------------------------------------
 def test_an_undefined_name_in_a_library_nothing_includes_is_a_warning_at_its_column(tmp_path):
     """A library bug: a warning at the library's line (the model loads while nothing

@@ -135,6 +135,7 @@ class Made(NamedTuple):
     name: str  # its name attribute as written
     place: Place  # of the name attribute
     macro: int
+    conditions: tuple[str, ...] = ()  # the values of the xacro:if and xacro:unless it is written in, innermost first
 
 
 class PackageUse(NamedTuple):
@@ -312,7 +313,7 @@ class _Scanner:
         if element.prefix is None and local in OLD_DIRECTIVES and element.get(OLD_DIRECTIVES[local]) is not None and _directive_place(element):
             found.old.append(Old(local, Place(at), element.get(OLD_DIRECTIVES[local])))
         if macro is not None and local in NAMED and element.get("name") is not None and _in_body(element):
-            found.made.append(Made(local, element.get("name"), Place(at, "name"), macro))
+            found.made.append(Made(local, element.get("name"), Place(at, "name"), macro, _conditions(element)))
         self.attributes(element, at, macro)
         return macro
 
@@ -379,6 +380,16 @@ def _in_body(element) -> bool:
     the <joint> of a <transmission> names a joint, it makes none."""
     parent = element.getparent()
     return is_xacro(parent) and local_name(parent.tag) in ("macro", "if", "unless")
+
+
+def _conditions(element) -> tuple[str, ...]:
+    """The conditions of the xacro:if and xacro:unless an element of a macro's body is written in."""
+    found = []
+    parent = element.getparent()
+    while is_xacro(parent) and local_name(parent.tag) in ("if", "unless"):
+        found.append(parent.get("value") or "")
+        parent = parent.getparent()
+    return tuple(found)
 
 
 # What an SRDF (MoveIt's) writes at its top level: a file that writes one makes a semantic description

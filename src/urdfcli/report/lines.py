@@ -3,7 +3,6 @@ macro calls that made its element, its source excerpt, a library's notes, the su
 
 from __future__ import annotations
 
-import re
 from collections.abc import Iterable
 from typing import TYPE_CHECKING
 
@@ -63,14 +62,6 @@ def trace_notes(diagnostic: Diagnostic, levels: int = TRACE_LEVELS) -> list[str]
     return notes
 
 
-_PATH = re.compile(r"[\w.+-]+://[^\s\"'<>]+|[~.]{0,2}/?[\w.@+-]+(?:/[\w.@+-]+)+/?")
-
-
-def longest_path(line: str) -> int:
-    """The length of the longest path or URI a line holds (the one a line may go past the terminal by)."""
-    return max((len(found) for found in _PATH.findall(line)), default=0)
-
-
 class SourcesOnce:
     """The session's files for one model's report, each looked up once: its diagnostics quote
     lines of the same few files, and a look-up checks the file on disk (a ``stat``)."""
@@ -88,7 +79,8 @@ class SourcesOnce:
 
 def excerpt_lines(diagnostic: Diagnostic, files: SourceFiles | SourcesOnce, width: int | None = None) -> list[str]:
     """The diagnostic's source line, numbered, with a caret under its column: the line
-    cut at 160 characters, or with ``width``, to fit that many columns, around the caret."""
+    cut at 160 characters, or with ``width``, to fit that many columns, around the caret:
+    a terminal that wrapped it would break the gutter and leave the caret under the wrong text."""
     location = diagnostic.location
     if location.expanded or not location.line:
         return []
@@ -98,7 +90,7 @@ def excerpt_lines(diagnostic: Diagnostic, files: SourceFiles | SourcesOnce, widt
     text = text.replace("\t", " ").rstrip()
     safe = escape(text)  # the caret moves right by what the escapes before it add
     number = max(4, len(str(location.line)))
-    room = 160 if width is None else max(20, width - number - 5 + longest_path(safe))
+    room = 160 if width is None else max(20, width - number - 5)  # the gutter: two spaces, the number, ' | '
     caret = len(escape(text[: location.column - 1])) if location.column else None
     begin = 0
     if len(safe) <= room:
@@ -127,14 +119,12 @@ def fix_line(diagnostic: Diagnostic) -> str | None:
     return escape(f"    no fix: {fix.reason}") if fix.reason else None
 
 
-def details(diagnostic: Diagnostic, files: SourceFiles | SourcesOnce | None, width: int | None = None) -> list[str]:
-    """The lines under a diagnostic: its macro calls, its hint, its fix, its source excerpt
-    (fitting ``width`` columns, when given)."""
+def details(diagnostic: Diagnostic) -> list[str]:
+    """The lines under a diagnostic, before its source excerpt: its macro calls, its hint, its fix."""
     hint = ["    hint: " + escape(diagnostic.hint)] if diagnostic.hint else []
     through = ["    note: " + escape(diagnostic.through)] if diagnostic.through else []
     fix = [line] if (line := fix_line(diagnostic)) is not None else []
-    excerpt = excerpt_lines(diagnostic, files, width) if files is not None else []
-    return trace_notes(diagnostic) + through + hint + fix + excerpt
+    return trace_notes(diagnostic) + through + hint + fix
 
 
 def library_lines(results: list[Result]) -> list[str]:
@@ -190,15 +180,16 @@ STYLES = {"error": "bold red", "warning": "yellow", "info": "cyan"}
 
 def diagnostic_lines(diagnostic: Diagnostic, files: SourceFiles | SourcesOnce | None, width: int | None = None) -> list[Line]:
     """A diagnostic, its macro calls and hint, and (given the files) its source line.
-    With ``width``, a message, note or hint longer than that (beside the one path it
-    names) goes on over indented lines, and a source excerpt is cut to fit it around its
-    caret; without, an excerpt is cut at 160 characters."""
+    With ``width``, a message, note or hint longer than that goes on over indented lines
+    (a word, such as a path, is never cut: only a word longer than the width goes past
+    it), and a source excerpt is cut to fit it around its caret; without, an excerpt is
+    cut at 160 characters."""
     style = STYLES[severity_name(diagnostic)]
     where = position(diagnostic)
     head = f"{where}: {diagnostic.code} {severity_name(diagnostic)}: "
     message = escape(diagnostic.message)
     expanded = " (line in the xacro-expanded document)" if diagnostic.location.expanded else ""
-    pieces = wrapped(message + expanded, width, len(head), len(where))
+    pieces = wrapped(message + expanded, width, len(head))
     first: Line = [(escape(where), "bold"), (": ", ""), (diagnostic.code, style), (f" {severity_name(diagnostic)}: ", style)]
     if len(pieces) == 1 and expanded:
         first += [(message, ""), (expanded, "dim")]
@@ -206,36 +197,35 @@ def diagnostic_lines(diagnostic: Diagnostic, files: SourceFiles | SourcesOnce | 
         first.append((pieces[0], ""))
     rest = [("    " + piece, "") for piece in pieces[1:]]
     lines: list[Line] = [first, *([piece] for piece in rest)]
-    for line in details(diagnostic, files, width):
-        excerpt = not line.startswith("    ")
-        lines += [[(part, "dim")] for part in ([line] if excerpt or not width else wrap_line(line, width, " " * 10))]
-    return lines
+    for line in details(diagnostic):
+        lines += [[(part, "dim")] for part in (wrap_line(line, width, " " * 10) if width else [line])]
+    excerpt = excerpt_lines(diagnostic, files, width) if files is not None else []
+    return lines + [[(line, "dim")] for line in excerpt]
 
 
-def wrapped(text: str, width: int | None, used: int = 0, allowance: int = 0) -> list[str]:
-    """``text`` in pieces: the first fits ``width`` after ``used`` characters (with
-    ``allowance`` more: the path the line begins with), the others ``width`` after an
-    indent of four. A word is never cut (a path is one word)."""
+def wrapped(text: str, width: int | None, used: int = 0) -> list[str]:
+    """``text`` in pieces: the first fits ``width`` after ``used`` characters (empty when
+    not even a word does), the others ``width`` after an indent of four. A word is never
+    cut (a path is one word)."""
     import textwrap
 
-    if not width or used + len(text) <= width + allowance:
+    if not width or used + len(text) <= width:
         return [text]
-    lines = textwrap.wrap(text, width=max(20, width + allowance - used), break_long_words=False, break_on_hyphens=False)
-    if len(lines) <= 1:
-        return [text]
-    rest = textwrap.wrap(text[len(lines[0]):].strip(), width=max(20, width - 4), break_long_words=False, break_on_hyphens=False)
-    return [lines[0], *rest]
+    first = (textwrap.wrap(text, width=max(1, width - used), break_long_words=False, break_on_hyphens=False) or [""])[0]
+    if used + len(first) > width:
+        first = ""
+    rest = textwrap.wrap(text[len(first):].strip(), width=max(20, width - 4), break_long_words=False, break_on_hyphens=False)
+    return [first, *rest]
 
 
 def wrap_line(line: str, width: int, hanging: str = "    ") -> list[str]:
-    """A line over several when it is longer than ``width`` beside the longest path it
-    names, the others indented by ``hanging``; a word is never cut."""
+    """A line over several when it is longer than ``width``, the others indented by
+    ``hanging``; a word is never cut."""
     import textwrap
 
-    longest = longest_path(line)
-    if len(line) <= width + longest:
+    if len(line) <= width:
         return [line]
-    return textwrap.wrap(line, width=width + longest, subsequent_indent=hanging, break_long_words=False, break_on_hyphens=False) or [line]
+    return textwrap.wrap(line, width=width, subsequent_indent=hanging, break_long_words=False, break_on_hyphens=False) or [line]
 
 
 def fixable_line(results: list[Result]) -> str | None:

@@ -19,7 +19,7 @@ from collections.abc import Iterator
 from ..diagnostics import Diagnostic, Edit, Fix, Location
 from ..model.sources import Facts, XacroSources, bound, interface, parameter_place, parameters, used_parameters
 from ..read.memo import once
-from ..read.xacro_scan import Parameter, Place, XacroFile, free_names
+from ..read.xacro_scan import Made, Parameter, Place, XacroFile, free_names, lexed
 from . import structure
 from .base import ERROR, INFO, UNSAFE, WARNING, Kind, RuleSet, check, joined, names
 from .suggestions import close_matches
@@ -300,9 +300,14 @@ def macro_name_fixed(loaded, given) -> Iterator[Diagnostic]:
     info, since the macro can then be used only once per robot (as vendors
     write a robot's macro, on purpose). One diagnostic per macro, at its first
     fixed name, names them all: the error those made twice, else the info
-    every fixed name. A name built from a parameter or a property
-    (`${prefix}wheel`) is never flagged: the duplicate-name rules (N004, N005)
-    judge what it expands to.
+    every fixed name.
+
+    Left alone: a name built from a parameter or a property
+    (`${prefix}wheel`), and a fixed name written in an `xacro:if` or
+    `xacro:unless` whose condition reads a parameter of the macro or a
+    property of its body (`<xacro:if value="${attach_to == 'world'}">`):
+    whether a call makes it depends on what the call passes. The
+    duplicate-name rules (N004, N005) judge what they expand to.
 
     ## Why is this bad?
     The second call of the macro defines the link or joint again: check_urdf
@@ -339,7 +344,7 @@ def macro_name_fixed(loaded, given) -> Iterator[Diagnostic]:
     for file in loaded.xacro_sources.files:
         fixed: dict[int, list] = {}  # macro index: (element, the call chains that made it), as written
         for element in file.made:
-            if "$" in element.name or file.name not in files:
+            if "$" in element.name or file.name not in files or _conditional_on_parameters(file, element):
                 continue
             made = made if made is not None else _made_by_macros(origins)
             line, column = file.position(Place(element.place.element))
@@ -348,6 +353,19 @@ def macro_name_fixed(loaded, given) -> Iterator[Diagnostic]:
                 fixed.setdefault(element.macro, []).append((element, traces))
         for macro, elements in fixed.items():
             yield _fixed_names(origins, file, file.macros[macro].name, elements)
+
+
+def _conditional_on_parameters(file: XacroFile, element: Made) -> bool:
+    """Whether a condition around an element reads a name its macro binds (a parameter,
+    or a property of its body): whether a call makes the element depends on the call.
+    A condition that cannot be read counts as one that does."""
+    bound_here = bound(file, element.macro)
+    for condition in element.conditions:
+        for kind, _, _, inner in lexed(condition):
+            read = free_names(inner) if kind == "expression" else ()
+            if read is None or any(name.name in bound_here for name in read):
+                return True
+    return False
 
 
 def _fixed_names(origins, file: XacroFile, macro: str, elements: list) -> Diagnostic:
