@@ -82,7 +82,7 @@ def test_folders_are_searched_for_models_only(tmp_path):
 def test_parallel_runs_print_the_same_output_in_the_same_order():
     one = run_cli("lint", "--format", "concise", str(FIXTURES))
     four = run_cli("lint", "--format", "concise", "-j", "4", str(FIXTURES))
-    assert one.stdout.decode().count("\n") > 40  # (enough lines for their order to tell)
+    assert one.stdout.decode().count("\n") > 50
     assert (one.returncode, one.stdout, one.stderr) == (four.returncode, four.stdout, four.stderr)
     every_cpu = run_cli("lint", "--format", "json", "-j", "0", str(FIXTURES))
     # every model, but not the car's parts (demo05-07), which the car models include: they are checked through them

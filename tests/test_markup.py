@@ -3,7 +3,7 @@ published robots draws nothing, next to the real defect that still draws its war
 
 from __future__ import annotations
 
-from conftest import lint_file
+from conftest import lint_file, run_cli
 
 from urdfcli.project.config import Config
 
@@ -325,11 +325,17 @@ def test_a_lower_triangle_value_that_is_not_the_upper_ones_is_a_mistyped_moment(
     assert found(tmp_path, body) == [("D010", "info", "<inertia> has no attributes 'iyx', 'izx' and 'izy'; URDF consumers ignore them")]
 
 
-def test_the_same_unknown_attributes_on_many_elements_are_one_note_for_the_file(tmp_path):
+def shown(path, *options: str) -> list[str]:
+    """What `lint` prints of D002 and D010: each first line, and the note saying where else."""
+    out = run_cli("lint", "--isolated", "--select", "D002,D010", *options, str(path)).stdout.decode().splitlines()
+    return [line.removeprefix(f"{path}:") if ": D0" in line else line.strip() for line in out if ": D0" in line or "also at" in line]
+
+
+def test_the_same_unknown_attributes_on_many_elements_are_shown_once_for_the_file(tmp_path):
     """Fetch's fetch.urdf.xacro writes iyx, izx and izy on each of its 17 <inertia> (a CAD
-    exporter's habit): one note, at the first, saying at how many other places. Other
-    attributes, or the same on another tag, are notes of their own; a typo stays D002's
-    warning, at each element. A noqa comment on the first silences its own note only."""
+    exporter's habit): shown once, at the first, saying where else (the JSON keeps each).
+    Other attributes, or the same on another tag, are shown apart; a typo stays D002's
+    warning. A noqa comment on the first silences its own note only."""
     def link(name: str, inertia: str = "", mass: str = "", comment: str = "") -> str:
         moments = 'ixx="1" ixy="0" ixz="0" iyy="1" iyz="0"' + ("" if "izzz" in inertia else ' izz="1"')
         return f'<link name="{name}">{comment}<inertial><mass value="1" {mass}/><inertia {moments} {inertia}/></inertial></link>'
@@ -338,31 +344,30 @@ def test_the_same_unknown_attributes_on_many_elements_are_one_note_for_the_file(
              link("f", mass='unit="kg"'), link("g", 'izzz="1"'), link("h", 'izzz="1"')]
     path = tmp_path / "robot.urdf"
     path.write_text('<robot name="r">\n' + "\n".join(lines) + "\n</robot>\n")
-    notes = [(d.code, d.line, d.message) for d in lint_file(str(path), Config()).diagnostics if d.code in ("D002", "D010")]
-    assert sorted(notes) == [
-        ("D002", 8, "<inertia> has no attribute 'izzz'; it is ignored"),
-        ("D002", 9, "<inertia> has no attribute 'izzz'; it is ignored"),
-        ("D010", 2, "<inertia> has no attributes 'iyx', 'izx' and 'izy'; URDF consumers ignore them (and at 2 other places, the first here)"),
-        ("D010", 5, "<inertia> has no attribute 'izy'; URDF consumers ignore it"),
-        ("D010", 6, "<mass> has no attribute 'unit'; URDF consumers ignore it (and at 1 other place, the first here)"),
+    assert shown(path) == [
+        "2:101: D010 info: <inertia> has no attributes 'iyx', 'izx' and 'izy'; URDF consumers ignore them", "note: also at lines 3 and 4",
+        "5:101: D010 info: <inertia> has no attribute 'izy'; URDF consumers ignore it",
+        "6:42: D010 info: <mass> has no attribute 'unit'; URDF consumers ignore it", "note: also at line 7",
+        "8:93: D002 warning: <inertia> has no attribute 'izzz'; it is ignored", "note: also at line 9",
     ]
+    assert len([d for d in lint_file(str(path), Config()).diagnostics if d.code == "D010"]) == 6  # each place, for the formats that list them
     lines[0] = link("a", triangle, comment="<!-- urdfcli: noqa: D010 -->")
     path.write_text('<robot name="r">\n' + "\n".join(lines) + "\n</robot>\n")
-    notes = [(d.line, d.message) for d in lint_file(str(path), Config()).diagnostics if d.code == "D010" and "iyx" in d.message]
-    assert notes == [(3, "<inertia> has no attributes 'iyx', 'izx' and 'izy'; URDF consumers ignore them (and at 1 other place, the first here)")]
+    assert shown(path)[:2] == ["3:101: D010 info: <inertia> has no attributes 'iyx', 'izx' and 'izy'; URDF consumers ignore them", "note: also at line 4"]
 
 
 def test_unknown_attributes_a_macro_writes_count_the_places_written(tmp_path):
-    """A macro called twice writes its <inertia> once: one place, noted as before; with a
-    second <inertia> written elsewhere, the note says 1 other place, not the 2 other elements of the expansion."""
+    """A macro called twice writes its <inertia> once: one place, shown once; with a second
+    <inertia> written elsewhere, the note names that line, not the expansion's elements."""
     macro = ('<xacro:macro name="part" params="n"><link name="${n}"><inertial><mass value="1"/>'
              '<inertia ixx="1" ixy="0" ixz="0" iyy="1" iyz="0" izz="1" iyx="0"/></inertial></link></xacro:macro>')
-    head = 'xmlns:xacro="http://www.ros.org/wiki/xacro"'
+    path = tmp_path / "robot.urdf.xacro"
     calls = '<xacro:part n="a"/>\n<xacro:part n="b"/>'
-    assert found(tmp_path, f"{macro}\n{calls}", head) == [("D010", "info", "<inertia> has no attribute 'iyx'; URDF consumers ignore it")]
+    path.write_text(f'<robot name="r" xmlns:xacro="http://www.ros.org/wiki/xacro">\n{macro}\n{calls}\n</robot>\n')
+    assert [line for line in shown(path) if "also" in line] == []
     written = '<link name="c"><inertial><mass value="1"/><inertia ixx="1" ixy="0" ixz="0" iyy="1" iyz="0" izz="1" iyx="0"/></inertial></link>'
-    assert found(tmp_path, f"{macro}\n{calls}\n{written}", head) == [
-        ("D010", "info", "<inertia> has no attribute 'iyx'; URDF consumers ignore it (and at 1 other place, the first here)")]
+    path.write_text(f'<robot name="r" xmlns:xacro="http://www.ros.org/wiki/xacro">\n{macro}\n{calls}\n{written}\n</robot>\n')
+    assert [line for line in shown(path) if "also" in line] == ["note: also at line 5"]
 
 
 def test_a_gazebo_reference_whose_expression_lost_its_dollar_says_so(tmp_path):

@@ -11,7 +11,7 @@ the same everywhere.
 
 from __future__ import annotations
 
-from ..diagnostics import Diagnostic, Severity
+from ..diagnostics import Diagnostic
 from ..model.inertia import inertial_fix
 from ..model.load import Loaded
 from ..model.written import place_fixes
@@ -57,7 +57,7 @@ def lint(loaded: Loaded, config: Config, rule_set: RuleSet = RuleSet.LINT, found
     each with its fix placed in the sources (see :func:`with_fixes`); ``found``: what was
     found of it beside reading and the rules (a generated URDF's drift)."""
     kept = configure(loaded, [*loaded.diagnostics, *(found or ()), *run_rules(loaded, config, rule_set)], config, rule_set)
-    return with_fixes(loaded, notes_once(written_once(kept)))
+    return with_fixes(loaded, written_once(kept))
 
 
 def written_once(diagnostics: list[Diagnostic]) -> list[Diagnostic]:
@@ -69,27 +69,6 @@ def written_once(diagnostics: list[Diagnostic]) -> list[Diagnostic]:
     for number, diagnostic in enumerate(diagnostics):
         groups.setdefault(_copy_key(diagnostic) or number, []).append(diagnostic)
     return [group[0] if len(group) == 1 else _together(group) for group in groups.values()]
-
-
-def notes_once(diagnostics: list[Diagnostic]) -> list[Diagnostic]:
-    """One note for a habit: notes (``info``, no fix) saying the very same thing at several
-    places become one, at the first, saying at how many (a CAD exporter writes ``iyx``,
-    ``izx`` and ``izy`` on each of Fetch's 17 ``<inertia>``). After the suppressions: a
-    comment silences the note of its own element only. A warning stays at each place,
-    where it is to be corrected."""
-    groups: dict[object, list[Diagnostic]] = {}
-    for number, diagnostic in enumerate(diagnostics):
-        habit = diagnostic.severity is Severity.INFO and diagnostic.fix is None and diagnostic.line is not None
-        key = (diagnostic.code, diagnostic.message, diagnostic.hint, diagnostic.model, diagnostic.path) if habit else number
-        groups.setdefault(key, []).append(diagnostic)
-    return [group[0] if len(group) == 1 else _at_first(group) for group in groups.values()]
-
-
-def _at_first(notes: list[Diagnostic]) -> Diagnostic:
-    others = len({note.location[:3] for note in notes}) - 1  # (file, line, column): a macro's calls write one place
-    if not others:
-        return notes[0]
-    return notes[0]._replace(message=f"{notes[0].message} (and at {others} other {'place' if others == 1 else 'places'}, the first here)")
 
 
 def _copy_key(diagnostic: Diagnostic) -> tuple | None:

@@ -7,6 +7,7 @@ from collections.abc import Iterable
 from typing import TYPE_CHECKING
 
 from ..diagnostics import Diagnostic, Fix, Severity
+from ..rules.base import joined
 from .console import Line
 from .escape import escape
 
@@ -178,7 +179,32 @@ def summary_line(results: list[Result]) -> str:
 STYLES = {"error": "bold red", "warning": "yellow", "info": "cyan"}
 
 
-def diagnostic_lines(diagnostic: Diagnostic, files: SourceFiles | SourcesOnce | None, width: int | None = None) -> list[Line]:
+def alike_as_one(diagnostics: list[Diagnostic]) -> list[tuple[Diagnostic, list[int]]]:
+    """Each diagnostic with the other lines of its file where the very same is said (its
+    code, message and hint), shown once, at the first: a habit (an exporter's ``iyx`` on
+    every ``<inertia>``) or one cause (an SRDF's 42 collision pairs of a link the URDF
+    lost) read as one. Those with a fix to apply stay apart: each says its own."""
+    groups: dict[object, tuple[Diagnostic, list[int]]] = {}
+    for number, diagnostic in enumerate(diagnostics):
+        fixable = diagnostic.fix is not None and diagnostic.fix.available
+        key = number if fixable or diagnostic.line is None else (diagnostic.code, diagnostic.severity, diagnostic.message, diagnostic.hint, diagnostic.path, diagnostic.model)
+        found = groups.get(key)
+        if found is None:
+            groups[key] = (diagnostic, [])
+        elif diagnostic.line != found[0].line and diagnostic.line not in found[1]:
+            found[1].append(diagnostic.line)
+    return list(groups.values())
+
+
+def also_line(lines: list[int], most: int = 8) -> str | None:
+    """``    note: also at lines 38, 66 and 95``: where else a diagnostic shown once is said."""
+    if not lines:
+        return None
+    shown = [str(line) for line in lines[:most]] + ([f"{len(lines) - most} more"] if len(lines) > most else [])
+    return f"    note: also at line{'s' if len(lines) > 1 else ''} {joined(shown)}"
+
+
+def diagnostic_lines(diagnostic: Diagnostic, files: SourceFiles | SourcesOnce | None, width: int | None = None, also: list[int] = ()) -> list[Line]:
     """A diagnostic, its macro calls and hint, and (given the files) its source line.
     With ``width``, a message, note or hint longer than that goes on over indented lines
     (a word, such as a path, is never cut: only a word longer than the width goes past
@@ -197,7 +223,7 @@ def diagnostic_lines(diagnostic: Diagnostic, files: SourceFiles | SourcesOnce | 
         first.append((pieces[0], ""))
     rest = [("    " + piece, "") for piece in pieces[1:]]
     lines: list[Line] = [first, *([piece] for piece in rest)]
-    for line in details(diagnostic):
+    for line in details(diagnostic) + ([said] if (said := also_line(list(also))) else []):
         lines += [[(part, "dim")] for part in (wrap_line(line, width, " " * 10) if width else [line])]
     excerpt = excerpt_lines(diagnostic, files, width) if files is not None else []
     return lines + [[(line, "dim")] for line in excerpt]
