@@ -396,3 +396,44 @@ def test_a_package_in_no_repository_or_workspace_is_searched_alone(tmp_path):
     (data / "robots" / "arm_description" / "urdf" / "arm.urdf").write_text(ARM.format(name="arm", tip="a_tip", joint="j"))
     done, document = check(str(srdf), cwd=tmp_path)
     assert (done.returncode, found(document)) == (0, [])
+
+
+def test_a_collision_pair_of_a_link_the_urdf_lacks_is_a_warning_whose_hint_is_never_the_pair(workspace):
+    """Stretch's SRDF keeps 42 pairs of a fingertip link its xacro no longer has: MoveIt logs
+    each and skips it (srdfdom's loadCollisionPairs: a warning), so a warning, not an error;
+    'did you mean' never offers the other link of the pair (a link beside itself)."""
+    srdf = workspace / PANDA / "panda.srdf"
+    edit(srdf, "</robot>", '  <disable_collisions link1="panda_link7" link2="panda_lnk7" reason="Adjacent"/>\n</robot>')
+    done, document = check(f"{PANDA}/panda.srdf", cwd=workspace)
+    [k001] = [d for f in document["files"] for d in f["diagnostics"] if d["code"] == "K001"]
+    assert k001["severity"] == "warning" and done.returncode == 0  # (check fails on errors only)
+    assert k001["message"].startswith("<disable_collisions> names link 'panda_lnk7'") and "panda_link7'" not in k001["hint"], k001
+
+
+def test_a_urdf_given_that_cannot_be_read_is_a_warning_saying_why(tmp_path):
+    """xArm: --urdf xarm_device.urdf.xacro, which needs robot_type: the SRDF is not checked, so
+    lint fails (it passed as an info), and the reason is the argument, not 'it holds no robot'."""
+    (tmp_path / "arm.urdf.xacro").write_text(
+        '<robot name="arm" xmlns:xacro="http://www.ros.org/wiki/xacro">\n  <link name="$(arg robot_type)_base"/>\n</robot>\n')
+    (tmp_path / "arm.srdf").write_text('<robot name="arm">\n  <group name="g"><link name="xarm_base"/></group>\n</robot>\n')
+    done, document = check("arm.srdf", "--urdf", "arm.urdf.xacro", cwd=tmp_path)
+    [k008] = document["files"][0]["diagnostics"]
+    assert (k008["code"], k008["severity"]) == ("K008", "warning")
+    assert run_cli("lint", "arm.srdf", "--urdf", "arm.urdf.xacro", cwd=tmp_path).returncode == 1
+    assert k008["message"] == "the URDF given with --urdf cannot be read: it needs xacro argument 'robot_type'"
+    assert k008["hint"].startswith("give robot_type:=VALUE after the SRDF")
+    assert check("arm.srdf", "--urdf", "arm.urdf.xacro", "robot_type:=xarm", cwd=tmp_path)[0].returncode == 0
+
+
+def test_a_library_named_as_the_robot_is_no_urdf_that_could_not_be_read(tmp_path):
+    """xArm's xarm7_robot_macro.xacro is <robot name="xarm7"> holding macros only: it is no
+    candidate URDF of robot 'xarm7', not one that 'describes another robot'."""
+    (tmp_path / "package.xml").write_text('<package format="3"><name>arm_data</name></package>\n')
+    (tmp_path / "urdf").mkdir()
+    (tmp_path / "urdf" / "arm_macro.xacro").write_text(
+        '<robot name="arm" xmlns:xacro="http://www.ros.org/wiki/xacro">\n'
+        '  <xacro:macro name="arm" params="prefix"><link name="${prefix}base"/></xacro:macro>\n</robot>\n')
+    (tmp_path / "arm.srdf").write_text('<robot name="arm">\n  <group name="g"><link name="base"/></group>\n</robot>\n')
+    done, document = check("arm.srdf", cwd=tmp_path)
+    [k008] = document["files"][0]["diagnostics"]
+    assert k008["code"] == "K008" and "arm_macro.xacro" not in k008["message"], k008

@@ -108,14 +108,13 @@ class Semantic(NamedTuple):
 
     def named_links(self) -> list[tuple[str, Named]]:
         """Each link of its URDF the SRDF names, with what names it: a group's links and chains'
-        ends, an end effector's parent link, a virtual joint's child, a collision pair."""
+        ends, an end effector's parent link, a virtual joint's child (collision pairs: :attr:`disabled`)."""
         named = []
         for group in self.groups:
             named += [(f"group '{group.name}'", link) for link in group.links]
             named += [(f"the chain of group '{group.name}'", end) for chain in group.chains for end in (chain.base, chain.tip)]
         named += [(f"end effector '{e.name}'", e.parent_link) for e in self.end_effectors if e.parent_link]
         named += [(f"virtual joint '{v.name}'", v.child) for v in self.virtual_joints if v.child]
-        named += [("<disable_collisions>", link) for pair in self.disabled for link in pair]
         return named
 
     def named_joints(self) -> list[tuple[str, Named]]:

@@ -114,9 +114,13 @@ def described(
     document = loaded.document
     if urdf is not None:
         found = load(urdf, arguments_for(Path(urdf)))
-        if isinstance(found, str) or not found.modelled:
-            why = found if isinstance(found, str) else "it holds no robot"
-            return _without(loaded, f"the URDF given with --urdf cannot be read: {why}")
+        if isinstance(found, str) or not found.modelled or not found.robot.links:
+            why = found if isinstance(found, str) else _why(found)
+            missing = None if isinstance(found, str) else found.document.missing_argument
+            hint = (f"give {missing}:=VALUE after the SRDF (the arguments are the URDF's too), or in [tool.urdfcli.xacro-args]" if missing
+                    else "give --urdf the URDF or xacro model of the robot")
+            # asked for by name: a warning, the run fails (an info would pass with the SRDF unchecked)
+            return _without(loaded, f"the URDF given with --urdf cannot be read: {why}", Severity.WARNING, hint)
         loaded.described = found
         if found.robot.name != name:
             # the user named this URDF: its robot's, unless the SRDF's names do not fit it (then K001/K002 say which)
@@ -139,7 +143,7 @@ def described(
         path = shown(file)
         found = load(path, arguments)
         if isinstance(found, str) or not found.modelled or (named and found.robot.name != name) or not found.robot.links:
-            if named:
+            if named and not _library(found):
                 failures.append(f"{path}: {found if isinstance(found, str) else _why(found)}")
         else:
             fits.append((_unknown(semantic, found), order, path, found))
@@ -162,9 +166,15 @@ def described(
 
 def _unknown(semantic: Semantic, model: Loaded) -> int:
     """How many of the link and joint names an SRDF gives a model lacks: the fewer, the better it fits."""
-    links = {named.name for _, named in semantic.named_links()} - set(model.robot.links)
+    links = {named.name for _, named in semantic.named_links()} | {named.name for pair in semantic.disabled for named in pair}
+    links -= set(model.robot.links)
     joints = {named.name for _, named in semantic.named_joints()} - set(model.robot.joints) - semantic.own_joints
     return len(links) + len(joints)
+
+
+def _library(found: Loaded | str) -> bool:
+    """Whether a file read as a URDF is a library of macros: it expands to a robot without links."""
+    return not isinstance(found, str) and found.modelled and not found.robot.links
 
 
 def _why(found: Loaded) -> str:
@@ -173,6 +183,8 @@ def _why(found: Loaded) -> str:
     error = next((d for d in found.diagnostics if d.severity is Severity.ERROR or d.code.startswith("X")), None)
     if error is not None:
         return error.message
+    if found.modelled and not found.robot.links:
+        return "it expands to no link (a library of macros?)"
     return "it describes another robot" if found.modelled else "it holds no robot"
 
 

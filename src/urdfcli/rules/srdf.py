@@ -46,8 +46,9 @@ def _against(loaded: Loaded):
     return described.robot
 
 
-def _missing(loaded: Loaded, code: str, kind: str, named: Named, known, what: str) -> Diagnostic:
-    close = close_matches(named.name, list(known))
+def _missing(loaded: Loaded, code: str, kind: str, named: Named, known, what: str, beside: str | None = None) -> Diagnostic:
+    """``beside``: the other name of a pair, never the one meant (a link does not collide with itself)."""
+    close = close_matches(named.name, [name for name in known if name != beside])
     hint = f"did you mean '{close[0]}'?" if close else f"use a {kind} of {loaded.described.path}, or check that the SRDF is for this robot"
     return loaded.diagnostic(code, f"{what} names {kind} '{named.name}', which {loaded.described.path} does not have", named.at, hint, attribute=named.attribute, subjects=(named.name,))
 
@@ -59,12 +60,15 @@ def _missing(loaded: Loaded, code: str, kind: str, named: Named, known, what: st
         Finds each link an SRDF names that the URDF of its robot does not have:
         in a group (`<link>`, a chain's `base_link` and `tip_link`), an end
         effector's `parent_link`, a virtual joint's `child_link` and a
-        `<disable_collisions>` pair.
+        `<disable_collisions>` pair. A pair is a warning: MoveIt only logs it
+        (a link it lacks collides with nothing), unless the name is a typo.
         """,
         """
         MoveIt's SRDF reader logs the unknown name and drops what holds it: the
         group is built without that link (a chain not at all), the end effector
-        or virtual joint is skipped, the collision pair is checked after all.
+        or virtual joint is skipped, the collision pair is checked after all:
+        when the name is a typo, the two links meant are checked, and a pair
+        always in contact makes every start state collide.
         It is a typo, or the SRDF of another version of the robot.
         """,
         '<robot name="example">\n  <group name="arm"><chain base_link="base_link" tip_link="tool_0"/></group>\n</robot>',
@@ -79,6 +83,10 @@ def unknown_link(loaded: Loaded, given: Given) -> Iterator[Diagnostic]:
     for what, link in loaded.semantic.named_links():
         if link.name not in links:
             yield _missing(loaded, "K001", "link", link, links, what)
+    for pair in loaded.semantic.disabled:
+        for link, other in (pair, pair[::-1]):
+            if link.name not in links:
+                yield _missing(loaded, "K001", "link", link, links, "<disable_collisions>", other.name)._replace(severity=WARNING)
 
 
 @check(
