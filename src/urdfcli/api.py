@@ -554,7 +554,7 @@ def _drift_of(path: str, session: Session) -> Result:
         loaded = load(path, session.inputs, session.resolver(config.package_paths, Path(path)), reads_meshes=False)
     except (InputError, PackageError) as error:
         raise UsageError(str(error)) from None
-    found = drift_.drift(loaded, config, session, lost=True) if drift_.enabled(config, path) else []
+    found = drift_.drift(loaded, config, session, asked=True) if drift_.enabled(config, path) else []
     kept = [d for d in linter.configure(loaded, found, config) if d.code == "X110"]
     return Result(path, tuple(kept), loaded)
 
