@@ -292,15 +292,16 @@ def check_target(target: Target, session: Session) -> Result | Unreadable:
 
 def _described(loaded: Loaded, session: Session) -> Diagnostic | None:
     """An SRDF checked against the URDF of its robot: that URDF set on ``loaded``, or why there is none."""
-    return described(loaded, session.index, session.options.urdf, partial(_arguments_for, session), partial(_load_urdf, session))
+    return described(loaded, session.index, session.options.urdf, lambda file: model_arguments(str(file), session), partial(_load_urdf, session))
 
 
-def _arguments_for(session: Session, file: Path) -> dict[str, str]:
-    """The xacro arguments the URDF of an SRDF is checked with: its configured ones, the
-    first set ``[tool.urdfcli] models`` lists for it, and those of the command line
-    (``check panda.srdf --urdf panda_arm.urdf.xacro hand:=true``)."""
-    config = configured(session)(str(file))
-    return {**config.mappings_for(str(file)), **((config.argument_sets(str(file)) or [{}])[0]), **session.options.mappings}
+def model_arguments(path: str, session: Session) -> dict[str, str]:
+    """The xacro arguments of a model read once (drawn, expanded, compared, or the URDF
+    of an SRDF): those ``[tool.urdfcli.xacro-args]`` gives it, the first set ``[tool.urdfcli]
+    models`` lists for it, and those of the command line over both (``check panda.srdf
+    --urdf panda_arm.urdf.xacro hand:=true``). Raises UsageError for a broken configuration."""
+    config = configured(session)(path)
+    return {**config.mappings_for(path), **((config.argument_sets(path) or [{}])[0]), **session.options.mappings}
 
 
 def _load_urdf(session: Session, path: str, arguments: dict[str, str]) -> Loaded | str:
@@ -490,12 +491,13 @@ def loaded_into_targets(result: Result, session: Session) -> Result:
 
 
 def expand(path: str, session: Session) -> tuple[str | None, list[str], list[Diagnostic]]:
-    """The xacro expansion of one file with the options' arguments, as the ``xacro`` tool
-    prints it (None when it fails), the files it read, and what xacro said (each with its
-    severity). Raises UsageError when the file cannot be read."""
+    """The xacro expansion of one file with its arguments (:func:`model_arguments`), as the
+    ``xacro`` tool prints it (None when it fails), the files it read, and what xacro said
+    (each with its severity). Raises UsageError when the file cannot be read."""
+    config = configured(session)(path)
     try:
-        resolver = session.resolver((), None if path == STDIN else Path(path))
-        document, found = read_document(path, session.inputs, resolver, session.options.mappings, force_xacro=True)
+        resolver = session.resolver(config.package_paths, None if path == STDIN else Path(path))
+        document, found = read_document(path, session.inputs, resolver, model_arguments(path, session), force_xacro=True)
     except (InputError, PackageError) as error:
         raise UsageError(str(error)) from None
     diagnostics = [linter.with_severity(d, Config()) for d in found]
@@ -513,12 +515,13 @@ def diff(old: str | os.PathLike, new: str | os.PathLike, *arguments: str, sessio
 
 
 def diff_with_revisions(old: str, new: str, mappings: dict[str, str], session: Session | None, tolerance: float | None, settings: dict) -> tuple[Difference, tuple[str, ...]]:
-    """:func:`diff`, and the git revisions its inputs name."""
+    """:func:`diff`, and the git revisions its inputs name. Each is read with its arguments
+    (:func:`model_arguments`), ``mappings`` over them."""
     from .project.versions import NotComparable, compare_versions  # (git and archives: only diff reads them)
 
     with _session(session, settings) as session:
         try:
-            return compare_versions(old, new, {**session.options.mappings, **mappings}, session.inputs, session.resolver, tolerance)
+            return compare_versions(old, new, lambda file: {**model_arguments(file, session), **mappings}, session.inputs, session.resolver, tolerance)
         except (NotComparable, PackageError) as error:
             raise UsageError(str(error)) from None
 
@@ -561,5 +564,5 @@ def _drift_of(path: str, session: Session) -> Result:
 
 __all__ = [
     "Difference", "Fixed", "Options", "Result", "Run", "RuleSet", "Session", "Unreadable", "UsageError", "audit", "check", "check_target", "diff",
-    "drift", "expand", "find_models", "fix", "library_models", "lint", "run", "text_report", "xacro_arguments",
+    "drift", "expand", "find_models", "fix", "library_models", "lint", "model_arguments", "run", "text_report", "xacro_arguments",
 ]

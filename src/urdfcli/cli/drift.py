@@ -40,7 +40,8 @@ def drift(
     generated from them, or from a file that includes them, are checked. Exit 0
     when every generated URDF matches its source; 1 when one does not, or could not
     be compared (its source is not found, or does not expand, such as for an
-    argument \\[tool.urdfcli.xacro-args] does not give); 2 when it cannot run.
+    argument the configuration's xacro-args table does not give); 2 when it
+    cannot run.
     """
     from .. import api  # (the library: imported when the command runs, not for --help)
 
