@@ -270,7 +270,7 @@ def check_target(target: Target, session: Session) -> Result | Unreadable:
             return Result(path, tuple(diagnostics), None, target.arguments, includes=tuple(document.includes))
         loaded = load(
             path, session.inputs, resolver, arguments, vocabulary=rule_set is RuleSet.LINT, meshes=session.meshes,
-            reads_meshes=rule_set is not RuleSet.CHECK, sources=sources,
+            reads_meshes=rule_set is not RuleSet.CHECK, sources=sources, configured_as=None if path == STDIN else partial(_configured_as, path, config, session),
         )
     except InputError as error:
         return Unreadable(path, str(error))
@@ -288,6 +288,18 @@ def check_target(target: Target, session: Session) -> Result | Unreadable:
         called=tuple(sorted({call[3] for call in document.origins.calls})) if document.origins is not None else None,
         meshes=meshes, audit=audited, compatibility=verdicts(diagnostics, config.targets),
     )
+
+
+def _configured_as(path: str, config: Config, session: Session) -> str:
+    """How [tool.urdfcli.xacro-args] names a model: by its file name, or, when another file
+    of its repository or workspace has that name (unitree_ros: a robot.xacro per robot), by
+    its path from the configuration's folder (the repository's when there is no configuration)."""
+    file = Path(path).resolve()
+    roots, _ = search_roots(file, session.packages)
+    if sum(found.name == file.name for found in session.index.scan(roots)) <= 1:
+        return file.name
+    folder = config.root if config.source is not None and config.root is not None else roots[0]
+    return Path(os.path.relpath(file, folder.resolve())).as_posix()
 
 
 def _described(loaded: Loaded, session: Session) -> Diagnostic | None:
