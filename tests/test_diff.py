@@ -688,5 +688,26 @@ def test_every_published_model_reformatted_is_the_same_robot(tmp_path):
 def test_a_xacro_argument_needed_is_named(tmp_path):
     model = write(tmp_path, "needs.urdf.xacro", '<robot name="r" xmlns:xacro="http://www.ros.org/wiki/xacro"><link name="$(arg n)"/></robot>\n')
     done = run_cli("diff", model, model)
-    assert (done.returncode, done.stderr.decode()) == (2, f"urdfcli: {model}: needs xacro argument 'n': give n:=VALUE after the two files\n")
+    assert (done.returncode, done.stderr.decode()) == (
+        2, f"urdfcli: {model}: needs xacro argument 'n': give n:=VALUE after the two files, or in [tool.urdfcli.xacro-args]\n")
     assert run_cli("diff", model, model, "n:=base_link").returncode == 0
+
+
+def test_the_configured_xacro_arguments_are_read(tmp_path):
+    """Unitree's go1.urdf against the robot.xacro it was generated from, which needs argument DEBUG
+    that urdfcli.toml gives: the command X110's hint gives said to give DEBUG:=VALUE after the two
+    files (exit 2). Each is read with the arguments its configuration gives it, the command
+    line's over them; --isolated reads none."""
+    for folder in ("xacro", "urdf"):
+        (tmp_path / folder).mkdir()
+    source = write(tmp_path, "xacro/robot.xacro", '<robot name="go1" xmlns:xacro="http://www.ros.org/wiki/xacro"><link name="base"/>'
+                   '<xacro:if value="$(arg DEBUG)"><link name="world"/><joint name="base_static_joint" type="fixed">'
+                   '<parent link="world"/><child link="base"/></joint></xacro:if></robot>\n')
+    (tmp_path / "urdfcli.toml").write_text('[xacro-args]\n"xacro/robot.xacro" = { DEBUG = "false" }\n')
+    urdf = write(tmp_path, "urdf/go1.urdf", '<robot name="go1"><link name="base"/></robot>\n')
+    done = run_cli("diff", urdf, source, cwd=tmp_path)
+    assert (done.returncode, done.stderr.decode()) == (0, ""), done.stdout.decode()
+    done = run_cli("diff", urdf, source, "DEBUG:=true", "--format", "json", cwd=tmp_path)
+    assert done.returncode == 1 and {c["element"] for c in json.loads(done.stdout)["changes"]} >= {"link[@name='world']"}
+    done = run_cli("diff", "--isolated", urdf, source, cwd=tmp_path)
+    assert done.returncode == 2 and "needs xacro argument 'DEBUG'" in done.stderr.decode()

@@ -226,3 +226,38 @@ def test_what_xacro_prints_is_printed_byte_for_byte(tmp_path, files, printed):
     assert mine.returncode == 0, mine.stderr
     assert all(text in real.stdout for text in printed)
     assert mine.stdout.decode() == real.stdout
+
+
+UNITREE_ROBOT = """<?xml version="1.0"?>
+<robot name="{name}" xmlns:xacro="http://www.ros.org/wiki/xacro">
+    <link name="base"/>
+    <xacro:if value="$(arg DEBUG)">
+        <link name="world"/>
+        <joint name="base_static_joint" type="fixed"><parent link="world"/><child link="base"/></joint>
+    </xacro:if>
+</robot>
+"""
+
+
+def test_expand_reads_the_configured_xacro_arguments(tmp_path):
+    """unitree_ros: each robot's xacro/robot.xacro needs argument DEBUG, given in urdfcli.toml.
+    check, lint, tree and drift read it there; expand stopped at X003 Undefined substitution
+    argument DEBUG, so the command X110's hint gives failed. It expands as the xacro tool does
+    with the configured value; the command line wins; --isolated and --config are accepted."""
+    for name in ("go1", "a1"):
+        (tmp_path / "robots" / f"{name}_description" / "xacro").mkdir(parents=True)
+        (tmp_path / "robots" / f"{name}_description" / "xacro" / "robot.xacro").write_text(UNITREE_ROBOT.format(name=name))
+    (tmp_path / "urdfcli.toml").write_text('[xacro-args]\n"robots/go1_description/xacro/robot.xacro" = { DEBUG = "false" }\n')
+    go1 = "robots/go1_description/xacro/robot.xacro"
+    done = run_cli("expand", go1, "-o", "go1.urdf", cwd=tmp_path)
+    assert done.returncode == 0, done.stderr.decode()
+    assert (tmp_path / "go1.urdf").read_text() == real_xacro(Path(go1), "DEBUG:=false", cwd=tmp_path).stdout
+    done = run_cli("expand", go1, "DEBUG:=true", cwd=tmp_path)
+    assert done.stdout.decode() == real_xacro(Path(go1), "DEBUG:=true", cwd=tmp_path).stdout and "world" in done.stdout.decode()
+    # the other robot is not configured, and without the configuration neither is go1
+    for args in (["robots/a1_description/xacro/robot.xacro"], ["--isolated", go1]):
+        done = run_cli("expand", *args, cwd=tmp_path)
+        assert done.returncode == 1 and "Undefined substitution argument DEBUG" in done.stderr.decode(), done.stderr.decode()
+    (tmp_path / "debug.toml").write_text('[xacro-args]\n"robot.xacro" = { DEBUG = "true" }\n')
+    done = run_cli("expand", "--config", "debug.toml", go1, cwd=tmp_path)
+    assert done.stdout.decode() == real_xacro(Path(go1), "DEBUG:=true", cwd=tmp_path).stdout

@@ -133,3 +133,25 @@ def test_a_package_uri_in_a_xacro_include_hint_gives_the_find_that_works(tmp_pat
     path.write_text(source.replace("$(find urdf01_rviz)/urdf/xacro/demo05", "urdf/xacro/demo05"))
     [found] = diagnostics("check", *packages, str(path), cwd=tmp_path)
     assert found["code"] == "X003" and found["hint"] is None
+
+
+def test_undefined_argument_hint_names_a_file_whose_name_others_share_by_its_path(tmp_path):
+    """unitree_ros has a robot.xacro per robot, each needing DEBUG: the hint's glob "robot.xacro"
+    would give every one of them the value. It names the file by its path from the folder of
+    the configuration (the repository's, when there is none), and the snippet works as shown."""
+    (tmp_path / ".git").mkdir()
+    for name in ("go1", "a1"):
+        folder = tmp_path / "robots" / f"{name}_description" / "xacro"
+        folder.mkdir(parents=True)
+        (folder / "robot.xacro").write_text(f'<robot name="{name}" xmlns:xacro="http://www.ros.org/wiki/xacro">\n'
+                                            '  <link name="base"/>\n  <xacro:if value="$(arg DEBUG)"><link name="world"/></xacro:if>\n</robot>\n')
+    go1 = "robots/go1_description/xacro/robot.xacro"
+    [found] = diagnostics("check", "go1_description/xacro/robot.xacro", cwd=tmp_path / "robots")  # from the repository's folder, wherever it runs
+    snippet = f'[tool.urdfcli.xacro-args] "{go1}" = {{ DEBUG = "VALUE" }}'
+    assert found["code"] == "X003" and found["message"].endswith("pass DEBUG:=VALUE, or give it in the configuration")
+    assert found["hint"].endswith(snippet), found["hint"]
+    table, entry = snippet.split("] ", 1)
+    (tmp_path / "pyproject.toml").write_text(f"{table}]\n{entry.replace('VALUE', 'false')}\n")
+    assert run_cli("check", go1, cwd=tmp_path).returncode == 0
+    [found] = diagnostics("check", "robots/a1_description/xacro/robot.xacro", cwd=tmp_path)  # the other robot is not given it
+    assert found["code"] == "X003" and found["hint"].endswith('"robots/a1_description/xacro/robot.xacro" = { DEBUG = "VALUE" }')

@@ -270,7 +270,7 @@ def check_target(target: Target, session: Session) -> Result | Unreadable:
             return Result(path, tuple(diagnostics), None, target.arguments, includes=tuple(document.includes))
         loaded = load(
             path, session.inputs, resolver, arguments, vocabulary=rule_set is RuleSet.LINT, meshes=session.meshes,
-            reads_meshes=rule_set is not RuleSet.CHECK, sources=sources,
+            reads_meshes=rule_set is not RuleSet.CHECK, sources=sources, configured_as=None if path == STDIN else partial(_configured_as, path, config, session),
         )
     except InputError as error:
         return Unreadable(path, str(error))
@@ -290,17 +290,30 @@ def check_target(target: Target, session: Session) -> Result | Unreadable:
     )
 
 
+def _configured_as(path: str, config: Config, session: Session) -> str:
+    """How [tool.urdfcli.xacro-args] names a model: by its file name, or, when another file
+    of its repository or workspace has that name (unitree_ros: a robot.xacro per robot), by
+    its path from the configuration's folder (the repository's when there is no configuration)."""
+    file = Path(path).resolve()
+    roots, _ = search_roots(file, session.packages)
+    if sum(found.name == file.name for found in session.index.scan(roots)) <= 1:
+        return file.name
+    folder = config.root if config.source is not None and config.root is not None else roots[0]
+    return Path(os.path.relpath(file, folder.resolve())).as_posix()
+
+
 def _described(loaded: Loaded, session: Session) -> Diagnostic | None:
     """An SRDF checked against the URDF of its robot: that URDF set on ``loaded``, or why there is none."""
-    return described(loaded, session.index, session.options.urdf, partial(_arguments_for, session), partial(_load_urdf, session))
+    return described(loaded, session.index, session.options.urdf, lambda file: model_arguments(str(file), session), partial(_load_urdf, session))
 
 
-def _arguments_for(session: Session, file: Path) -> dict[str, str]:
-    """The xacro arguments the URDF of an SRDF is checked with: its configured ones, the
-    first set ``[tool.urdfcli] models`` lists for it, and those of the command line
-    (``check panda.srdf --urdf panda_arm.urdf.xacro hand:=true``)."""
-    config = configured(session)(str(file))
-    return {**config.mappings_for(str(file)), **((config.argument_sets(str(file)) or [{}])[0]), **session.options.mappings}
+def model_arguments(path: str, session: Session) -> dict[str, str]:
+    """The xacro arguments of a model read once (drawn, expanded, compared, or the URDF
+    of an SRDF): those ``[tool.urdfcli.xacro-args]`` gives it, the first set ``[tool.urdfcli]
+    models`` lists for it, and those of the command line over both (``check panda.srdf
+    --urdf panda_arm.urdf.xacro hand:=true``). Raises UsageError for a broken configuration."""
+    config = configured(session)(path)
+    return {**config.mappings_for(path), **((config.argument_sets(path) or [{}])[0]), **session.options.mappings}
 
 
 def _load_urdf(session: Session, path: str, arguments: dict[str, str]) -> Loaded | str:
@@ -490,12 +503,13 @@ def loaded_into_targets(result: Result, session: Session) -> Result:
 
 
 def expand(path: str, session: Session) -> tuple[str | None, list[str], list[Diagnostic]]:
-    """The xacro expansion of one file with the options' arguments, as the ``xacro`` tool
-    prints it (None when it fails), the files it read, and what xacro said (each with its
-    severity). Raises UsageError when the file cannot be read."""
+    """The xacro expansion of one file with its arguments (:func:`model_arguments`), as the
+    ``xacro`` tool prints it (None when it fails), the files it read, and what xacro said
+    (each with its severity). Raises UsageError when the file cannot be read."""
+    config = configured(session)(path)
     try:
-        resolver = session.resolver((), None if path == STDIN else Path(path))
-        document, found = read_document(path, session.inputs, resolver, session.options.mappings, force_xacro=True)
+        resolver = session.resolver(config.package_paths, None if path == STDIN else Path(path))
+        document, found = read_document(path, session.inputs, resolver, model_arguments(path, session), force_xacro=True)
     except (InputError, PackageError) as error:
         raise UsageError(str(error)) from None
     diagnostics = [linter.with_severity(d, Config()) for d in found]
@@ -513,12 +527,13 @@ def diff(old: str | os.PathLike, new: str | os.PathLike, *arguments: str, sessio
 
 
 def diff_with_revisions(old: str, new: str, mappings: dict[str, str], session: Session | None, tolerance: float | None, settings: dict) -> tuple[Difference, tuple[str, ...]]:
-    """:func:`diff`, and the git revisions its inputs name."""
+    """:func:`diff`, and the git revisions its inputs name. Each is read with its arguments
+    (:func:`model_arguments`), ``mappings`` over them."""
     from .project.versions import NotComparable, compare_versions  # (git and archives: only diff reads them)
 
     with _session(session, settings) as session:
         try:
-            return compare_versions(old, new, {**session.options.mappings, **mappings}, session.inputs, session.resolver, tolerance)
+            return compare_versions(old, new, lambda file: {**model_arguments(file, session), **mappings}, session.inputs, session.resolver, tolerance)
         except (NotComparable, PackageError) as error:
             raise UsageError(str(error)) from None
 
@@ -554,12 +569,12 @@ def _drift_of(path: str, session: Session) -> Result:
         loaded = load(path, session.inputs, session.resolver(config.package_paths, Path(path)), reads_meshes=False)
     except (InputError, PackageError) as error:
         raise UsageError(str(error)) from None
-    found = drift_.drift(loaded, config, session, lost=True) if drift_.enabled(config, path) else []
+    found = drift_.drift(loaded, config, session, asked=True) if drift_.enabled(config, path) else []
     kept = [d for d in linter.configure(loaded, found, config) if d.code == "X110"]
     return Result(path, tuple(kept), loaded)
 
 
 __all__ = [
     "Difference", "Fixed", "Options", "Result", "Run", "RuleSet", "Session", "Unreadable", "UsageError", "audit", "check", "check_target", "diff",
-    "drift", "expand", "find_models", "fix", "library_models", "lint", "run", "text_report", "xacro_arguments",
+    "drift", "expand", "find_models", "fix", "library_models", "lint", "model_arguments", "run", "text_report", "xacro_arguments",
 ]

@@ -9,7 +9,7 @@ import typer
 from ..report import DIFF_FORMATS, resolve
 from ..report.console import Output
 from ..options import Options, RuleSet
-from .common import ColorOption, Exit, PackagePathOption, choose, fail, format_option, session_for, split_inputs
+from .common import ColorOption, ConfigOption, Exit, IsolatedOption, PackagePathOption, choose, fail, format_option, session_for, split_inputs
 
 FORMATS = ("auto", *DIFF_FORMATS)
 
@@ -28,7 +28,7 @@ def diff(
             help="Two URDF or xacro files: a path, '-' for standard input, or REV:PATH for a file at a git revision "
             "(as git show names it: HEAD~1:urdf/robot.urdf.xacro), read with its includes as they were then "
             "(a package of another repository of the workspace as it is now, noted). "
-            "NAME:=VALUE sets a xacro argument of both.",
+            "NAME:=VALUE sets a xacro argument of both, over those the configuration's xacro-args table gives each.",
             show_default=False,
         ),
     ],
@@ -38,6 +38,8 @@ def diff(
         typer.Option("--tolerance", metavar="FRACTION", callback=_tolerance, help="Relative tolerance: numbers closer than this fraction of the larger are the same."),
     ] = 1e-6,
     package_path: PackagePathOption = None,
+    config: ConfigOption = None,
+    isolated: IsolatedOption = False,
     color: ColorOption = "auto",
 ) -> None:
     """Compare two versions of a robot by meaning, not text.
@@ -59,7 +61,7 @@ def diff(
     paths, mappings = split_inputs(inputs)
     if len(paths) != 2:
         raise fail(f"diff compares two files, OLD and NEW; got {len(paths)}")
-    options = Options(RuleSet.TREE, tuple(mappings.items()), tuple(package_path or ()), format=output_format)
+    options = Options(RuleSet.TREE, tuple(mappings.items()), tuple(package_path or ()), config, isolated, format=output_format)
     with session_for(options) as session:
         difference, revisions = api.diff_with_revisions(paths[0], paths[1], {}, session, tolerance, {})
     formats.report(difference, Output.standard(color), resolve(output_format), revisions)

@@ -27,12 +27,11 @@ def target_notes(builds) -> dict[str, str]:
 
 def load_model(path: str, session: Session) -> Result:
     """One input to draw, with its configuration and the rules `check` runs (its
-    errors are the model's errors, as `check` reports them): the first argument
-    set ``[tool.urdfcli] models`` lists for it, under the command line's."""
+    errors are the model's errors, as `check` reports them), with its arguments
+    (:func:`urdfcli.api.model_arguments`)."""
     refuse_library(path, session)
-    config = api.configured(session)(path)
-    first_set = (config.argument_sets(path) or [{}])[0]
-    found = api.check_target(api.Target(path), session.using(session.options.but(arguments=tuple({**first_set, **session.options.mappings}.items()))))
+    arguments = api.model_arguments(path, session)
+    found = api.check_target(api.Target(path), session.using(session.options.but(arguments=tuple(arguments.items()))))
     if isinstance(found, Unreadable):
         raise fail(found.reason)
     if found.loaded is not None and found.loaded.semantic is not None:

@@ -38,7 +38,9 @@ def drift(
     that file's expansion (rule X110, which check and lint run on every URDF too).
     Given xacro files (as a pre-commit hook gives the changed files), the URDFs
     generated from them, or from a file that includes them, are checked. Exit 0
-    when every generated URDF matches its source, 1 when one does not, 2 when it
+    when every generated URDF matches its source; 1 when one does not, or could not
+    be compared (its source is not found, or does not expand, such as for an
+    argument the configuration's xacro-args table does not give); 2 when it
     cannot run.
     """
     from .. import api  # (the library: imported when the command runs, not for --help)

@@ -119,14 +119,17 @@ def load(
     force_xacro: bool = False,
     reads_meshes: bool = True,
     sources: Callable[[Document], XacroSources] | None = None,
+    configured_as: Callable[[], str] | None = None,
 ) -> Loaded:
     """Read one input and its robot. With ``vocabulary``, markup URDF does not define
     is classified too (for the description rules); without ``reads_meshes``, the rules
     open no mesh file; ``sources`` finds the xacro files behind a document, for the
-    source rules. Raises InputError."""
+    source rules; ``configured_as()``, asked when an argument is missing, how the hint
+    names the input in [tool.urdfcli.xacro-args] (its file name when None). Raises InputError."""
     document, diagnostics = read_document(path, inputs, resolver, mappings, force_xacro)
     if document.missing_argument is not None:  # the expansion stopped there: its one diagnostic says so
-        diagnostics = [needs_argument(d, document.missing_argument, path) for d in diagnostics]
+        key = configured_as() if configured_as is not None else (Path(path).name if path != STDIN else "FILE")
+        diagnostics = [needs_argument(d, document.missing_argument, key) for d in diagnostics]
     found_sources = sources(document) if sources is not None else None
     loaded = Loaded(document, diagnostics=diagnostics, resolver=resolver, meshes=meshes, reads_meshes=reads_meshes, sources=found_sources)
     if not document.readable:
@@ -176,12 +179,12 @@ def _semantic(loaded: Loaded) -> bool:
         loaded.diagnostics.append(document.diagnostic("R002", "<robot> has no 'name' attribute", 0))
     document.data = None
     return True
-def needs_argument(diagnostic: Diagnostic, name: str, path: str) -> Diagnostic:
-    """xacro's 'Undefined substitution argument NAME', said so that it names the fix for the input ``path``."""
+def needs_argument(diagnostic: Diagnostic, name: str, key: str) -> Diagnostic:
+    """xacro's 'Undefined substitution argument NAME', said so that it names the fix: the
+    value on the command line or in [tool.urdfcli.xacro-args], where ``key`` names the input."""
     message = (f"needs xacro argument '{name}': it has no value where it is used (no default, or used before its "
-               f"<xacro:arg>); pass {name}:=VALUE, or list the model's argument sets in [tool.urdfcli] models")
-    file = Path(path).name if path != STDIN else "FILE"
-    hint = f'give {name}:=VALUE after the file on the command line, or in pyproject.toml: [tool.urdfcli.xacro-args] "{file}" = {{ {name} = "VALUE" }}'
+               f"<xacro:arg>); pass {name}:=VALUE, or give it in the configuration")
+    hint = f'give {name}:=VALUE after the file on the command line, or in pyproject.toml: [tool.urdfcli.xacro-args] "{key}" = {{ {name} = "VALUE" }}'
     return diagnostic._replace(message=message, hint=diagnostic.hint or hint)
 
 

@@ -1,5 +1,5 @@
-"""Project configuration for every command that reads a model (check, lint,
-inertia, tree, graph).
+"""Project configuration for every command that reads a model (check, lint, drift,
+inertia, tree, graph, expand, diff).
 
 Found by walking up from each input file: in every folder, ``urdfcli.toml``
 or ``.urdfcli.toml`` (keys at the top level), else a ``pyproject.toml`` with a

@@ -137,23 +137,27 @@ def enabled(config: Config, path: str) -> bool:
     return config.enabled(X110, path)
 
 
-def drift(loaded: Loaded, config: Config, session: Session, lost: bool = False) -> list[Diagnostic]:
+def drift(loaded: Loaded, config: Config, session: Session, asked: bool = False) -> list[Diagnostic]:
     """X110 for a URDF read from a file (not named .xacro), when it was generated from a
-    xacro file whose expansion no longer matches it (an info when the source cannot be
-    expanded; with ``lost``, also when the source its header names is not found)."""
+    xacro file whose expansion no longer matches it. When the source cannot be expanded it
+    is not compared: an info for check and lint; ``asked`` (the drift command, which says
+    whether each URDF matches its source) makes it a warning, and says too when the source
+    its header names is not found."""
     document = loaded.document
     if document.file is None or document.file.name.endswith(".xacro") or not loaded.modelled:
         return []
+    uncompared = Severity.WARNING if asked else Severity.INFO
     source = generated_from(document.file, session)
     if source is None:
-        named = named_source(document.file, session) if lost else None
+        named = named_source(document.file, session) if asked else None
         if named is None:
             return []
         message = f"{_name(loaded)} says it was generated from {named}, which is neither beside it nor in its package: not compared"
-        return [_diagnostic(loaded, message, None, Severity.INFO)]
+        hint = "put the source back; or, if the URDF is now written by hand, remove the comment saying xacro generated it"
+        return [_diagnostic(loaded, message, hint, uncompared)]
     found = expand_source(source.file, config, session)
     if isinstance(found, str):
-        return [_diagnostic(loaded, f"{_name(loaded)} says it was generated from {_shown(source.file)}, which was not compared: {found}", None, Severity.INFO)]
+        return [_diagnostic(loaded, f"{_name(loaded)} says it was generated from {_shown(source.file)}, which was not compared: {found}", None, uncompared)]
     from ..model.compare import compare  # (only where a URDF's source is found)
 
     comparison = compare(loaded, found)

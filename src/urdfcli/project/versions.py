@@ -26,6 +26,7 @@ from ..read.revision import Revision, RevisionError, checkout, revision_of
 from ..report.diff import Difference
 
 ResolverFor = Callable[..., PackageResolver]  # (extra package paths, input file[, fallback]) -> resolver
+ArgumentsFor = Callable[[str], dict[str, str]]  # a file as given (a revision's: where it is now) -> its xacro arguments
 
 
 class NotComparable(Exception):
@@ -33,14 +34,15 @@ class NotComparable(Exception):
 
 
 def compare_versions(
-    old: str, new: str, mappings: dict[str, str], inputs: Inputs, resolver_for: ResolverFor, tolerance: float | None = None,
+    old: str, new: str, arguments_for: ArgumentsFor, inputs: Inputs, resolver_for: ResolverFor, tolerance: float | None = None,
 ) -> tuple[Difference, tuple[str, ...]]:
     """What changed from ``old`` to ``new`` (numbers equal within ``tolerance``, relative;
-    TOLERANCE when None), and the revisions named (``REV`` of each ``REV:PATH``). Raises NotComparable."""
+    TOLERANCE when None), and the revisions named (``REV`` of each ``REV:PATH``); each
+    read with the xacro arguments ``arguments_for`` gives its file. Raises NotComparable."""
     if old == STDIN and new == STDIN:
         raise NotComparable("only one of OLD and NEW can be standard input ('-')")
     with contextlib.ExitStack() as stack:
-        sides = [_open(given, mappings, inputs, resolver_for, stack) for given in (old, new)]
+        sides = [_open(given, arguments_for, inputs, resolver_for, stack) for given in (old, new)]
         notes = tuple(note for loaded, folder, revision in sides if revision is not None for note in _read_as_now(loaded, folder, revision))
         folders = [(folder, revision) for _, folder, revision in sides if revision is not None]
         comparison = compare(sides[0][0], sides[1][0], TOLERANCE if tolerance is None else tolerance, lambda file: _placed(file, folders))
@@ -50,8 +52,9 @@ def compare_versions(
     return Difference(old, new, comparison, notes), revisions
 
 
-def _open(given: str, mappings: dict[str, str], inputs: Inputs, resolver_for: ResolverFor, stack: contextlib.ExitStack) -> tuple[Loaded, Path | None, Revision | None]:
-    """One version loaded (its revision's tree kept until the stack closes)."""
+def _open(given: str, arguments_for: ArgumentsFor, inputs: Inputs, resolver_for: ResolverFor, stack: contextlib.ExitStack) -> tuple[Loaded, Path | None, Revision | None]:
+    """One version loaded (its revision's tree kept until the stack closes); a revision's
+    file with the arguments of the file where it is now (the configuration as it is)."""
     try:
         revision = revision_of(given)
     except RevisionError as error:
@@ -63,17 +66,17 @@ def _open(given: str, mappings: dict[str, str], inputs: Inputs, resolver_for: Re
             file = folder / revision.path
             now = resolver_for((), revision.top / revision.path)  # the workspace around the repository, as it is
             resolver = resolver_for((str(folder),), file, now)  # its own packages first, as they were
-            loaded = load(str(file), inputs, resolver, mappings, reads_meshes=False)
+            loaded = load(str(file), inputs, resolver, arguments_for(str(revision.top / revision.path)), reads_meshes=False)
         else:
             resolver = resolver_for((), None if given == STDIN else Path(given))
-            loaded = load(given, inputs, resolver, mappings, reads_meshes=False)
+            loaded = load(given, inputs, resolver, arguments_for(given), reads_meshes=False)
     except (InputError, RevisionError) as error:
         raise NotComparable(str(error)) from None
     if not loaded.modelled:
         shown = revision.given if revision is not None else loaded.document.shown
         if loaded.document.missing_argument is not None:
             name = loaded.document.missing_argument
-            raise NotComparable(f"{shown}: needs xacro argument '{name}': give {name}:=VALUE after the two files")
+            raise NotComparable(f"{shown}: needs xacro argument '{name}': give {name}:=VALUE after the two files, or in [tool.urdfcli.xacro-args]")
         reason = next((d for d in loaded.diagnostics if d.code in ("X001", "X002", "X003", "X004", "R001")), None)
         if reason is None and loaded.robot is None:
             reason = next(iter(loaded.diagnostics), None)

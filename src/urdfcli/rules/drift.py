@@ -17,7 +17,9 @@ X110 = declare(
         "The xacro file is expanded with its arguments' defaults (or those `[tool.urdfcli.xacro-args]` gives it); "
         "where a difference comes from an element written with `$(arg ...)`, the message says the URDF may have been "
         "generated with another value. Reported at the URDF's first line, naming the source, with a summary; "
-        "`urdfcli diff URDF XACRO` lists every difference.",
+        "`urdfcli diff URDF XACRO` lists every difference. A source that does not expand (an argument it needs and "
+        "nothing gives, a package not found) is not compared, which check and lint say as info; `urdfcli drift`, "
+        "whose exit status says whether each URDF matches its source, says it as a warning and fails.",
         "Launch files, simulators and other packages load the committed URDF, and it no longer describes the robot the "
         "xacro describes: a link the xacro makes is missing, a limit or a mass is the old one. In 25 public description "
         "repositories, 9 of the 15 that commit a generated URDF have one that no longer matches its xacro.",
