@@ -340,7 +340,7 @@ def test_models_are_checked_once_per_argument_set(tmp_path):
     assert done.returncode == 1
     [diagnostic] = file["diagnostics"]
     assert diagnostic["code"] == "X003" and diagnostic["message"].startswith("needs xacro argument 'arm_type': it has no value where it is used")
-    assert "[tool.urdfcli] models" in diagnostic["message"]
+    assert "give it in the configuration" in diagnostic["message"] and "[tool.urdfcli] models" in diagnostic["hint"]
     write(tmp_path, "pyproject.toml", '[tool.urdfcli]\nmodels = { "pkg/urdf/arm.urdf.xacro" = [["arm_type:=small"], ["arm_type:=large"]] }\n')
     done = run_cli("check", "--format", "json", str(model), cwd=model.parent)
     assert done.returncode == 0, done.stdout.decode()

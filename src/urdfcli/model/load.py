@@ -184,7 +184,8 @@ def needs_argument(diagnostic: Diagnostic, name: str, key: str) -> Diagnostic:
     value on the command line or in [tool.urdfcli.xacro-args], where ``key`` names the input."""
     message = (f"needs xacro argument '{name}': it has no value where it is used (no default, or used before its "
                f"<xacro:arg>); pass {name}:=VALUE, or give it in the configuration")
-    hint = f'give {name}:=VALUE after the file on the command line, or in pyproject.toml: [tool.urdfcli.xacro-args] "{key}" = {{ {name} = "VALUE" }}'
+    hint = (f'give {name}:=VALUE after the file on the command line, or in pyproject.toml: [tool.urdfcli.xacro-args] "{key}" = {{ {name} = "VALUE" }} '
+            f"(each of several values: [tool.urdfcli] models)")
     return diagnostic._replace(message=message, hint=diagnostic.hint or hint)
 
 

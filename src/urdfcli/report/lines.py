@@ -204,7 +204,7 @@ def also_line(lines: list[int], most: int = 8) -> str | None:
     return f"    note: also at line{'s' if len(lines) > 1 else ''} {joined(shown)}"
 
 
-def diagnostic_lines(diagnostic: Diagnostic, files: SourceFiles | SourcesOnce | None, width: int | None = None, also: list[int] = ()) -> list[Line]:
+def diagnostic_lines(diagnostic: Diagnostic, files: SourceFiles | SourcesOnce | None, width: int | None = None, also: Iterable[int] = ()) -> list[Line]:
     """A diagnostic, its macro calls and hint, and (given the files) its source line.
     With ``width``, a message, note or hint longer than that goes on over indented lines
     (a word, such as a path, is never cut: only a word longer than the width goes past
