@@ -305,7 +305,7 @@ def test_a_tensor_computed_by_a_macro_or_shared_by_calls_is_left_alone(cli, here
     assert top["reason"] == "the value is computed by ${m*(y*y+z*z)/12} at parts.xacro:6"
     # the same literal tensor for two links of other sizes: one edit cannot fit both
     shared = [fix for (code, link), fix in found.items() if link in ("a", "b")]
-    assert shared and all(f["reason"] and "also makes" in f["reason"] for f in shared), found
+    assert shared and all(f["reason"] and "would also change" in f["reason"] for f in shared), found
     before = snapshot(here)
     cli("lint", "--isolated", "--fix", "--unsafe-fixes", "bot.urdf.xacro")
     assert snapshot(here) == before

@@ -167,8 +167,22 @@ def test_a_massless_moving_branch_is_one_warning_naming_its_links(tmp_path):
 def test_a_light_frame_on_a_fixed_joint_is_not_a_point_mass(tmp_path):
     frame = BASE + arm("imu", inertial(0.005, 0, 0, 0), joint="fixed")
     assert found(tmp_path, frame, "I004") == []
-    sensor = BASE + arm("ft_sensor", inertial(0.1, 0, 0, 0), joint="fixed")  # tiago's wrist_ft_link
+    wrist = arm("wrist", box("0.05 0.05 0.05") + inertial(0.2, 0.0001, 0.0001, 0.0001))
+    sensor = BASE + wrist + arm("ft_sensor", inertial(0.1, 0, 0, 0), joint="fixed", parent="wrist")  # tiago's wrist_ft_link
     assert [c for c, _, _ in found(tmp_path, sensor, "I004", "I009")] == ["I004"]  # one cause, one diagnostic
+
+
+def test_a_point_mass_fixed_to_a_much_heavier_body_is_lost_in_it(tmp_path):
+    """Stretch's 75 g laser on its 15 kg base, TALOS's 100 g force sensors on its wrists,
+    ROS-Industrial's 0.4 kg link_t on a 4.8 kg flange: lumped into the body, the mass
+    counts where it is; the missing turning of a small part is lost in the body's. Unless
+    its shapes say it would turn the body materially (a long bar)."""
+    laser = BASE + arm("laser", sphere(0.03) + inertial(0.075, 0, 0, 0), joint="fixed")
+    assert found(tmp_path, laser, "I004") == []
+    bar = BASE + arm("bar", box("2 0.02 0.02") + inertial(0.9, 0, 0, 0), joint="fixed")
+    assert [c for c, _, _ in found(tmp_path, bar, "I004")] == ["I004"]  # 0.3 kg·m² about z, beside the base's 0.27
+    heavy = BASE + arm("motor", inertial(3, 0, 0, 0), joint="fixed")  # a quarter of the body's mass
+    assert [c for c, _, _ in found(tmp_path, heavy, "I004")] == ["I004"]
 
 
 def test_an_invalid_tensor_on_a_dummy_link_of_a_heavier_body_is_a_warning_naming_mujoco(tmp_path):

@@ -1,5 +1,5 @@
 """The "did you mean" search gives difflib's answer, with less of its work, and never a name
-that is the misspelt one with a whole prefix or suffix cut off."""
+that is the misspelt one with a whole prefix or suffix cut off; the name with one added first."""
 
 from __future__ import annotations
 
@@ -19,8 +19,20 @@ NAMES = st.text(alphabet="abcde_12", max_size=8)  # few letters: many ties and n
 @settings(max_examples=2000, deadline=None)
 @given(NAMES, st.lists(NAMES, max_size=30), st.integers(1, 4), st.sampled_from([0.0, 0.3, 0.6, 0.8]))
 def test_the_same_names_as_difflib(word, candidates, n, cutoff):
+    if any(cut_from(candidate, word) for candidate in candidates):
+        return  # (the word with a prefix or suffix added comes first: below)
     kept = [candidate for candidate in candidates if not cut_from(word, candidate)]
     assert close_matches(word, candidates, n, cutoff) == difflib.get_close_matches(word, kept, n, cutoff)
+
+
+def test_a_forgotten_prefix_is_offered_before_a_closer_spelling():
+    """ROS-Industrial's ma1440_d500: a transmission names 'joint_1', the positioner's joint is
+    'd500_joint_1' (a ${prefix} forgotten); difflib ranks the arm's 'joint_u' first, whose
+    actuator it is not. Of several, the one adding least comes first."""
+    joints = ["joint_s", "joint_l", "joint_u", "joint_r", "d500_joint_1", "d500_joint_2"]
+    assert difflib.get_close_matches("joint_1", joints, n=1) == ["joint_u"]
+    assert close_matches("joint_1", joints) == ["d500_joint_1"]
+    assert close_matches("base", ["base_footprint", "base_link", "bse"]) == ["base_link"]
 
 
 def test_a_misspelt_link_among_many():

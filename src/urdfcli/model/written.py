@@ -483,7 +483,7 @@ def place_fixes(loaded: Loaded, diagnostics: list[Diagnostic]) -> list[Diagnosti
                 others = spot.affected - wanted[spot.edit]
                 if others:
                     line = placer_line(loaded, spot.edit)
-                    reason = f"{line} also makes {len(others)} other value{'s' if len(others) > 1 else ''} of the model that need{'s' if len(others) == 1 else ''} no such change"
+                    reason = f"editing {line} would also change {len(others)} other value{'s' if len(others) > 1 else ''} of the model, which need{'s' if len(others) == 1 else ''} no such change"
                     break
                 edits.append(spot.edit)
             if reason:

@@ -45,6 +45,30 @@ def absorbed(loaded, link) -> bool:
     return massprops.scale_of(tensor_of(inertial)) <= MATERIAL * rest
 
 
+POINT_SHARE = 0.1
+"""A link with a zero tensor carrying at most this share of its body's mass is lost in it
+(Stretch's 75 g laser on its 15 kg base, ROS-Industrial's 0.4 kg link_t fixed to its 4.8 kg
+tool flange), unless its shapes show it would turn the body materially."""
+
+
+def point_in_body(loaded, link) -> bool:
+    """A zero tensor on a link fixed to heavier links with tensors of their own: the body
+    simulators lump it into counts its mass at its place; only its own turning is missing,
+    and that is lost beside the body's when the link carries a small share of the mass
+    (:data:`POINT_SHARE`) and a uniform body filling its shapes, where it has measurable
+    ones, would add under :data:`MATERIAL` to the rest's largest moment."""
+    from ..model.inertia import implied  # (the geometry: only for such links)
+
+    own = link_mass(loaded.robot, link.name)
+    body = bodies(loaded)[link.name]
+    total = body_mass(loaded, body)
+    rest = sum(_largest_moment(loaded.robot.links[name]) for name in body.links if name != link.name)
+    if own > POINT_SHARE * total or rest <= 0:
+        return False
+    found = implied(loaded, link)
+    return found.body is None or massprops.principal_moments(found.body.tensor)[2] <= MATERIAL * rest
+
+
 def _largest_moment(link) -> float:
     inertial = link.inertial
     if inertial is None or not inertial.inertia or not (inertial.mass or 0) > 0:
@@ -204,9 +228,12 @@ def massless_with_inertia(loaded, given):
 def point_mass(loaded, given):
     """## What it does
     Flags a link with positive mass and an all-zero inertia tensor. Elements below
-    1e-12 kg·m² count as zero (rounding noise such as `2.4e-35`). A link lighter than
-    20 g fixed to a heavier body (a sensor or tool frame) is left alone: lumped into
-    that body, its zero tensor changes nothing.
+    1e-12 kg·m² count as zero (rounding noise such as `2.4e-35`). Left alone: a link
+    lighter than 20 g fixed to a heavier body (a sensor or tool frame), and a link fixed
+    to links with tensors of their own, carrying a tenth of their body's mass or less,
+    whose shapes (where they can be measured) would add under 5 % to the body's largest
+    moment (Stretch's 75 g laser on its base): lumped into that body, its mass counted
+    where it is, its zero tensor changes nothing material.
 
     ## Why is this bad?
     A real body has extent; with a zero tensor turning it costs nothing, and
@@ -227,7 +254,7 @@ def point_mass(loaded, given):
     ```
     """
     for link, inertial in _inertials(loaded):
-        if inertial.mass > 0 and inertial.inertia and verdict(loaded, inertial)[0] == "I004" and not absorbed(loaded, link):
+        if inertial.mass > 0 and inertial.inertia and verdict(loaded, inertial)[0] == "I004" and not absorbed(loaded, link) and not point_in_body(loaded, link):
             zero = "a zero" if massprops.is_zero(massprops.matrix(inertial.inertia)) else "a near-zero"
             yield loaded.diagnostic(
                 "I004",

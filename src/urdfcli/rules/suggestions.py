@@ -1,5 +1,6 @@
-"""The "did you mean" hints: the names closest to a misspelt one, as :mod:`difflib` ranks them,
-less those that are the misspelt name with a whole prefix or suffix cut off (another name)."""
+"""The "did you mean" hints: the misspelt name with a prefix or suffix it lacks, else the names
+closest to it, as :mod:`difflib` ranks them, less those that are the misspelt name with a
+whole prefix or suffix cut off (another name)."""
 
 from __future__ import annotations
 
@@ -17,9 +18,15 @@ def close_matches(word: str, candidates: Iterable[str], n: int = 1, cutoff: floa
     score (a robot's names share most of their letters, so many pass the bounds).
     A candidate that is ``word`` with a whole prefix or suffix cut off is never
     offered: for ``robotiq_85_base_link``, ``base_link`` is the robot's base, not the
-    gripper's link misspelt."""
+    gripper's link misspelt. One that is ``word`` with a whole prefix or suffix added
+    comes first: ``d500_joint_1`` for ``joint_1`` is a ``${prefix}`` forgotten (difflib
+    would rank the other robot's ``joint_u`` above it)."""
     from difflib import SequenceMatcher  # only when a name is misspelt
 
+    candidates = list(candidates)
+    extended = sorted((c for c in candidates if cut_from(c, word)), key=lambda c: (len(c), c))  # the least added first
+    if extended:
+        return extended[:n]
     matcher = SequenceMatcher()
     matcher.set_seq2(word)
     bounded = []
