@@ -214,3 +214,28 @@ def test_a_file_opened_at_its_symlink_in_the_install_space_gets_its_diagnostics(
     checked = Checker().check(opened, {opened: Path(opened).read_text(), str(model): model.read_text()})
     assert "V009" in [m.diagnostic.code for m in checked.marks[opened]], checked.marks
     assert not [file for file in checked.marks if "/src/" in file and file.endswith("caster.xacro")], list(checked.marks)
+    # its unsaved text is what the check reads ($(find) reads the source the link points to)
+    checker = Checker()
+    unsaved = Path(opened).read_text().replace('rpy="0 0 90"', 'rpy="0 0 1.5708"')
+    checked = checker.check(opened, {opened: unsaved, str(model): model.read_text()})
+    assert "V009" not in [m.diagnostic.code for m in checked.marks.get(opened, [])], checked.marks
+
+
+def test_a_mistake_typed_at_a_call_of_a_macro_whose_params_span_lines_is_shown_there(tmp_path):
+    """xArm's other_geometry writes its params over several lines: the third and later were
+    lost to the editor, and a negative mass passed at the call showed only in the library."""
+    (tmp_path / ".git").mkdir()
+    library = tmp_path / "part.xacro"
+    library.write_text(f"""<robot {XACRO_NS}>
+  <xacro:macro name="part" params="prefix:=''
+      parent:=base_link
+      mass:=0.1">
+    <link name="${{prefix}}part"><inertial><mass value="${{mass}}"/><inertia ixx="0.001" ixy="0" ixz="0" iyy="0.001" iyz="0" izz="0.001"/></inertial></link>
+    <joint name="${{prefix}}joint" type="fixed"><parent link="${{parent}}"/><child link="${{prefix}}part"/></joint>
+  </xacro:macro>
+</robot>
+""")
+    model = tmp_path / "model.urdf.xacro"
+    model.write_text(f'<robot name="r" {XACRO_NS}>\n  <xacro:include filename="part.xacro"/>\n  <link name="base_link"/>\n  <xacro:part mass="-0.3"/>\n</robot>\n')
+    checked = Checker().check(str(model), {str(model): model.read_text(), str(library): library.read_text()})
+    assert [(m.place.start.line + 1, m.diagnostic.code) for m in checked.marks[str(model)] if m.diagnostic.code == "I001"] == [(4, "I001")]

@@ -172,7 +172,7 @@ class Checker:
         when :meth:`give_up` was called since :meth:`begin`."""
         if self.giving_up.is_set():
             return None  # given up before it began
-        self.sync(texts)
+        self.sync(_with_link_targets(texts))
         try:
             run = api.run([path], self.session)
         except GivenUp:
@@ -530,6 +530,13 @@ def _models_reading(runs: dict[str, api.Run], path: str) -> list[Result]:
             if path in _files([model]):
                 found.setdefault(model.label, model)
     return list(found.values())
+
+
+def _with_link_targets(texts: dict[str, str]) -> dict[str, str]:
+    """The editor's texts, each also for the file its path links to (a file opened at its
+    symlink in a built workspace's ``install/``: ``$(find)`` reads it from ``src/``)."""
+    linked = {real: text for path, text in texts.items() if (real := os.path.realpath(path)) != path and real not in texts}
+    return {**texts, **linked} if linked else texts
 
 
 def _opened_as(texts: Mapping[str, str]):

@@ -516,7 +516,7 @@ class Parameter(NamedTuple):
 # xacro's grammar of a macro's params (xacro/__init__.py, re_macro_arg and parse_macro_arg),
 # repeated here so that only the worker imports xacro; tests compare the two.
 _DEFAULT = r"""\$\{.*?\}|\$\(.*?\)|(?:'.*?'|\".*?\"|[^\s'\"]+)+|"""
-_MACRO_PARAMETER = re.compile(r"^\s*([^\s:=]+?)\s*:?=\s*(\^\|?)?(" + _DEFAULT + r")(?:\s+|$)(.*)")
+_MACRO_PARAMETER = re.compile(r"^\s*([^\s:=]+?)\s*:?=\s*(\^\|?)?(" + _DEFAULT + r")(?:\s+|$)(.*)", re.DOTALL)  # (params written over lines: the editor reads them as written)
 
 
 @functools.lru_cache(maxsize=1024)
