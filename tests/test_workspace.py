@@ -580,6 +580,36 @@ def test_a_file_its_includer_reads_only_under_a_condition_is_not_sent_to_see_wha
     )
 
 
+def test_a_file_an_expansion_never_reached_for_an_error_before_it_says_so(tmp_path):
+    """Nishida's sia5: the model includes body.urdf.xacro, whose X003 stops the expansion,
+    then its gazebo fragment and library. Not 'under a condition, list argument sets': the
+    error stopped it before, which the library's own check shows, with the way out."""
+    (tmp_path / ".git").mkdir()
+    write(tmp_path / "urdf" / "robot.urdf.xacro", f"""\
+        <robot name="r" {XACRO}>
+          <link name="base_link"/>
+          <xacro:include filename="body.urdf.xacro"/>
+          <xacro:include filename="body.gazebo.xacro"/>
+          <xacro:body_gazebo/>
+        </robot>
+        """)
+    write(tmp_path / "urdf" / "body.urdf.xacro", f'<robot {XACRO}>\n  <link name="body_${{rate}}"/>\n</robot>\n')
+    write(tmp_path / "urdf" / "body.gazebo.xacro", f'<robot {XACRO}>\n  <xacro:macro name="body_gazebo" params=""><gazebo reference="base_link"/></xacro:macro>\n</robot>\n')
+    done = run_cli("check", "--format", "concise", "urdf/body.gazebo.xacro", cwd=tmp_path)
+    out = done.stdout.decode()
+    assert "(urdf/robot.urdf.xacro stops at an error before reading it)" in out and "does not read it" not in out, out
+    assert "urdf/body.urdf.xacro:2:3: X003 error: name 'rate' is not defined" in out and done.returncode == 1
+    hint = next(d["hint"] for d in check_json("urdf/body.gazebo.xacro", cwd=tmp_path)[1]["files"][0]["diagnostics"] if d["code"] == "X006")
+    assert hint == "correct the error that stops the expansion of urdf/robot.urdf.xacro, then check again"
+    # a fragment included after the error by a fragment of the model: the note says so too
+    write(tmp_path / "urdf" / "arm.urdf.xacro", f'<robot {XACRO}>\n  <xacro:include filename="body.urdf.xacro"/>\n  <xacro:include filename="hand.urdf.xacro"/>\n</robot>\n')
+    write(tmp_path / "urdf" / "hand.urdf.xacro", f'<robot {XACRO}>\n  <link name="hand"/>\n</robot>\n')
+    edit(tmp_path / "urdf" / "robot.urdf.xacro", '<xacro:include filename="body.urdf.xacro"/>', '<xacro:include filename="arm.urdf.xacro"/>')
+    out = run_cli("lint", "urdf", cwd=tmp_path).stdout.decode()
+    assert ("urdf/hand.urdf.xacro: not checked: included by urdf/arm.urdf.xacro, where the expansion of urdf/robot.urdf.xacro "
+            "stopped at an error before it (see what it says)") in out, out
+
+
 def jackal_like(root: Path) -> None:
     """Jackal's accessories: a model that includes its accessories' libraries, one under
     conditions on environment variables ($(optenv)), and one always but calling its
