@@ -762,3 +762,25 @@ def test_a_model_run_with_two_argument_sets_shows_what_both_find_in_its_own_file
     assert [f.get("arguments") for f in report["files"]] == [None, {"extra": "true"}]
     found = [(d["code"], d["line"]) for f in report["files"] for d in f["diagnostics"] if d["code"] == "P001"]
     assert found == [("P001", 3)], report
+
+
+def test_a_model_broken_by_a_library_mistake_shown_under_another_model_is_not_ok(tmp_path):
+    """ROS-Industrial's sda10f and its test model share a macro whose mesh is missing: the
+    batch shows the error once, under the first model, and the other's JSON said ok, though
+    it fails alone. Each model's `ok` is that of all it found; the list stays shown once."""
+    (tmp_path / ".git").mkdir()
+    write(tmp_path / "urdf" / "arm_macro.xacro", f"""\
+        <robot {XACRO}>
+          <xacro:macro name="arm" params="prefix">
+            <link name="${{prefix}}base"><visual><geometry><mesh filename="file://{tmp_path}/meshes/base.stl"/></geometry></visual></link>
+          </xacro:macro>
+        </robot>
+        """)
+    for name in ("arm", "arm_test"):
+        write(tmp_path / "urdf" / f"{name}.urdf.xacro", f'<robot name="{name}" {XACRO}>\n  <xacro:include filename="arm_macro.xacro"/>\n  <xacro:arm prefix=""/>\n</robot>\n')
+    done, report = lint_json("urdf/arm.urdf.xacro", "urdf/arm_test.urdf.xacro", cwd=tmp_path)
+    files = {f["path"]: f for f in report["files"]}
+    codes = {path: [d["code"] for d in f["diagnostics"] if d["severity"] == "error"] for path, f in files.items()}
+    assert codes == {"urdf/arm.urdf.xacro": ["D004"], "urdf/arm_test.urdf.xacro": []}, codes
+    assert [f["ok"] for f in files.values()] == [False, False]
+    assert lint_json("urdf/arm_test.urdf.xacro", cwd=tmp_path)[1]["files"][0]["ok"] is False

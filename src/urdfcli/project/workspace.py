@@ -892,7 +892,8 @@ def assemble(
                     for d in result.diagnostics
                     if unused(d) and (d.code, d.message) not in copied and _fresh(d, is_own(d.path), shown_keys, entry.path)
                 )
-                results.append(result.but(diagnostics=shown_now))
+                failed = any(d.severity is Severity.ERROR for d in result.diagnostics if unused(d))
+                results.append(result.but(diagnostics=shown_now, failed=failed))
             continue
         results.append(_library_result(entry, outcome, shown_keys, unreadable, resolved))
     return results, unreadable
