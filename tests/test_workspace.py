@@ -580,6 +580,36 @@ def test_a_file_its_includer_reads_only_under_a_condition_is_not_sent_to_see_wha
     )
 
 
+def test_a_file_an_expansion_never_reached_for_an_error_before_it_says_so(tmp_path):
+    """Nishida's sia5: the model includes body.urdf.xacro, whose X003 stops the expansion,
+    then its gazebo fragment and library. Not 'under a condition, list argument sets': the
+    error stopped it before, which the library's own check shows, with the way out."""
+    (tmp_path / ".git").mkdir()
+    write(tmp_path / "urdf" / "robot.urdf.xacro", f"""\
+        <robot name="r" {XACRO}>
+          <link name="base_link"/>
+          <xacro:include filename="body.urdf.xacro"/>
+          <xacro:include filename="body.gazebo.xacro"/>
+          <xacro:body_gazebo/>
+        </robot>
+        """)
+    write(tmp_path / "urdf" / "body.urdf.xacro", f'<robot {XACRO}>\n  <link name="body_${{rate}}"/>\n</robot>\n')
+    write(tmp_path / "urdf" / "body.gazebo.xacro", f'<robot {XACRO}>\n  <xacro:macro name="body_gazebo" params=""><gazebo reference="base_link"/></xacro:macro>\n</robot>\n')
+    done = run_cli("check", "--format", "concise", "urdf/body.gazebo.xacro", cwd=tmp_path)
+    out = done.stdout.decode()
+    assert "(urdf/robot.urdf.xacro stops at an error before reading it)" in out and "does not read it" not in out, out
+    assert "urdf/body.urdf.xacro:2:3: X003 error: name 'rate' is not defined" in out and done.returncode == 1
+    hint = next(d["hint"] for d in check_json("urdf/body.gazebo.xacro", cwd=tmp_path)[1]["files"][0]["diagnostics"] if d["code"] == "X006")
+    assert hint == "correct the error that stops the expansion of urdf/robot.urdf.xacro, then check again"
+    # a fragment included after the error by a fragment of the model: the note says so too
+    write(tmp_path / "urdf" / "arm.urdf.xacro", f'<robot {XACRO}>\n  <xacro:include filename="body.urdf.xacro"/>\n  <xacro:include filename="hand.urdf.xacro"/>\n</robot>\n')
+    write(tmp_path / "urdf" / "hand.urdf.xacro", f'<robot {XACRO}>\n  <link name="hand"/>\n</robot>\n')
+    edit(tmp_path / "urdf" / "robot.urdf.xacro", '<xacro:include filename="body.urdf.xacro"/>', '<xacro:include filename="arm.urdf.xacro"/>')
+    out = run_cli("lint", "urdf", cwd=tmp_path).stdout.decode()
+    assert ("urdf/hand.urdf.xacro: not checked: included by urdf/arm.urdf.xacro, where the expansion of urdf/robot.urdf.xacro "
+            "stopped at an error before it (see what it says)") in out, out
+
+
 def jackal_like(root: Path) -> None:
     """Jackal's accessories: a model that includes its accessories' libraries, one under
     conditions on environment variables ($(optenv)), and one always but calling its
@@ -732,3 +762,25 @@ def test_a_model_run_with_two_argument_sets_shows_what_both_find_in_its_own_file
     assert [f.get("arguments") for f in report["files"]] == [None, {"extra": "true"}]
     found = [(d["code"], d["line"]) for f in report["files"] for d in f["diagnostics"] if d["code"] == "P001"]
     assert found == [("P001", 3)], report
+
+
+def test_a_model_broken_by_a_library_mistake_shown_under_another_model_is_not_ok(tmp_path):
+    """ROS-Industrial's sda10f and its test model share a macro whose mesh is missing: the
+    batch shows the error once, under the first model, and the other's JSON said ok, though
+    it fails alone. Each model's `ok` is that of all it found; the list stays shown once."""
+    (tmp_path / ".git").mkdir()
+    write(tmp_path / "urdf" / "arm_macro.xacro", f"""\
+        <robot {XACRO}>
+          <xacro:macro name="arm" params="prefix">
+            <link name="${{prefix}}base"><visual><geometry><mesh filename="file://{tmp_path}/meshes/base.stl"/></geometry></visual></link>
+          </xacro:macro>
+        </robot>
+        """)
+    for name in ("arm", "arm_test"):
+        write(tmp_path / "urdf" / f"{name}.urdf.xacro", f'<robot name="{name}" {XACRO}>\n  <xacro:include filename="arm_macro.xacro"/>\n  <xacro:arm prefix=""/>\n</robot>\n')
+    done, report = lint_json("urdf/arm.urdf.xacro", "urdf/arm_test.urdf.xacro", cwd=tmp_path)
+    files = {f["path"]: f for f in report["files"]}
+    codes = {path: [d["code"] for d in f["diagnostics"] if d["severity"] == "error"] for path, f in files.items()}
+    assert codes == {"urdf/arm.urdf.xacro": ["D004"], "urdf/arm_test.urdf.xacro": []}, codes
+    assert [f["ok"] for f in files.values()] == [False, False]
+    assert lint_json("urdf/arm_test.urdf.xacro", cwd=tmp_path)[1]["files"][0]["ok"] is False

@@ -68,6 +68,7 @@ class Result:
     compatibility: tuple[Verdict, ...] = ()
     robot_name: str | None = None  # the robot's name: told by ``loaded`` when it is there
     show_info: bool = True  # whether its info diagnostics are shown, in every format (its configuration's show-info)
+    failed: bool | None = None  # set when a batch shows some of its findings under another model: whether they held an error
 
     def __post_init__(self) -> None:
         robot = self.loaded.robot if self.loaded is not None else None
@@ -116,8 +117,9 @@ class Result:
 
     @property
     def ok(self) -> bool:
-        """No error (warnings allowed)."""
-        return not self.errors
+        """No error (warnings allowed), among all the model's findings: a library's mistake
+        that a batch shows once, under another model, breaks this one too."""
+        return not self.errors if self.failed is None else not self.failed
 
     def but(self, **changes) -> Result:
         """This result with some fields changed (a new value)."""

@@ -468,6 +468,7 @@ class Target(NamedTuple):
     fragment: bool = False  # alone: a file that cannot be read on its own; only why no model checked it is said
     needs: tuple[str, str] | None = None  # alone: a model that includes it and the xacro argument it needs
     environment: tuple[tuple[str, ...], ...] = ()  # alone: the ways environment variables make its models read it (NAME=VALUE each)
+    stopped: str | None = None  # alone: a model that includes it whose expansion stopped at an error before reading it, when no other reason is
 
     @property
     def label(self) -> str:
@@ -586,6 +587,8 @@ def unread(aside: tuple[Aside, ...], results: list[Result], shown: list[Result] 
     read = {resolved(file) for result in results for file in (result.path, *result.includes) if file != STDIN}
     # an error (it did not expand) or a note says why; a warning of a model that expanded does not
     saying = {resolved(result.path) for result in shown if result.errors or (result.library is not None and result.library.notes)}
+    # a file an expansion read before it stopped at an error: what it includes later was never reached
+    stopped = {resolved(f): result.shown for result in shown if result.errors and result.robot is None for f in result.includes}
     found = []
     for file in aside:
         if resolved(file.path) in read:
@@ -593,6 +596,8 @@ def unread(aside: tuple[Aside, ...], results: list[Result], shown: list[Result] 
         includer, written = file.includers[0]
         if file.certain and resolved(includer) in saying:
             note = f"not checked: included by {includer}, whose expansion did not read it (see what it says)"
+        elif file.certain and resolved(includer) in stopped:
+            note = f"not checked: included by {includer}, where the expansion of {stopped[resolved(includer)]} stopped at an error before it (see what it says)"
         elif file.certain:
             note = (f"not checked: included by {includer}, whose expansion did not read it (under a condition, or in a macro not called): "
                     "list argument sets of a model that reads it in [tool.urdfcli] models")
@@ -887,7 +892,8 @@ def assemble(
                     for d in result.diagnostics
                     if unused(d) and (d.code, d.message) not in copied and _fresh(d, is_own(d.path), shown_keys, entry.path)
                 )
-                results.append(result.but(diagnostics=shown_now))
+                failed = any(d.severity is Severity.ERROR for d in result.diagnostics if unused(d))
+                results.append(result.but(diagnostics=shown_now, failed=failed))
             continue
         results.append(_library_result(entry, outcome, shown_keys, unreadable, resolved))
     return results, unreadable
@@ -1013,6 +1019,7 @@ def _library_result(
     needing: list[str] = []  # models that include it but cannot be expanded without arguments
     needs: tuple[str, str] | None = None  # the first of them and the argument it needs, for the hint
     unread: list[tuple[str, str]] = []  # models that expand but do not read it: (label, with which arguments)
+    stopped: list[str] = []  # models whose expansion stopped at an error before reading it
     used: list[Result] = []  # the models it was checked through
     uncalled: list[str] = []  # models that read it but call none of its macros
     for target in entry.targets:
@@ -1033,6 +1040,10 @@ def _library_result(
             notes.append(f"not checked through {target.label}: {missing.message}")
             continue
         reached = any(_same(f, library) for f in model.includes) or any(_same(d.path, library) for d in model.diagnostics)
+        if not reached and model.robot is None and model.errors:  # its expansion stopped before it came to the include
+            stopped.append(target.label)
+            found += [] if theirs else [_through(d, model) for d in model.errors]  # what stopped it
+            continue
         if not reached:  # an include under xacro:if, or a file name made from an argument
             unread.append((target.label, "the arguments it is checked with" if target.arguments else "its default arguments"))
             continue
@@ -1052,15 +1063,18 @@ def _library_result(
         found += [_through(d, model) for d in model.diagnostics if unused(d) and (_same(d.path, library) or (d.severity is Severity.ERROR and not theirs))]
     # When models include it but none could check it, that is a gap (X006) the config closes.
     reasons = needing + [f"{label} does not read it with {arguments}" for label, arguments in unread] + uncalled
+    reasons += [f"{label} stops at an error before reading it" for label in stopped]
+    stopped_only = stopped[0] if stopped and len(reasons) == len(stopped) else None
     environment = entry.gates.environment(reading=bool(unread), calling=bool(uncalled))
     if not checked_through and fragment:
         notes += [f"not checked through {label}: it does not read this file with {arguments}" for label, arguments in unread]
+        notes += [f"not checked through {label}: its expansion stops at an error before reading this file" for label in stopped]
         notes.append("a fragment of the models that include it (it cannot be read on its own), and none read it: not checked")
         if reasons:
-            said = outcome(Target(entry.path, alone=True, unchecked="; ".join(reasons), fragment=True, needs=needs))
+            said = outcome(Target(entry.path, alone=True, unchecked="; ".join(reasons), fragment=True, needs=needs, stopped=stopped_only))
             found += said.diagnostics if isinstance(said, Result) else ()
     elif not checked_through:  # checked on its own: its X006 says why, and what would check it
-        alone = outcome(Target(entry.path, alone=True, unchecked="; ".join(reasons), needs=needs, environment=environment))
+        alone = outcome(Target(entry.path, alone=True, unchecked="; ".join(reasons), needs=needs, environment=environment, stopped=stopped_only))
         if isinstance(alone, Unreadable):
             unreadable.append(alone)
         else:
@@ -1104,14 +1118,18 @@ def _may_include(maybe: Maybe, outcome) -> str:
 
 def unchecked_library(
     path: str, unchecked: str, fragment: bool = False, needs: tuple[str, str] | None = None, environment: tuple[tuple[str, ...], ...] = (),
+    stopped: str | None = None,
 ) -> Diagnostic:
     """X006: a library (or a fragment, which cannot be read alone) that no model including it
     could check; ``needs``: a model that includes it and the argument it needs, for the hint;
     ``environment``: the ways environment variables make its models use it (NAME=VALUE
-    each), which no argument set can give (``[tool.urdfcli] models`` sets xacro arguments only)."""
+    each), which no argument set can give (``[tool.urdfcli] models`` sets xacro arguments only);
+    ``stopped``: the model whose expansion stopped at an error before reading it, the only reason."""
     what = "xacro fragment not checked" if fragment else "xacro library checked on its own only"
     model, argument = needs if needs is not None else ("urdf/robot.urdf.xacro", "name")
-    if environment:
+    if stopped is not None:
+        hint = f"correct the error that stops the expansion of {stopped}, then check again"
+    elif environment:
         others = "".join(f" (or {' '.join(way)})" for way in environment[1:3])
         hint = f"its models use it only under environment variables, which argument sets cannot set: check with them set, e.g. {' '.join(environment[0])} urdfcli lint {path}{others}"
     else:
