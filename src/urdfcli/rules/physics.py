@@ -52,9 +52,9 @@ tool flange), unless its shapes show it would turn the body materially."""
 
 
 def point_in_body(loaded, link) -> bool:
-    """A zero tensor on a link fixed to heavier links with tensors of their own: the body
-    simulators lump it into counts its mass at its place; only its own turning is missing,
-    and that is lost beside the body's when the link carries a small share of the mass
+    """A zero tensor on a link fixed to heavier links with tensors of their own: simulators
+    lump the link into that body, its mass counted where it is, and only its own turning is
+    missing. That is lost beside the body's when the link carries a small share of the mass
     (:data:`POINT_SHARE`) and a uniform body filling its shapes, where it has measurable
     ones, would add under :data:`MATERIAL` to the rest's largest moment."""
     from ..model.inertia import implied  # (the geometry: only for such links)

@@ -60,8 +60,9 @@ def _missing(loaded: Loaded, code: str, kind: str, named: Named, known, what: st
         Finds each link an SRDF names that the URDF of its robot does not have:
         in a group (`<link>`, a chain's `base_link` and `tip_link`), an end
         effector's `parent_link`, a virtual joint's `child_link` and a
-        `<disable_collisions>` pair. A pair is a warning: MoveIt only logs it
-        (a link it lacks collides with nothing), unless the name is a typo.
+        `<disable_collisions>` pair. A pair is a warning: MoveIt logs it and goes
+        on (a link the URDF lacks collides with nothing; a typo leaves the two
+        links meant checked).
         """,
         """
         MoveIt's SRDF reader logs the unknown name and drops what holds it: the
