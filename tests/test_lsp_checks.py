@@ -239,3 +239,37 @@ def test_a_mistake_typed_at_a_call_of_a_macro_whose_params_span_lines_is_shown_t
     model.write_text(f'<robot name="r" {XACRO_NS}>\n  <xacro:include filename="part.xacro"/>\n  <link name="base_link"/>\n  <xacro:part mass="-0.3"/>\n</robot>\n')
     checked = Checker().check(str(model), {str(model): model.read_text(), str(library): library.read_text()})
     assert [(m.place.start.line + 1, m.diagnostic.code) for m in checked.marks[str(model)] if m.diagnostic.code == "I001"] == [(4, "I001")]
+
+
+def test_a_missing_name_whose_literal_text_no_name_has_is_the_macro_bodys(tmp_path):
+    """Motoman's arm_macro: <parent link="${prefix}link_2_x"/> in the body names a link no
+    call makes, whatever its prefix: the body's text is wrong, shown in the library only.
+    A flange named from the call's arm ("lft" beside the model's left_flange) is the call's."""
+    (tmp_path / ".git").mkdir()
+    library = tmp_path / "arm.xacro"
+    library.write_text(f"""<robot {XACRO_NS}>
+  <xacro:macro name="arm" params="prefix">
+    <link name="${{prefix}}link_1"/>
+    <link name="${{prefix}}link_2"/>
+    <joint name="${{prefix}}joint_2" type="fixed">
+      <parent link="${{prefix}}link_1x"/><child link="${{prefix}}link_2"/>
+    </joint>
+  </xacro:macro>
+  <xacro:macro name="tool" params="arm">
+    <link name="${{arm}}_tool"/>
+    <joint name="${{arm}}_tool_joint" type="fixed"><parent link="${{arm}}_link_2"/><child link="${{arm}}_tool"/></joint>
+  </xacro:macro>
+</robot>
+""")
+    model = tmp_path / "model.urdf.xacro"
+    model.write_text(f"""<robot name="r" {XACRO_NS}>
+  <xacro:include filename="arm.xacro"/>
+  <link name="world"/>
+  <xacro:arm prefix="left_"/>
+  <xacro:tool arm="lft"/>
+</robot>
+""")
+    checked = Checker().check(str(model), {str(model): model.read_text(), str(library): library.read_text()})
+    at_calls = sorted((m.place.start.line + 1, m.diagnostic.code, m.diagnostic.message.split("'")[1]) for m in checked.marks[str(model)] if m.diagnostic.code == "J005")
+    assert at_calls == [(5, "J005", "lft_link_2")], at_calls
+    assert {m.diagnostic.message.split("'")[1] for m in checked.marks[str(library)] if m.diagnostic.code == "J005"} == {"left_link_1x", "lft_link_2"}

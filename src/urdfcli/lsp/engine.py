@@ -20,9 +20,10 @@ Paths are absolute.
 from __future__ import annotations
 
 import difflib
+import functools
 import os
 import threading
-from collections.abc import Iterable, Mapping
+from collections.abc import Callable, Iterable, Mapping
 from pathlib import Path
 from typing import NamedTuple
 
@@ -49,6 +50,7 @@ from .places import Place, offset, offset_place, token_place
 
 OUTLINES_KEPT = 64  # outlines of files not open (included libraries) kept for navigation
 NAME_RULES = frozenset({"N004", "N005", "N006"})  # what they find is the element's own name: a call's ${prefix} can make it
+REFERENCE_RULES = frozenset({"J005", "J008", "D006", "D007"})  # what they find is a name the element refers to, missing from the model
 
 
 class Mark(NamedTuple):
@@ -190,11 +192,12 @@ class Checker:
             self.runs[path] = run  # navigation keeps the models of the last check that read any
         marks: dict[str, list[Mark]] = {path: []}
         opened = _opened_as(texts)
+        known = functools.cache(lambda: frozenset(n for m in run.models if m.robot is not None for n in (*m.robot.links, *m.robot.joints)))
         for diagnostic, note in _labelled(run.results):
             mark = self.mark(diagnostic, note)
             file = opened(mark.place.file)
             marks.setdefault(file, []).append(mark)
-            for call in self._calls_that_caused(mark):
+            for call in self._calls_that_caused(mark, known):
                 if opened(call.place.file) in texts and opened(call.place.file) != file:
                     marks.setdefault(opened(call.place.file), []).append(call)
         for reason in [*map(str, run.unreadable), *(n for r in run.results if r.library for n in r.library.notes)]:
@@ -216,32 +219,35 @@ class Checker:
         related = tuple((self.place(_absolute(c.file), c.line, c.column), f"in macro '{escape(c.macro)}' called here") for c in location.trace)
         return Mark(diagnostic, self.place(file, line, location.column if line else None), message, related)
 
-    def _calls_that_caused(self, mark: Mark) -> list[Mark]:
+    def _calls_that_caused(self, mark: Mark, known: Callable[[], frozenset[str]]) -> list[Mark]:
         """The same diagnostic at each macro call whose arguments made the element it is
         about: the innermost call when the element uses its macro's parameters (in its
-        ``name`` only for the rules about names), the call around that one when the inner
-        call passes its own macro's parameters on, and so on. The element's own place is
-        the related information."""
+        ``name`` only for the rules about names; for a name it refers to that the model
+        lacks, only when the name's literal text fits one of ``known()``, the model's
+        names: else the body's text is what is wrong), the call around that one when the
+        inner call passes its own macro's parameters on, and so on. The element's own
+        place is the related information."""
         location = mark.diagnostic.location
         if location.expanded or not location.line or not location.trace:
             return []
         found: list[Mark] = []
         written = (_absolute(location.file), location.line, location.column)
         maker = location.trace[0].macro  # the macro whose body wrote the element, whichever call is marked
-        names = mark.diagnostic.code in NAME_RULES
+        names, refers = mark.diagnostic.code in NAME_RULES, mark.diagnostic.code in REFERENCE_RULES
         for call in location.trace:
-            if not self._uses_parameters(*written, names):
+            values = self._parameter_values(*written, names)
+            if not values or (refers and not any(navigation.fits_a_name(value, known()) for value in values)):
                 break
-            names = True  # (a call's every attribute is an argument)
+            names, refers = True, False  # (a call's every attribute is an argument)
             found.append(self._at_call(mark, call, maker))
             written = (_absolute(call.file), call.line, call.column)
         return found
 
-    def _uses_parameters(self, file: str, line: int | None, column: int | None, names: bool) -> bool:
+    def _parameter_values(self, file: str, line: int | None, column: int | None, names: bool) -> list[str]:
         source = self.session.files.get(file)
         if source is None or not line or source.line(line) is None:
-            return False
-        return navigation.uses_parameters(source.text, offset(source, line - 1, (column or 1) - 1), names)
+            return []
+        return navigation.parameter_values(source.text, offset(source, line - 1, (column or 1) - 1), names)
 
     def _at_call(self, mark: Mark, call: Call, maker: str) -> Mark:
         """``mark`` at a call that caused it, its message saying where macro ``maker`` wrote it."""

@@ -10,7 +10,7 @@ filename leads to a file. The text at the cursor is read by
 from __future__ import annotations
 
 import re
-from collections.abc import Callable
+from collections.abc import Callable, Iterable
 from pathlib import Path
 from typing import NamedTuple
 
@@ -29,7 +29,8 @@ _NAME_CHARACTERS = re.compile(r"[\w.-]*")
 _TYPED_NAME = re.compile(r"\w*$")
 _OPEN_EXPRESSION = re.compile(r"\$\{[^}]*$")
 _LONGEST_TAG = 65_536
-_OWN_NAME = re.compile(r"""\sname\s*=\s*(?:"[^"]*"|'[^']*')""")
+_ATTRIBUTE = re.compile(r"""\s([\w:.-]+)\s*=\s*(?:"([^"]*)"|'([^']*)')""")
+_EXPRESSION_TEXT = re.compile(r"\$\{[^}]*\}")
 
 
 class Scope(NamedTuple):
@@ -127,22 +128,35 @@ def _preferred(definitions: list[Definition], macro: str | None) -> list[Definit
     return [d for d in definitions if d.macro == macro and macro] + [d for d in definitions if d.macro is None] or definitions
 
 
-def uses_parameters(text: str, offset: int, names: bool = True) -> bool:
-    """Whether the start tag at ``offset`` (or around it: a diagnostic about an attribute
-    is placed at the attribute; else the first one after it) uses a parameter of the
-    macro whose body holds it, in a ``${...}``: what a call's arguments change. Without
-    ``names``, its ``name`` attribute does not count: a ``${prefix}`` that names a link
-    does not make what is wrong with the link's limits or shapes."""
+def parameter_values(text: str, offset: int, names: bool = True) -> list[str]:
+    """The values of the start tag at ``offset`` (or around it: a diagnostic about an
+    attribute is placed at the attribute; else the first one after it) that use a parameter
+    of the macro whose body holds it, in a ``${...}``: what a call's arguments change. Without
+    ``names``, its ``name`` attribute does not count: a ``${prefix}`` that names a link does
+    not make what is wrong with the link's limits or shapes."""
     start = text.rfind("<", 0, offset + 1)
     if start < 0 or ">" in text[start:offset]:
         start = text.find("<", offset)
     macro = _macro_at(text, start) if start >= 0 else None
     if macro is None:
-        return False
+        return []
     end = text.find(">", start, start + _LONGEST_TAG)
     tag = text[start : end if end > 0 else start + _LONGEST_TAG]
     parameters = {p.name.lstrip("^") for p in macro_parameters(macro[1])}
-    return bool(parameters & expression_names(tag if names else _OWN_NAME.sub(" ", tag)))
+    found = []
+    for attribute in _ATTRIBUTE.finditer(tag):
+        value = attribute.group(2) if attribute.group(2) is not None else attribute.group(3)
+        if (names or attribute.group(1) != "name") and parameters & expression_names(value):
+            found.append(value)
+    return found
+
+
+def fits_a_name(value: str, known: Iterable[str]) -> bool:
+    """Whether a value written with ``${...}`` can make one of the ``known`` names, whatever
+    its expressions give: its literal text, in place, matches one (``${prefix}link_2`` and
+    ``left_link_2``). When none does, the literal text is what is wrong, not what a call passed."""
+    pattern = re.compile(".+".join(re.escape(piece) for piece in _EXPRESSION_TEXT.split(value)), re.DOTALL)
+    return any(pattern.fullmatch(name) for name in known)
 
 
 # -- hover ------------------------------------------------------------------------------
