@@ -140,13 +140,22 @@ def test_a_librarys_check_names_each_model_as_the_models_own_check_does(workspac
         checker.close()
 
 
+def checked_with_library(tmp_path: Path, library: str, model: str, name: str = "arm.xacro") -> tuple:
+    """A repository holding a macro library (``name``) and model.urdf.xacro including it, both
+    open in the editor: the model's check, and the two paths."""
+    (tmp_path / ".git").mkdir()
+    files = {tmp_path / name: library, tmp_path / "model.urdf.xacro": model}
+    for path, text in files.items():
+        path.write_text(text)
+    model_path = str(tmp_path / "model.urdf.xacro")
+    return Checker().check(model_path, {str(path): text for path, text in files.items()}), model_path, str(tmp_path / name)
+
+
 def test_a_mistake_shown_at_an_outer_call_names_the_macro_that_wrote_it(tmp_path):
     """A mesh path an inner macro builds from the outer macro's parameter, wrong at the
     model's call of the outer macro: shown there, saying it was written in macro 'inner'
     (where the line is), not 'outer' (the macro called there)."""
-    (tmp_path / ".git").mkdir()
-    library = tmp_path / "lib.xacro"
-    library.write_text(f"""<robot {XACRO_NS}>
+    checked, model, _ = checked_with_library(tmp_path, f"""<robot {XACRO_NS}>
   <xacro:macro name="inner" params="name">
     <link name="${{name}}">
       <visual><geometry><mesh filename="file://{tmp_path}/meshes/${{name}}.stl"/></geometry></visual>
@@ -156,11 +165,8 @@ def test_a_mistake_shown_at_an_outer_call_names_the_macro_that_wrote_it(tmp_path
     <xacro:inner name="${{part}}"/>
   </xacro:macro>
 </robot>
-""")
-    model = tmp_path / "model.urdf.xacro"
-    model.write_text(f'<robot name="r" {XACRO_NS}>\n  <xacro:include filename="lib.xacro"/>\n  <xacro:outer part="base"/>\n</robot>\n')
-    checked = Checker().check(str(model), {str(model): model.read_text(), str(library): library.read_text()})
-    [at_call] = [m for m in checked.marks[str(model)] if m.diagnostic.code == "D004"]
+""", f'<robot name="r" {XACRO_NS}>\n  <xacro:include filename="lib.xacro"/>\n  <xacro:outer part="base"/>\n</robot>\n', "lib.xacro")
+    [at_call] = [m for m in checked.marks[model] if m.diagnostic.code == "D004"]
     assert at_call.place.start.line + 1 == 3 and "(in macro 'inner', lib.xacro:4)" in at_call.message
 
 
@@ -168,9 +174,7 @@ def test_a_mistake_of_the_macro_body_is_not_shown_at_a_call_that_only_named_its_
     """A joint named ``${prefix}elbow`` without <limit>: the call's prefix named it, the body
     forgot the limit, so the model's call shows nothing (the library does). A parent the call
     passes that does not exist, and a prefix that makes a link twice, are the call's: shown there."""
-    (tmp_path / ".git").mkdir()
-    library = tmp_path / "arm.xacro"
-    library.write_text(f"""<robot {XACRO_NS}>
+    library = f"""<robot {XACRO_NS}>
   <xacro:macro name="arm" params="prefix parent">
     <link name="${{prefix}}upper"/>
     <joint name="${{prefix}}elbow" type="revolute">
@@ -178,20 +182,19 @@ def test_a_mistake_of_the_macro_body_is_not_shown_at_a_call_that_only_named_its_
     </joint>
   </xacro:macro>
 </robot>
-""")
-    model = tmp_path / "model.urdf.xacro"
-    model.write_text(f"""<robot name="r" {XACRO_NS}>
+"""
+    model = f"""<robot name="r" {XACRO_NS}>
   <xacro:include filename="arm.xacro"/>
   <link name="world"/>
   <xacro:arm prefix="left_" parent="world"/>
   <xacro:arm prefix="right_" parent="wrld"/>
   <xacro:arm prefix="right_" parent="world"/>
 </robot>
-""")
-    checked = Checker().check(str(model), {str(model): model.read_text(), str(library): library.read_text()})
-    at_calls = sorted((m.place.start.line + 1, m.diagnostic.code) for m in checked.marks[str(model)] if m.diagnostic.code[0] in "JN")
+"""
+    checked, model, library = checked_with_library(tmp_path, library, model)
+    at_calls = sorted((m.place.start.line + 1, m.diagnostic.code) for m in checked.marks[model] if m.diagnostic.code[0] in "JN")
     assert at_calls == [(5, "J005"), (6, "N004"), (6, "N005")], at_calls
-    assert {m.diagnostic.code for m in checked.marks[str(library)]} >= {"J003", "J005", "N004", "N005"}
+    assert {m.diagnostic.code for m in checked.marks[library]} >= {"J003", "J005", "N004", "N005"}
 
 
 def test_a_file_opened_at_its_symlink_in_the_install_space_gets_its_diagnostics(tmp_path, monkeypatch):
@@ -224,9 +227,7 @@ def test_a_file_opened_at_its_symlink_in_the_install_space_gets_its_diagnostics(
 def test_a_mistake_typed_at_a_call_of_a_macro_whose_params_span_lines_is_shown_there(tmp_path):
     """xArm's other_geometry writes its params over several lines: the third and later were
     lost to the editor, and a negative mass passed at the call showed only in the library."""
-    (tmp_path / ".git").mkdir()
-    library = tmp_path / "part.xacro"
-    library.write_text(f"""<robot {XACRO_NS}>
+    library = f"""<robot {XACRO_NS}>
   <xacro:macro name="part" params="prefix:=''
       parent:=base_link
       mass:=0.1">
@@ -234,20 +235,17 @@ def test_a_mistake_typed_at_a_call_of_a_macro_whose_params_span_lines_is_shown_t
     <joint name="${{prefix}}joint" type="fixed"><parent link="${{parent}}"/><child link="${{prefix}}part"/></joint>
   </xacro:macro>
 </robot>
-""")
-    model = tmp_path / "model.urdf.xacro"
-    model.write_text(f'<robot name="r" {XACRO_NS}>\n  <xacro:include filename="part.xacro"/>\n  <link name="base_link"/>\n  <xacro:part mass="-0.3"/>\n</robot>\n')
-    checked = Checker().check(str(model), {str(model): model.read_text(), str(library): library.read_text()})
-    assert [(m.place.start.line + 1, m.diagnostic.code) for m in checked.marks[str(model)] if m.diagnostic.code == "I001"] == [(4, "I001")]
+"""
+    model = f'<robot name="r" {XACRO_NS}>\n  <xacro:include filename="part.xacro"/>\n  <link name="base_link"/>\n  <xacro:part mass="-0.3"/>\n</robot>\n'
+    checked, model, library = checked_with_library(tmp_path, library, model, "part.xacro")
+    assert [(m.place.start.line + 1, m.diagnostic.code) for m in checked.marks[model] if m.diagnostic.code == "I001"] == [(4, "I001")]
 
 
 def test_a_missing_name_whose_literal_text_no_name_has_is_the_macro_bodys(tmp_path):
     """Motoman's arm_macro: <parent link="${prefix}link_2_x"/> in the body names a link no
     call makes, whatever its prefix: the body's text is wrong, shown in the library only.
     A flange named from the call's arm ("lft" beside the model's left_flange) is the call's."""
-    (tmp_path / ".git").mkdir()
-    library = tmp_path / "arm.xacro"
-    library.write_text(f"""<robot {XACRO_NS}>
+    library = f"""<robot {XACRO_NS}>
   <xacro:macro name="arm" params="prefix">
     <link name="${{prefix}}link_1"/>
     <link name="${{prefix}}link_2"/>
@@ -260,16 +258,15 @@ def test_a_missing_name_whose_literal_text_no_name_has_is_the_macro_bodys(tmp_pa
     <joint name="${{arm}}_tool_joint" type="fixed"><parent link="${{arm}}_link_2"/><child link="${{arm}}_tool"/></joint>
   </xacro:macro>
 </robot>
-""")
-    model = tmp_path / "model.urdf.xacro"
-    model.write_text(f"""<robot name="r" {XACRO_NS}>
+"""
+    model = f"""<robot name="r" {XACRO_NS}>
   <xacro:include filename="arm.xacro"/>
   <link name="world"/>
   <xacro:arm prefix="left_"/>
   <xacro:tool arm="lft"/>
 </robot>
-""")
-    checked = Checker().check(str(model), {str(model): model.read_text(), str(library): library.read_text()})
-    at_calls = sorted((m.place.start.line + 1, m.diagnostic.code, m.diagnostic.message.split("'")[1]) for m in checked.marks[str(model)] if m.diagnostic.code == "J005")
+"""
+    checked, model, library = checked_with_library(tmp_path, library, model)
+    at_calls = sorted((m.place.start.line + 1, m.diagnostic.code, m.diagnostic.message.split("'")[1]) for m in checked.marks[model] if m.diagnostic.code == "J005")
     assert at_calls == [(5, "J005", "lft_link_2")], at_calls
-    assert {m.diagnostic.message.split("'")[1] for m in checked.marks[str(library)] if m.diagnostic.code == "J005"} == {"left_link_1x", "lft_link_2"}
+    assert {m.diagnostic.message.split("'")[1] for m in checked.marks[library] if m.diagnostic.code == "J005"} == {"left_link_1x", "lft_link_2"}

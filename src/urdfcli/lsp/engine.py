@@ -174,7 +174,8 @@ class Checker:
         when :meth:`give_up` was called since :meth:`begin`."""
         if self.giving_up.is_set():
             return None  # given up before it began
-        self.sync(_with_link_targets(texts))
+        by_target = {os.path.realpath(path): path for path in texts}  # (a file opened at its symlink in a built workspace's install/)
+        self.sync({**texts, **{real: texts[path] for real, path in by_target.items() if real not in texts}})  # $(find) reads src/'s
         try:
             run = api.run([path], self.session)
         except GivenUp:
@@ -191,7 +192,7 @@ class Checker:
         if path not in self.runs or any(m.robot is not None for m in run.models):
             self.runs[path] = run  # navigation keeps the models of the last check that read any
         marks: dict[str, list[Mark]] = {path: []}
-        opened = _opened_as(texts)
+        opened = _opened_as(texts, by_target)
         known = functools.cache(lambda: frozenset(n for m in run.models if m.robot is not None for n in (*m.robot.links, *m.robot.joints)))
         for diagnostic, note in _labelled(run.results):
             mark = self.mark(diagnostic, note)
@@ -538,18 +539,10 @@ def _models_reading(runs: dict[str, api.Run], path: str) -> list[Result]:
     return list(found.values())
 
 
-def _with_link_targets(texts: dict[str, str]) -> dict[str, str]:
-    """The editor's texts, each also for the file its path links to (a file opened at its
-    symlink in a built workspace's ``install/``: ``$(find)`` reads it from ``src/``)."""
-    linked = {real: text for path, text in texts.items() if (real := os.path.realpath(path)) != path and real not in texts}
-    return {**texts, **linked} if linked else texts
-
-
-def _opened_as(texts: Mapping[str, str]):
-    """The path under which the editor opened a file: a built workspace's ``install/``
-    holds symlinks into ``src/``, where diagnostics are placed; a buffer opened at the
-    link gets them."""
-    by_target = {os.path.realpath(path): path for path in texts}
+def _opened_as(texts: Mapping[str, str], by_target: Mapping[str, str]):
+    """The path under which the editor opened a file (``by_target``: each open file's real
+    path -> the path opened): a built workspace's ``install/`` holds symlinks into ``src/``,
+    where diagnostics are placed; a buffer opened at the link gets them."""
     seen: dict[str, str] = {}
 
     def opened(file: str) -> str:

@@ -17,7 +17,7 @@ from typing import NamedTuple
 from ..diagnostics import Location
 from ..project.workspace import shown
 from ..report.escape import escape
-from ..read.xacro_scan import macro_parameters
+from ..read.xacro_scan import lexed, macro_parameters
 from .outline import XACRO_KEYWORDS, Cursor, Definition, Outline, cursor, expression_name, expression_names, substitution
 
 XACRO = "xacro:"
@@ -30,7 +30,6 @@ _TYPED_NAME = re.compile(r"\w*$")
 _OPEN_EXPRESSION = re.compile(r"\$\{[^}]*$")
 _LONGEST_TAG = 65_536
 _ATTRIBUTE = re.compile(r"""\s([\w:.-]+)\s*=\s*(?:"([^"]*)"|'([^']*)')""")
-_EXPRESSION_TEXT = re.compile(r"\$\{[^}]*\}")
 
 
 class Scope(NamedTuple):
@@ -155,7 +154,7 @@ def fits_a_name(value: str, known: Iterable[str]) -> bool:
     """Whether a value written with ``${...}`` can make one of the ``known`` names, whatever
     its expressions give: its literal text, in place, matches one (``${prefix}link_2`` and
     ``left_link_2``). When none does, the literal text is what is wrong, not what a call passed."""
-    pattern = re.compile(".+".join(re.escape(piece) for piece in _EXPRESSION_TEXT.split(value)), re.DOTALL)
+    pattern = re.compile("".join(".+" if kind == "expression" else re.escape(value[start:end]) for kind, start, end, _ in lexed(value)), re.DOTALL)
     return any(pattern.fullmatch(name) for name in known)
 
 

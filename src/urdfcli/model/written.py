@@ -194,11 +194,10 @@ class Placer:
                 called = site.trace[0] if site.trace else None
                 if macro != macros[0] or called is None or called.macro.rpartition(".")[2] != site.scan.macros[macro].name.removeprefix("xacro:"):
                     continue  # (the call that gives it is not known)
-                call_scan = self.scans.get(_absolute(called.file))
-                element = _index(call_scan.source, call_scan.source.offset(called.line, called.column)) if call_scan and called.line and called.column else None
-                if element is None:
+                try:
+                    call_site = self._call_site(site, what)
+                except Unplaceable:
                     continue
-                call_site = _Site(called.file, call_scan.source, call_scan, element, call_scan.source.spans[element][0], site.trace[1:], ())
                 passed = self._written(call_site, name)
                 if passed is not None:
                     self._given_by_arguments(call_site, passed, what, depth + 1)
@@ -314,20 +313,26 @@ class Placer:
             # a macro body that reads a name it does not define reads its caller's: this one's too, maybe
             raise Unplaceable(f"the value is parameter '{name}' of macro '{macro_name}', which another macro's body may read too")
         call = site.trace[0]
-        call_scan = self.scans.get(_absolute(call.file))
-        if call_scan is None or not call.line or not call.column:
-            raise Unplaceable(f"the value is parameter '{name}' of macro '{macro_name}', called where urdfcli cannot edit")
-        element = _index(call_scan.source, call_scan.source.offset(call.line, call.column))
-        if element is None:
-            raise Unplaceable(f"the call of macro '{macro_name}' at {call.file}:{call.line} cannot be read")
-        start = call_scan.source.spans[element][0]
-        call_site = _Site(call.file, call_scan.source, call_scan, element, start, site.trace[1:], ())
+        call_site = self._call_site(site, f"the value is parameter '{name}' of macro '{macro_name}'")
+        call_scan, start = call_site.scan, call_site.start
         if call_scan.source.attribute(start, name) is None:
             raise Unplaceable(f"the value is the default of parameter '{name}' of macro '{macro_name}' ({self.where(site, at)}), which the call at {call.file}:{call.line} leaves")
         affected = set()
         for read in self._reads(scan, name, lambda expression: scan.within(expression.macro, macro), f"parameter '{name}' of macro '{macro_name}'"):
             affected.update((i, read[1]) for i in self.instances(scan.name, read[0], (call,)))
         return self._attribute(call_site, name, old, new, frozenset(affected))
+
+    def _call_site(self, site: _Site, what: str) -> _Site:
+        """The innermost macro call that made ``site``'s element, as a site of its own; raises
+        Unplaceable (``what``: the value the reason is about)."""
+        call = site.trace[0]
+        call_scan = self.scans.get(_absolute(call.file))
+        if call_scan is None or not call.line or not call.column:
+            raise Unplaceable(f"{what}, called where urdfcli cannot edit")
+        element = _index(call_scan.source, call_scan.source.offset(call.line, call.column))
+        if element is None:
+            raise Unplaceable(f"the call of macro '{call.macro.rpartition('.')[2]}' at {call.file}:{call.line} cannot be read")
+        return _Site(call.file, call_scan.source, call_scan, element, call_scan.source.spans[element][0], site.trace[1:], ())
 
     def _property(self, site: _Site, at: int, name: str, macros: list[int], old: str, new: str) -> list[Spot]:
         definitions = [

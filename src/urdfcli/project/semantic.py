@@ -183,7 +183,7 @@ def _why(found: Loaded) -> str:
     error = next((d for d in found.diagnostics if d.severity is Severity.ERROR or d.code.startswith("X")), None)
     if error is not None:
         return error.message
-    if found.modelled and not found.robot.links:
+    if _library(found):
         return "it expands to no link (a library of macros?)"
     return "it describes another robot" if found.modelled else "it holds no robot"
 

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 from ..read.memo import once
 from ..model import massprops
+from ..model.inertia import implied
 from ..model.kinematics import bodies, body_mass, link_mass, subtree_masses, walk
 from ..model.numbers import format_number
 from .base import ERROR, UNSAFE, WARNING, Kind, Remedy, check
@@ -57,8 +58,6 @@ def point_in_body(loaded, link) -> bool:
     missing. That is lost beside the body's when the link carries a small share of the mass
     (:data:`POINT_SHARE`) and a uniform body filling its shapes, where it has measurable
     ones, would add under :data:`MATERIAL` to the rest's largest moment."""
-    from ..model.inertia import implied  # (the geometry: only for such links)
-
     own = link_mass(loaded.robot, link.name)
     body = bodies(loaded)[link.name]
     total = body_mass(loaded, body)
