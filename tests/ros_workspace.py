@@ -272,3 +272,34 @@ def make_ros_workspace(root: Path) -> Path:
             assert text is not None, f"{source}: {diagnostics}"
             (src / name).write_text(text)
     return src
+
+
+def moveit_repository(root):
+    """A repository as vendors write it: a description package whose model calls an arm
+    macro from a library, and a MoveIt config package beside it whose SRDF names the arm's
+    links and joints."""
+    (root / ".git").mkdir(parents=True)
+    description, config = root / "cell_description", root / "cell_moveit_config"
+    (description / "urdf").mkdir(parents=True)
+    (config / "config").mkdir(parents=True)
+    for package, depends in ((description, ""), (config, "<exec_depend>cell_description</exec_depend>")):
+        (package / "package.xml").write_text(f'<package format="3"><name>{package.name}</name>{depends}</package>\n')
+    (description / "urdf" / "arm.xacro").write_text(
+        '<robot xmlns:xacro="http://www.ros.org/wiki/xacro">\n'
+        '  <xacro:macro name="arm" params="prefix">\n'
+        '    <link name="${prefix}base"/>\n    <link name="${prefix}tip"/>\n'
+        '    <joint name="${prefix}elbow" type="revolute"><parent link="${prefix}base"/><child link="${prefix}tip"/>'
+        '<limit lower="-1" upper="1" effort="1" velocity="1"/></joint>\n'
+        '  </xacro:macro>\n</robot>\n'
+    )
+    (description / "urdf" / "cell.urdf.xacro").write_text(
+        '<robot name="cell" xmlns:xacro="http://www.ros.org/wiki/xacro">\n'
+        '  <xacro:include filename="$(find cell_description)/urdf/arm.xacro"/>\n  <xacro:arm prefix="arm_"/>\n</robot>\n'
+    )
+    (config / "config" / "cell.srdf").write_text(
+        '<robot name="cell">\n  <group name="arm"><chain base_link="arm_base" tip_link="arm_tip"/></group>\n'
+        '  <group_state name="home" group="arm"><joint name="arm_elbow" value="0"/></group_state>\n</robot>\n'
+    )
+    (root / "other_moveit_config" / "config").mkdir(parents=True)
+    (root / "other_moveit_config" / "config" / "other.srdf").write_text('<robot name="other">\n  <group name="g"><link name="x"/></group>\n</robot>\n')
+

@@ -12,7 +12,7 @@ import pytest
 import yaml
 from conftest import ROOT, require_tool
 from generated_repos import generate, kuka_package
-from ros_workspace import edit, line_of, make_repository
+from ros_workspace import edit, line_of, make_repository, moveit_repository
 
 from urdfcli.project.drift import regenerated
 
@@ -27,8 +27,9 @@ FLAGGED = (  # warnings only: lint fails, check passes
 def test_hooks_are_declared_as_documented():
     by_id = {hook["id"]: hook for hook in HOOKS}
     assert set(by_id) == {"urdfcli-check", "urdfcli-lint", "urdfcli-drift", "urdfcli-fix"}
-    assert by_id["urdfcli-check"]["entry"] == "urdfcli check"
-    assert by_id["urdfcli-lint"]["entry"] == "urdfcli lint"
+    # a changed model has the SRDFs of its robot checked too
+    assert by_id["urdfcli-check"]["entry"] == "urdfcli check --srdfs"
+    assert by_id["urdfcli-lint"]["entry"] == "urdfcli lint --srdfs"
     assert by_id["urdfcli-drift"]["entry"] == "urdfcli drift"
     # the safe fixes; fails when it changed a file, whatever remains (the lint hook judges that)
     assert by_id["urdfcli-fix"]["entry"] == "urdfcli lint --fix --exit-zero --exit-non-zero-on-fix"
@@ -273,3 +274,23 @@ def test_drift_hook_fails_a_commit_whose_xacro_leaves_the_generated_urdf_behind(
     (repo / "README.md").write_text("# KUKA KR 16-2\n")
     code, out = commit("readme", "README.md")
     assert code == 0 and re.search(r"urdfcli drift\.+\(no files to check\)Skipped", out), out
+
+
+def test_a_commit_renaming_a_joint_its_moveit_config_still_names_fails(tmp_path, hooks):
+    """The check hook on a commit of the arm's macro library alone: the joint it renames is
+    still named by the MoveIt config's SRDF, which the commit leaves as it was; the commit
+    fails there, and passes once the SRDF is changed with it."""
+    repo = tmp_path / "cell"
+    moveit_repository(repo)
+    commit = installed(repo, hooks, "urdfcli-check")
+    code, out = commit("the cell and its MoveIt config")
+    assert code == 0, out
+
+    edit(repo / "cell_description/urdf/arm.xacro", 'name="${prefix}elbow"', 'name="${prefix}joint_2"')
+    code, out = commit("the elbow is joint 2", "cell_description/urdf/arm.xacro")
+    assert code == 1, out
+    assert "cell_moveit_config/config/cell.srdf:3:47: K002 error: group state 'home' names joint 'arm_elbow'" in out
+
+    edit(repo / "cell_moveit_config/config/cell.srdf", 'name="arm_elbow"', 'name="arm_joint_2"')
+    code, out = commit("the elbow is joint 2, in the MoveIt config too")
+    assert code == 0, out

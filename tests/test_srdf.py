@@ -10,7 +10,7 @@ import shutil
 
 import pytest
 from conftest import run_cli
-from ros_workspace import edit, line_of, make_ros_workspace
+from ros_workspace import edit, line_of, make_ros_workspace, moveit_repository
 
 PANDA = "src/panda_moveit_config/config"
 
@@ -437,3 +437,43 @@ def test_a_library_named_as_the_robot_is_no_urdf_that_could_not_be_read(tmp_path
     done, document = check("arm.srdf", cwd=tmp_path)
     [k008] = document["files"][0]["diagnostics"]
     assert k008["code"] == "K008" and "arm_macro.xacro" not in k008["message"], k008
+
+
+
+def test_srdfs_option_checks_the_srdfs_of_the_robot_a_changed_library_builds(tmp_path):
+    """The arm's joint renamed in its macro library breaks the MoveIt config's SRDF, which
+    still names it: with --srdfs (as the pre-commit hooks run), checking the library (or the
+    model) checks it through its model and the SRDF of robot 'cell' too, not another robot's;
+    without it, only the model, which is fine on its own."""
+    moveit_repository(tmp_path / "cell")
+    library = "cell/cell_description/urdf/arm.xacro"
+    edit(tmp_path / library, 'name="${prefix}elbow"', 'name="${prefix}joint_2"')
+    done, document = check(library, cwd=tmp_path)
+    assert (done.returncode, [f["path"] for f in document["files"]], found(document)) == (0, [library], [])
+    for given in (library, "cell/cell_description/urdf/cell.urdf.xacro"):
+        done, document = check("--srdfs", given, cwd=tmp_path)
+        assert done.returncode == 1
+        assert [f["path"] for f in document["files"]][1:] == ["cell/cell_moveit_config/config/cell.srdf"]
+        assert [(code, path, line) for code, path, line, _ in found(document)] == [("K002", "cell/cell_moveit_config/config/cell.srdf", 3)]
+
+
+def test_srdfs_option_adds_an_srdf_given_already_once(tmp_path):
+    moveit_repository(tmp_path / "cell")
+    model, srdf = "cell/cell_description/urdf/cell.urdf.xacro", "cell/cell_moveit_config/config/cell.srdf"
+    for given in ([model, srdf], [srdf, model]):
+        done, document = check("--srdfs", *given, cwd=tmp_path)
+        assert done.returncode == 0, done.stderr.decode()
+        assert sorted(f["path"] for f in document["files"]) == [model, srdf]
+
+
+def test_srdfs_option_finds_an_srdf_naming_its_robot_with_an_argument_in_another_repository(workspace):
+    """UR's ur.srdf.xacro (robot $(arg name), in ur_moveit_config of another repository of
+    the workspace) is added for ur.urdf.xacro, whose robot is named by the same argument."""
+    (workspace / "urdfcli.toml").write_text(
+        '[models]\n"src/Universal_Robots_ROS2_Description/ur_description/urdf/ur.urdf.xacro" = [["name:=ur", "ur_type:=ur5e"]]\n'
+        '"src/Universal_Robots_ROS2_Driver/ur_moveit_config/srdf/ur.srdf.xacro" = [["name:=ur"]]\n'
+    )
+    model, srdf = "src/Universal_Robots_ROS2_Description/ur_description/urdf/ur.urdf.xacro", "src/Universal_Robots_ROS2_Driver/ur_moveit_config/srdf/ur.srdf.xacro"
+    done, document = check("--srdfs", model, cwd=workspace)
+    assert done.returncode == 0, done.stderr.decode()
+    assert [f["path"] for f in document["files"]] == [model, srdf]

@@ -28,12 +28,13 @@ from .model import massprops
 from .model.load import Loaded, load
 from .model.meshes import mesh_files
 from .model.result import Result, Unreadable
+from .model.srdf import named_srdf
 from .model.units import unit_verdict
 from .project import drift as drift_
 from .project import fixing, linter
 from .project.compatibility import verdicts
 from .project.config import Config, ConfigError
-from .project.semantic import described
+from .project.semantic import described, describing
 from .project.workspace import LIBRARY_SUFFIXES, Aside, Entry, Models, Target, assemble, fragment_includers, model_targets, models_below, plan, search_roots, unchecked_library, unread, xacro_sources
 from .read.document import STDIN, Document, InputError, read_document
 from .read.files import STDIN_NAME
@@ -159,6 +160,8 @@ def run(paths: list[str], session: Session, progress: Progress | None = None, as
             entries = plan(paths, config_for, session.package_paths, session.packages, session.files)
         else:
             entries = [Entry(path, model_targets(path, config_for(path).argument_sets(path))) for path in paths]
+        if session.options.srdfs:
+            entries += _semantic_entries(entries, session, config_for)
     except PackageError as error:
         raise UsageError(str(error)) from None
     targets = list(dict.fromkeys(t for entry in entries for t in entry.targets))
@@ -181,6 +184,15 @@ def run(paths: list[str], session: Session, progress: Progress | None = None, as
     if session.options.load:
         results = [loaded_into_targets(result, session) for result in results]
     return Run(results, unreadable, tuple(r for r in done.values() if isinstance(r, Result) and r.loaded is not None))
+
+
+def _semantic_entries(entries: list[Entry], session: Session, config_for) -> list[Entry]:
+    """The SRDFs that describe the robots of the models to check and are not among them (``srdfs``)."""
+    given = {Path(entry.path).resolve() for entry in entries if entry.path != STDIN}
+    models = [(Path(t.path).resolve(), {**model_arguments(t.path, session), **dict(t.arguments)})
+              for entry in entries for t in entry.targets if t.path != STDIN and not named_srdf(t.path) and not t.alone]
+    found = [shown(file) for file in describing(models, session.index, lambda file: model_arguments(str(file), session)) if file not in given]
+    return [Entry(path, model_targets(path, config_for(path).argument_sets(path))) for path in found]
 
 
 def _generated_from(path: str) -> Path | None:

@@ -58,7 +58,8 @@ class Options:
     ``extend_select`` add to it; ``config`` is a configuration file to use instead
     of the nearest one above each input (or a :class:`Config` itself), and
     ``isolated`` reads none. With ``libraries``, a xacro library is checked through
-    the models that include it. ``jobs`` other than 1 checks models in that many
+    the models that include it; with ``srdfs``, the MoveIt SRDFs that describe the robot
+    of a model given (or of one including a library given) are checked too. ``jobs`` other than 1 checks models in that many
     processes (0: one per CPU). ``audit`` asks for the mass-property audit, ``load``
     for a load of each model into its targets' own packages (``check --load``).
     ``format`` names the reporter of the command line. ``fix`` and ``unsafe_fixes``
@@ -76,6 +77,7 @@ class Options:
     extend_select: tuple[str, ...] = ()
     targets: tuple[Profile, ...] = ()
     libraries: bool = True
+    srdfs: bool = False  # and the SRDFs of the models' robots (see :func:`urdfcli.project.semantic.describing`)
     jobs: int = 1
     audit: AuditOptions | None = None
     load: bool = False

@@ -19,6 +19,7 @@ from .common import (
     InputsArgument,
     IsolatedOption,
     QuietOption,
+    SrdfsOption,
     PackagePathOption,
     NoInfoOption,
     StatisticsOption,
@@ -47,6 +48,7 @@ def check(
     load: Annotated[bool, typer.Option("--load", help="Also load each model into the --target consumers' own Python packages (mujoco, pydrake, pinocchio, pybullet) and report what they say.")] = False,
     package_path: PackagePathOption = None,
     urdf: UrdfOption = None,
+    srdfs: SrdfsOption = False,
     config: ConfigOption = None,
     isolated: IsolatedOption = False,
     fix: FixOption = None,
@@ -73,7 +75,7 @@ def check(
     asked = fixes.Fixing(fix, unsafe_fixes, diff, False)
     options = Options(
         RuleSet.CHECK, tuple(mappings.items()), tuple(package_path or ()), config, isolated, targets=tuple(target or ()),
-        load=load, format=choose(output_format, FORMATS), fix=asked.applies, unsafe_fixes=unsafe_fixes, urdf=urdf,
+        load=load, format=choose(output_format, FORMATS), fix=asked.applies, unsafe_fixes=unsafe_fixes, urdf=urdf, srdfs=srdfs,
         show_info=None if no_info is None else not no_info,
     )
     output = Output.standard(color, quiet)

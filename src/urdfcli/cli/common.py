@@ -76,6 +76,15 @@ UrdfOption = Annotated[
         show_default=False,
     ),
 ]
+SrdfsOption = Annotated[
+    bool,
+    typer.Option(
+        "--srdfs",
+        help="Also check the MoveIt SRDFs (.srdf, .srdf.xacro) of the repository or workspace that describe the robot of a model given, "
+        "or of a model including a library given: a link or joint renamed in the model is caught where a planning group or collision pair "
+        "still names it (the pre-commit hooks pass it).",
+    ),
+]
 NoInfoOption = Annotated[
     bool | None,
     typer.Option(

@@ -19,6 +19,7 @@ from .common import (
     Exit,
     IsolatedOption,
     QuietOption,
+    SrdfsOption,
     PackagePathOption,
     NoInfoOption,
     StatisticsOption,
@@ -57,6 +58,7 @@ def lint(
     jobs: Annotated[int, typer.Option("--jobs", "-j", min=0, metavar="N", help="Lint files in N processes (0: one per CPU); the output order does not change.")] = 1,
     package_path: PackagePathOption = None,
     urdf: UrdfOption = None,
+    srdfs: SrdfsOption = False,
     fix: FixOption = None,
     unsafe_fixes: UnsafeFixesOption = None,
     diff: DiffOption = False,
@@ -83,7 +85,7 @@ def lint(
     options = Options(
         RuleSet.LINT, tuple(mappings.items()), tuple(package_path or ()), config, isolated, tuple(select or ()), tuple(ignore or ()),
         tuple(extend_select or ()), tuple(target or ()), jobs=jobs, format=choose(output_format, FORMATS), fix=asked.applies, unsafe_fixes=unsafe_fixes,
-        urdf=urdf, show_info=None if no_info is None else not no_info,
+        urdf=urdf, srdfs=srdfs, show_info=None if no_info is None else not no_info,
     )
     output = Output.standard(color, quiet)
     with session_for(options) as session:

@@ -46,20 +46,44 @@ TRIES = 4  # candidates loaded at most, when the first ones turn out not to be t
 def robot_name(file: Path, index: Index, arguments: dict[str, str]) -> str | None:
     """The robot name a URDF or xacro file gives as written, substitutions resolved
     where they can be; None for an SRDF, a file without one, or a name that stays computed."""
+    name, semantic = _written_name(file, index, arguments)
+    return None if semantic else name
+
+
+def _written_name(file: Path, index: Index, arguments: dict[str, str]) -> tuple[str | None, bool]:
+    """The robot name a file gives as written (None: none, or one that stays computed), and whether the file is an SRDF
+    (or an SRDF's macros)."""
     try:
         with open(file, "rb") as stream:
             text = stream.read(HEAD).decode("utf-8", "replace")
     except OSError:
-        return None
-    if _SRDF_MARK.search(text) and "<link" not in text:
-        return None  # an SRDF, or an SRDF's macros
+        return None, False
+    semantic = bool(_SRDF_MARK.search(text)) and "<link" not in text
     found = _ROBOT_TAG.search(text)
     if found is None:
-        return None
+        return None, semantic
     name = found.group(2)
     if "$" in name:
         name = substitute(name, index.source(file), index.finder(file), arguments)
-    return name if "$" not in name else None
+    return (name if "$" not in name else None), semantic
+
+
+def describing(models: list[tuple[Path, dict[str, str]]], index: Index, arguments_for: Callable[[Path], dict[str, str]]) -> list[Path]:
+    """The SRDFs of the repository or workspace around each model (with its xacro arguments)
+    that describe its robot: named for it, or named as the model's file (``panda.srdf`` for
+    ``panda.urdf.xacro``). A change to a model can break them: a link renamed that a
+    planning group or a collision pair still names."""
+    found: dict[Path, None] = {}
+    for model, arguments in models:
+        name = robot_name(model, index, arguments)
+        roots, recursive = search_roots(model, index.packages)
+        for file in (f.resolve() for f in index.scan(roots, recursive) if named_srdf(f.name)):
+            if file in found:
+                continue
+            written, _ = _written_name(file, index, arguments_for(file))  # (an SRDF by its file name: ur.srdf.xacro only calls macros)
+            if (name is not None and written == name) or _stem(file) == _stem(model):
+                found[file] = None
+    return list(found)
 
 
 def candidates(srdf: Path, index: Index, arguments_for: Callable[[Path], dict[str, str]]) -> Iterator[tuple[Path, bool]]:
@@ -204,4 +228,4 @@ def _without(loaded: Loaded, message: str, severity: Severity | None = None, hin
     return diagnostic._replace(severity=severity) if severity is not None else diagnostic
 
 
-__all__ = ["candidates", "described", "robot_name"]
+__all__ = ["candidates", "described", "describing", "robot_name"]
