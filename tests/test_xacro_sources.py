@@ -781,6 +781,31 @@ def test_a_macro_called_without_the_prefix_is_a_warning_at_the_call_not_a_macro_
     assert found(model, codes=("X107", "X104")) == []
 
 
+def test_an_unprefixed_insert_block_inside_a_joint_is_one_x107_at_the_tag_not_an_x103_on_the_macro(tmp_path):
+    """Hey5's palm: <joint><insert_block name="origin"/></joint> in a macro's body. xacro 2
+    copies the tag unread and the call's pose is lost. The mistake is the missing prefix,
+    at the tag (X107, whose fix makes xacro insert the block); X103 'never inserted' on
+    the macro's *origin would say the same thing again, at the wrong place."""
+    model = write(tmp_path / "robot.urdf.xacro", robot("""
+        <xacro:macro name="palm" params="name parent *origin">
+          <joint name="${name}_joint" type="fixed">
+            <parent link="${parent}"/>
+            <child link="${name}_link"/>
+            <insert_block name="origin"/>
+          </joint>
+          <link name="${name}_link"/>
+        </xacro:macro>
+        <link name="base_link"/>
+        <xacro:palm name="palm" parent="base_link"><origin xyz="0 0.13 0"/></xacro:palm>
+        """))
+    real = subprocess.run([require_tool("xacro"), str(model)], capture_output=True, text=True, cwd=tmp_path)
+    assert real.returncode == 0 and '<insert_block name="origin"/>' in real.stdout and "0.13" not in real.stdout
+    assert found(model, codes=("X103", "X107")) == [("X107", "robot.urdf.xacro", *column_of(model, "<insert_block"))]
+    run_cli("lint", "--fix", "--unsafe-fixes", "--isolated", str(model))
+    assert '<xacro:insert_block name="origin"/>' in model.read_text()
+    assert found(model, codes=("X103", "X107")) == []
+
+
 def test_xacros_deprecation_is_located_at_the_call_with_its_fix(tmp_path):
     write(tmp_path / "c.yaml", "a: 1\n")
     model = write(tmp_path / "robot.urdf.xacro", robot("""

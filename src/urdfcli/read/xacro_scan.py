@@ -310,7 +310,7 @@ class _Scanner:
             else:
                 self.attributes(element, at, macro)
             return macro
-        if element.prefix is None and local in OLD_DIRECTIVES and element.get(OLD_DIRECTIVES[local]) is not None and _directive_place(element):
+        if element.prefix is None and local in OLD_DIRECTIVES and element.get(OLD_DIRECTIVES[local]) is not None and _directive_place(element, local, macro):
             found.old.append(Old(local, Place(at), element.get(OLD_DIRECTIVES[local])))
         if macro is not None and local in NAMED and element.get("name") is not None and _in_body(element):
             found.made.append(Made(local, element.get("name"), Place(at, "name"), macro, _conditions(element)))
@@ -368,10 +368,14 @@ def _plain_attributes(element) -> tuple[tuple[str, str], ...]:
     return tuple((key, value) for key, value in element.attrib.items() if not key.startswith("{"))
 
 
-def _directive_place(element) -> bool:
+def _directive_place(element, local: str, macro: int | None) -> bool:
     """Whether an unprefixed element sits where xacro 1 read it as its own: at the top
-    level, or in a xacro element's body (not inside a link, a joint or a plugin)."""
+    level, or in a xacro element's body (not inside a link, a joint or a plugin, where
+    an <include> or a <property> may be someone else's); an <insert_block> anywhere in
+    a macro's body (Hey5's <joint><insert_block name="origin"/></joint>): it is no one else's."""
     parent = element.getparent()
+    if local == "insert_block" and macro is not None:
+        return True
     return parent is not None and (parent.getparent() is None or is_xacro(parent))
 
 

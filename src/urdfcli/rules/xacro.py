@@ -155,7 +155,9 @@ def parameter_unused(loaded, given) -> Iterator[Diagnostic]:
     whichever is included), or, where the workspace calls a macro by a
     computed name (`<xacro:call macro="${platform}"/>`), a macro with the
     same parameter list. The parameter is their shared interface: removing it
-    would break the caller, and nothing is wrong with this macro.
+    would break the caller, and nothing is wrong with this macro. A block the
+    body inserts with `<insert_block>` written without `xacro:` (which xacro 2
+    copies unread) is left to X107, which says so once, at that tag.
 
     ## Why is this bad?
     Every call passes a value that changes nothing: an `xyz` meant for the
@@ -195,12 +197,15 @@ def parameter_unused(loaded, given) -> Iterator[Diagnostic]:
     """
     sources = loaded.xacro_sources
     for file in sources.files:
+        unprefixed = _unprefixed_blocks(file)
         for macro, definition in enumerate(file.macros):
             used, shape = used_parameters(file, macro), interface(file, macro)
             for parameter in parameters(file, macro):
                 name = parameter.name
                 if parameter.shown in used or _used(sources, lambda f: _used_elsewhere(f, parameter, definition.name, shape)):
                     continue
+                if parameter.block and (macro, name) in unprefixed:
+                    continue  # an <insert_block> without xacro: names it: X107's to report, once, at that tag
                 if parameter.block:
                     message = f"block parameter '*{name}' of macro '{definition.name}' is never inserted: the block each call gives is dropped"
                     hint = f'insert it with <xacro:insert_block name="{name}"/>, or remove *{name} from params'
@@ -208,6 +213,17 @@ def parameter_unused(loaded, given) -> Iterator[Diagnostic]:
                     message = f"parameter '{name}' of macro '{definition.name}' is never used in its body: the value each call gives changes nothing"
                     hint = f"use it as ${{{name}}}, or remove it from params"
                 yield _diagnostic("X103", message, file, parameter_place(file, macro, name), hint)
+
+
+def _unprefixed_blocks(file: XacroFile) -> set[tuple[int, str]]:
+    """The (macro, block name) of each ``<insert_block>`` written without ``xacro:``
+    in a macro's body (nested macros' bodies count for the macros around them)."""
+    spans = file.source.spans
+    return {
+        (macro, old.value)
+        for old in file.old if old.tag == "insert_block" and old.place.element < len(spans)
+        for macro in file.macros_at(spans[old.place.element][0])
+    }
 
 
 @check("X104", "macro-unused", INFO, "A macro that nothing calls.", kind=Kind.SOURCES, rule_set=RuleSet.LINT)
