@@ -477,3 +477,47 @@ def test_srdfs_option_finds_an_srdf_naming_its_robot_with_an_argument_in_another
     done, document = check("--srdfs", model, cwd=workspace)
     assert done.returncode == 0, done.stderr.decode()
     assert [f["path"] for f in document["files"]] == [model, srdf]
+
+
+def _setup_assistant_workspace(root, xacro_args: str):
+    """Built as ros2_kortex: robots/gen3.xacro includes arms/gen3/${dof}dof/arm.xacro, dof defaults
+    to "" (no file), and kinova_gen3_7dof_moveit_config's .setup_assistant names gen3.xacro with
+    the arguments that choose the arm: the URDF moveit_configs_utils builds for the SRDF."""
+    src = root / "src"
+    robot, config = src / "kortex_description", src / "kinova_gen3_7dof_moveit_config"
+    (robot / "robots").mkdir(parents=True)
+    (robot / "arms" / "gen3" / "7dof").mkdir(parents=True)
+    (config / "config").mkdir(parents=True)
+    (robot / "package.xml").write_text('<package format="3"><name>kortex_description</name></package>\n')
+    (config / "package.xml").write_text('<package format="3"><name>kinova_gen3_7dof_moveit_config</name>'
+                                        "<exec_depend>kortex_description</exec_depend></package>\n")
+    (robot / "robots" / "gen3.xacro").write_text(
+        '<robot name="gen3" xmlns:xacro="http://ros.org/wiki/xacro">\n  <xacro:arg name="dof" default=""/>\n'
+        '  <xacro:arg name="tool" default="false"/>\n'
+        '  <xacro:include filename="$(find kortex_description)/arms/gen3/$(arg dof)dof/arm.xacro"/>\n</robot>\n')
+    (robot / "arms" / "gen3" / "7dof" / "arm.xacro").write_text(
+        '<robot xmlns:xacro="http://ros.org/wiki/xacro">\n  <link name="base_link"/><link name="bracelet_link"/>\n'
+        '  <joint name="joint_7" type="continuous"><parent link="base_link"/><child link="bracelet_link"/></joint>\n'
+        '  <xacro:if value="$(arg tool)"><link name="tool_link"/>'
+        '<joint name="tool_joint" type="fixed"><parent link="bracelet_link"/><child link="tool_link"/></joint></xacro:if>\n'
+        '</robot>\n')
+    (config / ".setup_assistant").write_text(
+        "moveit_setup_assistant_config:\n  urdf:\n    package: kortex_description\n    relative_path: robots/gen3.xacro\n"
+        f"    xacro_args:\n      {xacro_args}\n  srdf:\n    relative_path: config/gen3.srdf\n")
+    (config / "config" / "gen3.srdf").write_text(
+        '<robot name="gen3">\n  <group name="arm"><chain base_link="base_link" tip_link="tool_link"/></group>\n</robot>\n')
+    return "src/kinova_gen3_7dof_moveit_config/config/gen3.srdf"
+
+
+def test_the_urdf_and_xacro_arguments_a_setup_assistant_file_names_are_the_srdfs(tmp_path):
+    """The SRDF is checked against the URDF its .setup_assistant names, expanded with its
+    xacro_args (a folded scalar over two lines), not left unchecked because the model needs
+    an argument; an argument it does not give leaves that part out, and the SRDF's name of
+    a link only that part has is then an error."""
+    srdf = _setup_assistant_workspace(tmp_path, "dof:=7\n      tool:=true")
+    done, document = check(srdf, cwd=tmp_path)
+    assert done.returncode == 0 and found(document) == [], document
+    assert document["files"][0]["checked_against"] == "src/kortex_description/robots/gen3.xacro"
+    srdf = _setup_assistant_workspace(tmp_path / "without_tool", "dof:=7")
+    done, document = check(srdf, cwd=tmp_path / "without_tool")
+    assert done.returncode == 1 and [d["code"] for d in document["files"][0]["diagnostics"]] == ["K001"], document

@@ -324,6 +324,43 @@ def test_an_include_of_a_layout_only_the_build_makes_says_where_the_sources_have
     assert [(d["code"], d.get("hint")) for d in report["files"][0]["diagnostics"]] == [("X003", None)]
 
 
+def test_an_include_a_substitution_left_empty_says_which_not_that_the_build_moves_files(tmp_path):
+    """ros2_kortex's gen3.xacro: dof defaults to "", so kortex_robot.xacro's
+    $(find kortex_description)/arms/${arm}/${dof}dof/urdf/... reads arms/gen3/dof/urdf/...,
+    which is no file; the sources have arms/gen3/7dof/urdf/..., but no build moves it there.
+    The hint names the empty substitution and the argument to give, as xacro fails the same way."""
+    from differential import real_xacro
+
+    package = tmp_path / "ws" / "src" / "kortex" / "kortex_description"
+    write(package / "package.xml", package_xml("kortex_description"))
+    write(package / "arms" / "gen3" / "7dof" / "urdf" / "gen3_macro.xacro", """\
+        <robot xmlns:xacro="http://ros.org/wiki/xacro">
+          <xacro:macro name="load_arm"><link name="base_link"/></xacro:macro>
+        </robot>
+        """)
+    write(package / "robots" / "kortex_robot.xacro", """\
+        <robot xmlns:xacro="http://ros.org/wiki/xacro">
+          <xacro:macro name="load_robot" params="arm dof">
+            <xacro:include filename="$(find kortex_description)/arms/${arm}/${dof}dof/urdf/${arm}_macro.xacro"/>
+            <xacro:load_arm/>
+          </xacro:macro>
+        </robot>
+        """)
+    model = write(package / "robots" / "gen3.xacro", """\
+        <robot name="gen3" xmlns:xacro="http://ros.org/wiki/xacro">
+          <xacro:arg name="dof" default=""/>
+          <xacro:include filename="$(find kortex_description)/robots/kortex_robot.xacro"/>
+          <xacro:load_robot arm="gen3" dof="$(arg dof)"/>
+        </robot>
+        """)
+    assert real_xacro(model, packages={"kortex_description": str(package)}).returncode != 0
+    done, report = check_json(str(model), cwd=tmp_path / "ws")
+    [error] = report["files"][0]["diagnostics"]
+    assert error["message"] == "cannot include src/kortex/kortex_description/arms/gen3/dof/urdf/gen3_macro.xacro: No such file or directory"
+    assert error["hint"] == "${dof} is empty here, which leaves it out of the path: xacro argument 'dof' is empty; pass dof:=VALUE"
+    assert check_json(str(model), "dof:=7", cwd=tmp_path / "ws")[0].returncode == 0
+
+
 def test_a_package_only_installed_in_the_workspace_is_found_there(tmp_path):
     """A package the workspace's install space holds and its src/ does not (built from
     elsewhere): read from the install space, and no source is made up for it."""

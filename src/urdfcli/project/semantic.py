@@ -16,6 +16,12 @@ candidate whatever name it gives (``go2.urdf`` says ``go2_description``,
 ``sia20d.xacro`` ``motoman_sia20d``, and an SRDF copied from another variant
 keeps that variant's name).
 
+A MoveIt 2 config names its URDF itself: the ``.setup_assistant`` file at the top of
+its package gives the robot package, the file's path in it and the xacro arguments
+(``xacro_args: gripper:=robotiq_2f_85 dof:=7``), from which moveit_configs_utils builds
+the ``robot_description`` it pairs with the SRDF the file names. That URDF, with those
+arguments, is tried before any other.
+
 Of the candidates, a few at most are loaded (:data:`TRIES`), and the SRDF is
 checked against the one that lacks the fewest of the link and joint names it
 gives, the nearest first among equals: where several variants share a robot
@@ -31,11 +37,15 @@ import re
 from collections.abc import Callable, Iterator
 from pathlib import Path
 
+import yaml
+
 from ..diagnostics import Diagnostic, Severity
 from ..model.load import Loaded
 from ..model.srdf import SRDF_TAGS, Semantic, named_srdf
 from ..read.xacro_scan import shown
 from .workspace import Index, search_roots, source_files, substitute
+
+SETUP_ASSISTANT = ".setup_assistant"  # MoveIt Setup Assistant's record of a config package's URDF and SRDF
 
 _ROBOT_TAG = re.compile(r"<robot\b[^>]*?\bname\s*=\s*(['\"])(.*?)\1", re.DOTALL)
 _SRDF_MARK = re.compile(r"<(" + "|".join(sorted(SRDF_TAGS)) + r")\b")
@@ -113,6 +123,30 @@ def candidates(srdf: Path, index: Index, arguments_for: Callable[[Path], dict[st
                 yield file, depended
 
 
+def setup_assistant(srdf: Path, index: Index) -> tuple[Path, dict[str, str]] | None:
+    """The URDF, and its xacro arguments, that the ``.setup_assistant`` of the SRDF's
+    package names for it; None when there is none, it names another SRDF, or its robot
+    package cannot be found."""
+    package = index.packages.enclosing_package(srdf.parent)
+    if package is None:
+        return None
+    try:
+        written = yaml.safe_load((package / SETUP_ASSISTANT).read_text(encoding="utf-8"))
+        config = written["moveit_setup_assistant_config"]
+        urdf, named_srdf = config["urdf"], config["srdf"]["relative_path"]
+        robot, relative = urdf["package"], urdf["relative_path"]
+    except (OSError, UnicodeDecodeError, yaml.YAMLError, TypeError, KeyError):
+        return None
+    if not isinstance(named_srdf, str) or (package / named_srdf).resolve() != srdf:
+        return None
+    folder = index.finder(srdf)(str(robot))
+    if folder is None or not isinstance(relative, str):
+        return None
+    # moveit_configs_utils splits xacro_args at white space, each NAME:=VALUE
+    arguments = dict(word.partition(":=")[::2] for word in str(urdf.get("xacro_args") or "").split() if ":=" in word)
+    return (folder / relative).resolve(), arguments
+
+
 def _shared(file: Path, srdf: Path) -> int:
     """How many folders a file shares with the SRDF's path: the more, the nearer."""
     return len(Path(os.path.commonpath([file.parent, srdf.parent])).parts)
@@ -155,6 +189,15 @@ def described(
         return None
     srdf = document.file.resolve()
     fits, failures, beside = [], [], False  # fits: (names the URDF lacks, order, path, model)
+    named_by_config = setup_assistant(srdf, index)
+    if named_by_config is not None:
+        file, given = named_by_config
+        path = shown(file)
+        found = load(path, {**given, **arguments_for(file)})
+        if not isinstance(found, str) and found.modelled and found.robot.links:
+            loaded.described = found
+            return None if found.robot.name == name else _named_otherwise(loaded, f"{path}, which its {SETUP_ASSISTANT} names,", found)
+        failures.append(f"{path}, which its {SETUP_ASSISTANT} names: {found if isinstance(found, str) else _why(found)}")
     for order, (file, depended) in enumerate(candidates(srdf, index, arguments_for)):
         arguments = arguments_for(file)
         named = robot_name(file, index, arguments) == name

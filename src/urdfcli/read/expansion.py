@@ -269,7 +269,7 @@ class _Session:
             data = self.given.get(os.path.abspath(path)) or Path(path).read_bytes()
         except OSError as error:
             failure = xacro.XacroException(f"cannot include {display_path(path)}: {error.strerror}", exc=error)
-            failure.urdfcli_hint = _package_uri_hint(filename) or self.installed_elsewhere(path)
+            failure.urdfcli_hint = _package_uri_hint(filename) or self.empty_in_path(filename) or self.installed_elsewhere(path)
             xacro.filestack.pop()
             raise failure from None
         if not data.lstrip(b"\xef\xbb\xbf \t\r\n").startswith(b"<"):  # never show a line of a non-XML file
@@ -292,6 +292,31 @@ class _Session:
             raise PackageNotFound(package)
         self.found[package] = folder
         return str(folder)
+
+    def empty_in_path(self, filename: str) -> str | None:
+        """For an include whose file name a substitution left out: which one was empty
+        (``arms/${arm}/${dof}dof/...`` with ``dof`` empty reads ``arms/gen3/dof/...``), and,
+        when an argument of that name is empty, to give it; None when none was, or when
+        which one was cannot be told (two substitutions side by side)."""
+        include = self.stack[-1] if self.stack else None
+        written = include.getAttribute("filename") if include is not None else ""
+        pieces = _SUBSTITUTION.split(written)
+        if len(pieces) < 2:
+            return None
+        pattern = "".join(re.escape(piece) if at % 2 == 0 else "(.*?)" for at, piece in enumerate(pieces)) + r"\Z"
+        lazy, greedy = re.search(pattern, filename), re.search(pattern.replace("(.*?)", "(.*)"), filename)
+        if lazy is None or greedy is None:
+            return None
+        empty = [at for at in range(1, lazy.re.groups + 1) if lazy.group(at) == "" and greedy.group(at) == ""]
+        if not empty:
+            return None
+        token = pieces[2 * empty[0] - 1]
+        name = _SUBSTITUTION_NAME.fullmatch(token)
+        arguments = xacro.substitution_args_context.get("arg") or {}
+        if name is not None and arguments.get(name.group(1) or name.group(2)) == "":
+            argument = name.group(1) or name.group(2)
+            return f"{token} is empty here, which leaves it out of the path: xacro argument '{argument}' is empty; pass {argument}:=VALUE"
+        return f"{token} is empty here, which leaves it out of the path: give it a value"
 
     def installed_elsewhere(self, path: str) -> str | None:
         """For ``$(find NAME)/x/file`` that the sources of NAME, in the input's repository or
@@ -387,6 +412,10 @@ def _missing_package(error: BaseException | None) -> PackageNotFound | None:
             return error
         error = getattr(error, "exc", None) or error.__cause__ or error.__context__
     return None
+
+
+_SUBSTITUTION = re.compile(r"(\$\{[^}]*\}|\$\([^)]*\))")  # ${expression} or $(command ...), as xacro writes them in text
+_SUBSTITUTION_NAME = re.compile(r"\$\{\s*(\w+)\s*\}|\$\(arg\s+(\w+)\s*\)")  # ${name} or $(arg name)
 
 
 def _package_uri_hint(filename: str) -> str | None:
