@@ -206,6 +206,19 @@ def test_drift_fails_for_a_urdf_it_could_not_compare(tmp_path):
     assert (done.returncode, "X110" in done.stdout.decode()) == (0, False), done.stdout.decode()
 
 
+def test_a_source_listed_in_models_is_compared_with_its_first_argument_set(tmp_path):
+    """A UR + gripper cell names its model's arguments (the YAML files ur_control.launch.py
+    passes) in [models], as the README says of models that need arguments: drift said its
+    source "does not expand", as if none were given, where expand reads it with them."""
+    package = kuka_package(tmp_path, generated_with_flange=True)
+    edit(package / "urdf" / "kr16_2.xacro", '<xacro:kuka_kr16_2 prefix=""/>', '<xacro:kuka_kr16_2 prefix="$(arg prefix)"/>')
+    (package / "urdfcli.toml").write_text('[models]\n"urdf/kr16_2.xacro" = [["prefix:="], ["prefix:=left_"]]\n')
+    done = run_cli("drift", cwd=package)
+    assert (done.returncode, "X110" in done.stdout.decode()) == (0, False), done.stdout.decode()
+    done = run_cli("lint", "--format", "concise", "--select", "X110", "urdf/kr16_2.urdf", cwd=package)
+    assert (done.returncode, done.stdout.decode()) == (0, ""), done.stdout.decode()
+
+
 def test_no_generated_urdf_no_diagnostic(tmp_path):
     (tmp_path / "robot.urdf").write_text('<robot name="r"><link name="base_link"/></robot>\n')
     assert x110(lint_file(tmp_path / "robot.urdf")) == []

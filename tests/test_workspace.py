@@ -247,6 +247,29 @@ def test_a_colcon_workspace_resolves_packages_across_repositories(tmp_path):
     assert done.returncode == 0 and report["files"][0]["checked_through"] == [str(model.relative_to(tmp_path))]
 
 
+def test_a_workspace_kept_as_a_repository_finds_the_packages_of_the_workspace_it_is_cloned_into(tmp_path):
+    # A cell whose repository is a workspace of its own (cell/src/cell_description), cloned
+    # beside the vendor's repository: colcon builds both, so $(find acme_wheels) resolves.
+    _, repo_b = make_colcon_workspace(tmp_path)
+    cell = repo_b.parent / "cell"
+    (cell / ".git").mkdir(parents=True)
+    description = cell / "src" / "cell_description"
+    write(description / "package.xml", package_xml("cell_description"))
+    model = write(
+        description / "urdf" / "cell.urdf.xacro",
+        f"""\
+        <robot name="cell" {XACRO}>
+          <xacro:include filename="$(find acme_wheels)/urdf/wheel.xacro"/>
+          <link name="base_link"/>
+          <xacro:wheel prefix="left" parent="base_link" radius="0.1"><origin xyz="0 0 0"/></xacro:wheel>
+        </robot>
+        """,
+    )
+    assert PackageResolver((), model).find("acme_wheels") == repo_b / "wheels"
+    done = run_cli("check", str(model), cwd=tmp_path)
+    assert done.returncode == 0, done.stderr.decode()
+
+
 # A caster macro kept in description/urdf, which the package installs to share/acme_wheels/urdf
 # (as ros2_control_demos installs description/ros2_control): its joint's yaw is in degrees (V009).
 CASTER = f"""\

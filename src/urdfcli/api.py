@@ -325,7 +325,7 @@ def model_arguments(path: str, session: Session) -> dict[str, str]:
     models`` lists for it, and those of the command line over both (``check panda.srdf
     --urdf panda_arm.urdf.xacro hand:=true``). Raises UsageError for a broken configuration."""
     config = configured(session)(path)
-    return {**config.mappings_for(path), **((config.argument_sets(path) or [{}])[0]), **session.options.mappings}
+    return {**config.model_mappings(path), **session.options.mappings}
 
 
 def _load_urdf(session: Session, path: str, arguments: dict[str, str]) -> Loaded | str:

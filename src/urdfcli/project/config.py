@@ -133,6 +133,11 @@ class Config(NamedTuple):
                 mappings.update(values)
         return mappings
 
+    def model_mappings(self, file: str) -> dict[str, str]:
+        """The xacro arguments of a model read once (expanded, drawn, compared): those
+        ``xacro-args`` gives it, and over them the first set ``models`` lists for it."""
+        return {**self.mappings_for(file), **((self.argument_sets(file) or [{}])[0])}
+
     def argument_sets(self, file: str) -> list[dict[str, str]] | None:
         """The argument sets ``models`` lists for a model, None when it is not listed."""
         if not self.models:

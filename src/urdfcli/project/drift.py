@@ -186,12 +186,13 @@ def regeneration_fix(loaded: Loaded, source: GeneratedFrom, found: Loaded, argum
 
 
 def expand_source(source: Path, config: Config, session: Session) -> Loaded | str:
-    """The source's expansion (with the arguments the configuration gives it, else their
-    defaults), or why it could not be read as a robot."""
+    """The source's expansion (with the arguments the configuration gives it, its
+    ``xacro-args`` or its first set of ``models``, else their defaults), or why it
+    could not be read as a robot."""
     path = _shown(source)
     try:
         resolver = session.resolver(config.package_paths, source)
-        loaded = load(path, session.inputs, resolver, config.mappings_for(path), reads_meshes=False)
+        loaded = load(path, session.inputs, resolver, config.model_mappings(path), reads_meshes=False)
     except (InputError, PackageError) as error:
         return str(error)
     if loaded.modelled:
@@ -409,10 +410,10 @@ def _element_at(session: Session, file: str, line: int | None, column: int | Non
 
 def _hint(loaded: Loaded, source: GeneratedFrom, found: Loaded, arguments: dict[str, str | None], config: Config) -> str:
     regenerate = f"regenerate it: urdfcli expand {_shown(source.file)} -o {loaded.document.shown}"
-    given = config.mappings_for(found.document.shown)
+    given = config.model_mappings(found.document.shown)
     if arguments:
         said = ", ".join(f"{name}:={value!r}" if value is not None else name for name, value in arguments.items())
-        used = "with the values [tool.urdfcli.xacro-args] gives" if given else "with the arguments' defaults"
+        used = "with the values the configuration gives" if given else "with the arguments' defaults"
         listed = f"`urdfcli diff {loaded.document.shown} {_shown(source.file)}`"
         return f"{regenerate} (it was expanded {used}; the URDF may have been generated with other values of {said}: {listed} shows what differs; regenerate it with the values it was made with)"
     return f"{regenerate}, or `urdfcli diff {loaded.document.shown} {_shown(source.file)}` lists every difference"

@@ -12,7 +12,8 @@ did not have the package:
 5. its siblings in the repository (the nearest folder above it holding
    ``.git``), or in the workspace ``src/`` folder when that comes first;
 6. then, when that repository sits inside a workspace ``src/`` folder (each
-   repository cloned into ``ws/src/``, as ``vcs import`` lays them out), the
+   repository cloned into ``ws/src/``, as ``vcs import`` lays them out, or a
+   repository that is a workspace of its own, ``ws/src/cell/src/pkg``), the
    packages of the whole workspace;
 7. a fallback resolver, when one is given: for a copy of a repository at a git
    revision, where the workspace around the repository finds packages now.
@@ -302,6 +303,10 @@ def _local_roots(package_dir: Path) -> list[Path]:
             break
         if not roots and (folder / ".git").exists():
             roots.append(folder)
+    if roots == [folder] and (folder.parent / ".git").exists():
+        # a workspace kept as a repository (repo/src/pkg), cloned into another workspace's
+        # src/: colcon builds the packages of both, as it would those of repositories beside it
+        roots += [outer for outer in folder.parent.parents if outer.name == "src"][:1]
     if roots:
         return roots
     # a repository that is one package, in no workspace: the folder holding it holds
