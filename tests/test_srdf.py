@@ -439,7 +439,6 @@ def test_a_library_named_as_the_robot_is_no_urdf_that_could_not_be_read(tmp_path
     assert k008["code"] == "K008" and "arm_macro.xacro" not in k008["message"], k008
 
 
-
 def test_srdfs_option_checks_the_srdfs_of_the_robot_a_changed_library_builds(tmp_path):
     """The arm's joint renamed in its macro library breaks the MoveIt config's SRDF, which
     still names it: with --srdfs (as the pre-commit hooks run), checking the library (or the

@@ -37,8 +37,6 @@ import re
 from collections.abc import Callable, Iterator
 from pathlib import Path
 
-import yaml
-
 from ..diagnostics import Diagnostic, Severity
 from ..model.load import Loaded
 from ..model.srdf import SRDF_TAGS, Semantic, named_srdf
@@ -128,8 +126,10 @@ def setup_assistant(srdf: Path, index: Index) -> tuple[Path, dict[str, str]] | N
     package names for it; None when there is none, it names another SRDF, or its robot
     package cannot be found."""
     package = index.packages.enclosing_package(srdf.parent)
-    if package is None:
+    if package is None or not (package / SETUP_ASSISTANT).is_file():
         return None
+    import yaml  # (only for a MoveIt config package)
+
     try:
         written = yaml.safe_load((package / SETUP_ASSISTANT).read_text(encoding="utf-8"))
         config = written["moveit_setup_assistant_config"]

@@ -303,10 +303,10 @@ def _local_roots(package_dir: Path) -> list[Path]:
             break
         if not roots and (folder / ".git").exists():
             roots.append(folder)
-    if roots == [folder] and (folder.parent / ".git").exists():
+    if len(roots) == 1 and roots[0].name == "src" and (roots[0].parent / ".git").exists():
         # a workspace kept as a repository (repo/src/pkg), cloned into another workspace's
         # src/: colcon builds the packages of both, as it would those of repositories beside it
-        roots += [outer for outer in folder.parent.parents if outer.name == "src"][:1]
+        roots += [outer for outer in roots[0].parent.parents if outer.name == "src"][:1]
     if roots:
         return roots
     # a repository that is one package, in no workspace: the folder holding it holds

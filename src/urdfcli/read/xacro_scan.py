@@ -373,9 +373,9 @@ def _directive_place(element, local: str, macro: int | None) -> bool:
     level, or in a xacro element's body (not inside a link, a joint or a plugin, where
     an <include> or a <property> may be someone else's); an <insert_block> anywhere in
     a macro's body (Hey5's <joint><insert_block name="origin"/></joint>): it is no one else's."""
-    parent = element.getparent()
     if local == "insert_block" and macro is not None:
         return True
+    parent = element.getparent()
     return parent is not None and (parent.getparent() is None or is_xacro(parent))
 
 
