@@ -520,3 +520,39 @@ def test_the_urdf_and_xacro_arguments_a_setup_assistant_file_names_are_the_srdfs
     srdf = _setup_assistant_workspace(tmp_path / "without_tool", "dof:=7")
     done, document = check(srdf, cwd=tmp_path / "without_tool")
     assert done.returncode == 1 and [d["code"] for d in document["files"][0]["diagnostics"]] == ["K001"], document
+
+
+def test_an_srdf_whose_own_urdf_needs_arguments_is_not_checked_against_another_variant(tmp_path):
+    """A UR + gripper cell: the MoveIt config's cell.srdf (robot 'arm', as UR's SRDF macro
+    names it) belongs to the cell's cell.urdf.xacro, which needs an argument; the bare arm's
+    arm.urdf elsewhere in the repository gives robot 'arm' too but lacks the gripper. The SRDF
+    is not checked against the arm (a K001 for each gripper link): one K008 says its own URDF
+    needs an argument. Given it, the SRDF is checked against the cell: only the robot's other
+    name is said."""
+    repo = tmp_path / "cell"
+    (repo / ".git").mkdir(parents=True)
+    packages = {"cell_description": "", "cell_moveit_config": "<exec_depend>cell_description</exec_depend>", "arm_description": ""}
+    for package, depends in packages.items():
+        (repo / package / "urdf").mkdir(parents=True)
+        (repo / package / "package.xml").write_text(f'<package format="3"><name>{package}</name>{depends}</package>\n')
+    (repo / "arm_description/urdf/arm.urdf").write_text(ARM.format(name="arm", tip="tip", joint="j"))
+    (repo / "cell_description/urdf/cell.urdf.xacro").write_text(
+        '<robot name="cell" xmlns:xacro="http://www.ros.org/wiki/xacro">\n'
+        '  <link name="base"/><link name="tip"/><link name="$(arg gripper)_finger"/>\n'
+        '  <joint name="j" type="revolute"><parent link="base"/><child link="tip"/><limit lower="-1" upper="1" effort="1" velocity="1"/></joint>\n'
+        '  <joint name="f" type="fixed"><parent link="tip"/><child link="$(arg gripper)_finger"/></joint>\n</robot>\n'
+    )
+    (repo / "cell_moveit_config/config").mkdir()
+    srdf = "cell/cell_moveit_config/config/cell.srdf"
+    (tmp_path / srdf).write_text(
+        '<robot name="arm">\n  <group name="arm"><chain base_link="base" tip_link="tip"/></group>\n'
+        '  <group name="gripper"><link name="robotiq_finger"/></group>\n'
+        '  <disable_collisions link1="tip" link2="robotiq_finger" reason="Adjacent"/>\n</robot>\n'
+    )
+    done, document = check(srdf, cwd=tmp_path)
+    [k008] = document["files"][0]["diagnostics"]
+    assert (done.returncode, k008["code"], k008["severity"]) == (0, "K008", "info"), k008
+    assert "cell/cell_description/urdf/cell.urdf.xacro: it needs xacro argument 'gripper'" in k008["message"]
+    done, document = check(srdf, "gripper:=robotiq", cwd=tmp_path)
+    assert (done.returncode, [(d["code"], d["severity"]) for d in document["files"][0]["diagnostics"]]) == (0, [("K008", "warning")])
+    assert document["files"][0]["checked_against"] == "cell/cell_description/urdf/cell.urdf.xacro"

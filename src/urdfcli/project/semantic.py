@@ -188,7 +188,7 @@ def described(
     if name is None or document.file is None:
         return None
     srdf = document.file.resolve()
-    fits, failures, beside = [], [], False  # fits: (names the URDF lacks, order, path, model)
+    fits, failures, beside = [], [], False  # fits: (names the URDF lacks, order, path, model); failures: (order, why)
     named_by_config = setup_assistant(srdf, index)
     if named_by_config is not None:
         file, given = named_by_config
@@ -197,7 +197,7 @@ def described(
         if not isinstance(found, str) and found.modelled and found.robot.links:
             loaded.described = found
             return None if found.robot.name == name else _named_otherwise(loaded, f"{path}, which its {SETUP_ASSISTANT} names,", found)
-        failures.append(f"{path}, which its {SETUP_ASSISTANT} names: {found if isinstance(found, str) else _why(found)}")
+        failures.append((-1, f"{path}, which its {SETUP_ASSISTANT} names: {found if isinstance(found, str) else _why(found)}"))
     for order, (file, depended) in enumerate(candidates(srdf, index, arguments_for)):
         arguments = arguments_for(file)
         named = robot_name(file, index, arguments) == name
@@ -210,22 +210,25 @@ def described(
         path = shown(file)
         found = load(path, arguments)
         if isinstance(found, str) or not found.modelled or (named and found.robot.name != name) or not found.robot.links:
-            if named and not _library(found):
-                failures.append(f"{path}: {found if isinstance(found, str) else _why(found)}")
+            if not _library(found):
+                failures.append((order, f"{path}: {found if isinstance(found, str) else _why(found)}"))
         else:
             fits.append((_unknown(semantic, found), order, path, found))
             if fits[-1][0] == 0:
                 break  # nothing later can fit better
         if len(fits) + len(failures) >= TRIES:
             break
-    if fits:
-        _, _, path, found = min(fits, key=lambda fit: fit[:2])
+    best = min(fits, key=lambda fit: fit[:2], default=None)
+    if best is not None and best[0] > 0 and any(order < best[1] for order, _ in failures):
+        best = None  # a nearer URDF of the robot could not be read: one that lacks some of the names is another variant's (UR's bare ur5.urdf for a cell's SRDF)
+    if best is not None:
+        _, _, path, found = best
         loaded.described = found
         if found.robot.name != name:
             return _named_otherwise(loaded, f"{path}, named as it is,", found)
         return None
     if failures:
-        return _without(loaded, f"the URDF of robot '{name}' could not be read ({'; '.join(failures)}): the SRDF's names are not checked",
+        return _without(loaded, f"the URDF of robot '{name}' could not be read ({'; '.join(why for _, why in failures)}): the SRDF's names are not checked",
                         hint="list its xacro arguments in [tool.urdfcli] models, or give --urdf FILE")
     return _without(loaded, f"no URDF of robot '{name}' found in the SRDF's package or workspace: its names are not checked",
                     hint="give the URDF with --urdf FILE")
