@@ -155,3 +155,25 @@ def test_undefined_argument_hint_names_a_file_whose_name_others_share_by_its_pat
     assert run_cli("check", go1, cwd=tmp_path).returncode == 0
     [found] = diagnostics("check", "robots/a1_description/xacro/robot.xacro", cwd=tmp_path)  # the other robot is not given it
     assert found["code"] == "X003" and "\"robots/a1_description/xacro/robot.xacro\" = { DEBUG = \"VALUE\" }" in found["hint"]
+
+
+@pytest.mark.parametrize("where", ["included", "own"])
+def test_a_name_given_by_a_property_without_the_xacro_prefix_says_where_that_tag_is(tmp_path, where):
+    """Hey5's deg_to_rad.urdf.xacro defines <property name="deg_to_rad">, xacro 1's spelling,
+    which xacro 2 copies unread: the expression using it fails, and its hint names that tag
+    (check runs no X107); written with the prefix, as the hint says, the model expands."""
+    definition = '  <property name="deg_to_rad" value="0.017453293"/>\n'
+    (tmp_path / "d.xacro").write_text(f'<robot xmlns:xacro="http://www.ros.org/wiki/xacro">\n{definition}</robot>\n')
+    model = tmp_path / "r.urdf.xacro"
+    head = '  <xacro:include filename="d.xacro"/>\n' if where == "included" else definition
+    model.write_text(
+        f'<robot name="r" xmlns:xacro="http://www.ros.org/wiki/xacro">\n{head}'
+        '  <link name="a"/><link name="b"/>\n'
+        '  <joint name="j" type="fixed"><parent link="a"/><child link="b"/><origin rpy="0 ${90 * deg_to_rad} 0"/></joint>\n</robot>\n'
+    )
+    [found] = diagnostics("check", "r.urdf.xacro", cwd=tmp_path)
+    place = "d.xacro:2" if where == "included" else "r.urdf.xacro:2"
+    assert (found["code"], found["hint"]) == ("X003", f'<property name="deg_to_rad"> ({place}) is written without xacro:, which xacro 2 copies unread: write <xacro:property>')
+    for file in (tmp_path / "d.xacro", model):
+        file.write_text(file.read_text().replace("<property ", "<xacro:property "))
+    assert diagnostics("check", "r.urdf.xacro", cwd=tmp_path) == []

@@ -130,6 +130,7 @@ class _Session:
         self.calls: list[Call] = []  # each macro call site once, by its index in TRACE attributes
         self.call_index: dict[Call, int] = {}
         self.warnings: list[tuple[str, Origin | None]] = []
+        self.documents: list[xml.dom.minidom.Document] = []  # each file included, as parsed
 
     # -- where is xacro now --------------------------------------------------
     def origin_of(self, node) -> Origin | None:
@@ -276,7 +277,8 @@ class _Session:
             xacro.filestack.pop()
             raise xacro.XacroException(f"cannot include {display_path(path)}: it is not an XML file")
         try:
-            return tagged_dom(data, display_path(path))
+            self.documents.append(tagged_dom(data, display_path(path)))
+            return self.documents[-1]
         except XmlError as error:
             xacro.filestack.pop()
             raise ExpansionError(
@@ -317,6 +319,22 @@ class _Session:
             argument = name.group(1) or name.group(2)
             return f"{token} is empty here, which leaves it out of the path: xacro argument '{argument}' is empty; pass {argument}:=VALUE"
         return f"{token} is empty here, which leaves it out of the path: give it a value"
+
+    def unprefixed_property(self, doc: xml.dom.minidom.Document, error: BaseException) -> str | None:
+        """For a name no expression knows that a ``<property>`` written without ``xacro:`` gives
+        (xacro 1 read it; xacro 2 copies it unread): where that tag is, and to write the prefix."""
+        while error is not None and not isinstance(error, NameError):
+            error = getattr(error, "exc", None)
+        name = getattr(error, "name", None)
+        if name is None:
+            return None
+        for document in (doc, *self.documents):
+            for element in document.getElementsByTagName("property"):
+                if element.getAttribute("name") == name:
+                    origin = element.getUserData(ORIGIN)
+                    where = f" ({origin.file}:{origin.line})" if origin is not None and origin.line else ""
+                    return f'<property name="{name}">{where} is written without xacro:, which xacro 2 copies unread: write <xacro:property>'
+        return None
 
     def installed_elsewhere(self, path: str) -> str | None:
         """For ``$(find NAME)/x/file`` that the sources of NAME, in the input's repository or
@@ -532,7 +550,7 @@ def expand_here(data: bytes, file: str | None, mappings: dict[str, str], resolve
             missing, hint = _missing_argument(message) if code == "X003" else (None, None)
             raise ExpansionError(
                 message, origin, display_path(current_file) if current_file else shown, code,
-                _included(resolver), missing, hint or getattr(error, "urdfcli_hint", None),
+                _included(resolver), missing, hint or getattr(error, "urdfcli_hint", None) or session.unprefixed_property(doc, error),
             ) from None
         finally:
             includes = list(_included(resolver))
