@@ -759,6 +759,16 @@ def test_an_unprefixed_include_is_a_warning_and_a_prefixed_one_or_a_plugin_tag_i
     assert found(model, codes=("X107",)) == []
 
 
+
+@pytest.mark.parametrize("tag", ['<property name="deg_to_rad" value="0.017453293"/>', '<include filename="arm.xacro"/>'])
+def test_a_xacro_tag_without_the_prefix_that_the_model_expands_past_is_x107s_alone(tmp_path, tag):
+    """Hey5's deg_to_rad.urdf.xacro: <property> without xacro:, copied into the URDF unread.
+    X107 says so at the tag; D010 'not URDF markup' on the element it left would say it again."""
+    write(tmp_path / "arm.xacro", library('<xacro:property name="size" value="1"/>'))
+    model = write(tmp_path / "robot.urdf.xacro", robot(f'{tag}<link name="base_link"/>'))
+    codes = [d["code"] for d in json.loads(run_cli("lint", "--format", "json", "--isolated", str(model)).stdout)["files"][0]["diagnostics"]]
+    assert codes == ["X107"]
+
 def test_a_macro_called_without_the_prefix_is_a_warning_at_the_call_not_a_macro_called_nowhere(tmp_path):
     """turtlebot3_manipulation's <RefLink ref="link1"/>: xacro 2 copies it into the URDF and
     never calls the macro (its <gazebo> friction is lost). X107 at the call; no X104 'called

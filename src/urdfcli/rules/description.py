@@ -160,7 +160,8 @@ def unknown_markup(loaded, given):
     `<contact>` in a link, anything prefixed (`drake:`, `xacro:`), Isaac's
     `dont_collapse`, `<material>` in a `<collision>`, MuJoCo's `<mujoco>`,
     robot-level `<sensor>` (urdfdom, iDynTree), vendor attributes. Pinocchio
-    reads URDF through urdfdom; its own extras live in SRDF.
+    reads URDF through urdfdom; its own extras live in SRDF. A xacro tag or macro
+    call written without `xacro:` is X107's, which says so at its tag.
 
     ## Why is this bad?
     Every URDF consumer skips it: if it was meant to configure something, it
@@ -186,10 +187,13 @@ def unknown_markup(loaded, given):
     ```
     """
     calls = set(unprefixed_calls(loaded))
+    sources = loaded.xacro_sources
+    directives = {old.tag for file in sources.files for old in file.old} if sources is not None else set()
     attributes_of: dict[int, list] = {}  # an element's unknown attributes: one diagnostic (an <inertia>'s iyx, izx, izy)
     for unknown in loaded.robot.unknown:
-        if unknown.typo_of or unknown.gazebo or (unknown.attribute and unknown.parent == "material" and unknown.name == "rgba") or unknown in calls:
-            continue  # a typo is D001/D002's, Gazebo markup D011's, a material's rgba M005's or M001's, a macro call without xacro: X107's
+        if (unknown.typo_of or unknown.gazebo or (unknown.attribute and unknown.parent == "material" and unknown.name == "rgba") or unknown in calls
+                or (not unknown.attribute and unknown.name in directives)):
+            continue  # a typo is D001/D002's, Gazebo markup D011's, a material's rgba M005's or M001's, a macro call or a xacro tag without xacro: X107's
         if unknown.attribute:
             attributes_of.setdefault(unknown.at, []).append(unknown)
             continue
