@@ -556,3 +556,30 @@ def test_an_srdf_whose_own_urdf_needs_arguments_is_not_checked_against_another_v
     done, document = check(srdf, "gripper:=robotiq", cwd=tmp_path)
     assert (done.returncode, [(d["code"], d["severity"]) for d in document["files"][0]["diagnostics"]]) == (0, [("K008", "warning")])
     assert document["files"][0]["checked_against"] == "cell/cell_description/urdf/cell.urdf.xacro"
+
+
+def test_a_moveit_1_setup_assistant_file_with_its_keys_in_capitals_names_the_urdf(tmp_path):
+    """MoveIt 1's Setup Assistant writes URDF: and SRDF: in capitals. abb_irb6640_moveit_config's
+    SRDF says robot 'abb_irb6640', the model it names says 'abb_irb6640_185_280', and no file is
+    named as the SRDF: the SRDF is checked against that model, with a warning on the names and
+    on the link of its <disable_collisions> that the model lacks."""
+    src = tmp_path / "src"
+    robot, config = src / "abb_irb6640_support", src / "abb_irb6640_moveit_config"
+    (robot / "urdf").mkdir(parents=True)
+    (config / "config").mkdir(parents=True)
+    (robot / "package.xml").write_text("<package><name>abb_irb6640_support</name></package>\n")
+    (config / "package.xml").write_text("<package><name>abb_irb6640_moveit_config</name></package>\n")
+    (robot / "urdf" / "irb6640_185_280.xacro").write_text(
+        '<robot name="abb_irb6640_185_280" xmlns:xacro="http://ros.org/wiki/xacro">\n  <link name="base_link"/><link name="tool0"/>\n'
+        '  <joint name="joint_1" type="continuous"><parent link="base_link"/><child link="tool0"/></joint>\n</robot>\n')
+    (config / ".setup_assistant").write_text(
+        "moveit_setup_assistant_config:\n  URDF:\n    package: abb_irb6640_support\n    relative_path: urdf/irb6640_185_280.xacro\n"
+        "  SRDF:\n    relative_path: config/abb_irb6640.srdf\n  CONFIG:\n    generated_timestamp: 1402076423\n")
+    (config / "config" / "abb_irb6640.srdf").write_text(
+        '<robot name="abb_irb6640">\n  <group name="manipulator"><chain base_link="base_link" tip_link="tool0"/></group>\n'
+        '  <disable_collisions link1="base_link" link2="link_cylinder" reason="Never"/>\n</robot>\n')
+    done, document = check("src/abb_irb6640_moveit_config/config/abb_irb6640.srdf", cwd=tmp_path)
+    checked = document["files"][0]
+    assert checked["checked_against"] == "src/abb_irb6640_support/urdf/irb6640_185_280.xacro", document
+    assert [(d["code"], d["severity"]) for d in checked["diagnostics"]] == [("K008", "warning"), ("K001", "warning")], document
+    assert ".setup_assistant" in checked["diagnostics"][0]["message"] and "'link_cylinder'" in checked["diagnostics"][1]["message"]

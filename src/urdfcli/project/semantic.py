@@ -16,10 +16,11 @@ candidate whatever name it gives (``go2.urdf`` says ``go2_description``,
 ``sia20d.xacro`` ``motoman_sia20d``, and an SRDF copied from another variant
 keeps that variant's name).
 
-A MoveIt 2 config names its URDF itself: the ``.setup_assistant`` file at the top of
+A MoveIt config names its URDF itself: the ``.setup_assistant`` file at the top of
 its package gives the robot package, the file's path in it and the xacro arguments
 (``xacro_args: gripper:=robotiq_2f_85 dof:=7``), from which moveit_configs_utils builds
-the ``robot_description`` it pairs with the SRDF the file names. That URDF, with those
+the ``robot_description`` it pairs with the SRDF the file names (MoveIt 1's Setup
+Assistant writes the same file with the keys in capitals: ``URDF:``, ``SRDF:``). That URDF, with those
 arguments, is tried before any other.
 
 Of the candidates, a few at most are loaded (:data:`TRIES`), and the SRDF is
@@ -133,7 +134,8 @@ def setup_assistant(srdf: Path, index: Index) -> tuple[Path, dict[str, str]] | N
     try:
         written = yaml.safe_load((package / SETUP_ASSISTANT).read_text(encoding="utf-8"))
         config = written["moveit_setup_assistant_config"]
-        urdf, named_srdf = config["urdf"], config["srdf"]["relative_path"]
+        # MoveIt 1 writes the keys in capitals (URDF:, SRDF:), MoveIt 2 in lower case
+        urdf, named_srdf = _either(config, "urdf"), _either(config, "srdf")["relative_path"]
         robot, relative = urdf["package"], urdf["relative_path"]
     except (OSError, UnicodeDecodeError, yaml.YAMLError, TypeError, KeyError):
         return None
@@ -145,6 +147,11 @@ def setup_assistant(srdf: Path, index: Index) -> tuple[Path, dict[str, str]] | N
     # moveit_configs_utils splits xacro_args at white space, each NAME:=VALUE
     arguments = dict(word.partition(":=")[::2] for word in str(urdf.get("xacro_args") or "").split() if ":=" in word)
     return (folder / relative).resolve(), arguments
+
+
+def _either(config: dict, key: str):
+    """``config[key]``, written in lower case (MoveIt 2) or in capitals (MoveIt 1)."""
+    return config[key] if key in config else config[key.upper()]
 
 
 def _shared(file: Path, srdf: Path) -> int:
