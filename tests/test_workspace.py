@@ -384,6 +384,19 @@ def test_an_include_a_substitution_left_empty_says_which_not_that_the_build_move
     assert check_json(str(model), "dof:=7", cwd=tmp_path / "ws")[0].returncode == 0
 
 
+def test_an_include_of_a_variant_the_package_lacks_is_not_said_to_be_installed_elsewhere(tmp_path):
+    """kortex_description has arms/gen3/7dof/urdf/gen3_transmission_macro.xacro and no 6dof
+    one: $(find)/arms/gen3/6dof/urdf/... is missing, not installed from the 7dof folder
+    (no install rule keeps arms/gen3 and swaps the folder below it), so no hint says so."""
+    repo_a, repo_b = make_colcon_workspace(tmp_path)
+    write(repo_b / "wheels" / "arms" / "gen3" / "7dof" / "urdf" / "caster.xacro", CASTER)
+    model = write(repo_a / "robot" / "urdf" / "robot.urdf.xacro", WHEELED.replace("/urdf/caster.xacro", "/arms/gen3/6dof/urdf/caster.xacro"))
+    done, report = check_json(str(model), cwd=tmp_path / "ws")
+    [error] = report["files"][0]["diagnostics"]
+    assert (error["code"], error.get("hint")) == ("X003", None), error
+    assert error["message"] == "cannot include src/repo_b/wheels/arms/gen3/6dof/urdf/caster.xacro: No such file or directory"
+
+
 def test_a_package_only_installed_in_the_workspace_is_found_there(tmp_path):
     """A package the workspace's install space holds and its src/ does not (built from
     elsewhere): read from the install space, and no source is made up for it."""

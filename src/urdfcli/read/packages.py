@@ -286,13 +286,24 @@ def common_tail(a: tuple[str, ...], b: tuple[str, ...]) -> int:
 
 
 def closest_file(package: Path, written: tuple[str, ...]) -> Path | None:
-    """The file of ``package`` named as the path ``written`` ends whose path ends the most
-    like it, when no other ends as much like it; else None."""
+    """The file of ``package`` named as the path ``written`` (below the package's installed
+    share folder) ends whose path ends the most like it, when no other ends as much like it
+    and an install rule can have put it there; else None."""
     found = list(files_below(package, lambda name: name == written[-1]))
     ranked = sorted(found, key=lambda file: common_tail(file.parts, written), reverse=True)
     if not ranked or (len(ranked) > 1 and common_tail(ranked[0].parts, written) == common_tail(ranked[1].parts, written)):
         return None
-    return ranked[0]
+    return ranked[0] if _installable(ranked[0].relative_to(package).parts, written) else None
+
+
+def _installable(source: tuple[str, ...], written: tuple[str, ...]) -> bool:
+    """Whether an install rule can put the file at ``source`` at ``written`` (both below
+    their package): it copies a folder to another place (``description/urdf`` to ``urdf``,
+    ``config`` to ``params``), so the folders before the paths' common end differ from the
+    first; a path that only differs deeper down is another file (kortex_description's
+    ``arms/gen3/7dof/urdf/X`` is not installed as ``arms/gen3/6dof/urdf/X``)."""
+    shared = common_tail(source, written)
+    return not (shared < len(source) and shared < len(written) and source[0] == written[0])
 
 
 def _local_roots(package_dir: Path) -> list[Path]:
