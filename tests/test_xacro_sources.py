@@ -350,6 +350,30 @@ def test_an_unused_parameter_and_a_block_never_inserted_are_warnings_where_param
     assert warnings[1].hint.startswith('insert it with <xacro:insert_block name="origin"/>')
 
 
+def test_a_yaml_file_the_model_loads_hides_no_name_from_the_source_rules(tmp_path):
+    # a ros2_control macro fed by initial_positions.yaml, as MoveIt's setup assistant writes it:
+    # xacro lists the YAML with its includes, and it defines and uses no xacro name
+    (tmp_path / ".git").mkdir()
+    write(tmp_path / "config" / "initial_positions.yaml", "initial_positions:\n  joint1: 0\n")
+    control = write(tmp_path / "config" / "control.xacro", library("""
+        <xacro:macro name="control" params="name initial_positions_file slowdown:=2.0">
+          <xacro:property name="initial" value="${xacro.load_yaml(initial_positions_file)['initial_positions']}"/>
+          <ros2_control name="${name}" type="system">
+            <joint name="joint1"><state_interface name="position"><param name="initial_value">${initial['joint1']}</param></state_interface></joint>
+          </ros2_control>
+        </xacro:macro>
+        """))
+    model = write(tmp_path / "config" / "robot.urdf.xacro", robot("""
+        <xacro:arg name="initial_positions_file" default="initial_positions.yaml"/>
+        <xacro:include filename="control.xacro"/>
+        <link name="base_link"/>
+        <link name="arm"/>
+        <joint name="joint1" type="continuous"><parent link="base_link"/><child link="arm"/></joint>
+        <xacro:control name="FakeSystem" initial_positions_file="$(arg initial_positions_file)" slowdown="3"/>
+        """))
+    assert found(model, codes=("X103",)) == [("X103", "control.xacro", *column_of(control, "slowdown", "params="))]
+
+
 def test_parameters_used_in_nested_macros_by_callees_or_forwarded_are_clean(tmp_path):
     model = write(tmp_path / "robot.urdf.xacro", robot("""
         <xacro:macro name="hub" params=""><link name="${prefix}_hub"/></xacro:macro>

@@ -281,6 +281,14 @@ class Index:
             self._read.add(file)
         return self.files.derived(shown(file), workspace_file)
 
+    def unknown(self, file: Path) -> bool:
+        """Whether ``file`` may define or use xacro names that cannot be read: it is
+        unreadable, or a xacro file that is not XML. A plain URDF holds none, and
+        neither does the YAML that ``xacro.load_yaml`` read (xacro lists it with the
+        files it included)."""
+        found = self.files.get(shown(file))
+        return found is None or (file.name.endswith(".xacro") and found.scan is None)
+
     def xacro_file(self, file: Path) -> XacroFile | None:
         """The scan of a xacro file (None: unreadable, not XML, or a plain URDF)."""
         if not file.name.endswith(".xacro"):
@@ -435,7 +443,7 @@ def xacro_sources(document: Document, index: Index, xacro_names: Callable[[], Xa
             return [], document.is_xacro is False
         paths, complete = index.reach([start, *(Path(file).resolve() for file in document.includes)])
         found = scanned(paths)
-        return found, complete and len(found) == len(paths)
+        return found, complete and not any(index.unknown(path) for path in paths if index.xacro_file(path) is None)
 
     def around() -> list[XacroFile]:
         if start is None or not document.is_xacro:
