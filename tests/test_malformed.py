@@ -55,6 +55,9 @@ MALFORMED = {
     "nul-in-attribute": (b'<robot name="r"><link name="a\x00b"/></robot>', 1, "X001 error"),
     "nul-after-root": (ONE_LINK.encode() + b"\x00\x00", 1, "X001 error"),
     "nul-only": (b"\x00" * 64, 1, "X001 error"),
+    # a merge git could not finish, committed as it was: the first marker's line, and what it is
+    "merge-conflict": (b'<robot name="r">\n  <link name="a"/>\n<<<<<<< HEAD\n  <link name="b"/>\n=======\n  <link name="c"/>\n>>>>>>> arm\n</robot>\n',
+                       3, "an unresolved merge conflict: git's conflict markers"),
     "nesting-deeper-than-libxml2-allows": (b'<robot name="r">' + b"<a>" * 300 + b"</a>" * 300 + b"</robot>", 1, "X001 error"),
 }
 

@@ -21,6 +21,7 @@ from __future__ import annotations
 
 import codecs
 import io
+import re
 from collections.abc import Iterator
 
 from lxml import etree
@@ -38,6 +39,9 @@ _PARSER_OPTIONS = dict(
     collect_ids=False,
     strip_cdata=False,  # kept as written: xacro prints a CDATA section as one
 )
+
+
+_CONFLICT = re.compile(rb"^<{7}(?: |$)", re.MULTILINE)  # the first line git writes in a file whose merge it could not finish
 
 
 class XmlError(ValueError):
@@ -72,6 +76,10 @@ def parse(data: bytes, as_written: bool = False, huge: bool = False) -> Element:
             # libxml2 does not know the name (latin-1, cp1252 without iconv...): Python may.
             root = etree.fromstring(recoded(data), etree.XMLParser(**options, encoding="utf-8"))
     except etree.XMLSyntaxError as error:
+        conflict = _CONFLICT.search(data)
+        if conflict is not None:  # what libxml2 says there ("StartTag: invalid element name") names no cause
+            line = data.count(b"\n", 0, conflict.start()) + 1
+            raise XmlError("an unresolved merge conflict: git's conflict markers (<<<<<<<, =======, >>>>>>>) are in the file", line, 1) from None
         line, column = error.position if error.position else (error.lineno, None)
         message = error.msg or str(error)
         message = message.split(", line ")[0] if ", line " in message else message
