@@ -559,8 +559,8 @@ class Models(list):
 def models_below(folder: Path, index: Index) -> Models:
     """The robot models below a folder, as ``check`` and ``lint`` find them: every
     ``*.urdf``, ``*.urdf.xacro``, ``*.srdf`` and ``*.srdf.xacro`` file, and each other
-    ``*.xacro`` file that is a model (ROS 1's ``ur5.xacro``), unless a file there
-    includes it: a fragment (Baxter's ``left_end_effector.urdf.xacro``, a model's
+    ``*.xacro`` file that is a model (ROS 1's ``ur5.xacro``), unless a file of its
+    package there includes it: a fragment (Baxter's ``left_end_effector.urdf.xacro``, a model's
     parts in their own file, a file included through a name computed from a macro
     parameter, a plain URDF that holds no robot) is checked through the models that
     read it, never expanded alone.
@@ -574,13 +574,24 @@ def models_below(folder: Path, index: Index) -> Models:
         if not (file.name.endswith(MODEL_SUFFIXES) or (file.name.endswith(".xacro") and index.kind(path) == "model")):
             continue
         found = includers.get(path)
-        # a plain URDF that holds a robot is one, whoever includes it; a .urdf that is a xacro library is a part
-        if not found or not (part_of_model(str(file)) or index.kind(path) == "library"):
+        # a plain URDF that holds a robot is one, whoever includes it; a .urdf that is a xacro library is a part;
+        # a xacro model that only other packages include is its own package's robot (a MoveIt config wraps the description's)
+        if not found or not (part_of_model(str(file)) or index.kind(path) == "library") or _included_from_other_packages(path, found, index):
             models.append(file)
         else:
             written = tuple((shown(includer), text) for includer, _, text in found)
             aside.append(Aside(shown(file), written, any(include.kind in ("path", "glob") for _, include, _ in found)))
     return Models(models, tuple(aside))
+
+
+def _included_from_other_packages(model: Path, includers: list[tuple[Path, Include, str]], index: Index) -> bool:
+    """Whether a xacro model is included only by files of other packages than its own: the robot
+    its package describes and launches, which a MoveIt config's ``robot.urdf.xacro`` wraps with its
+    ros2_control, not a fragment of that wrapper (a fragment that cannot be read alone is still
+    checked through the models that include it)."""
+    package = index.packages.enclosing_package(model.parent)
+    return (package is not None and index.kind(model) == "model"
+            and all(index.packages.enclosing_package(includer.parent) != package for includer, _, _ in includers))
 
 
 def unread(aside: tuple[Aside, ...], results: list[Result], shown: list[Result] = ()) -> list[Result]:
