@@ -95,6 +95,11 @@ def test_a_description_model_a_moveit_config_wraps_is_checked_as_its_packages_ro
     done, document = lint_json("src", cwd=workspace)
     codes = {(f["path"], d["code"]) for f in document["files"] for d in f["diagnostics"]}
     assert ("src/panda_moveit_config/config/panda.urdf.xacro", "X003") in codes and (franka, "I011") in codes
+    # a change to the description's arm macros is checked through both, as the pre-commit hook names it
+    done = run_cli("check", "src/franka_ros/franka_description/robots/common/franka_arm.xacro", cwd=built)
+    assert done.stderr.decode().splitlines()[0] == (
+        f"src/franka_ros/franka_description/robots/common/franka_arm.xacro: xacro library, checked through {franka}, src/panda_moveit_config/config/panda.urdf.xacro"
+    )
 
 def test_a_library_is_attributed_only_to_the_models_whose_includes_reach_it(built):
     """PR2's base: a Kinova or TALOS model whose include is computed does not include it."""
