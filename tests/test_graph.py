@@ -378,3 +378,19 @@ def test_compat_draws_what_urdf_to_graphviz_draws_when_urdfdom_misses_the_errors
     rejected = tmp_path / "rejected.urdf"
     rejected.write_text(REJECTED)
     assert real_urdf_to_graphviz(rejected, tmp_path / "refused").returncode != 0
+
+
+def test_a_mimic_joint_says_what_it_follows_as_the_tree_does(tmp_path):
+    """ABB's irb6640: joint_cylinder follows joint_2; drawn as a plain revolute joint, it
+    looked like a joint of its own to command."""
+    path = tmp_path / "r.urdf"
+    path.write_text(
+        '<robot name="r"><link name="a"/><link name="b"/><link name="c"/>'
+        '<joint name="joint_2" type="revolute"><parent link="a"/><child link="b"/><limit lower="-1" upper="1" effort="1" velocity="1"/></joint>'
+        '<joint name="joint_cylinder" type="revolute"><parent link="a"/><child link="c"/><limit lower="-1" upper="1" effort="1" velocity="1"/>'
+        '<mimic joint="joint_2" multiplier="-0.25" offset="0.1"/></joint></robot>'
+    )
+    dot = run_cli("graph", "-f", "dot", str(path)).stdout.decode()
+    assert '[label="joint_cylinder\\nrevolute\\naxis 1 0 0\\nmimics joint_2 × -0.25 + 0.1"' in dot
+    assert '[label="joint_2\\nrevolute\\naxis 1 0 0", ' in dot
+    assert "mimics joint_2 × -0.25 + 0.1" in run_cli("tree", str(path)).stdout.decode()

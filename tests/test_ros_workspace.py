@@ -6,6 +6,7 @@ workspace lint says nothing false, nothing twice and nothing about another repos
 from __future__ import annotations
 
 import json
+import shutil
 import textwrap
 
 import pytest
@@ -53,7 +54,7 @@ def test_no_fragment_is_expanded_alone_in_a_workspace_lint(built):
             "'$(find talos_description)/urdf/leg/foot_collision_$(arg foot_collision).urdf.xacro', a file name computed from what it is given"
         ],
     }
-    assert document["summary"]["files"] == 12  # the models, SRDFs and generated URDFs: not the notes
+    assert document["summary"]["files"] == 13  # the models, SRDFs and generated URDFs: not the notes
 
 
 @pytest.mark.parametrize(
@@ -78,6 +79,27 @@ def test_a_whole_model_that_another_includes_is_still_checked_as_itself(built, m
     done = run_cli("check", model, cwd=built)
     assert done.returncode == 0 and done.stdout.decode().startswith("robot name is: ")
 
+
+def test_a_description_model_a_moveit_config_wraps_is_checked_as_its_packages_robot(built, tmp_path):
+    """panda_moveit_config's panda.urdf.xacro includes franka_description's panda.urdf.xacro,
+    the robot the description launches, to add its ros2_control: the description's model is
+    a model of the workspace lint, and what it finds stands when the wrapper cannot be
+    expanded (the YAML it loads is gone); each finding is said once either way."""
+    franka = "src/franka_ros/franka_description/robots/panda/panda.urdf.xacro"
+    done, document = lint_json("src", cwd=built)
+    kdl = [(f["path"], d["path"]) for f in document["files"] for d in f["diagnostics"] if d["code"] == "I011" and "franka" in d["path"]]
+    assert kdl == [(franka, "src/franka_ros/franka_description/robots/common/utils.xacro")]
+    workspace = tmp_path / "ws"
+    shutil.copytree(built, workspace)
+    (workspace / "src/panda_moveit_config/config/initial_positions.yaml").unlink()
+    done, document = lint_json("src", cwd=workspace)
+    codes = {(f["path"], d["code"]) for f in document["files"] for d in f["diagnostics"]}
+    assert ("src/panda_moveit_config/config/panda.urdf.xacro", "X003") in codes and (franka, "I011") in codes
+    # a change to the description's arm macros is checked through both, as the pre-commit hook names it
+    done = run_cli("check", "src/franka_ros/franka_description/robots/common/franka_arm.xacro", cwd=built)
+    assert done.stderr.decode().splitlines()[0] == (
+        f"src/franka_ros/franka_description/robots/common/franka_arm.xacro: xacro library, checked through {franka}, src/panda_moveit_config/config/panda.urdf.xacro"
+    )
 
 def test_a_library_is_attributed_only_to_the_models_whose_includes_reach_it(built):
     """PR2's base: a Kinova or TALOS model whose include is computed does not include it."""

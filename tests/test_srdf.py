@@ -583,3 +583,35 @@ def test_a_moveit_1_setup_assistant_file_with_its_keys_in_capitals_names_the_urd
     assert checked["checked_against"] == "src/abb_irb6640_support/urdf/irb6640_185_280.xacro", document
     assert [(d["code"], d["severity"]) for d in checked["diagnostics"]] == [("K008", "warning"), ("K001", "warning")], document
     assert ".setup_assistant" in checked["diagnostics"][0]["message"] and "'link_cylinder'" in checked["diagnostics"][1]["message"]
+
+
+def test_the_argument_set_models_lists_for_an_srdf_is_its_urdfs_too(tmp_path):
+    """ros_kortex: one gen3.xacro makes the 6- and 7-dof arms (dof defaults to 7), and the 6-dof
+    MoveIt config's SRDF names the 6-dof arm's links. Checked against the default, its names
+    are missing (K001); the SRDF's argument set in [tool.urdfcli] models is its URDF's too,
+    as arguments given after it on the command line are, and then it checks clean."""
+    (tmp_path / ".git").mkdir()
+    robot, config = tmp_path / "arm_description", tmp_path / "arm_moveit_config"
+    (robot / "robots").mkdir(parents=True)
+    (config / "config").mkdir(parents=True)
+    (robot / "package.xml").write_text("<package format=\"3\"><name>arm_description</name></package>\n")
+    (config / "package.xml").write_text("<package format=\"3\"><name>arm_moveit_config</name><exec_depend>arm_description</exec_depend></package>\n")
+    (robot / "robots" / "arm.xacro").write_text(
+        '<robot name="arm" xmlns:xacro="http://www.ros.org/wiki/xacro">\n  <xacro:arg name="dof" default="7"/>\n'
+        '  <link name="base"/><link name="tip"/>\n'
+        '  <xacro:if value="${\'$(arg dof)\' == \'6\'}"><link name="bicep_link"/>'
+        '<joint name="b" type="fixed"><parent link="base"/><child link="bicep_link"/></joint></xacro:if>\n'
+        '  <joint name="j" type="revolute"><parent link="base"/><child link="tip"/><limit lower="-1" upper="1" effort="1" velocity="1"/></joint>\n</robot>\n'
+    )
+    srdf = "arm_moveit_config/config/arm.srdf"
+    (tmp_path / srdf).write_text('<robot name="arm">\n  <group name="arm"><chain base_link="base" tip_link="tip"/></group>\n'
+                                 '  <disable_collisions link1="base" link2="bicep_link" reason="Adjacent"/>\n</robot>\n')
+    done, document = check(srdf, cwd=tmp_path)
+    diagnostics = document["files"][0]["diagnostics"]
+    assert [(d["code"], d["severity"], d["message"]) for d in diagnostics] == [
+        ("K001", "warning", "<disable_collisions> names link 'bicep_link', which arm_description/robots/arm.xacro does not have")]
+    done, document = check(srdf, "dof:=6", cwd=tmp_path)
+    assert (done.returncode, found(document)) == (0, [])
+    (tmp_path / "pyproject.toml").write_text(f'[tool.urdfcli]\nmodels = {{ "{srdf}" = [["dof:=6"]] }}\n')
+    done, document = check(srdf, cwd=tmp_path)
+    assert (done.returncode, found(document)) == (0, [])

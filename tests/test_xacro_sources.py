@@ -904,3 +904,17 @@ def test_the_repository_layouts_draw_no_source_finding_until_a_mistake_is_made(t
         ("X103", "wheel.xacro", *column_of(wheel, "offset", "params=")),
         ("X106", "wheel.xacro", *column_of(wheel, "max_effort")),
     ]
+
+
+def test_a_urdf_file_written_in_xacro_is_a_note_and_one_that_only_declares_the_namespace_is_not(tmp_path):
+    """TurtleBot3's ROS 2 turtlebot3_burger.urdf reads $(arg namespace): check_urdf, given the
+    file, names the link '$(arg namespace)base_link', urdfcli its expansion 'base_link'."""
+    text = ('<robot name="tb" xmlns:xacro="http://ros.org/wiki/xacro">\n  <xacro:arg name="namespace" default=""/>\n'
+            '  <link name="$(arg namespace)base_link"/>\n</robot>\n')
+    for name, expected in (("tb.urdf", ["X108"]), ("tb.urdf.xacro", [])):
+        path = write(tmp_path / name, text)
+        assert [code for code, *_ in found(path, codes=("X108",))] == expected, name
+    real = subprocess.run([require_tool("check_urdf"), str(tmp_path / "tb.urdf")], capture_output=True, text=True)
+    assert "root Link: $(arg namespace)base_link" in real.stdout
+    declared = write(tmp_path / "plain.urdf", '<robot name="p" xmlns:xacro="http://ros.org/wiki/xacro"><link name="base_link"/></robot>\n')
+    assert found(declared, codes=("X108",)) == []

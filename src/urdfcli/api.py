@@ -289,7 +289,7 @@ def check_target(target: Target, session: Session) -> Result | Unreadable:
     except PackageError as error:
         raise UsageError(str(error)) from None
     document = loaded.document
-    extra = [] if loaded.semantic is None else [d for d in [_described(loaded, session)] if d is not None]
+    extra = [] if loaded.semantic is None else [d for d in [_described(loaded, session, dict(target.arguments))] if d is not None]
     if rule_set is not RuleSet.TREE and drift_.enabled(config, path):
         extra += drift_.drift(loaded, config, session)
     diagnostics = linter.lint(loaded, config, rule_set, extra)
@@ -314,9 +314,10 @@ def _configured_as(path: str, config: Config, session: Session) -> str:
     return Path(os.path.relpath(file, folder.resolve())).as_posix()
 
 
-def _described(loaded: Loaded, session: Session) -> Diagnostic | None:
-    """An SRDF checked against the URDF of its robot: that URDF set on ``loaded``, or why there is none."""
-    return described(loaded, session.index, session.options.urdf, lambda file: model_arguments(str(file), session), partial(_load_urdf, session))
+def _described(loaded: Loaded, session: Session, given: dict[str, str]) -> Diagnostic | None:
+    """An SRDF checked against the URDF of its robot: that URDF set on ``loaded``, or why there is none.
+    ``given``: the SRDF's argument set of ``[tool.urdfcli] models``, the URDF's too (a 6-dof arm's SRDF: dof:=6)."""
+    return described(loaded, session.index, session.options.urdf, lambda file: {**model_arguments(str(file), session), **given}, partial(_load_urdf, session))
 
 
 def model_arguments(path: str, session: Session) -> dict[str, str]:

@@ -19,7 +19,7 @@ from typing import NamedTuple
 from ..model.kinematics import children_by_joint_name, walk
 from ..model.robot import MOVING_AXIS_TYPES, Joint, Robot, Vec3
 from .escape import escape
-from .tree import axis_text, limit_text, readable
+from .tree import axis_text, limit_text, mimic_text, readable
 
 # Colour per joint type (the palette of matplotlib's tab10, easy to tell apart).
 JOINT_COLOURS = {
@@ -140,6 +140,8 @@ def joint_lines(joint: Joint, style: Style) -> list[str]:
         lines.append("axis " + axis_text(joint.axis, readable))
     if style.limits:
         lines += limit_text(joint, readable, full=True).split(", ")
+    if joint.mimic is not None:  # it moves with another joint: not a joint of its own to command
+        lines.append(mimic_text(joint))
     return lines
 
 

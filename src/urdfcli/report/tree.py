@@ -141,11 +141,16 @@ def joint_details(joint: Joint, ascii_only: bool = False) -> list[str]:
     if limits:
         parts.append(limits)
     if joint.mimic is not None:
-        mimic = joint.mimic
-        factor = f" {'*' if ascii_only else '×'} {readable(mimic.multiplier)}" if mimic.multiplier != 1 else ""
-        offset = f" {'-' if mimic.offset < 0 else '+'} {readable(abs(mimic.offset))}" if mimic.offset else ""
-        parts.append(f"mimics {mimic.joint}{factor}{offset}")
+        parts.append(mimic_text(joint, ascii_only))
     return parts
+
+
+def mimic_text(joint: Joint, ascii_only: bool = False) -> str:
+    """What a mimic joint follows: ``mimics joint_2 × -0.25 + 0.1``."""
+    mimic = joint.mimic
+    factor = f" {'*' if ascii_only else '×'} {readable(mimic.multiplier)}" if mimic.multiplier != 1 else ""
+    offset = f" {'-' if mimic.offset < 0 else '+'} {readable(abs(mimic.offset))}" if mimic.offset else ""
+    return f"mimics {mimic.joint}{factor}{offset}"
 
 
 # -- rows and summary -------------------------------------------------------------

@@ -542,6 +542,53 @@ def tag_unprefixed(loaded, given) -> Iterator[Diagnostic]:
         )
 
 
+@check("X108", "xacro-named-urdf", INFO, "A file named `.urdf` that is written in xacro, which URDF readers given the file read unexpanded.", kind=Kind.SOURCES, rule_set=RuleSet.LINT)
+def xacro_named_urdf(loaded, given) -> Iterator[Diagnostic]:
+    """## What it does
+    Notes a model whose file is named `.urdf` but uses xacro: a xacro element, or
+    `${...}` / `$(...)` in an attribute or text (a `xmlns:xacro` declaration alone is
+    not use). urdfcli expands it, as it does a `.xacro` file, and checks the expansion.
+    Info: the file is right when every reader expands it first (a launch file that runs
+    xacro on it).
+
+    ## Why is this bad?
+    A reader given the file itself does not expand it: `check_urdf`, PyBullet,
+    MuJoCo, Gazebo, a launch file that passes the file's text to
+    robot_state_publisher. They read `$(arg namespace)base_link` as a link's name,
+    and `<xacro:...>` elements as unknown markup; what they load is not what
+    urdfcli checked (and what `--target` predicts).
+
+    ## Example
+    A file `robot.urdf` (TurtleBot3's ROS 2 `.urdf` files read `$(arg namespace)` the same way):
+    ```xml
+    <robot name="r">
+      <link name="base_link">
+        <visual><geometry><mesh filename="$(find my_robot)/meshes/base.stl"/></geometry></visual>
+      </link>
+    </robot>
+    ```
+
+    ## Use instead
+    A URDF every reader reads as written; or the same text in `robot.urdf.xacro`, its
+    readers given its expansion (`xacro robot.urdf.xacro`, or `urdfcli expand`).
+    ```xml
+    <robot name="r">
+      <link name="base_link">
+        <visual><geometry><mesh filename="package://my_robot/meshes/base.stl"/></geometry></visual>
+      </link>
+    </robot>
+    ```
+    """
+    document = loaded.document
+    if not document.is_xacro or document.file is None or not document.file.name.endswith(".urdf") or not loaded.xacro_sources.files:
+        return
+    name = document.file.name
+    yield _diagnostic(
+        "X108", f"{name} is written in xacro: a URDF reader given the file itself (check_urdf, PyBullet, MuJoCo, Gazebo) reads its xacro markup unexpanded",
+        loaded.xacro_sources.files[0], Place(0), f"name it {name}.xacro, and give readers its expansion (urdfcli expand {name})",
+    )
+
+
 def unprefixed_calls(loaded) -> list:
     """The elements of the expansion (markup URDF does not define) named as a macro of the
     model's files: calls written without ``xacro:``, which xacro 2 copies unexpanded.
@@ -578,5 +625,5 @@ def _prefixed(file: XacroFile, old) -> Fix:
 
 
 __all__ = [
-    "argument_unused", "macro_name_fixed", "macro_unused", "name_undefined", "parameter_unused", "property_unused", "tag_unprefixed", "unprefixed_calls",
+    "argument_unused", "macro_name_fixed", "macro_unused", "name_undefined", "parameter_unused", "property_unused", "tag_unprefixed", "unprefixed_calls", "xacro_named_urdf",
 ]
