@@ -337,6 +337,17 @@ def test_xacro_found_by_content_expands_as_when_named_xacro(tmp_path):
     assert expanded("robot.urdf")[-2:] == ['<robot name="r">', "</robot>"]  # as xacro writes it, white space kept
 
 
+def test_links_all_cut_off_by_a_missing_parent_are_not_many_roots(tmp_path):
+    """A part read alone whose links all hang from a link its includer makes (Clearpath's
+    w200.urdf.xacro: four wheels on diff units its macro makes): the J005 says it, once."""
+    path = tmp_path / "wheels.urdf"
+    path.write_text('<robot name="r"><link name="left_wheel"/><link name="right_wheel"/>'
+                    '<joint name="left" type="fixed"><parent link="axle"/><child link="left_wheel"/></joint>'
+                    '<joint name="right" type="fixed"><parent link="axle"/><child link="right_wheel"/></joint></robot>')
+    done = run_cli("check", "--format", "json", str(path))
+    assert {d["code"] for d in json.loads(done.stdout)["files"][0]["diagnostics"]} == {"J005"}
+
+
 def test_a_link_cut_off_by_a_missing_parent_is_not_a_second_root(tmp_path):
     path = tmp_path / "cut.urdf"
     path.write_text('<robot name="r"><link name="base_link"/><link name="upper_arm"/><link name="forearm"/><link name="spare"/>'

@@ -247,6 +247,59 @@ def test_a_colcon_workspace_resolves_packages_across_repositories(tmp_path):
     assert done.returncode == 0 and report["files"][0]["checked_through"] == [str(model.relative_to(tmp_path))]
 
 
+def test_a_setup_folder_in_no_package_finds_the_packages_of_its_workspace(tmp_path):
+    """Clearpath's generated robot.urdf.xacro in a robot's setup folder (a repository of
+    its own, no package.xml) beside the description packages in ws/src: xacro in the
+    sourced workspace finds them, and their libraries are checked through it."""
+    _, repo_b = make_colcon_workspace(tmp_path)
+    setup = tmp_path / "ws" / "src" / "robot_setup"
+    (setup / ".git").mkdir(parents=True)
+    model = write(setup / "robot.urdf.xacro", f"""\
+        <robot name="r" {XACRO}>
+          <xacro:include filename="$(find acme_wheels)/urdf/wheel.xacro"/>
+          <link name="base_link"/>
+          <xacro:wheel prefix="left" parent="base_link" radius="0.1"><origin xyz="0 0 0"/></xacro:wheel>
+        </robot>
+        """)
+    done = run_cli("check", str(model), cwd=tmp_path)
+    assert done.returncode == 0, done.stderr.decode()
+    done, report = check_json(str(repo_b / "wheels/urdf/wheel.xacro"), cwd=tmp_path)
+    assert done.returncode == 0 and report["files"][0]["checked_through"] == [str(model.relative_to(tmp_path))]
+
+
+def test_a_part_whose_links_hang_from_its_includers_macro_is_a_fragment_of_the_model(tmp_path):
+    """Clearpath's w200.urdf.xacro makes the wheels outside its macro, on the diff units the
+    macro makes: read alone, every wheel hangs from a missing link. A model of another
+    package includes it and calls the macro: it is checked through that model."""
+    src = tmp_path / "ws" / "src"
+    (src / ".git").mkdir(parents=True)
+    write(src / "base" / "package.xml", package_xml("acme_base"))
+    write(src / "base" / "urdf" / "base.urdf.xacro", f"""\
+        <robot {XACRO}>
+          <xacro:macro name="base">
+            <link name="base_link"/>
+            <link name="axle"/>
+            <joint name="axle_joint" type="fixed"><parent link="base_link"/><child link="axle"/></joint>
+          </xacro:macro>
+          <link name="left_wheel"/>
+          <joint name="left_wheel_joint" type="fixed"><parent link="axle"/><child link="left_wheel"/></joint>
+          <link name="right_wheel"/>
+          <joint name="right_wheel_joint" type="fixed"><parent link="axle"/><child link="right_wheel"/></joint>
+        </robot>
+        """)
+    write(src / "robot" / "package.xml", package_xml("acme_robot", depends=("acme_base",)))
+    write(src / "robot" / "urdf" / "robot.urdf.xacro", f"""\
+        <robot name="r" {XACRO}>
+          <xacro:include filename="$(find acme_base)/urdf/base.urdf.xacro"/>
+          <xacro:base/>
+        </robot>
+        """)
+    done = run_cli("lint", "src", cwd=tmp_path / "ws")
+    out = done.stdout.decode()
+    assert done.returncode == 0, out
+    assert "base/urdf/base.urdf.xacro: fragment, checked through src/robot/urdf/robot.urdf.xacro" in out
+
+
 def test_a_workspace_kept_as_a_repository_finds_the_packages_of_the_workspace_it_is_cloned_into(tmp_path):
     # A cell whose repository is a workspace of its own (cell/src/cell_description), cloned
     # beside the vendor's repository: colcon builds both, so $(find acme_wheels) resolves.

@@ -177,20 +177,19 @@ def search_roots(file: Path, packages: PackageIndex) -> tuple[list[Path], bool]:
     them: those the package resolver searches for its siblings (repository,
     workspace ``src/``); for a package in neither, the package alone (the folder
     holding it may be /tmp or a venv's share/: nothing says its other files belong
-    with it); for a file in no package, the repository holding it, else its own folder alone."""
+    with it); for a file in no package, those the package resolver searches for it
+    (the repository holding it, a workspace ``src/``), else its own folder alone."""
     package = packages.enclosing_package(file.parent)
-    if package is not None:
-        roots = packages.local_roots(package)
-        if roots == [package.parent] and package.parent.name != "src" and not (package.parent / ".git").exists():
-            return [package], True
-        # A repository in a folder named src (~/src/my_robot) is searched beyond only
-        # when that src is a ROS workspace's: the package look-up widens only when it
-        # must, a search for models would read every file there on every commit.
-        return [r for r in roots if r == roots[0] or _workspace_src(r)], True
-    for folder in file.parents:
-        if (folder / ".git").exists():
-            return [folder], True
-    return [file.parent], False
+    if package is None:
+        roots = [root for root in packages.loose_roots(file.parent) if root.name != "src" or _workspace_src(root)]
+        return (roots, True) if roots else ([file.parent], False)
+    roots = packages.local_roots(package)
+    if roots == [package.parent] and package.parent.name != "src" and not (package.parent / ".git").exists():
+        return [package], True
+    # A repository in a folder named src (~/src/my_robot) is searched beyond only
+    # when that src is a ROS workspace's: the package look-up widens only when it
+    # must, a search for models would read every file there on every commit.
+    return [r for r in roots if r == roots[0] or _workspace_src(r)], True
 
 
 _WORKSPACE_MARKS = ("build", "install", "log", "devel", ".catkin_workspace", ".catkin_tools", "colcon.meta")

@@ -10,7 +10,9 @@ did not have the package:
    colcon workspace the input is in;
 4. the package holding the input file;
 5. its siblings in the repository (the nearest folder above it holding
-   ``.git``), or in the workspace ``src/`` folder when that comes first;
+   ``.git``), or in the workspace ``src/`` folder when that comes first (for a
+   file in no package, such as a robot's setup folder in ``ws/src/``, the
+   packages of the repository or workspace ``src/`` holding it);
 6. then, when that repository sits inside a workspace ``src/`` folder (each
    repository cloned into ``ws/src/``, as ``vcs import`` lays them out, or a
    repository that is a workspace of its own, ``ws/src/cell/src/pkg``), the
@@ -140,6 +142,15 @@ class PackageIndex:
         if package_dir not in self._roots:
             self._roots[package_dir] = _local_roots(package_dir)
         return list(self._roots[package_dir])
+
+    def loose_roots(self, folder: Path) -> list[Path]:
+        """For a file in no package, in ``folder``: the folders whose packages it finds as a
+        package's file there would, the repository or workspace ``src`` holding it (a robot's
+        setup folder beside the packages in ``ws/src``); none when it is in neither."""
+        key = folder / "package.xml"  # (a key no package folder has)
+        if key not in self._roots:
+            self._roots[key] = _roots_above([folder, *folder.parents])
+        return list(self._roots[key])
 
     def resolver(self, options: Iterable[str] = (), input_file: Path | None = None, fallback: PackageResolver | None = None) -> PackageResolver:
         return PackageResolver(options, input_file, index=self, fallback=fallback)
@@ -306,9 +317,11 @@ def _installable(source: tuple[str, ...], written: tuple[str, ...]) -> bool:
     return not (shared < len(source) and shared < len(written) and source[0] == written[0])
 
 
-def _local_roots(package_dir: Path) -> list[Path]:
+def _roots_above(folders: Iterable[Path]) -> list[Path]:
+    """The repository root or workspace ``src`` among ``folders`` (a folder and those above
+    it), whichever comes first, then a workspace ``src`` above that repository."""
     roots: list[Path] = []
-    for folder in package_dir.parents:
+    for folder in folders:
         if folder.name == "src":
             roots.append(folder)
             break
@@ -318,6 +331,11 @@ def _local_roots(package_dir: Path) -> list[Path]:
         # a workspace kept as a repository (repo/src/pkg), cloned into another workspace's
         # src/: colcon builds the packages of both, as it would those of repositories beside it
         roots += [outer for outer in roots[0].parent.parents if outer.name == "src"][:1]
+    return roots
+
+
+def _local_roots(package_dir: Path) -> list[Path]:
+    roots = _roots_above(package_dir.parents)
     if roots:
         return roots
     # a repository that is one package, in no workspace: the folder holding it holds
@@ -369,7 +387,9 @@ class PackageResolver:
 
     @cached_property
     def _local_roots(self) -> list[Path]:
-        return self.index.local_roots(self._own) if self._own else []
+        if self._own is not None:
+            return self.index.local_roots(self._own)
+        return self.index.loose_roots(self.index.real_path(self._input_file).parent) if self._input_file else []
 
     @cached_property
     def _workspace_source(self) -> Path | None:
@@ -469,13 +489,12 @@ class PackageResolver:
             share = prefix / "share" / name
             if share.is_dir() or (prefix / AMENT_INDEX / name).is_file():
                 return share
-        if self._own is not None:
-            if self.index.package_name(self._own / "package.xml") == name:
-                return self._own
-            for root in self._local_roots:  # the repository first, the whole workspace only when needed
-                self._scan_into_cache(root)
-                if name in self._found:
-                    break
+        if self._own is not None and self.index.package_name(self._own / "package.xml") == name:
+            return self._own
+        for root in self._local_roots:  # the repository first, the whole workspace only when needed
+            self._scan_into_cache(root)
+            if name in self._found:
+                break
         found = self._found.get(name)
         return found if found is not None or self.fallback is None else self.fallback.find(name)
 

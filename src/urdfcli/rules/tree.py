@@ -160,11 +160,12 @@ def kinematic_loop(loaded, given):
 
 def _roots(loaded) -> list[str]:
     """The links with no parent; a link whose joint names a missing parent is cut off by
-    that J005 alone, not a second root."""
+    that J005 alone, not a second root (nor, when every one is, are they many roots: a
+    part whose includer gives the links it hangs from, read alone)."""
     robot = loaded.robot
     links = robot.links
     cut_off = {j.child for j in dangling(loaded) if j.parent is not None and j.parent not in links}
-    return [root for root in roots(robot) if root not in cut_off] or roots(robot)
+    return [root for root in roots(robot) if root not in cut_off]
 
 
 @check("T001", "multiple-roots", ERROR, "More than one link has no parent.", urdfdom=True, kind=Kind.TREE)
@@ -225,5 +226,5 @@ def no_root(loaded, given):
     ```
     """
     robot = loaded.robot
-    if robot.links and not _roots(loaded):
+    if robot.links and not roots(robot):
         yield loaded.diagnostic("T002", "every link has a parent, so there is no root link", robot.at, "the joints form a loop")
