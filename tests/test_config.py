@@ -350,6 +350,37 @@ def test_models_are_checked_once_per_argument_set(tmp_path):
     assert "==> " in done.stdout.decode() and "[arm_type:=large] <==" in done.stdout.decode()
 
 
+def test_command_line_arguments_choose_among_the_configured_sets(tmp_path):
+    # one file per arm chosen by robot_model, as Interbotix's interbotix_arm.urdf.xacro does
+    model = write(tmp_path, "pkg/urdf/arm.urdf.xacro", """\
+        <robot name="arm" xmlns:xacro="http://ros.org/wiki/xacro">
+          <xacro:arg name="robot_model" default="small"/>
+          <xacro:arg name="world" default="false"/>
+          <link name="$(arg robot_model)_base"/>
+          <xacro:if value="$(arg world)">
+            <link name="world"/>
+            <joint name="fixed" type="fixed"><parent link="world"/><child link="$(arg robot_model)_base"/></joint>
+          </xacro:if>
+        </robot>
+        """)
+    write(tmp_path, "pyproject.toml", '[tool.urdfcli]\nmodels = { "pkg/urdf/arm.urdf.xacro" = [["robot_model:=small", "world:=true"], ["robot_model:=large"]] }\n')
+
+    def runs(*arguments):
+        done = run_cli("check", "--format", "json", str(model), *arguments)
+        return [f["arguments"] for f in json.loads(done.stdout)["files"]]
+
+    # the set that agrees with what is given, not every set with the given value ignored
+    assert runs("robot_model:=large") == [{"robot_model": "large"}]
+    # an argument no set gives applies to each
+    assert runs("world:=true") == [{"robot_model": "small", "world": "true"}, {"robot_model": "large", "world": "true"}]
+    # none agrees: the model is checked once, with what is given
+    assert runs("robot_model:=medium") == [{"robot_model": "medium"}]
+    assert runs() == [{"robot_model": "small", "world": "true"}, {"robot_model": "large"}]
+    # a model read once (tree, expand) takes the first set that agrees, not the first set
+    tree = run_cli("tree", str(model), "robot_model:=large").stdout.decode()
+    assert tree.splitlines()[0] == "large_base"
+
+
 @pytest.mark.parametrize(
     ("text", "message"),
     [

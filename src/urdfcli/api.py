@@ -35,7 +35,7 @@ from .project import fixing, linter
 from .project.compatibility import verdicts
 from .project.config import Config, ConfigError
 from .project.semantic import described, describing
-from .project.workspace import LIBRARY_SUFFIXES, Aside, Entry, Models, Target, assemble, fragment_includers, model_targets, models_below, plan, search_roots, unchecked_library, unread, xacro_sources
+from .project.workspace import LIBRARY_SUFFIXES, Aside, Entry, Models, Target, asked, assemble, fragment_includers, model_targets, models_below, plan, search_roots, unchecked_library, unread, xacro_sources
 from .read.document import STDIN, Document, InputError, read_document
 from .read.files import STDIN_NAME
 from .read.xacro_scan import shown
@@ -164,6 +164,7 @@ def run(paths: list[str], session: Session, progress: Progress | None = None, as
             entries += _semantic_entries(entries, session, config_for)
     except PackageError as error:
         raise UsageError(str(error)) from None
+    entries = [entry._replace(targets=asked(entry.targets, session.options.mappings)) for entry in entries]
     targets = list(dict.fromkeys(t for entry in entries for t in entry.targets))
     done = dict(zip(targets, _outcomes(targets, session, progress)))
     total = len(targets)
@@ -326,7 +327,7 @@ def model_arguments(path: str, session: Session) -> dict[str, str]:
     models`` lists for it, and those of the command line over both (``check panda.srdf
     --urdf panda_arm.urdf.xacro hand:=true``). Raises UsageError for a broken configuration."""
     config = configured(session)(path)
-    return {**config.model_mappings(path), **session.options.mappings}
+    return {**config.model_mappings(path, session.options.mappings), **session.options.mappings}
 
 
 def _load_urdf(session: Session, path: str, arguments: dict[str, str]) -> Loaded | str:

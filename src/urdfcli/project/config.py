@@ -133,10 +133,11 @@ class Config(NamedTuple):
                 mappings.update(values)
         return mappings
 
-    def model_mappings(self, file: str) -> dict[str, str]:
+    def model_mappings(self, file: str, given: dict[str, str] | None = None) -> dict[str, str]:
         """The xacro arguments of a model read once (expanded, drawn, compared): those
-        ``xacro-args`` gives it, and over them the first set ``models`` lists for it."""
-        return {**self.mappings_for(file), **((self.argument_sets(file) or [{}])[0])}
+        ``xacro-args`` gives it, and over them the first set ``models`` lists for it that
+        agrees with ``given``, the command line's (see :func:`agreeing`)."""
+        return {**self.mappings_for(file), **(agreeing(self.argument_sets(file) or [{}], given or {}) or [{}])[0]}
 
     def argument_sets(self, file: str) -> list[dict[str, str]] | None:
         """The argument sets ``models`` lists for a model, None when it is not listed."""
@@ -162,6 +163,13 @@ class Config(NamedTuple):
         except (ValueError, OSError):
             return False
         return fnmatchcase(relative, pattern)
+
+
+def agreeing(sets: list[dict[str, str]], given: dict[str, str]) -> list[dict[str, str]]:
+    """The argument sets of a model that give no argument another value than the command
+    line does: ``check arm.urdf.xacro robot_model:=wx250s`` is asking for the wx250s arm
+    of those ``models`` lists for Interbotix's one file of every arm, not for each arm."""
+    return [s for s in sets if all(s.get(name, value) == value for name, value in given.items())]
 
 
 # -- selectors -------------------------------------------------------------------

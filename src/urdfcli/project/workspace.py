@@ -58,6 +58,7 @@ from ..rules.structure import X004 as PACKAGE_NOT_FOUND
 from ..rules.tree import joint_link_not_found
 from ..rules.suppression import U001 as UNUSED_SUPPRESSION
 from ..model.result import Library, Result, Unreadable
+from .config import agreeing
 
 XACRO_SUFFIXES = (".xacro", ".urdf", ".srdf")
 _SUBSTITUTION = re.compile(r"\$\(\s*(\w+)\s*([^()]*?)\s*\)|\$\{\s*([A-Za-z_]\w*)\s*\}")
@@ -632,6 +633,21 @@ def unread(aside: tuple[Aside, ...], results: list[Result], shown: list[Result] 
 
 def model_targets(path: str, argument_sets: list[dict[str, str]] | None) -> list[Target]:
     return [Target(path, tuple(arguments.items())) for arguments in (argument_sets or [{}])]
+
+
+def asked(targets: list[Target], given: dict[str, str]) -> list[Target]:
+    """The runs that the command line's arguments ask for: of each model, the runs whose
+    argument set agrees with them (see :func:`~urdfcli.project.config.agreeing`), with them
+    added, or, when none does, one run with them alone. A library on its own keeps its run."""
+    if not given:
+        return targets
+    kept: list[Target] = []
+    for path in dict.fromkeys(target.path for target in targets):
+        runs = [target for target in targets if target.path == path]
+        fitting = [run for run in runs if run.alone or agreeing([dict(run.arguments)], given)]
+        chosen = fitting or [runs[0]._replace(arguments=())]
+        kept += [run if run.alone else run._replace(arguments=tuple({**dict(run.arguments), **given}.items())) for run in chosen]
+    return list(dict.fromkeys(kept))
 
 
 def plan(paths: list[str], config_for, package_paths: tuple[str, ...] = (), packages: PackageIndex | None = None, files: SourceFiles | None = None) -> list[Entry]:
