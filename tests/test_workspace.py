@@ -228,18 +228,18 @@ def test_a_library_its_models_include_only_with_an_argument_is_a_gap_the_models_
     assert done.returncode == 1 and "J005" in [d["code"] for d in report["files"][0]["diagnostics"]]  # its joint names no link "hand"
 
 
-def test_a_colcon_workspace_resolves_packages_across_repositories(tmp_path):
-    repo_a, repo_b = make_colcon_workspace(tmp_path)
-    model = write(
-        repo_a / "robot" / "urdf" / "robot.urdf.xacro",
-        f"""\
+ONE_WHEEL = f"""\
         <robot name="r" {XACRO}>
           <xacro:include filename="$(find acme_wheels)/urdf/wheel.xacro"/>
           <link name="base_link"/>
           <xacro:wheel prefix="left" parent="base_link" radius="0.1"><origin xyz="0 0 0"/></xacro:wheel>
         </robot>
-        """,
-    )
+        """  # a model of one workspace package calling a macro of another (make_colcon_workspace's acme_wheels)
+
+
+def test_a_colcon_workspace_resolves_packages_across_repositories(tmp_path):
+    repo_a, repo_b = make_colcon_workspace(tmp_path)
+    model = write(repo_a / "robot" / "urdf" / "robot.urdf.xacro", ONE_WHEEL)
     done = run_cli("check", str(model), cwd=tmp_path)
     assert done.returncode == 0, done.stderr.decode()
     # and a library of repo_b is checked through the model in repo_a
@@ -254,13 +254,7 @@ def test_a_setup_folder_in_no_package_finds_the_packages_of_its_workspace(tmp_pa
     _, repo_b = make_colcon_workspace(tmp_path)
     setup = tmp_path / "ws" / "src" / "robot_setup"
     (setup / ".git").mkdir(parents=True)
-    model = write(setup / "robot.urdf.xacro", f"""\
-        <robot name="r" {XACRO}>
-          <xacro:include filename="$(find acme_wheels)/urdf/wheel.xacro"/>
-          <link name="base_link"/>
-          <xacro:wheel prefix="left" parent="base_link" radius="0.1"><origin xyz="0 0 0"/></xacro:wheel>
-        </robot>
-        """)
+    model = write(setup / "robot.urdf.xacro", ONE_WHEEL)
     done = run_cli("check", str(model), cwd=tmp_path)
     assert done.returncode == 0, done.stderr.decode()
     done, report = check_json(str(repo_b / "wheels/urdf/wheel.xacro"), cwd=tmp_path)
