@@ -558,17 +558,23 @@ def test_an_srdf_whose_own_urdf_needs_arguments_is_not_checked_against_another_v
     assert document["files"][0]["checked_against"] == "cell/cell_description/urdf/cell.urdf.xacro"
 
 
+def robot_and_moveit_config(root, robot: str, models: str, config: str, depends: bool = True):
+    """A robot package (its models in ``models/``) and a MoveIt config package beside it under
+    ``root`` (its SRDF in ``config/``), whose package.xml depends on the robot's unless not
+    ``depends``: the two package folders."""
+    (root / robot / models).mkdir(parents=True)
+    (root / config / "config").mkdir(parents=True)
+    (root / robot / "package.xml").write_text(f'<package format="3"><name>{robot}</name></package>\n')
+    depend = f"<exec_depend>{robot}</exec_depend>" if depends else ""
+    (root / config / "package.xml").write_text(f'<package format="3"><name>{config}</name>{depend}</package>\n')
+    return root / robot, root / config
+
 def test_a_moveit_1_setup_assistant_file_with_its_keys_in_capitals_names_the_urdf(tmp_path):
     """MoveIt 1's Setup Assistant writes URDF: and SRDF: in capitals. abb_irb6640_moveit_config's
     SRDF says robot 'abb_irb6640', the model it names says 'abb_irb6640_185_280', and no file is
     named as the SRDF: the SRDF is checked against that model, with a warning on the names and
     on the link of its <disable_collisions> that the model lacks."""
-    src = tmp_path / "src"
-    robot, config = src / "abb_irb6640_support", src / "abb_irb6640_moveit_config"
-    (robot / "urdf").mkdir(parents=True)
-    (config / "config").mkdir(parents=True)
-    (robot / "package.xml").write_text("<package><name>abb_irb6640_support</name></package>\n")
-    (config / "package.xml").write_text("<package><name>abb_irb6640_moveit_config</name></package>\n")
+    robot, config = robot_and_moveit_config(tmp_path / "src", "abb_irb6640_support", "urdf", "abb_irb6640_moveit_config", depends=False)
     (robot / "urdf" / "irb6640_185_280.xacro").write_text(
         '<robot name="abb_irb6640_185_280" xmlns:xacro="http://ros.org/wiki/xacro">\n  <link name="base_link"/><link name="tool0"/>\n'
         '  <joint name="joint_1" type="continuous"><parent link="base_link"/><child link="tool0"/></joint>\n</robot>\n')
@@ -591,11 +597,7 @@ def test_the_argument_set_models_lists_for_an_srdf_is_its_urdfs_too(tmp_path):
     are missing (K001); the SRDF's argument set in [tool.urdfcli] models is its URDF's too,
     as arguments given after it on the command line are, and then it checks clean."""
     (tmp_path / ".git").mkdir()
-    robot, config = tmp_path / "arm_description", tmp_path / "arm_moveit_config"
-    (robot / "robots").mkdir(parents=True)
-    (config / "config").mkdir(parents=True)
-    (robot / "package.xml").write_text("<package format=\"3\"><name>arm_description</name></package>\n")
-    (config / "package.xml").write_text("<package format=\"3\"><name>arm_moveit_config</name><exec_depend>arm_description</exec_depend></package>\n")
+    robot, config = robot_and_moveit_config(tmp_path, "arm_description", "robots", "arm_moveit_config")
     (robot / "robots" / "arm.xacro").write_text(
         '<robot name="arm" xmlns:xacro="http://www.ros.org/wiki/xacro">\n  <xacro:arg name="dof" default="7"/>\n'
         '  <link name="base"/><link name="tip"/>\n'
