@@ -617,3 +617,34 @@ def test_the_argument_set_models_lists_for_an_srdf_is_its_urdfs_too(tmp_path):
     (tmp_path / "pyproject.toml").write_text(f'[tool.urdfcli]\nmodels = {{ "{srdf}" = [["dof:=6"]] }}\n')
     done, document = check(srdf, cwd=tmp_path)
     assert (done.returncode, found(document)) == (0, [])
+
+
+def test_a_name_the_urdf_lacks_is_said_once_with_the_number_of_elements_giving_it(tmp_path):
+    """ros_kortex's 6-dof SRDF checked against the 7-dof arm: 'bicep_link' is in several
+    <disable_collisions> pairs, each beside another link. One diagnostic per missing name, at
+    the first element giving it (a group's before a pair's), counting the others; its hint
+    the same whichever pair comes first (no partner of the name is the link meant)."""
+    (tmp_path / "arm.urdf").write_text(
+        '<robot name="arm"><link name="base_link"/><link name="forearm_link"/><link name="bracelet_link"/>'
+        '<joint name="j1" type="continuous"><parent link="base_link"/><child link="forearm_link"/></joint>'
+        '<joint name="j2" type="continuous"><parent link="forearm_link"/><child link="bracelet_link"/></joint></robot>\n')
+    (tmp_path / "arm.srdf").write_text(
+        '<robot name="arm">\n  <group name="arm"><chain base_link="base_link" tip_link="bracelet_link"/></group>\n'
+        '  <group name="wrist"><link name="wrist_link"/></group>\n'
+        '  <group_state name="home" group="arm"><joint name="j3" value="0"/></group_state>\n'
+        '  <group_state name="up" group="arm"><joint name="j3" value="1"/></group_state>\n'
+        '  <disable_collisions link1="base_link" link2="bicep_link" reason="Never"/>\n'
+        '  <disable_collisions link1="bicep_link" link2="forearm_link" reason="Adjacent"/>\n'
+        '  <disable_collisions link1="bracelet_link" link2="bicep_link" reason="Never"/>\n'
+        '  <disable_collisions link1="wrist_link" link2="forearm_link" reason="Never"/>\n</robot>\n')
+    done, document = check("arm.srdf", "--urdf", "arm.urdf", cwd=tmp_path)
+    assert done.returncode == 1
+    assert [(d["code"], d["severity"], d["line"], d["message"], d["hint"]) for d in document["files"][0]["diagnostics"]] == [
+        ("K001", "error", 3, "group 'wrist' names link 'wrist_link', which arm.urdf does not have (and in 1 <disable_collisions>)", "did you mean 'base_link'?"),
+        ("K002", "error", 4, "group state 'home' names joint 'j3', which arm.urdf does not have (and in group state 'up')",
+         "use a joint of arm.urdf, or check that the SRDF is for this robot"),
+        ("K001", "warning", 6, "<disable_collisions> names link 'bicep_link', which arm.urdf does not have (and in 2 more <disable_collisions>)",
+         "use a link of arm.urdf, or check that the SRDF is for this robot"),
+    ]
+    concise = run_cli("check", "--format", "concise", "arm.srdf", "--urdf", "arm.urdf", cwd=tmp_path).stdout.decode()
+    assert concise.count("'bicep_link'") == 1 and concise.count("'j3'") == 1, concise

@@ -182,8 +182,7 @@ STYLES = {"error": "bold red", "warning": "yellow", "info": "cyan"}
 def alike_as_one(diagnostics: list[Diagnostic]) -> list[tuple[Diagnostic, list[int]]]:
     """Each diagnostic with the other lines of its file where the very same is said (its
     code, message and hint), shown once, at the first: a habit (an exporter's ``iyx`` on
-    every ``<inertia>``) or one cause (an SRDF's 42 collision pairs of a link the URDF
-    lost) read as one. Those with a fix to apply stay apart: each says its own."""
+    every ``<inertia>``) read as one. Those with a fix to apply stay apart: each says its own."""
     groups: dict[object, tuple[Diagnostic, list[int]]] = {}
     for number, diagnostic in enumerate(diagnostics):
         fixable = diagnostic.fix is not None and diagnostic.fix.available

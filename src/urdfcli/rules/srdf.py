@@ -17,7 +17,7 @@ from typing import TYPE_CHECKING
 
 from ..diagnostics import Diagnostic
 from ..model.kinematics import bodies
-from .base import ERROR, INFO, WARNING, Given, Kind, check, declare, explain
+from .base import ERROR, INFO, WARNING, Given, Kind, check, declare, explain, joined
 from .suggestions import close_matches
 
 if TYPE_CHECKING:
@@ -46,11 +46,43 @@ def _against(loaded: Loaded):
     return described.robot
 
 
-def _missing(loaded: Loaded, code: str, kind: str, named: Named, known, what: str, beside: str | None = None) -> Diagnostic:
-    """``beside``: the other name of a pair, never the one meant (a link does not collide with itself)."""
-    close = close_matches(named.name, [name for name in known if name != beside])
-    hint = f"did you mean '{close[0]}'?" if close else f"use a {kind} of {loaded.described.path}, or check that the SRDF is for this robot"
-    return loaded.diagnostic(code, f"{what} names {kind} '{named.name}', which {loaded.described.path} does not have", named.at, hint, attribute=named.attribute, subjects=(named.name,))
+PAIR = "<disable_collisions>"  # what names the links of a collision pair
+
+
+def _missing_once(loaded: Loaded, code: str, kind: str, named: list[tuple[str, Named]], known, pairs=()) -> Iterator[Diagnostic]:
+    """Each name of a ``kind`` the URDF lacks, said once (one cause, however many elements
+    give it): at the first element naming it, one of ``named`` before a collision pair of
+    ``pairs`` (``(link, other)``: a warning when only pairs name it), counting the others.
+    The hint is the same wherever the name is: the URDF's closest name, but those the name is
+    paired with (a link does not collide with itself, so none of them is the one meant)."""
+    uses: dict[str, list[tuple[str, Named]]] = {}
+    ordered = sorted(named, key=lambda use: use[1].at) + sorted(((PAIR, link) for link, _ in pairs), key=lambda use: use[1].at)
+    for what, name in ordered:
+        if name.name not in known:
+            uses.setdefault(name.name, []).append((what, name))
+    partners: dict[str, set[str]] = {}
+    for link, other in pairs:
+        partners.setdefault(link.name, set()).add(other.name)
+    for name, found in uses.items():
+        what, first = found[0]
+        close = close_matches(name, [k for k in known if k not in partners.get(name, ())])
+        hint = f"did you mean '{close[0]}'?" if close else f"use a {kind} of {loaded.described.path}, or check that the SRDF is for this robot"
+        diagnostic = loaded.diagnostic(
+            code, f"{what} names {kind} '{name}', which {loaded.described.path} does not have{_elsewhere(found)}",
+            first.at, hint, attribute=first.attribute, subjects=(name,),
+        )
+        yield diagnostic._replace(severity=WARNING) if what == PAIR else diagnostic
+
+
+def _elsewhere(found: list[tuple[str, Named]]) -> str:
+    """`` (and in group 'hand' and 5 <disable_collisions>)``: the other elements that give a
+    name said once at the first of ``found`` (a pair naming it twice is one)."""
+    what, first = found[0]
+    others = list(dict.fromkeys(w for w, _ in found[1:] if w not in (what, PAIR)))
+    pairs = len({name.at for w, name in found if w == PAIR} - {first.at})
+    parts = others if len(others) <= 4 else [*others[:3], f"{len(others) - 3} more"]
+    parts += [f"{pairs}{' more' if what == PAIR else ''} {PAIR}"] if pairs else []
+    return f" (and in {joined(parts)})" if parts else ""
 
 
 @check(
@@ -60,9 +92,11 @@ def _missing(loaded: Loaded, code: str, kind: str, named: Named, known, what: st
         Finds each link an SRDF names that the URDF of its robot does not have:
         in a group (`<link>`, a chain's `base_link` and `tip_link`), an end
         effector's `parent_link`, a virtual joint's `child_link` and a
-        `<disable_collisions>` pair. A pair is a warning: MoveIt logs it and goes
-        on (a link the URDF lacks collides with nothing; a typo leaves the two
-        links meant checked).
+        `<disable_collisions>` pair. Each missing link is said once, where it is
+        first named (a group, end effector or virtual joint before a pair), with
+        how many more elements name it. Named by pairs only, it is a warning:
+        MoveIt logs it and goes on (a link the URDF lacks collides with nothing;
+        a typo leaves the two links meant checked).
         """,
         """
         MoveIt's SRDF reader logs the unknown name and drops what holds it: the
@@ -81,13 +115,8 @@ def unknown_link(loaded: Loaded, given: Given) -> Iterator[Diagnostic]:
     if robot is None:
         return
     links = robot.links
-    for what, link in loaded.semantic.named_links():
-        if link.name not in links:
-            yield _missing(loaded, "K001", "link", link, links, what)
-    for pair in loaded.semantic.disabled:
-        for link, other in (pair, pair[::-1]):
-            if link.name not in links:
-                yield _missing(loaded, "K001", "link", link, links, "<disable_collisions>", other.name)._replace(severity=WARNING)
+    pairs = [(link, other) for pair in loaded.semantic.disabled for link, other in (pair, pair[::-1])]
+    yield from _missing_once(loaded, "K001", "link", loaded.semantic.named_links(), links, pairs)
 
 
 @check(
@@ -99,7 +128,8 @@ def unknown_link(loaded: Loaded, given: Given) -> Iterator[Diagnostic]:
         name is the SRDF's own and counts as a joint, and so does a group state's
         joint given seven values (a position and a quaternion): the floating base
         a loader adds, as Pinocchio's `root_joint` (its SRDFs set it without a
-        virtual joint).
+        virtual joint). Each missing joint is said once, where it is first named,
+        with how many more elements name it.
         """,
         """
         MoveIt logs the unknown joint and leaves it out: the group lacks a degree
@@ -115,9 +145,7 @@ def unknown_joint(loaded: Loaded, given: Given) -> Iterator[Diagnostic]:
     if robot is None:
         return
     joints = set(robot.joints) | loaded.semantic.own_joints
-    for what, joint in loaded.semantic.named_joints():
-        if joint.name not in joints:
-            yield _missing(loaded, "K002", "joint", joint, joints, what)
+    yield from _missing_once(loaded, "K002", "joint", loaded.semantic.named_joints(), joints)
 
 
 @check(
