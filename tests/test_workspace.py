@@ -4,6 +4,7 @@ models a library is checked through, and $(find) across a colcon workspace."""
 from __future__ import annotations
 
 import json
+import re
 import shutil
 import textwrap
 from pathlib import Path
@@ -293,6 +294,33 @@ def test_a_part_whose_links_hang_from_its_includers_macro_is_a_fragment_of_the_m
     assert done.returncode == 0, out
     assert "base/urdf/base.urdf.xacro: fragment, checked through src/robot/urdf/robot.urdf.xacro" in out
 
+
+
+def test_a_fragment_with_a_mistake_of_its_own_is_still_checked_through_its_models(tmp_path):
+    """A part without a robot name (R002 alone) whose mass a user typed negative: the
+    negative mass is said through the models that include it, not beside a false "no
+    name" on the part read alone; so is what a target says of the whole model."""
+    package = tmp_path / "grip"
+    write(package / "package.xml", package_xml("grip"))
+    write(package / "urdf" / "hand.xacro", f"""\
+        <robot {XACRO}>
+          <link name="palm"><inertial><mass value="-0.4"/><inertia ixx="1e-4" ixy="0" ixz="0" iyy="1e-4" iyz="0" izz="1e-4"/></inertial></link>
+          <link name="finger"/>
+          <joint name="finger_joint" type="fixed"><parent link="palm"/><child link="finger"/></joint>
+        </robot>
+        """)
+    for name in ("left", "right"):
+        write(package / "urdf" / f"{name}.urdf.xacro", f"""\
+            <robot name="{name}" {XACRO}>
+              <xacro:include filename="$(find grip)/urdf/hand.xacro"/>
+            </robot>
+            """)
+    done = run_cli("lint", "--format", "concise", "urdf/hand.xacro", cwd=package)
+    out = (done.stdout + done.stderr).decode()
+    assert done.returncode == 1, out
+    assert "R002" not in out
+    assert "urdf/hand.xacro: fragment, checked through urdf/left.urdf.xacro, urdf/right.urdf.xacro" in out
+    assert re.search(r"urdf/hand.xacro:2:\d+: I001 error: .*found through model urdf/left.urdf.xacro", out), out
 
 def test_a_workspace_kept_as_a_repository_finds_the_packages_of_the_workspace_it_is_cloned_into(tmp_path):
     # A cell whose repository is a workspace of its own (cell/src/cell_description), cloned

@@ -887,10 +887,10 @@ def assemble(
     result or the one-line reason it could not be read. A diagnostic
     located in another file than the result's own, already shown for an
     earlier result, is not shown again: a library shared by three models
-    reports its mistakes once. A xacro model whose errors are those of a missing
+    reports its mistakes once. A xacro model with an error of a missing
     context (:data:`MISSING_CONTEXT`) is asked ``includers(path)``: when other
     models include it, it is a fragment of them, and is checked through them
-    instead (its missing context is no mistake). ``generated_from(path)`` names the
+    instead (its missing context is no mistake; its own mistakes are found there too). ``generated_from(path)`` names the
     xacro source a generated URDF was made from: what a model reading that source
     found is not said again at the copy. ``real_path`` is ``Path.resolve``, or the
     session's, which asks the disk once a file.
@@ -909,15 +909,16 @@ def assemble(
                 if isinstance(result, Unreadable):
                     unreadable.append(result)
                     continue
-                missing = result.errors and all(d.code in MISSING_CONTEXT for d in result.errors)
+                missing = any(d.code in MISSING_CONTEXT for d in result.errors)
                 through = includers(entry.path) if missing else []
                 # a model of this run whose expansion read it (an include the search could not follow)
                 read_by = [] if through or not missing or not part_of_model(entry.path) else readers(entry.path)
-                if through or read_by:  # a fragment: its errors alone are its missing context
+                if through or read_by:  # a fragment: read where its context is given
                     fragment = entry._replace(targets=through or read_by, library=True)
                     results.append(_library_result(fragment, outcome, shown_keys, unreadable, resolved, fragment=True, theirs=bool(read_by)))
                     break
-                if missing and any(d.code in UNDEFINED or d.code == structure.R004.code for d in result.errors) and entry.path.endswith(".xacro") and fragment_shaped(entry.path):
+                only_missing = missing and all(d.code in MISSING_CONTEXT for d in result.errors)  # else its own mistakes are said
+                if only_missing and any(d.code in UNDEFINED or d.code == structure.R004.code for d in result.errors) and entry.path.endswith(".xacro") and fragment_shaped(entry.path):
                     # a xacro part nothing here includes: a name or a link its includer gives is missing, or it makes no link at all
                     # (an empty plain URDF nothing includes is a robot that failed, as check_urdf says: example-robot-data's ur3.urdf)
                     why = next((d.message for d in result.errors if d.code in UNDEFINED), "it makes no link")
