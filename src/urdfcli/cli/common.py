@@ -203,7 +203,8 @@ def deleted_by_change() -> tuple[str, ...]:
     from ..read.revision import deleted_files
 
     between = (os.environ.get("PRE_COMMIT_FROM_REF", ""), os.environ.get("PRE_COMMIT_TO_REF", ""))
-    return tuple(str(file) for file in deleted_files(Path.cwd(), between if all(between) else None))
+    # only what a model can include as a description: a commit deleting scripts or meshes asks nothing more
+    return tuple(str(file) for file in deleted_files(Path.cwd(), between if all(between) else None) if file.suffix in (".urdf", ".xacro"))
 
 
 @contextlib.contextmanager
