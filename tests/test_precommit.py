@@ -3,6 +3,7 @@ flagged model, and real `git commit`s through installed hooks on a ROS descripti
 
 from __future__ import annotations
 
+import json
 import os
 import re
 import shutil
@@ -10,11 +11,12 @@ import subprocess
 
 import pytest
 import yaml
-from conftest import ROOT, require_tool
+from conftest import ROOT, require_tool, run_cli
 from generated_repos import generate, kuka_package
 from ros_workspace import edit, line_of, make_repository, moveit_repository
 
 from urdfcli.project.drift import regenerated
+from urdfcli.read.revision import deleted_files
 
 HOOKS = yaml.safe_load((ROOT / ".pre-commit-hooks.yaml").read_text())
 CLEAN = '<robot name="r">\n  <link name="base_link"/>\n</robot>\n'
@@ -27,9 +29,11 @@ FLAGGED = (  # warnings only: lint fails, check passes
 def test_hooks_are_declared_as_documented():
     by_id = {hook["id"]: hook for hook in HOOKS}
     assert set(by_id) == {"urdfcli-check", "urdfcli-lint", "urdfcli-drift", "urdfcli-fix"}
-    # a changed model has the SRDFs of its robot checked too
-    assert by_id["urdfcli-check"]["entry"] == "urdfcli check --srdfs"
-    assert by_id["urdfcli-lint"]["entry"] == "urdfcli lint --srdfs"
+    # a changed model has the SRDFs of its robot checked too, and the models including a deleted file
+    # (pre-commit passes none: the hooks run on every commit, a commit that only deletes one included)
+    assert by_id["urdfcli-check"]["entry"] == "urdfcli check --srdfs --git-deletions"
+    assert by_id["urdfcli-lint"]["entry"] == "urdfcli lint --srdfs --git-deletions"
+    assert [name for name, hook in by_id.items() if hook.get("always_run")] == ["urdfcli-check", "urdfcli-lint"]
     assert by_id["urdfcli-drift"]["entry"] == "urdfcli drift"
     # the safe fixes; fails when it changed a file, whatever remains (the lint hook judges that)
     assert by_id["urdfcli-fix"]["entry"] == "urdfcli lint --fix --exit-zero --exit-non-zero-on-fix"
@@ -219,12 +223,11 @@ def test_commits_to_a_ros_repository_check_libraries_through_their_models(tmp_pa
     assert f"common/urdf/sensor.xacro:{line_of(sensor, 'camera.xacro')}:" in out and "X003 error" in out
     undo()
 
-    # a change to a file that is not a robot description runs no check
+    # a change to a file that is not a robot description checks nothing (the hooks run, for a deletion)
     (repo / "description/README.md").write_text("# acme rover\n\nWheels and an arm.\n")
     code, out = commit("readme", "description/README.md")
     assert code == 0, out
-    assert re.search(r"urdfcli check\.+\(no files to check\)Skipped", out)
-    assert re.search(r"urdfcli lint\.+\(no files to check\)Skipped", out)
+    assert re.search(r"urdfcli check\.+Passed", out) and re.search(r"urdfcli lint\.+Passed", out)
 
 
 def test_the_fix_hook_keeps_an_edit_made_to_a_generated_urdf_and_the_drift_hook_says_it(tmp_path, hooks):
@@ -293,4 +296,88 @@ def test_a_commit_renaming_a_joint_its_moveit_config_still_names_fails(tmp_path,
 
     edit(repo / "cell_moveit_config/config/cell.srdf", 'name="arm_elbow"', 'name="arm_joint_2"')
     code, out = commit("the elbow is joint 2, in the MoveIt config too")
+    assert code == 0, out
+
+
+def test_git_names_the_files_a_commit_deletes_a_rename_deleting_its_old_name(tmp_path):
+    require_tool("git")
+    repo = tmp_path / "repo"
+    (repo / "urdf").mkdir(parents=True)
+    for name in ("a.xacro", "b.xacro", "c.xacro"):
+        (repo / "urdf" / name).write_text(CLEAN)
+    git("init", "-q", cwd=repo)
+    git("add", "-A", cwd=repo)
+    git("commit", "-q", "-m", "three", cwd=repo)
+    git("rm", "-q", "urdf/a.xacro", cwd=repo)
+    git("mv", "urdf/b.xacro", "urdf/renamed.xacro", cwd=repo)
+    (repo / "urdf" / "c.xacro").unlink()  # deleted, not staged: not the commit's
+    assert sorted(deleted_files(repo / "urdf")) == [repo / "urdf" / "a.xacro", repo / "urdf" / "b.xacro"]
+    git("commit", "-q", "-m", "a deleted, b renamed", cwd=repo)
+    assert deleted_files(repo) == []
+    assert sorted(deleted_files(repo, ("HEAD~1", "HEAD"))) == [repo / "urdf" / "a.xacro", repo / "urdf" / "b.xacro"]
+    assert deleted_files(repo, ("--output=x", "HEAD")) == [] and not (repo / "x").exists()  # an option is never passed to git
+    outside = tmp_path / "outside"
+    outside.mkdir()
+    assert deleted_files(outside) == []
+
+
+def test_check_and_lint_with_git_deletions_check_the_models_including_a_deleted_file(tmp_path):
+    """What the hooks run on a commit that only deletes a library: no file given, the models
+    that include it fail at their include; outside git, or with nothing deleted, nothing is
+    checked; without --git-deletions a file is still required."""
+    require_tool("git")
+    repo = make_repository(tmp_path / "acme_robots")
+    rover = repo / "description/urdf/rover.urdf.xacro"
+    git("init", "-q", cwd=repo)
+    git("add", "-A", cwd=repo)
+    git("commit", "-q", "-m", "the repository", cwd=repo)
+    no_refs = {"PRE_COMMIT_FROM_REF": "", "PRE_COMMIT_TO_REF": ""}
+    for command in ("check", "lint"):
+        done = run_cli(command, "--git-deletions", "--format", "concise", cwd=repo, env=no_refs)
+        assert done.returncode == 0 and done.stdout + done.stderr == b"", done.stderr.decode()
+    done = run_cli("check", "--git-deletions", "--format", "json", cwd=repo, env=no_refs)  # a report of no file
+    assert done.returncode == 0 and json.loads(done.stdout)["files"] == []
+    git("rm", "-q", "common/urdf/wheel.xacro", cwd=repo)
+    line = line_of(rover, "wheel.xacro")
+    for command in ("check", "lint"):
+        done = run_cli(command, "--srdfs", "--git-deletions", "--format", "concise", cwd=repo, env=no_refs)
+        out = done.stdout.decode() + done.stderr.decode()
+        assert done.returncode == 1, out
+        assert f"description/urdf/rover.urdf.xacro:{line}:3: X003 error: cannot include common/urdf/wheel.xacro" in out
+        assert "description/urdf/arm.urdf.xacro:3:3: X003 error: cannot include common/urdf/wheel.xacro" in out
+    outside = tmp_path / "outside"
+    outside.mkdir()
+    done = run_cli("check", "--git-deletions", cwd=outside, env=no_refs)
+    assert done.returncode == 0 and done.stdout + done.stderr == b""
+    done = run_cli("check", cwd=repo)
+    assert done.returncode == 2 and "Missing argument" in done.stderr.decode()
+
+
+def test_a_commit_deleting_or_renaming_a_library_its_models_include_fails(tmp_path, hooks):
+    """Installed hooks on real commits: pre-commit passes no deleted file, so a commit that
+    deletes a library (or renames it) would leave the models that include it broken; the
+    models fail at their include. Renamed with the includes, the commit passes."""
+    repo = make_repository(tmp_path / "acme_robots")
+    commit = installed(repo, hooks, "urdfcli-check", "urdfcli-lint")
+    rover, arm = repo / "description/urdf/rover.urdf.xacro", repo / "description/urdf/arm.urdf.xacro"
+    code, out = commit("the clean repository")
+    assert code == 0, out
+    failing = [f"description/urdf/rover.urdf.xacro:{line_of(rover, 'wheel.xacro')}:3: X003 error: cannot include common/urdf/wheel.xacro",
+               f"description/urdf/arm.urdf.xacro:{line_of(arm, 'wheel.xacro')}:3: X003 error: cannot include common/urdf/wheel.xacro"]
+
+    git("rm", "-q", "common/urdf/wheel.xacro", cwd=repo)
+    code, out = commit("no wheel library")
+    assert code == 1, out
+    assert re.search(r"urdfcli check\.+Failed", out) and re.search(r"urdfcli lint\.+Failed", out)
+    assert all(out.count(text) == 2 for text in failing), out  # once per hook
+    git("reset", "-q", "--hard", "HEAD", cwd=repo)
+
+    git("mv", "common/urdf/wheel.xacro", "common/urdf/wheels.xacro", cwd=repo)
+    code, out = commit("the wheel library renamed")
+    assert code == 1, out
+    assert all(out.count(text) == 2 for text in failing), out
+
+    for model in (rover, arm):
+        edit(model, "urdf/wheel.xacro", "urdf/wheels.xacro")
+    code, out = commit("the wheel library renamed, and included by its new name")
     assert code == 0, out

@@ -13,9 +13,12 @@ import pytest
 from conftest import run_cli
 from ros_workspace import INERTIA, WHEEL, XACRO, edit, install_package, line_of, make_colcon_workspace, make_repository, package_xml
 
-from urdfcli.project.workspace import Index, resolve_include, workspace_file
+from urdfcli.api import configured
+from urdfcli.options import Options
+from urdfcli.project.workspace import Index, plan, resolve_include, workspace_file
 from urdfcli.read.files import SourceFiles
 from urdfcli.read.packages import PackageIndex, PackageResolver
+from urdfcli.session import Session
 
 
 def read_source(path):
@@ -150,6 +153,25 @@ def test_a_changed_interface_breaks_the_model_and_fails_the_library(repository):
     done = run_cli("check", "common/urdf/wheel.xacro", cwd=repository)
     assert done.returncode == 1
     assert "X003 error" in done.stderr.decode()
+
+
+def test_the_models_including_a_deleted_file_are_planned_as_if_given(repository, monkeypatch):
+    """A file a commit deletes (pre-commit passes none): the models that include it, directly
+    or through another file, are run as if given, each once, with their argument sets; a model
+    given too is run once; the deletion of a file no model includes runs nothing."""
+    monkeypatch.chdir(repository)
+    rover, arm = "description/urdf/rover.urdf.xacro", "description/urdf/arm.urdf.xacro"
+    inertia, sensor = repository / "common/urdf/inertia.xacro", repository / "common/urdf/sensor.xacro"
+    inertia.unlink()  # wheel.xacro includes it, and both models include wheel.xacro
+    sensor.unlink()
+    with Session(Options()) as session:
+        def planned(paths, deleted):
+            entries = plan(paths, configured(session), packages=session.packages, files=session.files, deleted=tuple(map(str, deleted)))
+            return [(entry.path, [dict(target.arguments) for target in entry.targets], entry.library) for entry in entries]
+
+        assert planned([], [inertia]) == [(arm, [{"arm_type": "small"}, {"arm_type": "large"}], False), (rover, [{}], False)]
+        assert planned([rover], [inertia, repository / "common/urdf/wheel.xacro"]) == [(rover, [{}], False), (arm, [{"arm_type": "small"}, {"arm_type": "large"}], False)]
+        assert planned([], [sensor]) == []
 
 
 def test_an_unused_library_is_expanded_alone_and_named_once(repository):

@@ -147,7 +147,8 @@ def run(paths: list[str], session: Session, progress: Progress | None = None, as
     """Check each input as the session's options ask (see :class:`~urdfcli.options.Options`).
 
     With ``libraries``, a xacro library is checked through the models that include
-    it (see :mod:`urdfcli.project.workspace`); a model listed in ``[tool.urdfcli]
+    it (see :mod:`urdfcli.project.workspace`), and so is each model that includes a file
+    of the options' ``deleted``; a model listed in ``[tool.urdfcli]
     models`` is checked once per argument set. ``aside``: the files of a folder
     left out because a file there includes them (see :func:`find_models`): each
     that no model read is named in a note. Raises UsageError for a bad
@@ -157,7 +158,7 @@ def run(paths: list[str], session: Session, progress: Progress | None = None, as
     config_for = configured(session)
     try:
         if session.options.libraries:
-            entries = plan(paths, config_for, session.package_paths, session.packages, session.files)
+            entries = plan(paths, config_for, session.package_paths, session.packages, session.files, session.options.deleted)
         else:
             entries = [Entry(path, model_targets(path, config_for(path).argument_sets(path))) for path in paths]
         if session.options.srdfs:

@@ -59,7 +59,9 @@ class Options:
     of the nearest one above each input (or a :class:`Config` itself), and
     ``isolated`` reads none. With ``libraries``, a xacro library is checked through
     the models that include it; with ``srdfs``, the MoveIt SRDFs that describe the robot
-    of a model given (or of one including a library given) are checked too. ``jobs`` other than 1 checks models in that many
+    of a model given (or of one including a library given) are checked too. ``deleted`` are files a change
+    deletes (or renames away): the models that include one are checked too, as for a library
+    given (their include now fails). ``jobs`` other than 1 checks models in that many
     processes (0: one per CPU). ``audit`` asks for the mass-property audit, ``load``
     for a load of each model into its targets' own packages (``check --load``).
     ``format`` names the reporter of the command line. ``fix`` and ``unsafe_fixes``
@@ -78,6 +80,7 @@ class Options:
     targets: tuple[Profile, ...] = ()
     libraries: bool = True
     srdfs: bool = False  # and the SRDFs of the models' robots (see :func:`urdfcli.project.semantic.describing`)
+    deleted: tuple[str, ...] = ()  # files a change deletes: the models including one are checked too
     jobs: int = 1
     audit: AuditOptions | None = None
     load: bool = False
@@ -90,7 +93,7 @@ class Options:
     def __post_init__(self) -> None:
         if isinstance(self.arguments, dict):
             object.__setattr__(self, "arguments", tuple(self.arguments.items()))
-        for name in ("arguments", "package_paths", "select", "ignore", "extend_select"):
+        for name in ("arguments", "package_paths", "select", "ignore", "extend_select", "deleted"):
             object.__setattr__(self, name, tuple(getattr(self, name) or ()))
         if isinstance(self.config, str):
             object.__setattr__(self, "config", Path(self.config))

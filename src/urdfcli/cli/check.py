@@ -20,15 +20,17 @@ from .common import (
     IsolatedOption,
     QuietOption,
     SrdfsOption,
+    GitDeletionsOption,
     PackagePathOption,
     NoInfoOption,
     StatisticsOption,
     TargetOption,
     UrdfOption,
+    changed_inputs,
+    nothing_to_check,
     choose,
     format_option,
     session_for,
-    split_inputs,
 )
 from .interrupt import CtrlC
 from .fixes import DiffOption, FixOption, UnsafeFixesOption
@@ -41,7 +43,8 @@ FormatOption = format_option(
 
 
 def check(
-    inputs: InputsArgument,
+    ctx: typer.Context,
+    inputs: InputsArgument = None,
     output_format: FormatOption = "auto",
     strict: Annotated[bool, typer.Option("--strict", help="Fail (exit 1) on warnings too.")] = False,
     target: TargetOption = None,
@@ -49,6 +52,7 @@ def check(
     package_path: PackagePathOption = None,
     urdf: UrdfOption = None,
     srdfs: SrdfsOption = False,
+    git_deletions: GitDeletionsOption = False,
     config: ConfigOption = None,
     isolated: IsolatedOption = False,
     fix: FixOption = None,
@@ -69,13 +73,16 @@ def check(
     and noqa comments apply as they do for lint; --fix, --unsafe-fixes and --diff fix what
     check finds as they do for lint.
     """
+    paths, mappings, deleted = changed_inputs(ctx, inputs, git_deletions)
+    output_format = choose(output_format, FORMATS)
+    if nothing_to_check(paths, deleted, output_format):
+        return
     from .. import api  # (the library: imported when the command runs, not for --help)
 
-    paths, mappings = split_inputs(inputs)
     asked = fixes.Fixing(fix, unsafe_fixes, diff, False)
     options = Options(
         RuleSet.CHECK, tuple(mappings.items()), tuple(package_path or ()), config, isolated, targets=tuple(target or ()),
-        load=load, format=choose(output_format, FORMATS), fix=asked.applies, unsafe_fixes=unsafe_fixes, urdf=urdf, srdfs=srdfs,
+        load=load, format=output_format, fix=asked.applies, unsafe_fixes=unsafe_fixes, urdf=urdf, srdfs=srdfs, deleted=deleted,
         show_info=None if no_info is None else not no_info,
     )
     output = Output.standard(color, quiet)

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import contextlib
+import os
 from collections.abc import Iterator
 from enum import IntEnum
 from pathlib import Path
@@ -85,6 +86,15 @@ SrdfsOption = Annotated[
         "still names it (the pre-commit hooks pass it).",
     ),
 ]
+GitDeletionsOption = Annotated[
+    bool,
+    typer.Option(
+        "--git-deletions",
+        help="Also check the models that include a file deleted or renamed in git's staged changes (between PRE_COMMIT_FROM_REF and "
+        "PRE_COMMIT_TO_REF when pre-commit sets them), which pre-commit never passes: their include fails now. No input file is needed "
+        "then (the check and lint pre-commit hooks pass it, and run on every commit).",
+    ),
+]
 NoInfoOption = Annotated[
     bool | None,
     typer.Option(
@@ -153,16 +163,48 @@ def choose(value: str, choices, option: str = "--format") -> str:
     return value.lower()
 
 
-def split_inputs(arguments: list[str]) -> tuple[list[str], dict[str, str]]:
-    """The files of a command line and its NAME:=VALUE xacro arguments."""
+def split_inputs(arguments: list[str], none_needed: bool = False) -> tuple[list[str], dict[str, str]]:
+    """The files of a command line and its NAME:=VALUE xacro arguments (``none_needed``:
+    no file is fine)."""
     try:
         mappings = xacro_arguments(a for a in arguments if ":=" in a)
     except UsageError as error:
         raise fail(str(error)) from None
     paths = [a for a in arguments if ":=" not in a]
-    if not paths:
+    if not paths and not none_needed:
         raise fail("no input file given")
     return paths, mappings
+
+
+def changed_inputs(ctx: typer.Context, arguments: list[str] | None, git_deletions: bool) -> tuple[list[str], dict[str, str], tuple[str, ...]]:
+    """The files and xacro arguments of a command line whose files may be none with
+    ``--git-deletions``, and the files git says are deleted (see :func:`deleted_by_change`).
+    Without ``--git-deletions`` the files are required, as typer says."""
+    if not arguments and not git_deletions:
+        try:  # typer vendors click from 0.2x on
+            from typer._click.exceptions import MissingParameter
+        except ImportError:
+            from click.exceptions import MissingParameter
+        raise MissingParameter(ctx=ctx, param=next(p for p in ctx.command.params if p.name == "inputs"))
+    paths, mappings = split_inputs(arguments or [], none_needed=git_deletions)
+    return paths, mappings, deleted_by_change() if git_deletions else ()
+
+
+def nothing_to_check(paths: list[str], deleted: tuple[str, ...], output_format: str) -> bool:
+    """Whether a run has no file and nothing deleted (``--git-deletions`` on a commit that changes
+    no description: the hooks run on every commit) and would print nothing: the command returns
+    at once, without importing the library. JSON and SARIF still print a report of no file."""
+    return not paths and not deleted and output_format not in ("json", "sarif")
+
+
+def deleted_by_change() -> tuple[str, ...]:
+    """The files git's staged changes delete, or those deleted between the revisions pre-commit
+    gives a hook it runs on a range (``pre-commit run --from-ref A --to-ref B``, a pre-push hook)."""
+    from ..read.revision import deleted_files
+
+    between = (os.environ.get("PRE_COMMIT_FROM_REF", ""), os.environ.get("PRE_COMMIT_TO_REF", ""))
+    # only what a model can include as a description: a commit deleting scripts or meshes asks nothing more
+    return tuple(str(file) for file in deleted_files(Path.cwd(), between if all(between) else None) if file.suffix in (".urdf", ".xacro"))
 
 
 @contextlib.contextmanager

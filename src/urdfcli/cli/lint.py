@@ -20,15 +20,17 @@ from .common import (
     IsolatedOption,
     QuietOption,
     SrdfsOption,
+    GitDeletionsOption,
     PackagePathOption,
     NoInfoOption,
     StatisticsOption,
     TargetOption,
     UrdfOption,
+    changed_inputs,
+    nothing_to_check,
     choose,
     format_option,
     session_for,
-    split_inputs,
 )
 from .interrupt import CtrlC
 from .fixes import AddNoqaOption, DiffOption, FixOption, UnsafeFixesOption
@@ -38,14 +40,15 @@ PROGRESS_AFTER = 1.0  # seconds: a run this long shows a progress bar on a termi
 
 
 def lint(
+    ctx: typer.Context,
     inputs: Annotated[
-        list[str],
+        list[str] | None,
         typer.Argument(
             metavar="PATH... [NAME:=VALUE]...",
             help="Files, or folders to search for *.urdf and *.urdf.xacro ('-' reads standard input); NAME:=VALUE sets a xacro argument.",
             show_default=False,
         ),
-    ],
+    ] = None,
     output_format: format_option("auto (text, or github under GitHub Actions), text, concise, json, sarif or github.") = "auto",
     select: Annotated[list[str] | None, typer.Option("--select", metavar="CODES", help="Only these rule codes or prefixes (comma-separated; replaces the configuration's select). ALL selects every rule.", show_default=False)] = None,
     ignore: Annotated[list[str] | None, typer.Option("--ignore", metavar="CODES", help="Also ignore these codes or prefixes.", show_default=False)] = None,
@@ -59,6 +62,7 @@ def lint(
     package_path: PackagePathOption = None,
     urdf: UrdfOption = None,
     srdfs: SrdfsOption = False,
+    git_deletions: GitDeletionsOption = False,
     fix: FixOption = None,
     unsafe_fixes: UnsafeFixesOption = None,
     diff: DiffOption = False,
@@ -78,14 +82,17 @@ def lint(
     remains sets the exit status; --diff prints them, writes nothing, and exits 1 when there is
     something to fix.
     """
+    paths, mappings, deleted = changed_inputs(ctx, inputs, git_deletions)
+    output_format = choose(output_format, FORMATS)
+    if nothing_to_check(paths, deleted, output_format):
+        return
     from .. import api  # (the library: imported when the command runs, not for --help)
 
-    paths, mappings = split_inputs(inputs)
     asked = fixes.Fixing(fix, unsafe_fixes, diff, add_noqa)
     options = Options(
         RuleSet.LINT, tuple(mappings.items()), tuple(package_path or ()), config, isolated, tuple(select or ()), tuple(ignore or ()),
-        tuple(extend_select or ()), tuple(target or ()), jobs=jobs, format=choose(output_format, FORMATS), fix=asked.applies, unsafe_fixes=unsafe_fixes,
-        urdf=urdf, srdfs=srdfs, show_info=None if no_info is None else not no_info,
+        tuple(extend_select or ()), tuple(target or ()), jobs=jobs, format=output_format, fix=asked.applies, unsafe_fixes=unsafe_fixes,
+        urdf=urdf, srdfs=srdfs, deleted=deleted, show_info=None if no_info is None else not no_info,
     )
     output = Output.standard(color, quiet)
     with session_for(options) as session:

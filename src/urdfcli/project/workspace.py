@@ -22,7 +22,9 @@ and ``${name}`` of a plain property are resolved. An include whose file name is
 computed from something else (a macro parameter: ``${side}_arm.xacro``) may name
 the files of its folder whose name fits; one whose folder is unknown (a package
 not found here) names none. Only the models found are expanded, and a library
-counts as checked through a model only when the model's expansion read it.
+counts as checked through a model only when the model's expansion read it. The
+models that include a file a change deletes (which pre-commit never passes) are
+found the same way, and checked as if given: their include fails now.
 
 A file that another file of a folder includes is not linted on its own when
 the folder is: it is one of its models' parts (a *fragment*, such as Baxter's
@@ -650,9 +652,14 @@ def asked(targets: list[Target], given: dict[str, str]) -> list[Target]:
     return list(dict.fromkeys(kept))
 
 
-def plan(paths: list[str], config_for, package_paths: tuple[str, ...] = (), packages: PackageIndex | None = None, files: SourceFiles | None = None) -> list[Entry]:
+def plan(
+    paths: list[str], config_for, package_paths: tuple[str, ...] = (), packages: PackageIndex | None = None, files: SourceFiles | None = None,
+    deleted: tuple[str, ...] = (),
+) -> list[Entry]:
     """What to run for the given files: each model once per argument set, each
-    library through the models that may include it (none: on its own).
+    library through the models that may include it (none: on its own). A file
+    ``deleted`` (by a change, which pre-commit does not pass) is found as a library is:
+    each model that may include it is run as if given (its include fails now).
 
     ``config_for(path)`` gives the configuration of a file (for ``models`` and
     package paths). ``files`` are the session's (each file read once for this
@@ -683,6 +690,15 @@ def plan(paths: list[str], config_for, package_paths: tuple[str, ...] = (), pack
         macros = tuple(dict.fromkeys(m.name for m in scan.macros if m.name)) if scan is not None else ()
         gates = _gates(library, macros, targets, index) if targets else Gates()
         entries.append(Entry(path, targets, library=True, maybe=maybe, macros=macros, gates=gates))
+    given = {Path(entry.path).resolve() for entry in entries if entry.path != STDIN}
+    for path in deleted:
+        config = config_for(path)
+        index = index or Index(config.package_paths + package_paths, packages, files)
+        targets = _includers(Path(path).resolve(), index, config, config_for, packages, candidates_of)
+        for model in dict.fromkeys(target.path for target in targets):
+            if Path(model).resolve() not in given:
+                given.add(Path(model).resolve())
+                entries.append(Entry(model, [target for target in targets if target.path == model]))
     return entries
 
 

@@ -9,6 +9,9 @@ when the ``with`` block ends.
 
 ``PATH`` is relative to the repository's top folder, or, written ``./PATH`` or
 ``../PATH``, to the current folder (as ``git show`` reads it).
+
+:func:`deleted_files` asks git which files a change deletes: what pre-commit never
+passes to a hook, though a model may still include one.
 """
 
 from __future__ import annotations
@@ -103,10 +106,30 @@ def _archive(revision: Revision, folder: Path) -> None:
         raise RevisionError(f"{revision.given}: git archive failed: {message.splitlines()[-1] if message else process.returncode}")
 
 
+def deleted_files(cwd: Path, between: tuple[str, str] | None = None) -> list[Path]:
+    """The files of the git work tree around ``cwd`` that its staged changes delete, or,
+    ``between`` two revisions (pre-commit's from-ref and to-ref), that the later one
+    deleted: a rename deletes its old name. None outside a git work tree (or without git)."""
+    if between is not None and any(revision.startswith("-") for revision in between):
+        return []  # an option, not a revision: never given to git
+    top = _git(cwd, "rev-parse", "--show-toplevel")
+    if top is None:
+        return []
+    listing = ("diff", "--name-only", "--no-renames", "-z", "--diff-filter=D")
+    if between is None:
+        listed = _git(Path(top), *listing, "--cached")
+    else:  # as pre-commit lists the files changed: from the merge base, else (no common history) between the two
+        listed = _git(Path(top), *listing, f"{between[0]}...{between[1]}")
+        if listed is None:
+            listed = _git(Path(top), *listing, f"{between[0]}..{between[1]}")
+    return [Path(top) / name for name in (listed or "").split("\0") if name]
+
+
 def _git(cwd: Path, *args: str) -> str | None:
     """git's answer, or None when it fails (or is not installed)."""
     try:
-        done = subprocess.run(["git", "-C", str(cwd), *args], capture_output=True, text=True, timeout=60)
+        # (a file name that is not UTF-8 is kept as the bytes git gave)
+        done = subprocess.run(["git", "-C", str(cwd), *args], capture_output=True, text=True, errors="surrogateescape", timeout=60)
     except (OSError, subprocess.TimeoutExpired):
         return None
     return done.stdout.strip() if done.returncode == 0 else None
