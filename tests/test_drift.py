@@ -150,6 +150,54 @@ OMX = """<?xml version="1.0"?>
 """
 
 
+SIM = """<?xml version="1.0"?>
+<robot name="omx" xmlns:xacro="http://www.ros.org/wiki/xacro">
+  <xacro:arg name="use_sim" default="false"/>
+  <xacro:arg name="port_name" default="/dev/ttyUSB0"/>
+  <xacro:macro name="arm_system" params="name port_name">
+    <ros2_control name="${name}" type="system">
+      <xacro:if value="$(arg use_sim)">
+        <hardware><plugin>gz_ros2_control/GazeboSimSystem</plugin></hardware>
+      </xacro:if>
+      <xacro:unless value="$(arg use_sim)">
+        <hardware>
+          <plugin>dynamixel_hardware_interface/DynamixelHardware</plugin>
+          <param name="port_name">${port_name}</param>
+        </hardware>
+      </xacro:unless>
+      <joint name="joint1"><command_interface name="position"/></joint>
+      <xacro:if value="$(arg use_sim)">
+        <joint name="gripper_right_joint"><state_interface name="position"/></joint>
+      </xacro:if>
+    </ros2_control>
+  </xacro:macro>
+  <link name="link0"/>
+  <link name="link1"/>
+  <joint name="joint1" type="revolute">
+    <parent link="link0"/><child link="link1"/>
+    <axis xyz="0 0 1"/><limit lower="-1" upper="1" effort="1" velocity="1"/>
+  </joint>
+  <joint name="gripper_right_joint" type="fixed"><parent link="link1"/><child link="tip"/></joint>
+  <link name="tip"/>
+  <xacro:arm_system name="OMXSystem" port_name="$(arg port_name)"/>
+</robot>
+"""
+
+
+def test_a_ros2_control_part_made_under_a_condition_is_said_present_and_its_condition_named(tmp_path, monkeypatch):
+    """open_manipulator's omx.urdf generated with use_sim:=true has a ros2_control joint the
+    defaults do not make: the summary said '(none) here, (none) in omx.urdf.xacro', and the
+    hint blamed port_name (read by a <param> the URDF lacks) instead of use_sim."""
+    model = tmp_path / "omx.urdf.xacro"
+    model.write_text(SIM)
+    (tmp_path / "omx.urdf").write_text(generate(model, "omx.urdf.xacro", use_sim="true"))
+    monkeypatch.chdir(tmp_path)
+    (found,) = x110(lint_file("omx.urdf"))
+    assert "(ros2_control 'OMXSystem' joint[@name='gripper_right_joint']: present here, absent in omx.urdf.xacro)" in found.message
+    assert "other values of use_sim:='false'" in found.hint and "port_name" not in found.hint
+    assert found.fix.reason == "it may have been generated with other values of use_sim: regenerate it by hand with those"
+
+
 def test_an_argument_passed_to_a_call_does_not_explain_an_element_always_made(tmp_path, monkeypatch):
     """open_manipulator's omx_f.urdf lacks the <gazebo> blocks and ros2_control its xacro always
     makes, with the names prefix:='' gives: the hint blamed prefix (read on the calls' lines)

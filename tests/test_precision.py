@@ -57,6 +57,24 @@ def test_a_cad_tensor_within_a_few_times_of_the_uniform_body_draws_nothing(tmp_p
     assert found(tmp_path, cad, "I009", "I010") == []
 
 
+# a wrist of 1.4 kg whose collision is a cylinder turned to lie along y around the joint;
+# the CAD tensor turns least about z (the next motor's axis)
+WRIST = '<collision><origin rpy="1.57 0 0"/><geometry><cylinder radius="0.045" length="0.10"/></geometry></collision>'
+WRIST_TENSOR = dict(ixx=0.00175, iyy=0.00157, izz=0.00122, ixy=-4.6e-06, ixz=-1.8e-06, iyz=0.000153)
+
+
+def test_a_cad_tensor_centred_outside_its_turned_collision_shape_is_not_called_unrotated(tmp_path):
+    # the centre of mass (the next motor, 0.107 m away) lies outside the cylinder: the tensor was not computed for it
+    cad = BASE + arm("wrist", WRIST + inertial(1.4, xyz="0 -0.107 0.019", **WRIST_TENSOR))
+    assert found(tmp_path, cad, "I009", "I010") == []
+
+
+def test_the_same_tensor_centred_in_its_turned_collision_shape_is_called_unrotated(tmp_path):
+    computed = BASE + arm("wrist", WRIST + inertial(1.4, **WRIST_TENSOR))
+    (code, severity, message), = found(tmp_path, computed, "I009", "I010")
+    assert code == "I010" and severity == "warning" and "'wrist'" in message and "rpy 1.57 0 0" in message
+
+
 def test_a_moment_no_mass_inside_the_geometry_can_reach_is_flagged(tmp_path):
     # Panda link1's mistake: ixx = 0.703 on a 0.46 m link of 5 kg (at most 5 (0.23² + 0.05²) = 0.277)
     impossible = BASE + arm("link1", LINK + inertial(5, 0.70337, 0.70661, 0.009, xyz="0 0 0.23"))

@@ -296,13 +296,18 @@ def shapes_rotation(shapes: tuple[Shape, ...]) -> Matrix | None:
     return first
 
 
-def rotated_fit(assessment: Assessment) -> tuple[Vector, float] | None:
+def rotated_fit(loaded: Loaded, assessment: Assessment) -> tuple[Vector, float] | None:
     """When the geometry is rotated and the inertial frame is not rotated with it:
-    the shapes' rpy, and the difference left if the tensor were read in their frame."""
+    the shapes' rpy, and the difference left if the tensor were read in their frame.
+    None when the declared centre of mass lies outside the shapes: a tensor computed
+    for them would have its centre inside, so it was measured on the part (CAD)."""
     shapes = assessment.implied.shapes
     shared = shapes_rotation(shapes)
     inertial = inertial_rotation(assessment.link)
     if shared is None or massprops.relative_difference(shared, inertial) < 1e-6:
+        return None
+    box = extent(loaded, assessment.link, shapes)
+    if box is None or not _inside(assessment.link.inertial.origin.xyz, box):
         return None
     # the declared tensor read in the shapes' frame, then expressed in the inertial frame
     in_link = massprops.rotate(assessment.declared, shared)

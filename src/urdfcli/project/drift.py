@@ -206,7 +206,7 @@ def expand_source(source: Path, config: Config, session: Session) -> Loaded | st
 
 def summary(comparison: Comparison, urdf: str, source: GeneratedFrom) -> str:
     """``kr16_2.urdf does not match kr16_2.xacro, which generated it: it lacks link 'flange' that kr16_2.xacro makes; 1 joint differs``."""
-    from ..report.diff import element_words, values_text
+    from ..report.diff import element_words
 
     xacro = source.file.name
     changes = comparison.changes
@@ -231,12 +231,25 @@ def summary(comparison: Comparison, urdf: str, source: GeneratedFrom) -> str:
         counted = [f"{len(elements)} {_plural(tag, len(elements))}" for tag, elements in differing.items()]
         verb = "differs" if sum(len(e) for e in differing.values()) == 1 else "differ"
         first = min((c for c in changes if c.field is not None and c.field != "pose" and c.kind != "renamed" and c.element not in whole), key=_weight)
-        here, there = values_text(first.old, first.new)
+        here, there = _sides(first)
         pieces.append(f"{joined(counted)} {verb} ({element_words(first.element)} {first.field}: {here} here, {there} in {xacro})")
     if not pieces:  # only poses moved: cannot happen without a change above, kept for safety
         pieces.append(f"{comparison.count('changed')} values differ")
     generated = "which generated it" if source.header is not None else "beside it"
     return f"{urdf} does not match {_shown(source.file)}, {generated}: " + "; ".join(pieces)
+
+
+def _sides(change: Change) -> tuple[str, str]:
+    """What the URDF and its source hold of a differing field; a part that one side has
+    and the other lacks, with no value of its own (a ros2_control joint), is ``present``
+    on one side and ``absent`` on the other."""
+    from ..report.diff import values_text
+
+    if change.kind == "removed" and change.old is None:
+        return "present", "absent"
+    if change.kind == "added" and change.new is None:
+        return "absent", "present"
+    return values_text(change.old, change.new)
 
 
 # The difference a summary names: what changes how the robot moves first, a colour or a
@@ -293,9 +306,10 @@ def _plural(tag: str, count: int) -> str:
 def _explaining_arguments(changes: tuple[Change, ...], source: Loaded, session: Session) -> dict[str, str | None]:
     """The xacro arguments that may explain the differences, with their defaults: for an
     element the URDF lacks, one read by a condition (``xacro:if``, ``xacro:unless``) around
-    it, around a macro call that made it, or around or in the file name of the include
-    that brought it; for an element that differs, one its values are computed from, written
-    in it or passed to a macro parameter it reads. (An extra element of the URDF was made
+    it (or around a part of an element the URDF lacks), around a macro call that made it,
+    or around or in the file name of the include that brought it; for an element that
+    differs, those and one its values are computed from, written in it or passed to a
+    macro parameter it reads. (An extra element of the URDF was made
     by nothing in the source: no argument of it is known to explain it.)"""
     files = [source.document.shown, *source.document.includes]
     scans = [found.scan for file in files if (found := session.files.get(file)) is not None and found.scan is not None]
@@ -308,9 +322,9 @@ def _explaining_arguments(changes: tuple[Change, ...], source: Loaded, session: 
         element = _element_at(session, location.file, location.line, location.column)
         if element is None:
             continue
-        if change.field is None and change.kind != "renamed":  # made or not, as a whole
+        if change.kind != "renamed":  # made or not (a part of an element too), or made by another branch
             names |= _gating(element, location.file, location.trace, session, scans, properties)
-        else:
+        if change.kind == "renamed" or (change.field is not None and change.kind != "added"):  # a value it computes
             texts = [value for node in element.iter() for value in (*node.attrib.values(), node.text or "")]
             names |= _computed_from(texts, location.trace, session, properties)
     defaults: dict[str, str | None] = {}

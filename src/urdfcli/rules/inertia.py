@@ -440,7 +440,7 @@ def _verdict(loaded, link, light: bool, options) -> Verdict | None:
     """:func:`verdict`, unless I007 (the identity) or I010 (turned as its shapes are) says what is wrong with the tensor;
     ``light``: whether the link is lost in its body (:func:`absorbed`)."""
     found = _assess(loaded, link, options)
-    if found is None or massprops.is_identity(found.declared) or _rotated(found, options["tolerance"]) is not None:
+    if found is None or massprops.is_identity(found.declared) or _rotated(loaded, found, options["tolerance"]) is not None:
         return None
     return verdict(loaded, found, light, options["tolerance"], options.get("density") or None)
 
@@ -457,13 +457,13 @@ def _invalid(loaded) -> set[str]:
     return {link.name for code in ("I005", "I006") for link, _ in invalid[code]}
 
 
-def _rotated(found, tolerance: float):
+def _rotated(loaded, found, tolerance: float):
     """(the assessment, (rpy, difference once rotated)) when I010 reports the link it
     assessed: rotated as its shapes are, the tensor fits within the tolerance, or comes at
     least twice as close."""
     if not found.off(tolerance):
         return None
-    rotated = model.rotated_fit(found)
+    rotated = model.rotated_fit(loaded, found)
     if rotated is None or (rotated[1] > tolerance and rotated[1] > found.difference / 2):
         return None
     return found, rotated
@@ -475,6 +475,10 @@ def frame_rotated(loaded, given):
     Flags a tensor that is more than ``tolerance`` (0.1) off its geometry's, but fits
     within it once rotated as the link's shapes are (their shared ``<origin rpy>``), or
     comes at least twice as close that way.
+
+    Left alone: a tensor whose declared centre of mass lies outside those shapes. It was
+    not computed for them (a uniform body has its centre inside), but measured on the
+    part: a CAD tensor next to a rough collision cylinder that covers only the joint.
 
     ## Why is this bad?
     A wheel's cylinder is turned 90° about x to stand upright. The cylinder formula
@@ -516,7 +520,7 @@ def frame_rotated(loaded, given):
         key = alike[link.name]
         if key not in judged:
             assessed = _assess(loaded, link, given.options)
-            judged[key] = _rotated(assessed, given.options["tolerance"]) if assessed is not None else None
+            judged[key] = _rotated(loaded, assessed, given.options["tolerance"]) if assessed is not None else None
         match = judged[key]
         if match is None:
             continue
