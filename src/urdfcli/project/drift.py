@@ -206,7 +206,7 @@ def expand_source(source: Path, config: Config, session: Session) -> Loaded | st
 
 def summary(comparison: Comparison, urdf: str, source: GeneratedFrom) -> str:
     """``kr16_2.urdf does not match kr16_2.xacro, which generated it: it lacks link 'flange' that kr16_2.xacro makes; 1 joint differs``."""
-    from ..report.diff import element_words, values_text
+    from ..report.diff import element_words
 
     xacro = source.file.name
     changes = comparison.changes
@@ -230,8 +230,8 @@ def summary(comparison: Comparison, urdf: str, source: GeneratedFrom) -> str:
     if differing:
         counted = [f"{len(elements)} {_plural(tag, len(elements))}" for tag, elements in differing.items()]
         verb = "differs" if sum(len(e) for e in differing.values()) == 1 else "differ"
-        first = min((c for c in changes if c.field is not None and c.field != "pose" and c.kind != "renamed" and c.element not in whole), key=_weight)
-        here, there = values_text(first.old, first.new)
+        first = min((c for c in changes if c.field is not None and c.field != "pose" and c.kind != "renamed" and c.element not in whole), key=_said_first)
+        here, there = _sides(first)
         pieces.append(f"{joined(counted)} {verb} ({element_words(first.element)} {first.field}: {here} here, {there} in {xacro})")
     if not pieces:  # only poses moved: cannot happen without a change above, kept for safety
         pieces.append(f"{comparison.count('changed')} values differ")
@@ -254,6 +254,21 @@ def _weight(change: Change) -> int:
     if first is None:
         return len(_JOINT_FIELDS) + len(_LINK_FIELDS) + 1
     return first if fields is _JOINT_FIELDS else len(_JOINT_FIELDS) + first
+
+
+def _said_first(change: Change) -> tuple[int, bool]:
+    """What moves the robot first (:func:`_weight`); of equals, one with a value to show."""
+    return _weight(change), change.old is None and change.new is None
+
+
+def _sides(change: Change) -> tuple[str, str]:
+    """A change's value in the URDF and in the expansion; a part one of them has without a
+    value (a ``<hardware>`` block) is said present, not '(none)' on both sides."""
+    from ..report.diff import values_text
+
+    if change.old is None and change.new is None:
+        return ("present", "(none)") if change.kind == "removed" else ("(none)", "present")
+    return values_text(change.old, change.new)
 
 
 def _by_tag(changes: Iterable[Change]) -> str:
@@ -292,7 +307,7 @@ def _plural(tag: str, count: int) -> str:
 
 def _explaining_arguments(changes: tuple[Change, ...], source: Loaded, session: Session) -> dict[str, str | None]:
     """The xacro arguments that may explain the differences, with their defaults: for an
-    element the URDF lacks, one read by a condition (``xacro:if``, ``xacro:unless``) around
+    element (or a part of one) the URDF lacks, one read by a condition (``xacro:if``, ``xacro:unless``) around
     it, around a macro call that made it, or around or in the file name of the include
     that brought it; for an element that differs, one its values are computed from, written
     in it or passed to a macro parameter it reads. (An extra element of the URDF was made
@@ -308,7 +323,7 @@ def _explaining_arguments(changes: tuple[Change, ...], source: Loaded, session: 
         element = _element_at(session, location.file, location.line, location.column)
         if element is None:
             continue
-        if change.field is None and change.kind != "renamed":  # made or not, as a whole
+        if change.kind == "added":  # made or not, as a whole: an element, or a part of one (a command interface)
             names |= _gating(element, location.file, location.trace, session, scans, properties)
         else:
             texts = [value for node in element.iter() for value in (*node.attrib.values(), node.text or "")]
