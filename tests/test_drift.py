@@ -186,14 +186,17 @@ SIM = """<?xml version="1.0"?>
 
 def test_a_ros2_control_part_made_under_a_condition_is_said_present_and_its_condition_named(tmp_path, monkeypatch):
     """open_manipulator's omx.urdf generated with use_sim:=true has a ros2_control joint the
-    defaults do not make: the summary said '(none) here, (none) in omx.urdf.xacro', and the
+    defaults do not make: the summary said '(none) here, (none) in omx.urdf.xacro' of its joint, and the
     hint blamed port_name (read by a <param> the URDF lacks) instead of use_sim."""
     model = tmp_path / "omx.urdf.xacro"
     model.write_text(SIM)
     (tmp_path / "omx.urdf").write_text(generate(model, "omx.urdf.xacro", use_sim="true"))
     monkeypatch.chdir(tmp_path)
     (found,) = x110(lint_file("omx.urdf"))
-    assert "(ros2_control 'OMXSystem' joint[@name='gripper_right_joint']: present here, absent in omx.urdf.xacro)" in found.message
+    # of the parts that differ, one with a value is named: the plugin says which mode made it
+    assert found.message.endswith(
+        "(ros2_control 'OMXSystem' hardware/plugin: gz_ros2_control/GazeboSimSystem here, dynamixel_hardware_interface/DynamixelHardware in omx.urdf.xacro)"
+    )
     assert "other values of use_sim:='false'" in found.hint and "port_name" not in found.hint
     assert found.fix.reason == "it may have been generated with other values of use_sim: regenerate it by hand with those"
 
@@ -396,3 +399,48 @@ def test_the_summary_names_the_difference_that_moves_the_robot_and_says_gazebo_b
     assert done.returncode == 1, out
     assert ("it lacks the <gazebo> block for 'link_6' and a <gazebo> block for the robot that r.xacro makes; "
             "1 link and 1 joint differ (joint 'joint_6' axis: 1 0 0 here, -1 0 0 in r.xacro)") in out
+
+
+SYSTEM = """<robot name="r" xmlns:xacro="http://www.ros.org/wiki/xacro">
+  <xacro:arg name="mode" default="mock"/>
+  <xacro:macro name="joint_interface" params="name mode">
+    <joint name="${name}">
+      <command_interface name="position"/>
+      <xacro:unless value="${mode == 'gazebo'}"><command_interface name="effort"/></xacro:unless>
+    </joint>
+  </xacro:macro>
+  <xacro:macro name="system" params="mode">
+    <ros2_control name="sys" type="system">
+      <xacro:if value="${mode == 'gazebo'}"><hardware><plugin>gz_ros2_control/GazeboSimSystem</plugin></hardware></xacro:if>
+      <xacro:joint_interface name="j1" mode="${mode}"/>
+    </ros2_control>
+  </xacro:macro>
+  <link name="base"/>
+  <link name="arm"/>
+  <joint name="j1" type="revolute"><parent link="base"/><child link="arm"/><axis xyz="0 0 1"/><limit lower="-1" upper="1" effort="1" velocity="1"/></joint>
+  <xacro:system mode="$(arg mode)"/>
+</robot>
+"""
+
+
+def test_a_ros2_control_block_generated_for_another_mode_names_its_plugin_and_the_argument(tmp_path, monkeypatch):
+    """lbr_fri_ros2_stack's iiwa14.xacro expanded with mode:=gazebo: its ros2_control has a
+    <hardware> block the default mode does not make, and no effort command interface. The
+    summary said 'hardware: (none) here, (none) in iiwa14.xacro'; the hint did not name mode
+    (read by the conditions around the parts, through the macro calls), and the unsafe fix
+    would have written the URDF again for the default mode."""
+    model = tmp_path / "r.xacro"
+    model.write_text(SYSTEM)
+    (tmp_path / "r.urdf").write_text(generate(model, "r.xacro", mode="gazebo"))
+    monkeypatch.chdir(tmp_path)
+    (found,) = x110(lint_file("r.urdf"))
+    assert found.message == (
+        "r.urdf does not match r.xacro, which generated it: 1 ros2_control differs "
+        "(ros2_control 'sys' hardware/plugin: gz_ros2_control/GazeboSimSystem here, (none) in r.xacro)"
+    )
+    assert "the URDF may have been generated with other values of mode:='mock'" in found.hint
+    assert found.fix.reason == "it may have been generated with other values of mode: regenerate it by hand with those"
+    # a part without a value alone is said present on its side
+    (tmp_path / "r.urdf").write_text(generate(model, "r.xacro", mode="gazebo").replace("<plugin>gz_ros2_control/GazeboSimSystem</plugin>", ""))
+    (found,) = x110(lint_file("r.urdf"))
+    assert found.message.endswith("(ros2_control 'sys' hardware: present here, absent in r.xacro)")

@@ -648,3 +648,56 @@ def test_a_name_the_urdf_lacks_is_said_once_with_the_number_of_elements_giving_i
     ]
     concise = run_cli("check", "--format", "concise", "arm.srdf", "--urdf", "arm.urdf", cwd=tmp_path).stdout.decode()
     assert concise.count("'bicep_link'") == 1 and concise.count("'j3'") == 1, concise
+
+
+def test_an_srdf_written_without_the_prefix_of_every_urdf_name_is_one_finding_per_kind(tmp_path):
+    """lbr_fri_ros2_stack's iiwa7.srdf names link_0 ... link_ee and A1 ... A7, its iiwa7.xacro
+    makes them with robot_name:=lbr in front: 16 errors and 50 warnings, each 'did you mean
+    lbr_...?'. One prefix explains every name: one finding for the links, one for the joints.
+    A name no prefix explains keeps each its own."""
+    (tmp_path / ".git").mkdir()
+    description, config = tmp_path / "lbr_description", tmp_path / "iiwa_moveit_config"
+    (description / "urdf").mkdir(parents=True)
+    (config / "config").mkdir(parents=True)
+    for package, depends in ((description, ""), (config, "<exec_depend>lbr_description</exec_depend>")):
+        (package / "package.xml").write_text(f'<package format="3"><name>{package.name}</name>{depends}</package>\n')
+    joints = "".join(
+        f'  <joint name="$(arg robot_name)_A{i}" type="revolute"><parent link="$(arg robot_name)_link_{i - 1}"/>'
+        f'<child link="$(arg robot_name)_link_{i}"/><axis xyz="0 0 1"/><limit lower="-1" upper="1" effort="1" velocity="1"/></joint>\n'
+        for i in (1, 2, 3))
+    (description / "urdf" / "iiwa.xacro").write_text(
+        '<robot name="iiwa" xmlns:xacro="http://www.ros.org/wiki/xacro">\n  <xacro:arg name="robot_name" default="lbr"/>\n'
+        + "".join(f'  <link name="$(arg robot_name)_link_{i}"/>\n' for i in range(4)) + joints + "</robot>\n")
+    srdf = config / "config" / "iiwa.srdf"
+    srdf.write_text(
+        '<robot name="iiwa">\n  <group name="arm"><chain base_link="link_0" tip_link="link_3"/></group>\n'
+        '  <group_state name="zero" group="arm"><joint name="A1" value="0"/><joint name="A2" value="0"/><joint name="A3" value="0"/></group_state>\n'
+        '  <disable_collisions link1="link_0" link2="link_1" reason="Adjacent"/>\n'
+        '  <disable_collisions link1="link_1" link2="link_2" reason="Adjacent"/>\n</robot>\n')
+    done, document = check(str(srdf), cwd=tmp_path)
+    diagnostics = [d for f in document["files"] for d in f["diagnostics"]]
+    assert [(d["code"], d["severity"], d["line"], d["column"]) for d in diagnostics] == [("K001", "error", 2, 28), ("K002", "error", 3, 47)]
+    assert diagnostics[0]["message"] == (
+        "the SRDF names 4 links that lbr_description/urdf/iiwa.xacro has only with the prefix 'lbr_': 'link_0', 'link_3', 'link_1' and 1 more")
+    assert diagnostics[0]["hint"].startswith("it is written for the robot with another prefix: write each name with 'lbr_' in front")
+    assert diagnostics[1]["message"] == "the SRDF names 3 joints that lbr_description/urdf/iiwa.xacro has only with the prefix 'lbr_': 'A1', 'A2', 'A3'"
+    # a name no prefix makes one of the URDF's: each its own finding, as before
+    edit(srdf, 'name="A3"', 'name="A4"')
+    done, document = check(str(srdf), cwd=tmp_path)
+    k002 = [d for f in document["files"] for d in f["diagnostics"] if d["code"] == "K002"]
+    assert [d["message"] for d in k002] == [f"group state 'zero' names joint '{name}', which lbr_description/urdf/iiwa.xacro does not have" for name in ("A1", "A2", "A4")]
+    # the same misspelling twice is no prefix: each its own finding
+    srdf.write_text('<robot name="iiwa">\n  <group name="arm"><chain base_link="lbr_lnk_0" tip_link="lbr_lnk_3"/></group>\n</robot>\n')
+    done, document = check(str(srdf), cwd=tmp_path)
+    assert [d["hint"] for f in document["files"] for d in f["diagnostics"]] == ["did you mean 'lbr_link_0'?", "did you mean 'lbr_link_3'?"]
+    # names with a prefix the URDF's lack: one finding too
+    srdf.write_text('<robot name="iiwa">\n  <group name="arm"><chain base_link="lbr_lbr_link_0" tip_link="lbr_lbr_link_3"/></group>\n</robot>\n')
+    done, document = check(str(srdf), cwd=tmp_path)
+    [k001] = [d for f in document["files"] for d in f["diagnostics"]]
+    assert k001["message"] == "the SRDF names 2 links that lbr_description/urdf/iiwa.xacro has only without the prefix 'lbr_': 'lbr_lbr_link_0', 'lbr_lbr_link_3'"
+    # the URDF expanded with another robot_name: one prefix in place of the other
+    srdf.write_text('<robot name="iiwa">\n  <group name="arm"><chain base_link="lbr_link_0" tip_link="lbr_link_3"/></group>\n</robot>\n')
+    done, document = check(str(srdf), "robot_name:=left", cwd=tmp_path)
+    [k001] = [d for f in document["files"] for d in f["diagnostics"]]
+    assert k001["message"] == "the SRDF names 2 links that lbr_description/urdf/iiwa.xacro has only with the prefix 'left' in place of 'lbr': 'lbr_link_0', 'lbr_link_3'"
+    assert k001["hint"].startswith("it is written for the robot with another prefix: write each name with 'left' in place of 'lbr'")

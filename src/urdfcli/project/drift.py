@@ -230,7 +230,7 @@ def summary(comparison: Comparison, urdf: str, source: GeneratedFrom) -> str:
     if differing:
         counted = [f"{len(elements)} {_plural(tag, len(elements))}" for tag, elements in differing.items()]
         verb = "differs" if sum(len(e) for e in differing.values()) == 1 else "differ"
-        first = min((c for c in changes if c.field is not None and c.field != "pose" and c.kind != "renamed" and c.element not in whole), key=_weight)
+        first = min((c for c in changes if c.field is not None and c.field != "pose" and c.kind != "renamed" and c.element not in whole), key=_said_first)
         here, there = _sides(first)
         pieces.append(f"{joined(counted)} {verb} ({element_words(first.element)} {first.field}: {here} here, {there} in {xacro})")
     if not pieces:  # only poses moved: cannot happen without a change above, kept for safety
@@ -250,6 +250,11 @@ def _sides(change: Change) -> tuple[str, str]:
     if change.kind == "added" and change.new is None:
         return "absent", "present"
     return values_text(change.old, change.new)
+
+
+def _said_first(change: Change) -> tuple[int, bool]:
+    """What moves the robot first (:func:`_weight`); of equals, one with a value to show."""
+    return _weight(change), change.old is None and change.new is None
 
 
 # The difference a summary names: what changes how the robot moves first, a colour or a

@@ -12,12 +12,13 @@ effector silently goes missing at run time.
 
 from __future__ import annotations
 
+import os
 from collections.abc import Iterator
 from typing import TYPE_CHECKING
 
 from ..diagnostics import Diagnostic
 from ..model.kinematics import bodies
-from .base import ERROR, INFO, WARNING, Given, Kind, check, declare, explain, joined
+from .base import ERROR, INFO, WARNING, Given, Kind, check, declare, explain, joined, names
 from .suggestions import close_matches
 
 if TYPE_CHECKING:
@@ -85,6 +86,49 @@ def _elsewhere(found: list[tuple[str, Named]]) -> str:
     return f" (and in {joined(parts)})" if parts else ""
 
 
+def _one_prefix(loaded: Loaded, found: list[Diagnostic], kind: str, known) -> list[Diagnostic]:
+    """``found`` (each name the URDF lacks), or one diagnostic for them all when one prefix
+    makes every name one of ``known``: the SRDF of the robot built with another prefix
+    (lbr_fri_ros2_stack's robot_name) lacks every name, and one finding says why."""
+    missing = list(dict.fromkeys(d.subjects[0] for d in found))
+    prefix = _prefix(missing, known)
+    if prefix is None:
+        return found
+    old, new = prefix
+    first = found[0]
+    severity = None if any(d.severity is None for d in found) else first.severity  # the rule's, unless every one is a collision pair's
+    has, fix = (
+        (f"with the prefix '{new}'", f"write each name with '{new}' in front") if not old
+        else (f"without the prefix '{old}'", f"write each name without '{old}'") if not new
+        else (f"with the prefix '{new}' in place of '{old}'", f"write each name with '{new}' in place of '{old}'")
+    )
+    message = f"the SRDF names {len(missing)} {kind}s that {loaded.described.path} has only {has}: {names(missing)}"
+    hint = f"it is written for the robot with another prefix: {fix}, or give the xacro argument that sets the prefix after the SRDF (NAME:=VALUE)"
+    return [first._replace(message=message, hint=hint, severity=severity, subjects=tuple(missing))]
+
+
+def _prefix(missing: list[str], known) -> tuple[str, str] | None:
+    """The one prefix of ``missing`` (``old``, maybe empty) that, replaced by ``new`` (maybe
+    empty), makes each name one of ``known``, as (old, new); None for fewer than two names,
+    or none or several such prefixes."""
+    if len(missing) < 2:
+        return None
+    first = missing[0]
+    candidates = set()
+    for name in known:
+        same = len(os.path.commonprefix([first[::-1], name[::-1]]))  # the end both names share
+        old, new = first[: len(first) - same], name[: len(name) - same]
+        if same and (_word_end(old) and _word_end(new) or not first[len(old)].isalnum()):  # 'lbr_' + 'link_0', not 'panda_l' + 'nk7'
+            candidates.add((old, new))
+    fitting = [(old, new) for old, new in candidates if all(n.startswith(old) and new + n[len(old):] in known for n in missing)]
+    return fitting[0] if len(fitting) == 1 else None
+
+
+def _word_end(prefix: str) -> bool:
+    """Whether a name's part ends at a word's end: empty, or ending with '_', '/', '-' or the like."""
+    return not prefix or not prefix[-1].isalnum()
+
+
 @check(
     "K001", "srdf-unknown-link", ERROR, "An SRDF names a link its URDF does not have", kind=Kind.SEMANTIC,
     doc=explain(
@@ -96,7 +140,10 @@ def _elsewhere(found: list[tuple[str, Named]]) -> str:
         first named (a group, end effector or virtual joint before a pair), with
         how many more elements name it. Named by pairs only, it is a warning:
         MoveIt logs it and goes on (a link the URDF lacks collides with nothing;
-        a typo leaves the two links meant checked).
+        a typo leaves the two links meant checked). When one prefix, added to
+        each name the URDF lacks, taken from each or put in place of another,
+        makes them all its names, one finding names them: the SRDF was written
+        for the robot built with another prefix.
         """,
         """
         MoveIt's SRDF reader logs the unknown name and drops what holds it: the
@@ -116,7 +163,7 @@ def unknown_link(loaded: Loaded, given: Given) -> Iterator[Diagnostic]:
         return
     links = robot.links
     pairs = [(link, other) for pair in loaded.semantic.disabled for link, other in (pair, pair[::-1])]
-    yield from _missing_once(loaded, "K001", "link", loaded.semantic.named_links(), links, pairs)
+    yield from _one_prefix(loaded, list(_missing_once(loaded, "K001", "link", loaded.semantic.named_links(), links, pairs)), "link", links)
 
 
 @check(
@@ -129,7 +176,9 @@ def unknown_link(loaded: Loaded, given: Given) -> Iterator[Diagnostic]:
         joint given seven values (a position and a quaternion): the floating base
         a loader adds, as Pinocchio's `root_joint` (its SRDFs set it without a
         virtual joint). Each missing joint is said once, where it is first named,
-        with how many more elements name it.
+        with how many more elements name it. When one prefix, added to each name
+        the URDF lacks, taken from each or put in place of another, makes them
+        all its names, one finding names them.
         """,
         """
         MoveIt logs the unknown joint and leaves it out: the group lacks a degree
@@ -145,7 +194,7 @@ def unknown_joint(loaded: Loaded, given: Given) -> Iterator[Diagnostic]:
     if robot is None:
         return
     joints = set(robot.joints) | loaded.semantic.own_joints
-    yield from _missing_once(loaded, "K002", "joint", loaded.semantic.named_joints(), joints)
+    yield from _one_prefix(loaded, list(_missing_once(loaded, "K002", "joint", loaded.semantic.named_joints(), joints)), "joint", joints)
 
 
 @check(
