@@ -1,5 +1,6 @@
 """The "did you mean" search gives difflib's answer, with less of its work, and never a name
-that is the misspelt one with a whole prefix or suffix cut off; the name with one added first."""
+that is the misspelt one with a whole prefix or suffix cut off, or with other numbers; the name
+with one added first."""
 
 from __future__ import annotations
 
@@ -10,7 +11,7 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from urdfcli.read.names import cut_from, typo_of
+from urdfcli.read.names import cut_from, numbered_apart, typo_of
 from urdfcli.rules.suggestions import close_matches
 
 NAMES = st.text(alphabet="abcde_12", max_size=8)  # few letters: many ties and near misses
@@ -21,7 +22,7 @@ NAMES = st.text(alphabet="abcde_12", max_size=8)  # few letters: many ties and n
 def test_the_same_names_as_difflib(word, candidates, n, cutoff):
     if any(cut_from(candidate, word) for candidate in candidates):
         return  # (the word with a prefix or suffix added comes first: below)
-    kept = [candidate for candidate in candidates if not cut_from(word, candidate)]
+    kept = [candidate for candidate in candidates if not cut_from(word, candidate) and not numbered_apart(word, candidate)]
     assert close_matches(word, candidates, n, cutoff) == difflib.get_close_matches(word, kept, n, cutoff)
 
 
@@ -33,6 +34,19 @@ def test_a_forgotten_prefix_is_offered_before_a_closer_spelling():
     assert difflib.get_close_matches("joint_1", joints, n=1) == ["joint_u"]
     assert close_matches("joint_1", joints) == ["d500_joint_1"]
     assert close_matches("base", ["base_footprint", "base_link", "bse"]) == ["base_link"]
+
+
+@pytest.mark.parametrize("suggest", [close_matches, lambda word, names: [typo_of(word, names)]])
+def test_another_number_of_a_series_is_not_offered(suggest):
+    """lbr_fri_ros2_stack's SRDF after lbr_link_7 was renamed lbr_link_flange: each pair naming
+    lbr_link_7 said "did you mean 'lbr_link_6'?", which would disable another pair's checks."""
+    links = [f"lbr_link_{i}" for i in range(7)] + ["lbr_link_flange", "lbr_link_ee"]
+    assert suggest("lbr_link_7", links) in ([], [None])
+    assert suggest("A8", ["A1", "A2", "A7"]) in ([], [None])
+    assert suggest("link7", ["link", "link6"]) in ([], [None])
+    # a typo beside the number is still one
+    assert suggest("lbr_lnk_6", links) == ["lbr_link_6"]
+    assert suggest("joint1", ["joint_1", "joint_2"]) == ["joint_1"]
 
 
 def test_a_misspelt_link_among_many():

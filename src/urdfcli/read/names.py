@@ -2,13 +2,14 @@
 
 from __future__ import annotations
 
+import os
 from collections.abc import Iterable
 
 
 def typo_of(word: str, candidates: Iterable[str]) -> str | None:
     """The candidate ``word`` is a misspelling of: one edit away (two for longer words), case aside."""
     allowed = 1 if len(word) <= 4 else 2
-    scored = sorted((_edits(word.lower(), c.lower()), c) for c in candidates if not cut_from(word, c))
+    scored = sorted((_edits(word.lower(), c.lower()), c) for c in candidates if not cut_from(word, c) and not numbered_apart(word, c))
     return scored[0][1] if scored and scored[0][0] <= allowed else None
 
 
@@ -32,6 +33,17 @@ def cut_from(word: str, candidate: str) -> bool:
     return (not word[cut - 1].isalnum() or not word[cut].isalnum()) and not doubled
 
 
+def numbered_apart(word: str, candidate: str) -> bool:
+    """Whether ``candidate`` differs from ``word`` only where one of them has a number
+    (``link_6`` or ``link_ee`` for ``link_7``, ``A2`` for ``A1``), case aside: another
+    member of a numbered series, which a "did you mean" hint must not offer for a typo
+    (the user renamed or lost that one)."""
+    word, candidate = word.lower(), candidate.lower()
+    start = len(os.path.commonprefix([word, candidate]))
+    end = len(os.path.commonprefix([word[start:][::-1], candidate[start:][::-1]]))
+    return any(middle.isdigit() for middle in (word[start : len(word) - end], candidate[start : len(candidate) - end]))
+
+
 def _edits(a: str, b: str) -> int:
     """Edits (insertion, deletion, substitution, swap of neighbours) from a to b."""
     previous, current = None, list(range(len(b) + 1))
@@ -45,4 +57,4 @@ def _edits(a: str, b: str) -> int:
     return current[len(b)]
 
 
-__all__ = ["cut_from", "typo_of"]
+__all__ = ["cut_from", "numbered_apart", "typo_of"]

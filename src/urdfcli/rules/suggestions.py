@@ -1,13 +1,13 @@
 """The "did you mean" hints: the misspelt name with a prefix or suffix it lacks, else the names
 closest to it, as :mod:`difflib` ranks them, less those that are the misspelt name with a
-whole prefix or suffix cut off (another name)."""
+whole prefix or suffix cut off (another name) or with other numbers (another of a series)."""
 
 from __future__ import annotations
 
 import heapq
 from collections.abc import Iterable
 
-from ..read.names import cut_from
+from ..read.names import cut_from, numbered_apart
 
 
 def close_matches(word: str, candidates: Iterable[str], n: int = 1, cutoff: float = 0.6) -> list[str]:
@@ -18,7 +18,8 @@ def close_matches(word: str, candidates: Iterable[str], n: int = 1, cutoff: floa
     score (a robot's names share most of their letters, so many pass the bounds).
     A candidate that is ``word`` with a whole prefix or suffix cut off is never
     offered: for ``robotiq_85_base_link``, ``base_link`` is the robot's base, not the
-    gripper's link misspelt. One that is ``word`` with a whole prefix or suffix added
+    gripper's link misspelt; nor one that is ``word`` with other numbers (``link_6`` for
+    ``link_7``: another link of the chain). One that is ``word`` with a whole prefix or suffix added
     comes first: ``d500_joint_1`` for ``joint_1`` is a ``${prefix}`` forgotten (difflib
     would rank the other robot's ``joint_u`` above it)."""
     from difflib import SequenceMatcher  # only when a name is misspelt
@@ -31,7 +32,7 @@ def close_matches(word: str, candidates: Iterable[str], n: int = 1, cutoff: floa
     matcher.set_seq2(word)
     bounded = []
     for candidate in candidates:
-        if cut_from(word, candidate):
+        if cut_from(word, candidate) or numbered_apart(word, candidate):
             continue
         matcher.set_seq1(candidate)
         if matcher.real_quick_ratio() >= cutoff:
