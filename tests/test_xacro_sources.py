@@ -815,6 +815,31 @@ def test_a_macro_called_without_the_prefix_is_a_warning_at_the_call_not_a_macro_
     assert found(model, codes=("X107", "X104")) == []
 
 
+def test_macros_called_without_the_prefix_inside_an_uncalled_macro_are_not_called_nowhere(tmp_path):
+    """turtlebot_arm's ROS 1 arm.xacro: its macro's body calls the parts of arm_hardware.xacro
+    as <dynamixel_AX12_fixed .../>, and the model calls the arm as <turtlebot_arm .../>.
+    xacro 2 expands none of them: X107 at the model's call says so. The parts are called
+    (without the prefix) in arm.xacro, not 'called nowhere: call them, or remove them'."""
+    write(tmp_path / "hardware.xacro", library("""
+        <xacro:macro name="servo" params="parent name">
+          <link name="${name}_link"/>
+          <joint name="${name}_joint" type="fixed"><parent link="${parent}"/><child link="${name}_link"/></joint>
+        </xacro:macro>
+        """))
+    write(tmp_path / "arm.xacro", library("""
+        <xacro:include filename="hardware.xacro"/>
+        <xacro:macro name="arm" params="parent">
+          <servo parent="${parent}" name="pan_servo"/>
+        </xacro:macro>
+        """))
+    model = write(tmp_path / "robot.urdf.xacro", robot("""
+        <xacro:include filename="arm.xacro"/>
+        <link name="base_link"/>
+        <arm parent="base_link"/>
+        """))
+    assert found(model, codes=("X104", "X107")) == [("X107", "robot.urdf.xacro", *column_of(model, "<arm "))]
+
+
 def test_an_unprefixed_insert_block_inside_a_joint_is_one_x107_at_the_tag_not_an_x103_on_the_macro(tmp_path):
     """Hey5's palm: <joint><insert_block name="origin"/></joint> in a macro's body. xacro 2
     copies the tag unread and the call's pose is lost. The mistake is the missing prefix,

@@ -179,6 +179,7 @@ class XacroFile:
         self.made: list[Made] = []
         self.packages: list[PackageUse] = []
         self.old: list[Old] = []
+        self.unprefixed: set[str] = set()  # names of the elements written without a prefix: a macro's among them is a call xacro 2 never expands
         self.derived: dict = {}  # what the model layer works out from these, once (see urdfcli.read.memo)
 
     @property
@@ -310,6 +311,8 @@ class _Scanner:
             else:
                 self.attributes(element, at, macro)
             return macro
+        if element.prefix is None:
+            found.unprefixed.add(local)
         if element.prefix is None and local in OLD_DIRECTIVES and element.get(OLD_DIRECTIVES[local]) is not None and _directive_place(element, local, macro):
             found.old.append(Old(local, Place(at), element.get(OLD_DIRECTIVES[local])))
         if macro is not None and local in NAMED and element.get("name") is not None and _in_body(element):
