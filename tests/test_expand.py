@@ -122,6 +122,33 @@ def test_xacro_errors_are_one_short_line_with_file_and_line(tmp_path, body, mess
     assert not out.exists()
 
 
+def test_a_chain_of_macros_nests_as_deep_as_under_the_xacro_tool(tmp_path):
+    """A cable or snake robot made by a macro that calls itself for the next segment:
+    200 levels, which the xacro tool expands. urdfcli's bookkeeping around xacro's calls
+    made Python's recursion limit stop it at about 138 ('runaway recursion ... without
+    end'). A recursion without end still is one."""
+    model = tmp_path / "cable.urdf.xacro"
+    model.write_text(
+        '<robot name="cable" xmlns:xacro="http://www.ros.org/wiki/xacro">\n'
+        '  <xacro:macro name="segment" params="i">\n'
+        '    <link name="s${i}"/>\n'
+        '    <joint name="j${i}" type="fixed"><parent link="s${i-1}"/><child link="s${i}"/></joint>\n'
+        '    <xacro:if value="${i &lt; 200}"><xacro:segment i="${i+1}"/></xacro:if>\n'
+        '  </xacro:macro>\n'
+        '  <link name="s0"/>\n'
+        '  <xacro:segment i="1"/>\n'
+        '</robot>\n'
+    )
+    real = real_xacro(model)
+    assert real.returncode == 0, real.stderr
+    mine = run_cli("expand", str(model))
+    assert mine.returncode == 0, mine.stderr
+    assert mine.stdout.decode() == real.stdout
+    model.write_text(model.read_text().replace("${i &lt; 200}", "true"))
+    done = run_cli("expand", str(model))
+    assert done.returncode == 1 and "runaway recursion in macro 'segment'" in done.stderr.decode()
+
+
 def test_include_cycle(tmp_path):
     (tmp_path / "a.urdf.xacro").write_text('<robot name="r" xmlns:xacro="http://www.ros.org/wiki/xacro">\n<xacro:include filename="b.xacro"/></robot>')
     (tmp_path / "b.xacro").write_text('<robot xmlns:xacro="http://www.ros.org/wiki/xacro">\n\n<xacro:include filename="a.urdf.xacro"/></robot>')

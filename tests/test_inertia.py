@@ -679,3 +679,11 @@ def test_a_model_without_masses_is_said_to_be_one_and_its_shaped_links_not_calle
     assert "total  no link declares a mass: a kinematic model" in out
     data = json.loads(run_cli("inertia", "--format", "json", str(path)).stdout)
     assert [link["expected_from"] for link in data["links"]] == ["massless: no <inertial>", "massless: no <inertial>", "massless frame link"]
+
+
+def test_one_value_computed_two_ways_reads_the_same_in_declared_and_expected():
+    """ros2_control_demos' diffbot: a wheel's izz written as m/2*r*r by xacro is
+    3.3749999999999994e-05, the cylinder's m*r**2/2 is 3.375e-05; the table showed
+    'izz=3.37e-05' declared and 'izz=3.38e-05' expected, 0.0% apart."""
+    written, implied = (((0, 0, 0), (0, 0, 0), (0, 0, izz)) for izz in (0.3 / 2.0 * 0.015 * 0.015, 0.3 * 0.015**2 / 2))
+    assert massprops.tensor_text(written) == massprops.tensor_text(implied) == "ixx=0 iyy=0 izz=3.38e-05"

@@ -584,6 +584,25 @@ def test_an_stl_of_a_triangle_count_mujoco_refuses_is_rejected_by_both(tmp_path,
     assert found == [f"MuJoCo rejects link 'l': {said}"]
 
 
+def test_collision_meshes_mujoco_cannot_open_are_one_refusal(tmp_path):
+    """ros2_robotiq_gripper without its meshes: nine links' collision files missing. MuJoCo
+    stops at the first file it cannot open; D004 already names the folder once. One C110
+    names the links, at the first mesh, not nine errors of one cause."""
+    model = tmp_path / "gripper.urdf"
+    parts = "".join(
+        f'<link name="{name}"><inertial><mass value="0.1"/><inertia ixx="1e-4" iyy="1e-4" izz="1e-4" ixy="0" ixz="0" iyz="0"/></inertial>'
+        f'<collision><geometry><mesh filename="meshes/{name}.stl"/></geometry></collision></link>'
+        f'<joint name="{name}_joint" type="fixed"><parent link="base"/><child link="{name}"/></joint>'
+        for name in ("knuckle", "finger", "tip")
+    )
+    model.write_text(f'<robot name="r"><link name="base"/>{parts}</robot>')
+    found = [d for d in predicted(model, profile("mujoco")).diagnostics if d.code == "C110"]
+    assert [d.message for d in found] == [
+        "MuJoCo rejects 3 links ('knuckle', 'finger', 'tip'): mesh file 'meshes/knuckle.stl' does not exist (nor 2 more files)"
+    ]
+    assert found[0].line == 1 and found[0].subjects == ("knuckle", "finger", "tip")
+
+
 # -- check --load ----------------------------------------------------------------------------------
 
 

@@ -750,6 +750,31 @@ def test_a_file_its_includer_reads_only_under_a_condition_is_not_sent_to_see_wha
     )
 
 
+def test_a_fragment_no_model_could_check_says_why_once(tmp_path):
+    """RotorS's firefly.xacro: a robot's links that only firefly_base.xacro includes (it
+    reads $(arg mav_name), which only that model gives), whose expansion stops at a missing
+    include first. Checked by name, X006 says so with the error that stopped the model;
+    two notes said it again ('not checked through ...', 'a fragment ... not checked')."""
+    (tmp_path / ".git").mkdir()
+    write(tmp_path / "urdf" / "firefly.xacro", f"""\
+        <robot name="firefly" {XACRO}>
+          <link name="$(arg mav_name)/base_link"/>
+        </robot>
+        """)
+    write(tmp_path / "urdf" / "firefly_base.xacro", f"""\
+        <robot name="firefly" {XACRO}>
+          <xacro:arg name="mav_name" default="firefly"/>
+          <xacro:include filename="component_snippets.xacro"/>
+          <xacro:include filename="firefly.xacro"/>
+        </robot>
+        """)
+    done = run_cli("check", "urdf/firefly.xacro", cwd=tmp_path)
+    err = done.stderr.decode()
+    assert "X006 warning: xacro fragment not checked: no model that includes it could check it (urdf/firefly_base.xacro stops at an error before reading it)" in err, err
+    assert "component_snippets.xacro" in err and done.returncode == 1
+    assert "not checked through" not in err and "none read it" not in err, err
+
+
 def test_a_file_an_expansion_never_reached_for_an_error_before_it_says_so(tmp_path):
     """Nishida's sia5: the model includes body.urdf.xacro, whose X003 stops the expansion,
     then its gazebo fragment and library. Not 'under a condition, list argument sets': the

@@ -182,6 +182,26 @@ def test_its_own_package_named_by_its_folder_is_no_dependency(tmp_path):
     assert "<exec_depend>sick_description</exec_depend>" in manifest and "example-robot-data" not in manifest
 
 
+def test_its_own_package_under_a_name_no_package_has_is_no_dependency(tmp_path):
+    """ROBOTIS-OP3-Common's op3_description: the package was renamed, its model still
+    includes $(find robotis_op3_description)/urdf/robotis_op3.visuals.xacro, a file of its own
+    package. X004 says the name is found nowhere; a 'safe' fix declaring a dependency on
+    it would give rosdep a key nobody provides. A package found nowhere whose path is not
+    in the file's package is still one (the file cannot tell it is its own)."""
+    root = tmp_path / "op3_description"
+    write(root / "package.xml", package_xml("op3_description"))
+    write(root / "urdf" / "visuals.xacro", library('<xacro:macro name="body"><link name="body_link"/></xacro:macro>'))
+    model = write(root / "urdf" / "robot.urdf.xacro", robot("""
+        <xacro:include filename="$(find robotis_op3_description)/urdf/visuals.xacro"/>
+        <xacro:include filename="$(find hector_sensors_description)/urdf/sonar.urdf.xacro"/>
+        <xacro:body/>
+        """))
+    assert {d.message.split("'")[1] for d in diagnostics(model, "P001")} == {"hector_sensors_description"}
+    run_cli("lint", "--fix", str(model))
+    manifest = (root / "package.xml").read_text()
+    assert "<exec_depend>hector_sensors_description</exec_depend>" in manifest and "robotis_op3_description" not in manifest
+
+
 def test_a_package_a_macro_parameter_names_is_judged_at_each_call_when_every_call_names_it(packages):
     model = model_using(packages, """
         <xacro:macro name="part" params="name pkg:=my_robot">
@@ -813,6 +833,31 @@ def test_a_macro_called_without_the_prefix_is_a_warning_at_the_call_not_a_macro_
     assert codes == ["X107"]
     edit(model, "<RefLink ref", "<xacro:RefLink ref")
     assert found(model, codes=("X107", "X104")) == []
+
+
+def test_macros_called_without_the_prefix_inside_an_uncalled_macro_are_not_called_nowhere(tmp_path):
+    """turtlebot_arm's ROS 1 arm.xacro: its macro's body calls the parts of arm_hardware.xacro
+    as <dynamixel_AX12_fixed .../>, and the model calls the arm as <turtlebot_arm .../>.
+    xacro 2 expands none of them: X107 at the model's call says so. The parts are called
+    (without the prefix) in arm.xacro, not 'called nowhere: call them, or remove them'."""
+    write(tmp_path / "hardware.xacro", library("""
+        <xacro:macro name="servo" params="parent name">
+          <link name="${name}_link"/>
+          <joint name="${name}_joint" type="fixed"><parent link="${parent}"/><child link="${name}_link"/></joint>
+        </xacro:macro>
+        """))
+    write(tmp_path / "arm.xacro", library("""
+        <xacro:include filename="hardware.xacro"/>
+        <xacro:macro name="arm" params="parent">
+          <servo parent="${parent}" name="pan_servo"/>
+        </xacro:macro>
+        """))
+    model = write(tmp_path / "robot.urdf.xacro", robot("""
+        <xacro:include filename="arm.xacro"/>
+        <link name="base_link"/>
+        <arm parent="base_link"/>
+        """))
+    assert found(model, codes=("X104", "X107")) == [("X107", "robot.urdf.xacro", *column_of(model, "<arm "))]
 
 
 def test_an_unprefixed_insert_block_inside_a_joint_is_one_x107_at_the_tag_not_an_x103_on_the_macro(tmp_path):

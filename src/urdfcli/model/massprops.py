@@ -354,7 +354,8 @@ def tensor_text(tensor: Matrix, other: Matrix | None = None) -> str:
     values = as_dict(tensor)
     extra = as_dict(other) if other is not None else values
     shown = [k for k in KEYS if k in ("ixx", "iyy", "izz") or values[k] or extra[k]]
-    return " ".join(f"{k}={values[k]:.3g}" for k in shown)
+    # to 12 digits first: one value computed two ways (3.3749999999999994e-05, 3.375e-05) reads the same
+    return " ".join(f"{k}={float(f'{values[k]:.12g}'):.3g}" for k in shown)
 
 
 def negated_products(m: Matrix) -> Matrix:

@@ -39,6 +39,7 @@ class Facts(NamedTuple):
     free_blocks: frozenset[str]  # blocks a macro body inserts that are not its own block parameters
     variants: frozenset[tuple[str, str]]  # (macro, parameter as written): a macro of that name uses that parameter
     interfaces: frozenset[tuple[str, str]]  # (parameter list, parameter): a macro taking that list uses that parameter
+    unprefixed: frozenset[str] = frozenset()  # elements written without a prefix: among them, macros called without xacro:
 
 
 def chain(file: XacroFile, macro: int | None) -> list[int]:
@@ -153,17 +154,18 @@ def _facts_of(file: XacroFile) -> Facts:
         frozenset(b.name for b in file.blocks), frozenset(globals_), any_global,
         frozenset(forwarded), frozenset(free), frozenset(free_blocks),
         frozenset((file.macros[m].name, p) for m, p in used), frozenset((interface(file, m), p) for m, p in used),
+        frozenset(file.unprefixed),
     )
 
 
 def merged(facts: Iterable[Facts]) -> Facts:
     facts = list(facts)
-    fields = ("names", "arguments", "calls", "blocks", "globals", "forwarded", "free", "free_blocks", "variants", "interfaces")
+    fields = ("names", "arguments", "calls", "blocks", "globals", "forwarded", "free", "free_blocks", "variants", "interfaces", "unprefixed")
     union = [frozenset().union(*(getattr(f, field) for f in facts)) for field in fields]
-    names, arguments, calls, blocks, globals_, forwarded, free, free_blocks, variants, interfaces = union
+    names, arguments, calls, blocks, globals_, forwarded, free, free_blocks, variants, interfaces, unprefixed = union
     return Facts(
         names, arguments, any(f.any_argument for f in facts), calls, any(f.any_call for f in facts),
-        blocks, globals_, any(f.any_global for f in facts), forwarded, free, free_blocks, variants, interfaces,
+        blocks, globals_, any(f.any_global for f in facts), forwarded, free, free_blocks, variants, interfaces, unprefixed,
     )
 
 

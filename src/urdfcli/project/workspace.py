@@ -1123,12 +1123,11 @@ def _library_result(
     stopped_only = stopped[0] if stopped and len(reasons) == len(stopped) else None
     environment = entry.gates.environment(reading=bool(unread), calling=bool(uncalled))
     if not checked_through and fragment:
-        notes += [f"not checked through {label}: it does not read this file with {arguments}" for label, arguments in unread]
-        notes += [f"not checked through {label}: its expansion stops at an error before reading this file" for label in stopped]
-        notes.append("a fragment of the models that include it (it cannot be read on its own), and none read it: not checked")
-        if reasons:
+        if reasons:  # its X006 says why (the models that do not read it, or stop before), once
             said = outcome(Target(entry.path, alone=True, unchecked="; ".join(reasons), fragment=True, needs=needs, stopped=stopped_only))
             found += said.diagnostics if isinstance(said, Result) else ()
+        else:
+            notes.append("a fragment of the models that include it (it cannot be read on its own), and none read it: not checked")
     elif not checked_through:  # checked on its own: its X006 says why, and what would check it
         alone = outcome(Target(entry.path, alone=True, unchecked="; ".join(reasons), needs=needs, environment=environment, stopped=stopped_only))
         if isinstance(alone, Unreadable):

@@ -17,6 +17,7 @@ import contextlib
 import io
 import os
 import re
+import sys
 import xml.dom.minicompat
 import xml.dom.minidom
 import xml.parsers.expat
@@ -371,9 +372,15 @@ class _Session:
         guard.restrict(xacro._global_symbols)
         self.patch(xacro.substitution_args, "_eval_find", self.find)
         xacro.all_includes = []
+        # The wrappers above add about three frames to the four of each level of xacro's
+        # recursion: with the limit raised in proportion, a chain of macros nests as deep
+        # as under the xacro tool, and a runaway recursion still ends at about its depth.
+        self.limit = sys.getrecursionlimit()
+        sys.setrecursionlimit(self.limit * 9 // 5)
         return self
 
     def __exit__(self, *exc):
+        sys.setrecursionlimit(self.limit)
         for (owner, name), original in self.saved.items():
             setattr(owner, name, original)
         xacro.filestack = None

@@ -140,11 +140,13 @@ class Made(NamedTuple):
 
 class PackageUse(NamedTuple):
     """A package named by ``$(find pkg)`` or ``package://pkg/``; ``package`` as written
-    (it may hold ``${...}``)."""
+    (it may hold ``${...}``); ``path`` what follows it up to a space or a quote
+    (``/urdf/arm.xacro``), as written."""
 
     package: str
     place: Place
     macro: int | None
+    path: str = ""
 
 
 class Old(NamedTuple):
@@ -179,6 +181,7 @@ class XacroFile:
         self.made: list[Made] = []
         self.packages: list[PackageUse] = []
         self.old: list[Old] = []
+        self.unprefixed: set[str] = set()  # names of the elements written without a prefix: a macro's among them is a call xacro 2 never expands
         self.derived: dict = {}  # what the model layer works out from these, once (see urdfcli.read.memo)
 
     @property
@@ -310,6 +313,8 @@ class _Scanner:
             else:
                 self.attributes(element, at, macro)
             return macro
+        if element.prefix is None:
+            found.unprefixed.add(local)
         if element.prefix is None and local in OLD_DIRECTIVES and element.get(OLD_DIRECTIVES[local]) is not None and _directive_place(element, local, macro):
             found.old.append(Old(local, Place(at), element.get(OLD_DIRECTIVES[local])))
         if macro is not None and local in NAMED and element.get("name") is not None and _in_body(element):
@@ -328,7 +333,7 @@ class _Scanner:
         if "$" not in text and "package://" not in text:
             return
         for match in _PACKAGE_URI.finditer(text):
-            self.found.packages.append(PackageUse(match.group(1), place._replace(offset=place.offset + match.start()), macro))
+            self.found.packages.append(PackageUse(match.group(1), place._replace(offset=place.offset + match.start()), macro, _path_after(text, match.end())))
         self.lex(text, place, macro, inside="")
 
     def lex(self, text: str, place: Place, macro: int | None, inside: str) -> None:
@@ -350,9 +355,14 @@ class _Scanner:
                 function, _, argument = inner.strip().partition(" ")
                 found.substitutions.append(Substitution(function, argument.strip(), where, macro, inside == "$"))
                 if function == "find" and argument.strip():
-                    found.packages.append(PackageUse(argument.strip(), where._replace(offset=where.offset - 2), macro))
+                    found.packages.append(PackageUse(argument.strip(), where._replace(offset=where.offset - 2), macro, _path_after(text, token.end())))
                 self.lex(inner, where, macro, "(")
             at = token.end()
+
+
+def _path_after(text: str, at: int) -> str:
+    """The path written after a package's name, up to a space or a quote."""
+    return re.match(r"[^\s\"']*", text[at:]).group(0)
 
 
 def _written_name(element, key: str) -> str:

@@ -16,27 +16,34 @@ from .base import SAFE, WARNING, Kind, RuleSet, check
 _VARIABLE = re.compile(r"\$\{\s*(\w+)\s*\}")
 
 
-def _uses(loaded) -> Iterator[tuple[str, str, Callable[[], Location]]]:
-    """(file, package, where) for every package a file of the model
-    names with a plain name: the xacro sources read statically (conditions and
-    uncalled macros included), or a plain URDF's meshes and textures. ``where`` is
-    worked out only for the use reported."""
+def _uses(loaded) -> Iterator[tuple[str, str, str, Callable[[], Location]]]:
+    """(file, package, path, where) for every package a file of the model
+    names with a plain name, and the path written after it: the xacro sources read
+    statically (conditions and uncalled macros included), or a plain URDF's meshes
+    and textures. ``where`` is worked out only for the use reported."""
     if loaded.document.is_xacro:
         sources = loaded.xacro_sources
         own = {file.name for file in sources.files}
         for file in sources.files:
             for use in file.packages:
                 if use.package and "$" not in use.package:
-                    yield file.name, use.package, functools.partial(_at, file, use.place)
+                    yield file.name, use.package, use.path, functools.partial(_at, file, use.place)
                 else:  # a macro's parameter: each call names the package, where every call gives a plain name
                     for package, where, place in _given(sources, file, use):
                         if where.name in own:
-                            yield where.name, package, functools.partial(_at, where, place)
+                            yield where.name, package, use.path, functools.partial(_at, where, place)
     elif loaded.modelled:
         for at, _, uri in loaded.robot.resources:
             package = uri_package(uri)
             if package:
-                yield loaded.document.shown, package, functools.partial(loaded.document.locate, at)
+                yield loaded.document.shown, package, uri.partition(f"package://{package}")[2], functools.partial(loaded.document.locate, at)
+
+
+def _in_own_package(owner: Path, paths: list[str]) -> bool:
+    """Whether a path written after a package's name names a file of the package at
+    ``owner``: its own package under a name it no longer has (op3_description's
+    ``$(find robotis_op3_description)/urdf/robotis_op3.visuals.xacro``)."""
+    return any(path.strip("/") and "$" not in path and (owner / path.strip("/")).is_file() for path in paths)
 
 
 def _given(sources, file, use) -> list:
@@ -82,8 +89,10 @@ def dependency_undeclared(loaded, given) -> Iterator[Diagnostic]:
     be found here is flagged too (X004 and D005 say it is missing; this, that a
     fresh workspace would not install it either), unless it is the name of the
     file's own package folder: that is the package itself, named by its folder
-    instead of its `<name>` (D005 says which to write), and declaring a
-    dependency on it would only make rosdep fail on a key nobody provides.
+    instead of its `<name>` (D005 says which to write), or a name that no package
+    has whose path names a file of the file's own package (a package renamed,
+    its files still naming the old name): declaring a dependency on it would only
+    make rosdep fail on a key nobody provides.
 
     ## Why is this bad?
     It works where the package happens to be installed, and breaks in a fresh
@@ -111,13 +120,14 @@ def dependency_undeclared(loaded, given) -> Iterator[Diagnostic]:
     """
     index = loaded.resolver.index
     reported: dict[tuple[str, str], list] = {}
-    for file, package, where in _uses(loaded):
+    for file, package, path, where in _uses(loaded):
         key = (file, package)
         if key in reported:
             reported[key][0] += 1
+            reported[key][2].append(path)
             continue
-        reported[key] = [0, where]
-    for (file, package), (others, where) in reported.items():
+        reported[key] = [0, where, [path]]
+    for (file, package), (others, where, paths) in reported.items():
         owner = index.enclosing_package(index.real_path(Path(file)).parent) if not file.startswith("<") else None
         manifest = index.manifest(owner / "package.xml") if owner is not None else None
         if manifest is None or manifest.name in (None, package) or package in manifest.dependencies:
@@ -127,6 +137,8 @@ def dependency_undeclared(loaded, given) -> Iterator[Diagnostic]:
             continue  # its own, under another name (-P NAME=DIR)
         if folder is None and owner.name == package:
             continue  # its own, by its folder's name: D005 says which name to write, no dependency is missing
+        if folder is None and _in_own_package(owner, paths):
+            continue  # its own, by another name (X004 or D005 says it is not found): a dependency on that name would only make rosdep fail
         more = f" (and {others} more use{'s' if others > 1 else ''} in this file)" if others else ""
         name = shown(owner / "package.xml")
         fix = declaration(loaded.document.files.get(name), name, package)

@@ -230,7 +230,8 @@ def _unprefixed_blocks(file: XacroFile) -> set[tuple[int, str]]:
 def macro_unused(loaded, given) -> Iterator[Diagnostic]:
     """## What it does
     Notes a `<xacro:macro>` that no `<xacro:NAME>` (nor `<xacro:call
-    macro="NAME">`) calls in the model's files, the files their includes may
+    macro="NAME">`, nor a `<NAME>` written without the prefix, which X107
+    reports where xacro leaves it) calls in the model's files, the files their includes may
     reach, or any xacro file of the repository or workspace around it. Info
     only: a library's macros serve packages this workspace may not hold; the
     macros of one file that nothing calls are one note. A workspace with a
@@ -263,13 +264,12 @@ def macro_unused(loaded, given) -> Iterator[Diagnostic]:
     ```
     """
     sources = loaded.xacro_sources
-    called_unprefixed = {call.name for call in unprefixed_calls(loaded)}
     for file in sources.files:
         uncalled = []
         for definition in file.macros:
             name = definition.name.removeprefix("xacro:")
-            if not name or _used(sources, lambda f: f.any_call or name in f.calls) or name in called_unprefixed:
-                continue  # (a call without xacro: is X107's)
+            if not name or _used(sources, lambda f: f.any_call or name in f.calls or name in f.unprefixed):
+                continue  # (a call without xacro:, even in a body xacro never expands, is X107's)
             uncalled.append((name, definition))
         where = "in this file, the files it includes, nor any other file of the workspace" if file.makes else "by any file of the workspace"
         if len(uncalled) == 1:

@@ -350,7 +350,8 @@ def fixed_base(loaded, given):
     doc=explain(
         """With `--target mujoco`: finds a collision mesh (and a visual one when the model
         sets `discardvisual="false"`) named by a path that leads to no file (relative paths
-        from the model's folder, as MuJoCo reads them; `package://` is C105's).""",
+        from the model's folder, as MuJoCo reads them; `package://` is C105's): one
+        diagnostic for the model, at the first, naming the links whose files are missing.""",
         """MuJoCo refuses to load the model: "Error opening file" (src/user/user_mesh.cc).
         A missing visual mesh is no matter to MuJoCo, which drops the visuals.""",
         meshed("../meshes/gone.stl"),
@@ -359,15 +360,24 @@ def fixed_base(loaded, given):
 )
 def mesh_missing(loaded, given):
     files = MeshFiles.of(loaded)
+    missing = []
     for name, geometry in _meshes(loaded, compiler_options(loaded).discardvisual):
         if "://" in geometry.filename and not geometry.filename.startswith("file://"):
             continue
         path = files.path(geometry.filename)
         if path is not None and not path.exists():
-            yield loaded.diagnostic(
-                "C110", f"MuJoCo rejects link '{name}': mesh file '{geometry.filename}' does not exist", geometry.at,
-                "fix the path (relative to the model's folder) or add the file", subjects=(name,),
-            )
+            missing.append((name, geometry))
+    if not missing:
+        return
+    name, geometry = missing[0]  # one cause, one refusal: MuJoCo stops at the first file it cannot open
+    links = list(dict.fromkeys(link for link, _ in missing))
+    what = f"link '{name}'" if len(links) == 1 else f"{len(links)} links ({names(links)})"
+    more = len(missing) - 1
+    files_said = f"mesh file '{geometry.filename}' does not exist" + (f" (nor {more} more file{'s' if more > 1 else ''})" if more else "")
+    yield loaded.diagnostic(
+        "C110", f"MuJoCo rejects {what}: {files_said}", geometry.at,
+        "fix the path (relative to the model's folder) or add the file", subjects=tuple(links),
+    )
 
 
 @check(
