@@ -91,6 +91,20 @@ def test_an_open_mesh_is_not_watertight_and_its_hull_stands_in(tmp_path):
     assert summarise_file(write(tmp_path / "closed.stl", box((0.4, 0.3, 0.1)))).watertight is True
 
 
+def test_the_hull_of_an_open_mesh_holds_only_the_vertices_its_faces_use(tmp_path):
+    """romeo's TrunkYaw.dae holds 5,691 vertices of which its faces use 882: the hull of them
+    all put the trunk's centre 10 cm above the mesh, and the inertia fix wrote it there."""
+    mesh = open_box((0.4, 0.3, 0.1))
+    lines = [f"v {x} {y} {z}" for x, y, z in mesh.vertices] + ["v 0 0 2", "v 0 0 3"]  # vertices no face uses
+    lines += [f"f {a + 1} {b + 1} {c + 1}" for a, b, c in mesh.faces]
+    path = tmp_path / "open.obj"
+    path.write_text("\n".join(lines) + "\n")
+    summary = summarise_file(path)
+    assert summary.solid.hull and summary.high[2] == pytest.approx(0.05)
+    assert summary.solid.volume == pytest.approx(0.4 * 0.3 * 0.1)
+    assert summary.solid.centre == pytest.approx(tuple(mesh.convex_hull.center_mass), abs=1e-12)
+
+
 def test_watertightness_agrees_with_trimesh_on_published_meshes():
     robots = example_robot_data() / "robots"
     files = sorted(p for p in robots.rglob("*") if p.suffix.lower() in (".stl", ".obj", ".dae"))[::9]  # a sample: 80 files

@@ -418,3 +418,69 @@ def test_what_the_reader_finds_in_a_macro_body_is_said_once_for_its_calls(tmp_pa
     assert found["J003"].message == "revolute joint 'left_elbow' (and 'right_elbow' alike) has no <limit>"
     assert found["J003"].subjects == ("left_elbow", "right_elbow") and found["J003"].line == 9
     assert found["V001"].subjects == ("left_shoulder", "right_shoulder"), found["V001"]
+
+
+# -- A.3: the centre of mass against the geometry -----------------------------------------
+# Doosan m1013's link 3: a forearm 0.4 m long whose centre of mass is written in the base frame
+FOREARM = box("0.08 0.08 0.4", "0 0 0.2")
+FOREARM_TENSOR = dict(ixx=0.05, iyy=0.05, izz=0.004)
+
+
+def forearm(centre: str, inside: str = FOREARM) -> str:
+    return BASE + arm("forearm", inside + inertial(3.8, **FOREARM_TENSOR, xyz=centre), extra='<origin xyz="0 0 0.95"/>')
+
+
+def test_a_centre_of_mass_written_in_the_base_frame_is_flagged(tmp_path):
+    (code, severity, message), = found(tmp_path, forearm("0 0 1.15"), "I013")
+    assert severity == "warning" and "'forearm' (0 0 1.15) lies 0.75 m outside the box (-0.04 -0.04 0) to (0.04 0.04 0.4)" in message
+    # the root frame puts it 0.2 m up the forearm: said, as the likely mistake
+    assert message.endswith("read in the frame of the root link 'base', it lies inside")
+    # a centre wrong in any other way is flagged too, without that reading
+    (_, _, message), = found(tmp_path, forearm("0 0 -0.5"), "I013")
+    assert "lies 0.5 m outside" in message and "root link" not in message
+
+
+def test_a_centre_inside_or_just_outside_the_shapes_is_not_flagged(tmp_path):
+    assert found(tmp_path, forearm("0 0 0.18"), "I013") == []
+    # 9 cm past the end of a 0.4 m box: within a quarter of its longest side (a mount left undrawn)
+    assert found(tmp_path, forearm("0 0 0.49"), "I013") == []
+    # and 11 cm is not
+    assert [c for c, _, _ in found(tmp_path, forearm("0 0 0.51"), "I013")] == ["I013"]
+    # a small part: 4 cm out of a 6 cm box is within the 5 cm any part's undrawn pieces can shift it
+    small = BASE + arm("camera", box("0.06 0.04 0.04") + inertial(0.3, 1e-4, 1e-4, 1e-4, xyz="-0.07 0 0"))
+    assert found(tmp_path, small, "I013") == []
+
+
+def test_frames_stand_ins_and_placeholders_draw_no_centre_warning(tmp_path):
+    # a link without shapes, a frame: nothing to hold its centre
+    assert found(tmp_path, forearm("0 0 1.15", inside=""), "I013") == []
+    # a mass denser than steel in its box: the shapes draw a part only (a motor drawn as a disc)
+    disc = '<collision><geometry><cylinder radius="0.038" length="0.013"/></geometry></collision>'
+    assert found(tmp_path, BASE + arm("hip", disc + inertial(0.754, 5e-4, 3e-4, 5e-4, xyz="0 -0.078 0")), "I013") == []
+    # a stand-in collision far smaller than the visual: the union of both holds the centre
+    visual = '<visual><origin xyz="0 0 0.2"/><geometry><box size="0.08 0.08 0.4"/></geometry></visual>'
+    assert found(tmp_path, forearm("0 0 0.3", inside=visual + sphere(0.002)), "I013") == []
+
+
+def test_the_reach_of_a_tensor_about_a_misplaced_centre_is_not_judged(tmp_path):
+    # moments no mass in the box could reach about the declared centre: the centre is the mistake, said once
+    huge = BASE + arm("forearm", FOREARM + inertial(3.8, 20, 20, 20, xyz="0 0 1.15"), extra='<origin xyz="0 0 0.95"/>')
+    assert [c for c, _, _ in found(tmp_path, huge, "I009", "I013")] == ["I013"]
+    # about a centre inside the shapes, the same moments are impossible
+    inside = BASE + arm("forearm", FOREARM + inertial(3.8, 20, 20, 20, xyz="0 0 0.2"), extra='<origin xyz="0 0 0.95"/>')
+    assert [c for c, _, _ in found(tmp_path, inside, "I009", "I013")] == ["I009"]
+
+
+def test_a_mesh_holds_the_centre_of_mass_where_its_vertices_are(tmp_path):
+    from support.meshes import box as box_mesh, write
+
+    mesh = box_mesh((0.08, 0.08, 0.4))
+    mesh.apply_translation((0, 0, 0.2))
+    write(tmp_path / "meshes" / "forearm.stl", mesh)
+    shapes = '<collision><geometry><mesh filename="meshes/forearm.stl"/></geometry></collision>'
+    assert found(tmp_path, forearm("0 0 0.18", inside=shapes), "I013") == []
+    (_, _, message), = found(tmp_path, forearm("0 0 1.15", inside=shapes), "I013")
+    assert "lies 0.75 m outside the box (-0.04 -0.04 0) to (0.04 0.04 0.4)" in message
+    # a mesh that cannot be read: its size is unknown, nothing is said
+    missing = '<collision><geometry><mesh filename="meshes/missing.stl"/></geometry></collision>'
+    assert found(tmp_path, forearm("0 0 1.15", inside=missing), "I013") == []

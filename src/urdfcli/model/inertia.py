@@ -375,6 +375,12 @@ def reach(loaded: Loaded, link: Link, declared: Body | None) -> Reach | None:
     return _reach(inertial, extent(loaded, link))
 
 
+def outside(point: Vector, box: tuple[Vector, Vector]) -> float:
+    """How far (m) a point lies outside a box (lowest and highest corner): 0 inside it."""
+    low, high = box
+    return math.sqrt(sum(max(lo - p, 0.0, p - h) ** 2 for p, lo, h in zip(point, low, high)))
+
+
 def _inside(point: Vector, box: tuple[Vector, Vector]) -> bool:
     (x0, y0, z0), (x1, y1, z1) = box
     x, y, z = point

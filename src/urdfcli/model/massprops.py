@@ -343,6 +343,12 @@ def place(pose: Transform, point: Vector) -> Vector:
     return (moved[0] + pose[1][0], moved[1] + pose[1][1], moved[2] + pose[1][2])
 
 
+def unplace(pose: Transform, point: Vector) -> Vector:
+    """A point of the parent frame, in the child frame (the inverse of :func:`place`)."""
+    rotation, (x, y, z) = pose
+    return apply(transpose(rotation), (point[0] - x, point[1] - y, point[2] - z))
+
+
 def number(value: float) -> str:
     """Six significant digits, never '-0'."""
     text = f"{value:.6g}"

@@ -134,7 +134,7 @@ def _vector(values) -> Vector:
 
 def _welded(vertices, faces, low, high):
     """The faces with coincident corners made one (STL repeats every corner), degenerate
-    faces dropped; one vertex of each group of coincident ones; and whether the surface
+    faces dropped; one vertex of each group of coincident ones that a kept face uses; and whether the surface
     is watertight: every edge shared by exactly two faces, wound opposite ways (as
     trimesh's ``is_watertight``, with corners welded by position only)."""
     import numpy
@@ -154,9 +154,10 @@ def _welded(vertices, faces, low, high):
     a, b, c = welded[:, 0], welded[:, 1], welded[:, 2]
     kept = (a != b) & (b != c) & (a != c)
     if not kept.any():
-        return faces[kept], first, False
+        return faces[kept], first[:0], False
     a, b, c = a[kept], b[kept], c[kept]
     del welded
+    corners = first[numpy.unique(numpy.concatenate((a, b, c)))]  # only those of faces: a COLLADA file may hold others' vertices
     # each edge as its two ends, lower first, and a last bit for the way it runs: a closed
     # surface has every edge twice, once each way, and no third time
     edges = numpy.concatenate([(numpy.minimum(x, y) * count + numpy.maximum(x, y)) * 2 + (x < y) for x, y in ((a, b), (b, c), (c, a))])
@@ -167,7 +168,7 @@ def _welded(vertices, faces, low, high):
         len(edges) % 2 == 0 and (pairs == edges[1::2] // 2).all() and (edges[0::2] % 2 == 0).all() and (edges[1::2] % 2 == 1).all()
         and (pairs[1:] != pairs[:-1]).all()
     )
-    return faces[kept], first, closed
+    return faces[kept], corners, closed
 
 
 def _hull(points) -> Solid | None:

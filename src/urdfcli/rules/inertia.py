@@ -16,6 +16,7 @@ from ..model import massprops
 from ..model.inertia import OVERREACH, Assessment, axes_apart, declared_body, reach
 from ..model.massprops import number, tensor_text
 from ..model.numbers import format_number
+from ..model.poses import zero_poses
 from ..model.units import mis_scaled
 from ..read.memo import once
 from .base import INFO, UNSAFE, WARNING, Kind, Option, Remedy, RuleSet, check
@@ -442,7 +443,8 @@ def _verdict(loaded, link, light: bool, options) -> Verdict | None:
     found = _assess(loaded, link, options)
     if found is None or massprops.is_identity(found.declared) or _rotated(loaded, found, options["tolerance"]) is not None:
         return None
-    return verdict(loaded, found, light, options["tolerance"], options.get("density") or None)
+    misplaced = link.name in misplaced_centres(loaded, options)  # I013 says the centre is wrong: no reach about it
+    return verdict(loaded, found, light, options["tolerance"], options.get("density") or None, misplaced)
 
 
 def _reported_elsewhere(loaded, options) -> set[str]:
@@ -537,6 +539,138 @@ def frame_rotated(loaded, given):
         )
 
 
+CENTRE_SHARE = 0.25
+"""A declared centre of mass outside the box of a link's shapes by more than this share of the
+box's longest side, and by more than :data:`CENTRE_REACH`, is not that body's. On example-robot-data
+the centres this far out are all wrong (TIAGo dual's arm_5 links, 8.6 cm out of an 18 cm box, the
+sign of their centre swapped between the arms); a camera whose mass counts an undrawn mount is
+2.9 cm out of a 5 cm box."""
+
+CENTRE_REACH = 0.05  # m: what a part's undrawn pieces (a mount, a connector) can shift its centre by
+
+STEEL = 7900.0
+"""kg/m³: a mass denser than steel in the box of its shapes is not drawn by them, only a part of
+it is (iCub's hip: 0.75 kg in a disc 7.6 cm wide and 1.3 cm thick, 10,000 kg/m³)."""
+
+
+class Misplaced(NamedTuple):
+    """A declared centre of mass no mass inside the link's shapes can have: the centre and the
+    box (link frame), how far outside it the centre lies, and whether the centre, read in the
+    root link's frame, lies inside the box."""
+
+    centre: tuple[float, float, float]
+    box: tuple
+    distance: float
+    in_root_frame: bool
+
+
+@check("I013", "com-outside-geometry", WARNING, "A centre of mass far outside the shapes of its link.", rule_set=RuleSet.LINT, options=(TOLERANCE,), kind=Kind.MASS)
+def com_outside_geometry(loaded, given):
+    """## What it does
+    Flags a declared centre of mass (``<inertial><origin xyz>``) lying outside the box that
+    holds all the link's visual and collision shapes (in the link frame) by more than a
+    quarter of the box's longest side and by more than 5 cm. When the centre, read as a
+    point of the root link's frame, falls inside the box, the message says so: the centre
+    was likely written in the robot's base frame, as a CAD assembly exports it.
+
+    The centre of mass of a body lies inside the convex hull of its mass, so inside the
+    box of the shapes that draw it. The margin lets a part's shapes draw a little less
+    than its mass: a mount or a connector left undrawn, a centre rounded.
+
+    Left alone: links without measurable geometry (frames, a mesh that cannot be read, or
+    one in a wrong unit, which F003 reports); a mass denser than steel in the box of its
+    shapes, which draw only a part of it (a motor drawn as a thin disc); links lighter than
+    20 g fixed to a heavier body whose tensor adds nothing material to it; an inertial that
+    I007 or I008 reports as a placeholder (its centre is part of the placeholder, at their
+    ``tolerance``). I009 does not judge the moments of a link this rule reports against the
+    most its mass can reach about that centre (a bound about an impossible centre proves
+    nothing); what it finds wrong with the tensor otherwise still stands.
+
+    ## Why is this bad?
+    A centre of mass written in another frame (the robot's base frame, a mirrored side's)
+    or left at the link's origin puts the link's mass where the link is not: gravity
+    compensation and model-based controllers compute the wrong torques, and a simulated
+    arm sags or swings. Doosan's m1013 description gives links 3 to 6 centres at z = 0.78
+    to 1.40 m, their heights in the base frame, on links 0.1 to 0.6 m long. When the centre
+    is right, the shapes are misplaced, and collisions are checked where the part is not.
+
+    ## Example
+    ```xml
+    <link name="forearm">
+      <collision><origin xyz="0 0 0.2"/><geometry><box size="0.08 0.08 0.4"/></geometry></collision>
+      <inertial>
+        <origin xyz="0 0 1.15"/>
+        <mass value="3.8"/>
+        <inertia ixx="0.05" ixy="0" ixz="0" iyy="0.05" iyz="0" izz="0.004"/>
+      </inertial>
+    </link>
+    ```
+
+    ## Use instead
+    ```xml
+    <link name="forearm">
+      <collision><origin xyz="0 0 0.2"/><geometry><box size="0.08 0.08 0.4"/></geometry></collision>
+      <inertial>
+        <origin xyz="0 0 0.18"/>
+        <mass value="3.8"/>
+        <inertia ixx="0.05" ixy="0" ixz="0" iyy="0.05" iyz="0" izz="0.004"/>
+      </inertial>
+    </link>
+    ```
+    """
+    for name, found in misplaced_centres(loaded, given.options).items():
+        link = loaded.robot.links[name]
+        centre = " ".join(f"{v:.4g}" for v in found.centre)
+        box = " to ".join("(" + " ".join(f"{v:.3g}" for v in corner) + ")" for corner in found.box)
+        message = (f"centre of mass of link '{link.name}' ({centre}) lies {found.distance:.3g} m outside the box {box} "
+                   f"that holds its shapes (link frame): no mass inside them has that centre")
+        if found.in_root_frame:
+            message += f"; read in the frame of the root link '{loaded.root}', it lies inside"
+        inertial = link.inertial
+        yield loaded.diagnostic(
+            "I013", message, inertial.origin_at if inertial.origin_at is not None else inertial.at,
+            "is the centre written in another link's frame (the base's, as a CAD assembly exports it) or left at the link's origin? "
+            "give it in this link's frame; if the centre is right, the shapes are misplaced",
+            subjects=(link.name,),
+        )
+
+
+def misplaced_centres(loaded, options) -> dict:
+    """Each link :func:`com_outside_geometry` reports (by name), with what it finds; worked out once (I009 asks)."""
+    return once(loaded, _misplaced_within, options["tolerance"])
+
+
+def _misplaced_within(loaded, tolerance: float) -> dict:
+    options = {"tolerance": tolerance}
+    placeholders = {link.name for link in identity_links(loaded, options)}
+    placeholders.update(link.name for _, wrong, _ in placeholder_groups(loaded, options) for link in wrong)
+    found = {}
+    for link in _declaring(loaded):
+        if link.name not in placeholders and (misplaced := _misplaced(loaded, link)) is not None:
+            found[link.name] = misplaced
+    return found
+
+
+def _misplaced(loaded, link) -> Misplaced | None:
+    if absorbed(loaded, link):
+        return None
+    box = model.extent(loaded, link)
+    if box is None:
+        return None
+    low, high = box
+    sides = [h - lo for lo, h in zip(low, high)]
+    volume = sides[0] * sides[1] * sides[2]
+    if volume <= 0 or link.inertial.mass / volume > STEEL:
+        return None  # the shapes draw a part of the body only
+    centre = link.inertial.origin.xyz
+    distance = model.outside(centre, box)
+    if distance <= max(CENTRE_SHARE * max(sides), CENTRE_REACH):
+        return None
+    pose = once(loaded, zero_poses).get(link.name)
+    in_root = pose is not None and link.name != loaded.root and model.outside(massprops.unplace(pose, centre), box) == 0
+    return Misplaced(centre, box, distance, in_root)
+
+
 @check("I011", "root-inertia", INFO, "The root link carries mass, which KDL ignores.", kind=Kind.MASS, rule_set=RuleSet.LINT)
 def root_inertia(loaded, given):
     """## What it does
@@ -626,9 +760,13 @@ def _long_axis_swapped(declared, expected) -> tuple[str, float, float] | None:
     return "xyz"[axis], about, about / declared_moments[0]
 
 
-def verdict(loaded: Loaded, found: Assessment, light: bool, tolerance: float = massprops.TOLERANCE, density: float | None = None) -> Verdict | None:
+def verdict(
+    loaded: Loaded, found: Assessment, light: bool, tolerance: float = massprops.TOLERANCE, density: float | None = None, misplaced: bool = False,
+) -> Verdict | None:
     """The one thing the geometry proves wrong about a link's tensor, if any: ``found`` is its
-    assessment (at ``density``), ``light`` whether it is lost in its body (:func:`absorbed`).
+    assessment (at ``density``), ``light`` whether it is lost in its body (:func:`absorbed`),
+    ``misplaced`` whether its centre of mass is far outside its shapes (I013), about which
+    no reach is judged.
 
     In order: a moment larger than any distribution of the mass in the geometry's bounding
     box allows; principal moments that match the geometry's on axes that do not; with a
@@ -640,7 +778,7 @@ def verdict(loaded: Loaded, found: Assessment, light: bool, tolerance: float = m
     if declared is None or massprops.is_negligible(declared.tensor):
         return None
     # a light link, lost in its body: only a rotation, which a formula got wrong, is worth saying
-    limits = reach(loaded, link, declared) if not light else None
+    limits = reach(loaded, link, declared) if not light and not misplaced else None
     if limits is not None:
         worst = max(range(3), key=lambda i: declared.tensor[i][i] / limits.bounds[i] if limits.bounds[i] > 0 else math.inf)
         moment, most = declared.tensor[worst][worst], limits.bounds[worst]
