@@ -95,10 +95,10 @@ def program_for(argv: list[str]) -> typer.Typer:
 
 def main(argv: list[str] | None = None) -> int:
     """Run a command line; the exit code. Usage and internal errors are one line each."""
-    try:  # typer vendors click from 0.2x on
-        from typer._click.exceptions import ClickException, NoArgsIsHelpError, UsageError
-    except ImportError:
-        from click.exceptions import ClickException, NoArgsIsHelpError, UsageError
+    from .common import click_exceptions
+
+    errors = click_exceptions()
+    ClickException, NoArgsIsHelpError, UsageError = errors.ClickException, errors.NoArgsIsHelpError, errors.UsageError
 
     argv = sys.argv[1:] if argv is None else argv
     if os.environ.get("NO_COLOR") and (not argv or {"-h", "--help"} & set(argv)):

@@ -176,16 +176,21 @@ def split_inputs(arguments: list[str], none_needed: bool = False) -> tuple[list[
     return paths, mappings
 
 
+def click_exceptions():
+    """click's exceptions: typer vendors click from 0.2x on."""
+    try:
+        from typer._click import exceptions
+    except ImportError:
+        from click import exceptions
+    return exceptions
+
+
 def changed_inputs(ctx: typer.Context, arguments: list[str] | None, git_deletions: bool) -> tuple[list[str], dict[str, str], tuple[str, ...]]:
     """The files and xacro arguments of a command line whose files may be none with
     ``--git-deletions``, and the files git says are deleted (see :func:`deleted_by_change`).
     Without ``--git-deletions`` the files are required, as typer says."""
     if not arguments and not git_deletions:
-        try:  # typer vendors click from 0.2x on
-            from typer._click.exceptions import MissingParameter
-        except ImportError:
-            from click.exceptions import MissingParameter
-        raise MissingParameter(ctx=ctx, param=next(p for p in ctx.command.params if p.name == "inputs"))
+        raise click_exceptions().MissingParameter(ctx=ctx, param=next(p for p in ctx.command.params if p.name == "inputs"))
     paths, mappings = split_inputs(arguments or [], none_needed=git_deletions)
     return paths, mappings, deleted_by_change() if git_deletions else ()
 

@@ -307,7 +307,7 @@ def rotated_fit(loaded: Loaded, assessment: Assessment) -> tuple[Vector, float] 
     if shared is None or massprops.relative_difference(shared, inertial) < 1e-6:
         return None
     box = extent(loaded, assessment.link, shapes)
-    if box is None or not _inside(assessment.link.inertial.origin.xyz, box):
+    if box is None or outside(assessment.link.inertial.origin.xyz, box) > 0:
         return None
     # the declared tensor read in the shapes' frame, then expressed in the inertial frame
     in_link = massprops.rotate(assessment.declared, shared)
@@ -370,7 +370,7 @@ def reach(loaded: Loaded, link: Link, declared: Body | None) -> Reach | None:
     # when it does not (or when the centre lies outside it, where the bound is not monotone)
     box = extent(loaded, link, implied(loaded, link).shapes)
     first = _reach(inertial, box)
-    if first is not None and declared is not None and _inside(inertial.origin.xyz, box) and _within(declared.tensor, first.bounds):
+    if first is not None and declared is not None and outside(inertial.origin.xyz, box) == 0 and _within(declared.tensor, first.bounds):
         return first
     return _reach(inertial, extent(loaded, link))
 
@@ -379,12 +379,6 @@ def outside(point: Vector, box: tuple[Vector, Vector]) -> float:
     """How far (m) a point lies outside a box (lowest and highest corner): 0 inside it."""
     low, high = box
     return math.sqrt(sum(max(lo - p, 0.0, p - h) ** 2 for p, lo, h in zip(point, low, high)))
-
-
-def _inside(point: Vector, box: tuple[Vector, Vector]) -> bool:
-    (x0, y0, z0), (x1, y1, z1) = box
-    x, y, z = point
-    return x0 <= x <= x1 and y0 <= y <= y1 and z0 <= z <= z1
 
 
 def _within(tensor: Matrix, bounds: Vector) -> bool:

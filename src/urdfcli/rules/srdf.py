@@ -87,10 +87,10 @@ def _elsewhere(found: list[tuple[str, Named]]) -> str:
 
 
 def _one_prefix(loaded: Loaded, found: list[Diagnostic], kind: str, known) -> list[Diagnostic]:
-    """``found`` (each name the URDF lacks), or one diagnostic for them all when one prefix
+    """``found`` (one for each name the URDF lacks), or one diagnostic for them all when one prefix
     makes every name one of ``known``: the SRDF of the robot built with another prefix
     (lbr_fri_ros2_stack's robot_name) lacks every name, and one finding says why."""
-    missing = list(dict.fromkeys(d.subjects[0] for d in found))
+    missing = [d.subjects[0] for d in found]  # (one each: see _missing_once)
     prefix = _prefix(missing, known)
     if prefix is None:
         return found
