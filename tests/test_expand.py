@@ -255,6 +255,22 @@ def test_what_xacro_prints_is_printed_byte_for_byte(tmp_path, files, printed):
     assert mine.stdout.decode() == real.stdout
 
 
+@pytest.mark.parametrize("attribute", ["${xacro.load_yaml('gone.yaml')['mass']}", "${load_yaml('gone.yaml')['mass']}"])
+def test_a_yaml_file_that_is_not_there_is_named_as_xacro_names_it(tmp_path, attribute):
+    """load_yaml read in an attribute: xacro wraps the OSError without a message of its own."""
+    (tmp_path / "model.urdf.xacro").write_text(
+        f'<robot name="r" xmlns:xacro="http://www.ros.org/wiki/xacro">\n  <link name="base">\n'
+        f'    <inertial><mass value="{attribute}"/><inertia ixx="1" ixy="0" ixz="0" iyy="1" iyz="0" izz="1"/></inertial>\n'
+        "  </link>\n</robot>\n"
+    )
+    real = real_xacro(tmp_path / "model.urdf.xacro", cwd=tmp_path)
+    assert real.returncode != 0 and "No such file or directory: " in real.stderr and "gone.yaml'" in real.stderr
+    done = run_cli("check", "model.urdf.xacro", cwd=tmp_path)
+    assert done.returncode == 1
+    first = done.stderr.decode().splitlines()[0]
+    assert first.startswith("model.urdf.xacro:3:15: X003 error: [Errno 2] No such file or directory: ") and "gone.yaml' when evaluating expression" in first, first
+
+
 UNITREE_ROBOT = """<?xml version="1.0"?>
 <robot name="{name}" xmlns:xacro="http://www.ros.org/wiki/xacro">
     <link name="base"/>

@@ -13,7 +13,7 @@ import pytest
 import yaml
 from conftest import ROOT, require_tool, run_cli
 from generated_repos import generate, kuka_package
-from ros_workspace import edit, line_of, make_repository, moveit_repository
+from ros_workspace import box_stl, edit, line_of, make_repository, moveit_repository
 
 from urdfcli.project.drift import regenerated
 from urdfcli.read.revision import deleted_files
@@ -381,3 +381,45 @@ def test_a_commit_deleting_or_renaming_a_library_its_models_include_fails(tmp_pa
         edit(model, "urdf/wheel.xacro", "urdf/wheels.xacro")
     code, out = commit("the wheel library renamed, and included by its new name")
     assert code == 0, out
+
+
+def test_a_commit_deleting_or_renaming_a_mesh_or_yaml_file_a_model_names_fails(tmp_path, hooks):
+    """A mesh named in a library the models include, and a YAML file a model loads: a commit
+    that deletes one (or renames the mesh, as a case change does) fails at the models that name it.
+    A deleted mesh that no model names runs the hooks on nothing."""
+    repo = make_repository(tmp_path / "acme_robots")
+    (repo / "common/meshes").mkdir()
+    (repo / "common/meshes/wheel.stl").write_bytes(box_stl((0.2, 0.2, 0.04), (0, 0, 0)))
+    (repo / "common/meshes/spare.stl").write_bytes(box_stl((0.2, 0.2, 0.04), (0, 0, 0)))
+    edit(repo / "common/urdf/wheel.xacro", '<visual>\n        <geometry><cylinder radius="${radius}" length="${wheel_length}"/></geometry>',
+         '<visual>\n        <geometry><mesh filename="package://acme_common/meshes/wheel.stl" scale="${radius * 5} ${radius * 5} 1"/></geometry>')
+    (repo / "description/config").mkdir()
+    (repo / "description/config/body.yaml").write_text("mass: 5\n")
+    rover = repo / "description/urdf/rover.urdf.xacro"
+    edit(rover, '<xacro:box_inertial mass="5"', '<xacro:box_inertial mass="${xacro.load_yaml(\'$(find acme_rover_description)/config/body.yaml\')[\'mass\']}"')
+    commit = installed(repo, hooks, "urdfcli-check")
+    code, out = commit("the clean repository")
+    assert code == 0, out
+
+    git("rm", "-q", "common/meshes/wheel.stl", cwd=repo)
+    code, out = commit("no wheel mesh")
+    assert code == 1 and re.search(r"urdfcli check\.+Failed", out), out
+    wheel_line = line_of(repo / "common/urdf/wheel.xacro", "wheel.stl")
+    # the library's line, once, through a model that names it
+    assert out.count(f"common/urdf/wheel.xacro:{wheel_line}:") == 1 and "D004 error: mesh 'package://acme_common/meshes/wheel.stl' not found" in out, out
+    assert "found through model description/urdf/" in out, out
+    git("reset", "-q", "--hard", "HEAD", cwd=repo)
+
+    git("mv", "common/meshes/wheel.stl", "common/meshes/Wheel.stl", cwd=repo)
+    code, out = commit("the wheel mesh renamed")
+    assert code == 1 and "D004 error: mesh 'package://acme_common/meshes/wheel.stl' not found" in out, out
+    git("reset", "-q", "--hard", "HEAD", cwd=repo)
+
+    git("rm", "-q", "description/config/body.yaml", cwd=repo)
+    code, out = commit("no body parameters")
+    assert code == 1 and f"description/urdf/rover.urdf.xacro:{line_of(rover, 'body.yaml')}:" in out and "body.yaml" in out, out
+    git("reset", "-q", "--hard", "HEAD", cwd=repo)
+
+    git("rm", "-q", "common/meshes/spare.stl", cwd=repo)
+    code, out = commit("an unused mesh removed")
+    assert code == 0 and "D004" not in out, out

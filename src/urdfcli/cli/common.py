@@ -91,7 +91,8 @@ GitDeletionsOption = Annotated[
     typer.Option(
         "--git-deletions",
         help="Also check the models that include a file deleted or renamed in git's staged changes (between PRE_COMMIT_FROM_REF and "
-        "PRE_COMMIT_TO_REF when pre-commit sets them), which pre-commit never passes: their include fails now. No input file is needed "
+        "PRE_COMMIT_TO_REF when pre-commit sets them), which pre-commit never passes, or name a mesh or YAML file so deleted: their "
+        "include or mesh fails now. No input file is needed "
         "then (the check and lint pre-commit hooks pass it, and run on every commit).",
     ),
 ]
@@ -208,8 +209,12 @@ def deleted_by_change() -> tuple[str, ...]:
     from ..read.revision import deleted_files
 
     between = (os.environ.get("PRE_COMMIT_FROM_REF", ""), os.environ.get("PRE_COMMIT_TO_REF", ""))
-    # only what a model can include as a description: a commit deleting scripts or meshes asks nothing more
-    return tuple(str(file) for file in deleted_files(Path.cwd(), between if all(between) else None) if file.suffix in (".urdf", ".xacro"))
+    # only what a model reads: a commit deleting scripts or launch files asks nothing more
+    return tuple(str(file) for file in deleted_files(Path.cwd(), between if all(between) else None) if file.suffix.lower() in DESCRIPTION_SUFFIXES)
+
+
+DESCRIPTION_SUFFIXES = (".urdf", ".xacro", ".stl", ".dae", ".obj", ".ply", ".glb", ".gltf", ".yaml", ".yml")
+"""The files a model reads: descriptions, meshes and the YAML of ``xacro.load_yaml``."""
 
 
 @contextlib.contextmanager

@@ -404,6 +404,21 @@ class Index:
         files, includes = self.reachable(model, arguments)
         return library in files or any(include.may_be(library) for include in includes)
 
+    def names(self, model: Path, name: str, arguments: dict[str, str] | None = None) -> bool:
+        """Whether ``model``, or a file its includes may lead to, writes the file name ``name``
+        whole: a mesh's as ``package://pkg/meshes/base.stl`` or ``meshes/base.stl`` write it, a
+        YAML file's as ``$(find pkg)/config/joints.yaml`` does. A name computed from properties
+        (``${link}.stl``) is not found, and one of another folder is (the model is checked for nothing)."""
+        written = re.compile(rb"(?<![\w.-])" + re.escape(name.encode()) + rb"(?![\w.-])")
+        files, _ = self.reachable(model, arguments)
+        for file in (model, *files):
+            try:
+                if written.search(self.files.read(shown(file)).data):
+                    return True
+            except OSError:
+                continue
+        return False
+
     def reachable(self, model: Path, arguments: dict[str, str] | None = None) -> tuple[set[Path], list[Include]]:
         """The files expanding ``model`` may read (under any condition), and every include
         met on the way. Argument values and properties reach the included files, as in
@@ -659,7 +674,8 @@ def plan(
     """What to run for the given files: each model once per argument set, each
     library through the models that may include it (none: on its own). A file
     ``deleted`` (by a change, which pre-commit does not pass) is found as a library is:
-    each model that may include it is run as if given (its include fails now).
+    each model that may include it is run as if given (its include fails now); a deleted
+    mesh or YAML file, each model whose sources name it (see :meth:`Index.names`).
 
     ``config_for(path)`` gives the configuration of a file (for ``models`` and
     package paths). ``files`` are the session's (each file read once for this
@@ -694,7 +710,8 @@ def plan(
     for path in deleted:
         config = config_for(path)
         index = index or Index(config.package_paths + package_paths, packages, files)
-        targets = _includers(Path(path).resolve(), index, config, config_for, packages, candidates_of)
+        find = _includers if path.endswith((".urdf", ".xacro")) else _naming
+        targets = find(Path(path).resolve(), index, config, config_for, packages, candidates_of)
         for model in dict.fromkeys(target.path for target in targets):
             if Path(model).resolve() not in given:
                 given.add(Path(model).resolve())
@@ -743,6 +760,16 @@ def _includers(file: Path, index: Index, config, config_for, packages: PackageIn
     for model in _candidates(file, index, config, packages, candidates_of):
         sets = config_for(str(model)).argument_sets(str(model))
         if any(index.reaches(model, file, arguments) for arguments in (sets or [None])):
+            targets += model_targets(shown(model), sets)
+    return targets
+
+
+def _naming(file: Path, index: Index, config, config_for, packages: PackageIndex, candidates_of: dict) -> list[Target]:
+    """The runs of the models around ``file`` (a mesh, a YAML file) whose sources name it."""
+    targets: list[Target] = []
+    for model in _candidates(file, index, config, packages, candidates_of):
+        sets = config_for(str(model)).argument_sets(str(model))
+        if any(index.names(model, file.name, arguments) for arguments in (sets or [None])):
             targets += model_targets(shown(model), sets)
     return targets
 

@@ -462,7 +462,7 @@ def _included(resolver: PackageResolver) -> tuple[str, ...]:
 
 def _short(error: BaseException) -> str:
     inner = getattr(error, "exc", None)
-    if isinstance(inner, OSError) and error.args:
+    if isinstance(inner, OSError) and error.args and error.args[0] is not None:  # (None: load_yaml's, said by str() below)
         return str(error.args[0])
     missing = _missing_package(error)
     if missing is not None:
