@@ -87,6 +87,26 @@ def test_package_named_by_its_folder_says_which_package_the_folder_holds(tmp_pat
     assert diagnostics("lint", "--select", "D004,D005", "-P", str(tmp_path / "share"), str(fixed)) == []
 
 
+@pytest.mark.parametrize(
+    ("layout", "uri", "folder"),
+    [
+        ("onshape-to-robot: the meshes in assets/ beside the URDF", "package://assets/a.stl", "robot/assets"),
+        ("a package without package.xml, the URDF in urdf/", "package://arm_description/meshes/a.stl", "robot"),
+    ],
+)
+def test_an_export_whose_package_is_its_own_folder_is_told_the_folder_to_give(tmp_path, layout, uri, folder):
+    """Following the hint finds the mesh: the diagnostic is gone."""
+    mesh = tmp_path / "robot" / ("assets/a.stl" if "assets" in uri else "meshes/a.stl")
+    mesh.parent.mkdir(parents=True)
+    mesh.write_text("solid a\nendsolid a\n")
+    path = model(tmp_path / "robot" / ("" if "assets" in uri else "urdf"), uri)
+    [found] = diagnostics("lint", "--select", "D005", str(path.relative_to(tmp_path)), cwd=tmp_path, env={"AMENT_PREFIX_PATH": "", "ROS_PACKAGE_PATH": ""})
+    package_name = uri.split("/")[2]
+    assert found["hint"] == f"the folder {folder} holds {uri.split('/', 3)[3]}: give -P {package_name}={folder}"
+    given = diagnostics("lint", "--select", "D004,D005", "-P", f"{package_name}={folder}", str(path.relative_to(tmp_path)), cwd=tmp_path)
+    assert given == []
+
+
 def test_example_robot_data_folder_holds_example_robot_descriptions():
     path = example_robot_data() / "robots" / "ur_description" / "urdf" / "ur5_robot.urdf"
     found = diagnostics("lint", "--select", "D005", str(path), env={"AMENT_PREFIX_PATH": "", "ROS_PACKAGE_PATH": ""})

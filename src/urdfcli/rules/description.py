@@ -11,6 +11,7 @@ from ..model.kinematics import bodies
 from ..model.meshes import input_folder, near_misses, resolved_resources, uri_style
 from ..model.numbers import shown
 from ..model.vocabulary import LOWER_TRIANGLE, SCHEMA, mistyped_moment
+from ..read.expanded import display_path
 from ..read.packages import cmake_project, uri_package
 from .base import ERROR, INFO, PLACED, SAFE, WARNING, Kind, RuleSet, check
 from .meshes import others_there, package_uri, written_with_find
@@ -494,9 +495,22 @@ def package_not_found(loaded, given):
                     hint = f"the folder {folder} installs as '{package}' (its CMakeLists.txt project): build and source the workspace, or give -P {package}={folder}"
                 else:
                     hint = f"the folder {folder} holds the package named '{real}' (its package.xml): write package://{real}/, or give -P {package}={folder}"
+            elif (holding := _folder_holding(loaded, uri, package)) is not None:
+                hint = f"the folder {display_path(str(holding))} holds {uri[len('package://') + len(package):].lstrip('/')}: give -P {package}={display_path(str(holding))}"
         else:
             message, hint = f"{kind} '{uri}'{others}: the package name is empty", "a package URI is package://PACKAGE/PATH: two slashes, then the package's name"
         yield loaded.diagnostic("D005", message, at, hint)
+
+
+def _folder_holding(loaded, uri: str, package: str):
+    """The folder by the model that holds the file ``uri`` names in the package not found, as
+    exports lay them out: a folder of the package's name beside the model (onshape-to-robot's
+    ``package://assets/``), the model's own folder, or the one above it (a package without
+    package.xml, its URDF in ``urdf/``). None when none does."""
+    base, rest = input_folder(loaded), uri[len("package://") + len(package):].lstrip("/")
+    if base is None or not rest:
+        return None
+    return next((folder for folder in (base / package, base, base.parent) if (folder / rest).is_file()), None)
 
 
 def _known_names(loaded) -> set[str]:
