@@ -444,3 +444,21 @@ def test_a_ros2_control_block_generated_for_another_mode_names_its_plugin_and_th
     (tmp_path / "r.urdf").write_text(generate(model, "r.xacro", mode="gazebo").replace("<plugin>gz_ros2_control/GazeboSimSystem</plugin>", ""))
     (found,) = x110(lint_file("r.urdf"))
     assert found.message.endswith("(ros2_control 'sys' hardware: present here, absent in r.xacro)")
+
+
+def test_a_urdf_without_header_is_not_said_to_name_its_source(tmp_path, monkeypatch):
+    """mir_robot's mir.urdf, a hand-written stub with no xacro header, sits beside mir.urdf.xacro,
+    which needs xacro argument mir_hook: the info said "mir.urdf says it was generated from
+    mir.urdf.xacro", which the file never says. It is paired with the xacro file by its name."""
+    (tmp_path / "mir.urdf.xacro").write_text(
+        '<robot name="mir" xmlns:xacro="http://ros.org/wiki/xacro">\n'
+        '  <xacro:property name="hook" value="$(arg mir_hook)"/>\n  <link name="base_link"/>\n'
+        '  <xacro:if value="${hook}"><link name="hook_link"/></xacro:if>\n</robot>\n'
+    )
+    (tmp_path / "mir.urdf").write_text('<?xml version="1.0"?>\n<robot name="mir">\n  <link name="base_link"/>\n</robot>\n')
+    monkeypatch.chdir(tmp_path)
+    (found,) = x110(lint_file("mir.urdf"))
+    assert found.message == (
+        "mir.urdf has mir.urdf.xacro beside it, which was not compared: its expansion needs xacro "
+        "argument 'mir_hook'; give it in [tool.urdfcli.xacro-args]"
+    )

@@ -3,6 +3,7 @@ published robots draws nothing, next to the real defect that still draws its war
 
 from __future__ import annotations
 
+import pytest
 from conftest import lint_file, run_cli
 
 from urdfcli.project.config import Config
@@ -377,3 +378,38 @@ def test_a_gazebo_reference_whose_expression_lost_its_dollar_says_so(tmp_path):
     path.write_text('<robot name="r"><link name="FR_thigh"/><link name="RR_thigh"/><gazebo reference="{name}_thigh"><mu1>0.2</mu1></gazebo></robot>\n')
     [diagnostic] = [d for d in lint_file(str(path), Config()).diagnostics if d.code == "D006"]
     assert diagnostic.hint == "'{name}' lacks its $: xacro copies it as written; write '${name}'"
+
+
+TF_PREFIXED = """<robot name="mir">
+  <link name="robot1/base_link"/>
+  <link name="robot1/front_laser_link"/>
+  <joint name="robot1/laser_joint" type="fixed"><parent link="robot1/base_link"/><child link="robot1/front_laser_link"/></joint>
+  <gazebo reference="robot1/front_laser_link">
+    <sensor type="ray" name="laser">
+      <plugin name="laser_controller" filename="FILENAME">
+        FRAME
+      </plugin>
+    </sensor>
+  </gazebo>
+</robot>
+"""
+
+
+@pytest.mark.parametrize(
+    ("filename", "frame", "reported"),
+    [
+        ("libgazebo_ros_gpu_laser.so", "<frameName>front_laser_link</frameName>", False),  # the plugin adds the tf_prefix
+        ("libgazebo_ros_gpu_laser.so", "<frameName>/front_laser_link</frameName>", True),  # an absolute name gets none
+        ("libgazebo_ros_ray_sensor.so", "<frame_name>front_laser_link</frame_name>", True),  # ROS 2: no tf_prefix
+        ("libgazebo_ros_gpu_laser.so", "<frameName>rear_laser_link</frameName>", True),
+    ],
+)
+def test_a_ros1_frame_name_without_the_tf_prefix_its_plugin_adds(tmp_path, filename, frame, reported):
+    """mir_robot's sick_s300.urdf.xacro writes <frameName>${link}</frameName> unprefixed
+    ("plugin always uses a tf_prefix"): with tf_prefix:=robot1 its links are robot1/..., and
+    D009 said the frame names no link. ROS 1's gazebo_ros laser and camera plugins resolve
+    frameName against the tf_prefix, so it names robot1/front_laser_link there."""
+    path = tmp_path / "mir.urdf"
+    path.write_text(TF_PREFIXED.replace("FILENAME", filename).replace("FRAME", frame))
+    found = [d for d in lint_file(str(path), Config()).diagnostics if d.code == "D009"]
+    assert bool(found) is reported, [d.message for d in found]

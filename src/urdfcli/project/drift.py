@@ -157,7 +157,8 @@ def drift(loaded: Loaded, config: Config, session: Session, asked: bool = False)
         return [_diagnostic(loaded, message, hint, uncompared)]
     found = expand_source(source.file, config, session)
     if isinstance(found, str):
-        return [_diagnostic(loaded, f"{_name(loaded)} says it was generated from {_shown(source.file)}, which was not compared: {found}", None, uncompared)]
+        said = f"says it was generated from {_shown(source.file)}" if source.header is not None else f"has {_shown(source.file)} beside it"
+        return [_diagnostic(loaded, f"{_name(loaded)} {said}, which was not compared: {found}", None, uncompared)]
     from ..model.compare import compare  # (only where a URDF's source is found)
 
     comparison = compare(loaded, found)

@@ -28,6 +28,7 @@ PLUGIN_JOINT_TAGS = {
 }
 PLUGIN_LINK_TAGS = {"bodyName", "body_name", "robotBaseFrame", "robot_base_frame", "frameName", "frame_name"}
 WORLD_FRAMES = {"world", "map", "odom", ""}
+TF_PREFIXED_TAGS = {"frameName", "robotBaseFrame"}  # ROS 1 gazebo_ros plugins put the tf_prefix before these (tf::resolve)
 
 
 def _suggestion(word: str, known) -> str | None:
@@ -803,6 +804,9 @@ def plugin_link(loaded, given):
     Flags a Gazebo plugin parameter that names a link (`robotBaseFrame`,
     `robot_base_frame`, `bodyName`, `frame_name`...) when no link has that
     name. `world`, `map` and `odom` are frames outside the robot and pass.
+    So does a ROS 1 `frameName` or `robotBaseFrame` written without the
+    tf_prefix the links carry (`laser_link` when the link is
+    `robot1/laser_link`): those plugins put the tf_prefix before it themselves.
 
     ## Why is this bad?
     The plugin publishes or applies forces in a frame that does not exist:
@@ -829,7 +833,9 @@ def plugin_link(loaded, given):
     ```
     """
     links = set(loaded.robot.links)
+    unprefixed = {link.rsplit("/", 1)[1] for link in links if "/" in link}  # a link's name after its tf_prefix
     for element, name in _plugin_references(loaded, PLUGIN_LINK_TAGS):
-        if name not in links and name not in WORLD_FRAMES:
+        resolved = element.tag in TF_PREFIXED_TAGS and not element.text.strip().startswith("/") and name in unprefixed
+        if name not in links and name not in WORLD_FRAMES and not resolved:
             close = _suggestion(name, links)
             yield loaded.diagnostic("D009", f"plugin parameter <{element.tag}> names link '{name}', which does not exist", loaded.robot.place(element), f"did you mean '{close}'?" if close else None)
