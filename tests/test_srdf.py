@@ -701,3 +701,22 @@ def test_an_srdf_written_without_the_prefix_of_every_urdf_name_is_one_finding_pe
     [k001] = [d for f in document["files"] for d in f["diagnostics"]]
     assert k001["message"] == "the SRDF names 2 links that lbr_description/urdf/iiwa.xacro has only with the prefix 'left' in place of 'lbr': 'lbr_link_0', 'lbr_link_3'"
     assert k001["hint"].startswith("it is written for the robot with another prefix: write each name with 'left' in place of 'lbr'")
+
+
+def test_a_setup_assistant_urdf_that_cannot_be_read_is_named_once(tmp_path):
+    """TALOS: the .setup_assistant names talos_full_v2.urdf.xacro, which includes a package not
+    in the workspace. The K008 says why it could not be read once, not a second time for the
+    same file found again in the robot's package."""
+    robot, config = robot_and_moveit_config(tmp_path / "src", "talos_description", "robots", "talos_moveit_config")
+    (robot / "robots" / "talos_full_v2.urdf.xacro").write_text(
+        '<robot name="talos" xmlns:xacro="http://ros.org/wiki/xacro">\n'
+        '  <xacro:include filename="$(find talos_description_calibration)/urdf/leg.xacro"/>\n  <link name="base_link"/>\n</robot>\n')
+    (config / ".setup_assistant").write_text(
+        "moveit_setup_assistant_config:\n  URDF:\n    package: talos_description\n    relative_path: robots/talos_full_v2.urdf.xacro\n"
+        "    xacro_args: \"\"\n  SRDF:\n    relative_path: config/talos.srdf\n")
+    (config / "config" / "talos.srdf").write_text('<robot name="talos">\n  <group name="torso"><link name="base_link"/></group>\n</robot>\n')
+    done, document = check("src/talos_moveit_config/config/talos.srdf", cwd=tmp_path)
+    [k008] = document["files"][0]["diagnostics"]
+    assert (done.returncode, k008["code"]) == (0, "K008"), document
+    assert k008["message"].count("talos_full_v2.urdf.xacro") == 1, k008["message"]
+    assert "which its .setup_assistant names: package 'talos_description_calibration' not found" in k008["message"]

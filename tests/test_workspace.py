@@ -318,6 +318,52 @@ def test_a_part_whose_links_hang_from_its_includers_macro_is_a_fragment_of_the_m
 
 
 
+def test_a_library_a_macro_fragment_includes_is_checked_through_the_model_not_the_fragment(tmp_path):
+    """TALOS: the arm's macro includes ${side}_arm.transmissions.urdf.xacro, which calls the
+    transmission macro of arm.transmission.xacro with the macro's ${name}. Given with that
+    library (a commit changing both), the fragment is checked through the robot that reads
+    it, not expanded as a robot of its own (a false "name 'name' is not defined")."""
+    package = tmp_path / "talos_description"
+    write(package / "package.xml", package_xml("talos_description"))
+    write(package / "urdf" / "arm.transmission.xacro", f"""\
+        <robot {XACRO}>
+          <xacro:macro name="arm_transmission" params="name side">
+            <transmission name="${{name}}_${{side}}_trans"><type>transmission_interface/SimpleTransmission</type>
+              <joint name="${{name}}_${{side}}_joint"><hardwareInterface>EffortJointInterface</hardwareInterface></joint>
+              <actuator name="${{name}}_${{side}}_motor"/></transmission>
+          </xacro:macro>
+        </robot>
+        """)
+    write(package / "urdf" / "left_arm.transmissions.urdf.xacro", f"""\
+        <robot {XACRO}>
+          <xacro:include filename="$(find talos_description)/urdf/arm.transmission.xacro"/>
+          <xacro:arm_transmission name="${{name}}" side="left"/>
+        </robot>
+        """)
+    write(package / "urdf" / "arm.urdf.xacro", f"""\
+        <robot {XACRO}>
+          <xacro:include filename="$(find talos_description)/urdf/arm.transmission.xacro"/>
+          <xacro:macro name="talos_arm" params="name side">
+            <link name="${{name}}_${{side}}_link"/>
+            <joint name="${{name}}_${{side}}_joint" type="revolute"><parent link="torso"/><child link="${{name}}_${{side}}_link"/>
+              <axis xyz="0 0 1"/><limit lower="-1" upper="1" effort="1" velocity="1"/></joint>
+            <xacro:include filename="$(find talos_description)/urdf/${{side}}_arm.transmissions.urdf.xacro"/>
+          </xacro:macro>
+        </robot>
+        """)
+    write(package / "robots" / "talos.urdf.xacro", f"""\
+        <robot name="talos" {XACRO}>
+          <xacro:include filename="$(find talos_description)/urdf/arm.urdf.xacro"/>
+          <link name="torso"/>
+          <xacro:talos_arm name="arm" side="left"/>
+        </robot>
+        """)
+    done = run_cli("check", "--format", "concise", "urdf/left_arm.transmissions.urdf.xacro", "urdf/arm.transmission.xacro", cwd=package)
+    out = (done.stdout + done.stderr).decode()
+    assert done.returncode == 0, out
+    assert "X003" not in out and "checked through robots/talos.urdf.xacro" in out, out
+
+
 def test_a_fragment_with_a_mistake_of_its_own_is_still_checked_through_its_models(tmp_path):
     """A part without a robot name (R002 alone) whose mass a user typed negative: the
     negative mass is said through the models that include it, not beside a false "no

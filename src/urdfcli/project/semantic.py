@@ -197,16 +197,20 @@ def described(
     srdf = document.file.resolve()
     fits, failures, beside = [], [], False  # fits: (names the URDF lacks, order, path, model); failures: (order, why)
     named_by_config = setup_assistant(srdf, index)
+    tried = None  # (file, arguments) of the URDF the .setup_assistant names, once read
     if named_by_config is not None:
         file, given = named_by_config
         path = shown(file)
-        found = load(path, {**given, **arguments_for(file)})
+        tried = (file, {**given, **arguments_for(file)})
+        found = load(path, tried[1])
         if not isinstance(found, str) and found.modelled and found.robot.links:
             loaded.described = found
             return None if found.robot.name == name else _named_otherwise(loaded, f"{path}, which its {SETUP_ASSISTANT} names,", found)
         failures.append((-1, f"{path}, which its {SETUP_ASSISTANT} names: {found if isinstance(found, str) else _why(found)}"))
     for order, (file, depended) in enumerate(candidates(srdf, index, arguments_for)):
         arguments = arguments_for(file)
+        if (file, arguments) == tried:
+            continue  # read above as the .setup_assistant names it: the same failure, said once
         named = robot_name(file, index, arguments) == name
         if not named:
             if beside or _stem(file) != _stem(srdf) or not (depended or srdf.parent.parent in file.parents):

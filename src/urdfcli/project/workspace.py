@@ -389,14 +389,18 @@ class Index:
         return found
 
     def top_level_models(self, files: list[Path]) -> list[Path]:
-        """The models among ``files`` that none of them includes (by a resolved path), or
-        only files of other packages do (see :func:`included_from_other_packages`)."""
-        includers: dict[Path, list[Path]] = {}
-        for file in files:
-            for include in self.includes(file):
-                if include.kind == "path":
-                    includers.setdefault(Path(include.value), []).append(file)
-        return sorted(f for f in files if self.kind(f) == "model" and (f not in includers or included_from_other_packages(f, includers[f], self)))
+        """The models among ``files`` that none of them includes, or only files of other
+        packages do (see :func:`included_from_other_packages`): included by a resolved path,
+        or, a xacro file, by a glob or a name computed from a macro parameter that fits it
+        (TALOS's ``${side}_arm.transmissions.urdf.xacro``, a fragment of the arm's macro)."""
+        includers = self.includers(files)
+
+        def included(file: Path) -> bool:
+            found = includers.get(file, [])
+            by = [includer for includer, include, _ in found if include.kind == "path" or part_of_model(str(file))]
+            return bool(by) and not included_from_other_packages(file, by, self)
+
+        return sorted(f for f in files if self.kind(f) == "model" and not included(f))
 
     def reaches(self, model: Path, library: Path, arguments: dict[str, str] | None = None) -> bool:
         """Whether expanding ``model`` may read ``library``, through any chain of includes:
