@@ -701,3 +701,27 @@ def test_an_srdf_written_without_the_prefix_of_every_urdf_name_is_one_finding_pe
     [k001] = [d for f in document["files"] for d in f["diagnostics"]]
     assert k001["message"] == "the SRDF names 2 links that lbr_description/urdf/iiwa.xacro has only with the prefix 'left' in place of 'lbr': 'lbr_link_0', 'lbr_link_3'"
     assert k001["hint"].startswith("it is written for the robot with another prefix: write each name with 'left' in place of 'lbr'")
+
+
+def test_names_a_prefix_would_make_ones_the_srdf_gives_itself_are_no_prefix(tmp_path):
+    """franka_ros2's SRDF with its hand, checked against the arm alone: 'panda_finger_joint1'
+    and 'panda_finger_joint2' are 'panda_joint1' and 'panda_joint2' with 'panda' in place of
+    'panda_finger', but the SRDF names those two itself: the hand is missing, not a prefix."""
+    (tmp_path / "arm.urdf").write_text(
+        '<robot name="panda">\n  <link name="panda_link0"/>\n  <link name="panda_link1"/>\n  <link name="panda_link2"/>\n'
+        + "".join(f'  <joint name="panda_joint{i}" type="revolute"><parent link="panda_link{i - 1}"/><child link="panda_link{i}"/>'
+                  '<axis xyz="0 0 1"/><limit lower="-1" upper="1" effort="1" velocity="1"/></joint>\n' for i in (1, 2))
+        + "</robot>\n")
+    (tmp_path / "arm.srdf").write_text(
+        '<robot name="panda">\n  <group name="arm"><chain base_link="panda_link0" tip_link="panda_link2"/></group>\n'
+        '  <group_state name="ready" group="arm"><joint name="panda_joint1" value="0"/><joint name="panda_joint2" value="0"/></group_state>\n'
+        '  <group name="hand"><joint name="panda_finger_joint1"/><joint name="panda_finger_joint2"/></group>\n</robot>\n')
+    done, document = check("arm.srdf", "--urdf", "arm.urdf", cwd=tmp_path)
+    assert [(d["code"], d["line"], d["message"]) for d in document["files"][0]["diagnostics"]] == [
+        ("K002", 4, f"group 'hand' names joint 'panda_finger_joint{i}', which arm.urdf does not have") for i in (1, 2)]
+    # a prefix whose names the SRDF does not give is still one finding: the SRDF of a robot built with another prefix
+    (tmp_path / "arm.srdf").write_text(
+        '<robot name="panda">\n  <group name="hand"><joint name="panda_finger_joint1"/><joint name="panda_finger_joint2"/></group>\n</robot>\n')
+    done, document = check("arm.srdf", "--urdf", "arm.urdf", cwd=tmp_path)
+    [k002] = document["files"][0]["diagnostics"]
+    assert k002["message"] == "the SRDF names 2 joints that arm.urdf has only with the prefix 'panda' in place of 'panda_finger': 'panda_finger_joint1', 'panda_finger_joint2'"
