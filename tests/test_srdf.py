@@ -345,6 +345,34 @@ def test_the_command_lines_xacro_arguments_are_the_urdfs(tmp_path):
     assert done.returncode == 1 and [d["code"] for d in document["files"][0]["diagnostics"]] == ["K001"]
 
 
+def test_the_srdfs_own_argument_defaults_are_the_urdfs(tmp_path):
+    """franka_ros2: panda_arm.srdf.xacro declares hand (default true) and names the hand's links;
+    panda_arm.urdf.xacro declares hand too (default false). Its launch file passes hand:=true to
+    both: the SRDF's default is the URDF's argument (6 false K001 and K002). An argument given on
+    the command line or in the configuration still wins."""
+    (tmp_path / "arm.urdf.xacro").write_text(
+        '<robot name="panda" xmlns:xacro="http://www.ros.org/wiki/xacro">\n  <xacro:arg name="hand" default="false"/>\n'
+        '  <link name="panda_link0"/><link name="panda_link8"/>\n'
+        '  <joint name="panda_joint1" type="revolute"><parent link="panda_link0"/><child link="panda_link8"/>'
+        '<limit lower="-1" upper="1" effort="1" velocity="1"/></joint>\n'
+        '  <xacro:if value="$(arg hand)"><link name="panda_hand"/>'
+        '<joint name="panda_hand_joint" type="fixed"><parent link="panda_link8"/><child link="panda_hand"/></joint></xacro:if>\n</robot>\n')
+    (tmp_path / "panda.srdf.xacro").write_text(
+        '<robot name="panda" xmlns:xacro="http://www.ros.org/wiki/xacro">\n  <xacro:arg name="hand" default="true"/>\n'
+        '  <group name="arm"><chain base_link="panda_link0" tip_link="panda_link8"/></group>\n'
+        '  <xacro:if value="$(arg hand)"><group name="hand"><link name="panda_hand"/></group></xacro:if>\n</robot>\n')
+    done, document = check("panda.srdf.xacro", cwd=tmp_path)
+    assert done.returncode == 0 and found(document) == [], document
+    assert document["files"][0]["checked_against"] == "arm.urdf.xacro"
+    # hand:=false on the command line is the SRDF's and the URDF's: no hand group, no hand link, clean too
+    done, document = check("panda.srdf.xacro", "hand:=false", cwd=tmp_path)
+    assert done.returncode == 0 and found(document) == [], document
+    # the URDF's configured value wins over the SRDF's default
+    (tmp_path / "pyproject.toml").write_text('[tool.urdfcli.xacro-args]\n"arm.urdf.xacro" = { hand = "false" }\n')
+    done, document = check("panda.srdf.xacro", cwd=tmp_path)
+    assert [d["code"] for d in document["files"][0]["diagnostics"]] == ["K001"]
+
+
 @pytest.mark.parametrize(("kind", "severity"), [("fixed", "info"), ("floating", "error")])
 def test_a_virtual_joint_to_a_link_the_urdf_fixes_to_world_is_a_note_when_fixed(tmp_path, kind, severity):
     """moveit_resources' panda: the URDF fixes panda_link0 to a 'world' link (for Gazebo) and the
