@@ -72,6 +72,23 @@ def test_missing_link_hint_names_no_link_that_would_close_a_loop_or_give_two_par
     assert not hints["bse_link"].startswith("did you mean"), hints  # base_link is above arm_link: a loop
 
 
+def test_a_parameter_the_macro_lacks_is_named_with_the_one_meant(tmp_path):
+    """franka_description's franka_robot macro calls ee_with_one_link with rpy=..., whose
+    parameter is rpy_ee: xacro says only 'Invalid parameter "rpy"'. The hint names the macro
+    and the parameter meant, else the parameters it has (never a block, given as content)."""
+    path = tmp_path / "r.urdf.xacro"
+    macro = ('<robot name="r" xmlns:xacro="http://www.ros.org/wiki/xacro">\n'
+             '  <xacro:macro name="ee_with_one_link" params="arm_id rpy_ee:=\'0 0 0\' **geometry"><link name="${arm_id}_ee"/></xacro:macro>\n'
+             '  <xacro:ee_with_one_link arm_id="fr3" CALL><geometry/></xacro:ee_with_one_link>\n</robot>\n')
+    path.write_text(macro.replace("CALL", 'rpy="0 0 0"'))
+    [found] = diagnostics("check", str(path))
+    assert (found["code"], found["message"]) == ("X003", 'Invalid parameter "rpy"')
+    assert found["hint"] == "macro 'ee_with_one_link' has no parameter 'rpy': did you mean 'rpy_ee'?"
+    path.write_text(macro.replace("CALL", 'colour="red"'))
+    [found] = diagnostics("check", str(path))
+    assert found["hint"] == "macro 'ee_with_one_link' has no parameter 'colour'; its parameters: arm_id, rpy_ee"
+
+
 def test_undefined_argument_hint_works_on_the_command_line_and_in_pyproject(tmp_path):
     path = tmp_path / "arm.urdf.xacro"
     path.write_text('<robot name="r" xmlns:xacro="http://www.ros.org/wiki/xacro">\n  <link name="$(arg prefix)base"/>\n</robot>\n')
