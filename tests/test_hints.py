@@ -49,6 +49,46 @@ def test_missing_link_hint_names_the_closest_links(tmp_path):
     assert hints["wrist_1_lnk"] == "did you mean 'wrist_1_link'?"
 
 
+def test_missing_link_hint_names_no_link_that_would_close_a_loop_or_give_two_parents(tmp_path):
+    """franka_description with no_prefix:=true: the hand joint names 'fr3_link8', the arm's
+    flange is 'link8', and the closest name was the hand's own finger, which hangs below
+    the hand: a loop. A missing child is never a link above the parent, nor one another
+    joint already moves."""
+    path = tmp_path / "r.urdf"
+    path.write_text('<robot name="r"><link name="link7"/><link name="link8"/><link name="fr3_hand"/><link name="fr3_leftfinger"/>'
+                    '<joint name="joint8" type="fixed"><parent link="link7"/><child link="link8"/></joint>'
+                    '<joint name="fr3_hand_joint" type="fixed"><parent link="fr3_link8"/><child link="fr3_hand"/></joint>'
+                    '<joint name="fr3_finger_joint1" type="fixed"><parent link="fr3_hand"/><child link="fr3_leftfinger"/></joint></robot>')
+    hints = {d["message"].split("'")[1]: d["hint"] for d in diagnostics("check", str(path)) if d["code"] == "J005"}
+    assert hints["fr3_link8"] == 'every link a joint names must be defined: add <link name="fr3_link8"/> or fix the name'
+    path.write_text('<robot name="r"><link name="base_link"/><link name="arm_link"/><link name="arm_link_2"/><link name="tool_link"/>'
+                    '<joint name="a" type="fixed"><parent link="base_link"/><child link="arm_link"/></joint>'
+                    '<joint name="b" type="fixed"><parent link="arm_link"/><child link="arm_lnk_2"/></joint>'
+                    '<joint name="c" type="fixed"><parent link="base_link"/><child link="tool_link"/></joint></robot>')
+    hints = {d["message"].split("'")[1]: d["hint"] for d in diagnostics("check", str(path)) if d["code"] == "J005"}
+    assert hints["arm_lnk_2"] == "did you mean 'arm_link_2'?"  # a root of its own: no loop, one parent
+    path.write_text(path.read_text().replace('<child link="arm_lnk_2"/>', '<child link="bse_link"/>'))
+    hints = {d["message"].split("'")[1]: d["hint"] for d in diagnostics("check", str(path)) if d["code"] == "J005"}
+    assert not hints["bse_link"].startswith("did you mean"), hints  # base_link is above arm_link: a loop
+
+
+def test_a_parameter_the_macro_lacks_is_named_with_the_one_meant(tmp_path):
+    """franka_description's franka_robot macro calls ee_with_one_link with rpy=..., whose
+    parameter is rpy_ee: xacro says only 'Invalid parameter "rpy"'. The hint names the macro
+    and the parameter meant, else the parameters it has (never a block, given as content)."""
+    path = tmp_path / "r.urdf.xacro"
+    macro = ('<robot name="r" xmlns:xacro="http://www.ros.org/wiki/xacro">\n'
+             '  <xacro:macro name="ee_with_one_link" params="arm_id rpy_ee:=\'0 0 0\' **geometry"><link name="${arm_id}_ee"/></xacro:macro>\n'
+             '  <xacro:ee_with_one_link arm_id="fr3" CALL><geometry/></xacro:ee_with_one_link>\n</robot>\n')
+    path.write_text(macro.replace("CALL", 'rpy="0 0 0"'))
+    [found] = diagnostics("check", str(path))
+    assert (found["code"], found["message"]) == ("X003", 'Invalid parameter "rpy"')
+    assert found["hint"] == "macro 'ee_with_one_link' has no parameter 'rpy': did you mean 'rpy_ee'?"
+    path.write_text(macro.replace("CALL", 'colour="red"'))
+    [found] = diagnostics("check", str(path))
+    assert found["hint"] == "macro 'ee_with_one_link' has no parameter 'colour'; its parameters: arm_id, rpy_ee"
+
+
 def test_undefined_argument_hint_works_on_the_command_line_and_in_pyproject(tmp_path):
     path = tmp_path / "arm.urdf.xacro"
     path.write_text('<robot name="r" xmlns:xacro="http://www.ros.org/wiki/xacro">\n  <link name="$(arg prefix)base"/>\n</robot>\n')

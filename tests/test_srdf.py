@@ -345,6 +345,34 @@ def test_the_command_lines_xacro_arguments_are_the_urdfs(tmp_path):
     assert done.returncode == 1 and [d["code"] for d in document["files"][0]["diagnostics"]] == ["K001"]
 
 
+def test_the_srdfs_own_argument_defaults_are_the_urdfs(tmp_path):
+    """franka_ros2: panda_arm.srdf.xacro declares hand (default true) and names the hand's links;
+    panda_arm.urdf.xacro declares hand too (default false). Its launch file passes hand:=true to
+    both: the SRDF's default is the URDF's argument (6 false K001 and K002). An argument given on
+    the command line or in the configuration still wins."""
+    (tmp_path / "arm.urdf.xacro").write_text(
+        '<robot name="panda" xmlns:xacro="http://www.ros.org/wiki/xacro">\n  <xacro:arg name="hand" default="false"/>\n'
+        '  <link name="panda_link0"/><link name="panda_link8"/>\n'
+        '  <joint name="panda_joint1" type="revolute"><parent link="panda_link0"/><child link="panda_link8"/>'
+        '<limit lower="-1" upper="1" effort="1" velocity="1"/></joint>\n'
+        '  <xacro:if value="$(arg hand)"><link name="panda_hand"/>'
+        '<joint name="panda_hand_joint" type="fixed"><parent link="panda_link8"/><child link="panda_hand"/></joint></xacro:if>\n</robot>\n')
+    (tmp_path / "panda.srdf.xacro").write_text(
+        '<robot name="panda" xmlns:xacro="http://www.ros.org/wiki/xacro">\n  <xacro:arg name="hand" default="true"/>\n'
+        '  <group name="arm"><chain base_link="panda_link0" tip_link="panda_link8"/></group>\n'
+        '  <xacro:if value="$(arg hand)"><group name="hand"><link name="panda_hand"/></group></xacro:if>\n</robot>\n')
+    done, document = check("panda.srdf.xacro", cwd=tmp_path)
+    assert done.returncode == 0 and found(document) == [], document
+    assert document["files"][0]["checked_against"] == "arm.urdf.xacro"
+    # hand:=false on the command line is the SRDF's and the URDF's: no hand group, no hand link, clean too
+    done, document = check("panda.srdf.xacro", "hand:=false", cwd=tmp_path)
+    assert done.returncode == 0 and found(document) == [], document
+    # the URDF's configured value wins over the SRDF's default
+    (tmp_path / "pyproject.toml").write_text('[tool.urdfcli.xacro-args]\n"arm.urdf.xacro" = { hand = "false" }\n')
+    done, document = check("panda.srdf.xacro", cwd=tmp_path)
+    assert [d["code"] for d in document["files"][0]["diagnostics"]] == ["K001"]
+
+
 @pytest.mark.parametrize(("kind", "severity"), [("fixed", "info"), ("floating", "error")])
 def test_a_virtual_joint_to_a_link_the_urdf_fixes_to_world_is_a_note_when_fixed(tmp_path, kind, severity):
     """moveit_resources' panda: the URDF fixes panda_link0 to a 'world' link (for Gazebo) and the
@@ -720,3 +748,27 @@ def test_a_setup_assistant_urdf_that_cannot_be_read_is_named_once(tmp_path):
     assert (done.returncode, k008["code"]) == (0, "K008"), document
     assert k008["message"].count("talos_full_v2.urdf.xacro") == 1, k008["message"]
     assert "which its .setup_assistant names: package 'talos_description_calibration' not found" in k008["message"]
+
+
+def test_names_a_prefix_would_make_ones_the_srdf_gives_itself_are_no_prefix(tmp_path):
+    """franka_ros2's SRDF with its hand, checked against the arm alone: 'panda_finger_joint1'
+    and 'panda_finger_joint2' are 'panda_joint1' and 'panda_joint2' with 'panda' in place of
+    'panda_finger', but the SRDF names those two itself: the hand is missing, not a prefix."""
+    (tmp_path / "arm.urdf").write_text(
+        '<robot name="panda">\n  <link name="panda_link0"/>\n  <link name="panda_link1"/>\n  <link name="panda_link2"/>\n'
+        + "".join(f'  <joint name="panda_joint{i}" type="revolute"><parent link="panda_link{i - 1}"/><child link="panda_link{i}"/>'
+                  '<axis xyz="0 0 1"/><limit lower="-1" upper="1" effort="1" velocity="1"/></joint>\n' for i in (1, 2))
+        + "</robot>\n")
+    (tmp_path / "arm.srdf").write_text(
+        '<robot name="panda">\n  <group name="arm"><chain base_link="panda_link0" tip_link="panda_link2"/></group>\n'
+        '  <group_state name="ready" group="arm"><joint name="panda_joint1" value="0"/><joint name="panda_joint2" value="0"/></group_state>\n'
+        '  <group name="hand"><joint name="panda_finger_joint1"/><joint name="panda_finger_joint2"/></group>\n</robot>\n')
+    done, document = check("arm.srdf", "--urdf", "arm.urdf", cwd=tmp_path)
+    assert [(d["code"], d["line"], d["message"]) for d in document["files"][0]["diagnostics"]] == [
+        ("K002", 4, f"group 'hand' names joint 'panda_finger_joint{i}', which arm.urdf does not have") for i in (1, 2)]
+    # a prefix whose names the SRDF does not give is still one finding: the SRDF of a robot built with another prefix
+    (tmp_path / "arm.srdf").write_text(
+        '<robot name="panda">\n  <group name="hand"><joint name="panda_finger_joint1"/><joint name="panda_finger_joint2"/></group>\n</robot>\n')
+    done, document = check("arm.srdf", "--urdf", "arm.urdf", cwd=tmp_path)
+    [k002] = document["files"][0]["diagnostics"]
+    assert k002["message"] == "the SRDF names 2 joints that arm.urdf has only with the prefix 'panda' in place of 'panda_finger': 'panda_finger_joint1', 'panda_finger_joint2'"

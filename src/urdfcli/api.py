@@ -318,8 +318,25 @@ def _configured_as(path: str, config: Config, session: Session) -> str:
 
 def _described(loaded: Loaded, session: Session, given: dict[str, str]) -> Diagnostic | None:
     """An SRDF checked against the URDF of its robot: that URDF set on ``loaded``, or why there is none.
-    ``given``: the SRDF's argument set of ``[tool.urdfcli] models``, the URDF's too (a 6-dof arm's SRDF: dof:=6)."""
-    return described(loaded, session.index, session.options.urdf, lambda file: {**model_arguments(str(file), session), **given}, partial(_load_urdf, session))
+    ``given``: the SRDF's argument set of ``[tool.urdfcli] models``, the URDF's too (a 6-dof arm's SRDF: dof:=6);
+    under the URDF's own configuration, the defaults of the SRDF's own arguments (see :func:`_own_defaults`)."""
+    own = _own_defaults(loaded, session)
+    return described(loaded, session.index, session.options.urdf, lambda file: {**own, **model_arguments(str(file), session), **given}, partial(_load_urdf, session))
+
+
+def _own_defaults(loaded: Loaded, session: Session) -> dict[str, str]:
+    """The literal defaults of a xacro SRDF's arguments: a launch file passes one value to the
+    URDF and the SRDF alike (franka_ros2's hand:=true), so the SRDF's default is the URDF's
+    argument of that name when nothing else gives it (the SRDF of the arm with its hand, whose
+    URDF leaves the hand out by default). A default computed from something else is left out."""
+    document = loaded.document
+    defaults: dict[str, str] = {}
+    for file in (document.shown, *document.includes):
+        found = session.files.get(file)
+        for name, value in found.scan.arguments if found is not None and found.scan is not None else ():
+            if "$(" not in value and "${" not in value:
+                defaults.setdefault(name, value)
+    return defaults
 
 
 def model_arguments(path: str, session: Session) -> dict[str, str]:

@@ -31,7 +31,7 @@ import xacro.substitution_args
 from ..diagnostics import Call
 from . import guard
 from .expanded import Expansion, ExpansionError, Origin, Origins, PackageNotFound, display_path
-from .names import typo_of
+from .names import cut_from, typo_of
 from .packages import closest_file
 from .positions import Text, decode
 from .xml import XmlError, parse
@@ -523,6 +523,26 @@ def _missing_argument(message: str) -> tuple[str | None, str | None]:
     return None, f"did you mean $(arg {meant})? No <xacro:arg> declares '{name}'"
 
 
+_INVALID_PARAMETER = re.compile(r'^Invalid parameter "([^"]+)"')  # xacro's words for a call giving a parameter its macro lacks
+
+
+def _parameter_hint(error: Exception, message: str) -> str | None:
+    """For xacro's error on a macro call giving a parameter the macro does not declare: the
+    parameter meant (``rpy_ee`` for ``rpy``: the name with a part added, or misspelt), else the
+    macro's parameters; None for any other error."""
+    found = _INVALID_PARAMETER.match(message)
+    macros = getattr(error, "macros", None)
+    if found is None or not macros or macros[0].body is None:
+        return None
+    given, macro = found.group(1), macros[0]
+    params = [name for name in macro.params if not name.startswith("*")]  # a block (*name) is given as content, not as an attribute
+    name = macro.body.getAttribute("name").removeprefix("xacro:")
+    meant = next((param for param in params if cut_from(param, given)), None) or typo_of(given, params)
+    if meant is not None:
+        return f"macro '{name}' has no parameter '{given}': did you mean '{meant}'?"
+    return f"macro '{name}' has no parameter '{given}'; its parameters: {', '.join(params) or '(none)'}"
+
+
 def expand_here(data: bytes, file: str | None, mappings: dict[str, str], resolver: PackageResolver, given: dict[str, bytes]) -> Expansion:
     """:meth:`urdfcli.read.xacro.Expander.expand`, here in this process and unbounded."""
     shown = display_path(file) if file else "<stdin>"
@@ -557,7 +577,7 @@ def expand_here(data: bytes, file: str | None, mappings: dict[str, str], resolve
             missing, hint = _missing_argument(message) if code == "X003" else (None, None)
             raise ExpansionError(
                 message, origin, display_path(current_file) if current_file else shown, code,
-                _included(resolver), missing, hint or getattr(error, "urdfcli_hint", None) or session.unprefixed_property(doc, error),
+                _included(resolver), missing, hint or getattr(error, "urdfcli_hint", None) or _parameter_hint(error, message) or session.unprefixed_property(doc, error),
             ) from None
         finally:
             includes = list(_included(resolver))

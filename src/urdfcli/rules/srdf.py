@@ -86,12 +86,14 @@ def _elsewhere(found: list[tuple[str, Named]]) -> str:
     return f" (and in {joined(parts)})" if parts else ""
 
 
-def _one_prefix(loaded: Loaded, found: list[Diagnostic], kind: str, known) -> list[Diagnostic]:
+def _one_prefix(loaded: Loaded, found: list[Diagnostic], kind: str, known, given: set[str]) -> list[Diagnostic]:
     """``found`` (one for each name the URDF lacks), or one diagnostic for them all when one prefix
-    makes every name one of ``known``: the SRDF of the robot built with another prefix
-    (lbr_fri_ros2_stack's robot_name) lacks every name, and one finding says why."""
+    makes every name one of ``known`` that the SRDF does not give itself (``given``): the SRDF of
+    the robot built with another prefix (lbr_fri_ros2_stack's robot_name) lacks every name, and one
+    finding says why. A prefix that would make a name one the SRDF also gives is no such cause:
+    'panda_finger_joint1' beside 'panda_joint1' is the hand the URDF lacks, not 'panda_finger' for 'panda'."""
     missing = [d.subjects[0] for d in found]  # (one each: see _missing_once)
-    prefix = _prefix(missing, known)
+    prefix = _prefix(missing, set(known) - given)
     if prefix is None:
         return found
     old, new = prefix
@@ -163,7 +165,9 @@ def unknown_link(loaded: Loaded, given: Given) -> Iterator[Diagnostic]:
         return
     links = robot.links
     pairs = [(link, other) for pair in loaded.semantic.disabled for link, other in (pair, pair[::-1])]
-    yield from _one_prefix(loaded, list(_missing_once(loaded, "K001", "link", loaded.semantic.named_links(), links, pairs)), "link", links)
+    named = loaded.semantic.named_links()
+    given = {name.name for _, name in named} | {link.name for link, _ in pairs}
+    yield from _one_prefix(loaded, list(_missing_once(loaded, "K001", "link", named, links, pairs)), "link", links, given)
 
 
 @check(
@@ -194,7 +198,9 @@ def unknown_joint(loaded: Loaded, given: Given) -> Iterator[Diagnostic]:
     if robot is None:
         return
     joints = set(robot.joints) | loaded.semantic.own_joints
-    yield from _one_prefix(loaded, list(_missing_once(loaded, "K002", "joint", loaded.semantic.named_joints(), joints)), "joint", joints)
+    named = loaded.semantic.named_joints()
+    given = {name.name for _, name in named}
+    yield from _one_prefix(loaded, list(_missing_once(loaded, "K002", "joint", named, joints)), "joint", joints, given)
 
 
 @check(

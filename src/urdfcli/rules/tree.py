@@ -7,7 +7,7 @@ cannot be drawn or audited either.
 from __future__ import annotations
 
 from ..diagnostics import Severity
-from ..model.kinematics import build_graph, has_loop, joined, roots
+from ..model.kinematics import build_graph, children_by_joint_name, has_loop, joined, reached, roots
 from .base import Kind, check
 from .suggestions import close_matches
 
@@ -24,15 +24,33 @@ def dangling(loaded) -> list:
     return [j for j in robot.joints.values() if (j.parent is not None and j.parent not in links) or (j.child is not None and j.child not in links)]
 
 
-def link_hint(missing: str, robot, other_end: str | None = None) -> str:
-    """What to do about a joint naming a missing link: the closest link names, if any,
-    never the joint's other end (a joint does not join a link to itself)."""
+def link_hint(missing: str, robot, other_end: str | None = None, role: str = "parent") -> str:
+    """What to do about a joint naming a missing link (its ``role``): the closest link names, if any,
+    never one the joint cannot join to its other end (see :func:`unjoinable`)."""
     # difflib is quadratic in names: past a few thousand links the plain hint keeps a broken model fast
-    candidates = [name for name in robot.links if name != other_end] if len(robot.links) <= 5000 else []
+    excluded = unjoinable(robot, other_end, role) if len(robot.links) <= 5000 else set()
+    candidates = [name for name in robot.links if name not in excluded] if len(robot.links) <= 5000 else []
     close = close_matches(missing, candidates, n=3)
     if close:
         return f"did you mean {' or '.join(repr(name) for name in close)}?"
     return f'every link a joint names must be defined: add <link name="{missing}"/> or fix the name'
+
+
+def unjoinable(robot, other_end: str | None, role: str) -> set[str]:
+    """The links a joint cannot have in ``role`` beside ``other_end``: the other end itself (a joint
+    does not join a link to itself); as parent, a link below its child (Franka's hand joint
+    missing its ``${prefix}link8`` is not meant to hang the hand from its own finger: a loop); as
+    child, a link above its parent (a loop) or one another joint already moves (two parents)."""
+    if other_end not in robot.links:
+        return {other_end}
+    if role == "parent":
+        return set(reached(children_by_joint_name(robot), other_end))
+    parent_of = {joint.child: joint.parent for joint in joined(robot)}
+    link, above = other_end, {other_end}
+    while link in parent_of and parent_of[link] not in above:
+        link = parent_of[link]
+        above.add(link)
+    return above | set(parent_of)  # the links above (every one but the root has a parent) and those with a parent
 
 
 @check("J005", "joint-link-not-found", ERROR, "A joint names a parent or child link that does not exist.", urdfdom=True, kind=Kind.TREE)
@@ -69,7 +87,7 @@ def joint_link_not_found(loaded, given):
             if link is not None and link not in robot.links:
                 yield loaded.diagnostic(
                     "J005", f"{role} link '{link}' of joint '{joint.name}' does not exist", joint.part(role),
-                    link_hint(link, robot, other_end), subjects=(joint.name,),
+                    link_hint(link, robot, other_end, role), subjects=(joint.name,),
                 )
 
 
