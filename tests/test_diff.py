@@ -238,6 +238,15 @@ def test_totals_follow(tmp_path):
     assert (new_totals.dof, new_totals.mass) == (1, 7.6)
     done = run_cli("diff", str(tmp_path / "old.urdf"), str(tmp_path / "new.urdf"))
     assert done.stdout.decode().splitlines()[-1] == "3 changed; mass 7.1 kg -> 7.6 kg (+7.04 %); 2 DOF -> 1"
+    # a total of CAD masses (Franka's 4.970684 kg and the like) is a sum nobody wrote: 6 digits, or as many as tell them apart
+    cad = ARM.replace('<mass value="2"/>', '<mass value="4.970684"/>')
+    write(tmp_path, "cad.urdf", cad)
+    write(tmp_path, "cad_new.urdf", cad.replace('<mass value="4.970684"/>', '<mass value="4.970784"/>', 1))
+    assert api.diff(str(tmp_path / "cad.urdf"), str(tmp_path / "cad_new.urdf")).comparison.old.mass == pytest.approx(10.070684)
+    done = run_cli("diff", str(tmp_path / "old.urdf"), str(tmp_path / "cad.urdf"))
+    assert done.stdout.decode().splitlines()[-1] == "1 changed; mass 7.1 kg -> 10.0707 kg (+41.84 %)"
+    done = run_cli("diff", str(tmp_path / "cad.urdf"), str(tmp_path / "cad_new.urdf"))
+    assert done.stdout.decode().splitlines()[-1].startswith("1 changed; mass 10.0707 kg -> 10.0708 kg (+0.000")
 
 
 # -- renames ---------------------------------------------------------------------------

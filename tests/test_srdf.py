@@ -772,3 +772,23 @@ def test_names_a_prefix_would_make_ones_the_srdf_gives_itself_are_no_prefix(tmp_
     done, document = check("arm.srdf", "--urdf", "arm.urdf", cwd=tmp_path)
     [k002] = document["files"][0]["diagnostics"]
     assert k002["message"] == "the SRDF names 2 joints that arm.urdf has only with the prefix 'panda' in place of 'panda_finger': 'panda_finger_joint1', 'panda_finger_joint2'"
+
+
+def test_a_urdf_that_needs_a_package_this_machine_lacks_is_said_so_with_the_way_to_give_it(tmp_path):
+    """TALOS's model includes its calibration package, not in the workspace: the K008 hint names
+    the package path, not xacro arguments; given with -P, the SRDF is checked against it."""
+    robot, config = robot_and_moveit_config(tmp_path / "src", "talos_description", "robots", "talos_moveit_config")
+    (robot / "robots" / "talos.urdf.xacro").write_text(
+        '<robot name="talos" xmlns:xacro="http://ros.org/wiki/xacro">\n'
+        '  <xacro:include filename="$(find talos_description_calibration)/urdf/calibration.xacro"/>\n  <link name="base_link"/>\n</robot>\n')
+    (config / "config" / "talos.srdf").write_text('<robot name="talos">\n  <group name="torso"><link name="base_link"/></group>\n</robot>\n')
+    done, document = check("src/talos_moveit_config/config/talos.srdf", cwd=tmp_path)
+    [k008] = document["files"][0]["diagnostics"]
+    assert k008["code"] == "K008" and "package 'talos_description_calibration' not found" in k008["message"], k008
+    assert k008["hint"] == "build and source the workspace that has the package, or give its folder with -P NAME=DIR (package-paths in [tool.urdfcli])"
+    calibration = tmp_path / "vendor" / "talos_description_calibration"
+    (calibration / "urdf").mkdir(parents=True)
+    (calibration / "package.xml").write_text('<package format="3"><name>talos_description_calibration</name></package>\n')
+    (calibration / "urdf" / "calibration.xacro").write_text('<robot xmlns:xacro="http://ros.org/wiki/xacro"/>\n')
+    done, document = check("-P", "vendor", "src/talos_moveit_config/config/talos.srdf", cwd=tmp_path)
+    assert (done.returncode, document["files"][0]["diagnostics"]) == (0, []), document

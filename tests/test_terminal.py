@@ -177,6 +177,21 @@ def test_a_source_line_is_never_wrapped_and_the_caret_stays_under_its_column(tmp
     assert lines[excerpt][lines[excerpt + 1].index("^"):].startswith('size="1 1 -1"')
 
 
+def test_the_command_line_sets_its_ctrl_c_handler_before_it_imports_anything():
+    """A Ctrl-C while Python imports a module no handler covers ends in a traceback: the entry point
+    covers the import of urdfcli.cli, and main sets its own handler before importing more."""
+    program = (
+        "import sys\n"
+        "import urdfcli.cli as cli\n"
+        "from urdfcli.cli.interrupt import CtrlC\n"
+        "before, install = set(sys.modules), CtrlC.install\n"
+        "CtrlC.install = classmethod(lambda cls: (print(sorted(set(sys.modules) - before)), install())[1])\n"
+        "cli.main(['--version'])\n"
+    )
+    done = subprocess.run([sys.executable, "-c", program], capture_output=True, text=True, timeout=60)
+    assert done.returncode == 0 and done.stdout.splitlines()[0] == "[]", done.stdout + done.stderr
+
+
 @pytest.mark.parametrize("after", [0.2, 1.0, 2.0])  # while Python starts; while trimesh imports scipy (it swallows the exception); later
 def test_lint_interrupted_restores_the_terminal(after):
     data = example_robot_data()

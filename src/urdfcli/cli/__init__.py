@@ -93,10 +93,18 @@ def program_for(argv: list[str]) -> typer.Typer:
     return build_app(() if argv[:1] == ["--version"] else tuple(COMMANDS))
 
 
+def click_exceptions():
+    """click's exceptions: typer vendors click from 0.2x on. (Here, not in .common: a Ctrl-C
+    while main imports .common, before its handler is set, would end in a traceback.)"""
+    try:
+        from typer._click import exceptions
+    except ImportError:
+        from click import exceptions
+    return exceptions
+
+
 def main(argv: list[str] | None = None) -> int:
     """Run a command line; the exit code. Usage and internal errors are one line each."""
-    from .common import click_exceptions
-
     errors = click_exceptions()
     ClickException, NoArgsIsHelpError, UsageError = errors.ClickException, errors.NoArgsIsHelpError, errors.UsageError
 

@@ -12,6 +12,7 @@ from typing import TYPE_CHECKING, Annotated
 import typer
 
 from ..options import Options, UsageError, xacro_arguments
+from . import click_exceptions
 from ..report.console import COLOR_MODES, Output
 from ..report.escape import escape
 
@@ -175,15 +176,6 @@ def split_inputs(arguments: list[str], none_needed: bool = False) -> tuple[list[
     if not paths and not none_needed:
         raise fail("no input file given")
     return paths, mappings
-
-
-def click_exceptions():
-    """click's exceptions: typer vendors click from 0.2x on."""
-    try:
-        from typer._click import exceptions
-    except ImportError:
-        from click import exceptions
-    return exceptions
 
 
 def changed_inputs(ctx: typer.Context, arguments: list[str] | None, git_deletions: bool) -> tuple[list[str], dict[str, str], tuple[str, ...]]:

@@ -196,6 +196,7 @@ def described(
         return None
     srdf = document.file.resolve()
     fits, failures, beside = [], [], False  # fits: (names the URDF lacks, order, path, model); failures: (order, why)
+    unread: list[Loaded | str] = []  # what each failure read
     named_by_config = setup_assistant(srdf, index)
     tried = None  # (file, arguments) of the URDF the .setup_assistant names, once read
     if named_by_config is not None:
@@ -207,6 +208,7 @@ def described(
             loaded.described = found
             return None if found.robot.name == name else _named_otherwise(loaded, f"{path}, which its {SETUP_ASSISTANT} names,", found)
         failures.append((-1, f"{path}, which its {SETUP_ASSISTANT} names: {found if isinstance(found, str) else _why(found)}"))
+        unread.append(found)
     for order, (file, depended) in enumerate(candidates(srdf, index, arguments_for)):
         arguments = arguments_for(file)
         if (file, arguments) == tried:
@@ -223,6 +225,7 @@ def described(
         if isinstance(found, str) or not found.modelled or (named and found.robot.name != name) or not found.robot.links:
             if not _library(found):
                 failures.append((order, f"{path}: {found if isinstance(found, str) else _why(found)}"))
+                unread.append(found)
         else:
             fits.append((_unknown(semantic, found), order, path, found))
             if fits[-1][0] == 0:
@@ -240,9 +243,18 @@ def described(
         return None
     if failures:
         return _without(loaded, f"the URDF of robot '{name}' could not be read ({'; '.join(why for _, why in failures)}): the SRDF's names are not checked",
-                        hint="list its xacro arguments in [tool.urdfcli] models, or give --urdf FILE")
+                        hint=_unread_hint(unread))
     return _without(loaded, f"no URDF of robot '{name}' found in the SRDF's package or workspace: its names are not checked",
                     hint="give the URDF with --urdf FILE")
+
+
+def _unread_hint(unread: list[Loaded | str]) -> str:
+    """What to do when no URDF of the robot could be read: give the packages they need when that is
+    all that stopped them (TALOS's calibration package), else name the arguments or the URDF."""
+    missing = [d for found in unread if not isinstance(found, str) for d in found.diagnostics if d.code == "X004"]
+    if missing and len(missing) == len(unread):
+        return "build and source the workspace that has the package, or give its folder with -P NAME=DIR (package-paths in [tool.urdfcli])"
+    return "list its xacro arguments in [tool.urdfcli] models, or give --urdf FILE"
 
 
 def _unknown(semantic: Semantic, model: Loaded) -> int:

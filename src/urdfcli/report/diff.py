@@ -23,7 +23,7 @@ from .github import escape_data, escape_property
 from .json import dumps
 from .lines import plural
 from .repository import RepositoryPaths
-from .tree import readable, significant_digits
+from .tree import readable, short, significant_digits
 
 FORMATS = DIFF_FORMATS
 MARKS = {"added": "+", "removed": "-", "renamed": "~", "changed": "~"}
@@ -154,13 +154,19 @@ def mark(changes: list[Change]) -> str:
 
 def totals_texts(comparison: Comparison) -> tuple[str, str]:
     """What the old and the new robot amount to, their masses told apart."""
-    masses = values_text(*masses_of(comparison))
+    masses = masses_text(comparison)
     return totals_text(comparison.old, masses[0]), totals_text(comparison.new, masses[1])
 
 
-def masses_of(comparison: Comparison) -> tuple[float, float]:
-    """The total masses, a sum's last bits left out (0.1 + 0.2 kg is 0.3 kg, as written)."""
-    return round(comparison.old.mass, 9), round(comparison.new.mass, 9)
+def masses_text(comparison: Comparison) -> tuple[str, str]:
+    """The total masses, sums nobody wrote: to 6 significant digits, or as many more as tell
+    them apart (17.4117 kg for Franka's links, 0.1 + 0.2 kg as 0.3 kg)."""
+    old, new = comparison.old.mass, comparison.new.mass
+    for digits in range(6, 16):
+        said = short(old, digits), short(new, digits)
+        if said[0] != said[1]:
+            return said
+    return short(old, 6), short(new, 6)
 
 
 def totals_text(totals: Totals, mass: str) -> str:
@@ -176,7 +182,7 @@ def summary_text(comparison: Comparison) -> str:
     follows = []
     if abs(old.mass - new.mass) > 1e-9 * max(old.mass, new.mass, 1.0):
         change = f" ({percent((new.mass - old.mass) / old.mass)})" if old.mass else ""
-        follows.append("mass {} kg -> {} kg".format(*values_text(*masses_of(comparison))) + change)
+        follows.append("mass {} kg -> {} kg".format(*masses_text(comparison)) + change)
     if old.dof != new.dof:
         follows.append(f"{old.dof} DOF -> {new.dof}")
     if comparison.moved:
