@@ -40,13 +40,18 @@ def found(document) -> list[tuple[str, str, int, int]]:
 def test_a_moveit_config_checks_clean(built):
     """panda_moveit_config: its SRDF macros (panda_arm.xacro, hand.xacro), the .srdf.xacro
     files that call them, and the generated panda.srdf: no R004 'no <link>', no note on
-    <group> or <disable_collisions>, each checked against the URDF of robot 'panda'."""
+    <group> or <disable_collisions>, each checked against the URDF of robot 'panda'. lint
+    says one thing, once: hand.xacro writes <passive_joint> inside <group> (as franka_ros2's
+    does), where MoveIt does not read it."""
     files = [f"{PANDA}/panda_arm.xacro", f"{PANDA}/hand.xacro", f"{PANDA}/panda_arm.srdf.xacro", f"{PANDA}/panda_arm_hand.srdf.xacro", f"{PANDA}/panda.srdf"]
     done, document = check(*files, cwd=built.parent)
     assert done.returncode == 0 and found(document) == []
     lint = run_cli("lint", "--format", "concise", *files, cwd=built.parent)
-    assert lint.returncode == 0, lint.stdout.decode()
-    assert lint.stdout.decode() == ""
+    assert lint.returncode == 1
+    assert lint.stdout.decode().splitlines() == [
+        f"{PANDA}/hand.xacro:9:7: K009 warning: <passive_joint> is not read inside <group>; MoveIt ignores it "
+        f"(in macro 'hand' called at {PANDA}/panda_arm_hand.srdf.xacro:11:3; hint: <passive_joint> belongs directly in <robot>)",
+    ]
     text = run_cli("check", f"{PANDA}/panda.srdf", cwd=built.parent)
     assert text.stdout.decode() == (
         "SRDF of robot: panda\n3 groups, 4 group states, 1 end effector; checked against src/panda_moveit_config/config/panda.urdf.xacro\n"
@@ -174,7 +179,8 @@ def test_lint_finds_the_srdf_files_of_a_folder(built):
     done = run_cli("lint", "--format", "json", "src/panda_moveit_config", cwd=built.parent)
     paths = [f["path"] for f in json.loads(done.stdout)["files"]]
     assert paths == [f"src/panda_moveit_config/config/{name}" for name in ("panda.srdf", "panda.urdf.xacro", "panda_arm.srdf.xacro", "panda_arm_hand.srdf.xacro")]
-    assert done.returncode == 0, done.stdout.decode()
+    warnings = [(d["code"], d["path"]) for f in json.loads(done.stdout)["files"] for d in f["diagnostics"] if d["severity"] != "info"]
+    assert warnings == [("K009", f"{PANDA}/hand.xacro")]  # its <passive_joint> inside <group>, said once
 
 
 @pytest.mark.parametrize("command", ["tree", "graph", "inertia"])
@@ -792,3 +798,87 @@ def test_a_urdf_that_needs_a_package_this_machine_lacks_is_said_so_with_the_way_
     (calibration / "urdf" / "calibration.xacro").write_text('<robot xmlns:xacro="http://ros.org/wiki/xacro"/>\n')
     done, document = check("-P", "vendor", "src/talos_moveit_config/config/talos.srdf", cwd=tmp_path)
     assert (done.returncode, document["files"][0]["diagnostics"]) == (0, []), document
+
+
+HAND_URDF = """<robot name="hand">
+  <link name="hand"/><link name="left"/><link name="right"/>
+  <joint name="finger_joint1" type="prismatic"><parent link="hand"/><child link="left"/><axis xyz="0 1 0"/><limit lower="0" upper="0.04" effort="1" velocity="1"/></joint>
+  <joint name="finger_joint2" type="prismatic"><parent link="hand"/><child link="right"/><axis xyz="0 -1 0"/><limit lower="0" upper="0.04" effort="1" velocity="1"/><mimic joint="finger_joint1"/></joint>
+</robot>
+"""
+
+
+def lint_srdf(tmp_path, srdf: str) -> tuple[int, list[tuple[str, str, int, int, str, str | None]]]:
+    (tmp_path / "hand.urdf").write_text(HAND_URDF)
+    (tmp_path / "hand.srdf").write_text(srdf)
+    done = run_cli("lint", "--format", "json", "hand.srdf", "--urdf", "hand.urdf", cwd=tmp_path)
+    document = json.loads(done.stdout)
+    return done.returncode, [(d["code"], d["severity"], d["line"], d["column"], d["message"], d["hint"]) for f in document["files"] for d in f["diagnostics"]]
+
+
+def test_a_passive_joint_written_inside_a_group_is_said_to_belong_in_robot(tmp_path):
+    """franka_ros2's srdf/hand.xacro writes <passive_joint> inside <group>: srdfdom reads passive
+    joints only in <robot>, so MoveIt plans for the finger joint as if it were driven. lint says
+    so, at the element; check (a drop-in for what MoveIt rejects) says nothing."""
+    srdf = ('<robot name="hand">\n  <group name="hand">\n    <link name="hand"/>\n    <joint name="finger_joint1"/>\n'
+            '    <passive_joint name="finger_joint2"/>\n  </group>\n</robot>\n')
+    code, found_here = lint_srdf(tmp_path, srdf)
+    assert code == 1 and found_here == [
+        ("K009", "warning", 5, 5, "<passive_joint> is not read inside <group>; MoveIt ignores it", "<passive_joint> belongs directly in <robot>"),
+    ]
+    assert run_cli("check", "hand.srdf", "--urdf", "hand.urdf", cwd=tmp_path).returncode == 0
+    code, found_here = lint_srdf(tmp_path, srdf.replace("    <passive_joint name=\"finger_joint2\"/>\n  </group>\n", "  </group>\n  <passive_joint name=\"finger_joint2\"/>\n"))
+    assert (code, found_here) == (0, [])
+
+
+def test_a_misspelt_srdf_element_or_attribute_is_a_warning_naming_the_one_meant(tmp_path):
+    srdf = ('<robot name="hand">\n  <group name="hand"><linkk name="left"/><joint name="finger_joint1"/></group>\n'
+            '  <disable_colisions link1="left" link2="right" reason="Never"/>\n'
+            '  <end_effector name="eef" group="hand" parent_link="hand" parent_grup="arm"/>\n'
+            '  <group name="fingers"><chain base_link="hand" tip_link="left"/></group>\n  <chain base_link="hand" tip_link="right"/>\n</robot>\n')
+    code, found_here = lint_srdf(tmp_path, srdf)
+    assert code == 1 and found_here == [
+        ("K009", "warning", 2, 22, "<linkk> is not read inside <group>; MoveIt ignores it", "did you mean <link>?"),
+        ("K009", "warning", 3, 3, "<disable_colisions> is not read inside <robot>; MoveIt ignores it", "did you mean <disable_collisions>?"),
+        ("K009", "warning", 4, 60, "<end_effector> has no attribute 'parent_grup'; MoveIt ignores it", "did you mean 'parent_group'?"),
+        ("K009", "warning", 6, 3, "<chain> is not read inside <robot>; MoveIt ignores it", "<chain> belongs in <group>"),
+    ]
+
+
+def test_markup_of_another_reader_is_a_note_and_known_extensions_draw_nothing(tmp_path):
+    """<foo> may be some other tool's: a note (info), as unknown URDF markup is (D010). Pinocchio's
+    <rotor_params>, Tesseract's <group_tcps> and version, and xacro's namespace draw nothing; a
+    subgroup's <group> holds nothing srdfdom reads."""
+    srdf = ('<robot name="hand" version="1.0.0" xmlns:xacro="http://www.ros.org/wiki/xacro">\n'
+            '  <group name="hand"><joint name="finger_joint1"/></group>\n'
+            '  <group name="all"><group name="hand"><link name="right"/></group></group>\n'
+            '  <rotor_params><joint name="finger_joint1" mass="0.1" gear_ratio="10"/></rotor_params>\n'
+            '  <group_tcps group="hand"><tcp name="tip" xyz="0 0 0.1" wxyz="1 0 0 0"/></group_tcps>\n'
+            '  <foo/>\n  <end_effector name="eef" group="hand" parent_link="hand" color="red"/>\n</robot>\n')
+    code, found_here = lint_srdf(tmp_path, srdf)
+    assert code == 1 and found_here == [
+        ("K009", "warning", 3, 40, "<link> is not read inside <group> in <group>; MoveIt ignores it",
+         "<link> belongs in <group>; a <group> inside a group only names a subgroup"),
+        ("K009", "info", 6, 3, "<foo> is not read inside <robot>; MoveIt ignores it",
+         "<robot> may hold <disable_collisions>, <disable_default_collisions>, <enable_collisions>, <end_effector>, <group>, <group_state>, "
+         "<joint_property>, <link_sphere_approximation>, <passive_joint>, <virtual_joint>"),
+        ("K009", "info", 7, 60, "<end_effector> has no attribute 'color'; MoveIt ignores it", "<end_effector> takes group, name, parent_group, parent_link"),
+    ]
+
+
+def test_every_element_srdfdom_reads_draws_nothing(tmp_path):
+    srdf = """<robot name="hand">
+  <virtual_joint name="world_joint" type="fixed" parent_frame="world" child_link="hand"/>
+  <group name="fingers"><link name="left"/><joint name="finger_joint1"/><chain base_link="hand" tip_link="right"/></group>
+  <group name="hand"><group name="fingers"/></group>
+  <group_state name="open" group="fingers"><joint name="finger_joint1" value="0.04"/></group_state>
+  <end_effector name="eef" group="fingers" parent_link="hand" parent_group="hand"/>
+  <passive_joint name="finger_joint2"/>
+  <disable_collisions link1="left" link2="right" reason="Never"/>
+  <enable_collisions link1="left" link2="hand" reason="Default"/>
+  <disable_default_collisions link="right"/>
+  <link_sphere_approximation link="left"><sphere center="0 0 0" radius="0.01"/></link_sphere_approximation>
+  <joint_property joint_name="finger_joint1" property_name="motion_model" value="holonomic"/>
+</robot>
+"""
+    assert lint_srdf(tmp_path, srdf) == (0, [])

@@ -7,6 +7,9 @@ virtual joints, passive joints and the link pairs whose collisions are not
 checked (``<disable_collisions>``). It defines no link of its own. A file is
 read as one when its name ends in ``.srdf`` or ``.srdf.xacro``, or when its
 root holds SRDF elements and no ``<link>`` (a xacro file expanding to one).
+What srdfdom, MoveIt's SRDF reader, does not read where it is written (a
+misspelt element, one of its elements in the wrong place, an unknown
+attribute) is kept too, for the rule that reports it (:data:`SCHEMA`).
 
 Each element is kept with its index in document order (the root is 0), so that
 a diagnostic is located where it was written, through xacro includes and macros
@@ -18,11 +21,47 @@ from __future__ import annotations
 from typing import NamedTuple
 
 from ..read.document import Document, tag_name
+from ..read.names import typo_of
 from ..read.xml import Element, parse
+from .vocabulary import Unknown, is_foreign
 
 SRDF_SUFFIXES = (".srdf", ".srdf.xacro")
 # The elements only an SRDF writes at the top level (a URDF has none of them)
 SRDF_TAGS = frozenset(("group", "group_state", "end_effector", "virtual_joint", "passive_joint", "disable_collisions", "disable_default_collisions", "enable_collisions"))
+
+# What srdfdom (MoveIt's SRDF reader) reads, and where: a place (the tag of an element
+# written in <robot>, "parent/tag" of one written inside such an element) -> (its
+# attributes, its child elements). srdfdom skips everything else without a word; a
+# <group> inside a group names a subgroup, and nothing written in it is read.
+SCHEMA: dict[str, tuple[frozenset[str], frozenset[str]]] = {
+    place: (frozenset(attributes), frozenset(children)) for place, attributes, children in (
+        ("robot", ("name",), ("group", "group_state", "end_effector", "virtual_joint", "passive_joint", "disable_collisions",
+                              "enable_collisions", "disable_default_collisions", "link_sphere_approximation", "joint_property")),
+        ("group", ("name",), ("link", "joint", "chain", "group")),
+        ("group/link", ("name",), ()),
+        ("group/joint", ("name",), ()),
+        ("group/chain", ("base_link", "tip_link"), ()),
+        ("group/group", ("name",), ()),
+        ("group_state", ("name", "group"), ("joint",)),
+        ("group_state/joint", ("name", "value"), ()),
+        ("end_effector", ("name", "group", "parent_link", "parent_group"), ()),
+        ("virtual_joint", ("name", "type", "parent_frame", "child_link"), ()),
+        ("passive_joint", ("name",), ()),
+        ("disable_collisions", ("link1", "link2", "reason"), ()),
+        ("enable_collisions", ("link1", "link2", "reason"), ()),
+        ("disable_default_collisions", ("link",), ()),
+        ("link_sphere_approximation", ("link",), ("sphere",)),
+        ("link_sphere_approximation/sphere", ("center", "radius"), ()),
+        ("joint_property", ("joint_name", "property_name", "value"), ()),
+    )
+}
+# Other readers' documented extensions of an SRDF, in <robot>: never reported, never looked into.
+EXTENSIONS = {
+    "rotor_params": "Pinocchio's rotor inertias and gear ratios",
+    **dict.fromkeys(("group_tcps", "group_opw", "group_rop", "group_rep", "kinematics_plugin_config", "contact_managers_plugin_config",
+                     "calibration_config", "collision_margins"), "Tesseract's SRDF"),
+}
+EXTENSION_ATTRIBUTES = {"robot": {"version": "Tesseract's SRDF version"}}
 
 
 def named_srdf(path: str) -> bool:
@@ -36,6 +75,39 @@ def looks_semantic(root: Element) -> bool:
         return False
     tags = {child.tag for child in root}
     return bool(tags & SRDF_TAGS) and "link" not in tags
+
+
+def places_of(tag: str) -> list[str]:
+    """The places where srdfdom reads an element ``tag`` (see :data:`SCHEMA`)."""
+    return [place for place, (_, children) in SCHEMA.items() if tag in children]
+
+
+def unknown_markup(root: Element, index: dict[Element, int]) -> list[Unknown]:
+    """What srdfdom does not read where it is written, in document order: an element
+    (misspelt, or one of its elements in the wrong place) or an attribute. Each
+    ``Unknown``'s ``parent`` is the place (of :data:`SCHEMA`) it is written in, or on."""
+    found: list[Unknown] = []
+
+    def attributes(element: Element, place: str) -> None:
+        known = SCHEMA[place][0] | EXTENSION_ATTRIBUTES.get(place, {}).keys()
+        written = [name for name in element.keys() if not is_foreign(name)]
+        found.extend(Unknown(index[element], place, name, True, typo_of(name, known - set(written)), holder=index[element])
+                     for name in written if name not in known)
+
+    def walk(element: Element, place: str) -> None:
+        attributes(element, place)
+        children = SCHEMA[place][1]
+        for child in element:
+            tag = tag_name(child)
+            inner = tag if place == "robot" else f"{place}/{tag}"
+            if tag in children:
+                walk(child, inner)
+            elif not is_foreign(tag) and not (place == "robot" and tag in EXTENSIONS):
+                meant = None if places_of(tag) else typo_of(tag, children)
+                found.append(Unknown(index[child], place, tag, False, meant, holder=index[element]))
+
+    walk(root, "robot")
+    return found
 
 
 class Named(NamedTuple):
@@ -96,6 +168,7 @@ class Semantic(NamedTuple):
     virtual_joints: tuple[VirtualJoint, ...]
     passive_joints: tuple[Named, ...]
     disabled: tuple[tuple[Named, Named], ...]  # link pairs whose collisions are not checked
+    unknown: tuple[Unknown, ...] = ()  # what srdfdom does not read (see unknown_markup)
 
     @property
     def group_names(self) -> set[str]:
@@ -171,7 +244,8 @@ def read_semantic(document: Document, root: Element | None = None) -> Semantic:
             first, second = named(element, "link1"), named(element, "link2")
             if first and second:
                 disabled.append((first, second))
-    return Semantic(root.get("name"), 0, tuple(groups), tuple(states), tuple(effectors), tuple(virtuals), tuple(passive), tuple(disabled))
+    unknown = tuple(unknown_markup(root, index))
+    return Semantic(root.get("name"), 0, tuple(groups), tuple(states), tuple(effectors), tuple(virtuals), tuple(passive), tuple(disabled), unknown)
 
 
-__all__ = ["SRDF_SUFFIXES", "SRDF_TAGS", "Chain", "EndEffector", "Group", "Named", "Semantic", "State", "VirtualJoint", "looks_semantic", "named_srdf", "read_semantic"]
+__all__ = ["EXTENSIONS", "SCHEMA", "SRDF_SUFFIXES", "SRDF_TAGS", "Chain", "EndEffector", "Group", "Named", "Semantic", "State", "VirtualJoint", "looks_semantic", "named_srdf", "places_of", "read_semantic", "unknown_markup"]

@@ -111,7 +111,7 @@ class Unknown(NamedTuple):
     owner: str | None = None  # the link or joint it is written in, if any
 
 
-def _is_foreign(name: str) -> bool:
+def is_foreign(name: str) -> bool:
     """Namespaced names (``xacro:``, ``drake:``, ``{uri}``) belong to other formats."""
     return ":" in name or name.startswith("{")
 
@@ -129,7 +129,7 @@ def unknown_attributes(element: Element, at: int, tag: str | None = None) -> Ite
     if known.issuperset(names):
         return  # the common case, decided in one step
     for name in names:
-        if name not in known and not _is_foreign(name):
+        if name not in known and not is_foreign(name):
             meant = typo_of(name, known - set(names)) or (mistyped_moment(name, element.get) if tag == "inertia" else None)
             yield Unknown(at, tag, name, True, meant)
 
@@ -165,7 +165,7 @@ def unknown_markup(top: Element, positions: Mapping[Element, int]) -> list[Unkno
     index = positions.__getitem__
     name = tag_name(top)
     if name not in KNOWN_CHILDREN["robot"]:
-        if not _is_foreign(name):
+        if not is_foreign(name):
             gazebo = name in GAZEBO_TAGS or _gazebo_material(top)
             return [Unknown(index(top), "robot", name, False, None if gazebo else typo_of(name, KNOWN_CHILDREN["robot"]), gazebo)]
         return []
@@ -189,7 +189,7 @@ def unknown_markup(top: Element, positions: Mapping[Element, int]) -> list[Unkno
                 found.extend(unknown_attributes(element, index(element), name))
             if name in KNOWN_CHILDREN:
                 walked[element] = name
-        elif name not in KNOWN_CHILDREN[tag] and not _is_foreign(name):
+        elif name not in KNOWN_CHILDREN[tag] and not is_foreign(name):
             if name in GAZEBO_TAGS or _gazebo_material(element):
                 found.append(Unknown(index(element), tag, name, False, gazebo=True, holder=index(parent), owner=owner))
             else:

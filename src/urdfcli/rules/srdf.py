@@ -1,5 +1,6 @@
 """The SRDF against its URDF (K001-K008): every name it gives must exist there,
-each chain must run down the tree, each named state must lie within the limits.
+each chain must run down the tree, each named state must lie within the limits;
+and what MoveIt's SRDF reader does not read (K009).
 
 These rules run on an SRDF (``loaded.semantic``) checked against the URDF of
 the same robot (``loaded.described``, found in its package or workspace, or
@@ -18,7 +19,8 @@ from typing import TYPE_CHECKING
 
 from ..diagnostics import Diagnostic
 from ..model.kinematics import bodies
-from .base import ERROR, INFO, WARNING, Given, Kind, check, declare, explain, joined, names
+from ..model.srdf import SCHEMA, places_of
+from .base import ERROR, INFO, WARNING, Given, Kind, RuleSet, check, declare, explain, joined, names
 from .suggestions import close_matches
 
 if TYPE_CHECKING:
@@ -469,5 +471,61 @@ K008 = declare(
     ),
     kind=Kind.READING,
 )
+
+@check(
+    "K009", "srdf-unknown-markup", WARNING, "An SRDF element or attribute MoveIt does not read where it is written",
+    kind=Kind.SEMANTIC, rule_set=RuleSet.LINT,
+    doc=explain(
+        """
+        Flags an element of an SRDF that MoveIt's SRDF reader (srdfdom) does not
+        read where it is written: a misspelt one (`<linkk>` in a `<group>`, with
+        the element meant), or one of its elements in the wrong place (a
+        `<passive_joint>` inside a `<group>`, a `<chain>` outside one, anything
+        inside a subgroup's `<group>`, which only names the subgroup), with where
+        it belongs; and an attribute it does not read (`<chain tip="...">`, with
+        the attribute meant when it is one or two letters away). Other unknown
+        markup, neither misspelt nor misplaced, is only noted (info): it may be
+        meant for another reader. Pinocchio's `<rotor_params>` and Tesseract's
+        extensions (`<group_tcps>`, `<kinematics_plugin_config>`,
+        `<collision_margins>`, ..., `<robot version>`) draw nothing, nor does
+        anything prefixed (`xacro:`).
+        """,
+        """
+        srdfdom skips what it does not know without a word: the misspelt link is
+        not in the group, the joint of a `<passive_joint>` written in a group is
+        planned for as if it were driven (franka_ros2's hand SRDF did this), the
+        chain written outside a group belongs to no group.
+        """,
+        '<robot name="example">\n  <group name="arm">\n    <chain base_link="base_link" tip_link="tool0"/>\n    <passive_joint name="tool_joint"/>\n  </group>\n</robot>',
+        '<robot name="example">\n  <group name="arm">\n    <chain base_link="base_link" tip_link="tool0"/>\n  </group>\n  <passive_joint name="tool_joint"/>\n</robot>',
+    ),
+)
+def unknown_markup(loaded: Loaded, given: Given) -> Iterator[Diagnostic]:
+    for unknown in loaded.semantic.unknown:
+        where, name = _shown(unknown.parent), unknown.name
+        if unknown.attribute:
+            hint = f"did you mean '{unknown.typo_of}'?" if unknown.typo_of else f"{where} takes {', '.join(sorted(SCHEMA[unknown.parent][0]))}"
+            diagnostic = loaded.diagnostic("K009", f"{where} has no attribute '{name}'; MoveIt ignores it", unknown.at, hint, attribute=name)
+            misplaced = False
+        else:
+            places = places_of(name)
+            misplaced = bool(places)
+            if misplaced:
+                hint = f"<{name}> belongs " + " or ".join("directly in <robot>" if p == "robot" else f"in {_shown(p)}" for p in places)
+                hint += "; a <group> inside a group only names a subgroup" if unknown.parent == "group/group" else ""
+            elif unknown.typo_of:
+                hint = f"did you mean <{unknown.typo_of}>?"
+            else:
+                held = SCHEMA[unknown.parent][1]
+                hint = f"{where} may hold " + ", ".join(f"<{c}>" for c in sorted(held)) if held else f"{where} holds no elements"
+            diagnostic = loaded.diagnostic("K009", f"<{name}> is not read inside {where}; MoveIt ignores it", unknown.at, hint)
+        yield diagnostic if unknown.typo_of or misplaced else diagnostic._replace(severity=INFO)  # neither: maybe another reader's
+
+
+def _shown(place: str) -> str:
+    """A place of srdfdom's vocabulary as a reader says it: ``<joint> in <group_state>``."""
+    *outer, tag = place.split("/")
+    return f"<{tag}>" + (f" in <{outer[0]}>" if outer else "")
+
 
 __all__ = ["URDF"]
