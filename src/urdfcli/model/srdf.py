@@ -58,6 +58,8 @@ SCHEMA: dict[str, tuple[frozenset[str], frozenset[str]]] = {
 # Other readers' documented extensions of an SRDF, in <robot>: never reported, never looked into.
 EXTENSIONS = {
     "rotor_params": "Pinocchio's rotor inertias and gear ratios",
+    **dict.fromkeys(("gripper", "handle", "contact"), "HPP's manipulation frames (hpp-manipulation-urdf)"),
+    "specificities": "the humanoid specificities (feet, hands) JRL's and HPP's tools read",
     **dict.fromkeys(("group_tcps", "group_opw", "group_rop", "group_rep", "kinematics_plugin_config", "contact_managers_plugin_config",
                      "calibration_config", "collision_margins"), "Tesseract's SRDF"),
 }

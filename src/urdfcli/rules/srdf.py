@@ -485,10 +485,11 @@ K008 = declare(
         it belongs; and an attribute it does not read (`<chain tip="...">`, with
         the attribute meant when it is one or two letters away). Other unknown
         markup, neither misspelt nor misplaced, is only noted (info): it may be
-        meant for another reader. Pinocchio's `<rotor_params>` and Tesseract's
-        extensions (`<group_tcps>`, `<kinematics_plugin_config>`,
-        `<collision_margins>`, ..., `<robot version>`) draw nothing, nor does
-        anything prefixed (`xacro:`).
+        meant for another reader. Pinocchio's `<rotor_params>`, HPP's
+        `<gripper>`, `<handle>` and `<contact>`, the humanoid `<specificities>`
+        of example-robot-data's SRDFs and Tesseract's extensions (`<group_tcps>`,
+        `<kinematics_plugin_config>`, `<collision_margins>`, ..., `<robot version>`)
+        draw nothing, nor does anything prefixed (`xacro:`).
         """,
         """
         srdfdom skips what it does not know without a word: the misspelt link is
