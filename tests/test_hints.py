@@ -31,13 +31,18 @@ def test_non_unit_axis_hint_gives_the_normalised_axis(tmp_path):
     assert found["hint"] == 'normalised: <axis xyz="0.707107 0.707107 0"/>'
 
 
+def missing_link_hints(path: Path) -> dict[str, str]:
+    """Each missing link J005 names -> its hint."""
+    return {d["message"].split("'")[1]: d["hint"] for d in diagnostics("check", str(path)) if d["code"] == "J005"}
+
+
 def test_missing_link_hint_names_the_closest_links(tmp_path):
     path = tmp_path / "r.urdf"
     path.write_text('<robot name="r"><link name="base_link"/><link name="left_wheel"/><link name="right_wheel"/>'
                     '<joint name="j" type="fixed"><parent link="base_lnk"/><child link="left_wheel"/></joint>'
                     '<joint name="k" type="fixed"><parent link="base_link"/><child link="rigth_wheel"/></joint>'
                     '<joint name="m" type="fixed"><parent link="base_link"/><child link="zzz"/></joint></robot>')
-    hints = {d["message"].split("'")[1]: d["hint"] for d in diagnostics("check", str(path)) if d["code"] == "J005"}
+    hints = missing_link_hints(path)
     assert hints["base_lnk"] == "did you mean 'base_link'?"
     assert hints["rigth_wheel"].startswith("did you mean 'right_wheel'")
     assert hints["zzz"] == 'every link a joint names must be defined: add <link name="zzz"/> or fix the name'
@@ -45,7 +50,7 @@ def test_missing_link_hint_names_the_closest_links(tmp_path):
     path.write_text('<robot name="r"><link name="base"/><link name="wrist_1_link"/><link name="wrist_2_link"/>'
                     '<joint name="j" type="fixed"><parent link="base"/><child link="wrist_2_link"/></joint>'
                     '<joint name="k" type="fixed"><parent link="wrist_1_lnk"/><child link="wrist_2_link"/></joint></robot>')
-    hints = {d["message"].split("'")[1]: d["hint"] for d in diagnostics("check", str(path)) if d["code"] == "J005"}
+    hints = missing_link_hints(path)
     assert hints["wrist_1_lnk"] == "did you mean 'wrist_1_link'?"
 
 
@@ -59,16 +64,16 @@ def test_missing_link_hint_names_no_link_that_would_close_a_loop_or_give_two_par
                     '<joint name="joint8" type="fixed"><parent link="link7"/><child link="link8"/></joint>'
                     '<joint name="fr3_hand_joint" type="fixed"><parent link="fr3_link8"/><child link="fr3_hand"/></joint>'
                     '<joint name="fr3_finger_joint1" type="fixed"><parent link="fr3_hand"/><child link="fr3_leftfinger"/></joint></robot>')
-    hints = {d["message"].split("'")[1]: d["hint"] for d in diagnostics("check", str(path)) if d["code"] == "J005"}
+    hints = missing_link_hints(path)
     assert hints["fr3_link8"] == 'every link a joint names must be defined: add <link name="fr3_link8"/> or fix the name'
     path.write_text('<robot name="r"><link name="base_link"/><link name="arm_link"/><link name="arm_link_2"/><link name="tool_link"/>'
                     '<joint name="a" type="fixed"><parent link="base_link"/><child link="arm_link"/></joint>'
                     '<joint name="b" type="fixed"><parent link="arm_link"/><child link="arm_lnk_2"/></joint>'
                     '<joint name="c" type="fixed"><parent link="base_link"/><child link="tool_link"/></joint></robot>')
-    hints = {d["message"].split("'")[1]: d["hint"] for d in diagnostics("check", str(path)) if d["code"] == "J005"}
+    hints = missing_link_hints(path)
     assert hints["arm_lnk_2"] == "did you mean 'arm_link_2'?"  # a root of its own: no loop, one parent
     path.write_text(path.read_text().replace('<child link="arm_lnk_2"/>', '<child link="bse_link"/>'))
-    hints = {d["message"].split("'")[1]: d["hint"] for d in diagnostics("check", str(path)) if d["code"] == "J005"}
+    hints = missing_link_hints(path)
     assert not hints["bse_link"].startswith("did you mean"), hints  # base_link is above arm_link: a loop
 
 

@@ -334,16 +334,20 @@ def test_of_the_urdfs_that_may_be_its_robot_the_one_its_names_fit_is_chosen(tmp_
     assert "checked against robot_data/robots/quad_description/robots/quad12.urdf\n" in text
 
 
+ARM_WITH_HAND = (  # the hand only with hand:=true, as franka's panda_arm.urdf.xacro
+    '<robot name="panda" xmlns:xacro="http://www.ros.org/wiki/xacro">\n  <xacro:arg name="hand" default="false"/>\n'
+    '  <link name="panda_link0"/><link name="panda_link8"/>\n'
+    '  <joint name="panda_joint1" type="revolute"><parent link="panda_link0"/><child link="panda_link8"/>'
+    '<limit lower="-1" upper="1" effort="1" velocity="1"/></joint>\n'
+    '  <xacro:if value="$(arg hand)"><link name="panda_hand"/>'
+    '<joint name="panda_hand_joint" type="fixed"><parent link="panda_link8"/><child link="panda_hand"/></joint></xacro:if>\n</robot>\n'
+)
+
+
 def test_the_command_lines_xacro_arguments_are_the_urdfs(tmp_path):
     """check panda.srdf --urdf panda_arm.urdf.xacro hand:=true: the hand's links exist only
     with hand:=true; the argument given is the URDF's, not dropped (25 false K001 and K002)."""
-    (tmp_path / "arm.urdf.xacro").write_text(
-        '<robot name="panda" xmlns:xacro="http://www.ros.org/wiki/xacro">\n  <xacro:arg name="hand" default="false"/>\n'
-        '  <link name="panda_link0"/><link name="panda_link8"/>\n'
-        '  <joint name="panda_joint1" type="revolute"><parent link="panda_link0"/><child link="panda_link8"/>'
-        '<limit lower="-1" upper="1" effort="1" velocity="1"/></joint>\n'
-        '  <xacro:if value="$(arg hand)"><link name="panda_hand"/>'
-        '<joint name="panda_hand_joint" type="fixed"><parent link="panda_link8"/><child link="panda_hand"/></joint></xacro:if>\n</robot>\n')
+    (tmp_path / "arm.urdf.xacro").write_text(ARM_WITH_HAND)
     (tmp_path / "panda.srdf").write_text('<robot name="panda">\n  <group name="hand"><link name="panda_hand"/></group>\n</robot>\n')
     done, document = check("panda.srdf", "--urdf", "arm.urdf.xacro", "hand:=true", cwd=tmp_path)
     assert done.returncode == 0 and found(document) == [], document
@@ -356,13 +360,7 @@ def test_the_srdfs_own_argument_defaults_are_the_urdfs(tmp_path):
     panda_arm.urdf.xacro declares hand too (default false). Its launch file passes hand:=true to
     both: the SRDF's default is the URDF's argument (6 false K001 and K002). An argument given on
     the command line or in the configuration still wins."""
-    (tmp_path / "arm.urdf.xacro").write_text(
-        '<robot name="panda" xmlns:xacro="http://www.ros.org/wiki/xacro">\n  <xacro:arg name="hand" default="false"/>\n'
-        '  <link name="panda_link0"/><link name="panda_link8"/>\n'
-        '  <joint name="panda_joint1" type="revolute"><parent link="panda_link0"/><child link="panda_link8"/>'
-        '<limit lower="-1" upper="1" effort="1" velocity="1"/></joint>\n'
-        '  <xacro:if value="$(arg hand)"><link name="panda_hand"/>'
-        '<joint name="panda_hand_joint" type="fixed"><parent link="panda_link8"/><child link="panda_hand"/></joint></xacro:if>\n</robot>\n')
+    (tmp_path / "arm.urdf.xacro").write_text(ARM_WITH_HAND)
     (tmp_path / "panda.srdf.xacro").write_text(
         '<robot name="panda" xmlns:xacro="http://www.ros.org/wiki/xacro">\n  <xacro:arg name="hand" default="true"/>\n'
         '  <group name="arm"><chain base_link="panda_link0" tip_link="panda_link8"/></group>\n'
