@@ -251,8 +251,7 @@ def described(
 def _unread_hint(unread: list[Loaded | str]) -> str:
     """What to do when no URDF of the robot could be read: give the packages they need when that is
     all that stopped them (TALOS's calibration package), else name the arguments or the URDF."""
-    missing = [d for found in unread if not isinstance(found, str) for d in found.diagnostics if d.code == "X004"]
-    if missing and len(missing) == len(unread):
+    if unread and all(not isinstance(found, str) and any(d.code == "X004" for d in found.diagnostics) for found in unread):
         return "build and source the workspace that has the package, or give its folder with -P NAME=DIR (package-paths in [tool.urdfcli])"
     return "list its xacro arguments in [tool.urdfcli] models, or give --urdf FILE"
 
