@@ -874,6 +874,21 @@ def test_the_published_srdfs_draw_no_k009():
     document = json.loads(done.stdout)
     assert [d for f in document["files"] for d in f["diagnostics"]] == []
 
+def test_a_group_state_joint_without_its_value_is_one_finding_in_check_and_lint(tmp_path):
+    """srdfdom skips a state's joint without a value. A misspelt value is one cause: K005 (which
+    check runs) says the joint has none and names the attribute written, K009 says nothing more."""
+    srdf = ('<robot name="hand">\n  <group name="hand"><joint name="finger_joint1"/></group>\n'
+            '  <group_state name="open" group="hand"><joint name="finger_joint1" valeu="0.04"/></group_state>\n'
+            '  <group_state name="closed" group="hand"><joint name="finger_joint1"/></group_state>\n</robot>\n')
+    expected = [
+        ("K005", "warning", 3, 69, "group state 'open' gives joint 'finger_joint1' no value; MoveIt skips the joint",
+         "did you mean value=\"...\"? 'valeu' is no attribute of it"),
+        ("K005", "warning", 4, 43, "group state 'closed' gives joint 'finger_joint1' no value; MoveIt skips the joint", "give its value: value=\"...\""),
+    ]
+    assert lint_srdf(tmp_path, srdf) == (1, expected)
+    done, document = check("hand.srdf", "--urdf", "hand.urdf", cwd=tmp_path)
+    assert [(d["code"], d["line"], d["message"]) for d in document["files"][0]["diagnostics"]] == [e[:1] + e[2:3] + e[4:5] for e in expected]
+
 def test_every_element_srdfdom_reads_draws_nothing(tmp_path):
     srdf = """<robot name="hand">
   <virtual_joint name="world_joint" type="fixed" parent_frame="world" child_link="hand"/>

@@ -288,8 +288,9 @@ def _ancestors(link: str, parents: dict[str, str]) -> list[str]:
     doc=explain(
         """
         Finds each value of a `<group_state>` outside the limits its joint has in
-        the URDF (a revolute or prismatic joint's `lower` and `upper`), and each
-        value that is not a number.
+        the URDF (a revolute or prismatic joint's `lower` and `upper`), each
+        value that is not a number, and each joint given no value (with the
+        attribute meant, when `value` is misspelt: K009 leaves that one to it).
         """,
         """
         MoveIt loads the state, but the robot cannot reach it: a plan to it is
@@ -306,11 +307,18 @@ def state_outside_limits(loaded: Loaded, given: Given) -> Iterator[Diagnostic]:
     robot = _against(loaded)
     if robot is None:
         return
+    misspelt = {unknown.at: unknown.name for unknown in loaded.semantic.unknown if _misspelt_value(unknown)}
     for state in loaded.semantic.states:
         for joint_name, text in state.values:
             joint = robot.joints.get(joint_name.name)
             if joint is None or joint.type not in ("revolute", "prismatic", "continuous"):
                 continue  # an unknown joint is K002's; a planar or floating joint takes several values
+            if not text:
+                written = misspelt.get(joint_name.at)
+                hint = f"did you mean value=\"...\"? '{written}' is no attribute of it" if written else "give its value: value=\"...\""
+                yield loaded.diagnostic("K005", f"group state '{state.name}' gives joint '{joint.name}' no value; MoveIt skips the joint", joint_name.at,
+                                        hint, attribute=written, subjects=(joint.name,))
+                continue
             try:
                 value = float(text)
             except ValueError:
@@ -483,7 +491,8 @@ K008 = declare(
         `<passive_joint>` inside a `<group>`, a `<chain>` outside one, anything
         inside a subgroup's `<group>`, which only names the subgroup), with where
         it belongs; and an attribute it does not read (`<chain tip="...">`, with
-        the attribute meant when it is one or two letters away). Other unknown
+        the attribute meant when it is one or two letters away; a group state's
+        misspelt `value` is K005's, which `check` reports too). Other unknown
         markup, neither misspelt nor misplaced, is only noted (info): it may be
         meant for another reader. Pinocchio's `<rotor_params>`, HPP's
         `<gripper>`, `<handle>` and `<contact>`, the humanoid `<specificities>`
@@ -503,6 +512,8 @@ K008 = declare(
 )
 def unknown_markup(loaded: Loaded, given: Given) -> Iterator[Diagnostic]:
     for unknown in loaded.semantic.unknown:
+        if _misspelt_value(unknown):
+            continue  # K005: the joint has no value, which check says too
         where, name = _shown(unknown.parent), unknown.name
         if unknown.attribute:
             hint = f"did you mean '{unknown.typo_of}'?" if unknown.typo_of else f"{where} takes {', '.join(sorted(SCHEMA[unknown.parent][0]))}"
@@ -521,6 +532,11 @@ def unknown_markup(loaded: Loaded, given: Given) -> Iterator[Diagnostic]:
                 hint = f"{where} may hold " + ", ".join(f"<{c}>" for c in sorted(held)) if held else f"{where} holds no elements"
             diagnostic = loaded.diagnostic("K009", f"<{name}> is not read inside {where}; MoveIt ignores it", unknown.at, hint)
         yield diagnostic if unknown.typo_of or misplaced else diagnostic._replace(severity=INFO)  # neither: maybe another reader's
+
+
+def _misspelt_value(unknown) -> bool:
+    """A group state's joint whose ``value`` is misspelt (so it has none)."""
+    return unknown.attribute and unknown.parent == "group_state/joint" and unknown.typo_of == "value"
 
 
 def _shown(place: str) -> str:
