@@ -30,7 +30,7 @@ from typing import BinaryIO
 
 OPEN_DOCUMENTS = "urdfcli/openDocuments"  # the server's own request: its open documents, as didOpen gives them
 LET_GO = 64 * 1024  # KiB: a server whose peak was this much above what it holds now is replaced
-SETTLE = 1.0  # seconds after the client's last didClose before the server's memory is looked at
+SETTLE = (1.0, 3.0, 10.0)  # seconds after the client's last didClose when the server's memory is looked at, until it let go
 STARTING = 60.0  # seconds a new server may take to answer initialize
 ANSWERING = 5.0  # seconds a server may take to answer the supervisor, and a replaced one the client
 OWN = "urdfcli-supervisor-"  # the ids of the supervisor's own requests
@@ -217,21 +217,29 @@ class Supervisor:
         return waiting[1]
 
     # -- replacing the server ----------------------------------------------------------
-    def _settle(self) -> None:
-        """Look at the server's memory :data:`SETTLE` seconds after the last didClose."""
+    def _settle(self, after: int = 0) -> None:
+        """Look at the server's memory at each of :data:`SETTLE` after the last didClose,
+        until it has let go (a busy machine's server may still be finishing the close at
+        the first look)."""
         if self._timer is not None:
             self._timer.cancel()
-        self._timer = threading.Timer(SETTLE, self._replace_if_let_go)
+        if after >= len(SETTLE):
+            return
+        self._timer = threading.Timer(SETTLE[after] - (SETTLE[after - 1] if after else 0.0), self._replace_if_let_go, (after,))
         self._timer.daemon = True
         self._timer.start()
 
-    def _replace_if_let_go(self) -> None:
+    def _replace_if_let_go(self, after: int = 0) -> None:
         if not self.replacing.acquire(blocking=False):
             return
         try:
             old = self.server
-            if self.initialize is not None and not self.shut_down and not self.client_gone and old.let_go():
+            if self.initialize is None or self.shut_down or self.client_gone:
+                return
+            if old.let_go():
                 self._replace(old)
+            else:
+                self._settle(after + 1)
         finally:
             self.replacing.release()
 
