@@ -402,26 +402,25 @@ class Index:
 
         return sorted(f for f in files if self.kind(f) == "model" and not included(f))
 
-    def reaches(self, model: Path, library: Path, arguments: dict[str, str] | None = None) -> bool:
-        """Whether expanding ``model`` may read ``library``, through any chain of includes:
-        through includes that resolve to it, or whose computed file name may be it."""
+    def reaches(self, model: Path, file: Path, arguments: dict[str, str] | None = None) -> bool:
+        """Whether a run of ``model`` may read ``file``: a description through any chain of
+        includes (that resolve to it, or whose computed file name may be it); any other file
+        (a mesh, the YAML of ``load_yaml``) when ``model`` or a file its includes may lead to
+        writes its name whole (see :meth:`_writes`)."""
         files, includes = self.reachable(model, arguments)
-        return library in files or any(include.may_be(library) for include in includes)
+        if file.name.endswith((".urdf", ".xacro")):
+            return file in files or any(include.may_be(file) for include in includes)
+        return any(self._writes(source, file.name) for source in (model, *files))
 
-    def names(self, model: Path, name: str, arguments: dict[str, str] | None = None) -> bool:
-        """Whether ``model``, or a file its includes may lead to, writes the file name ``name``
-        whole: a mesh's as ``package://pkg/meshes/base.stl`` or ``meshes/base.stl`` write it, a
-        YAML file's as ``$(find pkg)/config/joints.yaml`` does. A name computed from properties
-        (``${link}.stl``) is not found, and one of another folder is (the model is checked for nothing)."""
+    def _writes(self, source: Path, name: str) -> bool:
+        """Whether ``source`` writes the file name ``name`` whole: a mesh's as ``package://pkg/meshes/base.stl``
+        or ``meshes/base.stl`` do, a YAML file's as ``$(find pkg)/config/joints.yaml`` does. A name computed
+        from properties (``${link}.stl``) is not found, and one of another folder is (its model is checked for nothing)."""
         written = re.compile(rb"(?<![\w.-])" + re.escape(name.encode()) + rb"(?![\w.-])")
-        files, _ = self.reachable(model, arguments)
-        for file in (model, *files):
-            try:
-                if written.search(self.files.read(shown(file)).data):
-                    return True
-            except OSError:
-                continue
-        return False
+        try:
+            return written.search(self.files.read(shown(source)).data) is not None
+        except OSError:
+            return False
 
     def reachable(self, model: Path, arguments: dict[str, str] | None = None) -> tuple[set[Path], list[Include]]:
         """The files expanding ``model`` may read (under any condition), and every include
@@ -678,8 +677,8 @@ def plan(
     """What to run for the given files: each model once per argument set, each
     library through the models that may include it (none: on its own). A file
     ``deleted`` (by a change, which pre-commit does not pass) is found as a library is:
-    each model that may include it is run as if given (its include fails now); a deleted
-    mesh or YAML file, each model whose sources name it (see :meth:`Index.names`).
+    each model that may read it (see :meth:`Index.reaches`: a mesh or YAML file too) is run
+    as if given (its include, its mesh or its ``load_yaml`` fails now).
 
     ``config_for(path)`` gives the configuration of a file (for ``models`` and
     package paths). ``files`` are the session's (each file read once for this
@@ -714,8 +713,7 @@ def plan(
     for path in deleted:
         config = config_for(path)
         index = index or Index(config.package_paths + package_paths, packages, files)
-        find = _includers if path.endswith((".urdf", ".xacro")) else _naming
-        targets = find(Path(path).resolve(), index, config, config_for, packages, candidates_of)
+        targets = _includers(Path(path).resolve(), index, config, config_for, packages, candidates_of)
         for model in dict.fromkeys(target.path for target in targets):
             if Path(model).resolve() not in given:
                 given.add(Path(model).resolve())
@@ -764,16 +762,6 @@ def _includers(file: Path, index: Index, config, config_for, packages: PackageIn
     for model in _candidates(file, index, config, packages, candidates_of):
         sets = config_for(str(model)).argument_sets(str(model))
         if any(index.reaches(model, file, arguments) for arguments in (sets or [None])):
-            targets += model_targets(shown(model), sets)
-    return targets
-
-
-def _naming(file: Path, index: Index, config, config_for, packages: PackageIndex, candidates_of: dict) -> list[Target]:
-    """The runs of the models around ``file`` (a mesh, a YAML file) whose sources name it."""
-    targets: list[Target] = []
-    for model in _candidates(file, index, config, packages, candidates_of):
-        sets = config_for(str(model)).argument_sets(str(model))
-        if any(index.names(model, file.name, arguments) for arguments in (sets or [None])):
             targets += model_targets(shown(model), sets)
     return targets
 

@@ -10,6 +10,7 @@ the new robot's line (a removal at the closest element the new robot has).
 from __future__ import annotations
 
 import re
+from collections.abc import Callable
 from functools import partial
 from typing import Any, NamedTuple
 
@@ -100,14 +101,14 @@ def _token_text(token: str, digits: int) -> str:
         return token
 
 
-def values_text(old: Any, new: Any) -> tuple[str, str]:
-    """``old`` and ``new`` as :func:`value_text` writes them, with as many digits as tell them
-    apart (``0.3 -> 0.3000001`` at the default tolerance, more at a smaller one)."""
+def values_text(old: Any, new: Any, show: Callable[[Any, int], str] = value_text) -> tuple[str, str]:
+    """``old`` and ``new`` as ``show`` (:func:`value_text`) writes them to some digits, with as many
+    digits as tell them apart (``0.3 -> 0.3000001`` at the default tolerance, more at a smaller one)."""
     for digits in range(6, 18):
-        said = value_text(old, digits), value_text(new, digits)
+        said = show(old, digits), show(new, digits)
         if said[0] != said[1]:
             return said
-    return value_text(old), value_text(new)  # the same number: a change of something else
+    return show(old, 6), show(new, 6)  # the same number: a change of something else
 
 
 def percent(fraction: float) -> str:
@@ -161,12 +162,7 @@ def totals_texts(comparison: Comparison) -> tuple[str, str]:
 def masses_text(comparison: Comparison) -> tuple[str, str]:
     """The total masses, sums nobody wrote: to 6 significant digits, or as many more as tell
     them apart (17.4117 kg for Franka's links, 0.1 + 0.2 kg as 0.3 kg)."""
-    old, new = comparison.old.mass, comparison.new.mass
-    for digits in range(6, 16):
-        said = short(old, digits), short(new, digits)
-        if said[0] != said[1]:
-            return said
-    return short(old, 6), short(new, 6)
+    return values_text(comparison.old.mass, comparison.new.mass, short)
 
 
 def totals_text(totals: Totals, mass: str) -> str:

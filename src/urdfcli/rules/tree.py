@@ -28,9 +28,9 @@ def link_hint(missing: str, robot, other_end: str | None = None, role: str = "pa
     """What to do about a joint naming a missing link (its ``role``): the closest link names, if any,
     never one the joint cannot join to its other end (see :func:`unjoinable`)."""
     # difflib is quadratic in names: past a few thousand links the plain hint keeps a broken model fast
-    excluded = unjoinable(robot, other_end, role) if len(robot.links) <= 5000 else set()
-    candidates = [name for name in robot.links if name not in excluded] if len(robot.links) <= 5000 else []
-    close = close_matches(missing, candidates, n=3)
+    few = len(robot.links) <= 5000
+    excluded = unjoinable(robot, other_end, role) if few else set()
+    close = close_matches(missing, [name for name in robot.links if name not in excluded], n=3) if few else []
     if close:
         return f"did you mean {' or '.join(repr(name) for name in close)}?"
     return f'every link a joint names must be defined: add <link name="{missing}"/> or fix the name'
