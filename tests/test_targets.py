@@ -342,7 +342,7 @@ def test_each_fact_measured_on_real_robots_holds_with_the_consumers_own_message(
     assert found, (case, code, [(d.code, d.message) for d in target_diagnostics(predicted_for(text, str(cases[case])), chosen)])
 
 
-def test_every_plain_error_rule_has_a_case():
+def test_every_plain_error_rule_has_a_case(cases):
     """Which consumers load a model with a plain error is measured: each error rule on the
     model (not a consumer's, not the xacro sources', not one a model that reads at all cannot have)
     is found in one of the cases."""
@@ -351,21 +351,8 @@ def test_every_plain_error_rule_has_a_case():
 
     unreadable = {"X001", "X002", "X003", "X004", "R001"}  # the model is not read: nothing to load
     expected = {code for code, rule in REGISTRY.items() if rule.severity is Severity.ERROR and about_the_model(rule)} - unreadable
-    found = {d.code for name in CASES for d in lint_file_cached(name).diagnostics if d.severity is Severity.ERROR}
+    found = {d.code for name in CASES for d in lint_file(str(cases[name]), Config.everything()).diagnostics if d.severity is Severity.ERROR}
     assert expected - found == set(), expected - found
-
-
-@cache
-def lint_file_cached(case: str):
-    import tempfile
-
-    from target_cases import write_meshes
-
-
-    folder = Path(tempfile.mkdtemp(prefix="urdfcli-plain-"))
-    write_meshes(folder)
-    (folder / f"{case}.urdf").write_text(CASES[case])
-    return lint_file(str(folder / f"{case}.urdf"), Config.everything())
 
 
 def test_a_clean_model_draws_no_warning_for_the_elements_kept(cases):
@@ -668,6 +655,18 @@ def test_load_gives_drake_and_pybullet_the_packages_urdfcli_resolved(tmp_path):
     assert "package://my_arm" in model.read_text()
     lines = load_lines("-P", str(package.parent), "--target", "drake", "--target", "pybullet", str(model))
     assert not any(" C001 " in line or " C002 " in line for line in lines), lines
+
+
+def test_a_consumer_that_crashes_leaves_nothing_in_the_temporary_folder(cases, tmp_path):
+    """PyBullet segfaults on a joint loop while it loads, inside the folder of package
+    entries urdfcli made for it: that folder goes with the child's working folder, which
+    the parent removes."""
+    require_consumer("pybullet")
+    temporary = tmp_path / "tmp"
+    temporary.mkdir()
+    done = run_cli("check", "--format", "concise", "--load", "--target", "pybullet", str(cases["loop"]), env={"TMPDIR": str(temporary)})
+    assert "C001 error: PyBullet refuses the model: pybullet crashed" in done.stdout.decode(), done.stdout.decode()
+    assert list(temporary.iterdir()) == []
 
 
 def test_load_reports_pybullets_own_reason(cases):
