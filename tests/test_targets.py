@@ -657,15 +657,18 @@ def test_load_gives_drake_and_pybullet_the_packages_urdfcli_resolved(tmp_path):
     assert not any(" C001 " in line or " C002 " in line for line in lines), lines
 
 
-def test_a_consumer_that_crashes_leaves_nothing_in_the_temporary_folder(cases, tmp_path):
-    """PyBullet segfaults on a joint loop while it loads, inside the folder of package
-    entries urdfcli made for it: that folder goes with the child's working folder, which
-    the parent removes."""
-    require_consumer("pybullet")
+@pytest.mark.parametrize(("target", "case", "said"), [
+    ("pybullet", "loop", "C001 error: PyBullet refuses the model: pybullet crashed"),  # a segfault inside its package folder
+    ("isaac", "rgba-out-of-range", "C001 error: Isaac Sim refuses the model: ErrorException"),  # urdf-usd-converter's stage, left as it fails
+])
+def test_a_consumer_leaves_nothing_in_the_temporary_folder(cases, tmp_path, target, case, said):
+    """What a consumer leaves in the temporary folder, even when it crashes, goes with the
+    working folder of its child process, which urdfcli removes."""
+    require_consumer(target)
     temporary = tmp_path / "tmp"
     temporary.mkdir()
-    done = run_cli("check", "--format", "concise", "--load", "--target", "pybullet", str(cases["loop"]), env={"TMPDIR": str(temporary)})
-    assert "C001 error: PyBullet refuses the model: pybullet crashed" in done.stdout.decode(), done.stdout.decode()
+    done = run_cli("check", "--format", "concise", "--load", "--target", target, str(cases[case]), env={"TMPDIR": str(temporary)})
+    assert said in done.stdout.decode() and " C002 " not in done.stdout.decode(), done.stdout.decode()
     assert list(temporary.iterdir()) == []
 
 

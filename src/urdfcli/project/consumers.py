@@ -51,8 +51,12 @@ def _in_child(target: str, paths: list[str], variants: frozenset[str], packages:
         return []
     command = [sys.executable, "-c", CHILD, target, ",".join(sorted(variants)), json.dumps(packages), *map(os.path.abspath, paths)]
     try:
-        with tempfile.TemporaryDirectory(prefix="urdfcli-load-") as folder:  # its working folder: where MuJoCo writes MUJOCO_LOG.TXT
-            done = subprocess.run(command, capture_output=True, text=True, timeout=TIMEOUT * len(paths), errors="replace", cwd=folder)
+        # Its working folder (where MuJoCo writes MUJOCO_LOG.TXT) is its temporary folder too:
+        # removed here, it takes with it what a consumer leaves there (urdf-usd-converter
+        # leaves its stage when it fails; a crash leaves PyBullet's package folder).
+        with tempfile.TemporaryDirectory(prefix="urdfcli-load-") as folder:
+            done = subprocess.run(command, capture_output=True, text=True, timeout=TIMEOUT * len(paths), errors="replace", cwd=folder,
+                                  env={**os.environ, "TMPDIR": folder})
     except subprocess.TimeoutExpired:
         return [Outcome(False, f"{target} did not finish loading in {TIMEOUT:.0f} s")] * len(paths)
     answers = [json.loads(line) for line in done.stdout.splitlines() if line.startswith("{")]

@@ -71,11 +71,8 @@ def finite(value: float) -> float | None:
 def package_folders(packages: Packages) -> Iterator[str]:
     """A folder holding one entry per package, named as the package and leading to its
     folder: where a consumer that looks ``package://NAME/`` up as ``NAME/`` under one
-    search path finds every package urdfcli resolved. It is made in the working folder,
-    which the child process a consumer runs in is given and its parent removes: a
-    consumer that crashes while loading leaves nothing behind in the system's
-    temporary folder."""
-    with tempfile.TemporaryDirectory(prefix="packages-", dir=os.getcwd()) as folder:
+    search path finds every package urdfcli resolved."""
+    with tempfile.TemporaryDirectory(prefix="urdfcli-packages-") as folder:
         for name, path in packages.items():
             if name and "/" not in name and name not in (".", ".."):
                 os.symlink(path, os.path.join(folder, name))
