@@ -864,30 +864,42 @@ def test_markup_of_another_reader_is_a_note_and_known_extensions_draw_nothing(tm
     ]
 
 
-def test_the_published_srdfs_draw_no_k009():
+def test_the_published_srdfs_draw_no_k009_nor_k010():
     """example-robot-data's 38 SRDFs: Pinocchio's, HPP's (<gripper>) and the humanoid <specificities>
-    are other readers' markup, written on purpose; nothing in them is misspelt or misplaced."""
+    are other readers' markup, written on purpose; nothing in them is misspelt or misplaced. Their
+    group states without a group (z1, kinova) are Pinocchio's reference configurations."""
     data = example_robot_data()
     srdfs = sorted(str(path) for path in (data / "robots").glob("*/srdf/*.srdf"))
     assert len(srdfs) >= 30
-    done = run_cli("lint", "--select", "K009", "--format", "json", "-P", f"example-robot-data={data}", *srdfs)
+    done = run_cli("lint", "--select", "K009,K010", "--format", "json", "-P", f"example-robot-data={data}", *srdfs)
     document = json.loads(done.stdout)
     assert [d for f in document["files"] for d in f["diagnostics"]] == []
 
-def test_a_group_state_joint_without_its_value_is_one_finding_in_check_and_lint(tmp_path):
-    """srdfdom skips a state's joint without a value. A misspelt value is one cause: K005 (which
-    check runs) says the joint has none and names the attribute written, K009 says nothing more."""
-    srdf = ('<robot name="hand">\n  <group name="hand"><joint name="finger_joint1"/></group>\n'
+def test_an_element_without_an_attribute_srdfdom_needs_is_one_error_in_check_and_lint(tmp_path):
+    """srdfdom logs an error and skips an element without an attribute it needs (a state's
+    joint without a value, a chain without its tip, a nameless group). A misspelt or cut-short
+    attribute is one cause: K010 (which check runs) names the attribute written, K009 says
+    nothing more. An attribute K009 knows no use for stays K009's."""
+    srdf = ('<robot name="hand">\n  <group name="hand"><joint name="finger_joint1"/><chain base_link="hand" tip="right"/></group>\n'
             '  <group_state name="open" group="hand"><joint name="finger_joint1" valeu="0.04"/></group_state>\n'
-            '  <group_state name="closed" group="hand"><joint name="finger_joint1"/></group_state>\n</robot>\n')
+            '  <group_state name="closed" group="hand"><joint name="finger_joint1"/></group_state>\n'
+            '  <group><link name="left"/></group>\n'
+            '  <disable_collisions link1="left" reason="Never" colour="red"/>\n</robot>\n')
     expected = [
-        ("K005", "warning", 3, 69, "group state 'open' gives joint 'finger_joint1' no value; MoveIt skips the joint",
-         "did you mean value=\"...\"? 'valeu' is no attribute of it"),
-        ("K005", "warning", 4, 43, "group state 'closed' gives joint 'finger_joint1' no value; MoveIt skips the joint", "give its value: value=\"...\""),
+        ("K010", "error", 2, 75, "<chain> in <group> 'hand' has no 'tip_link'; MoveIt skips it", "did you mean tip_link=\"...\"? 'tip' is no attribute of <chain>"),
+        ("K010", "error", 3, 69, "<joint> 'finger_joint1' in <group_state> 'open' has no 'value'; MoveIt skips it",
+         "did you mean value=\"...\"? 'valeu' is no attribute of <joint>"),
+        ("K010", "error", 4, 43, "<joint> 'finger_joint1' in <group_state> 'closed' has no 'value'; MoveIt skips it", "give value=\"...\""),
+        ("K010", "error", 5, 3, "<group> has no 'name'; MoveIt skips it", "give name=\"...\""),
+        ("K010", "error", 6, 3, "<disable_collisions> has no 'link2'; MoveIt skips it", "give link2=\"...\""),
     ]
-    assert lint_srdf(tmp_path, srdf) == (1, expected)
+    colour = ("K009", "info", 6, 51, "<disable_collisions> has no attribute 'colour'; MoveIt ignores it", "<disable_collisions> takes link1, link2, reason")
+    code, found_here = lint_srdf(tmp_path, srdf)
+    assert code == 1 and sorted(found_here, key=lambda d: d[2:4]) == sorted([*expected, colour], key=lambda d: d[2:4])
     done, document = check("hand.srdf", "--urdf", "hand.urdf", cwd=tmp_path)
+    assert done.returncode == 1
     assert [(d["code"], d["line"], d["message"]) for d in document["files"][0]["diagnostics"]] == [e[:1] + e[2:3] + e[4:5] for e in expected]
+
 
 def test_every_element_srdfdom_reads_draws_nothing(tmp_path):
     srdf = """<robot name="hand">

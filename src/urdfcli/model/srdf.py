@@ -18,6 +18,7 @@ as for a URDF (see :meth:`urdfcli.read.document.Document.diagnostic`).
 
 from __future__ import annotations
 
+from collections.abc import Iterator
 from typing import NamedTuple
 
 from ..read.document import Document, tag_name
@@ -55,6 +56,18 @@ SCHEMA: dict[str, tuple[frozenset[str], frozenset[str]]] = {
         ("joint_property", ("joint_name", "property_name", "value"), ()),
     )
 }
+# The attributes without which srdfdom skips an element, with an error in its log (a
+# <group_state> joint's value included: the state loses the joint). A group state's
+# group is not among them: Pinocchio reads group states without one as its reference
+# configurations (example-robot-data's z1, kinova), and MoveIt never sees those files.
+REQUIRED: dict[str, tuple[str, ...]] = {
+    "group": ("name",), "group/link": ("name",), "group/joint": ("name",), "group/chain": ("base_link", "tip_link"), "group/group": ("name",),
+    "group_state": ("name",), "group_state/joint": ("name", "value"), "end_effector": ("name", "group", "parent_link"),
+    "virtual_joint": ("name", "child_link", "parent_frame", "type"), "passive_joint": ("name",),
+    "disable_collisions": ("link1", "link2"), "enable_collisions": ("link1", "link2"), "disable_default_collisions": ("link",),
+    "link_sphere_approximation": ("link",), "link_sphere_approximation/sphere": ("center", "radius"),
+    "joint_property": ("joint_name", "property_name", "value"),
+}
 # Other readers' documented extensions of an SRDF, in <robot>: never reported, never looked into.
 EXTENSIONS = {
     "rotor_params": "Pinocchio's rotor inertias and gear ratios",
@@ -84,32 +97,72 @@ def places_of(tag: str) -> list[str]:
     return [place for place, (_, children) in SCHEMA.items() if tag in children]
 
 
+def _read_elements(root: Element) -> Iterator[tuple[Element, str, Element | None]]:
+    """Each element srdfdom reads, with its place (of :data:`SCHEMA`) and the element of
+    ``<robot>`` it is written in (None for those themselves)."""
+    yield root, "robot", None
+    for child in root:
+        tag = tag_name(child)
+        if tag not in SCHEMA["robot"][1]:
+            continue
+        yield child, tag, None
+        for inner in child:
+            if tag_name(inner) in SCHEMA[tag][1]:
+                yield inner, f"{tag}/{tag_name(inner)}", child
+
+
 def unknown_markup(root: Element, index: dict[Element, int]) -> list[Unknown]:
     """What srdfdom does not read where it is written, in document order: an element
     (misspelt, or one of its elements in the wrong place) or an attribute. Each
     ``Unknown``'s ``parent`` is the place (of :data:`SCHEMA`) it is written in, or on."""
     found: list[Unknown] = []
-
-    def attributes(element: Element, place: str) -> None:
+    for element, place, _ in _read_elements(root):
         known = SCHEMA[place][0] | EXTENSION_ATTRIBUTES.get(place, {}).keys()
         written = [name for name in element.keys() if not is_foreign(name)]
         found.extend(Unknown(index[element], place, name, True, typo_of(name, known - set(written)), holder=index[element])
                      for name in written if name not in known)
-
-    def walk(element: Element, place: str) -> None:
-        attributes(element, place)
         children = SCHEMA[place][1]
         for child in element:
             tag = tag_name(child)
-            inner = tag if place == "robot" else f"{place}/{tag}"
-            if tag in children:
-                walk(child, inner)
-            elif not is_foreign(tag) and not (place == "robot" and tag in EXTENSIONS):
+            if tag not in children and not is_foreign(tag) and not (place == "robot" and tag in EXTENSIONS):
                 meant = None if places_of(tag) else typo_of(tag, children)
                 found.append(Unknown(index[child], place, tag, False, meant, holder=index[element]))
+    return sorted(found, key=lambda unknown: unknown.at)  # (stable: an element's attributes as written)
 
-    walk(root, "robot")
+
+class Missing(NamedTuple):
+    """A required attribute (of :data:`REQUIRED`) an element srdfdom reads lacks."""
+
+    at: int
+    place: str
+    attribute: str
+    name: str | None  # the element's own name, if it has one
+    within: str | None  # the element of <robot> it is written in, as a reader says it: "<group> 'arm'"
+    misspelt: str | None  # an attribute written on it that is this one misspelt
+
+
+def missing_attributes(root: Element, index: dict[Element, int], unknown: list[Unknown]) -> list[Missing]:
+    """Each required attribute an element srdfdom reads lacks, in document order."""
+    found = []
+    for element, place, outer in _read_elements(root):
+        within = None if outer is None else f"<{tag_name(outer)}>" + (f" '{outer.get('name')}'" if outer.get("name") else "")
+        at = index[element]
+        for attribute in REQUIRED.get(place, ()):
+            if element.get(attribute) is None:
+                written = [u for u in unknown if u.at == at and u.attribute]
+                found.append(Missing(at, place, attribute, element.get("name"), within, _written_for(attribute, written)))
     return found
+
+
+def _written_for(attribute: str, written: list[Unknown]) -> str | None:
+    """The unknown attribute of ``written`` (those of one element) that stands for a missing
+    ``attribute``: its misspelling, else the one alone that is it cut short or run on
+    (``tip`` for ``tip_link``)."""
+    for unknown in written:
+        if unknown.typo_of == attribute:
+            return unknown.name
+    cut = [u.name for u in written if not u.typo_of and (attribute.startswith(u.name) or u.name.startswith(attribute))]
+    return cut[0] if len(cut) == 1 else None
 
 
 class Named(NamedTuple):
@@ -141,7 +194,7 @@ class State(NamedTuple):
     name: str
     group: Named
     at: int
-    values: tuple[tuple[Named, str], ...]  # (joint, value as written)
+    values: tuple[tuple[Named, str | None], ...]  # (joint, value as written; None when there is none)
 
 
 class EndEffector(NamedTuple):
@@ -171,6 +224,7 @@ class Semantic(NamedTuple):
     passive_joints: tuple[Named, ...]
     disabled: tuple[tuple[Named, Named], ...]  # link pairs whose collisions are not checked
     unknown: tuple[Unknown, ...] = ()  # what srdfdom does not read (see unknown_markup)
+    missing: tuple[Missing, ...] = ()  # required attributes not written (see missing_attributes)
 
     @property
     def group_names(self) -> set[str]:
@@ -196,7 +250,7 @@ class Semantic(NamedTuple):
         """Each joint the SRDF names, with what names it: a group's joints, a group state's (but
         one given seven values, a position and a quaternion: the floating base a loader adds), a passive joint."""
         named = [(f"group '{group.name}'", joint) for group in self.groups for joint in group.joints]
-        named += [(f"group state '{state.name}'", joint) for state in self.states for joint, value in state.values if len(value.split()) != 7]
+        named += [(f"group state '{state.name}'", joint) for state in self.states for joint, value in state.values if len((value or "").split()) != 7]
         named += [("<passive_joint>", joint) for joint in self.passive_joints]
         return named
 
@@ -232,7 +286,7 @@ def read_semantic(document: Document, root: Element | None = None) -> Semantic:
             groups.append(Group(element.get("name") or "", index[element], tuple(links), tuple(joints), tuple(chains), tuple(subgroups)))
         elif tag == "group_state":
             group = named(element, "group")
-            values = tuple((joint, child.get("value") or "") for child in element if child.tag == "joint" and (joint := named(child)))
+            values = tuple((joint, child.get("value")) for child in element if child.tag == "joint" and (joint := named(child)))
             if group:
                 states.append(State(element.get("name") or "", group, index[element], values))
         elif tag == "end_effector":
@@ -246,8 +300,9 @@ def read_semantic(document: Document, root: Element | None = None) -> Semantic:
             first, second = named(element, "link1"), named(element, "link2")
             if first and second:
                 disabled.append((first, second))
-    unknown = tuple(unknown_markup(root, index))
-    return Semantic(root.get("name"), 0, tuple(groups), tuple(states), tuple(effectors), tuple(virtuals), tuple(passive), tuple(disabled), unknown)
+    unknown = unknown_markup(root, index)
+    return Semantic(root.get("name"), 0, tuple(groups), tuple(states), tuple(effectors), tuple(virtuals), tuple(passive), tuple(disabled),
+                    tuple(unknown), tuple(missing_attributes(root, index, unknown)))
 
 
-__all__ = ["EXTENSIONS", "SCHEMA", "SRDF_SUFFIXES", "SRDF_TAGS", "Chain", "EndEffector", "Group", "Named", "Semantic", "State", "VirtualJoint", "looks_semantic", "named_srdf", "places_of", "read_semantic", "unknown_markup"]
+__all__ = ["EXTENSIONS", "SCHEMA", "SRDF_SUFFIXES", "SRDF_TAGS", "Chain", "EndEffector", "Group", "Missing", "Named", "Semantic", "State", "VirtualJoint", "looks_semantic", "missing_attributes", "named_srdf", "places_of", "read_semantic", "unknown_markup"]

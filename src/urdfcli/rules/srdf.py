@@ -1,6 +1,6 @@
 """The SRDF against its URDF (K001-K008): every name it gives must exist there,
 each chain must run down the tree, each named state must lie within the limits;
-and what MoveIt's SRDF reader does not read (K009).
+and what MoveIt's SRDF reader does not read (K009, K010).
 
 These rules run on an SRDF (``loaded.semantic``) checked against the URDF of
 the same robot (``loaded.described``, found in its package or workspace, or
@@ -288,9 +288,8 @@ def _ancestors(link: str, parents: dict[str, str]) -> list[str]:
     doc=explain(
         """
         Finds each value of a `<group_state>` outside the limits its joint has in
-        the URDF (a revolute or prismatic joint's `lower` and `upper`), each
-        value that is not a number, and each joint given no value (with the
-        attribute meant, when `value` is misspelt: K009 leaves that one to it).
+        the URDF (a revolute or prismatic joint's `lower` and `upper`), and each
+        value that is not a number. A joint given no value is K010's.
         """,
         """
         MoveIt loads the state, but the robot cannot reach it: a plan to it is
@@ -307,18 +306,11 @@ def state_outside_limits(loaded: Loaded, given: Given) -> Iterator[Diagnostic]:
     robot = _against(loaded)
     if robot is None:
         return
-    misspelt = {unknown.at: unknown.name for unknown in loaded.semantic.unknown if _misspelt_value(unknown)}
     for state in loaded.semantic.states:
         for joint_name, text in state.values:
             joint = robot.joints.get(joint_name.name)
-            if joint is None or joint.type not in ("revolute", "prismatic", "continuous"):
-                continue  # an unknown joint is K002's; a planar or floating joint takes several values
-            if not text:
-                written = misspelt.get(joint_name.at)
-                hint = f"did you mean value=\"...\"? '{written}' is no attribute of it" if written else "give its value: value=\"...\""
-                yield loaded.diagnostic("K005", f"group state '{state.name}' gives joint '{joint.name}' no value; MoveIt skips the joint", joint_name.at,
-                                        hint, attribute=written, subjects=(joint.name,))
-                continue
+            if joint is None or joint.type not in ("revolute", "prismatic", "continuous") or text is None:
+                continue  # an unknown joint is K002's, no value K010's; a planar or floating joint takes several values
             try:
                 value = float(text)
             except ValueError:
@@ -491,8 +483,8 @@ K008 = declare(
         `<passive_joint>` inside a `<group>`, a `<chain>` outside one, anything
         inside a subgroup's `<group>`, which only names the subgroup), with where
         it belongs; and an attribute it does not read (`<chain tip="...">`, with
-        the attribute meant when it is one or two letters away; a group state's
-        misspelt `value` is K005's, which `check` reports too). Other unknown
+        the attribute meant when it is one or two letters away; a misspelt
+        attribute srdfdom needs is K010's, which `check` reports too). Other unknown
         markup, neither misspelt nor misplaced, is only noted (info): it may be
         meant for another reader. Pinocchio's `<rotor_params>`, HPP's
         `<gripper>`, `<handle>` and `<contact>`, the humanoid `<specificities>`
@@ -511,9 +503,10 @@ K008 = declare(
     ),
 )
 def unknown_markup(loaded: Loaded, given: Given) -> Iterator[Diagnostic]:
+    required = {(missing.at, missing.misspelt) for missing in loaded.semantic.missing}
     for unknown in loaded.semantic.unknown:
-        if _misspelt_value(unknown):
-            continue  # K005: the joint has no value, which check says too
+        if unknown.attribute and (unknown.at, unknown.name) in required:
+            continue  # a required attribute misspelt: K010 says the element lacks it, in check too
         where, name = _shown(unknown.parent), unknown.name
         if unknown.attribute:
             hint = f"did you mean '{unknown.typo_of}'?" if unknown.typo_of else f"{where} takes {', '.join(sorted(SCHEMA[unknown.parent][0]))}"
@@ -534,9 +527,40 @@ def unknown_markup(loaded: Loaded, given: Given) -> Iterator[Diagnostic]:
         yield diagnostic if unknown.typo_of or misplaced else diagnostic._replace(severity=INFO)  # neither: maybe another reader's
 
 
-def _misspelt_value(unknown) -> bool:
-    """A group state's joint whose ``value`` is misspelt (so it has none)."""
-    return unknown.attribute and unknown.parent == "group_state/joint" and unknown.typo_of == "value"
+@check(
+    "K010", "srdf-attribute-missing", ERROR, "An SRDF element without an attribute MoveIt needs to read it", kind=Kind.SEMANTIC,
+    doc=explain(
+        """
+        Finds each element MoveIt's SRDF reader (srdfdom) reads that lacks an
+        attribute it needs: a `<group>`, group state, end effector or passive
+        joint without `name`, a `<chain>` without `base_link` or `tip_link`, a
+        group state's joint without `value`, a
+        virtual joint without `child_link`, `parent_frame` or `type`, a collision
+        pair without `link1` or `link2`, ... (the attribute meant, when one
+        written is it misspelt: K009 leaves that one to it). An attribute
+        written empty is present; what it names is checked by K001-K003.
+        Left alone: a group state without `group`, which Pinocchio reads as a
+        reference configuration (its SRDFs are not MoveIt's).
+        """,
+        """
+        srdfdom logs an error and skips the element: the chain is not in its
+        group (a group left empty plans for nothing), the state lacks the joint
+        (moving to it leaves that joint where it is), the collision pair is
+        checked after all.
+        """,
+        '<robot name="example">\n  <group name="arm"><chain base_link="base_link" tip="tool0"/></group>\n</robot>',
+        '<robot name="example">\n  <group name="arm"><chain base_link="base_link" tip_link="tool0"/></group>\n</robot>',
+    ),
+)
+def attribute_missing(loaded: Loaded, given: Given) -> Iterator[Diagnostic]:
+    for missing in loaded.semantic.missing:
+        tag = missing.place.rsplit("/", 1)[-1]
+        what = f"<{tag}>" + (f" '{missing.name}'" if missing.name else "") + (f" in {missing.within}" if missing.within else "")
+        if missing.misspelt:
+            hint = f"did you mean {missing.attribute}=\"...\"? '{missing.misspelt}' is no attribute of <{tag}>"
+        else:
+            hint = f"give {missing.attribute}=\"...\""
+        yield loaded.diagnostic("K010", f"{what} has no '{missing.attribute}'; MoveIt skips it", missing.at, hint, attribute=missing.misspelt)
 
 
 def _shown(place: str) -> str:
