@@ -672,7 +672,8 @@ def test_a_name_the_urdf_lacks_is_said_once_with_the_number_of_elements_giving_i
     done, document = check("arm.srdf", "--urdf", "arm.urdf", cwd=tmp_path)
     assert done.returncode == 1
     assert [(d["code"], d["severity"], d["line"], d["message"], d["hint"]) for d in document["files"][0]["diagnostics"]] == [
-        ("K001", "error", 3, "group 'wrist' names link 'wrist_link', which arm.urdf does not have (and in 1 <disable_collisions>)", "did you mean 'base_link'?"),
+        ("K001", "error", 3, "group 'wrist' names link 'wrist_link', which arm.urdf does not have (and in 1 <disable_collisions>)",
+         "use a link of arm.urdf, or check that the SRDF is for this robot"),  # (not base_link: a wrist is no base misspelt)
         ("K002", "error", 4, "group state 'home' names joint 'j3', which arm.urdf does not have (and in group state 'up')",
          "use a joint of arm.urdf, or check that the SRDF is for this robot"),
         ("K001", "warning", 6, "<disable_collisions> names link 'bicep_link', which arm.urdf does not have (and in 2 more <disable_collisions>)",

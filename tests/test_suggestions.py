@@ -1,6 +1,6 @@
 """The "did you mean" search gives difflib's answer, with less of its work, and never a name
-that is the misspelt one with a whole prefix or suffix cut off, or with other numbers; the name
-with one added first."""
+that is the misspelt one with a whole prefix or suffix cut off, with other numbers, or with
+whole parts unlike its own; the name with one added first."""
 
 from __future__ import annotations
 
@@ -11,7 +11,7 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from urdfcli.read.names import cut_from, numbered_apart, typo_of
+from urdfcli.read.names import cut_from, numbered_apart, parts_apart, typo_of
 from urdfcli.rules.suggestions import close_matches
 
 NAMES = st.text(alphabet="abcde_12", max_size=8)  # few letters: many ties and near misses
@@ -22,7 +22,7 @@ NAMES = st.text(alphabet="abcde_12", max_size=8)  # few letters: many ties and n
 def test_the_same_names_as_difflib(word, candidates, n, cutoff):
     if any(cut_from(candidate, word) for candidate in candidates):
         return  # (the word with a prefix or suffix added comes first: below)
-    kept = [candidate for candidate in candidates if not cut_from(word, candidate) and not numbered_apart(word, candidate)]
+    kept = [c for c in candidates if not cut_from(word, c) and not numbered_apart(word, c) and not parts_apart(word, c)]
     assert close_matches(word, candidates, n, cutoff) == difflib.get_close_matches(word, kept, n, cutoff)
 
 
@@ -52,7 +52,7 @@ def test_another_number_of_a_series_is_not_offered(suggest):
 def test_a_misspelt_link_among_many():
     links = [f"{side}_{part}_link" for side in ("left", "right") for part in ("shoulder", "elbow", "wrist", "finger", "thumb", "palm")]
     assert close_matches("left_elbw_link", links) == ["left_elbow_link"]
-    assert close_matches("left_elbw_link", links, n=3) == difflib.get_close_matches("left_elbw_link", links, n=3)
+    assert close_matches("left_elbw_link", links, n=3) == ["left_elbow_link"]  # (difflib adds right_elbow_link, left_palm_link)
 
 
 @pytest.mark.parametrize("suggest", [close_matches, lambda word, names: [typo_of(word, names)]])
@@ -76,3 +76,16 @@ def test_a_prefix_written_twice_is_offered_the_name_once():
     links = ["double_stereo_link", "double_stereo_frame_joint", "base_link"]
     assert close_matches("double_stereo_double_stereo_link", links) == ["double_stereo_link"]
     assert close_matches("base_link_link", links) == ["base_link"]
+
+
+def test_a_name_sharing_a_prefix_but_not_the_part_that_differs_is_not_offered():
+    """franka's SRDF names 'panda_hand' when the URDF has no hand: difflib offered 'panda_link8'
+    (the shared 'panda_' carries the score), and 'right_hand' for 'left_hand'. A typo in the part
+    that differs is still offered, and so is a name with a part left out (a prefix written twice)."""
+    names = ["panda_link0", "panda_link5", "panda_link8", "panda_joint1", "panda_joint7", "right_hand", "sensor_mount_link", "right_elbow_link"]
+    assert difflib.get_close_matches("panda_hand", names, n=1) == ["panda_link8"]
+    for other in ("panda_hand", "left_hand", "left_elbw_link"):
+        assert close_matches(other, names) == [], other
+    assert close_matches("panda_jiont1", names) == ["panda_joint1"]
+    assert close_matches("rigth_hand", names) == ["right_hand"]
+    assert close_matches("sensor_mount_sensor_link", names) == ["sensor_mount_link"]

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import os
+import re
 from collections.abc import Iterable
 
 
@@ -31,6 +32,32 @@ def cut_from(word: str, candidate: str) -> bool:
     else:
         return False
     return (not word[cut - 1].isalnum() or not word[cut].isalnum()) and not doubled
+
+
+def parts_apart(word: str, candidate: str) -> bool:
+    """Whether ``candidate`` shares whole parts with ``word`` (between separators) and
+    writes another part where ``word`` writes one unlike it: another name, however much
+    the two share, which a "did you mean" hint must not offer for a typo (``panda_link5``
+    for ``panda_hand``, ``right_elbow_link`` for ``left_elbw_link``). A part added or
+    left out is not that (``sensor_mount_link`` for ``sensor_mount_sensor_link``: a
+    macro's prefix written twice). Case aside."""
+    from difflib import SequenceMatcher  # only when a name is misspelt
+
+    ours, theirs = _parts(word), _parts(candidate)
+    steps = SequenceMatcher(None, ours, theirs, autojunk=False).get_opcodes()
+    if not any(step == "equal" for step, *_ in steps):
+        return False  # nothing whole in common: difflib's score says it all
+    for step, i, j, k, m in steps:
+        if step != "replace":
+            continue
+        pairs = zip(ours[i:j], theirs[k:m]) if j - i == m - k else [("_".join(ours[i:j]), "_".join(theirs[k:m]))]
+        if any(SequenceMatcher(None, one, other).ratio() < 0.6 for one, other in pairs):  # (difflib's own cutoff)
+            return True
+    return False
+
+
+def _parts(name: str) -> list[str]:
+    return [part for part in re.split(r"[^0-9a-z]+", name.lower()) if part]
 
 
 def numbered_apart(word: str, candidate: str) -> bool:

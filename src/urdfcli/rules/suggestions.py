@@ -1,13 +1,14 @@
 """The "did you mean" hints: the misspelt name with a prefix or suffix it lacks, else the names
 closest to it, as :mod:`difflib` ranks them, less those that are the misspelt name with a
-whole prefix or suffix cut off (another name) or with other numbers (another of a series)."""
+whole prefix or suffix cut off (another name), with other numbers (another of a series), or
+with whole parts unlike its own (another name sharing a prefix: ``panda_link5`` for ``panda_hand``)."""
 
 from __future__ import annotations
 
 import heapq
 from collections.abc import Iterable
 
-from ..read.names import cut_from, numbered_apart
+from ..read.names import cut_from, numbered_apart, parts_apart
 
 
 def close_matches(word: str, candidates: Iterable[str], n: int = 1, cutoff: float = 0.6) -> list[str]:
@@ -19,7 +20,8 @@ def close_matches(word: str, candidates: Iterable[str], n: int = 1, cutoff: floa
     A candidate that is ``word`` with a whole prefix or suffix cut off is never
     offered: for ``robotiq_85_base_link``, ``base_link`` is the robot's base, not the
     gripper's link misspelt; nor one that is ``word`` with other numbers (``link_6`` for
-    ``link_7``: another link of the chain). One that is ``word`` with a whole prefix or suffix added
+    ``link_7``: another link of the chain), nor one whose parts unlike ``word``'s are
+    another name (:func:`~urdfcli.read.names.parts_apart`: ``panda_link5`` for ``panda_hand``). One that is ``word`` with a whole prefix or suffix added
     comes first: ``d500_joint_1`` for ``joint_1`` is a ``${prefix}`` forgotten (difflib
     would rank the other robot's ``joint_u`` above it)."""
     from difflib import SequenceMatcher  # only when a name is misspelt
@@ -37,7 +39,7 @@ def close_matches(word: str, candidates: Iterable[str], n: int = 1, cutoff: floa
         matcher.set_seq1(candidate)
         if matcher.real_quick_ratio() >= cutoff:
             bound = matcher.quick_ratio()
-            if bound >= cutoff:
+            if bound >= cutoff and not parts_apart(word, candidate):
                 bounded.append((bound, candidate))
     bounded.sort(key=lambda pair: pair[0], reverse=True)
     best: list[tuple[float, str]] = []  # a heap of the n best (score, name) so far
