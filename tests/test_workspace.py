@@ -591,6 +591,19 @@ def test_a_repository_in_a_folder_named_src_is_searched_alone_unless_that_is_a_w
     assert search_roots(library, PackageIndex()) == ([src / "my_robot", src], True)
 
 
+def test_a_workspace_is_told_by_a_repository_that_groups_its_packages_a_level_deeper(tmp_path):
+    """An unbuilt workspace (no build/ nor install/ beside src) whose second repository keeps
+    its packages in a group folder: the first repository's models are still looked for there."""
+    from urdfcli.project.workspace import search_roots
+
+    src = tmp_path / "ws" / "src"
+    library = write(src / "base_sim" / "base_common" / "base_description" / "urdf" / "wheel.xacro", WHEEL)
+    write(src / "base_sim" / "base_common" / "base_description" / "package.xml", package_xml("base_description"))
+    (src / "base_sim" / ".git").mkdir()
+    write(src / "rover" / "rover_description" / "package.xml", package_xml("rover_description"))
+    assert search_roots(library, PackageIndex()) == ([src / "base_sim", src], True)
+
+
 def test_a_repository_that_is_one_package_is_searched_alone(tmp_path):
     """A package whose own folder is its repository, in no workspace (~/code/my_robot_description):
     the folder beside it holds other repositories, none of them searched for its models."""

@@ -200,14 +200,15 @@ _WORKSPACE_MARKS = ("build", "install", "log", "devel", ".catkin_workspace", ".c
 
 def _workspace_src(src: Path) -> bool:
     """Whether a folder named src holds a ROS workspace: built or marked beside it, or
-    holding packages one or two levels down in more than one of its folders."""
+    holding packages up to three levels down in more than one of its folders (a
+    repository may group its packages: create3_sim/irobot_create_common/<package>)."""
     if any((src.parent / mark).exists() for mark in _WORKSPACE_MARKS):
         return True
     try:
         children = [c for c in src.iterdir() if c.is_dir() and not c.name.startswith(".")]
     except OSError:
         return False
-    holding = sum(1 for c in children if (c / "package.xml").is_file() or any(c.glob("*/package.xml")))
+    holding = sum(1 for c in children if any(any(c.glob(pattern)) for pattern in ("package.xml", "*/package.xml", "*/*/package.xml")))
     return holding > 1
 
 
