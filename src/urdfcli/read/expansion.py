@@ -337,6 +337,20 @@ class _Session:
                     return f'<property name="{name}">{where} is written without xacro:, which xacro 2 copies unread: write <xacro:property>'
         return None
 
+    def macro_defined_below(self, doc: xml.dom.minidom.Document, message: str, call: Origin | None) -> str | None:
+        """For a call of a macro xacro does not know yet, that its own file defines further
+        down (xacro.py before ROS Jade gathered a file's macros first; xacro 2 reads in
+        order): where the definition is, and to move it above the call."""
+        found = _UNKNOWN_MACRO.search(message)
+        if found is None or call is None or not call.line:
+            return None
+        for document in (doc, *self.documents):
+            for element in document.getElementsByTagName("xacro:macro"):
+                origin = element.getUserData(XACRO_TAG_ORIGIN)
+                if element.getAttribute("name").removeprefix("xacro:") == found.group(1) and origin is not None and origin.file == call.file and (origin.line or 0) > call.line:
+                    return f"macro '{found.group(1)}' is defined below this call, at line {origin.line}: xacro reads a file from top to bottom; move the definition above its first call"
+        return None
+
     def installed_elsewhere(self, path: str) -> str | None:
         """For ``$(find NAME)/x/file`` that the sources of NAME, in the input's repository or
         workspace, lack: where they have that file, and how to check against the folders
@@ -523,6 +537,9 @@ def _missing_argument(message: str) -> tuple[str | None, str | None]:
     return None, f"did you mean $(arg {meant})? No <xacro:arg> declares '{name}'"
 
 
+_UNKNOWN_MACRO = re.compile(r"^unknown macro name: (?:xacro:)?([\w.-]+)")  # xacro's words for a call of a macro it has not read
+
+
 _INVALID_PARAMETER = re.compile(r'^Invalid parameter "([^"]+)"')  # xacro's words for a call giving a parameter its macro lacks
 
 
@@ -577,7 +594,8 @@ def expand_here(data: bytes, file: str | None, mappings: dict[str, str], resolve
             missing, hint = _missing_argument(message) if code == "X003" else (None, None)
             raise ExpansionError(
                 message, origin, display_path(current_file) if current_file else shown, code,
-                _included(resolver), missing, hint or getattr(error, "urdfcli_hint", None) or _parameter_hint(error, message) or session.unprefixed_property(doc, error),
+                _included(resolver), missing, hint or getattr(error, "urdfcli_hint", None) or _parameter_hint(error, message) or session.unprefixed_property(doc, error)
+                or session.macro_defined_below(doc, message, origin),
             ) from None
         finally:
             includes = list(_included(resolver))
