@@ -357,3 +357,24 @@ def test_a_link_cut_off_by_a_missing_parent_is_not_a_second_root(tmp_path):
     found = [(d["code"], d["message"]) for d in json.loads(done.stdout)["files"][0]["diagnostics"]]
     # the J005 alone explains 'forearm'; 'spare' is a second root of its own
     assert sorted(found) == [("J005", "parent link 'upper_arms' of joint 'elbow' does not exist"), ("T001", "2 links have no parent: 'base_link', 'spare'")]
+
+
+def test_an_error_the_model_reports_with_xacro_error_fails_the_check(tmp_path):
+    """Shadow's hand validates its arguments and calls xacro.error() on a wrong one (fingers:=th,xx):
+    xacro prints the error and writes the URDF anyway. The check fails on it, at the element
+    that reported it, and passes with a valid argument; xacro.warning() stays a warning."""
+    (tmp_path / "hand.urdf.xacro").write_text(
+        f'<robot name="r" xmlns:xacro="{XACRO_NS}">\n'
+        '  <xacro:arg name="fingers" default="th"/>\n'
+        "  <xacro:unless value=\"${'$(arg fingers)' in ['th', 'ff']}\">${xacro.error('Unknown finger specifier: $(arg fingers)')}</xacro:unless>\n"
+        "  ${xacro.warning('Parameter lf is deprecated')}\n"
+        '  <link name="palm"/>\n</robot>\n'
+    )
+    done = run_cli("check", "hand.urdf.xacro", "fingers:=xx", "--format", "json", cwd=tmp_path)
+    found = {d["code"] + " " + d["severity"]: d for d in json.loads(done.stdout)["files"][0]["diagnostics"]}
+    assert done.returncode == 1
+    assert sorted(found) == ["X005 error", "X005 warning"]
+    assert (found["X005 error"]["message"], found["X005 error"]["line"]) == ("Unknown finger specifier: xx", 3)
+    assert found["X005 warning"]["message"] == "Parameter lf is deprecated"
+    done = run_cli("check", "hand.urdf.xacro", "fingers:=ff", "--format", "json", cwd=tmp_path)
+    assert done.returncode == 0 and [d["severity"] for d in json.loads(done.stdout)["files"][0]["diagnostics"]] == ["warning"]

@@ -287,5 +287,8 @@ def read_document(
         return document, []
     from . import xacro_warnings  # (only for an expansion xacro warned about: its words, fifteen patterns)
 
-    return document, [xacro_warnings.warning(text, origin.location() if origin is not None else Location(shown), files) for text, origin in result.warnings]
+    return document, [
+        xacro_warnings.warning(text, origin.location() if origin is not None else Location(shown), files, error)
+        for text, origin, error in result.warnings
+    ]
 

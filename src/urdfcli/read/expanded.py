@@ -88,11 +88,12 @@ class Origins(Sequence):
 class Expansion:
     """A xacro document expanded: its text as the ``xacro`` tool prints it, where each
     of its elements was written (one origin per element, in document order), the
-    files it read, and xacro's warnings."""
+    files it read, and xacro's warnings (with the errors the model printed by
+    ``xacro.error()``, marked)."""
 
     __slots__ = ("text", "origins", "includes", "warnings")
 
-    def __init__(self, text: str, origins: Origins, includes: list[str], warnings: list[tuple[str, Origin | None]]):
+    def __init__(self, text: str, origins: Origins, includes: list[str], warnings: list[tuple[str, Origin | None, bool]]):
         self.text = text
         self.origins = origins
         self.includes = includes

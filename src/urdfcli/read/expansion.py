@@ -130,7 +130,7 @@ class _Session:
         self.calling: list[object] = []  # the macro calls being expanded, outermost first
         self.calls: list[Call] = []  # each macro call site once, by its index in TRACE attributes
         self.call_index: dict[Call, int] = {}
-        self.warnings: list[tuple[str, Origin | None]] = []
+        self.warnings: list[tuple[str, Origin | None, bool]] = []  # (words, where, whether the model's xacro.error())
         self.documents: list[xml.dom.minidom.Document] = []  # each file included, as parsed
 
     # -- where is xacro now --------------------------------------------------
@@ -490,7 +490,9 @@ def _short(error: BaseException) -> str:
 
 
 class _Stderr(io.StringIO):
-    """xacro's standard error: each ``warning:`` line kept with where xacro was when it began."""
+    """xacro's standard error: each ``warning:`` line kept with where xacro was when it began,
+    and each ``error:`` line, which only a model's ``xacro.error()`` prints while xacro
+    expands (xacro prints it and goes on; its own errors are raised)."""
 
     def __init__(self, session: _Session):
         super().__init__()
@@ -506,8 +508,9 @@ class _Stderr(io.StringIO):
             if piece.endswith("\n"):
                 line = "".join(self.line)
                 self.line = []
-                if line.startswith("warning: "):
-                    self.session.warnings.append((line[len("warning: "):].strip(), self.origin))
+                for label in ("warning: ", "error: "):
+                    if line.startswith(label):
+                        self.session.warnings.append((line[len(label):].strip(), self.origin, label == "error: "))
         return len(text)
 
 
