@@ -1038,3 +1038,22 @@ def test_a_model_broken_by_a_library_mistake_shown_under_another_model_is_not_ok
     assert codes == {"urdf/arm.urdf.xacro": ["D004"], "urdf/arm_test.urdf.xacro": []}, codes
     assert [f["ok"] for f in files.values()] == [False, False]
     assert lint_json("urdf/arm_test.urdf.xacro", cwd=tmp_path)[1]["files"][0]["ok"] is False
+
+
+def test_a_macro_mistake_that_one_model_copies_once_and_another_twice_is_shown_once(tmp_path):
+    """Shadow's hand: the single hand's model makes the finger once (rh_), the bimanual model
+    twice (rh_ and lh_); the finger's one mistake, said of one link or of two, is shown once."""
+    urdf = tmp_path / "hands" / "urdf"
+    write(urdf / "finger.xacro", '<robot xmlns:xacro="http://www.ros.org/wiki/xacro">\n  <xacro:macro name="finger" params="prefix">\n'
+          '    <link name="${prefix}distal">\n'
+          '      <inertial><mass value="0.01"/><inertia ixx="1e-6" ixy="0" ixz="0" iyy="1e-6" iyz="0" izz="5e-6"/></inertial>\n    </link>\n'
+          '    <joint name="${prefix}J1" type="fixed"><parent link="palm"/><child link="${prefix}distal"/></joint>\n'
+          '  </xacro:macro>\n</robot>\n')
+    for model, sides in (("hand", ["rh_"]), ("bimanual", ["rh_", "lh_"])):
+        calls = "".join(f'  <xacro:finger prefix="{side}"/>\n' for side in sides)
+        write(urdf / f"{model}.urdf.xacro", f'<robot name="{model}" xmlns:xacro="http://www.ros.org/wiki/xacro">\n'
+              f'  <xacro:include filename="finger.xacro"/>\n  <link name="palm"/>\n{calls}</robot>\n')
+    (tmp_path / "hands" / ".git").mkdir()
+    done = run_cli("lint", "--format", "json", ".", cwd=tmp_path / "hands")
+    found = [(d["code"], d["path"], d["line"]) for f in json.loads(done.stdout)["files"] for d in f["diagnostics"]]
+    assert found == [("I006", "urdf/finger.xacro", 4)]

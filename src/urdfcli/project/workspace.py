@@ -61,6 +61,7 @@ from ..rules.tree import joint_link_not_found
 from ..rules.suppression import U001 as UNUSED_SUPPRESSION
 from ..model.result import Library, Result, Unreadable
 from .config import agreeing
+from .linter import unnamed
 
 XACRO_SUFFIXES = (".xacro", ".urdf", ".srdf")
 _SUBSTITUTION = re.compile(r"\$\(\s*(\w+)\s*([^()]*?)\s*\)|\$\{\s*([A-Za-z_]\w*)\s*\}")
@@ -902,8 +903,9 @@ def _same_input(file: str, path: str) -> bool:
 
 
 def _key(diagnostic: Diagnostic) -> tuple:
+    """What one mistake says wherever it is found: a macro's, in each model calling it, whatever links it names."""
     location = diagnostic.location
-    return (diagnostic.code, location.file, location.line, location.column, diagnostic.message)
+    return (diagnostic.code, location.file, location.line, location.column, unnamed(diagnostic))
 
 
 # What a model's part read alone reports of the context its includer gives it: a name or
