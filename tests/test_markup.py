@@ -380,6 +380,24 @@ def test_a_gazebo_reference_whose_expression_lost_its_dollar_says_so(tmp_path):
     assert diagnostic.hint == "'{name}' lacks its $: xacro copies it as written; write '${name}'"
 
 
+def test_a_link_property_under_a_joint_name_is_said_dropped_and_the_child_link_named(tmp_path):
+    """AgileX's Limo sets its wheels' friction in <gazebo reference="front_left_wheel">, the joint's
+    name: sdformat gives <mu1> to a link only, and drops it there. A joint's own properties
+    (<provideFeedback>, Shadow's hand) and a block naming the link are left alone."""
+    joint = ('<link name="base_link"/><link name="front_left_wheel_link"/><joint name="front_left_wheel" type="continuous">'
+             '<parent link="base_link"/><child link="front_left_wheel_link"/></joint>')
+    path = tmp_path / "robot.urdf"
+    path.write_text(f'<robot name="r">{joint}<gazebo reference="front_left_wheel"><mu1>0.1</mu1><mu2>0.1</mu2>'
+                    '<provideFeedback>true</provideFeedback></gazebo></robot>\n')
+    [diagnostic] = [d for d in lint_file(str(path), Config()).diagnostics if d.code == "D006"]
+    assert diagnostic.message == "<gazebo reference='front_left_wheel'> names a joint, and Gazebo gives <mu1>, <mu2> to links only: it drops them"
+    assert diagnostic.hint == "write reference='front_left_wheel_link', the joint's child link"
+    for block in ('<gazebo reference="front_left_wheel"><provideFeedback>true</provideFeedback></gazebo>',
+                  '<gazebo reference="front_left_wheel_link"><mu1>0.1</mu1></gazebo>'):
+        path.write_text(f'<robot name="r">{joint}{block}</robot>\n')
+        assert [d for d in lint_file(str(path), Config()).diagnostics if d.code == "D006"] == []
+
+
 TF_PREFIXED = """<robot name="mir">
   <link name="robot1/base_link"/>
   <link name="robot1/front_laser_link"/>
