@@ -27,7 +27,7 @@ class ExpansionError(Exception):
 
     def __init__(
         self, message: str, origin: Origin | None, file: str | None, code: str = "X003", includes: tuple[str, ...] = (),
-        missing_argument: str | None = None, hint: str | None = None,
+        missing_argument: str | None = None, hint: str | None = None, reported: tuple = (),
     ):
         super().__init__(message)
         self.message = message
@@ -37,9 +37,10 @@ class ExpansionError(Exception):
         self.includes = includes  # the files read before it stopped: a library it reached is affected
         self.missing_argument = missing_argument  # a $(arg NAME) that had no value
         self.hint = hint  # what to write instead, where it can be told
+        self.reported = reported  # (words, origin) of what the model said with xacro.error() before: often the cause
 
     def __reduce__(self):
-        return (ExpansionError, (self.message, self.origin, self.file, self.code, self.includes, self.missing_argument, self.hint))
+        return (ExpansionError, (self.message, self.origin, self.file, self.code, self.includes, self.missing_argument, self.hint, self.reported))
 
 
 class PackageNotFound(LookupError):

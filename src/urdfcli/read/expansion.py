@@ -337,6 +337,12 @@ class _Session:
                     return f'<property name="{name}">{where} is written without xacro:, which xacro 2 copies unread: write <xacro:property>'
         return None
 
+    def reported(self) -> tuple[tuple[str, Origin | None], ...]:
+        """What the model said with ``xacro.error()`` so far: before an expansion that then
+        stops, often why (Shadow's hand: a hand type its version does not fit, then the
+        include of that type's file fails)."""
+        return tuple((text, origin) for text, origin, error in self.warnings if error)
+
     def macro_defined_below(self, doc: xml.dom.minidom.Document, message: str, call: Origin | None) -> str | None:
         """For a call of a macro xacro does not know yet, that its own file defines further
         down (xacro.py before ROS Jade gathered a file's macros first; xacro 2 reads in
@@ -577,6 +583,7 @@ def expand_here(data: bytes, file: str | None, mappings: dict[str, str], resolve
             xacro.process_doc(doc, mappings=dict(mappings))
         except ExpansionError as error:
             error.includes = _included(resolver)
+            error.reported = session.reported()
             raise
         except RecursionError as error:
             names = [m.body.getAttribute("name") for m in (xacro.macrostack or [])[-3:]]
@@ -598,7 +605,7 @@ def expand_here(data: bytes, file: str | None, mappings: dict[str, str], resolve
             raise ExpansionError(
                 message, origin, display_path(current_file) if current_file else shown, code,
                 _included(resolver), missing, hint or getattr(error, "urdfcli_hint", None) or _parameter_hint(error, message) or session.unprefixed_property(doc, error)
-                or session.macro_defined_below(doc, message, origin),
+                or session.macro_defined_below(doc, message, origin), session.reported(),
             ) from None
         finally:
             includes = list(_included(resolver))

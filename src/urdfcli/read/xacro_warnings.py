@@ -26,7 +26,7 @@ _FIXES = (
     (re.compile(r"inconsistent namespace redefinitions for ([\w:]+)"), "declare {0} with the same namespace in every file of the model"),
 )
 SAFE = Applicability.SAFE
-MODEL_ERROR = "the model reports this with xacro.error(), and xacro writes the URDF anyway: correct the arguments or the model"
+MODEL_ERROR = "the model reports this with xacro.error(), which xacro prints and goes on from: correct the arguments or the model"
 _DEPRECATED_CALL = re.compile(r"Using (\w+)\(\) directly is deprecated")
 _START_TAG = re.compile(r"""<[^\s/>]+(?:[^>"']|"[^"]*"|'[^']*')*>""")  # quoted values may hold '>'
 
