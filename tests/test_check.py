@@ -357,3 +357,41 @@ def test_a_link_cut_off_by_a_missing_parent_is_not_a_second_root(tmp_path):
     found = [(d["code"], d["message"]) for d in json.loads(done.stdout)["files"][0]["diagnostics"]]
     # the J005 alone explains 'forearm'; 'spare' is a second root of its own
     assert sorted(found) == [("J005", "parent link 'upper_arms' of joint 'elbow' does not exist"), ("T001", "2 links have no parent: 'base_link', 'spare'")]
+
+
+def test_an_error_the_model_reports_with_xacro_error_fails_the_check(tmp_path):
+    """Shadow's hand validates its arguments and calls xacro.error() on a wrong one (fingers:=th,xx):
+    xacro prints the error and writes the URDF anyway. The check fails on it, at the element
+    that reported it, and passes with a valid argument; xacro.warning() stays a warning."""
+    (tmp_path / "hand.urdf.xacro").write_text(
+        f'<robot name="r" xmlns:xacro="{XACRO_NS}">\n'
+        '  <xacro:arg name="fingers" default="th"/>\n'
+        "  <xacro:unless value=\"${'$(arg fingers)' in ['th', 'ff']}\">${xacro.error('Unknown finger specifier: $(arg fingers)')}</xacro:unless>\n"
+        "  ${xacro.warning('Parameter lf is deprecated')}\n"
+        '  <link name="palm"/>\n</robot>\n'
+    )
+    done = run_cli("check", "hand.urdf.xacro", "fingers:=xx", "--format", "json", cwd=tmp_path)
+    found = {d["code"] + " " + d["severity"]: d for d in json.loads(done.stdout)["files"][0]["diagnostics"]}
+    assert done.returncode == 1
+    assert sorted(found) == ["X005 error", "X005 warning"]
+    assert (found["X005 error"]["message"], found["X005 error"]["line"]) == ("Unknown finger specifier: xx", 3)
+    assert found["X005 warning"]["message"] == "Parameter lf is deprecated"
+    done = run_cli("check", "hand.urdf.xacro", "fingers:=ff", "--format", "json", cwd=tmp_path)
+    assert done.returncode == 0 and [d["severity"] for d in json.loads(done.stdout)["files"][0]["diagnostics"]] == ["warning"]
+
+
+def test_what_the_model_reported_with_xacro_error_before_its_expansion_stopped_is_said_too(tmp_path):
+    """Shadow's hand given hand_type:=hand_g with the E3M5 version: its check of the pair says why
+    (xacro.error()), then the include of the G hand's file fails; both are said, the cause too."""
+    (tmp_path / "hand.urdf.xacro").write_text(
+        f'<robot name="r" xmlns:xacro="{XACRO_NS}">\n'
+        '  <xacro:arg name="hand_type" default="hand_e"/>\n'
+        "  <xacro:unless value=\"${'$(arg hand_type)' == 'hand_e'}\">${xacro.error('hand_type $(arg hand_type) does not fit version E3M5')}</xacro:unless>\n"
+        '  <xacro:include filename="$(arg hand_type).xacro"/>\n'
+        '  <link name="palm"/>\n</robot>\n'
+    )
+    (tmp_path / "hand_e.xacro").write_text(f'<robot xmlns:xacro="{XACRO_NS}"/>\n')
+    done = run_cli("check", "hand.urdf.xacro", "hand_type:=hand_g", "--format", "json", cwd=tmp_path)
+    found = [(d["code"], d["line"], d["message"]) for d in json.loads(done.stdout)["files"][0]["diagnostics"]]
+    assert done.returncode == 1
+    assert ("X005", 3, "hand_type hand_g does not fit version E3M5") in found and [code for code, _, _ in found].count("X003") == 1

@@ -242,3 +242,21 @@ def test_a_name_given_by_a_property_without_the_xacro_prefix_says_where_that_tag
     for file in (tmp_path / "d.xacro", model):
         file.write_text(file.read_text().replace("<property ", "<xacro:property "))
     assert diagnostics("check", "r.urdf.xacro", cwd=tmp_path) == []
+
+
+def test_a_macro_called_above_its_definition_is_said_to_be_defined_below(tmp_path):
+    """The Allegro hand's description calls <xacro:finger> at the top and defines it at the
+    bottom, as xacro.py of ROS 1 read it; xacro 2 reads in order and knows no such macro yet.
+    The hint says where the definition is; moved above the call, the model expands."""
+    call = '  <xacro:finger n="0"/>\n'
+    definition = '  <xacro:macro name="finger" params="n">\n    <link name="link_${n}"/>\n  </xacro:macro>\n'
+    model = tmp_path / "r.urdf.xacro"
+    model.write_text(f'<robot name="r" xmlns:xacro="http://www.ros.org/wiki/xacro">\n{call}{definition}</robot>\n')
+    [found] = diagnostics("check", "r.urdf.xacro", cwd=tmp_path)
+    assert (found["code"], found["hint"]) == (
+        "X003", "macro 'finger' is defined below this call, at line 3: xacro reads a file from top to bottom; move the definition above its first call")
+    model.write_text(f'<robot name="r" xmlns:xacro="http://www.ros.org/wiki/xacro">\n{definition}{call}</robot>\n')
+    assert diagnostics("check", "r.urdf.xacro", cwd=tmp_path) == []
+    model.write_text(f'<robot name="r" xmlns:xacro="http://www.ros.org/wiki/xacro">\n{call}</robot>\n')
+    [found] = diagnostics("check", "r.urdf.xacro", cwd=tmp_path)
+    assert found["code"] == "X003" and found["hint"] is None  # a macro defined nowhere: nothing to move

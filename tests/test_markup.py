@@ -3,8 +3,11 @@ published robots draws nothing, next to the real defect that still draws its war
 
 from __future__ import annotations
 
+import os
+import subprocess
+
 import pytest
-from conftest import lint_file, run_cli
+from conftest import lint_file, require_tool, run_cli
 
 from urdfcli.project.config import Config
 
@@ -378,6 +381,32 @@ def test_a_gazebo_reference_whose_expression_lost_its_dollar_says_so(tmp_path):
     path.write_text('<robot name="r"><link name="FR_thigh"/><link name="RR_thigh"/><gazebo reference="{name}_thigh"><mu1>0.2</mu1></gazebo></robot>\n')
     [diagnostic] = [d for d in lint_file(str(path), Config()).diagnostics if d.code == "D006"]
     assert diagnostic.hint == "'{name}' lacks its $: xacro copies it as written; write '${name}'"
+
+
+def test_a_link_property_under_a_joint_name_is_said_dropped_and_the_child_link_named(tmp_path):
+    """AgileX's Limo sets its wheels' friction in <gazebo reference="front_left_wheel">, the joint's
+    name: sdformat gives <mu1> to a link only, and drops it there (its own conversion shows it). A
+    joint's own properties (<provideFeedback>, Shadow's hand) and a block naming the link are left alone."""
+    inertial = '<inertial><mass value="1"/><inertia ixx="1" iyy="1" izz="1" ixy="0" ixz="0" iyz="0"/></inertial>'
+    joint = (f'<link name="base_link">{inertial}</link><link name="front_left_wheel_link">{inertial}'
+             '<collision><geometry><sphere radius="0.1"/></geometry></collision></link><joint name="front_left_wheel" type="continuous">'
+             '<parent link="base_link"/><child link="front_left_wheel_link"/></joint>')
+    sdformat = require_tool("ign")
+    for reference, kept in (("front_left_wheel", False), ("front_left_wheel_link", True)):
+        path = tmp_path / f"{reference}.urdf"
+        path.write_text(f'<robot name="r">{joint}<gazebo reference="{reference}"><mu1>0.123</mu1></gazebo></robot>\n')
+        converted = subprocess.run([sdformat, "sdf", "-p", str(path)], capture_output=True, text=True, env={**os.environ, "HOME": str(tmp_path)})
+        assert ("0.123" in converted.stdout) is kept, converted.stdout  # (the friction value, wherever it is written)
+    path = tmp_path / "robot.urdf"
+    path.write_text(f'<robot name="r">{joint}<gazebo reference="front_left_wheel"><mu1>0.1</mu1><mu2>0.1</mu2>'
+                    '<provideFeedback>true</provideFeedback></gazebo></robot>\n')
+    [diagnostic] = [d for d in lint_file(str(path), Config()).diagnostics if d.code == "D006"]
+    assert diagnostic.message == "<gazebo reference='front_left_wheel'> names a joint, and Gazebo gives <mu1>, <mu2> to links only: it drops them"
+    assert diagnostic.hint == "write reference='front_left_wheel_link', the joint's child link"
+    for block in ('<gazebo reference="front_left_wheel"><provideFeedback>true</provideFeedback></gazebo>',
+                  '<gazebo reference="front_left_wheel_link"><mu1>0.1</mu1></gazebo>'):
+        path.write_text(f'<robot name="r">{joint}{block}</robot>\n')
+        assert [d for d in lint_file(str(path), Config()).diagnostics if d.code == "D006"] == []
 
 
 TF_PREFIXED = """<robot name="mir">

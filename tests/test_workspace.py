@@ -591,6 +591,19 @@ def test_a_repository_in_a_folder_named_src_is_searched_alone_unless_that_is_a_w
     assert search_roots(library, PackageIndex()) == ([src / "my_robot", src], True)
 
 
+def test_a_workspace_is_told_by_a_repository_that_groups_its_packages_a_level_deeper(tmp_path):
+    """An unbuilt workspace (no build/ nor install/ beside src) whose second repository keeps
+    its packages in a group folder: the first repository's models are still looked for there."""
+    from urdfcli.project.workspace import search_roots
+
+    src = tmp_path / "ws" / "src"
+    library = write(src / "base_sim" / "base_common" / "base_description" / "urdf" / "wheel.xacro", WHEEL)
+    write(src / "base_sim" / "base_common" / "base_description" / "package.xml", package_xml("base_description"))
+    (src / "base_sim" / ".git").mkdir()
+    write(src / "rover" / "rover_description" / "package.xml", package_xml("rover_description"))
+    assert search_roots(library, PackageIndex()) == ([src / "base_sim", src], True)
+
+
 def test_a_repository_that_is_one_package_is_searched_alone(tmp_path):
     """A package whose own folder is its repository, in no workspace (~/code/my_robot_description):
     the folder beside it holds other repositories, none of them searched for its models."""
@@ -1025,3 +1038,22 @@ def test_a_model_broken_by_a_library_mistake_shown_under_another_model_is_not_ok
     assert codes == {"urdf/arm.urdf.xacro": ["D004"], "urdf/arm_test.urdf.xacro": []}, codes
     assert [f["ok"] for f in files.values()] == [False, False]
     assert lint_json("urdf/arm_test.urdf.xacro", cwd=tmp_path)[1]["files"][0]["ok"] is False
+
+
+def test_a_macro_mistake_that_one_model_copies_once_and_another_twice_is_shown_once(tmp_path):
+    """Shadow's hand: the single hand's model makes the finger once (rh_), the bimanual model
+    twice (rh_ and lh_); the finger's one mistake, said of one link or of two, is shown once."""
+    urdf = tmp_path / "hands" / "urdf"
+    write(urdf / "finger.xacro", '<robot xmlns:xacro="http://www.ros.org/wiki/xacro">\n  <xacro:macro name="finger" params="prefix">\n'
+          '    <link name="${prefix}distal">\n'
+          '      <inertial><mass value="0.01"/><inertia ixx="1e-6" ixy="0" ixz="0" iyy="1e-6" iyz="0" izz="5e-6"/></inertial>\n    </link>\n'
+          '    <joint name="${prefix}J1" type="fixed"><parent link="palm"/><child link="${prefix}distal"/></joint>\n'
+          '  </xacro:macro>\n</robot>\n')
+    for model, sides in (("hand", ["rh_"]), ("bimanual", ["rh_", "lh_"])):
+        calls = "".join(f'  <xacro:finger prefix="{side}"/>\n' for side in sides)
+        write(urdf / f"{model}.urdf.xacro", f'<robot name="{model}" xmlns:xacro="http://www.ros.org/wiki/xacro">\n'
+              f'  <xacro:include filename="finger.xacro"/>\n  <link name="palm"/>\n{calls}</robot>\n')
+    (tmp_path / "hands" / ".git").mkdir()
+    done = run_cli("lint", "--format", "json", ".", cwd=tmp_path / "hands")
+    found = [(d["code"], d["path"], d["line"]) for f in json.loads(done.stdout)["files"] for d in f["diagnostics"]]
+    assert found == [("I006", "urdf/finger.xacro", 4)]

@@ -108,6 +108,21 @@ def _naming_all(text: str, subjects: tuple[str, ...]) -> str:
     return f"{head}{quoted} (and {names(subjects[1:])} alike){tail}"
 
 
+def unnamed(diagnostic: Diagnostic) -> str:
+    """Its message without the names of its links or joints (as :func:`_naming_all` wrote
+    them): what one mistake of a macro says in each model that calls it, whichever and
+    however many of its copies a model makes (one hand, or two)."""
+    text, subjects = diagnostic.message, diagnostic.subjects
+    if len(subjects) == 1:
+        return text.replace(f"'{subjects[0]}'", "'…'", 1)
+    if len(subjects) > 1:
+        for named in (f"s {names(subjects)}", f"'{subjects[0]}' (and {names(subjects[1:])} alike)"):
+            head, found, tail = text.partition(named)
+            if found:
+                return f"{head}{' ' if named.startswith('s ') else ''}'…'{tail}"
+    return text
+
+
 def with_fixes(loaded: Loaded, diagnostics: list[Diagnostic]) -> list[Diagnostic]:
     """The diagnostics with their fixes where the sources were written: a rule that a new
     ``<inertial>`` fixes gets the geometry's (unless it gave a fix of its own), then

@@ -61,6 +61,7 @@ from ..rules.tree import joint_link_not_found
 from ..rules.suppression import U001 as UNUSED_SUPPRESSION
 from ..model.result import Library, Result, Unreadable
 from .config import agreeing
+from .linter import unnamed
 
 XACRO_SUFFIXES = (".xacro", ".urdf", ".srdf")
 _SUBSTITUTION = re.compile(r"\$\(\s*(\w+)\s*([^()]*?)\s*\)|\$\{\s*([A-Za-z_]\w*)\s*\}")
@@ -200,14 +201,15 @@ _WORKSPACE_MARKS = ("build", "install", "log", "devel", ".catkin_workspace", ".c
 
 def _workspace_src(src: Path) -> bool:
     """Whether a folder named src holds a ROS workspace: built or marked beside it, or
-    holding packages one or two levels down in more than one of its folders."""
+    holding packages up to three levels down in more than one of its folders (a
+    repository may group its packages: create3_sim/irobot_create_common/<package>)."""
     if any((src.parent / mark).exists() for mark in _WORKSPACE_MARKS):
         return True
     try:
         children = [c for c in src.iterdir() if c.is_dir() and not c.name.startswith(".")]
     except OSError:
         return False
-    holding = sum(1 for c in children if (c / "package.xml").is_file() or any(c.glob("*/package.xml")))
+    holding = sum(1 for c in children if any(any(c.glob(pattern)) for pattern in ("package.xml", "*/package.xml", "*/*/package.xml")))
     return holding > 1
 
 
@@ -901,8 +903,9 @@ def _same_input(file: str, path: str) -> bool:
 
 
 def _key(diagnostic: Diagnostic) -> tuple:
+    """What one mistake says wherever it is found: a macro's, in each model calling it, whatever links it names."""
     location = diagnostic.location
-    return (diagnostic.code, location.file, location.line, location.column, diagnostic.message)
+    return (diagnostic.code, location.file, location.line, location.column, unnamed(diagnostic))
 
 
 # What a model's part read alone reports of the context its includer gives it: a name or

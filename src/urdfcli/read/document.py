@@ -281,11 +281,17 @@ def read_document(
         location = error.origin.location() if error.origin is not None else Location(error.file or shown)
         document = Document(path, None, file, is_xacro=True, includes=list(error.includes), files=files)
         document.missing_argument = error.missing_argument
-        return document, [Diagnostic(error.code, error.message, location, hint=error.hint)]
+        from . import xacro_warnings
+
+        said = [xacro_warnings.warning(text, origin.location() if origin is not None else Location(shown), files, True) for text, origin in error.reported]
+        return document, [*said, Diagnostic(error.code, error.message, location, hint=error.hint)]
     document = Document(path, result.text.encode("utf-8"), file, True, result.text, result.includes, result.origins, files)
     if not result.warnings:
         return document, []
     from . import xacro_warnings  # (only for an expansion xacro warned about: its words, fifteen patterns)
 
-    return document, [xacro_warnings.warning(text, origin.location() if origin is not None else Location(shown), files) for text, origin in result.warnings]
+    return document, [
+        xacro_warnings.warning(text, origin.location() if origin is not None else Location(shown), files, error)
+        for text, origin, error in result.warnings
+    ]
 

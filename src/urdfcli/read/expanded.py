@@ -27,7 +27,7 @@ class ExpansionError(Exception):
 
     def __init__(
         self, message: str, origin: Origin | None, file: str | None, code: str = "X003", includes: tuple[str, ...] = (),
-        missing_argument: str | None = None, hint: str | None = None,
+        missing_argument: str | None = None, hint: str | None = None, reported: tuple = (),
     ):
         super().__init__(message)
         self.message = message
@@ -37,9 +37,10 @@ class ExpansionError(Exception):
         self.includes = includes  # the files read before it stopped: a library it reached is affected
         self.missing_argument = missing_argument  # a $(arg NAME) that had no value
         self.hint = hint  # what to write instead, where it can be told
+        self.reported = reported  # (words, origin) of what the model said with xacro.error() before: often the cause
 
     def __reduce__(self):
-        return (ExpansionError, (self.message, self.origin, self.file, self.code, self.includes, self.missing_argument, self.hint))
+        return (ExpansionError, (self.message, self.origin, self.file, self.code, self.includes, self.missing_argument, self.hint, self.reported))
 
 
 class PackageNotFound(LookupError):
@@ -88,11 +89,12 @@ class Origins(Sequence):
 class Expansion:
     """A xacro document expanded: its text as the ``xacro`` tool prints it, where each
     of its elements was written (one origin per element, in document order), the
-    files it read, and xacro's warnings."""
+    files it read, and xacro's warnings (with the errors the model printed by
+    ``xacro.error()``, marked)."""
 
     __slots__ = ("text", "origins", "includes", "warnings")
 
-    def __init__(self, text: str, origins: Origins, includes: list[str], warnings: list[tuple[str, Origin | None]]):
+    def __init__(self, text: str, origins: Origins, includes: list[str], warnings: list[tuple[str, Origin | None, bool]]):
         self.text = text
         self.origins = origins
         self.includes = includes

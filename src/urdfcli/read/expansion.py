@@ -130,7 +130,7 @@ class _Session:
         self.calling: list[object] = []  # the macro calls being expanded, outermost first
         self.calls: list[Call] = []  # each macro call site once, by its index in TRACE attributes
         self.call_index: dict[Call, int] = {}
-        self.warnings: list[tuple[str, Origin | None]] = []
+        self.warnings: list[tuple[str, Origin | None, bool]] = []  # (words, where, whether the model's xacro.error())
         self.documents: list[xml.dom.minidom.Document] = []  # each file included, as parsed
 
     # -- where is xacro now --------------------------------------------------
@@ -337,6 +337,26 @@ class _Session:
                     return f'<property name="{name}">{where} is written without xacro:, which xacro 2 copies unread: write <xacro:property>'
         return None
 
+    def reported(self) -> tuple[tuple[str, Origin | None], ...]:
+        """What the model said with ``xacro.error()`` so far: before an expansion that then
+        stops, often why (Shadow's hand: a hand type its version does not fit, then the
+        include of that type's file fails)."""
+        return tuple((text, origin) for text, origin, error in self.warnings if error)
+
+    def macro_defined_below(self, doc: xml.dom.minidom.Document, message: str, call: Origin | None) -> str | None:
+        """For a call of a macro xacro does not know yet, that its own file defines further
+        down (xacro.py before ROS Jade gathered a file's macros first; xacro 2 reads in
+        order): where the definition is, and to move it above the call."""
+        found = _UNKNOWN_MACRO.search(message)
+        if found is None or call is None or not call.line:
+            return None
+        for document in (doc, *self.documents):
+            for element in document.getElementsByTagName("xacro:macro"):
+                origin = element.getUserData(XACRO_TAG_ORIGIN)
+                if element.getAttribute("name").removeprefix("xacro:") == found.group(1) and origin is not None and origin.file == call.file and (origin.line or 0) > call.line:
+                    return f"macro '{found.group(1)}' is defined below this call, at line {origin.line}: xacro reads a file from top to bottom; move the definition above its first call"
+        return None
+
     def installed_elsewhere(self, path: str) -> str | None:
         """For ``$(find NAME)/x/file`` that the sources of NAME, in the input's repository or
         workspace, lack: where they have that file, and how to check against the folders
@@ -476,7 +496,9 @@ def _short(error: BaseException) -> str:
 
 
 class _Stderr(io.StringIO):
-    """xacro's standard error: each ``warning:`` line kept with where xacro was when it began."""
+    """xacro's standard error: each ``warning:`` line kept with where xacro was when it began,
+    and each ``error:`` line, which only a model's ``xacro.error()`` prints while xacro
+    expands (xacro prints it and goes on; its own errors are raised)."""
 
     def __init__(self, session: _Session):
         super().__init__()
@@ -492,8 +514,9 @@ class _Stderr(io.StringIO):
             if piece.endswith("\n"):
                 line = "".join(self.line)
                 self.line = []
-                if line.startswith("warning: "):
-                    self.session.warnings.append((line[len("warning: "):].strip(), self.origin))
+                for label in ("warning: ", "error: "):
+                    if line.startswith(label):
+                        self.session.warnings.append((line[len(label):].strip(), self.origin, label == "error: "))
         return len(text)
 
 
@@ -521,6 +544,9 @@ def _missing_argument(message: str) -> tuple[str | None, str | None]:
     if meant is None:
         return name, None
     return None, f"did you mean $(arg {meant})? No <xacro:arg> declares '{name}'"
+
+
+_UNKNOWN_MACRO = re.compile(r"^unknown macro name: (?:xacro:)?([\w.-]+)")  # xacro's words for a call of a macro it has not read
 
 
 _INVALID_PARAMETER = re.compile(r'^Invalid parameter "([^"]+)"')  # xacro's words for a call giving a parameter its macro lacks
@@ -557,6 +583,7 @@ def expand_here(data: bytes, file: str | None, mappings: dict[str, str], resolve
             xacro.process_doc(doc, mappings=dict(mappings))
         except ExpansionError as error:
             error.includes = _included(resolver)
+            error.reported = session.reported()
             raise
         except RecursionError as error:
             names = [m.body.getAttribute("name") for m in (xacro.macrostack or [])[-3:]]
@@ -577,7 +604,8 @@ def expand_here(data: bytes, file: str | None, mappings: dict[str, str], resolve
             missing, hint = _missing_argument(message) if code == "X003" else (None, None)
             raise ExpansionError(
                 message, origin, display_path(current_file) if current_file else shown, code,
-                _included(resolver), missing, hint or getattr(error, "urdfcli_hint", None) or _parameter_hint(error, message) or session.unprefixed_property(doc, error),
+                _included(resolver), missing, hint or getattr(error, "urdfcli_hint", None) or _parameter_hint(error, message) or session.unprefixed_property(doc, error)
+                or session.macro_defined_below(doc, message, origin), session.reported(),
             ) from None
         finally:
             includes = list(_included(resolver))

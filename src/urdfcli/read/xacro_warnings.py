@@ -10,7 +10,7 @@ from __future__ import annotations
 
 import re
 
-from ..diagnostics import Applicability, Diagnostic, Edit, Fix, Location
+from ..diagnostics import Applicability, Diagnostic, Edit, Fix, Location, Severity
 from .files import SourceFiles
 
 # xacro's own words (xacro/__init__.py), and the fix for each
@@ -26,6 +26,7 @@ _FIXES = (
     (re.compile(r"inconsistent namespace redefinitions for ([\w:]+)"), "declare {0} with the same namespace in every file of the model"),
 )
 SAFE = Applicability.SAFE
+MODEL_ERROR = "the model reports this with xacro.error(), which xacro prints and goes on from: correct the arguments or the model"
 _DEPRECATED_CALL = re.compile(r"Using (\w+)\(\) directly is deprecated")
 _START_TAG = re.compile(r"""<[^\s/>]+(?:[^>"']|"[^"]*"|'[^']*')*>""")  # quoted values may hold '>'
 
@@ -44,10 +45,14 @@ _PREFIXED_MACRO = re.compile(r"macro names must not contain prefix 'xacro:': xac
 _MACRO_NAME = re.compile(r"""\sname\s*=\s*["']\s*(xacro:)""")
 
 
-def warning(text: str, location: Location, files: SourceFiles) -> Diagnostic:
+def warning(text: str, location: Location, files: SourceFiles, error: bool = False) -> Diagnostic:
     """X005 for one of xacro's warnings, at the element xacro was at (at the deprecated
     call itself, when the element's start tag holds it), with its fix; for a form xacro
-    still reads and has deprecated, the edit that writes it as xacro wants it."""
+    still reads and has deprecated, the edit that writes it as xacro wants it. An
+    ``error`` (the model's own ``xacro.error()``: its arguments are wrong) is an error:
+    xacro prints it and still writes a URDF, which the model says is not to be used."""
+    if error:
+        return Diagnostic("X005", text, location, severity=Severity.ERROR, hint=MODEL_ERROR)
     found = _DEPRECATED_CALL.search(text)
     if found is not None and location.line and location.column:
         location = _at_call(found.group(1), location, files)

@@ -514,19 +514,34 @@ def _folder_holding(loaded, uri: str, package: str):
     return next((folder for folder in (base / package, base, base.parent) if (folder / rest).is_file()), None)
 
 
+# What sdformat's URDF conversion gives a link (or its collisions and visuals) from a
+# <gazebo reference> block, and never a joint: under a joint's name, dropped.
+_LINK_PROPERTIES = frozenset((
+    "mu1", "mu2", "fdir1", "kp", "kd", "minDepth", "maxVel", "maxContacts", "laserRetro", "selfCollide",
+    "material", "gravity", "turnGravityOff", "dampingFactor",
+))
+
+
 def _known_names(loaded) -> set[str]:
     return set(loaded.robot.links) | set(loaded.robot.joints)
 
 
-@check("D006", "gazebo-reference-not-found", WARNING, "A `<gazebo reference>` naming no link or joint.", rule_set=RuleSet.LINT)
+@check("D006", "gazebo-reference-not-found", WARNING, "A `<gazebo reference>` naming no link or joint, or a joint for a link's properties.", rule_set=RuleSet.LINT)
 def gazebo_reference(loaded, given):
     """## What it does
     Flags a `<gazebo reference="...">` block whose reference is neither a link
-    nor a joint of the robot.
+    nor a joint of the robot, and one that names a joint (no link of that name)
+    but sets what Gazebo gives a link only: friction and contact (`<mu1>`,
+    `<mu2>`, `<kp>`, `<kd>`, `<fdir1>`, `<minDepth>`, `<maxVel>`...), a
+    `<material>`, `<selfCollide>`, `<gravity>`. The hint names the joint's
+    child link, which the block was likely meant for (AgileX's Limo names its
+    wheel joints `front_left_wheel` and sets their friction there).
 
     ## Why is this bad?
     Gazebo applies the block (sensors, materials, friction) to nothing, without
     a word: the camera or the wheel friction is simply missing in simulation.
+    sdformat reads a link's properties from a block only when the reference is
+    that link's name; under a joint's name they are dropped.
 
     ## Example
     ```xml
@@ -549,6 +564,15 @@ def gazebo_reference(loaded, given):
         reference = element.get("reference")
         if reference is not None and reference not in known:
             yield loaded.diagnostic("D006", f"<gazebo reference='{reference}'> names no link or joint", loaded.robot.place(element), _name_hint(reference, known))
+        elif reference in loaded.robot.joints and reference not in loaded.robot.links:
+            dropped = list(dict.fromkeys(child.tag for child in element if child.tag in _LINK_PROPERTIES))
+            if dropped:
+                child = loaded.robot.joints[reference].child
+                tags = ", ".join(f"<{tag}>" for tag in dropped)
+                yield loaded.diagnostic(
+                    "D006", f"<gazebo reference='{reference}'> names a joint, and Gazebo gives {tags} to links only: it drops them",
+                    loaded.robot.place(element), f"write reference='{child}', the joint's child link" if child else "name the link they are for",
+                )
 
 
 @check("D007", "transmission-joint-not-found", WARNING, "A transmission naming a joint that does not exist.", rule_set=RuleSet.LINT)

@@ -50,7 +50,8 @@ X004 = declare("X004", "package-not-found", ERROR, "A `$(find pkg)` names a pack
     '<robot name="r" xmlns:xacro="http://www.ros.org/wiki/xacro">\n  <xacro:include filename="$(find no_such_package)/urdf/arm.xacro"/>\n  <link name="base_link"/>\n</robot>',
     '<robot name="r" xmlns:xacro="http://www.ros.org/wiki/xacro">\n  <xacro:include filename="$(find my_robot)/urdf/arm.xacro"/>\n  <link name="base_link"/>\n</robot>'))
 X005 = declare("X005", "xacro-warning", WARNING, "xacro warned while expanding the file.", explain(
-    "Passes on a warning xacro printed while expanding (a redefined global symbol, ignored children of an include, unknown attributes).",
+    "Passes on a warning xacro printed while expanding (a redefined global symbol, ignored children of an include, unknown attributes), "
+    "and, as an error, what the model itself reports with `xacro.error()` (a wrong argument: xacro prints it and writes the URDF anyway).",
     "xacro expanded the file, but probably not as meant: a redefined `pi` changes every angle that uses it.",
     '<robot name="r" xmlns:xacro="http://www.ros.org/wiki/xacro">\n  <xacro:property name="pi" value="3"/>\n  <link name="base_link"/>\n</robot>',
     '<robot name="r" xmlns:xacro="http://www.ros.org/wiki/xacro">\n  <xacro:property name="half_turn" value="${pi}"/>\n  <link name="base_link"/>\n</robot>'),
