@@ -672,6 +672,23 @@ def test_a_consumer_leaves_nothing_in_the_temporary_folder(cases, tmp_path, targ
     assert list(temporary.iterdir()) == []
 
 
+def test_mujocos_fixed_base_note_hints_only_what_applies(tmp_path):
+    """C108: a robot fixed to a 'world' link on purpose (Shadow's hand) is not told to free its
+    base, and a robot with no fixed child is not told how to keep fused links."""
+    inertial = '<inertial><mass value="1"/><inertia ixx="0.01" ixy="0" ixz="0" iyy="0.01" iyz="0" izz="0.01"/></inertial>'
+    hand = tmp_path / "hand.urdf"
+    hand.write_text(f'<robot name="hand"><link name="world"/><link name="palm">{inertial}</link><link name="palm_frame"/>'
+                    '<joint name="w" type="fixed"><parent link="world"/><child link="palm"/></joint>'
+                    '<joint name="f" type="fixed"><parent link="palm"/><child link="palm_frame"/></joint></robot>\n')
+    rover = tmp_path / "rover.urdf"
+    rover.write_text(f'<robot name="rover"><link name="chassis">{inertial}</link></robot>\n')
+    for path, hint in ((hand, 'keep fused links with <mujoco><compiler fusestatic="false"/></mujoco>'),
+                       (rover, "for a free base, join the root to a massless 'world' link by a floating joint")):
+        done = run_cli("check", "--format", "json", "--target", "mujoco", str(path))
+        [found] = [d for d in json.loads(done.stdout)["files"][0]["diagnostics"] if d["code"] == "C108"]
+        assert found["hint"] == hint, found
+
+
 def test_load_reports_pybullets_own_reason(cases):
     """PyBullet's exception says only "Cannot load URDF file."; its reason is on its b3Warning lines."""
     require_consumer("pybullet")

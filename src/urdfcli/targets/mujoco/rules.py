@@ -339,8 +339,10 @@ def fixed_base(loaded, given):
         "C108",
         welds + ("; " if fused and welded else "") + also,
         link_at(loaded, root),
-        "for a free base, join the root to a massless 'world' link by a floating joint; "
-        'keep fused links with <mujoco><compiler fusestatic="false"/></mujoco>',
+        "; ".join(part for part in (
+            welded and "for a free base, join the root to a massless 'world' link by a floating joint",
+            fused and 'keep fused links with <mujoco><compiler fusestatic="false"/></mujoco>',
+        ) if part),  # (a root already named world is fixed on purpose: Shadow's hand)
         subjects=(*tops, *fused),
     )
 
