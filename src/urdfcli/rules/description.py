@@ -425,13 +425,15 @@ def _meant(loaded, uri: str, path, base) -> str | None:
     return f"did you mean '{written}'?"
 
 
-def _file_fix(loaded, at: int, uri: str, path, base) -> Fix:
-    """Name the one file of the missing file's folder that differs only in case or extension."""
+def _file_fix(loaded, at: int, uri: str, path, base) -> Fix | None:
+    """Name the one file of the missing file's folder that differs only in case or extension
+    (None when there is none: a missing file, which nothing here can fix)."""
     same = [p for p in near_misses(path) if p.parent == path.parent]
+    if not same:
+        return None  # (a "no fix" line under each missing mesh would say only that it is missing)
     title = f"name the file that exists instead of '{path.name}'"
     if len(same) != 1:
-        why = "no file of its folder differs from it only in case or extension" if not same else f"{len(same)} files of its folder could be meant"
-        return Fix(title, SAFE, reason=why)
+        return Fix(title, SAFE, reason=f"{len(same)} files of its folder could be meant")
     written = uri[: len(uri) - len(path.name)] + same[0].name if uri.endswith(path.name) else uri_like(loaded, uri, same[0], base)
     return Fix(f"write '{written}'", SAFE, changes=(SetAttribute(at, "filename", written),))
 
