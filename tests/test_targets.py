@@ -828,3 +828,28 @@ def test_gazebo_mimic_joints_a_mimic_plugin_drives_are_not_said_to_move_freely(t
     done = run_cli("lint", "--isolated", "--format", "json", "--target", "gazebo", str(path))
     said = [d["message"] for d in json.loads(done.stdout)["files"][0]["diagnostics"] if d["code"] == "C506"]
     assert said == ["Gazebo (sdformat 12) drops the <mimic> of mimic joint 'pad_joint' (of 'left_joint'): it moves freely"]
+
+
+def test_gazebo_says_why_a_lumped_link_counts_as_massless(tmp_path):
+    """Spot's arm_link_hr0: a link on a fixed joint with a mass of 1e-6 kg. sdformat 12 counts
+    it as massless and drops the moving joints below it; C501 gives the mass it has, not
+    "no mass", which its <inertial> would contradict."""
+    inertia = '<inertia ixx="1e-9" ixy="0" ixz="0" iyy="1e-9" iyz="0" izz="1e-9"/>'
+    body = '<link name="{n}"><inertial><mass value="{m}"/>' + inertia + '</inertial></link>'
+    moving = '<limit lower="-1" upper="1" effort="1" velocity="1"/>'
+    text = ('<robot name="arm">' + body.format(n="base", m="1")
+            + '<link name="shoulder"><inertial><mass value="1"/><inertia ixx="0.01" ixy="0" ixz="0" iyy="0.01" iyz="0" izz="0.01"/></inertial></link>'
+            + '<joint name="sh0" type="revolute"><parent link="base"/><child link="shoulder"/><axis xyz="0 0 1"/>' + moving + '</joint>'
+            + '{roll}<joint name="hr0" type="fixed"><parent link="shoulder"/><child link="roll"/></joint>'
+            + body.format(n="elbow", m="0.7")
+            + '<joint name="el0" type="revolute"><parent link="roll"/><child link="elbow"/><axis xyz="0 1 0"/>' + moving + '</joint></robot>\n')
+    said = {}
+    for name, roll in (("tiny", body.format(n="roll", m="1e-06")), ("none", '<link name="roll"/>')):
+        path = tmp_path / f"{name}.urdf"
+        path.write_text(text.replace("{roll}", roll))
+        done = run_cli("check", "--isolated", "--format", "json", "--target", "gazebo", str(path))
+        said[name] = [d["message"] for d in json.loads(done.stdout)["files"][0]["diagnostics"] if d["code"] == "C501"]
+    assert said == {
+        "tiny": ["Gazebo drops link 'elbow': it hangs below 'roll', which has a mass of 1e-06 kg, within 1e-6 of 0 (sdformat does not go below it)"],
+        "none": ["Gazebo drops link 'elbow': it hangs below 'roll', which has no <inertial> (sdformat does not go below it)"],
+    }

@@ -89,17 +89,18 @@ def build(loaded: Loaded, chosen: Profile) -> Build:
         visited.add(link)
         found = lump(link)
         if link != "world" and (not found.inertial or abs(found.mass) <= NO_MASS):
-            why = "it has no <inertial>" if not found.inertial else "its mass is 0" if found.mass == 0 else f"its mass {number(found.mass)} kg is within 1e-6 of 0"
+            massless = "has no <inertial>" if not found.inertial else "has a mass of 0" if found.mass == 0 else f"has a mass of {number(found.mass)} kg, within 1e-6 of 0"
             if lumped(joint):  # lumped, nothing of it lost: the moving joints below it go
+                because = f"below {link}, which {massless}"
                 for below in children.get(link, ()):
                     if not lumped(below) and below.child != link:
-                        dropped[below.child] = f"below {link}, which has no mass"
+                        dropped[below.child] = because
                         for further in subtree(loaded, below.child)[1:]:
-                            dropped.setdefault(further, f"below {link}, which has no mass")
+                            dropped.setdefault(further, because)
                     elif below.child != link:
-                        skip_lumped(below.child, link)
+                        skip_lumped(below.child, because)
                 return
-            dropped[link] = why
+            dropped[link] = f"it {massless}"
             for below in subtree(loaded, link)[1:]:
                 dropped.setdefault(below, f"below {link}, which is dropped")
             return
@@ -115,16 +116,16 @@ def build(loaded: Loaded, chosen: Profile) -> Build:
             if below.child != link and below.child not in dropped:
                 visit(below.child, below)
 
-    def skip_lumped(link: str, massless: str) -> None:
-        """A lumped link below a massless one is not visited: its moving joints go too."""
+    def skip_lumped(link: str, because: str) -> None:
+        """A lumped link below a massless one is not visited: its moving joints go too, for the same reason."""
         for below in children.get(link, ()):
             if below.child == link:
                 continue
             if lumped(below):
-                skip_lumped(below.child, massless)
+                skip_lumped(below.child, because)
             else:
                 for further in subtree(loaded, below.child):
-                    dropped.setdefault(further, f"below {massless}, which has no mass")
+                    dropped.setdefault(further, because)
 
     for root in walks(robot):
         visit(root, None)

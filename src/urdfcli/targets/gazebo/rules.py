@@ -44,7 +44,8 @@ def drops_link(loaded, given):
             also = f" and the {len(below)} link{'s' if len(below) > 1 else ''} below it ({names(below)})" if below else ""
             message = f"Gazebo drops link '{cause}'{also}: {why}"
         else:  # a massless link lumped on a fixed joint: the moving joints below it go
-            message = f"Gazebo drops link{'s' if len(gone) > 1 else ''} {names(gone)}: {'they hang' if len(gone) > 1 else 'it hangs'} below '{cause}', which has no mass (sdformat does not go below it)"
+            massless = built.dropped[gone[0]].split(", ", 1)[1]  # "which has no <inertial>", "which has a mass of 0", ...
+            message = f"Gazebo drops link{'s' if len(gone) > 1 else ''} {names(gone)}: {'they hang' if len(gone) > 1 else 'it hangs'} below '{cause}', {massless} (sdformat does not go below it)"
         yield loaded.diagnostic(
             "C501", message, link_at(loaded, cause),
             "give it an <inertial> with a small positive mass and tensor (more than 1e-6 kg)",
