@@ -601,6 +601,30 @@ def robot_and_moveit_config(root, robot: str, models: str, config: str, depends:
     (root / config / "package.xml").write_text(f'<package format="3"><name>{config}</name>{depend}</package>\n')
     return root / robot, root / config
 
+def test_the_urdf_a_setup_assistant_wrote_in_its_config_package_is_the_one_the_srdf_describes(tmp_path):
+    """spot_moveit_config: the Setup Assistant added ros2_control to the robot and wrote
+    config/spot.urdf.xacro, which sets arm:=true and includes spot_description's model, whose
+    arm is off by default; its .setup_assistant still names that model. moveit_configs_utils
+    loads config/spot.urdf.xacro, so the SRDF's arm is checked against the robot with its arm,
+    not said missing."""
+    robot, config = robot_and_moveit_config(tmp_path / "src", "spot_description", "urdf", "spot_moveit_config")
+    (robot / "urdf" / "spot.urdf.xacro").write_text(
+        '<robot name="spot" xmlns:xacro="http://www.ros.org/wiki/xacro">\n  <xacro:arg name="arm" default="false"/>\n'
+        '  <link name="body"/>\n  <xacro:if value="$(arg arm)"><link name="arm_link_sh0"/>'
+        '<joint name="arm_sh0" type="continuous"><parent link="body"/><child link="arm_link_sh0"/></joint></xacro:if>\n</robot>\n')
+    (config / "config" / "spot.urdf.xacro").write_text(
+        '<robot name="spot" xmlns:xacro="http://www.ros.org/wiki/xacro">\n  <xacro:arg name="arm" default="true"/>\n'
+        '  <xacro:include filename="$(find spot_description)/urdf/spot.urdf.xacro"/>\n</robot>\n')
+    (config / ".setup_assistant").write_text(
+        "moveit_setup_assistant_config:\n  urdf:\n    package: spot_description\n    relative_path: urdf/spot.urdf.xacro\n"
+        "  srdf:\n    relative_path: config/spot.srdf\n  modified_urdf:\n    xacros:\n      - control_xacro\n")
+    (config / "config" / "spot.srdf").write_text(
+        '<robot name="spot">\n  <group name="arm"><chain base_link="body" tip_link="arm_link_sh0"/></group>\n</robot>\n')
+    done, document = check("src/spot_moveit_config/config/spot.srdf", cwd=tmp_path)
+    assert done.returncode == 0 and found(document) == [], document
+    assert document["files"][0]["checked_against"] == "src/spot_moveit_config/config/spot.urdf.xacro"
+
+
 def test_a_moveit_1_setup_assistant_file_with_its_keys_in_capitals_names_the_urdf(tmp_path):
     """MoveIt 1's Setup Assistant writes URDF: and SRDF: in capitals. abb_irb6640_moveit_config's
     SRDF says robot 'abb_irb6640', the model it names says 'abb_irb6640_185_280', and no file is

@@ -20,8 +20,10 @@ A MoveIt config names its URDF itself: the ``.setup_assistant`` file at the top 
 its package gives the robot package, the file's path in it and the xacro arguments
 (``xacro_args: gripper:=robotiq_2f_85 dof:=7``), from which moveit_configs_utils builds
 the ``robot_description`` it pairs with the SRDF the file names (MoveIt 1's Setup
-Assistant writes the same file with the keys in capitals: ``URDF:``, ``SRDF:``). That URDF, with those
-arguments, is tried before any other.
+Assistant writes the same file with the keys in capitals: ``URDF:``, ``SRDF:``), unless the
+config package holds ``config/ROBOT.urdf.xacro``, the model the Setup Assistant wrote around
+that URDF to add ros2_control to it, which moveit_configs_utils loads instead. That URDF,
+with those arguments, is tried before any other.
 
 Of the candidates, a few at most are loaded (:data:`TRIES`), and the SRDF is
 checked against the one that lacks the fewest of the link and joint names it
@@ -122,10 +124,12 @@ def candidates(srdf: Path, index: Index, arguments_for: Callable[[Path], dict[st
                 yield file, depended
 
 
-def setup_assistant(srdf: Path, index: Index) -> tuple[Path, dict[str, str]] | None:
+def setup_assistant(srdf: Path, robot_name: str, index: Index) -> tuple[Path, dict[str, str]] | None:
     """The URDF, and its xacro arguments, that the ``.setup_assistant`` of the SRDF's
     package names for it; None when there is none, it names another SRDF, or its robot
-    package cannot be found."""
+    package cannot be found. When the Setup Assistant added to the URDF (ros2_control,
+    ``modified_urdf``), it wrote ``config/ROBOT.urdf.xacro`` in the config package, which
+    includes the robot package's model: moveit_configs_utils loads that one first."""
     package = index.packages.enclosing_package(srdf.parent)
     if package is None or not (package / SETUP_ASSISTANT).is_file():
         return None
@@ -141,11 +145,14 @@ def setup_assistant(srdf: Path, index: Index) -> tuple[Path, dict[str, str]] | N
         return None
     if not isinstance(named_srdf, str) or (package / named_srdf).resolve() != srdf:
         return None
+    # moveit_configs_utils splits xacro_args at white space, each NAME:=VALUE
+    arguments = dict(word.partition(":=")[::2] for word in str(urdf.get("xacro_args") or "").split() if ":=" in word)
+    modified = package / "config" / f"{robot_name}.urdf.xacro"
+    if modified.is_file():
+        return modified.resolve(), arguments
     folder = index.finder(srdf)(str(robot))
     if folder is None or not isinstance(relative, str):
         return None
-    # moveit_configs_utils splits xacro_args at white space, each NAME:=VALUE
-    arguments = dict(word.partition(":=")[::2] for word in str(urdf.get("xacro_args") or "").split() if ":=" in word)
     return (folder / relative).resolve(), arguments
 
 
@@ -197,7 +204,7 @@ def described(
     srdf = document.file.resolve()
     fits, failures, beside = [], [], False  # fits: (names the URDF lacks, order, path, model); failures: (order, why)
     unread: list[Loaded | str] = []  # what each failure read
-    named_by_config = setup_assistant(srdf, index)
+    named_by_config = setup_assistant(srdf, name, index)
     tried = None  # (file, arguments) of the URDF the .setup_assistant names, once read
     if named_by_config is not None:
         file, given = named_by_config
