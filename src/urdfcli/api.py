@@ -180,7 +180,7 @@ def run(paths: list[str], session: Session, progress: Progress | None = None, as
         return done[target]
 
     includers = fragment_includers(config_for, session.package_paths, session.packages, session.files) if session.options.libraries else (lambda path: [])
-    results, unreadable = assemble(entries, outcome, includers, _generated_from, session.packages.real_path)
+    results, unreadable = assemble(entries, outcome, includers, partial(_generated_from, session=session), session.packages.real_path)
     results += unread(aside, [r for r in done.values() if isinstance(r, Result)], results)
     results = [replace(result, show_info=config_for(result.path).show_info) for result in results]
     if session.options.load:
@@ -197,17 +197,13 @@ def _semantic_entries(entries: list[Entry], session: Session, config_for) -> lis
     return [Entry(path, model_targets(path, config_for(path).argument_sets(path))) for path in found]
 
 
-def _generated_from(path: str) -> Path | None:
-    """The xacro file a URDF says it was generated from, or that sits beside it under its
-    name (see :func:`urdfcli.project.drift.find_source`), when that file is at hand."""
+def _generated_from(path: str, session: Session) -> Path | None:
+    """The xacro file a URDF says it was generated from, beside it or in its package, or
+    that sits beside it under its name (see :func:`urdfcli.project.drift.find_source`): the
+    source X110 compares it with (unitree's urdf/go2_description.urdf, from xacro/robot.xacro)."""
     if path == STDIN or path.endswith(".xacro"):
         return None
-    try:
-        with open(path, "rb") as stream:
-            head = stream.read(drift_.HEAD_BYTES)
-    except OSError:
-        return None
-    found = drift_.find_source(Path(path), head, lambda: None, lambda folder: [])
+    found = drift_.generated_from(Path(path), session)
     return found.file.resolve() if found is not None else None
 
 
