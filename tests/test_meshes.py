@@ -73,6 +73,9 @@ def test_a_missing_mesh_with_no_file_like_it_has_no_hint_about_case(robot):
     write(robot / "meshes" / "base.stl", box())
     [error] = found(model(robot, link("arm", mesh("package://my_robot/meshes/arm.stl"))), "D004", RuleSet.CHECK)
     assert error.hint is None  # no file differs from it in case: saying file names are case-sensitive would send one looking for one
+    assert error.fix is None  # nor a "no fix" line under each missing mesh, saying only that it is missing
+    printed = run_cli("lint", model(robot, link("arm", mesh("package://my_robot/meshes/arm.stl")))).stdout.decode()
+    assert "D004 error" in printed and "no fix" not in printed
 
 
 def test_a_missing_mesh_names_another_extension_or_the_meshes_folder(robot):

@@ -89,3 +89,6 @@ def test_a_name_sharing_a_prefix_but_not_the_part_that_differs_is_not_offered():
     assert close_matches("panda_jiont1", names) == ["panda_joint1"]
     assert close_matches("rigth_hand", names) == ["right_hand"]
     assert close_matches("sensor_mount_sensor_link", names) == ["sensor_mount_link"]
+    # alike only in the suffix every name ends in: go2's stale 'stick_link', Limo's 'caster_wheel_link'
+    assert close_matches("stick_link", ["imu_link", "base_link"]) == [] and close_matches("imu_lnk", ["imu_link"]) == ["imu_link"]
+    assert close_matches("caster_wheel_link", ["laser_link", "base_link"]) == []
