@@ -809,3 +809,23 @@ def test_gazebo_mimic_joints_a_mimic_plugin_drives_are_not_said_to_move_freely(t
     done = run_cli("lint", "--isolated", "--format", "json", "--target", "gazebo", str(path))
     said = [d["message"] for d in json.loads(done.stdout)["files"][0]["diagnostics"] if d["code"] == "C506"]
     assert said == ["Gazebo (sdformat 12) drops the <mimic> of mimic joint 'pad_joint' (of 'left_joint'): it moves freely"]
+
+
+def test_a_moving_link_whose_tensor_mujoco_refuses_is_one_error(tmp_path):
+    """Fetch's gripper fingers: ixx alone, iyy = izz = 0, on a prismatic joint. MuJoCo stops
+    at the tensor ("inertia must have positive eigenvalues"), before its mass check: C103
+    says so, and C101 does not say it again of the same link."""
+    model = tmp_path / "gripper.urdf"
+    model.write_text(
+        '<robot name="r"><link name="palm"><inertial><mass value="1"/>'
+        '<inertia ixx="0.01" iyy="0.01" izz="0.01" ixy="0" ixz="0" iyz="0"/></inertial></link>'
+        '<link name="finger"><inertial><mass value="0.08"/>'
+        '<inertia ixx="0.002" iyy="0" izz="0" ixy="0" ixz="0" iyz="0"/></inertial></link>'
+        '<joint name="finger_joint" type="prismatic"><parent link="palm"/><child link="finger"/><axis xyz="0 1 0"/>'
+        '<limit lower="0" upper="0.05" effort="60" velocity="0.05"/></joint></robot>'
+    )
+    found = [(d.code, d.subjects) for d in predicted(model, profile("mujoco")).diagnostics if d.code in ("C101", "C103")]
+    assert found == [("C103", ("finger",))]
+    require_consumer("mujoco")
+    [real] = consumers.load("mujoco", [str(model)])
+    assert not real.accepted and "inertia must have positive eigenvalues" in real.error, real
