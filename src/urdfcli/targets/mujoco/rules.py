@@ -129,9 +129,10 @@ def inertia_not_positive(loaded, given):
 
 def _not_positive(loaded) -> dict[str, float]:
     """Each link whose declared tensor MuJoCo's fullinertia refuses (not all zero, a principal
-    moment below mjEPS), with that moment: the model stops there, before any mass check."""
+    moment below mjEPS), with that moment (rounding noise as 0): the model stops there, before
+    any mass check."""
     return {
-        name: declared.moments[0]
+        name: massprops.without_noise(declared.moments)[0]
         for name, declared in declared_tensors(loaded).items()
         if not declared.zero and declared.moments[0] < MJEPS
     }
