@@ -156,6 +156,8 @@ def one(tmp_path, old_text: str, new_text: str):
          "safety_controller k_velocity: 5 -> 6 (+20.00 %)"),
         ('multiplier="1" offset="0"', 'multiplier="-1" offset="0"', "changed", "joint[@name='elbow_mirror']", "mimic multiplier", 1, -1,
          "mimic multiplier: 1 -> -1 (-200.00 %)"),
+        ('    <dynamics damping="0.5" friction="0.1"/>\n', "", "removed", "joint[@name='shoulder']", "dynamics", [0.5, 0.1], None,
+         "dynamics removed (was damping 0.5, friction 0.1)"),
         ('<mimic joint="elbow" multiplier="1" offset="0"/>\n', "", "removed", "joint[@name='elbow_mirror']", "mimic", "elbow", None, "mimic removed (was elbow)"),
         ('<mass value="2"/>', '<mass value="2.4"/>', "changed", "link[@name='upper_arm']", "inertial mass", 2, 2.4, "inertial mass: 2 -> 2.4 (+20.00 %)"),
         ('<origin xyz="0 0 0.2" rpy="0 0 0"/>\n      <mass', '<origin xyz="0 0 0.21" rpy="0 0 0"/>\n      <mass', "changed", "link[@name='upper_arm']",
@@ -212,6 +214,17 @@ def test_each_kind_of_change_with_its_text_and_json(tmp_path, old_text, new_text
     written = path.read_text().splitlines()[entry["line"] - 1]
     edited = (old_text if kind == "removed" else new_text) or old_text
     assert any(line.strip() and line.strip() in written or written.strip() in line for line in edited.splitlines()), (written, edited)
+
+
+def test_a_joint_element_added_or_removed_whole_names_the_values_it_writes(tmp_path):
+    """Fetch's arm joints lost <dynamics damping="1"/> in its xacro: each value is named, and
+    the friction it does not write is left out, not shown as a bare "(none)"."""
+    damped = ARM.replace(' friction="0.1"', "")
+    plain = damped.replace('    <dynamics damping="0.5"/>\n', "")
+    [removed] = only(changes_of(tmp_path, plain, damped))
+    [added] = only(changes_of(tmp_path, damped, plain))
+    assert (removed.old, added.new) == ([0.5, None], [0.5, None])
+    assert (describe(removed), describe(added)) == ("dynamics removed (was damping 0.5)", "dynamics added: damping 0.5")
 
 
 def test_links_and_joints_added_and_removed(tmp_path):

@@ -367,6 +367,20 @@ def test_total_rotates_each_link_tensor_into_the_root_frame(tmp_path):
 
 
 # -- the command -------------------------------------------------------------------------
+def test_the_principal_moments_of_a_singular_tensor_are_said_without_rounding_noise(tmp_path):
+    """Sawyer's right_hand: all six elements 1e-08, moments exactly 0, 0, 3e-08. The solve
+    gives -6.6e-24 and 6.6e-24 for the zeros; text and JSON say 0, as the I006 beside them does."""
+    path = tmp_path / "hand.urdf"
+    path.write_text(
+        '<robot name="r"><link name="hand"><inertial><mass value="1e-08"/>'
+        '<inertia ixx="1e-08" ixy="1e-08" ixz="1e-08" iyy="1e-08" iyz="1e-08" izz="1e-08"/></inertial></link></robot>'
+    )
+    text = run_cli("inertia", str(path)).stdout.decode()
+    assert re.search(r"principal +0 0 3e-08\n", text), text
+    [link] = json.loads(run_cli("inertia", "--format", "json", str(path)).stdout)["links"]
+    assert link["principal"] == [0, 0, pytest.approx(3e-08)]
+
+
 def test_json_has_exactly_the_documented_shape():
     result = run_cli("inertia", "--format", "json", str(CAR))
     assert result.returncode == 1

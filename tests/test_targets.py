@@ -853,3 +853,43 @@ def test_gazebo_says_why_a_lumped_link_counts_as_massless(tmp_path):
         "tiny": ["Gazebo drops link 'elbow': it hangs below 'roll', which has a mass of 1e-06 kg, within 1e-6 of 0 (sdformat does not go below it)"],
         "none": ["Gazebo drops link 'elbow': it hangs below 'roll', which has no <inertial> (sdformat does not go below it)"],
     }
+
+
+def test_a_moving_link_whose_tensor_mujoco_refuses_is_one_error(tmp_path):
+    """Fetch's gripper fingers: ixx alone, iyy = izz = 0, on a prismatic joint. MuJoCo stops
+    at the tensor ("inertia must have positive eigenvalues"), before its mass check: C103
+    says so, and C101 does not say it again of the same link."""
+    model = tmp_path / "gripper.urdf"
+    model.write_text(
+        '<robot name="r"><link name="palm"><inertial><mass value="1"/>'
+        '<inertia ixx="0.01" iyy="0.01" izz="0.01" ixy="0" ixz="0" iyz="0"/></inertial></link>'
+        '<link name="finger"><inertial><mass value="0.08"/>'
+        '<inertia ixx="0.002" iyy="0" izz="0" ixy="0" ixz="0" iyz="0"/></inertial></link>'
+        '<joint name="finger_joint" type="prismatic"><parent link="palm"/><child link="finger"/><axis xyz="0 1 0"/>'
+        '<limit lower="0" upper="0.05" effort="60" velocity="0.05"/></joint></robot>'
+    )
+    found = [(d.code, d.subjects) for d in predicted(model, profile("mujoco")).diagnostics if d.code in ("C101", "C103")]
+    assert found == [("C103", ("finger",))]
+    require_consumer("mujoco")
+    [real] = consumers.load("mujoco", [str(model)])
+    assert not real.accepted and "inertia must have positive eigenvalues" in real.error, real
+
+
+def test_a_singular_tensor_mujoco_refuses_is_said_to_have_a_zero_moment_not_rounding_noise(tmp_path):
+    """Sawyer's right_hand: all six elements 1e-08, exactly singular (moments 0, 0, 3e-08).
+    The eigen solve gives -7e-24 for a 0; C103 says 0, as I006 does, not a negative moment."""
+    model = tmp_path / "hand.urdf"
+    model.write_text(
+        '<robot name="r"><link name="base"/><link name="l6"><inertial><mass value="0.3"/>'
+        '<inertia ixx="3e-4" iyy="2e-4" izz="3.5e-4" ixy="0" ixz="0" iyz="0"/></inertial></link>'
+        '<joint name="j6" type="revolute"><parent link="base"/><child link="l6"/><axis xyz="0 0 1"/>'
+        '<limit lower="-1" upper="1" effort="1" velocity="1"/></joint>'
+        '<link name="hand"><inertial><mass value="1e-08"/>'
+        '<inertia ixx="1e-08" ixy="1e-08" ixz="1e-08" iyy="1e-08" iyz="1e-08" izz="1e-08"/></inertial></link>'
+        '<joint name="hand_joint" type="fixed"><parent link="l6"/><child link="hand"/></joint></robot>'
+    )
+    found = [d.message for d in predicted(model, profile("mujoco")).diagnostics if d.code == "C103"]
+    assert found == ["MuJoCo rejects link 'hand': its inertia has a principal moment of 0; all must be at least 1e-14"]
+    require_consumer("mujoco")
+    [real] = consumers.load("mujoco", [str(model)])
+    assert not real.accepted and "inertia must have positive eigenvalues" in real.error, real

@@ -43,6 +43,13 @@ from .robot import INERTIA_KEYS, Geometry, Joint, Link, Material, Robot, Shape
 TOLERANCE = 1e-6
 """Default relative tolerance: two numbers closer than this fraction of the larger are equal."""
 FLOOR = 1e-12  # numbers closer than this are equal whatever their size (xacro's cos(pi/2) is 6e-17)
+# a joint's elements compared value by value, their values named in this order (a whole one added
+# or removed is the list of them)
+PARTS = {
+    "limit": ("lower", "upper", "effort", "velocity"),
+    "dynamics": ("damping", "friction"),
+    "safety_controller": ("soft_lower_limit", "soft_upper_limit", "k_position", "k_velocity"),
+}
 DOF = {"fixed": 0, "revolute": 1, "continuous": 1, "prismatic": 1, "planar": 3, "floating": 6}
 
 
@@ -489,11 +496,8 @@ class Comparer:
         if new.type not in ("fixed", "floating") or old.type not in ("fixed", "floating"):
             self.vector(element, "axis", old.axis, new.axis, new.part("axis") or new.at, "xyz")
         self.compare_limit(element, old, new)
-        self.compare_parts(element, "dynamics", old.dynamics, new.dynamics, old.part("dynamics"), new, ("damping", "friction"))
-        self.compare_parts(
-            element, "safety_controller", old.safety, new.safety, old.part("safety_controller"), new,
-            ("soft_lower_limit", "soft_upper_limit", "k_position", "k_velocity"),
-        )
+        self.compare_parts(element, "dynamics", old.dynamics, new.dynamics, old.part("dynamics"), new)
+        self.compare_parts(element, "safety_controller", old.safety, new.safety, old.part("safety_controller"), new)
         self.compare_mimic(element, old, new)
 
     def compare_limit(self, element: str, old: Joint, new: Joint) -> None:
@@ -506,10 +510,10 @@ class Comparer:
         if x is None:
             self.change("added", element, "limit", None, [y.lower, y.upper, y.effort, y.velocity], self.here(new.part("limit")))
             return
-        for key in ("lower", "upper", "effort", "velocity"):
+        for key in PARTS["limit"]:
             self.number(element, f"limit {key}", getattr(x, key), getattr(y, key), new.part("limit"), key)
 
-    def compare_parts(self, element: str, tag: str, x, y, old_at: int | None, new: Joint, keys: tuple[str, ...]) -> None:
+    def compare_parts(self, element: str, tag: str, x, y, old_at: int | None, new: Joint) -> None:
         """A joint's ``<dynamics>`` or ``<safety_controller>``: added, removed, or each value."""
         if x is None and y is None:
             return
@@ -518,7 +522,7 @@ class Comparer:
         elif x is None:
             self.change("added", element, tag, None, list(y), self.here(new.part(tag)))
         else:
-            for key, p, q in zip(keys, x, y):
+            for key, p, q in zip(PARTS[tag], x, y):
                 self.number(element, f"{tag} {key}", p, q, new.part(tag), key)
 
     def compare_mimic(self, element: str, old: Joint, new: Joint) -> None:

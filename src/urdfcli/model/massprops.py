@@ -128,6 +128,13 @@ def determinant(m: Matrix) -> float:
     )
 
 
+def without_noise(moments: Vector) -> Vector:
+    """Principal moments with those that are rounding noise next to the largest (the eigen
+    solve of an exactly singular tensor gives -7e-24, not 0) as 0."""
+    largest = max(map(abs, moments))
+    return tuple(0.0 if abs(m) <= 1e-9 * largest else m for m in moments)  # type: ignore[return-value]
+
+
 def triangle_violation(m: Matrix, rel_tol: float = 1e-6, moments: Vector | None = None) -> tuple[float, float, float] | None:
     """The principal moments when the two smaller sum to less than the largest (``moments``:
     those of ``m``, where they were worked out already)."""

@@ -15,7 +15,7 @@ from functools import partial
 from typing import Any, NamedTuple
 
 from ..diagnostics import Location
-from ..model.compare import Change, Comparison, Totals, text
+from ..model.compare import PARTS, Change, Comparison, Totals, text
 from ..model.numbers import NumberError, parse_double
 from . import DIFF_FORMATS
 from .console import Line, Output, write
@@ -117,6 +117,15 @@ def percent(fraction: float) -> str:
     return f"{value:+.{max(digits, 0)}f} %"
 
 
+def _whole_text(field: str, value: Any) -> str:
+    """A value added or removed whole; a joint's <limit>, <dynamics> or <safety_controller>
+    with each value named (``damping 1``), those it does not write left out."""
+    keys = PARTS.get(field)
+    if keys is None or not isinstance(value, list):
+        return value_text(value)
+    return ", ".join(f"{key} {value_text(part)}" for key, part in zip(keys, value) if part is not None) or "no values"
+
+
 def describe(change: Change) -> str:
     """What changed, in words: ``limit upper: 3.1415 -> 3.1416 (+0.0029 %)``."""
     field = change.field
@@ -125,9 +134,9 @@ def describe(change: Change) -> str:
     if field is None:
         return change.kind
     if change.kind == "added":
-        return f"{field} added" + (f": {value_text(change.new)}" if change.new is not None else "")
+        return f"{field} added" + (f": {_whole_text(field, change.new)}" if change.new is not None else "")
     if change.kind == "removed":
-        return f"{field} removed" + (f" (was {value_text(change.old)})" if change.old is not None else "")
+        return f"{field} removed" + (f" (was {_whole_text(field, change.old)})" if change.old is not None else "")
     if field == "pose":
         millimetres, degrees = change.moved or (0.0, 0.0)
         return f"pose at zero joint positions: moved {millimetres:.3g} mm, turned {degrees:.3g}°"

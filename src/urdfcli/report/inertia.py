@@ -50,6 +50,11 @@ def expected_from(entry: LinkAudit, loaded: Loaded) -> str:
     return entry.assessment.implied.source
 
 
+def _principal(tensor) -> tuple[float, float, float]:
+    """The principal moments as the rules say them: rounding noise of the solve as 0."""
+    return massprops.without_noise(massprops.principal_moments(tensor))
+
+
 def link_dict(entry: LinkAudit, loaded: Loaded) -> dict:
     link, found = entry.link, entry.assessment
     inertial = link.inertial
@@ -64,7 +69,7 @@ def link_dict(entry: LinkAudit, loaded: Loaded) -> dict:
         "mass_used": entry.mass,
         "com": _vector(inertial.origin.xyz) if inertial is not None else None,
         "inertia": _tensor(declared),
-        "principal": _vector(massprops.principal_moments(declared)) if declared is not None else None,
+        "principal": _vector(_principal(declared)) if declared is not None else None,
         "expected": _tensor(found.expected) if found is not None else None,
         "expected_from": expected_from(entry, loaded),
         "problems": [diagnostic_dict(d) for d in entry.problems],
@@ -113,7 +118,7 @@ def audit_lines(audit: Audit, show_name: bool) -> list[Line]:
         if found is not None:
             expected = found.expected
             lines.append(_row("declared", tensor_text(found.declared, expected)))
-            lines.append(_row("principal", " ".join(number(m) for m in massprops.principal_moments(found.declared))))
+            lines.append(_row("principal", " ".join(number(m) for m in _principal(found.declared))))
             if expected is not None:
                 style = "yellow" if found.off(audit.tolerance) else "green"
                 times = found.times()

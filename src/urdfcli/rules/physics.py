@@ -82,8 +82,7 @@ def tensor_of(inertial):
 
 def moments_text(moments) -> str:
     """Principal moments, with those that are noise next to the largest written as 0."""
-    largest = max(map(abs, moments))
-    return ", ".join("0" if abs(m) <= 1e-9 * largest else f"{m:.6g}" for m in moments)
+    return ", ".join(f"{m:.6g}" for m in massprops.without_noise(moments))
 
 
 @check("I001", "negative-mass", ERROR, "A link with negative mass.", kind=Kind.MASS, remedy=Remedy.INERTIAL)

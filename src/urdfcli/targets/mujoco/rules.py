@@ -28,7 +28,8 @@ STL_TRIANGLES = 200_000  # the most MuJoCo's STL decoder takes (src/user/user_me
         child link of the moving joint with every link fixed below it (MuJoCo fuses
         them, `fusestatic`); a link without `<inertial>` but with collision shapes gets
         their mass at 1000 kg/m³. Measures the declared masses and tensors; leaves alone
-        links whose mass comes from a mesh (its volume is not read).""",
+        links whose mass comes from a mesh (its volume is not read), and bodies with a
+        link whose tensor MuJoCo refuses on its own (C103): it stops there first.""",
         """MuJoCo refuses to load the model: "mass and inertia of moving bodies must be
         larger than mjMINVAL" (src/user/user_model.cc).""",
         arm(),
@@ -36,9 +37,12 @@ STL_TRIANGLES = 200_000  # the most MuJoCo's STL decoder takes (src/user/user_me
     ),
 )
 def massless_body(loaded, given):
+    refused = _not_positive(loaded)
     for body in build(loaded, given.profile).bodies:
         if body.joint is None or body.mass is None:
             continue
+        if any(name in refused for name in body.links):
+            continue  # MuJoCo stops at that link's tensor first: C103's
         if body.mass < MJMINVAL:
             why = f"its mass is {number(body.mass)}" if body.mass else "it has no mass"
         elif body.moments is not None and min(body.moments) < MJMINVAL:
@@ -112,19 +116,26 @@ def inertia_not_positive(loaded, given):
     </link>
     ```
     """
-    for name, declared in declared_tensors(loaded).items():
-        if declared.zero:
-            continue
-        smallest = declared.moments[0]
-        if smallest < MJEPS:
-            inertial = loaded.robot.links[name].inertial
-            yield loaded.diagnostic(
-                "C103",
-                f"MuJoCo rejects link '{name}': its inertia has a principal moment of {number(smallest)}; all must be at least 1e-14",
-                inertial.inertia_at or inertial.at,
-                "recompute the tensor (inertia --suggest prints one for its geometry)",
-                subjects=(name,),
-            )
+    for name, smallest in _not_positive(loaded).items():
+        inertial = loaded.robot.links[name].inertial
+        yield loaded.diagnostic(
+            "C103",
+            f"MuJoCo rejects link '{name}': its inertia has a principal moment of {number(smallest)}; all must be at least 1e-14",
+            inertial.inertia_at or inertial.at,
+            "recompute the tensor (inertia --suggest prints one for its geometry)",
+            subjects=(name,),
+        )
+
+
+def _not_positive(loaded) -> dict[str, float]:
+    """Each link whose declared tensor MuJoCo's fullinertia refuses (not all zero, a principal
+    moment below mjEPS), with that moment (rounding noise as 0): the model stops there, before
+    any mass check."""
+    return {
+        name: massprops.without_noise(declared.moments)[0]
+        for name, declared in declared_tensors(loaded).items()
+        if not declared.zero and declared.moments[0] < MJEPS
+    }
 
 
 def _meshes(loaded, discardvisual: bool) -> tuple:
