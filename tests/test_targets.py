@@ -855,6 +855,23 @@ def test_gazebo_says_why_a_lumped_link_counts_as_massless(tmp_path):
     }
 
 
+def test_gazebo_lumping_one_link_is_said_in_the_singular(tmp_path):
+    """ROBOTIS OP3's head: one camera frame on a fixed joint. C504 names it as one link
+    lumped into its parent, and two such frames as links lumped into their parents."""
+    inertial = '<inertial><mass value="0.1"/><inertia ixx="1e-4" ixy="0" ixz="0" iyy="1e-4" iyz="0" izz="1e-4"/></inertial>'
+    frame = '<link name="{n}"/><joint name="{n}_joint" type="fixed"><parent link="head"/><child link="{n}"/></joint>'
+    said = {}
+    for frames in (["cam_link"], ["cam_link", "imu_link"]):
+        path = tmp_path / f"head{len(frames)}.urdf"
+        path.write_text(f'<robot name="op3"><link name="head">{inertial}</link>' + "".join(frame.format(n=n) for n in frames) + "</robot>\n")
+        done = run_cli("check", "--isolated", "--format", "json", "--target", "gazebo", str(path))
+        said[len(frames)] = [d["message"] for d in json.loads(done.stdout)["files"][0]["diagnostics"] if d["code"] == "C504"]
+    assert said == {
+        1: ["Gazebo lumps 1 link into its parent on a fixed joint: 'cam_link'"],
+        2: ["Gazebo lumps 2 links into their parents on fixed joints: 'cam_link', 'imu_link'"],
+    }
+
+
 def test_a_moving_link_whose_tensor_mujoco_refuses_is_one_error(tmp_path):
     """Fetch's gripper fingers: ixx alone, iyy = izz = 0, on a prismatic joint. MuJoCo stops
     at the tensor ("inertia must have positive eigenvalues"), before its mass check: C103

@@ -123,9 +123,10 @@ def swaps_limits(loaded, given):
 def lumps_fixed_links(loaded, given):
     lumped = [link for body in build(loaded, given.profile).bodies for link in body.links[1:]]
     if lumped:
+        several = len(lumped) > 1
         yield loaded.diagnostic(
             "C504",
-            f"Gazebo lumps {len(lumped)} link{'s' if len(lumped) > 1 else ''} into their parents on fixed joints: {names(lumped)}",
+            f"Gazebo lumps {len(lumped)} link{'s' if several else ''} into {'their parents on fixed joints' if several else 'its parent on a fixed joint'}: {names(lumped)}",
             loaded.robot.at,
             'keep one with <gazebo reference="JOINT"><preserveFixedJoint>true</preserveFixedJoint></gazebo>',
             subjects=tuple(lumped),
