@@ -321,6 +321,17 @@ def test_a_moved_origin_displaces_every_link_below_it(tmp_path):
     assert lines[-1] == "1 changed; 4 links moved at zero joint positions"
 
 
+def test_a_move_of_a_metre_or_more_reads_in_whole_millimetres(tmp_path):
+    new = ARM.replace('<origin xyz="0 0 0.1" rpy="0 0 0"/>\n    <axis xyz="0 1 0"/>\n    <limit lower="-1.57"',
+                      '<origin xyz="0 0 1.35" rpy="0 0 0"/>\n    <axis xyz="0 1 0"/>\n    <limit lower="-1.57"')
+    changes_of(tmp_path, new)
+    done = run_cli("diff", str(tmp_path / "old.urdf"), str(tmp_path / "new.urdf"))
+    text = done.stdout.decode()
+    assert "origin xyz: 0 0 0.1 -> 0 0 1.35 (moved 1250 mm)" in text
+    assert "~ link 'upper_arm' moved 1250 mm, turned 0°  " in text
+    assert "e+0" not in text
+
+
 def test_a_turned_origin_moves_and_turns_the_links_below(tmp_path):
     new = ARM.replace('<origin xyz="0 0 0.4" rpy="0 0 0"/>', '<origin xyz="0 0 0.4" rpy="0 0.5235988 0"/>')  # elbow turned 30°
     changes = changes_of(tmp_path, new)

@@ -122,6 +122,19 @@ def test_xacro_errors_are_one_short_line_with_file_and_line(tmp_path, body, mess
     assert not out.exists()
 
 
+def test_a_warning_said_on_many_lines_is_printed_once_with_the_other_lines(tmp_path):
+    args = "".join(f'  <xacro:arg name="a{n}" default="1" scope="local"/>\n' for n in range(3))
+    path = tmp_path / "arm.urdf.xacro"
+    path.write_text(f'<robot name="r" xmlns:xacro="http://www.ros.org/wiki/xacro">\n{args}  <link name="base"/>\n</robot>\n')
+    done = run_cli("expand", str(path), cwd=tmp_path)
+    stderr = done.stderr.decode()
+    assert done.returncode == 0, stderr
+    assert stderr.count("unknown attribute(s): scope") == 1
+    assert stderr.startswith("arm.urdf.xacro:2:")
+    assert "note: also at lines 3 and 4" in stderr
+    assert '<link name="base"/>' in done.stdout.decode()
+
+
 def test_a_chain_of_macros_nests_as_deep_as_under_the_xacro_tool(tmp_path):
     """A cable or snake robot made by a macro that calls itself for the next segment:
     200 levels, which the xacro tool expands. urdfcli's bookkeeping around xacro's calls

@@ -289,6 +289,19 @@ def test_computed_limits_read_short_and_a_mimic_says_its_multiplier(tmp_path):
     assert "mimics joint_1 * -1 + 0.5)" in run_cli("tree", "--ascii", str(path)).stdout.decode()
 
 
+def test_an_axis_written_with_negative_zeros_reads_without_them(tmp_path):
+    """Denso's VS060 writes its axes as an exporter does: -0.000000 1.000000 -0.000000."""
+    path = tmp_path / "arm.urdf"
+    path.write_text(
+        '<robot name="arm"><link name="base_link"/><link name="J1"/>'
+        '<joint name="joint_1" type="revolute"><parent link="base_link"/><child link="J1"/><axis xyz="-0.000000 1.000000 -0.000000"/>'
+        '<limit lower="-1" upper="1" effort="1" velocity="1"/></joint></robot>\n')
+    out = run_cli("tree", str(path)).stdout.decode()
+    assert "joint_1 (revolute, axis 0 1 0, " in out, out
+    dot = run_cli("graph", "--format", "dot", str(path)).stdout.decode()
+    assert "axis 0 1 0" in dot and "-0" not in dot, dot
+
+
 def test_a_computed_small_limit_reads_short(tmp_path):
     """${1/30000} is 3.3333333333333335e-05 in xacro's output: its exponent does not keep all its digits."""
     path = tmp_path / "slide.urdf"

@@ -7,7 +7,7 @@ from .. import api
 from ..model.kinematics import roots
 from ..model.result import Result, Unreadable
 from ..report.console import Output, write
-from ..report.lines import diagnostic_lines
+from ..report.lines import diagnostics_lines
 from ..report.targets import joint_notes, link_notes
 from ..rules import REGISTRY, Kind
 from ..rules.suggestions import close_matches
@@ -43,7 +43,7 @@ def report_errors(result: Result, output: Output, session: Session) -> bool:
     """Print the model's errors on stderr as `check` prints them; whether there were any.
     A missing or unreadable mesh is no error of the tree: it is left to `check`."""
     errors = [d for d in result.errors if REGISTRY[d.code].kind is not Kind.FILES]
-    write(output.err, (line for d in errors for line in diagnostic_lines(d, session.files)))
+    write(output.err, diagnostics_lines(errors, session.files))
     loaded = result.loaded
     return bool(errors) or loaded is None or not loaded.modelled
 

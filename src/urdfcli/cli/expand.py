@@ -34,7 +34,7 @@ def expand(
     A xacro error is one line with file:line, exit 1, and no output file.
     """
     from .. import api
-    from ..report.lines import diagnostic_lines
+    from ..report.lines import diagnostics_lines
 
     paths, mappings = split_inputs(inputs)
     if len(paths) != 1:
@@ -45,7 +45,7 @@ def expand(
         console.err.file.write("urdfcli: warning: --inorder does nothing: in-order processing is xacro's only mode since ROS Melodic; drop the option\n")
     with session_for(Options(arguments=tuple(mappings.items()), package_paths=tuple(package_path or ()), config=config, isolated=isolated)) as session:
         text, includes, diagnostics = api.expand(path, session)
-    write(console.err, (line for d in diagnostics for line in diagnostic_lines(d, None)))
+    write(console.err, diagnostics_lines(diagnostics, None))
     if text is None or any(d.severity is Severity.ERROR for d in diagnostics):
         raise SystemExit(Exit.PROBLEMS)
     text = "".join(f"{escape(name)}\n" for name in includes) if deps else text

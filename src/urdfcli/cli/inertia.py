@@ -58,7 +58,7 @@ def inertia(
     Exit 0 when nothing is found, 1 on any warning or error, 2 when it cannot run.
     """
     from .. import api
-    from ..report.lines import diagnostic_lines
+    from ..report.lines import diagnostics_lines
 
     output_format = choose(output_format, ("text", "json"))
     if not tolerance > 0:
@@ -83,7 +83,7 @@ def inertia(
         srdf = next((r for r in found.results if r.loaded is not None and r.loaded.semantic is not None), None)
         if srdf is not None:
             raise fail(not_a_robot(srdf.path))
-        write(output.err, (line for result in found.results for d in result.errors for line in diagnostic_lines(d, None)))
+        write(output.err, diagnostics_lines((d for result in found.results for d in result.errors), None))
         report.reporter(options.format)(output, session.files).audit(found.results)
     if found.unreadable:
         raise SystemExit(Exit.CANNOT_RUN)

@@ -83,6 +83,13 @@ def number_text(value: float, digits: int = 6) -> str:
     return readable(value, digits, WRITTEN)
 
 
+def amount(value: float) -> str:
+    """A displacement (mm) or a turn (degrees) to 3 significant digits, written out:
+    a link moved by a metre reads ``1000 mm``, not ``1e+03 mm``."""
+    said = short(value, 3)
+    return f"{value:.0f}" if "e+" in said else said
+
+
 def value_text(value: Any, digits: int = 6) -> str:
     """A value of a change as people read it (:data:`WRITTEN`): a number, the numbers of a
     list, and those of a text (a shape ``box 0.30000000000000004 0.1 0.1``, a colour, a
@@ -139,13 +146,13 @@ def describe(change: Change) -> str:
         return f"{field} removed" + (f" (was {_whole_text(field, change.old)})" if change.old is not None else "")
     if field == "pose":
         millimetres, degrees = change.moved or (0.0, 0.0)
-        return f"pose at zero joint positions: moved {millimetres:.3g} mm, turned {degrees:.3g}°"
+        return f"pose at zero joint positions: moved {amount(millimetres)} mm, turned {amount(degrees)}°"
     said = "{}: {} -> {}".format(field, *values_text(change.old, change.new))
     if change.relative is not None:
         said += f" ({percent(change.relative)})"
     elif change.moved is not None:
         millimetres, degrees = change.moved
-        said += f" (moved {millimetres:.3g} mm)" if millimetres else f" (turned {degrees:.3g}°)"
+        said += f" (moved {amount(millimetres)} mm)" if millimetres else f" (turned {amount(degrees)}°)"
     return said
 
 
@@ -223,7 +230,7 @@ def text_lines(difference: Difference) -> list[Line]:
             millimetres, degrees = change.moved or (0.0, 0.0)
             lines.append([
                 ("~ ", STYLES["~"]), (escape(element_words(change.element)), "bold"),
-                (f" moved {millimetres:.3g} mm, turned {degrees:.3g}°", ""), (f"  {escape(where_made(change.location))}", "dim"),
+                (f" moved {amount(millimetres)} mm, turned {amount(degrees)}°", ""), (f"  {escape(where_made(change.location))}", "dim"),
             ])
     lines.append([(summary_text(comparison), "bold")])
     return lines

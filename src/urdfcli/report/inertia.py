@@ -15,7 +15,7 @@ from ..model.massprops import number, tensor_text
 from ..rules import REGISTRY
 from .console import Line, Output, write
 from .escape import escape
-from .lines import diagnostic_dict, diagnostic_lines, plural
+from .lines import diagnostic_dict, diagnostics_lines, plural
 from .targets import build_dict, inertia_lines
 
 if TYPE_CHECKING:
@@ -150,7 +150,7 @@ def write_audit(results: list[Result], output: Output) -> None:
     for result in results:
         if result.audit is not None:
             write(output.out, audit_lines(result.audit, show_name=len(results) > 1))
-            write(output.err, (line for d in result.audit.problems for line in diagnostic_lines(d, None)))
+            write(output.err, diagnostics_lines(result.audit.problems, None))
             if result.audit.suggestions:
                 write(output.out, [[("", "")], *([(escape(line), "")] for text in result.audit.suggestions for line in text.split("\n"))])
     problems = problem_count(results)

@@ -3,7 +3,7 @@ macro calls that made its element, its source excerpt, a library's notes, the su
 
 from __future__ import annotations
 
-from collections.abc import Iterable
+from collections.abc import Iterable, Iterator
 from typing import TYPE_CHECKING
 
 from ..diagnostics import Diagnostic, Fix, Severity
@@ -226,6 +226,12 @@ def diagnostic_lines(diagnostic: Diagnostic, files: SourceFiles | SourcesOnce | 
         lines += [[(part, "dim")] for part in (wrap_line(line, width, " " * 10) if width else [line])]
     excerpt = excerpt_lines(diagnostic, files, width) if files is not None else []
     return lines + [[(line, "dim")] for line in excerpt]
+
+
+def diagnostics_lines(diagnostics: Iterable[Diagnostic], files: SourceFiles | SourcesOnce | None, width: int | None = None) -> Iterator[Line]:
+    """The diagnostics as :func:`diagnostic_lines` shows each, the alike said once (see
+    :func:`alike_as_one`): ten ``<xacro:arg scope=...>`` are one warning wherever it prints."""
+    return (line for diagnostic, also in alike_as_one(list(diagnostics)) for line in diagnostic_lines(diagnostic, files, width, also))
 
 
 def wrapped(text: str, width: int | None, used: int = 0) -> list[str]:

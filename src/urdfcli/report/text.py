@@ -18,7 +18,7 @@ from .base import Reporter
 from .check_urdf import tree_lines
 from .console import Line, Output, Stream, rich_console, write
 from .escape import escape
-from .lines import SourcesOnce, alike_as_one, diagnostic_lines, fixable_line, library_lines, plural, summary_line, wrap_line
+from .lines import SourcesOnce, diagnostics_lines, fixable_line, library_lines, plural, summary_line, wrap_line
 from .targets import compatibility_lines
 
 if TYPE_CHECKING:
@@ -93,7 +93,7 @@ class TextReporter(Reporter):
     def _diagnostics(self, result: Result, target: Stream | Console) -> Iterator[Line]:
         width = _width(target)
         files = SourcesOnce(self.files)
-        return (line for diagnostic, also in alike_as_one(result.displayed) for line in diagnostic_lines(diagnostic, files, width, also))
+        return diagnostics_lines(result.displayed, files, width)
 
     def _summary(self, results: list[Result], target: Stream | Console, fixes: bool) -> None:
         if not self.output.quiet:

@@ -105,7 +105,9 @@ def readable(value: float, digits: int = 6, written: int = 7) -> str:
 
 
 def axis_text(axis: Vec3, number: Callable[[float], str] = format_number) -> str:
-    return " ".join(number(v) for v in axis)
+    """An axis as people read it: a CAD exporter's ``-0.000000 1.000000 -0.000000`` reads ``0 1 0``
+    (adding 0.0 drops the sign of a zero, the one difference between -0 and 0)."""
+    return " ".join(number(v + 0.0) for v in axis)
 
 
 def limit_text(joint: Joint, number: Callable[[float], str] = format_number, ascii_only: bool = False, full: bool = False) -> str:
