@@ -78,14 +78,10 @@ def triangle_inequality(loaded, given):
         positive = not declared.zero and declared.moments[0] > 0  # else C103's
         broken = massprops.triangle_violation(declared.written, rel_tol=1e-9, moments=declared.written_moments) if positive else None  # MuJoCo compares without a margin
         if broken is not None:
-            inertial = loaded.robot.links[name].inertial
             a, b, c = broken
-            yield loaded.diagnostic(
-                "C102",
-                f"MuJoCo rejects link '{name}': its inertia breaks the triangle inequality A + B >= C ({number(a)} + {number(b)} < {number(c)})",
-                inertial.inertia_at or inertial.at,
+            yield _rejected_tensor(
+                loaded, "C102", name, f"breaks the triangle inequality A + B >= C ({number(a)} + {number(b)} < {number(c)})",
                 'fix the tensor, or let MuJoCo raise the small moments: <mujoco><compiler balanceinertia="true"/></mujoco>',
-                subjects=(name,),
             )
 
 
@@ -117,14 +113,16 @@ def inertia_not_positive(loaded, given):
     ```
     """
     for name, smallest in _not_positive(loaded).items():
-        inertial = loaded.robot.links[name].inertial
-        yield loaded.diagnostic(
-            "C103",
-            f"MuJoCo rejects link '{name}': its inertia has a principal moment of {number(smallest)}; all must be at least 1e-14",
-            inertial.inertia_at or inertial.at,
+        yield _rejected_tensor(
+            loaded, "C103", name, f"has a principal moment of {number(smallest)}; all must be at least 1e-14",
             "recompute the tensor (inertia --suggest prints one for its geometry)",
-            subjects=(name,),
         )
+
+
+def _rejected_tensor(loaded, code: str, name: str, why: str, hint: str):
+    """A link's inertia MuJoCo refuses, at its <inertia>."""
+    inertial = loaded.robot.links[name].inertial
+    return loaded.diagnostic(code, f"MuJoCo rejects link '{name}': its inertia {why}", inertial.inertia_at or inertial.at, hint, subjects=(name,))
 
 
 def _not_positive(loaded) -> dict[str, float]:
