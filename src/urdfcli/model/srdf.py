@@ -147,10 +147,9 @@ def missing_attributes(root: Element, index: dict[Element, int], unknown: list[U
     for element, place, outer in _read_elements(root):
         within = None if outer is None else f"<{tag_name(outer)}>" + (f" '{outer.get('name')}'" if outer.get("name") else "")
         at = index[element]
-        for attribute in REQUIRED.get(place, ()):
-            if element.get(attribute) is None:
-                written = [u for u in unknown if u.at == at and u.attribute]
-                found.append(Missing(at, place, attribute, element.get("name"), within, _written_for(attribute, written)))
+        lacking = [attribute for attribute in REQUIRED.get(place, ()) if element.get(attribute) is None]
+        written = [u for u in unknown if u.at == at and u.attribute] if lacking else []
+        found.extend(Missing(at, place, attribute, element.get("name"), within, _written_for(attribute, written)) for attribute in lacking)
     return found
 
 
