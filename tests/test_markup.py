@@ -409,6 +409,25 @@ def test_a_link_property_under_a_joint_name_is_said_dropped_and_the_child_link_n
         assert [d for d in lint_file(str(path), Config()).diagnostics if d.code == "D006"] == []
 
 
+def test_a_link_property_written_twice_in_one_gazebo_block_is_said_at_the_value_gazebo_ignores(tmp_path):
+    """ROBOTIS OP3's ankle: <mu1>9000</mu1>, then <mu1>1.5</mu1> in one block. sdformat keeps
+    the last without a word (its own conversion shows it). The same value twice, and a value
+    set again in a second block for the link (an override sdformat warns of), are left alone."""
+    inertial = '<inertial><mass value="1"/><inertia ixx="1" iyy="1" izz="1" ixy="0" ixz="0" iyz="0"/></inertial>'
+    link = f'<link name="foot">{inertial}<collision><geometry><sphere radius="0.1"/></geometry></collision></link>'
+    path = tmp_path / "robot.urdf"
+    path.write_text(f'<robot name="r">\n{link}\n<gazebo reference="foot">\n<mu1>0.9123</mu1>\n<mu2>0.5</mu2>\n<mu1>0.4567</mu1>\n<mu2>0.5</mu2>\n</gazebo>\n</robot>\n')
+    converted = subprocess.run([require_tool("ign"), "sdf", "-p", str(path)], capture_output=True, text=True, env={**os.environ, "HOME": str(tmp_path)})
+    assert "0.4567" in converted.stdout and "0.9123" not in converted.stdout, converted.stdout
+    [diagnostic] = [d for d in lint_file(str(path), Config()).diagnostics if d.code == "D014"]
+    assert diagnostic.message == "<gazebo reference='foot'> sets <mu1> twice, to 0.9123 and then 0.4567: Gazebo keeps 0.4567"
+    assert diagnostic.line == 4
+    for blocks in ('<gazebo reference="foot"><mu1>0.5</mu1><mu1>0.5</mu1></gazebo>',
+                   '<gazebo reference="foot"><mu1>0.9</mu1></gazebo><gazebo reference="foot"><mu1>0.4</mu1></gazebo>'):
+        path.write_text(f'<robot name="r">{link}{blocks}</robot>\n')
+        assert [d for d in lint_file(str(path), Config()).diagnostics if d.code == "D014"] == []
+
+
 TF_PREFIXED = """<robot name="mir">
   <link name="robot1/base_link"/>
   <link name="robot1/front_laser_link"/>

@@ -577,6 +577,59 @@ def gazebo_reference(loaded, given):
                 )
 
 
+@check("D014", "gazebo-property-set-twice", WARNING, "A `<gazebo reference>` block setting one link property twice, to different values.", rule_set=RuleSet.LINT)
+def gazebo_property_twice(loaded, given):
+    """## What it does
+    Flags a link property (`<mu1>`, `<mu2>`, `<kp>`, `<kd>`, `<material>`,
+    `<selfCollide>`, `<gravity>`...) written twice in one `<gazebo reference>`
+    block with different values, at the value Gazebo ignores. Leaves alone the
+    same value written twice, and a property set again in another block for the
+    same link (a library's default overridden by the model; sdformat warns of
+    those itself).
+
+    ## Why is this bad?
+    sdformat keeps the last value without a word (ROBOTIS OP3's ankle sets
+    `<mu1>9000</mu1>`, then `<mu1>1.5</mu1>`): whoever reads the block, or tunes
+    the first value, is misled about the friction the simulation uses.
+
+    ## Example
+    ```xml
+    <link name="foot"/>
+    <gazebo reference="foot">
+      <mu1>9000</mu1>
+      <mu1>1.5</mu1>
+    </gazebo>
+    ```
+
+    ## Use instead
+    ```xml
+    <link name="foot"/>
+    <gazebo reference="foot">
+      <mu1>1.5</mu1>
+    </gazebo>
+    ```
+    """
+    for block in loaded.robot.blocks("gazebo"):
+        reference = block.get("reference")
+        if reference not in loaded.robot.links:
+            continue
+        last: dict[str, object] = {}
+        for element in reversed(block):
+            if element.tag not in _LINK_PROPERTIES:
+                continue
+            kept = last.setdefault(element.tag, element)
+            if kept is not element and _written(kept) != _written(element):
+                yield loaded.diagnostic(
+                    "D014", f"<gazebo reference='{reference}'> sets <{element.tag}> twice, to {_written(element)} and then {_written(kept)}: Gazebo keeps {_written(kept)}",
+                    loaded.robot.place(element), "remove the value Gazebo ignores",
+                )
+
+
+def _written(element) -> str:
+    """An element's text as one line, for saying which value is kept."""
+    return " ".join("".join(element.itertext()).split()) or "nothing"
+
+
 @check("D007", "transmission-joint-not-found", WARNING, "A transmission naming a joint that does not exist.", rule_set=RuleSet.LINT)
 def transmission_joint(loaded, given):
     """## What it does
