@@ -707,6 +707,31 @@ def test_a_name_the_urdf_lacks_is_said_once_with_the_number_of_elements_giving_i
     assert concise.count("'bicep_link'") == 1 and concise.count("'j3'") == 1, concise
 
 
+def test_a_collision_pair_naming_a_link_the_urdf_lacks_is_offered_only_links_that_collide(tmp_path):
+    """rosbot_xl_manipulation's SRDF pairs 'left_antenna_link' with the body, the URDF has one
+    antenna: 'antenna_link' under 'antenna_connector_link', which has only a visual. A pair of a
+    link without collision geometry disables nothing: it is no suggestion for a name that only
+    pairs give, however close ('camera_body_link', a frame, for 'camera_link' beside the
+    'camera_mount_link' that collides)."""
+    box = '<collision><geometry><box size="0.1 0.1 0.1"/></geometry></collision>'
+    visual = '<visual><geometry><box size="0.01 0.01 0.01"/></geometry></visual>'
+    links = {"base_link": box, "antenna_connector_link": visual, "antenna_link": box, "camera_body_link": "", "camera_mount_link": box}
+    (tmp_path / "rover.urdf").write_text(
+        '<robot name="rover">' + "".join(f'<link name="{name}">{shapes}</link>' for name, shapes in links.items())
+        + "".join(f'<joint name="to_{name}" type="fixed"><parent link="base_link"/><child link="{name}"/></joint>' for name in list(links)[1:])
+        + "</robot>\n")
+    (tmp_path / "rover.srdf").write_text(
+        '<robot name="rover">\n'
+        '  <disable_collisions link1="left_antenna_link" link2="base_link" reason="Adjacent"/>\n'
+        '  <disable_collisions link1="camera_link" link2="base_link" reason="Adjacent"/>\n</robot>\n')
+    done, document = check("rover.srdf", "--urdf", "rover.urdf", cwd=tmp_path)
+    assert done.returncode == 0
+    assert [(d["code"], d["subjects"], d["hint"]) for d in document["files"][0]["diagnostics"]] == [
+        ("K001", ["left_antenna_link"], "use a link of rover.urdf, or check that the SRDF is for this robot"),
+        ("K001", ["camera_link"], "did you mean 'camera_mount_link'?"),
+    ]
+
+
 def test_an_srdf_written_without_the_prefix_of_every_urdf_name_is_one_finding_per_kind(tmp_path):
     """lbr_fri_ros2_stack's iiwa7.srdf names link_0 ... link_ee and A1 ... A7, its iiwa7.xacro
     makes them with robot_name:=lbr in front: 16 errors and 50 warnings, each 'did you mean

@@ -56,7 +56,10 @@ def find_source(
     named = header_source(head)
     if named is not None:
         found = _header_file(urdf, named, package, files_below, real_path)
-        return GeneratedFrom(found, named) if found is not None else None
+        if found is not None:
+            return GeneratedFrom(found, named)
+    # a header naming a file that is gone (a URDF copied from another robot's package)
+    # leaves the xacro of its name beside it as its source
     if urdf.suffix != ".urdf":
         return None
     for candidate in (urdf.with_name(urdf.name + ".xacro"), urdf.with_suffix(".xacro")):

@@ -52,12 +52,14 @@ def _against(loaded: Loaded):
 PAIR = "<disable_collisions>"  # what names the links of a collision pair
 
 
-def _missing_once(loaded: Loaded, code: str, kind: str, named: list[tuple[str, Named]], known, pairs=()) -> Iterator[Diagnostic]:
+def _missing_once(loaded: Loaded, code: str, kind: str, named: list[tuple[str, Named]], known, pairs=(), colliding=None) -> Iterator[Diagnostic]:
     """Each name of a ``kind`` the URDF lacks, said once (one cause, however many elements
     give it): at the first element naming it, one of ``named`` before a collision pair of
     ``pairs`` (``(link, other)``: a warning when only pairs name it), counting the others.
     The hint is the same wherever the name is: the URDF's closest name, but those the name is
-    paired with (a link does not collide with itself, so none of them is the one meant)."""
+    paired with (a link does not collide with itself, so none of them is the one meant); for a
+    name only pairs give, one of ``colliding`` (when given): a pair of a link without collision
+    geometry disables nothing, so that link is not the one meant."""
     uses: dict[str, list[tuple[str, Named]]] = {}
     ordered = sorted(named, key=lambda use: use[1].at) + sorted(((PAIR, link) for link, _ in pairs), key=lambda use: use[1].at)
     for what, name in ordered:
@@ -68,7 +70,8 @@ def _missing_once(loaded: Loaded, code: str, kind: str, named: list[tuple[str, N
         partners.setdefault(link.name, set()).add(other.name)
     for name, found in uses.items():
         what, first = found[0]
-        close = close_matches(name, [k for k in known if k not in partners.get(name, ())])
+        offered = colliding if what == PAIR and colliding is not None else known
+        close = close_matches(name, [k for k in offered if k not in partners.get(name, ())])
         hint = f"did you mean '{close[0]}'?" if close else f"use a {kind} of {loaded.described.path}, or check that the SRDF is for this robot"
         diagnostic = loaded.diagnostic(
             code, f"{what} names {kind} '{name}', which {loaded.described.path} does not have{_elsewhere(found)}",
@@ -169,7 +172,8 @@ def unknown_link(loaded: Loaded, given: Given) -> Iterator[Diagnostic]:
     pairs = [(link, other) for pair in loaded.semantic.disabled for link, other in (pair, pair[::-1])]
     named = loaded.semantic.named_links()
     given = {name.name for _, name in named} | {link.name for link, _ in pairs}
-    yield from _one_prefix(loaded, list(_missing_once(loaded, "K001", "link", named, links, pairs)), "link", links, given)
+    colliding = [name for name, link in links.items() if link.collisions]
+    yield from _one_prefix(loaded, list(_missing_once(loaded, "K001", "link", named, links, pairs, colliding)), "link", links, given)
 
 
 @check(
