@@ -440,6 +440,12 @@ def test_a_centre_of_mass_written_in_the_base_frame_is_flagged(tmp_path):
     assert "lies 0.5 m outside" in message and "root link" not in message
 
 
+def test_the_root_a_centre_is_read_in_is_named_when_the_model_has_two_roots(tmp_path):
+    # a second, unconnected root: the model has no single root, the forearm's is still 'base'
+    (_, _, message), = found(tmp_path, forearm("0 0 1.15") + '<link name="stray"/>', "I013")
+    assert message.endswith("read in the frame of the root link 'base', it lies inside"), message
+
+
 def test_a_centre_inside_or_just_outside_the_shapes_is_not_flagged(tmp_path):
     assert found(tmp_path, forearm("0 0 0.18"), "I013") == []
     # 9 cm past the end of a 0.4 m box: within a quarter of its longest side (a mount left undrawn)
