@@ -420,6 +420,30 @@ def test_what_the_reader_finds_in_a_macro_body_is_said_once_for_its_calls(tmp_pa
     assert found["V001"].subjects == ("left_shoulder", "right_shoulder"), found["V001"]
 
 
+UNPREFIXED_LIMIT = """<robot name="hand" xmlns:xacro="http://www.ros.org/wiki/xacro">
+  <link name="palm"/>
+  <xacro:macro name="actuator" params="name *limit">
+    <joint name="${name}_joint" type="revolute">
+      <parent link="palm"/><child link="${name}_link"/>
+      <insert_block name="limit"/>
+    </joint>
+    <link name="${name}_link"/>
+  </xacro:macro>
+  <xacro:actuator name="thumb"><limit lower="-1" upper="1" effort="2" velocity="3"/></xacro:actuator>
+</robot>
+"""
+
+
+def test_a_limit_lost_to_an_insert_block_without_prefix_is_traced_to_it(tmp_path):
+    """The call gives a <limit>, but the body's <insert_block> lacks xacro: and is copied as it
+    is: 'add <limit>' would send the reader to a limit already written."""
+    path = tmp_path / "hand.urdf.xacro"
+    path.write_text(UNPREFIXED_LIMIT)
+    [found] = [d for d in lint_file(str(path), Config.everything()).diagnostics if d.code == "J003"]
+    assert found.message == "revolute joint 'thumb_joint' has no <limit>"
+    assert "<insert_block name=\"limit\"/>" in found.hint and "xacro:insert_block" in found.hint, found.hint
+
+
 # -- A.3: the centre of mass against the geometry -----------------------------------------
 # Doosan m1013's link 3: a forearm 0.4 m long whose centre of mass is written in the base frame
 FOREARM = box("0.08 0.08 0.4", "0 0 0.2")
