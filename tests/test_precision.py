@@ -420,6 +420,30 @@ def test_what_the_reader_finds_in_a_macro_body_is_said_once_for_its_calls(tmp_pa
     assert found["V001"].subjects == ("left_shoulder", "right_shoulder"), found["V001"]
 
 
+UNPREFIXED_LIMIT = """<robot name="hand" xmlns:xacro="http://www.ros.org/wiki/xacro">
+  <link name="palm"/>
+  <xacro:macro name="actuator" params="name *limit">
+    <joint name="${name}_joint" type="revolute">
+      <parent link="palm"/><child link="${name}_link"/>
+      <insert_block name="limit"/>
+    </joint>
+    <link name="${name}_link"/>
+  </xacro:macro>
+  <xacro:actuator name="thumb"><limit lower="-1" upper="1" effort="2" velocity="3"/></xacro:actuator>
+</robot>
+"""
+
+
+def test_a_limit_lost_to_an_insert_block_without_prefix_is_traced_to_it(tmp_path):
+    """The call gives a <limit>, but the body's <insert_block> lacks xacro: and is copied as it
+    is: 'add <limit>' would send the reader to a limit already written."""
+    path = tmp_path / "hand.urdf.xacro"
+    path.write_text(UNPREFIXED_LIMIT)
+    [found] = [d for d in lint_file(str(path), Config.everything()).diagnostics if d.code == "J003"]
+    assert found.message == "revolute joint 'thumb_joint' has no <limit>"
+    assert "<insert_block name=\"limit\"/>" in found.hint and "xacro:insert_block" in found.hint, found.hint
+
+
 # -- A.3: the centre of mass against the geometry -----------------------------------------
 # Doosan m1013's link 3: a forearm 0.4 m long whose centre of mass is written in the base frame
 FOREARM = box("0.08 0.08 0.4", "0 0 0.2")
@@ -438,6 +462,12 @@ def test_a_centre_of_mass_written_in_the_base_frame_is_flagged(tmp_path):
     # a centre wrong in any other way is flagged too, without that reading
     (_, _, message), = found(tmp_path, forearm("0 0 -0.5"), "I013")
     assert "lies 0.5 m outside" in message and "root link" not in message
+
+
+def test_the_root_a_centre_is_read_in_is_named_when_the_model_has_two_roots(tmp_path):
+    # a second, unconnected root: the model has no single root, the forearm's is still 'base'
+    (_, _, message), = found(tmp_path, forearm("0 0 1.15") + '<link name="stray"/>', "I013")
+    assert message.endswith("read in the frame of the root link 'base', it lies inside"), message
 
 
 def test_a_centre_inside_or_just_outside_the_shapes_is_not_flagged(tmp_path):

@@ -487,7 +487,7 @@ class Reader:
         limit_element = found.get("limit")
         limit = self.joint_limit(name, limit_element) if limit_element is not None else None
         if limit_element is None and joint_type in ("revolute", "prismatic"):
-            self.report("J003", f"{joint_type} joint '{shown}' has no <limit>", element, 'add <limit lower="..." upper="..." effort="..." velocity="..."/>', subjects=subjects)
+            self.report("J003", f"{joint_type} joint '{shown}' has no <limit>", element, _limit_hint(element), subjects=subjects)
         safety = None
         safety_element = found.get("safety_controller")
         if safety_element is not None:
@@ -648,6 +648,16 @@ def same_colour(a: tuple[float, ...], b: tuple[float, ...]) -> bool:
 
 
 IDENTITY = Pose()
+
+
+def _limit_hint(joint: "Element") -> str:
+    """J003's hint: where the joint holds an <insert_block>, which xacro copied because it lacks
+    the xacro: prefix, the <limit> the macro's caller gave is lost there (and so are the other
+    blocks it names: an origin lost so is silently zero)."""
+    blocks = [f'<insert_block name="{child.get("name", "")}"/>' for child in joint[:] if child.tag == "insert_block"]
+    if not blocks:
+        return 'add <limit lower="..." upper="..." effort="..." velocity="..."/>'
+    return f"xacro copied its {', '.join(blocks)} as written (without the xacro: prefix) instead of inserting the blocks; write <xacro:insert_block>"
 
 
 def first_children(element: "Element") -> "dict[str, Element]":

@@ -16,6 +16,7 @@ from ..model import massprops
 from ..model.inertia import OVERREACH, Assessment, axes_apart, declared_body, reach
 from ..model.massprops import number, tensor_text
 from ..model.numbers import format_number
+from ..model.kinematics import roots, walk
 from ..model.poses import zero_poses
 from ..model.units import mis_scaled
 from ..read.memo import once
@@ -555,13 +556,13 @@ it is (iCub's hip: 0.75 kg in a disc 7.6 cm wide and 1.3 cm thick, 10,000 kg/m³
 
 class Misplaced(NamedTuple):
     """A declared centre of mass no mass inside the link's shapes can have: the centre and the
-    box (link frame), how far outside it the centre lies, and whether the centre, read in the
-    root link's frame, lies inside the box."""
+    box (link frame), how far outside it the centre lies, and the root link (of the tree the
+    link hangs from) in whose frame the centre lies inside the box, if it does."""
 
     centre: tuple[float, float, float]
     box: tuple
     distance: float
-    in_root_frame: bool
+    inside_in_frame_of: str | None
 
 
 @check("I013", "com-outside-geometry", WARNING, "A centre of mass far outside the shapes of its link.", rule_set=RuleSet.LINT, options=(TOLERANCE,), kind=Kind.MASS)
@@ -624,8 +625,8 @@ def com_outside_geometry(loaded, given):
         box = " to ".join("(" + " ".join(f"{v:.3g}" for v in corner) + ")" for corner in found.box)
         message = (f"centre of mass of link '{link.name}' ({centre}) lies {found.distance:.3g} m outside the box {box} "
                    f"that holds its shapes (link frame): no mass inside them has that centre")
-        if found.in_root_frame:
-            message += f"; read in the frame of the root link '{loaded.root}', it lies inside"
+        if found.inside_in_frame_of is not None:
+            message += f"; read in the frame of the root link '{found.inside_in_frame_of}', it lies inside"
         inertial = link.inertial
         yield loaded.diagnostic(
             "I013", message, inertial.origin_at if inertial.origin_at is not None else inertial.at,
@@ -667,8 +668,16 @@ def _misplaced(loaded, link) -> Misplaced | None:
     if distance <= max(CENTRE_SHARE * max(sides), CENTRE_REACH):
         return None
     pose = once(loaded, zero_poses).get(link.name)
-    in_root = pose is not None and link.name != loaded.root and model.outside(massprops.unplace(pose, centre), box) == 0
-    return Misplaced(centre, box, distance, in_root)
+    # the root of the tree the link hangs from: a model with two roots has no single one
+    root = once(loaded, _roots_above).get(link.name)
+    inside = pose is not None and root != link.name and model.outside(massprops.unplace(pose, centre), box) == 0
+    return Misplaced(centre, box, distance, root if inside else None)
+
+
+def _roots_above(loaded) -> dict[str, str]:
+    """The root each link hangs from, found by the walk :func:`zero_poses` places it by."""
+    robot = loaded.robot
+    return {link: root for root in roots(robot) for _, _, link in walk(robot, root)}
 
 
 @check("I011", "root-inertia", INFO, "The root link carries mass, which KDL ignores.", kind=Kind.MASS, rule_set=RuleSet.LINT)
