@@ -14,9 +14,9 @@ from ..diagnostics import Fix
 from ..model import inertia as model
 from ..model import massprops
 from ..model.inertia import OVERREACH, Assessment, axes_apart, declared_body, reach
+from ..model.kinematics import roots, walk
 from ..model.massprops import number, tensor_text
 from ..model.numbers import format_number
-from ..model.kinematics import roots, walk
 from ..model.poses import zero_poses
 from ..model.units import mis_scaled
 from ..read.memo import once
