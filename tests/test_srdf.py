@@ -33,6 +33,9 @@ def check(*args, cwd):
     return done, json.loads(done.stdout or b"null")
 
 
+VARIANT = "for another variant of the model, give its xacro arguments after the SRDF (NAME:=VALUE)"
+
+
 def found(document) -> list[tuple[str, str, int, int]]:
     return [(d["code"], d["path"], d["line"], d["column"]) for f in document["files"] for d in f["diagnostics"]]
 
@@ -108,7 +111,7 @@ def test_a_link_the_urdf_has_with_a_prefix_cut_off_is_no_suggestion(workspace):
     done, document = check(f"{PANDA}/panda.srdf", cwd=workspace)
     hints = {d["message"].split("'")[1]: d["hint"] for f in document["files"] for d in f["diagnostics"] if d["code"] == "K001"}
     assert hints == {
-        "robotiq_85_panda_hand": f"use a link of {PANDA}/panda.urdf.xacro, or check that the SRDF is for this robot",
+        "robotiq_85_panda_hand": f"use a link of {PANDA}/panda.urdf.xacro, or check that the SRDF is for this robot; {VARIANT}",
         "panda_hnd": "did you mean 'panda_hand'?",
     }
 
@@ -967,3 +970,26 @@ def test_every_element_srdfdom_reads_draws_nothing(tmp_path):
 </robot>
 """
     assert lint_srdf(tmp_path, srdf) == (0, [])
+
+
+def test_an_srdf_for_another_variant_of_a_xacro_model_is_told_to_give_its_arguments(tmp_path):
+    """TIAGo's MoveIt config holds one SRDF per end effector; its model takes end_effector:=,
+    and expanded with the default (the hand) it lacks every gripper link the SRDF names. The
+    hint says how to check the SRDF against its own variant, and doing so checks it clean."""
+    (tmp_path / "tiago.urdf.xacro").write_text(
+        '<robot name="tiago" xmlns:xacro="http://www.ros.org/wiki/xacro">\n'
+        '  <xacro:arg name="end_effector" default="hand"/>\n'
+        '  <link name="arm_link"/>\n'
+        '  <link name="$(arg end_effector)_link"/>\n'
+        '  <joint name="tool" type="fixed"><parent link="arm_link"/><child link="$(arg end_effector)_link"/></joint>\n'
+        '</robot>\n')
+    (tmp_path / "tiago_gripper.srdf").write_text(
+        '<robot name="tiago">\n  <group name="gripper"><link name="gripper_link"/></group>\n</robot>\n')
+    done, document = check("--urdf", "tiago.urdf.xacro", "tiago_gripper.srdf", cwd=tmp_path)
+    assert [(d["code"], d["hint"]) for d in document["files"][0]["diagnostics"]] == [
+        ("K001", f"use a link of tiago.urdf.xacro, or check that the SRDF is for this robot; {VARIANT}")]
+    done, document = check("--urdf", "tiago.urdf.xacro", "tiago_gripper.srdf", "end_effector:=gripper", cwd=tmp_path)
+    assert done.returncode == 0 and found(document) == []
+    (tmp_path / "tiago.urdf").write_text('<robot name="tiago"><link name="arm_link"/></robot>\n')
+    done, document = check("--urdf", "tiago.urdf", "tiago_gripper.srdf", cwd=tmp_path)
+    assert [d["hint"] for d in document["files"][0]["diagnostics"]] == ["use a link of tiago.urdf, or check that the SRDF is for this robot"]

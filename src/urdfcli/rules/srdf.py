@@ -52,6 +52,15 @@ def _against(loaded: Loaded):
 PAIR = "<disable_collisions>"  # what names the links of a collision pair
 
 
+def _unmatched_hint(loaded: Loaded, kind: str) -> str:
+    """What to do about a name no name of the URDF is close to: a xacro model expanded with its
+    default arguments may be another variant than the SRDF's (TIAGo's grippers, one SRDF each)."""
+    hint = f"use a {kind} of {loaded.described.path}, or check that the SRDF is for this robot"
+    if loaded.described.document.is_xacro:
+        hint += "; for another variant of the model, give its xacro arguments after the SRDF (NAME:=VALUE)"
+    return hint
+
+
 def _missing_once(loaded: Loaded, code: str, kind: str, named: list[tuple[str, Named]], known, pairs=(), colliding=None) -> Iterator[Diagnostic]:
     """Each name of a ``kind`` the URDF lacks, said once (one cause, however many elements
     give it): at the first element naming it, one of ``named`` before a collision pair of
@@ -72,7 +81,7 @@ def _missing_once(loaded: Loaded, code: str, kind: str, named: list[tuple[str, N
         what, first = found[0]
         offered = colliding if what == PAIR and colliding is not None else known
         close = close_matches(name, [k for k in offered if k not in partners.get(name, ())])
-        hint = f"did you mean '{close[0]}'?" if close else f"use a {kind} of {loaded.described.path}, or check that the SRDF is for this robot"
+        hint = f"did you mean '{close[0]}'?" if close else _unmatched_hint(loaded, kind)
         diagnostic = loaded.diagnostic(
             code, f"{what} names {kind} '{name}', which {loaded.described.path} does not have{_elsewhere(found)}",
             first.at, hint, attribute=first.attribute, subjects=(name,),
