@@ -182,6 +182,25 @@ def test_a_gazebo_block_inside_a_link_is_dead_too(tmp_path):
     ]
 
 
+def test_gazebo_markup_a_macro_copies_is_said_once(tmp_path):
+    """Robotnik's castor.urdf.xacro writes <surface> in the collision of the caster macro, called
+    for four casters: one warning at the macro's line naming the four links, not four."""
+    caster = ('<xacro:macro name="caster" params="prefix"><link name="${prefix}_wheel"><collision>'
+              '<geometry><cylinder radius="0.05" length="0.02"/></geometry>'
+              '<surface><bounce restitution_coefficient="1"/></surface></collision></link>'
+              '<joint name="${prefix}_joint" type="continuous"><parent link="base_link"/><child link="${prefix}_wheel"/></joint>'
+              '</xacro:macro>')
+    calls = "".join(f'<xacro:caster prefix="{corner}"/>' for corner in ("front_left", "front_right", "rear_left", "rear_right"))
+    path = tmp_path / "robot.urdf.xacro"
+    path.write_text(f'<robot name="r" xmlns:xacro="http://www.ros.org/wiki/xacro">\n{caster}\n<link name="base_link"/>\n{calls}\n</robot>\n')
+    said = [(d.message, d.hint) for d in lint_file(str(path), Config()).diagnostics if d.code == "D011"]
+    assert said == [(
+        "Gazebo markup <surface> in <collision> of links 'front_left_wheel', 'front_right_wheel', 'rear_left_wheel' and 1 more"
+        " is outside <gazebo>: Gazebo never reads it",
+        'move it into a <gazebo reference="..."> block naming its link',
+    )]
+
+
 def test_gazebo_markup_inside_gazebo_draws_nothing(tmp_path):
     body = WHEEL.replace("SURFACE", "") + f'<gazebo reference="wheel_link">{SURFACE}</gazebo>'
     assert found(tmp_path, body) == []

@@ -223,7 +223,8 @@ def gazebo_outside_gazebo(loaded, given):
     `<selfCollide>`, `<sensor>` in a link, `<material>Gazebo/Grey</material>`,
     `<plugin>`...) written directly in a
     `<link>`, `<joint>`, `<visual>`, `<collision>` or `<robot>` instead of in a
-    `<gazebo>` block: one diagnostic per element holding it.
+    `<gazebo>` block: one diagnostic per element holding it, and one for the
+    copies a macro's calls make of it (the four casters of one macro).
 
     ## Why is this bad?
     Gazebo reads its settings only from `<gazebo>` blocks; everything else is
@@ -254,15 +255,17 @@ def gazebo_outside_gazebo(loaded, given):
             found.setdefault(unknown.holder, []).append(unknown)
     for unknowns in found.values():
         tags = ", ".join(f"<{u.name}>" for u in unknowns)
-        owner = unknowns[0].owner
-        where = f"<{unknowns[0].parent}>" + (f" of '{owner}'" if owner else "")
-        hint = f'move it into <gazebo reference="{owner}">' if owner else "move it into a <gazebo> block"
+        owner, parent = unknowns[0].owner, unknowns[0].parent
+        kind = "joint" if parent == "joint" else "link"
+        # the hint does not repeat the name, so the copies a macro's calls make are said once
+        where = f"<{parent}>" + ("" if not owner else f" of '{owner}'" if parent == kind else f" of {kind} '{owner}'")
+        hint = f'move it into a <gazebo reference="..."> block naming its {kind}' if owner else "move it into a <gazebo> block"
         if any(u.name == "gazebo" for u in unknowns):
-            hint = f'move it to the top level of <robot>, as <gazebo reference="{owner}">' if owner else "move it to the top level of <robot>"
+            hint = f"move it to the top level of <robot>, with a reference naming its {kind}" if owner else "move it to the top level of <robot>"
             message = f"Gazebo markup {tags} in {where}: Gazebo reads <gazebo> blocks only at the top level of <robot>"
         else:
             message = f"Gazebo markup {tags} in {where} is outside <gazebo>: Gazebo never reads it"
-        yield loaded.diagnostic("D011", message, unknowns[0].at, hint)
+        yield loaded.diagnostic("D011", message, unknowns[0].at, hint, subjects=(owner,) if owner else ())
 
 
 @check("D003", "visual-without-collision", WARNING, "A moving body with visuals but no collision on any of its links.", rule_set=RuleSet.LINT)
