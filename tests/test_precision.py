@@ -444,6 +444,29 @@ def test_a_limit_lost_to_an_insert_block_without_prefix_is_traced_to_it(tmp_path
     assert "<insert_block name=\"limit\"/>" in found.hint and "xacro:insert_block" in found.hint, found.hint
 
 
+
+def test_an_inertia_lost_to_a_macro_called_without_prefix_is_traced_to_the_call(tmp_path):
+    """Robotnik's pallet truck writes <cylinder_inertia m="..."/> in its wheels' <inertial>:
+    without xacro: the call is copied as written and the <inertial> has no <inertia> (V005,
+    urdfdom refuses it). The hint names the call; a misspelt child is offered its right name,
+    and a plain URDF is not told about xacro."""
+    head = '<robot name="truck" xmlns:xacro="http://www.ros.org/wiki/xacro">'
+    macro = '<xacro:macro name="cylinder_inertia" params="m"><inertia ixx="${m}" ixy="0" ixz="0" iyy="${m}" iyz="0" izz="${m}"/></xacro:macro>'
+    path = tmp_path / "truck.urdf.xacro"
+    path.write_text(f'{head}\n{macro}\n<link name="wheel"><inertial><mass value="1"/><cylinder_inertia m="1"/></inertial></link>\n</robot>\n')
+    [found] = [d for d in lint_file(str(path), Config()).diagnostics if d.code == "V005"]
+    assert found.message == "<inertial> has no <inertia>" and found.line == 3
+    assert found.hint == ("it holds <cylinder_inertia>, which URDF does not read: a xacro macro called without the xacro: prefix is "
+                          "copied as written; write <xacro:cylinder_inertia .../>")
+    path.write_text(f'{head}\n{macro}\n<link name="wheel"><inertial><mass value="1"/><xacro:cylinder_inertia m="1"/></inertial></link>\n</robot>\n')
+    assert [d for d in lint_file(str(path), Config()).diagnostics if d.code == "V005"] == []
+    plain = tmp_path / "truck.urdf"
+    for child, hint in (('<intertia ixx="1" ixy="0" ixz="0" iyy="1" iyz="0" izz="1"/>', "did you mean <inertia>? it holds <intertia>"),
+                        ('<cylinder_inertia m="1"/>', None)):
+        plain.write_text(f'<robot name="truck"><link name="wheel"><inertial><mass value="1"/>{child}</inertial></link></robot>\n')
+        [found] = [d for d in lint_file(str(plain), Config()).diagnostics if d.code == "V005"]
+        assert found.hint == hint
+
 # -- A.3: the centre of mass against the geometry -----------------------------------------
 # Doosan m1013's link 3: a forearm 0.4 m long whose centre of mass is written in the base frame
 FOREARM = box("0.08 0.08 0.4", "0 0 0.2")

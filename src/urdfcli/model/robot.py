@@ -15,8 +15,10 @@ from typing import TYPE_CHECKING, NamedTuple
 
 from ..diagnostics import Applicability, Diagnostic, Fix, SetAttribute
 from ..read.document import Document, tag_name
+from ..read.names import typo_of
 from ..read.xml import Element, top_level
 from .numbers import NumberError, VectorLengthError, format_number, parse_double, parse_doubles, parse_vector
+from .vocabulary import KNOWN_CHILDREN
 
 if TYPE_CHECKING:
     from .vocabulary import Unknown
@@ -321,7 +323,7 @@ class Reader:
 
     def geometry(self, parent: "Element", element: "Element | None") -> Geometry | None:
         if element is None:
-            self.report("V005", f"<{tag_name(parent)}> has no <geometry>", parent)
+            self.report("V005", f"<{tag_name(parent)}> has no <geometry>", parent, _lost_to_a_copy(parent, "geometry", self.document.is_xacro))
             return None
         shapes = element[:]  # comments are not read
         if not shapes:
@@ -406,13 +408,13 @@ class Reader:
         mass_element = found.get("mass")
         mass = None
         if mass_element is None:
-            self.report("V005", "<inertial> has no <mass>", element)
+            self.report("V005", "<inertial> has no <mass>", element, _lost_to_a_copy(element, "mass", self.document.is_xacro))
         else:
             mass = self.number(mass_element, "value", required=True)
         inertia_element = found.get("inertia")
         inertia = None
         if inertia_element is None:
-            self.report("V005", "<inertial> has no <inertia>", element)
+            self.report("V005", "<inertial> has no <inertia>", element, _lost_to_a_copy(element, "inertia", self.document.is_xacro))
         else:
             texts = tuple(map(inertia_element.get, INERTIA_KEYS))
             inertia = self._tensors.get(texts)
@@ -487,7 +489,8 @@ class Reader:
         limit_element = found.get("limit")
         limit = self.joint_limit(name, limit_element) if limit_element is not None else None
         if limit_element is None and joint_type in ("revolute", "prismatic"):
-            self.report("J003", f"{joint_type} joint '{shown}' has no <limit>", element, _limit_hint(element), subjects=subjects)
+            hint = _lost_to_a_copy(element, "limit", self.document.is_xacro) or 'add <limit lower="..." upper="..." effort="..." velocity="..."/>'
+            self.report("J003", f"{joint_type} joint '{shown}' has no <limit>", element, hint, subjects=subjects)
         safety = None
         safety_element = found.get("safety_controller")
         if safety_element is not None:
@@ -650,15 +653,24 @@ def same_colour(a: tuple[float, ...], b: tuple[float, ...]) -> bool:
 IDENTITY = Pose()
 
 
-def _limit_hint(joint: "Element") -> str:
-    """J003's hint: where the joint holds an <insert_block>, which xacro copied because it lacks
-    the xacro: prefix, the <limit> the macro's caller gave is lost there (and so are the other
-    blocks it names: an origin lost so is silently zero)."""
-    blocks = [f'<insert_block name="{child.get("name", "")}"/>' for child in joint[:] if child.tag == "insert_block"]
-    if not blocks:
-        return 'add <limit lower="..." upper="..." effort="..." velocity="..."/>'
-    return f"xacro copied its {', '.join(blocks)} as written (without the xacro: prefix) instead of inserting the blocks; write <xacro:insert_block>"
-
+def _lost_to_a_copy(element: "Element", missing: str, expanded: bool) -> str | None:
+    """Why ``element`` lacks its <``missing``>: a misspelt <``missing``>, or, in a model
+    xacro ``expanded``, an <insert_block> or a macro call written without the xacro: prefix,
+    which xacro copies as written instead of inserting what the caller gave (an origin lost
+    so is silently zero). None when it holds no such element."""
+    known = KNOWN_CHILDREN.get(tag_name(element), frozenset())
+    unknown = [child for child in element[:] if isinstance(child.tag, str) and child.tag not in known]
+    blocks = [f'<insert_block name="{child.get("name", "")}"/>' for child in unknown if child.tag == "insert_block"]
+    if blocks and expanded:
+        return f"xacro copied its {', '.join(blocks)} as written (without the xacro: prefix) instead of inserting the blocks; write <xacro:insert_block>"
+    for child in unknown:
+        if typo_of(child.tag, (missing,)):
+            return f"did you mean <{missing}>? it holds <{child.tag}>"
+    calls = [child.tag for child in unknown if not child.tag.startswith("{")]
+    if calls and expanded:
+        return (f"it holds <{calls[0]}>, which URDF does not read: a xacro macro called without the xacro: prefix is copied as "
+                f"written; write <xacro:{calls[0]} .../>")
+    return None
 
 def first_children(element: "Element") -> "dict[str, Element]":
     """The first child of each tag, as ``element.find(tag)`` gives it, in one pass
