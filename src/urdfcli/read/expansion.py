@@ -270,8 +270,9 @@ class _Session:
         try:
             data = self.given.get(os.path.abspath(path)) or Path(path).read_bytes()
         except OSError as error:
-            failure = xacro.XacroException(f"cannot include {display_path(path)}: {error.strerror}", exc=error)
-            failure.urdfcli_hint = _package_uri_hint(filename) or self.empty_in_path(filename) or self.installed_elsewhere(path)
+            uri = _package_uri(filename)  # shown as written: the path xacro made of it reads 'package:/' nowhere in the file
+            failure = xacro.XacroException(f"cannot include {uri or display_path(path)}: {error.strerror}", exc=error)
+            failure.urdfcli_hint = _package_uri_hint(uri) if uri else self.empty_in_path(filename) or self.installed_elsewhere(path)
             xacro.filestack.pop()
             raise failure from None
         if not data.lstrip(b"\xef\xbb\xbf \t\r\n").startswith(b"<"):  # never show a line of a non-XML file
@@ -463,15 +464,18 @@ _SUBSTITUTION = re.compile(r"(\$\{[^}]*\}|\$\([^)]*\))")  # ${expression} or $(c
 _SUBSTITUTION_NAME = re.compile(r"\$\{\s*(\w+)\s*\}|\$\(arg\s+(\w+)\s*\)")  # ${name} or $(arg name)
 
 
-def _package_uri_hint(filename: str) -> str | None:
-    """What to write for an ``<xacro:include>`` given a ``package://`` URI, which xacro reads as a
-    path beside the including file (it joins the URI to that file's folder); None for any other name."""
+def _package_uri(filename: str) -> str | None:
+    """The ``package://`` URI an ``<xacro:include>`` names, which xacro reads as a path beside the
+    including file (it joins the URI to that file's folder); None for any other name."""
     parent = xacro.filestack[-2] if len(xacro.filestack) > 1 else None
     folder = os.path.dirname(parent) if parent else "."
     written = filename[len(folder) + 1:] if filename.startswith(folder + os.sep) else filename
-    if not written.startswith("package://"):
-        return None
-    package, _, rest = written[len("package://"):].partition("/")
+    return written if written.startswith("package://") else None
+
+
+def _package_uri_hint(uri: str) -> str:
+    """What to write for an ``<xacro:include>`` of a ``package://`` URI."""
+    package, _, rest = uri[len("package://"):].partition("/")
     return f"xacro reads no package:// URI in <xacro:include>: write $(find {package})/{rest}"
 
 

@@ -284,22 +284,30 @@ def unlimited_joint(loaded, given):
 )
 def mass_from_geometry(loaded, given):
     options = compiler_options(loaded)
-    for body in build(loaded, given.profile).bodies:
-        if body.joint is None:
+    moving = {name for body in build(loaded, given.profile).bodies if body.joint is not None for name in body.links}
+    weighed = [(link, geometry_body(link)) for name, link in loaded.robot.links.items() if name in moving and weighed_by_geometry(link, options)]
+    # links weighed by their meshes have no weight to show: a hand's dozens of them are one line, as C504 names its links
+    by_meshes = [link for link, found in weighed if found is None]
+    if len(by_meshes) > 1:
+        yield loaded.diagnostic(
+            "C107",
+            f"MuJoCo gives {len(by_meshes)} links the mass of their meshes: {names(link.name for link in by_meshes)}: "
+            "they have no <inertial>, so their collision shapes are filled at 1000 kg/m³",
+            by_meshes[0].at,
+            "give the links an <inertial> with their real mass and tensor",
+            subjects=tuple(link.name for link in by_meshes),
+        )
+    for link, found in weighed:
+        if found is None and len(by_meshes) > 1:
             continue
-        for name in body.links:
-            link = loaded.robot.links[name]
-            if not weighed_by_geometry(link, options):
-                continue
-            found = geometry_body(link)
-            weight = f"{number(found[0])} kg" if found is not None else "the mass of its meshes"
-            yield loaded.diagnostic(
-                "C107",
-                f"MuJoCo gives link '{name}' {weight}: it has no <inertial>, so its collision shapes are filled at 1000 kg/m³",
-                link.at,
-                "give the link an <inertial> with its real mass and tensor",
-                subjects=(name,),
-            )
+        weight = f"{number(found[0])} kg" if found is not None else "the mass of its meshes"
+        yield loaded.diagnostic(
+            "C107",
+            f"MuJoCo gives link '{link.name}' {weight}: it has no <inertial>, so its collision shapes are filled at 1000 kg/m³",
+            link.at,
+            "give the link an <inertial> with its real mass and tensor",
+            subjects=(link.name,),
+        )
 
 
 @check("C108", "mujoco-fixed-base", INFO, "MuJoCo welds the root link to the world.", kind=Kind.TARGET, target="mujoco")
