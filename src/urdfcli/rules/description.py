@@ -271,8 +271,10 @@ def visual_without_collision(loaded, given):
     Judges rigid bodies, not links: links joined by fixed joints form one body, as
     simulators lump them. Flags a body carried by a moving joint that has a `<visual>`
     but no `<collision>` on any of its links (a collision on a fixed child counts). The
-    root's body is left alone (it may be fixed to the world). A model with no collision
-    at all gets one note (info) instead of a warning per body: it is meant for display.
+    root's body is left alone (it may be fixed to the world), and so is a visual drawn
+    in a colour of alpha 0 (the `invisible` material of a virtual wheel, which stands
+    for a pair of real ones). A model with no collision at all gets one note (info)
+    instead of a warning per body: it is meant for display.
 
     ## Why is this bad?
     A simulated body with no collision shape passes through the floor and through
@@ -315,7 +317,7 @@ def visual_without_collision(loaded, given):
             continue
         seen.add(body.top)
         members = [links[name] for name in body.links]
-        shown = next((link for link in members if link.visuals), None)
+        shown = next((link for link in members if any(_visible(visual, loaded.robot.materials) for visual in link.visuals)), None)
         if shown is not None and not any(link.collisions for link in members):
             bare.append((body, shown))
     if bare and not any(link.collisions for link in links.values()):
@@ -332,6 +334,12 @@ def visual_without_collision(loaded, given):
             shown.at,
             "add a <collision> (often the visual's geometry, or a simpler one)",
         )
+
+
+def _visible(visual, materials) -> bool:
+    """Whether a visual is drawn: not in a colour of alpha 0, its own or its named material's."""
+    colour = visual.colour if visual.colour is not None else getattr(materials.get(visual.material), "rgba", None)
+    return colour is None or len(colour) != 4 or colour[3] > 0
 
 
 @check("D004", "resource-not-found", ERROR, "A mesh or texture file that does not exist.", kind=Kind.FILES, fix=SAFE,
