@@ -54,7 +54,10 @@ def unknown_element(loaded, given):
     """## What it does
     Flags a child element that URDF does not define inside its parent and that
     is one or two letters away from an element missing there, such as
-    `<metrial>` in a `<visual>`, and names the element meant. Documented
+    `<metrial>` in a `<visual>`, and names the element meant; so too in the
+    components of a `<ros2_control>` block, whose parser reads `<plugin>`,
+    `<command_interface>`, `<state_interface>` and `<param>` by name and skips
+    the rest (`<comand_interface>` leaves the joint without it). Documented
     extensions (Gazebo, PyBullet, Drake, Isaac, MuJoCo, vendors) are not typos;
     other unknown markup is D010 (info), Gazebo markup outside `<gazebo>` D011.
 
@@ -84,7 +87,8 @@ def unknown_element(loaded, given):
     """
     for unknown in loaded.robot.unknown:
         if not unknown.attribute and unknown.typo_of:
-            yield loaded.diagnostic("D001", f"<{unknown.name}> is not a URDF element inside <{unknown.parent}>; it is ignored", unknown.at, f"did you mean <{unknown.typo_of}>?")
+            yield loaded.diagnostic("D001", f"<{unknown.name}> is not a {unknown.format} element inside <{unknown.parent}>; it is ignored",
+                                    unknown.at, f"did you mean <{unknown.typo_of}>?")
 
 
 @check("D002", "unknown-attribute", WARNING, "A misspelt attribute: close to a URDF attribute missing on its element.", rule_set=RuleSet.LINT)
