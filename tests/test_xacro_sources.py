@@ -963,3 +963,18 @@ def test_a_urdf_file_written_in_xacro_is_a_note_and_one_that_only_declares_the_n
     assert "root Link: $(arg namespace)base_link" in real.stdout
     declared = write(tmp_path / "plain.urdf", '<robot name="p" xmlns:xacro="http://ros.org/wiki/xacro"><link name="base_link"/></robot>\n')
     assert found(declared, codes=("X108",)) == []
+
+
+def test_a_urdf_named_as_xacro_output_is_told_the_xacro_name(tmp_path):
+    """gz_ros2_control's demos: test_diff_drive.xacro.urdf reads $(arg namespace); its xacro
+    name is test_diff_drive.urdf.xacro, not test_diff_drive.xacro.urdf.xacro."""
+    text = ('<robot name="d" xmlns:xacro="http://www.ros.org/wiki/xacro">\n  <xacro:arg name="namespace" default=""/>\n'
+            '  <link name="$(arg namespace)chassis"/>\n</robot>\n')
+    hints = {}
+    for name in ("test_diff_drive.xacro.urdf", "tb.urdf"):
+        [note] = diagnostics(write(tmp_path / name, text), "X108")
+        hints[name] = note.hint
+    assert hints == {
+        "test_diff_drive.xacro.urdf": "name it test_diff_drive.urdf.xacro, and give readers its expansion (urdfcli expand test_diff_drive.xacro.urdf)",
+        "tb.urdf": "name it tb.urdf.xacro, and give readers its expansion (urdfcli expand tb.urdf)",
+    }

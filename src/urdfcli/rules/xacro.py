@@ -583,9 +583,11 @@ def xacro_named_urdf(loaded, given) -> Iterator[Diagnostic]:
     if not document.is_xacro or document.file is None or not document.file.name.endswith(".urdf") or not loaded.xacro_sources.files:
         return
     name = document.file.name
+    # gz_ros2_control's demos are named test_cart.xacro.urdf: the xacro name is test_cart.urdf.xacro
+    meant = name.removesuffix(".xacro.urdf") + ".urdf.xacro" if name.endswith(".xacro.urdf") else f"{name}.xacro"
     yield _diagnostic(
         "X108", f"{name} is written in xacro: a URDF reader given the file itself (check_urdf, PyBullet, MuJoCo, Gazebo) reads its xacro markup unexpanded",
-        loaded.xacro_sources.files[0], Place(0), f"name it {name}.xacro, and give readers its expansion (urdfcli expand {name})",
+        loaded.xacro_sources.files[0], Place(0), f"name it {meant}, and give readers its expansion (urdfcli expand {name})",
     )
 
 
