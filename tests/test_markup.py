@@ -480,3 +480,20 @@ def test_a_ros1_frame_name_without_the_tf_prefix_its_plugin_adds(tmp_path, filen
     path.write_text(TF_PREFIXED.replace("FILENAME", filename).replace("FRAME", frame))
     found = [d for d in lint_file(str(path), Config()).diagnostics if d.code == "D009"]
     assert bool(found) is reported, [d.message for d in found]
+
+
+def test_a_misspelt_interface_in_a_ros2_control_block_is_a_typo(tmp_path):
+    """ros2_control's parser reads a component's <command_interface>, <state_interface>,
+    <param> and its hardware's <plugin> by name and skips the rest: <comand_interface>
+    leaves the wheel without a command. Parameters and unknown markup are its own business."""
+    robot = ('<link name="base"/><link name="wheel"/><joint name="wheel_joint" type="continuous"><parent link="base"/><child link="wheel"/>'
+             '<axis xyz="0 1 0"/></joint><ros2_control name="DiffBot" type="system"><hardware><plugin>mock_components/GenericSystem</plugin>'
+             '<param name="calculate_dynamics">true</param></hardware><joint name="wheel_joint"><command_interface name="velocity"/>'
+             '<state_interface name="position"/><!-- odometry --><custom_tag/></joint><sensor name="imu"><state_interface name="orientation.x"/></sensor></ros2_control>')
+    assert found(tmp_path, robot) == []
+    typos = robot.replace("<command_interface ", "<comand_interface ").replace("<plugin>mock_components/GenericSystem</plugin>", "<plugn>mock_components/GenericSystem</plugn>")
+    assert found(tmp_path, typos.replace('<sensor name="imu"><state_interface', '<sensor name="imu"><state_inteface')) == [
+        ("D001", "warning", "<plugn> is not a ros2_control element inside <hardware>; it is ignored"),
+        ("D001", "warning", "<comand_interface> is not a ros2_control element inside <joint>; it is ignored"),
+        ("D001", "warning", "<state_inteface> is not a ros2_control element inside <sensor>; it is ignored"),
+    ]

@@ -537,3 +537,16 @@ def test_a_mesh_holds_the_centre_of_mass_where_its_vertices_are(tmp_path):
     # a mesh that cannot be read: its size is unknown, nothing is said
     missing = '<collision><geometry><mesh filename="meshes/missing.stl"/></geometry></collision>'
     assert found(tmp_path, forearm("0 0 1.15", inside=missing), "I013") == []
+
+
+def test_an_invisible_visual_of_a_virtual_wheel_needs_no_collision(tmp_path):
+    # ros2_control_demos' carlikebot: a virtual wheel between the real ones, drawn in a
+    # material of alpha 0, stands for them in the bicycle model
+    invisible = '<material name="invisible"><color rgba="0 0 0 0"/></material>'
+    wheel = '<visual><geometry><cylinder radius="0.05" length="0.01"/></geometry><material name="invisible"/></visual>'
+    virtual = BASE + arm("virtual_wheel", wheel + inertial(0.1, 1e-4, 1e-4, 1e-4))
+    assert found(tmp_path, invisible + virtual, "D003") == []
+    inline = wheel.replace('<material name="invisible"/>', '<material name="clear">' + '<color rgba="0 0 0 0"/></material>')
+    assert found(tmp_path, BASE + arm("virtual_wheel", inline + inertial(0.1, 1e-4, 1e-4, 1e-4)), "D003") == []
+    (code, severity, message), = found(tmp_path, invisible.replace('0 0 0 0', '0 0 0 1') + virtual, "D003")
+    assert severity == "warning" and "'virtual_wheel'" in message

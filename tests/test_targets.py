@@ -935,3 +935,29 @@ def test_a_singular_tensor_mujoco_refuses_is_said_to_have_a_zero_moment_not_roun
     require_consumer("mujoco")
     [real] = consumers.load("mujoco", [str(model)])
     assert not real.accepted and "inertia must have positive eigenvalues" in real.error, real
+
+
+def test_gazebo_mimic_joints_gz_ros2_control_drives_are_not_said_to_move_freely(tmp_path):
+    """gz_ros2_control's gripper demo: the mimic finger is a ros2_control joint with
+    <param name="mimic">, which GazeboSimSystem commands after the finger it follows; C506
+    names only the mimic joints no Gazebo plugin drives."""
+    finger = ('<link name="{n}"><inertial><mass value="0.1"/><inertia ixx="1e-4" ixy="0" ixz="0" iyy="1e-4" iyz="0" izz="1e-4"/></inertial></link>'
+              '<joint name="{n}_joint" type="prismatic"><parent link="base"/><child link="{n}"/><axis xyz="0 1 0"/>'
+              '<limit lower="0" upper="0.4" effort="1" velocity="1"/>{mimic}</joint>')
+    control = ('<ros2_control name="GazeboSimSystem" type="system"><hardware><plugin>{plugin}</plugin></hardware>'
+               '<joint name="left_joint"><command_interface name="position"/></joint>'
+               '<joint name="right_joint"><param name="mimic">left_joint</param><command_interface name="position"/></joint>'
+               '<joint name="pad_joint"><command_interface name="position"/></joint></ros2_control>')
+    text = ('<robot name="gripper"><link name="base"><inertial><mass value="1"/><inertia ixx="0.01" ixy="0" ixz="0" iyy="0.01" iyz="0" izz="0.01"/>'
+            '</inertial></link>' + finger.format(n="left", mimic="") + finger.format(n="right", mimic='<mimic joint="left_joint"/>')
+            + finger.format(n="pad", mimic='<mimic joint="left_joint"/>') + '{control}</robot>\n')
+    said = {}
+    for plugin in ("gz_ros2_control/GazeboSimSystem", "mock_components/GenericSystem"):
+        path = tmp_path / f"{plugin.split('/')[0]}.urdf"
+        path.write_text(text.replace("{control}", control.format(plugin=plugin)))
+        done = run_cli("lint", "--isolated", "--format", "json", "--target", "gazebo", str(path))
+        said[plugin] = [d["message"] for d in json.loads(done.stdout)["files"][0]["diagnostics"] if d["code"] == "C506"]
+    assert said == {
+        "gz_ros2_control/GazeboSimSystem": ["Gazebo (sdformat 12) drops the <mimic> of mimic joint 'pad_joint' (of 'left_joint'): it moves freely"],
+        "mock_components/GenericSystem": ["Gazebo (sdformat 12) drops the <mimic> of 2 mimic joints ('right_joint', 'pad_joint'): they move freely"],
+    }

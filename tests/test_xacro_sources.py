@@ -963,3 +963,37 @@ def test_a_urdf_file_written_in_xacro_is_a_note_and_one_that_only_declares_the_n
     assert "root Link: $(arg namespace)base_link" in real.stdout
     declared = write(tmp_path / "plain.urdf", '<robot name="p" xmlns:xacro="http://ros.org/wiki/xacro"><link name="base_link"/></robot>\n')
     assert found(declared, codes=("X108",)) == []
+
+
+def test_a_urdf_named_as_xacro_output_is_told_the_xacro_name(tmp_path):
+    """gz_ros2_control's demos: test_diff_drive.xacro.urdf reads $(arg namespace); its xacro
+    name is test_diff_drive.urdf.xacro, not test_diff_drive.xacro.urdf.xacro."""
+    text = ('<robot name="d" xmlns:xacro="http://www.ros.org/wiki/xacro">\n  <xacro:arg name="namespace" default=""/>\n'
+            '  <link name="$(arg namespace)chassis"/>\n</robot>\n')
+    hints = {}
+    for name in ("test_diff_drive.xacro.urdf", "tb.urdf"):
+        [note] = diagnostics(write(tmp_path / name, text), "X108")
+        hints[name] = note.hint
+    assert hints == {
+        "test_diff_drive.xacro.urdf": "name it test_diff_drive.urdf.xacro, and give readers its expansion (urdfcli expand test_diff_drive.xacro.urdf)",
+        "tb.urdf": "name it tb.urdf.xacro, and give readers its expansion (urdfcli expand tb.urdf)",
+    }
+
+
+def test_the_fixed_names_of_a_macro_without_parameters_are_not_said_to_ignore_them(tmp_path):
+    """ros2_control_demos' r6bot_description takes no parameters: the note says so, and its
+    hint does not ask to build the names from a parameter it lacks."""
+    model = write(tmp_path / "robot.urdf.xacro", robot("""
+        <xacro:macro name="arm">
+          <link name="arm_base"/>
+          <joint name="arm_base_joint" type="fixed"><parent link="base_link"/><child link="arm_base"/></joint>
+        </xacro:macro>
+        <link name="base_link"/>
+        <xacro:arm/>
+        """))
+    [info] = diagnostics(model, "X105")
+    assert (info.severity.value, info.message, info.hint) == (
+        "info",
+        "macro 'arm' names 2 links and joints ('arm_base', 'arm_base_joint') and takes no parameters: it can be called once per robot",
+        'give it a parameter and build the names from it, such as name="${prefix}arm_base"',
+    )

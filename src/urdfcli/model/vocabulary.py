@@ -79,6 +79,16 @@ EXTENSIONS: dict[str, tuple[dict[str, str], dict[str, str]]] = {
                "gear_velocity": "ANYmal's actuator limits"}, {}),
 }
 
+# The children ros2_control's parser reads in each component of a <ros2_control> block
+# (hardware_interface's component_parser): it looks them up by name and skips the rest,
+# so a misspelt <command_interface> leaves the joint without it. Only typos of these are said.
+ROS2_CONTROL_CHILDREN = {
+    "hardware": frozenset({"plugin", "param"}),
+    "joint": frozenset({"command_interface", "state_interface", "param"}),
+    "sensor": frozenset({"state_interface", "param"}),
+    "gpio": frozenset({"command_interface", "state_interface", "param"}),
+}
+
 # Gazebo's URDF extension keys and the SDFormat elements Gazebo reads in a
 # <gazebo reference> block (sdformat's URDF to SDF conversion): written anywhere
 # else, Gazebo never sees them.
@@ -109,6 +119,7 @@ class Unknown(NamedTuple):
     gazebo: bool = False  # Gazebo markup outside <gazebo>
     holder: int = 0  # the element it is written in
     owner: str | None = None  # the link or joint it is written in, if any
+    format: str = "URDF"  # the format whose element it is written in
 
 
 def is_foreign(name: str) -> bool:
@@ -169,6 +180,8 @@ def unknown_markup(top: Element, positions: Mapping[Element, int]) -> list[Unkno
             gazebo = name in GAZEBO_TAGS or _gazebo_material(top)
             return [Unknown(index(top), "robot", name, False, None if gazebo else typo_of(name, KNOWN_CHILDREN["robot"]), gazebo)]
         return []
+    if name == "ros2_control":
+        return _ros2_control_typos(top, index)
     if name not in SCHEMA or name in OPAQUE:
         return []
     owner = top.get("name") if name in ("link", "joint") else None
@@ -196,4 +209,18 @@ def unknown_markup(top: Element, positions: Mapping[Element, int]) -> list[Unkno
                 present = {tag_name(c) for c in parent}
                 missing = {c for c in KNOWN_CHILDREN[tag] if c in REPEATED or c not in present}
                 found.append(Unknown(index(element), tag, name, False, typo_of(name, missing), holder=index(parent), owner=owner))
+    return found
+
+
+def _ros2_control_typos(top: Element, index: Callable[[Element], int]) -> list[Unknown]:
+    """The children of a <ros2_control> block's components that are one or two letters
+    from a name ros2_control reads there (``<comand_interface>``)."""
+    found = []
+    for component in top:
+        known = ROS2_CONTROL_CHILDREN.get(component.tag) if isinstance(component.tag, str) else None
+        for child in component if known is not None else ():
+            name = child.tag if isinstance(child.tag, str) else None
+            meant = typo_of(name, known) if name is not None and name not in known and not is_foreign(name) else None
+            if meant is not None:
+                found.append(Unknown(index(child), component.tag, name, False, meant, holder=index(component), owner=component.get("name"), format="ros2_control"))
     return found

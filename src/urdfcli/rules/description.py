@@ -54,7 +54,10 @@ def unknown_element(loaded, given):
     """## What it does
     Flags a child element that URDF does not define inside its parent and that
     is one or two letters away from an element missing there, such as
-    `<metrial>` in a `<visual>`, and names the element meant. Documented
+    `<metrial>` in a `<visual>`, and names the element meant; so too in the
+    components of a `<ros2_control>` block, whose parser reads `<plugin>`,
+    `<command_interface>`, `<state_interface>` and `<param>` by name and skips
+    the rest (`<comand_interface>` leaves the joint without it). Documented
     extensions (Gazebo, PyBullet, Drake, Isaac, MuJoCo, vendors) are not typos;
     other unknown markup is D010 (info), Gazebo markup outside `<gazebo>` D011.
 
@@ -84,7 +87,8 @@ def unknown_element(loaded, given):
     """
     for unknown in loaded.robot.unknown:
         if not unknown.attribute and unknown.typo_of:
-            yield loaded.diagnostic("D001", f"<{unknown.name}> is not a URDF element inside <{unknown.parent}>; it is ignored", unknown.at, f"did you mean <{unknown.typo_of}>?")
+            yield loaded.diagnostic("D001", f"<{unknown.name}> is not a {unknown.format} element inside <{unknown.parent}>; it is ignored",
+                                    unknown.at, f"did you mean <{unknown.typo_of}>?")
 
 
 @check("D002", "unknown-attribute", WARNING, "A misspelt attribute: close to a URDF attribute missing on its element.", rule_set=RuleSet.LINT)
@@ -274,8 +278,10 @@ def visual_without_collision(loaded, given):
     Judges rigid bodies, not links: links joined by fixed joints form one body, as
     simulators lump them. Flags a body carried by a moving joint that has a `<visual>`
     but no `<collision>` on any of its links (a collision on a fixed child counts). The
-    root's body is left alone (it may be fixed to the world). A model with no collision
-    at all gets one note (info) instead of a warning per body: it is meant for display.
+    root's body is left alone (it may be fixed to the world), and so is a visual drawn
+    in a colour of alpha 0 (the `invisible` material of a virtual wheel, which stands
+    for a pair of real ones). A model with no collision at all gets one note (info)
+    instead of a warning per body: it is meant for display.
 
     ## Why is this bad?
     A simulated body with no collision shape passes through the floor and through
@@ -318,7 +324,7 @@ def visual_without_collision(loaded, given):
             continue
         seen.add(body.top)
         members = [links[name] for name in body.links]
-        shown = next((link for link in members if link.visuals), None)
+        shown = next((link for link in members if any(_visible(visual, loaded.robot.materials) for visual in link.visuals)), None)
         if shown is not None and not any(link.collisions for link in members):
             bare.append((body, shown))
     if bare and not any(link.collisions for link in links.values()):
@@ -335,6 +341,12 @@ def visual_without_collision(loaded, given):
             shown.at,
             "add a <collision> (often the visual's geometry, or a simpler one)",
         )
+
+
+def _visible(visual, materials) -> bool:
+    """Whether a visual is drawn: not in a colour of alpha 0, its own or its named material's."""
+    colour = visual.colour if visual.colour is not None else getattr(materials.get(visual.material), "rgba", None)
+    return colour is None or len(colour) != 4 or colour[3] > 0
 
 
 @check("D004", "resource-not-found", ERROR, "A mesh or texture file that does not exist.", kind=Kind.FILES, fix=SAFE,

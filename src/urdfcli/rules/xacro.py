@@ -368,7 +368,7 @@ def macro_name_fixed(loaded, given) -> Iterator[Diagnostic]:
             if traces:
                 fixed.setdefault(element.macro, []).append((element, traces))
         for macro, elements in fixed.items():
-            yield _fixed_names(origins, file, file.macros[macro].name, elements)
+            yield _fixed_names(origins, file, file.macros[macro], elements)
 
 
 def _conditional_on_parameters(file: XacroFile, element: Made) -> bool:
@@ -384,19 +384,22 @@ def _conditional_on_parameters(file: XacroFile, element: Made) -> bool:
     return False
 
 
-def _fixed_names(origins, file: XacroFile, macro: str, elements: list) -> Diagnostic:
+def _fixed_names(origins, file: XacroFile, definition, elements: list) -> Diagnostic:
     """X105 for one macro: an error naming the elements its calls made twice, else info naming
     every fixed name (one note for the macro: a vendor's robot macro writes dozens, on purpose)."""
     twice = [(element, traces) for element, traces in elements if len(traces) > 1]
     named = [element for element, _ in twice or elements]
     first = named[0]
+    # a macro without parameters (ros2_control_demos' r6bot_description) has none to build names from
+    macro, whatever = definition.name, ("whatever its parameters" if definition.parameters else "and takes no parameters")
+    build = "build the name{} from a parameter" if definition.parameters else "give it a parameter and build the name{} from it"
     if len(named) == 1:
-        what = f"macro '{macro}' names {first.tag} '{first.name}' whatever its parameters"
-        hint = f'build the name from a parameter, such as name="${{prefix}}{first.name}"'
+        what = f"macro '{macro}' names {first.tag} '{first.name}' {whatever}"
+        hint = f'{build.format("")}, such as name="${{prefix}}{first.name}"'
     else:
         kinds = joined(dict.fromkeys(f"{element.tag}s" for element in named))
-        what = f"macro '{macro}' names {len(named)} {kinds} ({names(element.name for element in named)}) whatever its parameters"
-        hint = f'build the names from a parameter, such as name="${{prefix}}{first.name}"'
+        what = f"macro '{macro}' names {len(named)} {kinds} ({names(element.name for element in named)}) {whatever}"
+        hint = f'{build.format("s")}, such as name="${{prefix}}{first.name}"'
     if not twice:
         return _diagnostic("X105", f"{what}: it can be called once per robot", file, first.place, hint, severity=INFO)
     traces = twice[0][1]
@@ -583,9 +586,11 @@ def xacro_named_urdf(loaded, given) -> Iterator[Diagnostic]:
     if not document.is_xacro or document.file is None or not document.file.name.endswith(".urdf") or not loaded.xacro_sources.files:
         return
     name = document.file.name
+    # gz_ros2_control's demos are named test_cart.xacro.urdf: the xacro name is test_cart.urdf.xacro
+    meant = name.removesuffix(".xacro.urdf") + ".urdf.xacro" if name.endswith(".xacro.urdf") else f"{name}.xacro"
     yield _diagnostic(
         "X108", f"{name} is written in xacro: a URDF reader given the file itself (check_urdf, PyBullet, MuJoCo, Gazebo) reads its xacro markup unexpanded",
-        loaded.xacro_sources.files[0], Place(0), f"name it {name}.xacro, and give readers its expansion (urdfcli expand {name})",
+        loaded.xacro_sources.files[0], Place(0), f"name it {meant}, and give readers its expansion (urdfcli expand {name})",
     )
 
 

@@ -159,7 +159,9 @@ def floating_joint(loaded, given):
     doc=explain(
         """With `--target gazebo`: says, once per model, which joints have a `<mimic>`, but
         those a mimic joint plugin in a `<gazebo>` block drives (`<mimicJoint>NAME</mimicJoint>`
-        in a plugin whose file name says mimic, as roboticsgroup's).""",
+        in a plugin whose file name says mimic, as roboticsgroup's), and those Gazebo's
+        ros2_control system drives (a `<ros2_control>` joint with `<param name="mimic">` whose
+        hardware plugin is gz_ros2_control's, ign_ros2_control's or gazebo_ros2_control's).""",
         """sdformat 12 does not convert `<mimic>` (SDFormat 1.9 has no mimic): the joint moves on
         its own, so a gripper's second finger does not follow the first. sdformat 14 (Gazebo
         Harmonic) converts it to `<axis><mimic>` (gazebosim/sdformat pull request 1333).""",
@@ -171,7 +173,23 @@ def drops_mimic(loaded, given):
     yield from mimics_said_once(
         loaded, "C506", "Gazebo (sdformat 12) drops the <mimic> of {joints}: {they} freely",
         "drive them with a mimic joint plugin, or use Gazebo Harmonic (sdformat 14), which converts <mimic>",
-        plugin_mimics(loaded),
+        plugin_mimics(loaded) | ros2_control_mimics(loaded),
+    )
+
+
+# The ros2_control hardware of Gazebo's plugins (gz, Ignition and Gazebo classic): each
+# commands a joint that has <param name="mimic"> after the joint it names.
+GAZEBO_SYSTEMS = ("gz_ros2_control/", "ign_ros2_control/", "gazebo_ros2_control/")
+
+
+def ros2_control_mimics(loaded) -> frozenset[str]:
+    """The joints a Gazebo ros2_control system drives as mimic joints (gz_ros2_control's
+    gripper demo: ``<joint name="left_finger_joint"><param name="mimic">right_finger_joint</param>``)."""
+    return frozenset(
+        joint.get("name")
+        for block in loaded.robot.blocks("ros2_control")
+        if any((plugin.text or "").strip().startswith(GAZEBO_SYSTEMS) for plugin in block.iterfind("hardware/plugin"))
+        for joint in block.iterfind("joint") if any(param.get("name") == "mimic" for param in joint.iterfind("param"))
     )
 
 
