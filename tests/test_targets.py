@@ -609,8 +609,8 @@ def test_links_mujoco_weighs_by_their_meshes_are_one_warning(tmp_path):
     )
     found = [d for d in predicted(model, profile("mujoco")).diagnostics if d.code == "C107"]
     assert [(d.message, d.subjects) for d in found] == [
-        ("MuJoCo gives 4 links the mass of their meshes: 'finger11', 'finger12', 'finger13' and 1 more: they have no <inertial>, "
-         "so their collision shapes are filled at 1000 kg/m³", ("finger11", "finger12", "finger13", "thumb")),
+        ("MuJoCo gives 4 links without <inertial> ('finger11', 'finger12', 'finger13' and 1 more) the mass of their meshes: "
+         "their collision shapes are filled at 1000 kg/m³", ("finger11", "finger12", "finger13", "thumb")),
         ("MuJoCo gives link 'palm' 1 kg: it has no <inertial>, so its collision shapes are filled at 1000 kg/m³", ("palm",)),
     ]
 

@@ -274,7 +274,8 @@ def unlimited_joint(loaded, given):
     doc=explain(
         """With `--target mujoco`: finds a moving body none of whose links has an
         `<inertial>`, but which has collision shapes, while `inertiafromgeom` is `auto`
-        (the URDF default) or `true`.""",
+        (the URDF default) or `true`: one warning per link weighed by primitive shapes,
+        with its weight, and one for all those weighed by their meshes.""",
         """MuJoCo gives the body the mass and inertia of its collision shapes filled at
         1000 kg/m³ (src/user/user_objects.cc, `inertiafromgeom`): a 10 cm box weighs
         1 kg, a hollow shell as much as a solid. Other consumers see no mass at all.""",
@@ -291,8 +292,8 @@ def mass_from_geometry(loaded, given):
     if len(by_meshes) > 1:
         yield loaded.diagnostic(
             "C107",
-            f"MuJoCo gives {len(by_meshes)} links the mass of their meshes: {names(link.name for link in by_meshes)}: "
-            "they have no <inertial>, so their collision shapes are filled at 1000 kg/m³",
+            f"MuJoCo gives {len(by_meshes)} links without <inertial> ({names(link.name for link in by_meshes)}) the mass of their meshes: "
+            "their collision shapes are filled at 1000 kg/m³",
             by_meshes[0].at,
             "give the links an <inertial> with their real mass and tensor",
             subjects=tuple(link.name for link in by_meshes),
