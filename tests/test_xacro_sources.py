@@ -323,6 +323,35 @@ def test_a_library_property_another_model_of_the_workspace_uses_is_clean(tmp_pat
     assert found(rover, codes=("X102",)) == []
 
 
+def test_a_property_read_only_as_a_macro_parameter_of_its_name_is_used_nowhere(tmp_path):
+    # myCobot's exported URDFs define 'width' and read it nowhere; another package's
+    # cuboid_inertial reads its own parameter 'width', which hides any property of that name
+    (tmp_path / ".git").mkdir()
+    write(tmp_path / "inertial.xacro", library("""
+        <xacro:macro name="cuboid_inertial" params="width mass">
+          <inertial><mass value="${mass}"/><inertia ixx="${mass * width * width / 6}" ixy="0" ixz="0" iyy="1" iyz="0" izz="1"/></inertial>
+        </xacro:macro>
+        <xacro:macro name="shadowed" params="">
+          <xacro:property name="width" value="1"/>
+          <link name="${width}"/>
+        </xacro:macro>
+        """))
+    model = write(tmp_path / "arm.urdf", robot("""
+        <xacro:property name="width" value=".2"/>
+        <link name="base"/>
+        """))
+    [info] = diagnostics(model, "X102")
+    assert "'width'" in info.message and info.line == line_of(model, "width")
+    write(tmp_path / "reader.urdf.xacro", robot("""
+        <xacro:include filename="arm.urdf"/>
+        <xacro:macro name="plate" params="">
+          <link name="plate"><visual><geometry><box size="${width} 1 1"/></geometry></visual></link>
+        </xacro:macro>
+        <xacro:plate/>
+        """, name="reader"))
+    assert found(model, codes=("X102",)) == []  # a macro body reads it where no parameter hides it
+
+
 def test_a_macro_of_a_model_nothing_calls_is_info(tmp_path):
     model = write(tmp_path / "robot.urdf.xacro", robot("""
         <xacro:macro name="bumper" params="">

@@ -122,7 +122,9 @@ def property_unused(loaded, given) -> Iterator[Diagnostic]:
             name = definition.name
             if definition.kind != "property" or not name or "$" in name:
                 continue
-            if _used(sources, lambda f: name in f.names or name in f.blocks or name in f.forwarded):
+            # a document's property is read only where no macro parameter or local property of its name hides it
+            document_wide = definition.macro is None or definition.scope in ("global", "parent")
+            if _used(sources, lambda f: name in (f.unbound if document_wide else f.names) or name in f.blocks or name in f.forwarded):
                 continue
             yield _diagnostic("X102", f"property '{name}' is used nowhere", file, definition.place, f"use it as ${{{name}}}, or remove it")
 
