@@ -992,3 +992,19 @@ def test_a_urdf_file_written_in_xacro_is_a_note_and_one_that_only_declares_the_n
     assert "root Link: $(arg namespace)base_link" in real.stdout
     declared = write(tmp_path / "plain.urdf", '<robot name="p" xmlns:xacro="http://ros.org/wiki/xacro"><link name="base_link"/></robot>\n')
     assert found(declared, codes=("X108",)) == []
+
+
+def test_a_urdf_whose_only_xacro_is_a_property_nothing_reads_is_told_to_drop_it_not_to_be_renamed(tmp_path):
+    """myCobot's exported URDFs start with <xacro:property name="width" value=".2"/> and read it
+    nowhere: readers skip the element and load what xacro makes, so only X102 has something to say."""
+    text = ('<robot name="firefighter" xmlns:xacro="http://www.ros.org/wiki/xacro">\n  <xacro:property name="width" value=".2"/>\n'
+            '  <link name="base"/>\n  <link name="link1"/>\n'
+            '  <joint name="j1" type="continuous"><parent link="base"/><child link="link1"/></joint>\n</robot>\n')
+    model = write(tmp_path / "arm.urdf", text)
+    assert [code for code, *_ in found(model, codes=("X102", "X108"))] == ["X102"]
+    real = subprocess.run([require_tool("check_urdf"), str(model)], capture_output=True, text=True)
+    assert real.returncode == 0 and "root Link: base has 1 child(ren)" in real.stdout
+    read = write(tmp_path / "read.urdf", text.replace('<link name="link1"/>', '<link name="link1"><visual><geometry><box size="${width} 1 1"/></geometry></visual></link>'))
+    assert [code for code, *_ in found(read, codes=("X102", "X108"))] == ["X108"]
+    condition = write(tmp_path / "condition.urdf", text.replace('<link name="link1"/>', '<xacro:if value="false"><link name="extra"/></xacro:if><link name="link1"/>'))
+    assert "X108" in [code for code, *_ in found(condition, codes=("X108",))]

@@ -551,7 +551,9 @@ def xacro_named_urdf(loaded, given) -> Iterator[Diagnostic]:
     `${...}` / `$(...)` in an attribute or text (a `xmlns:xacro` declaration alone is
     not use). urdfcli expands it, as it does a `.xacro` file, and checks the expansion.
     Info: the file is right when every reader expands it first (a launch file that runs
-    xacro on it).
+    xacro on it). A file whose only xacro is `<xacro:property>` and `<xacro:arg>` elements
+    that nothing reads is left to X102 and X101: readers skip the elements, and load what
+    xacro makes.
 
     ## Why is this bad?
     A reader given the file itself does not expand it: `check_urdf`, PyBullet,
@@ -584,11 +586,19 @@ def xacro_named_urdf(loaded, given) -> Iterator[Diagnostic]:
     document = loaded.document
     if not document.is_xacro or document.file is None or not document.file.name.endswith(".urdf") or not loaded.xacro_sources.files:
         return
+    if _definitions_only(loaded.xacro_sources.files[0]):
+        return  # readers skip the unknown elements and load what xacro makes: X102 and X101 say what nothing reads
     name = document.file.name
     yield _diagnostic(
         "X108", f"{name} is written in xacro: a URDF reader given the file itself (check_urdf, PyBullet, MuJoCo, Gazebo) reads its xacro markup unexpanded",
         loaded.xacro_sources.files[0], Place(0), f"name it {name}.xacro, and give readers its expansion (urdfcli expand {name})",
     )
+
+
+def _definitions_only(file) -> bool:
+    """Whether a file's xacro is only properties and arguments, which no ``${...}`` or
+    ``$(...)`` reads: its expansion is its own text without them."""
+    return not file.expressions and not file.substitutions and file.xacro_elements <= {"property", "arg"}
 
 
 def unprefixed_calls(loaded) -> list:
