@@ -90,8 +90,9 @@ def property_unused(loaded, given) -> Iterator[Diagnostic]:
     Notes a `<xacro:property>` whose name no `${...}` reads (and, for a block
     property, no `<xacro:insert_block>` inserts) in the model's files, the
     files their includes may reach, or the xacro files of the repository or
-    workspace around it. Info: a library's property may serve a package
-    outside the workspace.
+    workspace around it. A `${width}` in a macro body whose parameter or own
+    property is named `width` reads that, not a document's property. Info: a
+    library's property may serve a package outside the workspace.
 
     ## Why is this bad?
     A property nobody reads is a value that looks like it sets something and
