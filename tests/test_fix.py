@@ -311,6 +311,31 @@ def test_a_tensor_computed_by_a_macro_or_shared_by_calls_is_left_alone(cli, here
     assert snapshot(here) == before
 
 
+def test_a_number_xacro_writes_its_own_way_is_edited_at_the_call(cli, here):
+    """myCobot's arm passes izz="0.000096" to its link_inertial macro, and xacro writes the
+    ${izz} it reads as 9.6e-05: the literal at the call is still the value to edit."""
+    text = f"""<?xml version="1.0"?>
+<robot name="r" {XACRO_NS}>
+  <xacro:macro name="link_inertial" params="mass ixx iyy izz">
+    <inertial>
+      <mass value="${{mass}}"/>
+      <inertia ixx="${{ixx}}" ixy="0" ixz="0" iyy="${{iyy}}" iyz="0" izz="${{izz}}"/>
+    </inertial>
+  </xacro:macro>
+  <link name="base"/>
+  <link name="arm">
+    <collision><geometry><box size="0.1 0.1 1.0"/></geometry></collision>
+    <xacro:link_inertial mass="2" ixx="0.000096" iyy="1e-4" izz=" 0.000096 "/>
+  </link>
+  <joint name="j" type="revolute"><parent link="base"/><child link="arm"/><axis xyz="0 0 1"/><limit lower="-1" upper="1" effort="1" velocity="1"/></joint>
+</robot>
+"""
+    put(here, {"robot.urdf.xacro": text})
+    files = fixed(cli, here, "robot.urdf.xacro", "I009", "--unsafe-fixes", elements=("inertia",))
+    assert files["robot.urdf.xacro"].decode() == text.replace(
+        'ixx="0.000096" iyy="1e-4" izz=" 0.000096 "', 'ixx="0.168333" iyy="0.168333" izz=" 0.00333333 "')
+
+
 SEGMENT = """<?xml version="1.0"?>
 <robot xmlns:xacro="http://www.ros.org/wiki/xacro">
   <xacro:macro name="seg" params="name parent size">

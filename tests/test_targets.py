@@ -590,29 +590,30 @@ def test_collision_meshes_mujoco_cannot_open_are_one_refusal(tmp_path):
     assert found[0].line == 1 and found[0].subjects == ("knuckle", "finger", "tip")
 
 
-def test_links_mujoco_weighs_by_their_meshes_are_one_warning(tmp_path):
-    """Pepper's hands: 28 finger links with collision meshes and no <inertial>, each on a mimic
-    joint. MuJoCo weighs every one by its meshes; one C107 names them at the first link, not 28
-    lines of one cause. A link weighed by primitives keeps its own line, with its weight."""
-    model = tmp_path / "hand.urdf"
-    fingers = "".join(
-        f'<link name="{name}"><collision><geometry><mesh filename="{name}.stl"/></geometry></collision></link>'
-        f'<joint name="{name}_joint" type="revolute"><parent link="base"/><child link="{name}"/><axis xyz="0 0 1"/>'
-        '<limit lower="-1" upper="1" effort="1" velocity="1"/></joint>'
-        for name in ("finger11", "finger12", "finger13", "thumb")
-    )
-    model.write_text(
-        f'<robot name="r"><link name="base"/>{fingers}'
-        '<link name="palm"><collision><geometry><box size="0.1 0.1 0.1"/></geometry></collision></link>'
-        '<joint name="palm_joint" type="revolute"><parent link="base"/><child link="palm"/><axis xyz="0 0 1"/>'
-        '<limit lower="-1" upper="1" effort="1" velocity="1"/></joint></robot>'
-    )
+def test_links_mujoco_weighs_by_their_shapes_are_one_warning(tmp_path):
+    """myCobot's exported arms have no <inertial> at all: MuJoCo fills each moving link's
+    collision shapes at 1000 kg/m³. One C107 names the links, at the first, not a warning per link."""
+    def chain(names):
+        return "".join(
+            f'<link name="{name}"><collision><geometry><box size="0.1 0.1 0.1"/></geometry></collision></link>'
+            f'<joint name="{name}_joint" type="revolute"><parent link="{parent}"/><child link="{name}"/><axis xyz="0 0 1"/>'
+            '<limit lower="-1" upper="1" effort="1" velocity="1"/></joint>'
+            for parent, name in zip(("base", *names), names)
+        )
+    model = tmp_path / "arm.urdf"
+    model.write_text(f'<robot name="r"><link name="base"/>{chain(("link1", "link2", "link3", "link4"))}</robot>')
     found = [d for d in predicted(model, profile("mujoco")).diagnostics if d.code == "C107"]
-    assert [(d.message, d.subjects) for d in found] == [
-        ("MuJoCo gives 4 links without <inertial> ('finger11', 'finger12', 'finger13' and 1 more) the mass of their meshes: "
-         "their collision shapes are filled at 1000 kg/m³", ("finger11", "finger12", "finger13", "thumb")),
-        ("MuJoCo gives link 'palm' 1 kg: it has no <inertial>, so its collision shapes are filled at 1000 kg/m³", ("palm",)),
+    assert [d.message for d in found] == [
+        "MuJoCo gives 4 links without <inertial> ('link1', 'link2', 'link3' and 1 more) the mass of their collision shapes, filled at 1000 kg/m³"
     ]
+    assert found[0].line == 1 and found[0].subjects == ("link1", "link2", "link3", "link4")
+    model.write_text(f'<robot name="r"><link name="base"/>{chain(("link1",))}</robot>')
+    found = [d.message for d in predicted(model, profile("mujoco")).diagnostics if d.code == "C107"]
+    assert found == ["MuJoCo gives link 'link1' 1 kg: it has no <inertial>, so its collision shapes are filled at 1000 kg/m³"]
+    require_consumer("mujoco")
+    import mujoco
+
+    assert mujoco.MjModel.from_xml_path(str(model)).body_mass[1] == pytest.approx(1.0)
 
 
 # -- check --load ----------------------------------------------------------------------------------

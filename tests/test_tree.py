@@ -302,6 +302,18 @@ def test_an_axis_written_with_negative_zeros_reads_without_them(tmp_path):
     assert "axis 0 1 0" in dot and "-0" not in dot, dot
 
 
+def test_an_origin_written_with_negative_zeros_is_drawn_without_them(tmp_path):
+    """Techman's TM arms write their origins as their exporter does: rpy="0.000000 -0.000000 1.570796"."""
+    path = tmp_path / "arm.urdf"
+    path.write_text(
+        '<robot name="arm"><link name="link_3"/><link name="link_4"/>'
+        '<joint name="joint_4" type="revolute"><parent link="link_3"/><child link="link_4"/>'
+        '<origin rpy="0.000000 -0.000000 1.570796" xyz="0.311500 -0.000000 -0.156300"/><axis xyz="0 0 1"/>'
+        '<limit lower="-1" upper="1" effort="1" velocity="1"/></joint></robot>\n')
+    dot = run_cli("graph", "--format", "dot", str(path)).stdout.decode()
+    assert "xyz: 0.3115 0 -0.1563\\nrpy: 0 0 1.570796" in dot, dot
+
+
 def test_a_computed_small_limit_reads_short(tmp_path):
     """${1/30000} is 3.3333333333333335e-05 in xacro's output: its exponent does not keep all its digits."""
     path = tmp_path / "slide.urdf"

@@ -323,6 +323,35 @@ def test_a_library_property_another_model_of_the_workspace_uses_is_clean(tmp_pat
     assert found(rover, codes=("X102",)) == []
 
 
+def test_a_property_read_only_as_a_macro_parameter_of_its_name_is_used_nowhere(tmp_path):
+    # myCobot's exported URDFs define 'width' and read it nowhere; another package's
+    # cuboid_inertial reads its own parameter 'width', which hides any property of that name
+    (tmp_path / ".git").mkdir()
+    write(tmp_path / "inertial.xacro", library("""
+        <xacro:macro name="cuboid_inertial" params="width mass">
+          <inertial><mass value="${mass}"/><inertia ixx="${mass * width * width / 6}" ixy="0" ixz="0" iyy="1" iyz="0" izz="1"/></inertial>
+        </xacro:macro>
+        <xacro:macro name="shadowed" params="">
+          <xacro:property name="width" value="1"/>
+          <link name="${width}"/>
+        </xacro:macro>
+        """))
+    model = write(tmp_path / "arm.urdf", robot("""
+        <xacro:property name="width" value=".2"/>
+        <link name="base"/>
+        """))
+    [info] = diagnostics(model, "X102")
+    assert "'width'" in info.message and info.line == line_of(model, "width")
+    write(tmp_path / "reader.urdf.xacro", robot("""
+        <xacro:include filename="arm.urdf"/>
+        <xacro:macro name="plate" params="">
+          <link name="plate"><visual><geometry><box size="${width} 1 1"/></geometry></visual></link>
+        </xacro:macro>
+        <xacro:plate/>
+        """, name="reader"))
+    assert found(model, codes=("X102",)) == []  # a macro body reads it where no parameter hides it
+
+
 def test_a_macro_of_a_model_nothing_calls_is_info(tmp_path):
     model = write(tmp_path / "robot.urdf.xacro", robot("""
         <xacro:macro name="bumper" params="">
@@ -997,3 +1026,19 @@ def test_the_fixed_names_of_a_macro_without_parameters_are_not_said_to_ignore_th
         "macro 'arm' names 2 links and joints ('arm_base', 'arm_base_joint') and takes no parameters: it can be called once per robot",
         'give it a parameter and build the names from it, such as name="${prefix}arm_base"',
     )
+
+
+def test_a_urdf_whose_only_xacro_is_a_property_nothing_reads_is_told_to_drop_it_not_to_be_renamed(tmp_path):
+    """myCobot's exported URDFs start with <xacro:property name="width" value=".2"/> and read it
+    nowhere: readers skip the element and load what xacro makes, so only X102 has something to say."""
+    text = ('<robot name="firefighter" xmlns:xacro="http://www.ros.org/wiki/xacro">\n  <xacro:property name="width" value=".2"/>\n'
+            '  <link name="base"/>\n  <link name="link1"/>\n'
+            '  <joint name="j1" type="continuous"><parent link="base"/><child link="link1"/></joint>\n</robot>\n')
+    model = write(tmp_path / "arm.urdf", text)
+    assert [code for code, *_ in found(model, codes=("X102", "X108"))] == ["X102"]
+    real = subprocess.run([require_tool("check_urdf"), str(model)], capture_output=True, text=True)
+    assert real.returncode == 0 and "root Link: base has 1 child(ren)" in real.stdout
+    read = write(tmp_path / "read.urdf", text.replace('<link name="link1"/>', '<link name="link1"><visual><geometry><box size="${width} 1 1"/></geometry></visual></link>'))
+    assert [code for code, *_ in found(read, codes=("X102", "X108"))] == ["X108"]
+    condition = write(tmp_path / "condition.urdf", text.replace('<link name="link1"/>', '<xacro:if value="false"><link name="extra"/></xacro:if><link name="link1"/>'))
+    assert "X108" in [code for code, *_ in found(condition, codes=("X108",))]

@@ -40,6 +40,7 @@ class Facts(NamedTuple):
     variants: frozenset[tuple[str, str]]  # (macro, parameter as written): a macro of that name uses that parameter
     interfaces: frozenset[tuple[str, str]]  # (parameter list, parameter): a macro taking that list uses that parameter
     unprefixed: frozenset[str] = frozenset()  # elements written without a prefix: among them, macros called without xacro:
+    unbound: frozenset[str] = frozenset()  # names read where no macro around binds them (the top level, or free): a document property may be what they read
 
 
 def chain(file: XacroFile, macro: int | None) -> list[int]:
@@ -110,7 +111,7 @@ def file_facts(file: XacroFile) -> Facts:
 
 
 def _facts_of(file: XacroFile) -> Facts:
-    names, free, arguments, globals_ = set(), set(), set(), set()
+    names, free, arguments, globals_, unbound = set(), set(), set(), set(), set()
     any_argument = any_global = False
     for expression in file.expressions:
         read = free_names(expression.text)
@@ -119,6 +120,7 @@ def _facts_of(file: XacroFile) -> Facts:
         names.update(n.name for n in read)
         if expression.macro is not None:
             free.update(n.name for n in read if n.name not in bound(file, expression.macro))
+        unbound.update(n.name for n in read if expression.macro is None or n.name not in bound(file, expression.macro))
         if any(n.dotted == "xacro.arg" for n in read):
             given = literal_calls(expression.text, ("xacro.arg",))
             any_argument |= given is None
@@ -154,18 +156,18 @@ def _facts_of(file: XacroFile) -> Facts:
         frozenset(b.name for b in file.blocks), frozenset(globals_), any_global,
         frozenset(forwarded), frozenset(free), frozenset(free_blocks),
         frozenset((file.macros[m].name, p) for m, p in used), frozenset((interface(file, m), p) for m, p in used),
-        frozenset(file.unprefixed),
+        frozenset(file.unprefixed), frozenset(unbound),
     )
 
 
 def merged(facts: Iterable[Facts]) -> Facts:
     facts = list(facts)
-    fields = ("names", "arguments", "calls", "blocks", "globals", "forwarded", "free", "free_blocks", "variants", "interfaces", "unprefixed")
+    fields = ("names", "arguments", "calls", "blocks", "globals", "forwarded", "free", "free_blocks", "variants", "interfaces", "unprefixed", "unbound")
     union = [frozenset().union(*(getattr(f, field) for f in facts)) for field in fields]
-    names, arguments, calls, blocks, globals_, forwarded, free, free_blocks, variants, interfaces, unprefixed = union
+    names, arguments, calls, blocks, globals_, forwarded, free, free_blocks, variants, interfaces, unprefixed, unbound = union
     return Facts(
         names, arguments, any(f.any_argument for f in facts), calls, any(f.any_call for f in facts),
-        blocks, globals_, any(f.any_global for f in facts), forwarded, free, free_blocks, variants, interfaces, unprefixed,
+        blocks, globals_, any(f.any_global for f in facts), forwarded, free, free_blocks, variants, interfaces, unprefixed, unbound,
     )
 
 

@@ -86,6 +86,14 @@ def escape_attribute(text: str, quote: str = '"') -> str:
     return text.replace(quote, "&quot;" if quote == '"' else "&apos;")
 
 
+def _same_number(written: str, read: str) -> bool:
+    """Whether a literal and the value read from it are one number, written two ways."""
+    try:
+        return float(written) == float(read)
+    except ValueError:
+        return False
+
+
 def _common(old: str, new: str) -> tuple[int, int]:
     """The length of the common start and of the common end of two texts (not overlapping)."""
     most = min(len(old), len(new))
@@ -259,7 +267,11 @@ class Placer:
         computed = [p for p in pieces if p[0] != "text"]
         if not computed:
             if raw.translate(_BLANKS) != old:  # (XML reads a tab or a new line in a value as a space)
-                raise Unplaceable(f"the value at {self.where(site, base)} is not read as written")
+                if not _same_number(raw, old):
+                    raise Unplaceable(f"the value at {self.where(site, base)} is not read as written")
+                # xacro read the number through ${...} and wrote it its own way (0.000096 as 9.6e-05): the number is written anew
+                begin = len(raw) - len(raw.lstrip())
+                return [Spot(Edit(site.file, base + begin, base + len(raw.rstrip()), escape_attribute(new, quote)), affected)]
             start, end = _common(old, new)
             return [Spot(Edit(site.file, base + start, base + len(raw) - end, escape_attribute(new[start:len(new) - end], quote)), affected)]
         head, tail = raw[:computed[0][1]], raw[computed[-1][2]:]

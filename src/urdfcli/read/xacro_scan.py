@@ -170,6 +170,7 @@ class XacroFile:
         self.source = source  # the file's text and its positions
         self.makes = False
         self.uses_xacro = False  # a xacro element, or xacro's namespace declared on the root
+        self.xacro_elements: set[str] = set()  # the local names of its xacro elements (macro, property, if...)
         self.includes: list[str] = []
         self.namespaces: list[str] = []  # ns attributes of its includes
         self.macros: list[Macro] = []
@@ -287,6 +288,7 @@ class _Scanner:
         local = local_name(element.tag)
         if is_xacro(element):
             found.uses_xacro = True
+            found.xacro_elements.add(local)
             if local == "macro":
                 found.macros.append(Macro(element.get("name") or "", Place(at, "name"), element.get("params") or "", macro))
                 self.attributes(element, at, macro, skip=("name",))  # defaults are read where the macro is called

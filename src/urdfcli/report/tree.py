@@ -99,8 +99,9 @@ def significant_digits(text: str) -> int:
 def readable(value: float, digits: int = 6, written: int = 7) -> str:
     """A value as written when it is short (at most ``written`` significant digits: ``1.57``),
     else to ``digits`` significant digits: what xacro computed (``2.9670597283903604`` for
-    ``${radians(170)}``, ``3.3333333333333335e-05`` for ``${1/30000}``) reads ``2.96706``."""
-    text = format_number(value)
+    ``${radians(170)}``, ``3.3333333333333335e-05`` for ``${1/30000}``) reads ``2.96706``.
+    A zero reads ``0`` however it is signed (a CAD exporter's ``rpy="0 -0.000000 1.570796"``)."""
+    text = format_number(value + 0.0)
     return text if significant_digits(text) <= written else short(value, digits)
 
 

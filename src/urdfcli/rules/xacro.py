@@ -90,8 +90,9 @@ def property_unused(loaded, given) -> Iterator[Diagnostic]:
     Notes a `<xacro:property>` whose name no `${...}` reads (and, for a block
     property, no `<xacro:insert_block>` inserts) in the model's files, the
     files their includes may reach, or the xacro files of the repository or
-    workspace around it. Info: a library's property may serve a package
-    outside the workspace.
+    workspace around it. A `${width}` in a macro body whose parameter or own
+    property is named `width` reads that, not a document's property. Info: a
+    library's property may serve a package outside the workspace.
 
     ## Why is this bad?
     A property nobody reads is a value that looks like it sets something and
@@ -122,7 +123,9 @@ def property_unused(loaded, given) -> Iterator[Diagnostic]:
             name = definition.name
             if definition.kind != "property" or not name or "$" in name:
                 continue
-            if _used(sources, lambda f: name in f.names or name in f.blocks or name in f.forwarded):
+            # a document's property is read only where no macro parameter or local property of its name hides it
+            document_wide = definition.macro is None or definition.scope in ("global", "parent")
+            if _used(sources, lambda f: name in (f.unbound if document_wide else f.names) or name in f.blocks or name in f.forwarded):
                 continue
             yield _diagnostic("X102", f"property '{name}' is used nowhere", file, definition.place, f"use it as ${{{name}}}, or remove it")
 
@@ -552,7 +555,9 @@ def xacro_named_urdf(loaded, given) -> Iterator[Diagnostic]:
     `${...}` / `$(...)` in an attribute or text (a `xmlns:xacro` declaration alone is
     not use). urdfcli expands it, as it does a `.xacro` file, and checks the expansion.
     Info: the file is right when every reader expands it first (a launch file that runs
-    xacro on it).
+    xacro on it). A file whose only xacro is `<xacro:property>` and `<xacro:arg>` elements
+    that nothing reads is left to X102 and X101: readers skip the elements, and load what
+    xacro makes.
 
     ## Why is this bad?
     A reader given the file itself does not expand it: `check_urdf`, PyBullet,
@@ -585,6 +590,8 @@ def xacro_named_urdf(loaded, given) -> Iterator[Diagnostic]:
     document = loaded.document
     if not document.is_xacro or document.file is None or not document.file.name.endswith(".urdf") or not loaded.xacro_sources.files:
         return
+    if _definitions_only(loaded.xacro_sources.files[0]):
+        return  # readers skip the unknown elements and load what xacro makes: X102 and X101 say what nothing reads
     name = document.file.name
     # gz_ros2_control's demos are named test_cart.xacro.urdf: the xacro name is test_cart.urdf.xacro
     meant = name.removesuffix(".xacro.urdf") + ".urdf.xacro" if name.endswith(".xacro.urdf") else f"{name}.xacro"
@@ -592,6 +599,12 @@ def xacro_named_urdf(loaded, given) -> Iterator[Diagnostic]:
         "X108", f"{name} is written in xacro: a URDF reader given the file itself (check_urdf, PyBullet, MuJoCo, Gazebo) reads its xacro markup unexpanded",
         loaded.xacro_sources.files[0], Place(0), f"name it {meant}, and give readers its expansion (urdfcli expand {name})",
     )
+
+
+def _definitions_only(file) -> bool:
+    """Whether a file's xacro is only properties and arguments, which no ``${...}`` or
+    ``$(...)`` reads: its expansion is its own text without them."""
+    return not file.expressions and not file.substitutions and file.xacro_elements <= {"property", "arg"}
 
 
 def unprefixed_calls(loaded) -> list:

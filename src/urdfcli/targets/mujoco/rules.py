@@ -274,8 +274,7 @@ def unlimited_joint(loaded, given):
     doc=explain(
         """With `--target mujoco`: finds a moving body none of whose links has an
         `<inertial>`, but which has collision shapes, while `inertiafromgeom` is `auto`
-        (the URDF default) or `true`: one warning per link weighed by primitive shapes,
-        with its weight, and one for all those weighed by their meshes.""",
+        (the URDF default) or `true`. One diagnostic names every such link, at the first.""",
         """MuJoCo gives the body the mass and inertia of its collision shapes filled at
         1000 kg/m³ (src/user/user_objects.cc, `inertiafromgeom`): a 10 cm box weighs
         1 kg, a hollow shell as much as a solid. Other consumers see no mass at all.""",
@@ -285,22 +284,13 @@ def unlimited_joint(loaded, given):
 )
 def mass_from_geometry(loaded, given):
     options = compiler_options(loaded)
-    moving = {name for body in build(loaded, given.profile).bodies if body.joint is not None for name in body.links}
-    weighed = [(link, geometry_body(link)) for name, link in loaded.robot.links.items() if name in moving and weighed_by_geometry(link, options)]
-    # links weighed by their meshes have no weight to show: a hand's dozens of them are one line, as C504 names its links
-    by_meshes = [link for link, found in weighed if found is None]
-    if len(by_meshes) > 1:
-        yield loaded.diagnostic(
-            "C107",
-            f"MuJoCo gives {len(by_meshes)} links without <inertial> ({names(link.name for link in by_meshes)}) the mass of their meshes: "
-            "their collision shapes are filled at 1000 kg/m³",
-            by_meshes[0].at,
-            "give the links an <inertial> with their real mass and tensor",
-            subjects=tuple(link.name for link in by_meshes),
-        )
-    for link, found in weighed:
-        if found is None and len(by_meshes) > 1:
-            continue
+    weighed = [
+        loaded.robot.links[name] for body in build(loaded, given.profile).bodies if body.joint is not None
+        for name in body.links if weighed_by_geometry(loaded.robot.links[name], options)
+    ]
+    if len(weighed) == 1:
+        link = weighed[0]
+        found = geometry_body(link)
         weight = f"{number(found[0])} kg" if found is not None else "the mass of its meshes"
         yield loaded.diagnostic(
             "C107",
@@ -308,6 +298,14 @@ def mass_from_geometry(loaded, given):
             link.at,
             "give the link an <inertial> with its real mass and tensor",
             subjects=(link.name,),
+        )
+    elif weighed:  # one cause: one diagnostic, as an exported arm without a single <inertial> has it on every link
+        yield loaded.diagnostic(
+            "C107",
+            f"MuJoCo gives {len(weighed)} links without <inertial> ({names(link.name for link in weighed)}) the mass of their collision shapes, filled at 1000 kg/m³",
+            weighed[0].at,
+            "give each link an <inertial> with its real mass and tensor",
+            subjects=tuple(link.name for link in weighed),
         )
 
 
