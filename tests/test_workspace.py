@@ -490,6 +490,33 @@ def test_an_include_of_a_layout_only_the_build_makes_says_where_the_sources_have
     assert [(d["code"], d.get("hint")) for d in report["files"][0]["diagnostics"]] == [("X003", None)]
 
 
+def test_an_include_of_a_layout_the_install_rules_make_reads_the_source_before_the_build(tmp_path):
+    """ros2_control_demos on a fresh clone, or in a CI job that does not build: the package
+    installs description/urdf to share/NAME/urdf (its CMakeLists.txt says so), so
+    $(find acme_wheels)/urdf/caster.xacro is its description/urdf/caster.xacro. The model
+    expands as xacro expands it once built, and the caster's mistake is said in its source.
+    A rule written only in a comment, or for another destination, maps nothing."""
+    from differential import canonical, real_xacro
+
+    repo_a, repo_b = make_colcon_workspace(tmp_path)
+    wheels = repo_b / "wheels"
+    write(wheels / "description" / "urdf" / "caster.xacro", CASTER)
+    rules = ("cmake_minimum_required(VERSION 3.8)\nproject(acme_wheels)\n"
+             "install(\n  DIRECTORY urdf description/urdf  # the layout launch files read\n  DESTINATION share/${PROJECT_NAME}\n)\n")
+    write(wheels / "CMakeLists.txt", rules)
+    model = write(repo_a / "robot" / "urdf" / "robot.urdf.xacro", WHEELED)
+    done, report = check_json(str(model), cwd=tmp_path / "ws")
+    assert [(d["code"], d["path"]) for d in report["files"][0]["diagnostics"]] == [("V009", "src/repo_b/wheels/description/urdf/caster.xacro")]
+    share = install_package(tmp_path / "built", wheels, "acme_wheels", {"urdf": "urdf", "description/urdf": "urdf"})
+    real = real_xacro(model, packages={"acme_wheels": str(share)})
+    assert real.returncode == 0, real.stderr
+    assert canonical(run_cli("expand", str(model), cwd=tmp_path / "ws").stdout.decode()) == canonical(real.stdout)
+    for unmapped in (rules.replace("install(", "# install("), rules.replace("share/${PROJECT_NAME}", "lib/${PROJECT_NAME}")):
+        write(wheels / "CMakeLists.txt", unmapped)
+        done, report = check_json(str(model), cwd=tmp_path / "ws")
+        assert [d["code"] for d in report["files"][0]["diagnostics"]] == ["X003"], report
+
+
 def test_an_include_a_substitution_left_empty_says_which_not_that_the_build_moves_files(tmp_path):
     """ros2_kortex's gen3.xacro: dof defaults to "", so kortex_robot.xacro's
     $(find kortex_description)/arms/${arm}/${dof}dof/urdf/... reads arms/gen3/dof/urdf/...,

@@ -178,6 +178,53 @@ def cmake_project(folder: Path) -> str | None:
     return found.group(1) if found else None
 
 
+_INSTALL = re.compile(r"\binstall\s*\(([^()]*)\)", re.IGNORECASE)
+# The words of install(DIRECTORY ...) that end its list of folders
+_INSTALL_OPTIONS = frozenset((
+    "DESTINATION", "FILES_MATCHING", "PATTERN", "REGEX", "EXCLUDE", "PERMISSIONS", "FILE_PERMISSIONS", "DIRECTORY_PERMISSIONS",
+    "USE_SOURCE_PERMISSIONS", "CONFIGURATIONS", "COMPONENT", "OPTIONAL", "MESSAGE_NEVER", "EXCLUDE_FROM_ALL", "TYPE",
+))
+
+
+def installed_folders(package: Path) -> Iterator[tuple[tuple[str, ...], tuple[str, ...]]]:
+    """What a package's CMakeLists.txt installs to its share folder with
+    ``install(DIRECTORY ... DESTINATION share/${PROJECT_NAME})``: each folder's path in the
+    package, and its path below ``share/NAME`` (a folder written with a final ``/`` installs
+    its contents). Folders and destinations written with other variables are left out."""
+    try:
+        text = (package / "CMakeLists.txt").read_text(errors="replace")
+    except OSError:
+        return
+    project = cmake_project(package)
+    text = re.sub(r"#[^\n]*", "", text)
+    for call in _INSTALL.finditer(text):
+        words = [word.strip('"') for word in call.group(1).split()]
+        upper = [word.upper() for word in words]
+        if not words or upper[0] != "DIRECTORY" or "DESTINATION" not in upper:
+            continue
+        at = upper.index("DESTINATION")
+        destination = words[at + 1].strip("/").split("/") if at + 1 < len(words) else []
+        if destination[:1] != ["share"] or len(destination) < 2 or destination[1] not in ("${PROJECT_NAME}", project):
+            continue
+        below = tuple(destination[2:])
+        folders = words[1:next((i for i in range(1, at) if upper[i] in _INSTALL_OPTIONS), at)]
+        for folder in folders:
+            parts = tuple(part for part in folder.split("/") if part not in ("", "."))
+            if parts and "$" not in folder and not folder.startswith("/") and ".." not in parts:
+                yield parts, below if folder.endswith("/") else below + parts[-1:]
+
+
+def installed_source(package: Path, written: tuple[str, ...]) -> Path | None:
+    """The file of ``package`` its install rules put at ``written`` below its share folder
+    (ros2_control_demos installs ``description/ros2_control`` as ``ros2_control``), or None."""
+    for source, target in installed_folders(package):
+        if len(written) > len(target) and written[:len(target)] == target:
+            found = package.joinpath(*source, *written[len(target):])
+            if found.is_file():
+                return found
+    return None
+
+
 def _holds_package(folder: Path) -> Path | None:
     return folder if (folder / "package.xml").is_file() else None
 
@@ -413,16 +460,20 @@ class PackageResolver:
         source; a plain build copies it to ``share/NAME/`` and its path below one of the
         package's folders (``install(DIRECTORY description/urdf DESTINATION
         share/${PROJECT_NAME})``): the source is the package's file of that name whose
-        path ends most like it. Any other path, or a copy of no such file, is given back."""
+        path ends most like it. Any other path, or a copy of no such file, is given back. A
+        path of a package's sources that the package lacks (a workspace not built) is the
+        file its install rules put there (:func:`installed_source`), if one does."""
+        absolute = Path(os.path.abspath(path))
+        if not absolute.is_file():  # (not kept: a build may make it)
+            package = self.index.enclosing_package(absolute.parent)
+            found = installed_source(package, absolute.relative_to(package).parts) if package is not None else None
+            return str(found) if found is not None else path
         source = self._workspace_source
         if source is None:
             return path
-        absolute = Path(os.path.abspath(path))
         try:
             below = absolute.relative_to(source.parent / "install").parts
         except ValueError:
-            return path
-        if not absolute.is_file():  # xacro cannot read it: nor is it read elsewhere (not kept: a build may make it)
             return path
         if path not in self._sources:
             self._sources[path] = self._installed_from(absolute, below, source) or path
