@@ -511,6 +511,8 @@ def test_an_include_of_a_layout_the_install_rules_make_reads_the_source_before_t
     real = real_xacro(model, packages={"acme_wheels": str(share)})
     assert real.returncode == 0, real.stderr
     assert canonical(run_cli("expand", str(model), cwd=tmp_path / "ws").stdout.decode()) == canonical(real.stdout)
+    resolver = PackageResolver((), model)  # a mesh named by its installed path is found so too
+    assert resolver.resolve_uri("package://acme_wheels/urdf/caster.xacro") == wheels / "description" / "urdf" / "caster.xacro"
     for unmapped in (rules.replace("install(", "# install("), rules.replace("share/${PROJECT_NAME}", "lib/${PROJECT_NAME}")):
         write(wheels / "CMakeLists.txt", unmapped)
         done, report = check_json(str(model), cwd=tmp_path / "ws")

@@ -572,7 +572,10 @@ class PackageResolver:
         parsed = urlparse(uri)
         if parsed.scheme == "package":
             folder = self.find(parsed.netloc)
-            return folder / unquote(parsed.path.lstrip("/")) if folder else None
+            if folder is None:
+                return None
+            path = folder / unquote(parsed.path.lstrip("/"))
+            return path if path.exists() else Path(self.source_of(str(path)))  # (before a build: where its install rules take it from)
         if parsed.scheme == "file":
             return Path(unquote(parsed.path))
         if parsed.scheme == "" or len(parsed.scheme) == 1:  # plain or Windows-style path
