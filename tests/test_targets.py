@@ -592,28 +592,36 @@ def test_collision_meshes_mujoco_cannot_open_are_one_refusal(tmp_path):
 
 def test_links_mujoco_weighs_by_their_shapes_are_one_warning(tmp_path):
     """myCobot's exported arms have no <inertial> at all: MuJoCo fills each moving link's
-    collision shapes at 1000 kg/m³. One C107 names the links, at the first, not a warning per link."""
-    def chain(names):
+    collision shapes at 1000 kg/m³. One C107 names the links, at the first written, not a warning
+    per link, with the mass MuJoCo gives them in all (romeo_laas_small's collision links weigh
+    62 kg so); a link of meshes has no mass worked out here, and the total says so."""
+    def chain(names, shape='<box size="0.1 0.1 0.1"/>'):
         return "".join(
-            f'<link name="{name}"><collision><geometry><box size="0.1 0.1 0.1"/></geometry></collision></link>'
+            f'<link name="{name}"><collision><geometry>{shape}</geometry></collision></link>'
             f'<joint name="{name}_joint" type="revolute"><parent link="{parent}"/><child link="{name}"/><axis xyz="0 0 1"/>'
             '<limit lower="-1" upper="1" effort="1" velocity="1"/></joint>'
             for parent, name in zip(("base", *names), names)
         )
+    require_consumer("mujoco")
+    import mujoco
+
     model = tmp_path / "arm.urdf"
     model.write_text(f'<robot name="r"><link name="base"/>{chain(("link1", "link2", "link3", "link4"))}</robot>')
     found = [d for d in predicted(model, profile("mujoco")).diagnostics if d.code == "C107"]
     assert [d.message for d in found] == [
-        "MuJoCo gives 4 links without <inertial> ('link1', 'link2', 'link3' and 1 more) the mass of their collision shapes, filled at 1000 kg/m³"
+        "MuJoCo gives 4 links without <inertial> ('link1', 'link2', 'link3' and 1 more) the mass of their collision shapes filled at 1000 kg/m³: 4 kg in all"
     ]
     assert found[0].line == 1 and found[0].subjects == ("link1", "link2", "link3", "link4")
+    assert sum(mujoco.MjModel.from_xml_path(str(model)).body_mass) == pytest.approx(4.0)
     model.write_text(f'<robot name="r"><link name="base"/>{chain(("link1",))}</robot>')
     found = [d.message for d in predicted(model, profile("mujoco")).diagnostics if d.code == "C107"]
     assert found == ["MuJoCo gives link 'link1' 1 kg: it has no <inertial>, so its collision shapes are filled at 1000 kg/m³"]
-    require_consumer("mujoco")
-    import mujoco
-
     assert mujoco.MjModel.from_xml_path(str(model)).body_mass[1] == pytest.approx(1.0)
+    model.write_text(f'<robot name="r"><link name="base"/>{chain(("link1",))}'
+                     + chain(("link2",), '<mesh filename="link2.stl"/>').replace('parent link="base"', 'parent link="link1"') + "</robot>")
+    found = [d.message for d in predicted(model, profile("mujoco")).diagnostics if d.code == "C107"]
+    assert found == ["MuJoCo gives 2 links without <inertial> ('link1', 'link2') the mass of their collision shapes filled at 1000 kg/m³: "
+                     "1 kg in their primitive shapes, and what their meshes weigh"]
 
 
 # -- check --load ----------------------------------------------------------------------------------

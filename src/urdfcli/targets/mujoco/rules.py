@@ -274,7 +274,8 @@ def unlimited_joint(loaded, given):
     doc=explain(
         """With `--target mujoco`: finds a moving body none of whose links has an
         `<inertial>`, but which has collision shapes, while `inertiafromgeom` is `auto`
-        (the URDF default) or `true`. One diagnostic names every such link, at the first.""",
+        (the URDF default) or `true`. One diagnostic names every such link, at the first
+        written, with the mass MuJoCo gives them in all (that of a mesh is not worked out).""",
         """MuJoCo gives the body the mass and inertia of its collision shapes filled at
         1000 kg/m³ (src/user/user_objects.cc, `inertiafromgeom`): a 10 cm box weighs
         1 kg, a hollow shell as much as a solid. Other consumers see no mass at all.""",
@@ -284,29 +285,21 @@ def unlimited_joint(loaded, given):
 )
 def mass_from_geometry(loaded, given):
     options = compiler_options(loaded)
-    weighed = [
-        loaded.robot.links[name] for body in build(loaded, given.profile).bodies if body.joint is not None
-        for name in body.links if weighed_by_geometry(loaded.robot.links[name], options)
-    ]
+    moving = {name for body in build(loaded, given.profile).bodies if body.joint is not None for name in body.links}
+    weighed = [link for name, link in loaded.robot.links.items() if name in moving and weighed_by_geometry(link, options)]
+    if not weighed:
+        return
+    masses = [found[0] for found in map(geometry_body, weighed) if found is not None]  # (a mesh's is not known here)
     if len(weighed) == 1:
-        link = weighed[0]
-        found = geometry_body(link)
-        weight = f"{number(found[0])} kg" if found is not None else "the mass of its meshes"
-        yield loaded.diagnostic(
-            "C107",
-            f"MuJoCo gives link '{link.name}' {weight}: it has no <inertial>, so its collision shapes are filled at 1000 kg/m³",
-            link.at,
-            "give the link an <inertial> with its real mass and tensor",
-            subjects=(link.name,),
-        )
-    elif weighed:  # one cause: one diagnostic, as an exported arm without a single <inertial> has it on every link
-        yield loaded.diagnostic(
-            "C107",
-            f"MuJoCo gives {len(weighed)} links without <inertial> ({names(link.name for link in weighed)}) the mass of their collision shapes, filled at 1000 kg/m³",
-            weighed[0].at,
-            "give each link an <inertial> with its real mass and tensor",
-            subjects=tuple(link.name for link in weighed),
-        )
+        weight = f"{number(masses[0])} kg" if masses else "the mass of its meshes"
+        message = f"MuJoCo gives link '{weighed[0].name}' {weight}: it has no <inertial>, so its collision shapes are filled at 1000 kg/m³"
+    else:  # one cause: one diagnostic, as an exported arm without a single <inertial> has it on every link
+        total = "" if not masses else f": {number(sum(masses))} kg in all" if len(masses) == len(weighed) else f": {number(sum(masses))} kg in their primitive shapes, and what their meshes weigh"
+        message = f"MuJoCo gives {len(weighed)} links without <inertial> ({names(link.name for link in weighed)}) the mass of their collision shapes filled at 1000 kg/m³{total}"
+    yield loaded.diagnostic(
+        "C107", message, weighed[0].at, "give each link an <inertial> with its real mass and tensor" if len(weighed) > 1 else "give the link an <inertial> with its real mass and tensor",
+        subjects=tuple(link.name for link in weighed),
+    )
 
 
 @check("C108", "mujoco-fixed-base", INFO, "MuJoCo welds the root link to the world.", kind=Kind.TARGET, target="mujoco")
