@@ -313,6 +313,21 @@ def test_zero_effort_or_velocity_on_a_driven_joint(tmp_path):
     assert found(tmp_path, limited("revolute", '<limit lower="0" upper="1" effort="5" velocity="2"/>'), "J014") == []
 
 
+def test_zero_effort_on_every_driven_joint_of_an_arm_is_one_warning(tmp_path):
+    # a ROS-Industrial arm writes effort="0" on every joint; its MoveIt config drives them all through ros2_control
+    arm = '<link name="l0"/>' + "".join(
+        f'<link name="l{i}"/><joint name="joint_{i}" type="revolute"><parent link="l{i - 1}"/><child link="l{i}"/>'
+        f'<axis xyz="0 0 1"/><limit effort="0" lower="-3" upper="3" velocity="3.67"/></joint>' for i in range(1, 4))
+    arm += ('<ros2_control name="fake" type="system"><hardware><plugin>mock_components/GenericSystem</plugin></hardware>'
+            + "".join(f'<joint name="joint_{i}"><command_interface name="position"/></joint>' for i in range(1, 4))
+            + "</ros2_control>")
+    (code, severity, message), = found(tmp_path, arm, "J014")
+    assert severity == "warning" and message.startswith("3 joints ('joint_1', 'joint_2', 'joint_3') have effort=0")
+    assert "MoveIt" not in message  # MoveIt reads no effort limit
+    (code, severity, message), = found(tmp_path, arm.replace('velocity="3.67"', 'velocity="0"', 1).replace('effort="0"', 'effort="5"', 1), "J014")[:1]
+    assert message.startswith("joint 'joint_1' has velocity=0") and "MoveIt" in message
+
+
 @pytest.mark.parametrize("limit, flagged", [
     ('<limit lower="-1" upper="1" effort="10" velocity="5"/>', True),  # meant to be revolute
     ('<limit lower="-6.2832" upper="6.2832" effort="10" velocity="5"/>', False),  # kinova: a leftover

@@ -326,14 +326,16 @@ def effort_velocity_zero(loaded, given):
     pendulum): zero limits there say it has no actuator, and are only noted (info),
     in one note for all such joints of the model (a description of the kinematics
     alone, as ROS-Industrial's arms are, writes `effort="0"` on every joint);
-    a negative limit is flagged wherever it is. Mimic joints are left alone: they
-    follow another joint and are not driven.
+    a negative limit is flagged wherever it is. Driven joints with the same limits
+    are named in one warning. Mimic joints are left alone: they follow another joint
+    and are not driven.
 
     ## Why is this bad?
     The limits bound what a controller may command and what a simulator lets the joint do:
     ros2_control's joint limiter clamps commands to them, Gazebo's motor has no force with a
-    zero effort, and MoveIt plans no motion with a zero velocity limit: the actuator the
-    transmission describes moves nothing. A negative limit is meaningless.
+    zero effort, and MoveIt, which reads no effort, cannot time a trajectory over a joint
+    without a velocity limit: the actuator the transmission describes moves nothing.
+    A negative limit is meaningless.
 
     ## Example
     ```xml
@@ -367,6 +369,7 @@ def effort_velocity_zero(loaded, given):
     """
     driven = driven_joints(loaded)
     passive = []  # (joint, its zero limits) of the joints nothing drives
+    stalled = {}  # the limits written, and the limit names, -> the driven joints that have them
     for joint in loaded.robot.joints.values():
         limit = joint.limit
         if joint.type not in ("revolute", "continuous", "prismatic") or limit is None or joint.mimic is not None:
@@ -376,12 +379,17 @@ def effort_velocity_zero(loaded, given):
             continue
         bad = " and ".join(f"{name}={format_number(value)}" for name, value in values)
         if joint.name in driven or any(value < 0 for _, value in values):
-            message = (f"joint '{joint.name}' has {bad}: a controller that honours its limits (ros2_control's limiter, "
-                       f"MoveIt, Gazebo's motor) commands it {_nothing(values)}, so it cannot move it")
-            yield loaded.diagnostic("J014", message, joint.part("limit"), "give the actuator's real effort and velocity limits (the datasheet's peak torque or force, and speed)",
-                                    subjects=(joint.name,)).with_fix(_NO_LIMIT_FIX)
+            stalled.setdefault((bad, tuple(name for name, _ in values)), []).append(joint)
         else:
             passive.append((joint, bad))
+    for (bad, limited), joints in stalled.items():  # an arm's joints often share one placeholder: one warning for them all
+        listed = [joint.name for joint in joints]
+        what = f"joint '{listed[0]}' has" if len(listed) == 1 else f"{len(listed)} joints ({names(listed)}) have"
+        them = "it" if len(listed) == 1 else "them"
+        message = (f"{what} {bad}: a controller that honours its limits ({_honouring(limited)}) "
+                   f"commands {them} {_nothing(limited)}, so it cannot move {them}")
+        yield loaded.diagnostic("J014", message, joints[0].part("limit"), "give the actuator's real effort and velocity limits (the datasheet's peak torque or force, and speed)",
+                                subjects=tuple(listed)).with_fix(_NO_LIMIT_FIX)
     if len(passive) == 1:
         joint, bad = passive[0]
         message = f"joint '{joint.name}' has {bad}: no transmission or ros2_control drives it, so it is taken as passive (no actuator)"
@@ -394,9 +402,19 @@ def effort_velocity_zero(loaded, given):
                                 subjects=tuple(listed))._replace(severity=INFO).with_fix(_NO_LIMIT_FIX)
 
 
-def _nothing(values) -> str:
-    """What a controller clamped to these limits commands."""
-    return " and ".join("no torque or force" if name == "effort" else "no speed" for name, _ in values)
+def _nothing(limited) -> str:
+    """What a controller clamped to these limits ('effort', 'velocity') commands."""
+    return " and ".join("no torque or force" if name == "effort" else "no speed" for name in limited)
+
+
+def _honouring(limited) -> str:
+    """The consumers that honour these limits: MoveIt reads no effort, only velocity."""
+    readers = ["ros2_control's limiter"]
+    if "velocity" in limited:
+        readers.append("MoveIt")
+    if "effort" in limited:
+        readers.append("Gazebo's motor")
+    return ", ".join(readers)
 
 
 def driven_joints(loaded) -> set[str]:
