@@ -1063,3 +1063,23 @@ def test_parameters_a_file_included_in_the_body_reads_are_used(tmp_path):
         <xacro:base namespace="rov" inertial_reference_frame="world" unused="1"/>
         """))
     assert found(model, codes=("X103",)) == [("X103", "robot.urdf.xacro", *column_of(model, "unused", "params="))]
+
+
+def test_a_macro_parameter_named_like_a_global_symbol_is_named_as_a_parameter(tmp_path):
+    # uuv_simulator's pressure sensor macro takes `range` (its saturation, kPa): xacro warns
+    # at the call, and the name to change is the macro's parameter, not a property
+    model = write(tmp_path / "robot.urdf.xacro", robot("""
+        <xacro:macro name="pressure" params="range">
+          <link name="pressure_link"><visual><geometry><box size="0.1 0.1 ${range / 300000}"/></geometry></visual></link>
+        </xacro:macro>
+        <xacro:pressure range="30000"/>
+        """))
+    [warning] = [d for d in diagnostics(model, "X005") if "range" in d.message]
+    assert (warning.line, warning.column) == column_of(model, "<xacro:pressure ")
+    assert warning.hint.startswith("rename parameter 'range' of macro 'pressure'") and "property" not in warning.hint
+    redefined = write(tmp_path / "property.urdf.xacro", robot("""
+        <xacro:property name="range" value="3"/>
+        <link name="base_link"/>
+        """))
+    [warning] = [d for d in diagnostics(redefined, "X005") if "range" in d.message]
+    assert warning.hint.startswith("rename the property")
