@@ -86,6 +86,21 @@ def test_copies_of_one_part_whose_masses_differ_are_named_together(tmp_path):
     assert found(tmp_path, same, "I012") == []
 
 
+
+def test_links_alike_only_in_their_placeholder_collision_are_not_copies(tmp_path):
+    # uuv_simulator's RexROV: a magnetometer (a 10 cm box) and a camera (a mesh) each carry the
+    # 1 µm cylinder that keeps Gazebo from dropping the link, and one pasted tensor
+    (tmp_path / "camera.stl").write_text("solid c\nendsolid c\n")
+    dot = '<collision><geometry><cylinder length="0.000001" radius="0.000001"/></geometry></collision>'
+    tensor = (1e-5, 1e-5, 1e-5)
+    magnetometer = '<visual><geometry><box size="0.1 0.1 0.1"/></geometry></visual>' + dot + inertial(0.015, *tensor)
+    camera = '<visual><geometry><mesh filename="camera.stl"/></geometry></visual>' + dot + inertial(0.1, *tensor)
+    assert found(tmp_path, BASE + child("magnetometer", magnetometer) + child("camera", camera), "I012") == []
+    # two copies of one part, dot and all, are still compared by their visuals
+    twin = '<visual><geometry><box size="0.1 0.1 0.1"/></geometry></visual>' + dot + inertial(0.1, *tensor)
+    (code, _, message), = found(tmp_path, BASE + child("magnetometer", magnetometer) + child("twin", twin), "I012")
+    assert "'magnetometer' (0.015 kg) and 'twin' (0.1 kg)" in message
+
 # -- A.5: unit axes as parsers see them -----------------------------------------------------------
 def test_an_axis_written_with_few_decimals_is_a_unit_axis(tmp_path):
     def axis(xyz: str) -> str:

@@ -1042,3 +1042,44 @@ def test_a_urdf_whose_only_xacro_is_a_property_nothing_reads_is_told_to_drop_it_
     assert [code for code, *_ in found(read, codes=("X102", "X108"))] == ["X108"]
     condition = write(tmp_path / "condition.urdf", text.replace('<link name="link1"/>', '<xacro:if value="false"><link name="extra"/></xacro:if><link name="link1"/>'))
     assert "X108" in [code for code, *_ in found(condition, codes=("X108",))]
+
+
+def test_parameters_a_file_included_in_the_body_reads_are_used(tmp_path):
+    # the RexROV's shape (uuv_simulator): rexrov_base includes its sensors file inside the
+    # macro, and that file's top level reads the macro's parameters
+    write(tmp_path / "sensors.xacro", library("""
+        <link name="${namespace}/imu_link"/>
+        <joint name="${namespace}/imu_joint" type="fixed">
+          <parent link="${namespace}/base_link"/><child link="${namespace}/imu_link"/>
+          <origin xyz="0 0 0" rpy="0 0 0"/>
+        </joint>
+        <gazebo><plugin name="imu" filename="libimu.so"><frame>${inertial_reference_frame}</frame></plugin></gazebo>
+        """))
+    model = write(tmp_path / "robot.urdf.xacro", robot("""
+        <xacro:macro name="base" params="namespace inertial_reference_frame unused">
+          <link name="${namespace}/base_link"/>
+          <xacro:include filename="sensors.xacro"/>
+        </xacro:macro>
+        <xacro:base namespace="rov" inertial_reference_frame="world" unused="1"/>
+        """))
+    assert found(model, codes=("X103",)) == [("X103", "robot.urdf.xacro", *column_of(model, "unused", "params="))]
+
+
+def test_a_macro_parameter_named_like_a_global_symbol_is_named_as_a_parameter(tmp_path):
+    # uuv_simulator's pressure sensor macro takes `range` (its saturation, kPa): xacro warns
+    # at the call, and the name to change is the macro's parameter, not a property
+    model = write(tmp_path / "robot.urdf.xacro", robot("""
+        <xacro:macro name="pressure" params="range">
+          <link name="pressure_link"><visual><geometry><box size="0.1 0.1 ${range / 300000}"/></geometry></visual></link>
+        </xacro:macro>
+        <xacro:pressure range="30000"/>
+        """))
+    [warning] = [d for d in diagnostics(model, "X005") if "range" in d.message]
+    assert (warning.line, warning.column) == column_of(model, "<xacro:pressure ")
+    assert warning.hint.startswith("rename parameter 'range' of macro 'pressure'") and "property" not in warning.hint
+    redefined = write(tmp_path / "property.urdf.xacro", robot("""
+        <xacro:property name="range" value="3"/>
+        <link name="base_link"/>
+        """))
+    [warning] = [d for d in diagnostics(redefined, "X005") if "range" in d.message]
+    assert warning.hint.startswith("rename the property")

@@ -167,7 +167,7 @@ def evidence(loaded: Loaded, link: Link, sides: list[float], density: float | No
     if parent is not None and math.hypot(*parent.origin.xyz) > NEAR:
         d = math.hypot(*parent.origin.xyz)
         bands.append(_band(d, PARENT, f"a link placed {d:.3g} m from its parent by joint '{parent.name}'"))
-    primitive = max((_primitive_size(s.geometry) for s in (*link.visuals, *link.collisions) if s.geometry is not None), default=0.0)
+    primitive = max((primitive_size(s.geometry) for s in (*link.visuals, *link.collisions) if s.geometry is not None), default=0.0)
     if primitive > PLACEHOLDER:
         bands.append(_band(primitive, PRIMITIVES, f"a link whose other shapes are {primitive:.3g} m across"))
     return bands
@@ -178,7 +178,7 @@ def _band(length: float, ratios: tuple[float, float, float], said: str) -> Band:
     return Band(length * low, length * high, length * typical, said)
 
 
-def _primitive_size(geometry) -> float:
+def primitive_size(geometry) -> float:
     """The largest side of a box, cylinder or sphere (0 for a mesh or a shape without size)."""
     if geometry.kind == "box" and geometry.size:
         return max(geometry.size)
@@ -187,3 +187,9 @@ def _primitive_size(geometry) -> float:
     if geometry.kind == "sphere" and geometry.radius:
         return 2 * geometry.radius
     return 0.0
+
+
+def is_dot(geometry) -> bool:
+    """Whether a shape is a placeholder: a box, cylinder or sphere no larger than
+    PLACEHOLDER in any direction (the 1 µm cylinder that keeps Gazebo from dropping a link)."""
+    return geometry.kind != "mesh" and primitive_size(geometry) <= PLACEHOLDER

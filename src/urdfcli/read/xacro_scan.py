@@ -173,6 +173,7 @@ class XacroFile:
         self.xacro_elements: set[str] = set()  # the local names of its xacro elements (macro, property, if...)
         self.includes: list[str] = []
         self.namespaces: list[str] = []  # ns attributes of its includes
+        self.including: set[int] = set()  # macros whose bodies include a file: xacro reads that file in their scope
         self.macros: list[Macro] = []
         self.definitions: list[Variable] = []
         self.expressions: list[Expression] = []
@@ -303,6 +304,8 @@ class _Scanner:
             elif local == "include":
                 if element.get("filename"):
                     found.includes.append(element.get("filename"))
+                    if macro is not None:
+                        found.including.add(macro)
                 if element.get("ns"):
                     found.namespaces.append(element.get("ns"))
                 self.attributes(element, at, macro)

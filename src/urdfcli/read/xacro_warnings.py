@@ -56,7 +56,24 @@ def warning(text: str, location: Location, files: SourceFiles, error: bool = Fal
     found = _DEPRECATED_CALL.search(text)
     if found is not None and location.line and location.column:
         location = _at_call(found.group(1), location, files)
-    return Diagnostic("X005", text, location, hint=fix(text), fix=_rewrite(text, location, files))
+    return Diagnostic("X005", text, location, hint=_parameter_fix(text, location, files) or fix(text), fix=_rewrite(text, location, files))
+
+
+_REDEFINED = re.compile(r"redefining global symbol: (\w+)")
+_CALLED = re.compile(r"<xacro:([\w.]+)")
+
+
+def _parameter_fix(text: str, location: Location, files: SourceFiles) -> str | None:
+    """The fix of a global symbol a macro's parameter redefines (xacro was at the call):
+    the name is hidden in that macro's body only, and it is no property."""
+    redefined = _REDEFINED.search(text)
+    source = files.get(location.file) if redefined is not None and location.line and location.column else None
+    at = source.offset(location.line, location.column) if source is not None else None
+    called = _CALLED.match(source.text, at) if at is not None else None
+    if called is None or called.group(1) in ("property", "arg", "call"):
+        return None
+    name, macro = redefined.group(1), called.group(1).rpartition(".")[2]
+    return f"rename parameter '{name}' of macro '{macro}', and where calls pass it: in the macro's body it hides the '{name}' xacro gives every expression"
 
 
 def _rewrite(text: str, location: Location, files: SourceFiles) -> Fix | None:

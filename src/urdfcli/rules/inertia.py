@@ -18,7 +18,7 @@ from ..model.kinematics import roots, walk
 from ..model.massprops import number, tensor_text
 from ..model.numbers import format_number
 from ..model.poses import zero_poses
-from ..model.units import mis_scaled
+from ..model.units import is_dot, mis_scaled
 from ..read.memo import once
 from .base import INFO, UNSAFE, WARNING, Kind, Option, Remedy, RuleSet, check
 from .physics import absorbed, invalid_tensors
@@ -272,10 +272,14 @@ def _fits(found, tolerance: float) -> bool:
 
 def geometry_signature(link) -> tuple:
     """What a link's shapes are, wherever they stand: the collision shapes (else the visual
-    shapes) by kind, mesh file, scale and size. Two copies of one part (left and right
-    finger, four wheels) have the same."""
-    shapes = [s for s in link.collisions if s.geometry is not None] or [s for s in link.visuals if s.geometry is not None]
+    shapes) by kind, mesh file, scale and size, placeholder dots left out (they say nothing
+    of the part). Two copies of one part (left and right finger, four wheels) have the same."""
+    shapes = _sized(link.collisions) or _sized(link.visuals)
     return tuple(sorted((g.kind, g.filename or "", g.scale, g.size or (), g.radius or 0.0, g.length or 0.0) for g in (s.geometry for s in shapes)))
+
+
+def _sized(shapes) -> list:
+    return [s for s in shapes if s.geometry is not None and not is_dot(s.geometry)]
 
 
 MIRROR_RATIO = 5.0  # copies of one part this many times apart in mass: one mass is wrong
@@ -288,7 +292,9 @@ def copies_differ_in_mass(loaded, given):
     and size, wherever they stand) and the same inertia tensor, when their masses are five
     or more times apart: left and right fingers, the wheels of a base. Names the links, at
     the lightest and the heaviest. Links without shapes, with a zero tensor (frames) or
-    within five times of each other are left alone.
+    within five times of each other are left alone; placeholder dots (2 cm or less in
+    every direction, as the 1 µm collision cylinder uuv_simulator's sensors carry) are not
+    shapes: such a link is compared by its visuals.
 
     ## Why is this bad?
     One part has one mass: a tensor copied with the shapes, and a mass typed again with a

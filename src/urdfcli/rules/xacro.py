@@ -149,7 +149,10 @@ def parameter_unused(loaded, given) -> Iterator[Diagnostic]:
     `**NAME`) it never inserts with `<xacro:insert_block name="NAME"/>`.
     xacro evaluates a macro's body in its caller's scope, so a parameter also
     counts as used when a macro body anywhere in the workspace reads that name
-    without defining it, or forwards it (`NAME:=^`).
+    without defining it, or forwards it (`NAME:=^`). A body that includes a
+    file (`<xacro:include>` inside the macro, as the RexROV's `rexrov_base`
+    includes its sensors) has xacro read that file in its scope: a name any
+    file reads outside its own macros counts as used too.
 
     Left alone: a parameter that a macro which may stand for this one takes
     and uses. That is another macro of the same name in the workspace (a
@@ -203,10 +206,13 @@ def parameter_unused(loaded, given) -> Iterator[Diagnostic]:
         unprefixed = _unprefixed_blocks(file)
         for macro, definition in enumerate(file.macros):
             used, shape = used_parameters(file, macro), interface(file, macro)
+            includes = any(file.within(inner, macro) for inner in file.including)
             for parameter in parameters(file, macro):
                 name = parameter.name
                 if parameter.shown in used or _used(sources, lambda f: _used_elsewhere(f, parameter, definition.name, shape)):
                     continue
+                if includes and _used(sources, lambda f: name in (f.blocks if parameter.block else f.unbound)):
+                    continue  # an included file may read it: xacro reads that file in this body's scope
                 if parameter.block and (macro, name) in unprefixed:
                     continue  # an <insert_block> without xacro: names it: X107's to report, once, at that tag
                 if parameter.block:
