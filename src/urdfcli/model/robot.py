@@ -621,10 +621,12 @@ class Reader:
         """M002 and M003 as urdfdom shares materials: by name, the first definition
         winning. A visual material with an empty name is never shared (urdfdom skips
         it), so it can neither be undefined nor clash."""
-        seen: dict[str, Material] = {m.name: m for m in robot.materials.values() if m.rgba is not None}
+        seen: dict[str, Material] = {m.name: m for m in robot.materials.values() if m.rgba is not None and len(m.rgba) == 4}
         for material in self._inline_materials:
             if not material.name:
                 continue
+            if material.rgba is not None and len(material.rgba) != 4:
+                continue  # urdfdom cannot read that colour (M004) and takes the name's other definition: no clash
             if material.rgba is None and material.texture is None:
                 # a colour written but unreadable (V007), or written on <material> (M005): one mistake, said once
                 unread = material.rgba_text is not None or material.at in self._misplaced_colours
