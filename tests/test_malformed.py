@@ -55,6 +55,9 @@ MALFORMED = {
     "nul-in-attribute": (b'<robot name="r"><link name="a\x00b"/></robot>', 1, "X001 error"),
     "nul-after-root": (ONE_LINK.encode() + b"\x00\x00", 1, "X001 error"),
     "nul-only": (b"\x00" * 64, 1, "X001 error"),
+    # xacro markup without the xacro namespace: libxml2 says which prefix, the message says the declaration
+    "undeclared-xacro-prefix": (b'<robot name="r">\n  <xacro:property name="l" value="1"/>\n  <link name="a"/>\n</robot>', 2,
+                                "<xacro:property> uses the prefix 'xacro', declared nowhere: declare xmlns:xacro=\"http://www.ros.org/wiki/xacro\""),
     # a merge git could not finish, committed as it was: the first marker's line, and what it is
     "merge-conflict": (b'<robot name="r">\n  <link name="a"/>\n<<<<<<< HEAD\n  <link name="b"/>\n=======\n  <link name="c"/>\n>>>>>>> arm\n</robot>\n',
                        3, "an unresolved merge conflict: git's conflict markers"),

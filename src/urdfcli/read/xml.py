@@ -87,7 +87,7 @@ def parse(data: bytes, as_written: bool = False, huge: bool = False) -> Element:
         line, column = error.position if error.position else (error.lineno, None)
         message = error.msg or str(error)
         message = message.split(", line ")[0] if ", line " in message else message
-        raise XmlError(message, line or 1, column) from None
+        raise XmlError(_said_plainly(message), line or 1, column) from None
     except XmlError:
         raise
     except ValueError as error:  # lxml refuses some inputs before parsing
@@ -98,6 +98,20 @@ def parse(data: bytes, as_written: bool = False, huge: bool = False) -> Element:
     for node in root.iter(etree.Entity):
         raise XmlError(f"undefined entity reference {node.text}", node.sourceline, None)
     return root
+
+
+_UNDECLARED = re.compile(r"Namespace prefix (\S+) on (\S+) is not defined")
+_NAMESPACES = {"xacro": "http://www.ros.org/wiki/xacro"}
+
+
+def _said_plainly(message: str) -> str:
+    """libxml2's message, with the fix where libxml2 names none."""
+    undeclared = _UNDECLARED.fullmatch(message)
+    if undeclared is None:
+        return message
+    prefix, tag = undeclared.groups()
+    uri = _NAMESPACES.get(prefix, "...")
+    return f'<{prefix}:{tag}> uses the prefix \'{prefix}\', declared nowhere: declare xmlns:{prefix}="{uri}" on the root element'
 
 
 # A comment as urdfdom's parser (tinyxml2) reads one: from `<!--` to the next `-->`,
