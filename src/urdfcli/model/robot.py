@@ -598,7 +598,7 @@ class Reader:
             if material is None:
                 return
             if material.name in robot.materials:
-                self.report("N006", f"material '{material.name}' is defined twice", element)
+                self.report("N006", f"material '{material.name}' is defined twice", element, _twice(self.document, robot.materials[material.name].at, self._index[element]))
             else:
                 robot.materials[material.name] = material
         else:
@@ -693,8 +693,13 @@ def _where(document: Document, at: int) -> str:
 def _twice(document: Document, first: int, again: int) -> str:
     """The hint of a name defined twice: where first, and the way out."""
     location, repeated = document.locate(first), document.locate(again)
-    same_macro = location.trace and repeated.trace and (location.file, location.line) == (repeated.file, repeated.line)
-    fix = "give the macro a prefix parameter and put it in the names it makes" if same_macro else "rename one of them"
+    same_place = (location.file, location.line) == (repeated.file, repeated.line)
+    if same_place and location.trace and repeated.trace:
+        fix = "give the macro a prefix parameter and put it in the names it makes"
+    elif same_place and location.file != document.shown:
+        fix = f"{location.file} is included twice: include it once"
+    else:
+        fix = "rename one of them"
     return f"first defined at {_where(document, first)}; {fix}"
 
 
