@@ -36,6 +36,7 @@ def visual(shape: str, extra: str = "") -> str:
 CASES = {
     "X001": ("<robot name='r'><link name='a'></robot>", robot("<link name='a'/>")),
     "X002": ('<!DOCTYPE robot [<!ENTITY n "a">]><robot name="r"><link name="&n;"/></robot>', robot('<link name="a"/>')),
+    "X007": (robot('<!-- old --!><link name="a"/><!-- new -->') + "\n", robot('<!-- old --><link name="a"/><!-- new -->')),
     "R001": ("<model name='r'><link name='a'/></model>", robot("<link name='a'/>")),
     "R002": ("<robot><link name='a'/></robot>", robot("<link name='a'/>")),
     "R003": (robot("<link name='a'/>", 'name="r" version="2.0"'), robot("<link name='a'/>", 'name="r" version="1.0"')),

@@ -55,6 +55,9 @@ MALFORMED = {
     "nul-in-attribute": (b'<robot name="r"><link name="a\x00b"/></robot>', 1, "X001 error"),
     "nul-after-root": (ONE_LINK.encode() + b"\x00\x00", 1, "X001 error"),
     "nul-only": (b"\x00" * 64, 1, "X001 error"),
+    # xacro markup without the xacro namespace: libxml2 says which prefix, the message says the declaration
+    "undeclared-xacro-prefix": (b'<robot name="r">\n  <xacro:property name="l" value="1"/>\n  <link name="a"/>\n</robot>', 2,
+                                "<xacro:property> uses the prefix 'xacro', declared nowhere: declare xmlns:xacro=\"http://www.ros.org/wiki/xacro\""),
     # a merge git could not finish, committed as it was: the first marker's line, and what it is
     "merge-conflict": (b'<robot name="r">\n  <link name="a"/>\n<<<<<<< HEAD\n  <link name="b"/>\n=======\n  <link name="c"/>\n>>>>>>> arm\n</robot>\n',
                        3, "an unresolved merge conflict: git's conflict markers"),
@@ -489,3 +492,35 @@ def test_a_name_lxml_accepts_but_xacro_refuses(cli, tmp_path, where):
     assert located in result.stderr
     assert "X001 error: xacro cannot read this document: not well-formed (invalid token)" in result.stderr
     no_traceback(result)
+
+
+# `--` inside a comment: XML forbids it, urdfdom (tinyxml2) and MoveIt read the comment on to
+# the next `-->`. A mistyped end (`--!>`) is found in published MoveIt configurations.
+HYPHENATED = '<?xml version="1.0"?>\n<robot name="r">\n  <!-- <link name="old"/> --!>\n  <link name="a"/>\n  <!-- ends here -->\n  <link name="b"/>\n</robot>\n'
+
+
+def test_a_comment_holding_double_hyphens_is_read_as_urdfdom_reads_it(cli, tmp_path):
+    result = cli("check", str(write(tmp_path, "robot.urdf", HYPHENATED)))
+    no_traceback(result)
+    assert result.exit_code == 0, result.stderr  # check_urdf exits 0 too
+    assert "root Link: b has 0 child(ren)" in result.stdout  # 'a' is inside the comment, as urdfdom reads it
+    assert "robot.urdf:3:3: X007 warning: comment holds '--'" in result.stderr
+    big = HYPHENATED.replace('  <link name="b"/>\n', "".join(f'  <link name="l{i}"/>\n' for i in range(60000)) + '  <link name="b"/>\n')
+    streamed = cli("lint", "--select", "X007", str(write(tmp_path, "big.urdf", big)))
+    no_traceback(streamed)
+    assert "big.urdf:3:3: X007 warning" in streamed.stdout and "X001" not in streamed.stdout
+
+
+def test_an_srdf_comment_holding_double_hyphens_is_a_warning(cli, tmp_path):
+    srdf = '<robot name="r">\n  <group name="arm"><link name="a"/></group>\n  <!-- <virtual_joint name="v"/> --!>\n  <!-- next -->\n</robot>\n'
+    result = cli("check", str(write(tmp_path, "r.srdf", srdf)), "--urdf", str(write(tmp_path, "r.urdf", ONE_LINK)))
+    no_traceback(result)
+    assert result.exit_code == 0, result.stderr
+    assert "r.srdf:3:3: X007 warning" in result.stderr
+
+
+def test_a_xacro_comment_holding_double_hyphens_stays_an_error(cli, tmp_path):
+    result = cli("check", str(write(tmp_path, "robot.urdf.xacro", HYPHENATED)))
+    no_traceback(result)
+    assert result.exit_code == 1  # xacro refuses the file
+    assert "X001 error" in result.stderr and "X007" not in result.stderr

@@ -497,3 +497,17 @@ def test_a_misspelt_interface_in_a_ros2_control_block_is_a_typo(tmp_path):
         ("D001", "warning", "<comand_interface> is not a ros2_control element inside <joint>; it is ignored"),
         ("D001", "warning", "<state_inteface> is not a ros2_control element inside <sensor>; it is ignored"),
     ]
+
+
+def test_a_colour_missing_its_alpha_is_said_once_not_as_a_second_colour(tmp_path):
+    # aubo_i5l: the top-level 'black' has an alpha, each link's own 'black' lacks it. urdfdom cannot
+    # read the three numbers and takes the top-level colour: M004 says so, and nothing clashes.
+    body = (
+        '<material name="black"><color rgba="0.25098 0.25098 0.25098 1"/></material>'
+        + visual('<material name="black"><color rgba="0.25098 0.25098 0.25098"/></material>', "a")
+        + visual('<material name="black"><color rgba="0.25098 0.25098 0.25098"/></material>', "b")
+        + fixed("a", "b")
+    )
+    assert codes(tmp_path, body) == []
+    assert "M004" in [d.code for d in lint_file(str(tmp_path / "robot.urdf"), Config()).diagnostics]
+    assert codes(tmp_path, body.replace('0.25098 0.25098 0.25098"/>', '0.9 0.9 0.9 1"/>', 1)) == ["M003"]

@@ -266,6 +266,19 @@ def test_a_name_defined_by_two_macro_calls_shows_both_calls(tmp_path):
     assert n005["hint"] == "first defined at plain.urdf:1; rename one of them"
 
 
+def test_a_material_defined_twice_by_a_file_included_twice_says_so(tmp_path):
+    # aubo_description: materials.xacro is included by aubo.gazebo.xacro and by the model itself;
+    # urdfdom refuses the second 'black', at the one line that defines it
+    write(tmp_path, "materials.xacro", f'<robot {XACRO_NS}>\n<material name="black"><color rgba="0 0 0 1"/></material>\n</robot>\n')
+    write(tmp_path, "gazebo.xacro", f'<robot {XACRO_NS}>\n<xacro:include filename="materials.xacro"/>\n</robot>\n')
+    model = f'<robot name="r" {XACRO_NS}>\n<xacro:include filename="gazebo.xacro"/>\n<xacro:include filename="materials.xacro"/>\n<link name="a"/>\n</robot>\n'
+    write(tmp_path, "robot.urdf.xacro", model)
+    done = run_cli("check", "--format", "json", "robot.urdf.xacro", cwd=tmp_path)
+    [n006] = [d for d in json.loads(done.stdout)["files"][0]["diagnostics"] if d["code"] == "N006"]
+    assert (n006["path"], n006["line"]) == ("materials.xacro", 2)
+    assert n006["hint"] == "first defined at materials.xacro:2; materials.xacro is included twice: include it once"
+
+
 def test_an_attribute_written_on_its_own_line_is_pointed_at(tmp_path):
     joint = ('<link name="base"/><link name="arm"/><joint name="j" type="revolute"><parent link="base"/><child link="arm"/>'
              '<axis xyz="0 0 1"/>\n<limit\n    lower="-1"\n    upper="1,5"\n    effort="1" velocity="1"/></joint>')

@@ -17,7 +17,7 @@ from ..diagnostics import Diagnostic, Location
 from ..read import positions
 from ..read.document import STDIN, SUPPRESSION_MARK, Document, Inputs, read_document
 from ..read.packages import PackageResolver
-from ..read.xml import XmlError, parse
+from ..read.xml import XmlError, hyphenated_comment, parse
 from .mesh_summaries import MeshSummaries
 from .robot import Joint, Robot, read
 from .srdf import SRDF_TAGS, Semantic, looks_semantic, named_srdf, read_semantic
@@ -149,6 +149,7 @@ def load(
         return loaded
     if not document.is_xacro and document.file is not None:
         document.may_suppress = positions.may_contain(document.data, SUPPRESSION_MARK)
+    loaded.diagnostics += _comment_hyphens(document)
     document.data = None  # a large model's text is not kept beside the model
     loaded.diagnostics += found
     loaded.robot = robot
@@ -177,6 +178,7 @@ def _semantic(loaded: Loaded) -> bool:
     loaded.semantic = read_semantic(document, root)
     if loaded.semantic.name is None:
         loaded.diagnostics.append(document.diagnostic("R002", "<robot> has no 'name' attribute", 0))
+    loaded.diagnostics += _comment_hyphens(document)
     document.data = None
     return True
 def needs_argument(diagnostic: Diagnostic, name: str, key: str) -> Diagnostic:
@@ -193,6 +195,20 @@ def _unreadable(loaded: Loaded, error: XmlError) -> None:
     document = loaded.document
     document.data, document.readable = None, False
     loaded.diagnostics.append(Diagnostic(error.code, error.message, Location(document.shown, error.line, error.column)))
+
+
+def _comment_hyphens(document: Document) -> list[Diagnostic]:
+    """X007 at the first comment holding `--`, which the reader took as urdfdom does
+    (xacro's expansion refuses such a file itself)."""
+    data = document.data
+    at = None if document.is_xacro else hyphenated_comment(data)
+    if at is None:
+        return []
+    line = data.count(b"\n", 0, at) + 1
+    column = at - data.rfind(b"\n", 0, at)
+    message = "comment holds '--', which XML forbids: urdfdom and MoveIt read on to the next '-->', xacro and Python's XML parsers refuse the file"
+    hint = "end the comment with '-->' and write no '--' inside it"
+    return [Diagnostic("X007", message, Location(document.shown, line, column), None, hint)]
 
 
 def _not_well_formed(data: bytes) -> XmlError | None:

@@ -598,7 +598,7 @@ class Reader:
             if material is None:
                 return
             if material.name in robot.materials:
-                self.report("N006", f"material '{material.name}' is defined twice", element)
+                self.report("N006", f"material '{material.name}' is defined twice", element, _twice(self.document, robot.materials[material.name].at, self._index[element]))
             else:
                 robot.materials[material.name] = material
         else:
@@ -621,10 +621,12 @@ class Reader:
         """M002 and M003 as urdfdom shares materials: by name, the first definition
         winning. A visual material with an empty name is never shared (urdfdom skips
         it), so it can neither be undefined nor clash."""
-        seen: dict[str, Material] = {m.name: m for m in robot.materials.values() if m.rgba is not None}
+        seen: dict[str, Material] = {m.name: m for m in robot.materials.values() if m.rgba is not None and len(m.rgba) == 4}
         for material in self._inline_materials:
             if not material.name:
                 continue
+            if material.rgba is not None and len(material.rgba) != 4:
+                continue  # urdfdom cannot read that colour (M004) and takes the name's other definition: no clash
             if material.rgba is None and material.texture is None:
                 # a colour written but unreadable (V007), or written on <material> (M005): one mistake, said once
                 unread = material.rgba_text is not None or material.at in self._misplaced_colours
@@ -691,8 +693,13 @@ def _where(document: Document, at: int) -> str:
 def _twice(document: Document, first: int, again: int) -> str:
     """The hint of a name defined twice: where first, and the way out."""
     location, repeated = document.locate(first), document.locate(again)
-    same_macro = location.trace and repeated.trace and (location.file, location.line) == (repeated.file, repeated.line)
-    fix = "give the macro a prefix parameter and put it in the names it makes" if same_macro else "rename one of them"
+    same_place = (location.file, location.line) == (repeated.file, repeated.line)
+    if same_place and location.trace and repeated.trace:
+        fix = "give the macro a prefix parameter and put it in the names it makes"
+    elif same_place and location.file != document.shown:
+        fix = f"{location.file} is included twice: include it once"
+    else:
+        fix = "rename one of them"
     return f"first defined at {_where(document, first)}; {fix}"
 
 

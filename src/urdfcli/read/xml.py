@@ -76,6 +76,10 @@ def parse(data: bytes, as_written: bool = False, huge: bool = False) -> Element:
             # libxml2 does not know the name (latin-1, cp1252 without iconv...): Python may.
             root = etree.fromstring(recoded(data), etree.XMLParser(**options, encoding="utf-8"))
     except etree.XMLSyntaxError as error:
+        if dropped and (error.msg or "").startswith("Double hyphen within comment"):
+            blanked = _blanked_comments(data)
+            if blanked != data:  # read as urdfdom reads it; the model says so (X007)
+                return parse(blanked, huge=huge)
         conflict = _CONFLICT.search(data)
         if conflict is not None:  # what libxml2 says there ("StartTag: invalid element name") names no cause
             line = data.count(b"\n", 0, conflict.start()) + 1
@@ -83,7 +87,7 @@ def parse(data: bytes, as_written: bool = False, huge: bool = False) -> Element:
         line, column = error.position if error.position else (error.lineno, None)
         message = error.msg or str(error)
         message = message.split(", line ")[0] if ", line " in message else message
-        raise XmlError(message, line or 1, column) from None
+        raise XmlError(_said_plainly(message), line or 1, column) from None
     except XmlError:
         raise
     except ValueError as error:  # lxml refuses some inputs before parsing
@@ -94,6 +98,39 @@ def parse(data: bytes, as_written: bool = False, huge: bool = False) -> Element:
     for node in root.iter(etree.Entity):
         raise XmlError(f"undefined entity reference {node.text}", node.sourceline, None)
     return root
+
+
+_UNDECLARED = re.compile(r"Namespace prefix (\S+) on (\S+) is not defined")
+_NAMESPACES = {"xacro": "http://www.ros.org/wiki/xacro"}
+
+
+def _said_plainly(message: str) -> str:
+    """libxml2's message, with the fix where libxml2 names none."""
+    undeclared = _UNDECLARED.fullmatch(message)
+    if undeclared is None:
+        return message
+    prefix, tag = undeclared.groups()
+    uri = _NAMESPACES.get(prefix, "...")
+    return f'<{prefix}:{tag}> uses the prefix \'{prefix}\', declared nowhere: declare xmlns:{prefix}="{uri}" on the root element'
+
+
+# A comment as urdfdom's parser (tinyxml2) reads one: from `<!--` to the next `-->`,
+# whatever `--` it holds, which XML forbids and libxml2 and expat refuse.
+_COMMENT = re.compile(rb"<!--(.*?)-->", re.DOTALL)
+
+
+def hyphenated_comment(data: bytes) -> int | None:
+    """The offset of the first comment holding `--` (or ending `--->`), or None."""
+    for match in _COMMENT.finditer(data):
+        if b"--" in match.group(1) or match.group(1).endswith(b"-"):
+            return match.start()
+    return None
+
+
+def _blanked_comments(data: bytes) -> bytes:
+    """``data`` with the text of each comment blanked, lines and columns kept: the
+    comments urdfdom reads, which are dropped from the tree anyway."""
+    return _COMMENT.sub(lambda match: b"<!--" + re.sub(rb"[^\n]", b" ", match.group(1)) + b"-->", data)
 
 
 # A document up to this size is parsed whole, which is faster on small documents
@@ -124,6 +161,8 @@ def top_level(data: bytes, parsed: Element | None = None) -> Iterator[Element]:
         return
     if b"<!DOCTYPE" in data or b"<!ENTITY" in data:
         parse(data)  # entity declarations are refused there, with their own message
+    if hyphenated_comment(data) is not None:
+        data = _blanked_comments(data)  # as parse reads it
     given = 0
     try:
         for element in _streamed(data):

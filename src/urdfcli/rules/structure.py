@@ -70,6 +70,13 @@ X006 = declare("X006", "library-unchecked", WARNING, "A xacro library that no mo
     "the arguments the models need, a pre-commit hook passes a broken library.",
     '# pyproject.toml, for a model urdf/robot.urdf.xacro that reads $(arg name) and has no default\n[tool.urdfcli]',
     '# pyproject.toml\n[tool.urdfcli]\nmodels = { "urdf/robot.urdf.xacro" = [["name:=robot"]] }'))
+X007 = declare("X007", "xml-comment-hyphens", WARNING, "A comment holds `--`, which XML forbids.", explain(
+    "Flags a comment of a URDF or SRDF that holds `--` or ends in `--->`, such as `<!-- ... --!>`. urdfcli reads "
+    "it as urdfdom does: the comment runs on to the next `-->`, and all before that is commented out.",
+    "urdfdom, MoveIt and the simulators read the file, but xacro, urdf_parser_py and any XML parser refuse it "
+    "as not well-formed; and a mistyped end (`--!>`) comments out everything up to the next comment's end.",
+    '<robot name="r">\n  <!-- the base --!>\n  <link name="base_link"/>\n  <!-- base_link is commented out up to here -->\n</robot>',
+    '<robot name="r">\n  <!-- the base -->\n  <link name="base_link"/>\n</robot>'))
 
 # Robot
 R001 = declare("R001", "robot-element-missing", ERROR, "The root element is not `<robot>`.", explain(
