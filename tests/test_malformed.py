@@ -500,10 +500,17 @@ HYPHENATED = '<?xml version="1.0"?>\n<robot name="r">\n  <!-- <link name="old"/>
 
 
 def test_a_comment_holding_double_hyphens_is_read_as_urdfdom_reads_it(cli, tmp_path):
-    result = cli("check", str(write(tmp_path, "robot.urdf", HYPHENATED)))
+    from differential import check_urdf
+
+    path = write(tmp_path, "robot.urdf", HYPHENATED)
+    real = check_urdf(path)
+    assert not real.rejects and "root Link: b has 0 child(ren)" in real.stdout  # 'a' is inside the comment for urdfdom
+    result = cli("check", str(path))
     no_traceback(result)
-    assert result.exit_code == 0, result.stderr  # check_urdf exits 0 too
-    assert "root Link: b has 0 child(ren)" in result.stdout  # 'a' is inside the comment, as urdfdom reads it
+    assert result.exit_code == 0, result.stderr
+    assert "root Link: b has 0 child(ren)" in result.stdout
+    mine = run_cli("check", "--format", "check_urdf", str(path))
+    assert mine.stdout.decode() == real.stdout
     assert "robot.urdf:3:3: X007 warning: comment holds '--'" in result.stderr
     big = HYPHENATED.replace('  <link name="b"/>\n', "".join(f'  <link name="l{i}"/>\n' for i in range(60000)) + '  <link name="b"/>\n')
     streamed = cli("lint", "--select", "X007", str(write(tmp_path, "big.urdf", big)))
