@@ -140,6 +140,16 @@ def enabled(config: Config, path: str) -> bool:
     return config.enabled(X110, path)
 
 
+def _written_in_xacro(loaded: Loaded) -> bool:
+    """Whether a document still holds xacro markup (a ``${...}``, a ``$(...)`` or a xacro element),
+    which no expansion leaves in its output (it keeps the namespace declaration alone): as its
+    scanned source says, else as the reader decided (by use, not by declaration)."""
+    if not loaded.document.is_xacro or loaded.xacro_sources is None:
+        return loaded.document.is_xacro
+    files = loaded.xacro_sources.files
+    return bool(files) and bool(files[0].expressions or files[0].substitutions or files[0].xacro_elements)
+
+
 def drift(loaded: Loaded, config: Config, session: Session, asked: bool = False) -> list[Diagnostic]:
     """X110 for a URDF read from a file (not named .xacro, nor written in xacro), when it was
     generated from a xacro file whose expansion no longer matches it. When the source cannot be expanded it
@@ -149,8 +159,8 @@ def drift(loaded: Loaded, config: Config, session: Session, asked: bool = False)
     document = loaded.document
     if document.file is None or document.file.name.endswith(".xacro") or not loaded.modelled:
         return []
-    if document.is_xacro:
-        return []  # a file still written in xacro is a source, which xacro's output never is (X108 notes it)
+    if _written_in_xacro(loaded):
+        return []  # a source, which xacro's output never is (X108 notes it)
     uncompared = Severity.WARNING if asked else Severity.INFO
     source = generated_from(document.file, session)
     if source is None:
