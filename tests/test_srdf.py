@@ -84,7 +84,7 @@ def test_each_name_is_checked_at_the_srdf_line_that_gives_it(workspace):
     ])
     messages = {d["code"]: d["message"] for f in document["files"] for d in f["diagnostics"]}
     assert messages["K005"] == "group state 'ready' sets joint 'panda_joint4' to -0.01, outside its limits [-3.0718, -0.0698] rad"
-    assert messages["K007"] == "virtual joint 'virtual_joint' has child 'panda_link1', but the URDF's root link is 'panda_link0'"
+    assert messages["K007"] == f"virtual joint 'virtual_joint' has child 'panda_link1', but the root link of {PANDA}/panda.urdf.xacro is 'panda_link0'"
     assert messages["K004"] == "the chain of group 'wrist' runs from 'panda_link7' to 'panda_link5', but 'panda_link5' is not below 'panda_link7' in the URDF"
     hints = {d["code"]: d["hint"] for f in document["files"] for d in f["diagnostics"]}
     assert hints["K004"] == "swap base_link and tip_link" and hints["K003"] == "did you mean 'hand'?"

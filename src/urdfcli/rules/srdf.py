@@ -450,13 +450,13 @@ def virtual_joint_not_at_root(loaded: Loaded, given: Given) -> Iterator[Diagnost
         if virtual.type == "fixed" and bodies(loaded.described)[child.name].top == root:  # fixed to the root
             # a Gazebo-style URDF fixes the base to its 'world' link: MoveIt skips the virtual joint, and the robot stands as it says
             yield loaded.diagnostic(
-                "K007", f"virtual joint '{virtual.name}' has child '{child.name}', which the URDF already fixes to its root link '{root}': "
+                "K007", f"virtual joint '{virtual.name}' has child '{child.name}', which {loaded.described.path} already fixes to its root link '{root}': "
                 "MoveIt skips the virtual joint, and the robot stands where the URDF puts it",
                 child.at, f"remove the virtual joint, or give child_link=\"{root}\"", attribute=child.attribute, subjects=(child.name,),
             )._replace(severity=INFO)
             continue
         yield loaded.diagnostic(
-            "K007", f"virtual joint '{virtual.name}' has child '{child.name}', but the URDF's root link is '{root}'",
+            "K007", f"virtual joint '{virtual.name}' has child '{child.name}', but the root link of {loaded.described.path} is '{root}'",
             child.at, f"give child_link=\"{root}\"", attribute=child.attribute, subjects=(child.name,),
         )
 
