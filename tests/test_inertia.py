@@ -204,7 +204,10 @@ def test_cylinder_mesh_through_a_package_uri_matches_the_closed_form(tmp_path):
 
 def test_unreadable_meshes_give_no_expected_tensor_and_no_problem(tmp_path):
     found = one_link(tmp_path, '<collision><geometry><mesh filename="meshes/missing.stl"/></geometry></collision>')
-    assert found.body is None and "not found" in found.source
+    assert found.body is None and found.source == f"mesh meshes/missing.stl not found ({tmp_path / 'meshes' / 'missing.stl'})"
+    missing = (tmp_path / "gone.stl").as_uri()
+    found = one_link(tmp_path, f'<collision><geometry><mesh filename="{missing}"/></geometry></collision>')
+    assert found.source == f"mesh {missing} not found"  # its path once
     found = one_link(tmp_path, '<collision><geometry><mesh filename="https://example.com/arm.stl"/></geometry></collision>')
     assert found.body is None and "cannot be resolved" in found.source  # never fetched
     (tmp_path / "junk.stl").write_text("not a mesh")

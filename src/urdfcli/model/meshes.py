@@ -122,7 +122,8 @@ def mesh_properties(loaded: Loaded, filename: str, scale: Vector) -> Properties:
     if path is None:
         raise GeometryUnknown(f"mesh {filename} cannot be resolved")
     if not path.is_file():
-        raise GeometryUnknown(f"mesh {filename} not found ({path})")
+        where = "" if str(path) in filename else f" ({path})"  # (a file:// URI names its path already)
+        raise GeometryUnknown(f"mesh {filename} not found{where}")
     found = loaded.meshes.summary(path)
     name = Path(filename).name  # (for the messages below)
     if found.problem is not None:
