@@ -167,14 +167,20 @@ def uri_package(uri: str) -> str | None:
     return named_package(uri[len("package://"):]) if uri.startswith("package://") else None
 
 
-def cmake_project(folder: Path) -> str | None:
-    """The ``project(NAME)`` of a package's CMakeLists.txt: the name ament_cmake
-    installs and registers it under, whatever its package.xml says."""
+def cmake_lists(folder: Path) -> str | None:
+    """The text of a package's CMakeLists.txt; None when it has none."""
     try:
-        text = (folder / "CMakeLists.txt").read_text(errors="replace")
+        return (folder / "CMakeLists.txt").read_text(errors="replace")
     except OSError:
         return None
-    found = re.search(r"^\s*project\s*\(\s*([\w.+-]+)", text, re.MULTILINE | re.IGNORECASE)
+
+
+def cmake_project(folder: Path, text: str | None = None) -> str | None:
+    """The ``project(NAME)`` of a package's CMakeLists.txt (``text``, when it was read
+    already): the name ament_cmake installs and registers it under, whatever its
+    package.xml says."""
+    text = cmake_lists(folder) if text is None else text
+    found = re.search(r"^\s*project\s*\(\s*([\w.+-]+)", text or "", re.MULTILINE | re.IGNORECASE)
     return found.group(1) if found else None
 
 
@@ -191,11 +197,10 @@ def installed_folders(package: Path) -> Iterator[tuple[tuple[str, ...], tuple[st
     ``install(DIRECTORY ... DESTINATION share/${PROJECT_NAME})``: each folder's path in the
     package, and its path below ``share/NAME`` (a folder written with a final ``/`` installs
     its contents). Folders and destinations written with other variables are left out."""
-    try:
-        text = (package / "CMakeLists.txt").read_text(errors="replace")
-    except OSError:
+    text = cmake_lists(package)
+    if text is None:
         return
-    project = cmake_project(package)
+    project = cmake_project(package, text)
     text = re.sub(r"#[^\n]*", "", text)
     for call in _INSTALL.finditer(text):
         words = [word.strip('"') for word in call.group(1).split()]
