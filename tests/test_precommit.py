@@ -1,4 +1,4 @@
-"""The pre-commit hooks: their file filters, the real `pre-commit try-repo` on a clean and a
+"""The pre-commit hooks: their file filters, the real `pre-commit run` on a clean and a
 flagged model, and real `git commit`s through installed hooks on a ROS description repository."""
 
 from __future__ import annotations
@@ -11,7 +11,7 @@ import subprocess
 
 import pytest
 import yaml
-from conftest import ROOT, require_tool, run_cli
+from conftest import ROOT, locked, require_tool, run_cli, shared_folder
 from generated_repos import generate, kuka_package
 from ros_workspace import box_stl, edit, line_of, make_repository, moveit_repository
 
@@ -74,7 +74,7 @@ def git(*args, cwd):
 
 def snapshot_of_this_checkout(destination):
     """A git repository holding this checkout's files as they are now (committed or not):
-    try-repo installs the hooks from a repository's HEAD."""
+    pre-commit installs the hooks from a commit of a repository."""
     listed = subprocess.run(["git", "ls-files", "-co", "--exclude-standard", "-z"], cwd=ROOT, check=True, capture_output=True).stdout
     for name in filter(None, listed.decode().split("\0")):
         source = ROOT / name
@@ -88,15 +88,20 @@ def snapshot_of_this_checkout(destination):
 
 
 @pytest.fixture(scope="module")
-def hooks(tmp_path_factory):
-    """This checkout as a hooks repository, and one pre-commit cache for the module
-    (the hook environment is built once)."""
+def hooks(tmp_path_factory, worker_id):
+    """This checkout as a hooks repository, and one pre-commit cache, both shared by the
+    xdist workers: the hook environment is built once per test run (pre-commit locks
+    its cache while it builds one)."""
     pre_commit = require_tool("pre-commit")
     require_tool("git")
-    base = tmp_path_factory.mktemp("pre-commit")
+    base = shared_folder(tmp_path_factory, worker_id) / "pre-commit"
     hooks_repo = base / "hooks"
-    hooks_repo.mkdir()
-    snapshot_of_this_checkout(hooks_repo)
+    with locked(base.with_suffix(".lock")):
+        if not (base / "snapshot-made").exists():
+            shutil.rmtree(hooks_repo, ignore_errors=True)
+            hooks_repo.mkdir(parents=True)
+            snapshot_of_this_checkout(hooks_repo)
+            (base / "snapshot-made").touch()
     env = {**os.environ, "PRE_COMMIT_HOME": str(base / "cache"), "NO_COLOR": "1", "GITHUB_ACTIONS": "", "PYTHONPATH": ""}
     return pre_commit, hooks_repo, env
 
@@ -123,30 +128,36 @@ def installed(repo, hooks, *hook_ids):
     return commit
 
 
-def test_pre_commit_try_repo_passes_a_clean_model_and_fails_a_flagged_one(tmp_path, hooks):
+def run_hook(project, hooks, hook):
+    """``pre-commit run HOOK --all-files`` in the git repository ``project``, the hooks of
+    this checkout configured as a user configures them (a repository and its rev). (Not
+    ``try-repo``: it builds the hook environment again on each run, in a store of its own.)"""
     pre_commit, hooks_repo, env = hooks
+    rev = subprocess.run(["git", "rev-parse", "HEAD"], cwd=hooks_repo, capture_output=True, text=True, check=True).stdout.strip()
+    (project / ".pre-commit-config.yaml").write_text(f"repos:\n  - repo: {hooks_repo}\n    rev: {rev}\n    hooks:\n      - id: {hook}\n")
+    return subprocess.run([pre_commit, "run", hook, "--all-files"], cwd=project, env=env, capture_output=True, timeout=900)
+
+
+def test_pre_commit_passes_a_clean_model_and_fails_a_flagged_one(tmp_path, hooks):
     project = tmp_path / "project"
     project.mkdir()
     git("init", "-q", cwd=project)
     (project / "robot.urdf").write_text(CLEAN)
     git("add", "robot.urdf", cwd=project)
 
-    def try_repo(hook):
-        return subprocess.run([pre_commit, "try-repo", str(hooks_repo), hook, "--all-files"], cwd=project, env=env, capture_output=True, timeout=900)
-
-    clean = try_repo("urdfcli-lint")
+    clean = run_hook(project, hooks, "urdfcli-lint")
     assert clean.returncode == 0, clean.stdout.decode() + clean.stderr.decode()
     assert re.search(r"urdfcli lint\.+Passed", clean.stdout.decode())
 
     (project / "broken.urdf").write_text(FLAGGED)
     git("add", "broken.urdf", cwd=project)
-    flagged = try_repo("urdfcli-lint")
+    flagged = run_hook(project, hooks, "urdfcli-lint")
     out = flagged.stdout.decode()
     assert flagged.returncode == 1, out
     assert re.search(r"urdfcli lint\.+Failed", out)
     assert "broken.urdf:5:36: D002 warning: <color> has no attribute 'rgb'; it is ignored" in out
 
-    check = try_repo("urdfcli-check")  # warnings only: check passes
+    check = run_hook(project, hooks, "urdfcli-check")  # warnings only: check passes
     assert check.returncode == 0, check.stdout.decode()
 
 
@@ -157,7 +168,6 @@ FIXABLE = (  # a mesh named in another case than its file: the safe fix names th
 
 
 def test_the_fix_hook_fails_when_it_fixed_a_file_and_passes_once_staged(tmp_path, hooks):
-    pre_commit, hooks_repo, env = hooks
     project = tmp_path / "project"
     (project / "meshes").mkdir(parents=True)
     (project / "meshes" / "base.stl").write_bytes(b"solid base\nendsolid base\n")
@@ -165,17 +175,14 @@ def test_the_fix_hook_fails_when_it_fixed_a_file_and_passes_once_staged(tmp_path
     (project / "robot.urdf").write_text(FIXABLE)
     git("add", "-A", cwd=project)
 
-    def try_fix():
-        return subprocess.run([pre_commit, "try-repo", str(hooks_repo), "urdfcli-fix", "--all-files"], cwd=project, env=env, capture_output=True, timeout=900)
-
-    fixed = try_fix()
+    fixed = run_hook(project, hooks, "urdfcli-fix")
     out = fixed.stdout.decode()
     assert fixed.returncode == 1, out
     assert re.search(r"urdfcli fix\.+Failed", out) and "files were modified by this hook" in out
     assert "1 fixed, " in out
     assert (project / "robot.urdf").read_text() == FIXABLE.replace("meshes/base.STL", "meshes/base.stl")
     git("add", "-A", cwd=project)
-    again = try_fix()
+    again = run_hook(project, hooks, "urdfcli-fix")
     assert again.returncode == 0, again.stdout.decode()  # what remains is the lint hook's to judge
     assert re.search(r"urdfcli fix\.+Passed", again.stdout.decode())
 

@@ -27,8 +27,6 @@ one skips with a message, in CI it fails.
 
 from __future__ import annotations
 
-import contextlib
-import fcntl
 import json
 import math
 import re
@@ -39,7 +37,7 @@ from pathlib import Path
 from typing import NamedTuple
 
 import pytest
-from conftest import IN_CI, example_robot_data, lint_file, run_cli
+from conftest import IN_CI, example_robot_data, lint_file, locked, run_cli, shared_folder
 from target_cases import CASES, FACTS, write_cases
 
 from urdfcli.diagnostics import Severity
@@ -71,7 +69,7 @@ def require_consumer(target: str) -> None:
 def cases(tmp_path_factory, worker_id) -> dict[str, Path]:
     """The cases, written once per test run into a folder every xdist worker shares, so
     that each consumer loads them once (the loads are kept there too: real_loads)."""
-    shared = tmp_path_factory.getbasetemp() if worker_id == "master" else tmp_path_factory.getbasetemp().parent
+    shared = shared_folder(tmp_path_factory, worker_id)
     folder = shared / "target-cases"
     with locked(shared / "target-cases.lock"):
         if (folder / "written").exists():
@@ -80,17 +78,6 @@ def cases(tmp_path_factory, worker_id) -> dict[str, Path]:
         paths = write_cases(folder)
         (folder / "written").touch()
         return paths
-
-
-@contextlib.contextmanager
-def locked(path: Path):
-    """Hold an exclusive lock on ``path`` (created if missing) while the block runs."""
-    with open(path, "a") as handle:
-        fcntl.flock(handle, fcntl.LOCK_EX)
-        try:
-            yield
-        finally:
-            fcntl.flock(handle, fcntl.LOCK_UN)
 
 
 def load_all(chosen: Profile, paths: list[str]) -> list[Outcome]:
@@ -442,7 +429,7 @@ def published(tmp_path_factory, worker_id) -> Published:
     search path; MuJoCo, which resolves none, and urdfcli for MuJoCo read a copy whose
     package:// URIs are made absolute paths."""
     package = example_robot_data()
-    shared = (tmp_path_factory.getbasetemp() if worker_id == "master" else tmp_path_factory.getbasetemp().parent) / "published"
+    shared = shared_folder(tmp_path_factory, worker_id) / "published"
     found = published_in(shared, package)
     with locked(shared.with_suffix(".lock")):
         shared.mkdir(exist_ok=True)
