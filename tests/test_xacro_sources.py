@@ -314,6 +314,34 @@ def test_a_property_used_nowhere_is_info_and_one_used_anywhere_is_not(tmp_path):
     assert info.severity.value == "info" and "'wheel_width'" in info.message and info.line == line_of(model, "wheel_width")
 
 
+def test_a_property_written_without_its_dollar_is_a_warning_that_says_where(tmp_path):
+    # Stretch's joints write spring_stiffness="{joint_spring_stiffness}": the URDF gets the braces,
+    # and "used nowhere, or remove it" sent the reader to delete the property instead of the typo
+    model = write(tmp_path / "robot.urdf.xacro", robot("""
+        <xacro:property name="damping" value="21.75"/>
+        <xacro:property name="stiffness" value="0"/>
+        <xacro:property name="old_damping" value="0"/>
+        <!-- {old_damping} in a comment reads nothing, and is no typo -->
+        <link name="base_link"/>
+        <link name="wheel"/>
+        <joint name="wheel_joint" type="continuous"><parent link="base_link"/><child link="wheel"/>
+          <dynamics damping="${damping}" spring_stiffness="{stiffness}"/>
+        </joint>
+        <xacro:macro name="arm" params="prefix reach">
+          <link name="${prefix}_arm" reach="{reach}"/>
+        </xacro:macro>
+        <xacro:arm prefix="left" reach="1"/>
+        """))
+    warning, info = sorted(diagnostics(model, "X102"), key=lambda d: d.severity.value, reverse=True)
+    assert info.severity.value == "info" and "'old_damping'" in info.message and "lacks" not in info.message
+    assert warning.severity.value == "warning" and warning.line == line_of(model, '"stiffness" value')
+    assert f"'{{stiffness}}' at line {line_of(model, 'spring_stiffness')} lacks its $" in warning.message
+    assert warning.hint == "write ${stiffness}"
+    [parameter] = diagnostics(model, "X103")
+    reach_line = line_of(model, 'reach="{reach}"')
+    assert f"'{{reach}}' at line {reach_line} lacks its $" in parameter.message
+
+
 def test_a_library_property_another_model_of_the_workspace_uses_is_clean(tmp_path):
     (tmp_path / ".git").mkdir()
     write(tmp_path / "sizes.xacro", library('<xacro:property name="base_size" value="0.4"/><xacro:property name="mast_height" value="1.2"/>'))

@@ -34,6 +34,21 @@ def _diagnostic(code: str, message: str, file: XacroFile, place: Place, hint: st
     return Diagnostic(code, message, _at(file, place), hint=hint, severity=severity)
 
 
+UNEXPANDED = re.compile(r"(?<!\$)\{(\w+)\}")  # {name}: a xacro expression that lost its $
+
+
+def _dollarless(file: XacroFile, name: str, start: int = 0, end: int | None = None) -> str | None:
+    """Where ``{name}`` is written without its ``$`` between ``start`` and ``end`` of
+    ``file``, outside comments: the reason the name reads as unused, said in words."""
+    text = file.text
+    for found in UNEXPANDED.finditer(text, start, len(text) if end is None else end):
+        at = found.start()
+        if found.group(1) == name and text.rfind("<!--", 0, at) <= text.rfind("-->", 0, at):
+            line, _ = file.source.position(at)
+            return f"'{{{name}}}' at line {line} lacks its $, so xacro writes it as it stands"
+    return None
+
+
 def _used(sources: XacroSources, test) -> bool:
     """Whether ``test(facts)`` holds for what the model's files reach, else for the
     whole workspace around it (read only then); true when an include could not be
@@ -93,6 +108,9 @@ def property_unused(loaded, given) -> Iterator[Diagnostic]:
     workspace around it. A `${width}` in a macro body whose parameter or own
     property is named `width` reads that, not a document's property. Info: a
     library's property may serve a package outside the workspace.
+    Where the file writes `{NAME}` without its `$` (outside comments), the
+    finding is a warning that names that line: the value never reaches the
+    robot, and the braces do.
 
     ## Why is this bad?
     A property nobody reads is a value that looks like it sets something and
@@ -126,6 +144,10 @@ def property_unused(loaded, given) -> Iterator[Diagnostic]:
             # a document's property is read only where no macro parameter or local property of its name hides it
             document_wide = definition.macro is None or definition.scope in ("global", "parent")
             if _used(sources, lambda f: name in (f.unbound if document_wide else f.names) or name in f.blocks or name in f.forwarded):
+                continue
+            dollarless = _dollarless(file, name)
+            if dollarless:  # a typo, not a leftover: the value it should give is missing from the robot
+                yield _diagnostic("X102", f"property '{name}' is used nowhere: {dollarless}", file, definition.place, f"write ${{{name}}}", severity=WARNING)
                 continue
             yield _diagnostic("X102", f"property '{name}' is used nowhere", file, definition.place, f"use it as ${{{name}}}, or remove it")
 
@@ -218,6 +240,9 @@ def parameter_unused(loaded, given) -> Iterator[Diagnostic]:
                 if parameter.block:
                     message = f"block parameter '*{name}' of macro '{definition.name}' is never inserted: the block each call gives is dropped"
                     hint = f'insert it with <xacro:insert_block name="{name}"/>, or remove *{name} from params'
+                elif dollarless := _dollarless(file, name, *file.source.spans[definition.place.element][1:]):
+                    message = f"parameter '{name}' of macro '{definition.name}' is never used in its body: {dollarless}"
+                    hint = f"write ${{{name}}}"
                 else:
                     message = f"parameter '{name}' of macro '{definition.name}' is never used in its body: the value each call gives changes nothing"
                     hint = f"use it as ${{{name}}}, or remove it from params"
