@@ -173,6 +173,7 @@ FACT_CASES = {
     "texture-unknown-package": arm(base=link("base_link", extra=BOX + '<visual><geometry><box size="0.1 0.1 0.1"/></geometry>'
                                              '<material name="decal"><texture filename="package://no_such_package/decal.png"/></material></visual>')),
     "shared-actuator": arm(None, None, link("link2"), joint("j2", "link1", "link2"), transmission("t1", "j1", "motor"), transmission("t2", "j2", "motor")),
+    "repeated-transmission": arm(None, None, transmission("j1_transmission", "j1", "j1_motor"), transmission("j1_transmission", "j1", "j1_motor")),
     "fixed-mimic": arm(None, None, link("link2"), joint("j2", "link1", "link2", extra='<mimic joint="j1"/>', **FIXED)),
     "limit-without-bounds": arm(j1=joint("j1", "base_link", "link1", limit='<limit effort="1" velocity="1"/>')),
     "joint-friction": arm(j1=joint("j1", "base_link", "link1", extra='<dynamics damping="0.1" friction="0.5"/>')),
@@ -200,6 +201,7 @@ FACTS = [
     ("material-nowhere", "drake", "Material 'steel' not previously defined, but has no color or texture", "C207"),
     ("texture-unknown-package", "drake", "refers to unknown package 'no_such_package'", "C208"),
     ("shared-actuator", "drake", "already contains a joint actuator named 'motor'", "C209"),
+    ("repeated-transmission", "drake", "already contains a joint actuator named 'j1_motor'", "C209"),
     ("fixed-mimic", "drake", "Joint 'j2' which has 0 DOF cannot mimic joint 'j1'", "C210"),
     ("limit-without-bounds", "drake", None, "C211"),
     ("joint-friction", "drake", "does not currently support non-zero joint friction", "C212"),

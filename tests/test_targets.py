@@ -710,6 +710,18 @@ def test_mujocos_fixed_base_note_hints_only_what_applies(tmp_path):
         assert found["hint"] == hint, found
 
 
+def test_a_transmission_written_twice_is_said_to_be_a_repeat(cases):
+    """C209: franka_description writes each joint's transmission once per hardware interface,
+    under one name; the message names the repeat instead of a transmission 'already' itself."""
+    done = run_cli("check", "--format", "json", "--target", "drake", str(cases["repeated-transmission"]))
+    [found] = [d for d in json.loads(done.stdout)["files"][0]["diagnostics"] if d["code"] == "C209"]
+    assert found["message"] == "Drake refuses transmission 'j1_transmission', written twice: both make actuator 'j1_motor'", found
+    assert "one <hardwareInterface> per interface" in found["hint"], found
+    done = run_cli("check", "--format", "json", "--target", "drake", str(cases["shared-actuator"]))
+    [found] = [d for d in json.loads(done.stdout)["files"][0]["diagnostics"] if d["code"] == "C209"]
+    assert found["message"] == "Drake refuses transmission 't2': actuator 'motor' is already transmission 't1''s", found
+
+
 def test_load_reports_pybullets_own_reason(cases):
     """PyBullet's exception says only "Cannot load URDF file."; its reason is on its b3Warning lines."""
     require_consumer("pybullet")

@@ -390,12 +390,26 @@ def duplicate_actuator(loaded, given):
             continue
         if name in first:
             yield loaded.diagnostic(
-                "C209", f"Drake refuses transmission '{block.get('name')}': actuator '{name}' is already transmission '{first[name]}''s",
-                loaded.robot.place(actuator) or loaded.robot.place(block), "give each transmission an actuator of its own name",
+                "C209", _shared_actuator_message(block.get("name") or "", first[name], name),
+                loaded.robot.place(actuator) or loaded.robot.place(block), _shared_actuator_hint(block.get("name") or "", first[name]),
                 subjects=(name,),
             )
         else:
             first[name] = block.get("name") or ""
+
+
+def _shared_actuator_message(transmission: str, earlier: str, actuator: str) -> str:
+    # A transmission written again under its own name (one per hardware interface, as
+    # franka_description does for Gazebo) is a repeat, not a second transmission.
+    if transmission == earlier:
+        return f"Drake refuses transmission '{transmission}', written twice: both make actuator '{actuator}'"
+    return f"Drake refuses transmission '{transmission}': actuator '{actuator}' is already transmission '{earlier}''s"
+
+
+def _shared_actuator_hint(transmission: str, earlier: str) -> str:
+    if transmission == earlier:
+        return "write the transmission once, with one <hardwareInterface> per interface in its <joint>, or name each actuator apart"
+    return "give each transmission an actuator of its own name"
 
 
 @check(
