@@ -341,6 +341,19 @@ def test_a_turned_origin_moves_and_turns_the_links_below(tmp_path):
     assert millimetres == pytest.approx(2 * 300 * __import__("math").sin(__import__("math").radians(15)), rel=1e-5)  # the 0.3 m chord of 30°
 
 
+def test_a_link_that_only_moved_under_a_turned_joint_turned_0_degrees(tmp_path):
+    """xArm's link_tcp, 172 mm above the gripper's base and 126 mm above the vacuum gripper's,
+    under joints turned by 1.5708: the same rotation, which read 'turned 2.09e-06°' when its
+    angle came from an arc cosine of a trace a rounding below 3."""
+    old = ARM.replace('<origin xyz="0 0 0.1" rpy="0 0 0"/>', '<origin xyz="0 0 0.1" rpy="1.5708 0.2 0"/>')
+    new = old.replace('<origin xyz="0 0 0.4" rpy="0 0 0"/>', '<origin xyz="0 0 0.43" rpy="0 0 0"/>')
+    changes = changes_of(tmp_path, new, old)
+    moved = {c.element: c.moved for c in changes if c.field == "pose"}
+    assert moved and all(mm == pytest.approx(30.0) and degrees == 0.0 for mm, degrees in moved.values())
+    text = run_cli("diff", str(tmp_path / "old.urdf"), str(tmp_path / "new.urdf")).stdout.decode()
+    assert "~ link 'forearm' moved 30 mm, turned 0°  " in text and "e-0" not in text
+
+
 # -- cosmetic differences are no change ------------------------------------------------
 def test_cosmetic_differences_are_no_change(tmp_path):
     cosmetic = (

@@ -955,6 +955,29 @@ def test_xacros_deprecation_is_located_at_the_call_with_its_fix(tmp_path):
     assert warning.hint.startswith("write xacro.load_yaml(...)")
 
 
+def test_a_deprecated_call_kept_for_an_older_xacro_beside_the_new_form_is_not_rewritten(tmp_path):
+    """xArm's xarm7.urdf.xacro writes xacro.load_yaml() under xacro:if use_xacro_load_yaml and
+    load_yaml() under its xacro:unless, for the xacro of ROS Melodic and early Noetic, which has
+    no xacro.load_yaml(): the condition is what to set, and the fix would make both branches one."""
+    write(tmp_path / "c.yaml", "a: 1\n")
+    model = write(tmp_path / "robot.urdf.xacro", robot("""
+        <xacro:property name="use_xacro_load_yaml" value="false"/>
+        <xacro:if value="${use_xacro_load_yaml}">
+          <xacro:property name="cfg" value="${xacro.load_yaml('c.yaml')}"/>
+        </xacro:if>
+        <xacro:unless value="${use_xacro_load_yaml}">
+          <xacro:property name="cfg" value="${load_yaml('c.yaml')}"/>
+        </xacro:unless>
+        <link name="base_link"><visual><geometry><box size="${cfg['a']} 1 1"/></geometry></visual></link>
+        """))
+    before = model.read_text()
+    [warning] = [d for d in diagnostics(model, "X005") if "load_yaml" in d.message]
+    assert (warning.line, warning.column) == column_of(model, "load_yaml(", "${load_yaml")
+    assert "make ${use_xacro_load_yaml} true" in warning.hint and warning.fix.edits == ()
+    run_cli("lint", "--fix", "--isolated", str(model))
+    assert model.read_text() == before
+
+
 def test_expand_takes_inorder_and_says_it_does_nothing(tmp_path):
     model = write(tmp_path / "robot.urdf.xacro", robot('<link name="base_link"/>'))
     plain, inorder = run_cli("expand", str(model)), run_cli("expand", "--inorder", str(model))

@@ -130,10 +130,12 @@ class Numbers:
 
 
 def turn(a: massprops.Matrix, b: massprops.Matrix) -> float:
-    """The angle (radians) of the rotation from a to b."""
+    """The angle (radians) of the rotation from a to b: from its sine and cosine both, as
+    an arc cosine alone reads a trace a rounding below 3 as a turn of 1e-8 rad."""
     r = massprops.multiply(massprops.transpose(a), b)
     cosine = (r[0][0] + r[1][1] + r[2][2] - 1.0) / 2.0
-    return math.acos(max(-1.0, min(1.0, cosine)))
+    sine = math.hypot(r[2][1] - r[1][2], r[0][2] - r[2][0], r[1][0] - r[0][1]) / 2.0
+    return math.atan2(sine, cosine)
 
 
 def relative(old: float | None, new: float | None) -> float | None:

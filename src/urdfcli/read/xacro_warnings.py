@@ -11,7 +11,8 @@ from __future__ import annotations
 import re
 
 from ..diagnostics import Applicability, Diagnostic, Edit, Fix, Location, Severity
-from .files import SourceFiles
+from .files import SourceFile, SourceFiles
+from .xacro_scan import is_xacro, local_name
 
 # xacro's own words (xacro/__init__.py), and the fix for each
 _FIXES = (
@@ -56,7 +57,53 @@ def warning(text: str, location: Location, files: SourceFiles, error: bool = Fal
     found = _DEPRECATED_CALL.search(text)
     if found is not None and location.line and location.column:
         location = _at_call(found.group(1), location, files)
+    kept = _kept_for_older_xacro(text, location, files)
+    if kept is not None:
+        return Diagnostic("X005", text, location, hint=kept[0], fix=kept[1])
     return Diagnostic("X005", text, location, hint=_parameter_fix(text, location, files) or fix(text), fix=_rewrite(text, location, files))
+
+
+_OPPOSITE = {"if": "unless", "unless": "if"}
+
+
+def _kept_for_older_xacro(text: str, location: Location, files: SourceFiles) -> tuple[str, Fix] | None:
+    """The hint, and the fix without an edit, of a deprecated call the file keeps on purpose: it is
+    written in an ``xacro:if`` (or ``xacro:unless``) whose twin on the same condition
+    writes the new form, so that an xacro without it (ROS Noetic's before 1.14.10 has no
+    ``xacro.load_yaml``) still reads the file (xArm's ``use_xacro_load_yaml``). Rewriting
+    the call would make both branches the new form; the condition is what to set."""
+    deprecated = _DEPRECATED.search(text)
+    source = files.get(location.file) if deprecated is not None and location.line and location.column else None
+    if source is None or source.tree is None:
+        return None
+    name, namespace = deprecated.groups()
+    condition = _condition_around(source, source.offset(location.line, location.column))
+    if condition is None:
+        return None
+    kind, value = local_name(condition.tag), (condition.get("value") or "").strip()
+    new_form = re.compile(rf"(?<![\w.]){re.escape(namespace)}\.{re.escape(name)}\s*\(")
+    for twin in condition.itersiblings(preceding=True) if kind == "unless" else condition.itersiblings():
+        if (is_xacro(twin) and local_name(twin.tag) == _OPPOSITE[kind] and (twin.get("value") or "").strip() == value
+                and any(new_form.search(written) for element in twin.iter() for written in (*element.attrib.values(), element.text or ""))):
+            hint = (f"the file keeps {name}() for an xacro without {namespace}.{name}(), which it writes where {value} "
+                    f"is true: make {value} true where xacro has it")
+            return hint, Fix(f"write {namespace}.{name}()", SAFE, reason=f"{name}() is kept on purpose for an xacro without {namespace}.{name}()")
+    return None
+
+
+def _condition_around(source: SourceFile, at: int | None):
+    """The ``xacro:if`` or ``xacro:unless`` nearest around the element whose start tag holds ``at``."""
+    if at is None:
+        return None
+    holding = None
+    for element in source.elements:
+        start = source.start_of(element)
+        if start is None or start > at:
+            break
+        holding = element
+    while holding is not None and not (is_xacro(holding) and local_name(holding.tag) in _OPPOSITE):
+        holding = holding.getparent()
+    return holding
 
 
 _REDEFINED = re.compile(r"redefining global symbol: (\w+)")

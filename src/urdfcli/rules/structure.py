@@ -57,7 +57,8 @@ X005 = declare("X005", "xacro-warning", WARNING, "xacro warned while expanding t
     '<robot name="r" xmlns:xacro="http://www.ros.org/wiki/xacro">\n  <xacro:property name="half_turn" value="${pi}"/>\n  <link name="base_link"/>\n</robot>'),
     fix=SAFE, fix_doc="Rewrites the forms xacro deprecated and still reads: `load_yaml()`, `abs_filename()`, `dotify()` as "
     "`xacro.load_yaml()`..., `range()` and `sorted()` as `python.range()`..., a macro named `xacro:NAME` as `NAME` "
-    "(safe: xacro reads both the same). Its other warnings have no fix.")
+    "(safe: xacro reads both the same). Its other warnings have no fix."
+    " A call written under an `xacro:unless` (or `xacro:if`) whose twin on the same condition writes the new form is kept: it is there for an xacro without it, and the hint names the condition to set.")
 
 X006 = declare("X006", "library-unchecked", WARNING, "A xacro library that no model including it could check, for want of xacro arguments.", explain(
     "Flags a xacro library (macros and properties only), or a fragment (a file its models include that cannot be "
