@@ -329,6 +329,36 @@ def test_per_file_ignores_do_not_depend_on_the_working_directory(tmp_path):
         assert found == [set(), {"D002"}]  # a glob with no '/' matches the name anywhere
 
 
+def test_a_missing_argument_names_the_others_the_files_read_without_a_default(tmp_path):
+    """xacro stops at the first argument without a value: the hint gives the others the
+    files read too (not those declared with a default, nor those given), all at once."""
+    write(tmp_path, "pkg/urdf/sensor.xacro", """\
+        <robot xmlns:xacro="http://www.ros.org/wiki/xacro">
+          <link name="$(arg sensor)"/>
+          <joint name="sensor_joint" type="fixed"><parent link="base"/><child link="$(arg sensor)"/></joint>
+        </robot>
+        """)
+    model = write(tmp_path, "pkg/urdf/arm.urdf.xacro", """\
+        <robot name="arm" xmlns:xacro="http://www.ros.org/wiki/xacro">
+          <xacro:arg name="prefix" default=""/>
+          <link name="base"/>
+          <xacro:include filename="sensor.xacro"/>
+          <link name="$(arg prefix)$(arg arm_type)_arm"/>
+          <joint name="arm_joint" type="fixed"><parent link="base"/><child link="$(arg prefix)$(arg arm_type)_arm"/></joint>
+          <link name="$(arg tool)"/>
+          <joint name="tool_joint" type="fixed"><parent link="base"/><child link="$(arg tool)"/></joint>
+        </robot>
+        """)
+    done = run_cli("check", "--format", "json", str(model), "tool:=flange")
+    [diagnostic] = json.loads(done.stdout)["files"][0]["diagnostics"]
+    assert diagnostic["message"].startswith("needs xacro argument 'sensor'")
+    assert diagnostic["hint"].startswith("give sensor:=VALUE arm_type:=VALUE after the file on the command line "
+                                         "(the files also read 'arm_type' without a <xacro:arg> default: they may be needed too)")
+    assert '{ sensor = "VALUE", arm_type = "VALUE" }' in diagnostic["hint"]
+    done = run_cli("check", str(model), "tool:=flange", "sensor:=camera", "arm_type:=small")
+    assert done.returncode == 0, done.stdout.decode()
+
+
 def test_models_are_checked_once_per_argument_set(tmp_path):
     model = write(tmp_path, "pkg/urdf/arm.urdf.xacro", """\
         <robot name="arm" xmlns:xacro="http://www.ros.org/wiki/xacro">

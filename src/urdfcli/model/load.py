@@ -8,6 +8,7 @@ time, tolerantly, keeping no tree. The rules run on a :class:`Loaded` (see
 
 from __future__ import annotations
 
+import re
 from collections.abc import Callable
 from functools import cached_property
 from pathlib import Path
@@ -129,7 +130,8 @@ def load(
     document, diagnostics = read_document(path, inputs, resolver, mappings, force_xacro)
     if document.missing_argument is not None:  # the expansion stopped there: its one diagnostic says so
         key = configured_as() if configured_as is not None else (Path(path).name if path != STDIN else "FILE")
-        diagnostics = [needs_argument(d, document.missing_argument, key) for d in diagnostics]
+        also = also_unset(document, mappings or {}, document.missing_argument)
+        diagnostics = [needs_argument(d, document.missing_argument, key, also) for d in diagnostics]
     found_sources = sources(document) if sources is not None else None
     loaded = Loaded(document, diagnostics=diagnostics, resolver=resolver, meshes=meshes, reads_meshes=reads_meshes, sources=found_sources)
     if not document.readable:
@@ -181,14 +183,41 @@ def _semantic(loaded: Loaded) -> bool:
     loaded.diagnostics += _comment_hyphens(document)
     document.data = None
     return True
-def needs_argument(diagnostic: Diagnostic, name: str, key: str) -> Diagnostic:
+def needs_argument(diagnostic: Diagnostic, name: str, key: str, also: list[str] | tuple[str, ...] = ()) -> Diagnostic:
     """xacro's 'Undefined substitution argument NAME', said so that it names the fix: the
-    value on the command line or in [tool.urdfcli.xacro-args], where ``key`` names the input."""
+    value on the command line or in [tool.urdfcli.xacro-args], where ``key`` names the input.
+    ``also``: the other arguments the files read without a value (:func:`also_unset`),
+    which xacro would stop at next: named in the hint, so that all are given at once."""
     message = (f"needs xacro argument '{name}': it has no value where it is used (no default, or used before its "
                f"<xacro:arg>); pass {name}:=VALUE, or give it in the configuration")
-    hint = (f'give {name}:=VALUE after the file on the command line, or in pyproject.toml: [tool.urdfcli.xacro-args] "{key}" = {{ {name} = "VALUE" }} '
+    names = (name, *also)
+    given = " ".join(f"{n}:=VALUE" for n in names)
+    table = ", ".join(f'{n} = "VALUE"' for n in names)
+    more = f" (the files also read {_listed(also)} without a <xacro:arg> default: they may be needed too)" if also else ""
+    hint = (f'give {given} after the file on the command line{more}, or in pyproject.toml: [tool.urdfcli.xacro-args] "{key}" = {{ {table} }} '
             f"(each of several values: [tool.urdfcli] models)")
     return diagnostic._replace(message=message, hint=diagnostic.hint or hint)
+
+
+_ARGUMENT_NAME = re.compile(r"[\w.-]+")
+
+
+def also_unset(document: Document, mappings: dict[str, str], missing: str) -> list[str]:
+    """The arguments other than ``missing`` that the files the expansion read before it
+    stopped (the model's own file whole) read as ``$(arg NAME)``, that no ``<xacro:arg>``
+    of theirs declares and that were not given: xacro stops at the first, one run each.
+    A macro never called or a branch not taken may read one of them (said so)."""
+    if document.files is None:
+        return []
+    scans = [found.scan for file in (document.shown, *document.includes) if (found := document.files.get(file)) is not None and found.scan is not None]
+    declared = {d.name for scanned in scans for d in scanned.definitions if d.kind == "argument"}
+    read = {s.argument.strip() for scanned in scans for s in scanned.substitutions if s.function == "arg"}
+    return sorted(n for n in read - declared - set(mappings) - {missing} if _ARGUMENT_NAME.fullmatch(n))
+
+
+def _listed(names) -> str:
+    quoted = [f"'{n}'" for n in names]
+    return quoted[0] if len(quoted) == 1 else f"{', '.join(quoted[:-1])} and {quoted[-1]}"
 
 
 def _unreadable(loaded: Loaded, error: XmlError) -> None:
