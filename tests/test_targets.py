@@ -970,3 +970,25 @@ def test_gazebo_mimic_joints_gz_ros2_control_drives_are_not_said_to_move_freely(
         "gz_ros2_control/GazeboSimSystem": ["Gazebo (sdformat 12) drops the <mimic> of mimic joint 'pad_joint' (of 'left_joint'): it moves freely"],
         "mock_components/GenericSystem": ["Gazebo (sdformat 12) drops the <mimic> of 2 mimic joints ('right_joint', 'pad_joint'): they move freely"],
     }
+
+
+def test_pybullet_recomputing_a_frames_zero_tensor_as_rounding_noise_is_no_change(tmp_path):
+    """onshape-to-robot's frames (SO-101's baseframe, gripperframe): mass 1e-9 and a zero
+    tensor, no collision. PyBullet's box for them has moments near 1e-16, rounding noise as
+    the zero it replaces: C402 names the link whose tensor really changes, and gives it as
+    the example, not the frame."""
+    model = tmp_path / "arm.urdf"
+    model.write_text(
+        '<robot name="arm"><link name="base"><inertial><mass value="0.15"/>'
+        '<inertia ixx="1e-4" ixy="0" ixz="0" iyy="1e-4" iyz="0" izz="1e-4"/></inertial>'
+        '<collision><geometry><box size="0.1 0.1 0.1"/></geometry></collision></link>'
+        '<link name="baseframe"><inertial><mass value="1e-9"/>'
+        '<inertia ixx="0" ixy="0" ixz="0" iyy="0" iyz="0" izz="0"/></inertial></link>'
+        '<joint name="baseframe_frame" type="fixed"><parent link="base"/><child link="baseframe"/></joint></robot>\n'
+    )
+    found = [(d.message, d.subjects) for d in predicted(model, profile("pybullet")).diagnostics if d.code == "C402"]
+    assert found == [(
+        "PyBullet ignores the <inertia> of 1 link ('base') and recomputes it from the bounding box of the collision shapes;"
+        " link 'base': principal moments 0.0001 0.0001 0.0001 become 0.00025 0.00025 0.00025",
+        ("base",),
+    )]
