@@ -590,6 +590,24 @@ def test_collision_meshes_mujoco_cannot_open_are_one_refusal(tmp_path):
     assert found[0].line == 1 and found[0].subjects == ("knuckle", "finger", "tip")
 
 
+def test_a_missing_mesh_several_links_share_is_counted_once(tmp_path):
+    """SO-101 without its assets/ folder: the servo's sts3215_03a_v1.stl is the collision of
+    five links, 17 references to 13 files. C110 counts the files missing, not the references."""
+    model = tmp_path / "arm.urdf"
+    parts = "".join(
+        f'<link name="{name}"><inertial><mass value="0.1"/><inertia ixx="1e-4" iyy="1e-4" izz="1e-4" ixy="0" ixz="0" iyz="0"/></inertial>'
+        f'<collision><geometry><mesh filename="assets/{name}.stl"/></geometry></collision>'
+        '<collision><geometry><mesh filename="assets/sts3215.stl"/></geometry></collision></link>'
+        f'<joint name="{name}_joint" type="fixed"><parent link="base"/><child link="{name}"/></joint>'
+        for name in ("shoulder", "upper_arm", "lower_arm")
+    )
+    model.write_text(f'<robot name="r"><link name="base"/>{parts}</robot>')
+    found = [d.message for d in predicted(model, profile("mujoco")).diagnostics if d.code == "C110"]
+    assert found == [
+        "MuJoCo rejects 3 links ('shoulder', 'upper_arm', 'lower_arm'): mesh file 'assets/shoulder.stl' does not exist (nor 3 more files)"
+    ]
+
+
 def test_links_mujoco_weighs_by_their_shapes_are_one_warning(tmp_path):
     """myCobot's exported arms have no <inertial> at all: MuJoCo fills each moving link's
     collision shapes at 1000 kg/m³. One C107 names the links, at the first written, not a warning
