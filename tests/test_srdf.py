@@ -993,3 +993,24 @@ def test_an_srdf_for_another_variant_of_a_xacro_model_is_told_to_give_its_argume
     (tmp_path / "tiago.urdf").write_text('<robot name="tiago"><link name="arm_link"/></robot>\n')
     done, document = check("--urdf", "tiago.urdf", "tiago_gripper.srdf", cwd=tmp_path)
     assert [d["hint"] for d in document["files"][0]["diagnostics"]] == ["use a link of tiago.urdf, or check that the SRDF is for this robot"]
+
+
+def test_a_finger_state_outside_its_limits_is_hinted_in_metres(tmp_path):
+    """Piper's gripper_open sets both fingers to 0.035, but joint8 moves over [-0.038, 0]:
+    the hint of a prismatic joint speaks of metres, not of a revolute joint's radians."""
+    package = tmp_path / "arm_moveit_config"
+    (package / "config").mkdir(parents=True)
+    (package / "package.xml").write_text('<package format="3"><name>arm_moveit_config</name></package>\n')
+    (package / "config" / "arm.urdf").write_text(
+        '<robot name="arm"><link name="base"/><link name="finger"/>'
+        '<joint name="joint8" type="prismatic"><parent link="base"/><child link="finger"/><axis xyz="0 0 1"/>'
+        '<limit lower="-0.038" upper="0" effort="1" velocity="1"/></joint></robot>\n'
+    )
+    (package / "config" / "arm.srdf").write_text(
+        '<robot name="arm">\n  <group name="gripper"><joint name="joint8"/></group>\n'
+        '  <group_state name="gripper_open" group="gripper"><joint name="joint8" value="0.035"/></group_state>\n</robot>\n'
+    )
+    _, document = check(str(package / "config" / "arm.srdf"), cwd=tmp_path)
+    [said] = [d for d in document["files"][0]["diagnostics"] if d["code"] == "K005"]
+    assert said["message"] == "group state 'gripper_open' sets joint 'joint8' to 0.035, outside its limits [-0.038, 0] m"
+    assert said["hint"] == "give a value within the joint's limits (metres for a prismatic joint)"

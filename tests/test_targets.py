@@ -577,6 +577,24 @@ def test_collision_meshes_mujoco_cannot_open_are_one_refusal(tmp_path):
     assert found[0].line == 1 and found[0].subjects == ("knuckle", "finger", "tip")
 
 
+def test_a_missing_mesh_several_links_share_is_counted_once(tmp_path):
+    """SO-101 without its assets/ folder: the servo's sts3215_03a_v1.stl is the collision of
+    five links, 17 references to 13 files. C110 counts the files missing, not the references."""
+    model = tmp_path / "arm.urdf"
+    parts = "".join(
+        f'<link name="{name}"><inertial><mass value="0.1"/><inertia ixx="1e-4" iyy="1e-4" izz="1e-4" ixy="0" ixz="0" iyz="0"/></inertial>'
+        f'<collision><geometry><mesh filename="assets/{name}.stl"/></geometry></collision>'
+        '<collision><geometry><mesh filename="assets/sts3215.stl"/></geometry></collision></link>'
+        f'<joint name="{name}_joint" type="fixed"><parent link="base"/><child link="{name}"/></joint>'
+        for name in ("shoulder", "upper_arm", "lower_arm")
+    )
+    model.write_text(f'<robot name="r"><link name="base"/>{parts}</robot>')
+    found = [d.message for d in predicted(model, profile("mujoco")).diagnostics if d.code == "C110"]
+    assert found == [
+        "MuJoCo rejects 3 links ('shoulder', 'upper_arm', 'lower_arm'): mesh file 'assets/shoulder.stl' does not exist (nor 3 more files)"
+    ]
+
+
 def test_links_mujoco_weighs_by_their_shapes_are_one_warning(tmp_path):
     """myCobot's exported arms have no <inertial> at all: MuJoCo fills each moving link's
     collision shapes at 1000 kg/m³. One C107 names the links, at the first written, not a warning
@@ -969,3 +987,25 @@ def test_gazebo_mimic_joints_gz_ros2_control_drives_are_not_said_to_move_freely(
         "gz_ros2_control/GazeboSimSystem": ["Gazebo (sdformat 12) drops the <mimic> of mimic joint 'pad_joint' (of 'left_joint'): it moves freely"],
         "mock_components/GenericSystem": ["Gazebo (sdformat 12) drops the <mimic> of 2 mimic joints ('right_joint', 'pad_joint'): they move freely"],
     }
+
+
+def test_pybullet_recomputing_a_frames_zero_tensor_as_rounding_noise_is_no_change(tmp_path):
+    """onshape-to-robot's frames (SO-101's baseframe, gripperframe): mass 1e-9 and a zero
+    tensor, no collision. PyBullet's box for them has moments near 1e-16, rounding noise as
+    the zero it replaces: C402 names the link whose tensor really changes, and gives it as
+    the example, not the frame."""
+    model = tmp_path / "arm.urdf"
+    model.write_text(
+        '<robot name="arm"><link name="base"><inertial><mass value="0.15"/>'
+        '<inertia ixx="1e-4" ixy="0" ixz="0" iyy="1e-4" iyz="0" izz="1e-4"/></inertial>'
+        '<collision><geometry><box size="0.1 0.1 0.1"/></geometry></collision></link>'
+        '<link name="baseframe"><inertial><mass value="1e-9"/>'
+        '<inertia ixx="0" ixy="0" ixz="0" iyy="0" iyz="0" izz="0"/></inertial></link>'
+        '<joint name="baseframe_frame" type="fixed"><parent link="base"/><child link="baseframe"/></joint></robot>\n'
+    )
+    found = [(d.message, d.subjects) for d in predicted(model, profile("pybullet")).diagnostics if d.code == "C402"]
+    assert found == [(
+        "PyBullet ignores the <inertia> of 1 link ('base') and recomputes it from the bounding box of the collision shapes;"
+        " link 'base': principal moments 0.0001 0.0001 0.0001 become 0.00025 0.00025 0.00025",
+        ("base",),
+    )]

@@ -318,6 +318,39 @@ def test_a_part_whose_links_hang_from_its_includers_macro_is_a_fragment_of_the_m
 
 
 
+def test_a_fragment_a_model_picks_by_an_argument_names_the_model_and_the_argument(tmp_path):
+    """SO-ARM100's model includes grippers/gripper_$(arg gripper_type).xacro: the gripper
+    its default does not name is not 'included by no model' (a change to it would pass
+    unchecked, said so wrongly), but may be included by that model with another value: the
+    note names the argument set to list, and with it listed the fragment is checked through it."""
+    package = tmp_path / "arm"
+    (tmp_path / ".git").mkdir()
+    write(package / "package.xml", package_xml("arm"))
+    write(package / "urdf" / "arm.urdf.xacro", f"""\
+        <robot name="arm" {XACRO}>
+          <xacro:arg name="gripper_type" default="jaw"/>
+          <link name="wrist"/>
+          <xacro:include filename="grippers/gripper_$(arg gripper_type).xacro"/>
+        </robot>
+        """)
+    for gripper in ("jaw", "none"):
+        write(package / "urdf" / "grippers" / f"gripper_{gripper}.xacro", f"""\
+            <robot {XACRO}>
+              <link name="{gripper}_tool"/>
+              <joint name="{gripper}_joint" type="fixed"><parent link="wrist"/><child link="{gripper}_tool"/></joint>
+            </robot>
+            """)
+    fragment = "arm/urdf/grippers/gripper_none.xacro"
+    out = run_cli("lint", fragment, cwd=tmp_path).stdout.decode()
+    assert "no model includes" not in out
+    assert (f"{fragment}: may be included by arm/urdf/arm.urdf.xacro through 'grippers/gripper_$(arg gripper_type).xacro', a file name "
+            "computed from what it is given, and that model reads another file with its default arguments: not checked; list the argument "
+            'sets it is checked with in [tool.urdfcli] models, e.g. models = { "arm/urdf/arm.urdf.xacro" = [["gripper_type:=none"]] }') in out
+    write(tmp_path / "pyproject.toml", '[tool.urdfcli]\nmodels = { "arm/urdf/arm.urdf.xacro" = [["gripper_type:=none"]] }\n')
+    done = run_cli("lint", fragment, cwd=tmp_path)
+    assert done.returncode == 0 and f"{fragment}: fragment, checked through arm/urdf/arm.urdf.xacro [gripper_type:=none]" in done.stdout.decode()
+
+
 def test_a_library_a_macro_fragment_includes_is_checked_through_the_model_not_the_fragment(tmp_path):
     """TALOS: the arm's macro includes ${side}_arm.transmissions.urdf.xacro, which calls the
     transmission macro of arm.transmission.xacro with the macro's ${name}. Given with that

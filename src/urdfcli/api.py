@@ -179,7 +179,7 @@ def run(paths: list[str], session: Session, progress: Progress | None = None, as
             done[target] = check_target(target, session)
         return done[target]
 
-    includers = fragment_includers(config_for, session.package_paths, session.packages, session.files) if session.options.libraries else (lambda path: [])
+    includers = fragment_includers(config_for, session.package_paths, session.packages, session.files) if session.options.libraries else (lambda path: ([], ()))
     results, unreadable = assemble(entries, outcome, includers, partial(_generated_from, session=session), session.packages.real_path)
     results += unread(aside, [r for r in done.values() if isinstance(r, Result)], results)
     results = [replace(result, show_info=config_for(result.path).show_info) for result in results]

@@ -726,20 +726,23 @@ def plan(
 def fragment_includers(config_for, package_paths: tuple[str, ...] = (), packages: PackageIndex | None = None, files: SourceFiles | None = None):
     """``includers(path)``: the runs of the models around a xacro file given as a model
     that include it (and around a plain URDF that holds no robot: see :func:`fragment_shaped`;
-    none for any other file). Asked only of a model that cannot be
-    read alone without an error, which may be a fragment of them (the search reads the
-    repository or workspace around it)."""
+    none for any other file), and, when none does, the models that may include it through
+    a file name computed from their arguments (:class:`Maybe`). Asked only of a model that
+    cannot be read alone without an error, which may be a fragment of them (the search
+    reads the repository or workspace around it)."""
     packages = packages if packages is not None else PackageIndex()
     index: Index | None = None
     candidates_of: dict[tuple, list[Path]] = {}
 
-    def includers(path: str) -> list[Target]:
+    def includers(path: str) -> tuple[list[Target], tuple[Maybe, ...]]:
         nonlocal index
         if path == STDIN or not (path.endswith(".xacro") or fragment_shaped(path)):
-            return []
+            return [], ()
         config = config_for(path)
         index = index or Index(config.package_paths + package_paths, packages, files)
-        return _includers(Path(path).resolve(), index, config, config_for, packages, candidates_of)
+        file = Path(path).resolve()
+        targets = _includers(file, index, config, config_for, packages, candidates_of)
+        return targets, () if targets else _computing_includers(file, index, config, config_for, packages, candidates_of)
 
     return includers
 
@@ -915,7 +918,8 @@ UNDEFINED = frozenset(rule.code for rule in (structure.X003, joint_link_not_foun
 
 
 def assemble(
-    entries: list[Entry], outcome: Callable[[Target], Result | Unreadable], includers: Callable[[str], list[Target]] = lambda path: [],
+    entries: list[Entry], outcome: Callable[[Target], Result | Unreadable],
+    includers: Callable[[str], tuple[list[Target], tuple[Maybe, ...]]] = lambda path: ([], ()),
     generated_from: Callable[[str], Path | None] = lambda path: None, real_path: Callable[[Path], Path] = Path.resolve,
 ) -> tuple[list[Result], list[Unreadable]]:
     """The results to show, in the order the files were given, and the reasons
@@ -948,7 +952,7 @@ def assemble(
                     unreadable.append(result)
                     continue
                 missing = any(d.code in MISSING_CONTEXT for d in result.errors)
-                through = includers(entry.path) if missing else []
+                through, maybe = includers(entry.path) if missing else ([], ())
                 # a model of this run whose expansion read it (an include the search could not follow)
                 read_by = [] if through or not missing or not part_of_model(entry.path) else readers(entry.path)
                 if through or read_by:  # a fragment: read where its context is given
@@ -960,8 +964,8 @@ def assemble(
                     # a xacro part nothing here includes: a name or a link its includer gives is missing, or it makes no link at all
                     # (an empty plain URDF nothing includes is a robot that failed, as check_urdf says: example-robot-data's ur3.urdf)
                     why = next((d.message for d in result.errors if d.code in UNDEFINED), "it makes no link")
-                    note = f"a fragment (its <robot> has no name) that no model includes: not checked ({why})"
-                    results.append(Result(entry.path, library=Library((), (note,), unchecked=True, fragment=True)))
+                    notes = tuple(_may_include(m, outcome, fragment=True) for m in maybe) or (f"a fragment (its <robot> has no name) that no model includes: not checked ({why})",)
+                    results.append(Result(entry.path, library=Library((), notes, unchecked=True, fragment=True)))
                     break
                 is_own = functools.cache(lambda file, path=entry.path: _same_input(file, path))
                 copied = at_source(result)
@@ -1173,9 +1177,10 @@ def _library_result(
     return Result(entry.path, tuple(diagnostics), library=Library(tuple(checked_through), tuple(notes), fragment=fragment, read=read))
 
 
-def _may_include(maybe: Maybe, outcome) -> str:
-    """The note for a model that may include a library through a computed file name: why it
-    did not (it did not expand, or read another file), and the setting that makes it."""
+def _may_include(maybe: Maybe, outcome, fragment: bool = False) -> str:
+    """The note for a model that may include a library (or a ``fragment``, which is then not
+    checked at all) through a computed file name: why it did not (it did not expand, or read
+    another file), and the setting that makes it."""
     run = outcome(maybe.runs[0])
     arguments = "the arguments it is checked with" if maybe.runs[0].arguments else "its default arguments"
     if isinstance(run, Unreadable):
@@ -1189,7 +1194,7 @@ def _may_include(maybe: Maybe, outcome) -> str:
     example = f'models, e.g. models = {{ "{maybe.model}" = [["{maybe.argument[0]}:={maybe.argument[1]}"]] }} (paths from the configuration\'s folder)' if maybe.argument else "models"
     return (
         f"may be included by {maybe.model} through '{maybe.written}', a file name computed from what it is given, "
-        f"and that model {why}: checked on its own; list the argument sets it is checked with in [tool.urdfcli] {example}"
+        f"and that model {why}: {'not checked' if fragment else 'checked on its own'}; list the argument sets it is checked with in [tool.urdfcli] {example}"
     )
 
 

@@ -335,10 +335,10 @@ def state_outside_limits(loaded: Loaded, given: Given) -> Iterator[Diagnostic]:
             tolerance = 1e-9 * max(1.0, abs(limit.lower), abs(limit.upper))
             if limit.lower - tolerance <= value <= limit.upper + tolerance:
                 continue
-            unit = "m" if joint.type == "prismatic" else "rad"
+            unit, units = ("m", "metres for a prismatic joint") if joint.type == "prismatic" else ("rad", "radians for a revolute joint")
             yield loaded.diagnostic(
                 "K005", f"group state '{state.name}' sets joint '{joint.name}' to {text}, outside its limits [{limit.lower:g}, {limit.upper:g}] {unit}",
-                joint_name.at, "give a value within the joint's limits (radians for a revolute joint)", attribute="value", subjects=(joint.name,),
+                joint_name.at, f"give a value within the joint's limits ({units})", attribute="value", subjects=(joint.name,),
             )
 
 

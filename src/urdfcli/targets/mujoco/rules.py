@@ -377,13 +377,13 @@ def mesh_missing(loaded, given):
             continue
         path = files.path(geometry.filename)
         if path is not None and not path.exists():
-            missing.append((name, geometry))
+            missing.append((name, geometry, path))
     if not missing:
         return
-    name, geometry = missing[0]  # one cause, one refusal: MuJoCo stops at the first file it cannot open
-    links = list(dict.fromkeys(link for link, _ in missing))
+    name, geometry, _ = missing[0]  # one cause, one refusal: MuJoCo stops at the first file it cannot open
+    links = list(dict.fromkeys(link for link, _, _ in missing))
     what = f"link '{name}'" if len(links) == 1 else f"{len(links)} links ({names(links)})"
-    more = len(missing) - 1
+    more = len({path for _, _, path in missing}) - 1  # files, not references: a servo's mesh serves five links
     files_said = f"mesh file '{geometry.filename}' does not exist" + (f" (nor {more} more file{'s' if more > 1 else ''})" if more else "")
     yield loaded.diagnostic(
         "C110", f"MuJoCo rejects {what}: {files_said}", geometry.at,

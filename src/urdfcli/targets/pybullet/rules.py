@@ -100,7 +100,7 @@ def recomputes_inertia(loaded, given):
         if body.moments is None:  # from a mesh's bounding box: changed, by how much the mesh says
             changed.append((body.top, moments, moments))
             continue
-        scale = max(abs(m) for m in (*moments, *body.moments)) or 1.0
+        scale = max(massprops.ZERO_FLOOR, *(abs(m) for m in (*moments, *body.moments)))  # a frame's 0 made 1e-16 is no change
         if max(abs(a - b) for a, b in zip(sorted(moments), sorted(body.moments))) > RECOMPUTED_APART * scale:
             changed.append((body.top, moments, body.moments))
     if not changed:
