@@ -617,6 +617,7 @@ def test_an_srdf_whose_own_urdf_needs_arguments_is_not_checked_against_another_p
     [k008] = document["files"][0]["diagnostics"]
     assert (done.returncode, k008["code"], k008["severity"]) == (0, "K008", "info"), k008
     assert "src/arm_ros1/arm_description/xacro/arm.urdf.xacro: it needs xacro argument 'namespace'" in k008["message"]
+    assert k008["hint"] == "give namespace:=VALUE after the SRDF (the arguments are the URDF's too), or in [tool.urdfcli.xacro-args]"
     assert document["files"][0]["checked_against"] is None
     done, document = check(srdf, "namespace:=dsr", cwd=tmp_path)
     assert done.returncode == 0 and found(document) == [], document

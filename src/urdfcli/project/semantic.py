@@ -192,8 +192,7 @@ def described(
         if isinstance(found, str) or not found.modelled or not found.robot.links:
             why = found if isinstance(found, str) else _why(found)
             missing = None if isinstance(found, str) else found.document.missing_argument
-            hint = (f"give {missing}:=VALUE after the SRDF (the arguments are the URDF's too), or in [tool.urdfcli.xacro-args]" if missing
-                    else "give --urdf the URDF or xacro model of the robot")
+            hint = _give_argument(missing) if missing else "give --urdf the URDF or xacro model of the robot"
             # asked for by name: a warning, the run fails (an info would pass with the SRDF unchecked)
             return _without(loaded, f"the URDF given with --urdf cannot be read: {why}", Severity.WARNING, hint)
         loaded.described = found
@@ -267,7 +266,14 @@ def _unread_hint(unread: list[Loaded | str]) -> str:
     all that stopped them (TALOS's calibration package), else name the arguments or the URDF."""
     if unread and all(not isinstance(found, str) and any(d.code == "X004" for d in found.diagnostics) for found in unread):
         return "build and source the workspace that has the package, or give its folder with -P NAME=DIR (package-paths in [tool.urdfcli])"
+    missing = {found.document.missing_argument for found in unread if not isinstance(found, str)}
+    if len(unread) == 1 and None not in missing:
+        return _give_argument(*missing)  # all it lacks is one argument: say which (doosan's m1013.urdf.xacro needs namespace:=)
     return "list its xacro arguments in [tool.urdfcli] models, or give --urdf FILE"
+
+
+def _give_argument(name: str) -> str:
+    return f"give {name}:=VALUE after the SRDF (the arguments are the URDF's too), or in [tool.urdfcli.xacro-args]"
 
 
 def _unknown(semantic: Semantic, model: Loaded) -> int:
