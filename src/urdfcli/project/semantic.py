@@ -30,9 +30,11 @@ checked against the one that lacks the fewest of the link and joint names it
 gives, the nearest first among equals: where several variants share a robot
 name (``solo.urdf`` and ``solo12.urdf``, both ``solo``), the one the SRDF was
 written for. When that one gives another robot name than the SRDF, a warning
-says so. A robot's URDF in the SRDF's package or in one it depends on that cannot be
-read (a xacro argument it needs) is not stood in for by one of another package, which
-the config does not load: the SRDF is left unchecked, and the note says why.
+says so. A URDF of the SRDF's package or of one it depends on comes before any other,
+however many names it lacks (a link renamed in the robot's model, which another package's
+robot of that name still has), and one that cannot be read (a xacro argument it needs)
+is not stood in for by another package's, which the config does not load: the SRDF is
+left unchecked, and the note says why.
 ``--urdf FILE`` names the URDF instead.
 """
 
@@ -242,7 +244,8 @@ def described(
                 break  # nothing later can fit better
         if len(fits) + len(failures) >= TRIES:
             break
-    best = min(fits, key=lambda fit: fit[:2], default=None)
+    own = [fit for fit in fits if fit[4]]  # the config loads its robot from its own package or a dependency, never another's
+    best = min(own or fits, key=lambda fit: fit[:2], default=None)
     nearer = [own for order, _, own in failures if best is not None and order < best[1]]  # the nearer URDFs that could not be read
     if nearer and (best[0] > 0 or (any(nearer) and not best[4])):
         # one that lacks some of the names is another variant's (UR's bare ur5.urdf for a cell's SRDF); one outside the
