@@ -144,6 +144,17 @@ def test_a_missing_file_of_this_machine_is_not_called_another_machines(robot, tm
         "a path of another machine: put the files in a ROS package and write package://PACKAGE/..."]
 
 
+def test_a_file_uri_with_a_slash_too_many_names_the_folder_as_the_system_reads_it(robot):
+    """file:///$(find my_robot)/... (Doosan's descriptions write it so) expands to
+    file:////home/...: resource_retriever opens //home/..., which is /home/...; the missing
+    file's folder is said so, not as //home/..."""
+    source = robot / "urdf" / "robot.urdf.xacro"
+    source.write_text('<robot name="r" xmlns:xacro="http://www.ros.org/wiki/xacro">\n'
+                      + link("arm", mesh("file:///$(find my_robot)/meshes/gone/arm.stl")) + "\n</robot>\n")
+    [error] = found(str(source), "D004", RuleSet.CHECK)
+    assert error.message.endswith(f": folder {robot.resolve()}/meshes/gone does not exist"), error.message
+
+
 # -- paths that work on one machine, or not in rviz ------------------------------------
 
 

@@ -593,6 +593,52 @@ def test_an_srdf_whose_own_urdf_needs_arguments_is_not_checked_against_another_v
     assert document["files"][0]["checked_against"] == "cell/cell_description/urdf/cell.urdf.xacro"
 
 
+def _two_generations(root, tip: str = "tip") -> str:
+    """A workspace holding two generations of one vendor's packages: arm_moveit_config depends on
+    arm_description, whose arm.urdf.xacro (its tool link ``tip``) needs namespace:=; arm_description2,
+    of another repository, gives robot 'arm' too, with the link and joint names the SRDF gives.
+    The SRDF's path."""
+    src = root / "src"
+    robot, config = robot_and_moveit_config(src / "arm_ros1", "arm_description", "xacro", "arm_moveit_config")
+    (robot / "xacro" / "arm.urdf.xacro").write_text(
+        '<robot name="arm" xmlns:xacro="http://www.ros.org/wiki/xacro">\n'
+        '  <gazebo><plugin name="control" filename="libcontrol.so"><robotNamespace>$(arg namespace)</robotNamespace></plugin></gazebo>\n'
+        + ARM.format(name="arm", tip=tip, joint="j").split(">", 1)[1])
+    (config / "config" / "arm.srdf").write_text('<robot name="arm">\n  <group name="arm"><chain base_link="base" tip_link="tip"/></group>\n</robot>\n')
+    other = src / "arm_ros2" / "arm_description2"
+    (other / "xacro").mkdir(parents=True)
+    (other / "package.xml").write_text('<package format="3"><name>arm_description2</name></package>\n')
+    (other / "xacro" / "arm.urdf.xacro").write_text(ARM.format(name="arm", tip="tip", joint="j"))
+    for repository in ("arm_ros1", "arm_ros2"):
+        (src / repository / ".git").mkdir()
+    return "src/arm_ros1/arm_moveit_config/config/arm.srdf"
+
+
+def test_an_srdf_whose_own_urdf_needs_arguments_is_not_checked_against_another_packages_robot_of_its_name(tmp_path):
+    """The config does not load arm_description2's robot: the SRDF is not checked against it, and
+    one K008 says its own URDF needs the argument. Given it, the SRDF is checked against its own URDF."""
+    srdf = _two_generations(tmp_path)
+    done, document = check(srdf, cwd=tmp_path)
+    [k008] = document["files"][0]["diagnostics"]
+    assert (done.returncode, k008["code"], k008["severity"]) == (0, "K008", "info"), k008
+    assert "src/arm_ros1/arm_description/xacro/arm.urdf.xacro: it needs xacro argument 'namespace'" in k008["message"]
+    assert k008["hint"] == "give namespace:=VALUE after the SRDF (the arguments are the URDF's too), or in [tool.urdfcli.xacro-args]"
+    assert document["files"][0]["checked_against"] is None
+    done, document = check(srdf, "namespace:=dsr", cwd=tmp_path)
+    assert done.returncode == 0 and found(document) == [], document
+    assert document["files"][0]["checked_against"] == "src/arm_ros1/arm_description/xacro/arm.urdf.xacro"
+
+
+def test_a_link_renamed_in_the_srdfs_own_urdf_is_found_although_another_packages_robot_still_has_it(tmp_path):
+    """The tool link of arm_description's model renamed: the SRDF's chain names a link its own URDF
+    lacks. arm_description2's robot of the same name still has it, and fits the SRDF better; it
+    is still not the URDF the config loads, so the K001 is said, not hidden."""
+    srdf = _two_generations(tmp_path, tip="tool")
+    done, document = check(srdf, "namespace:=dsr", cwd=tmp_path)
+    assert [d["code"] for d in document["files"][0]["diagnostics"]] == ["K001"], document
+    assert document["files"][0]["checked_against"] == "src/arm_ros1/arm_description/xacro/arm.urdf.xacro"
+
+
 def robot_and_moveit_config(root, robot: str, models: str, config: str, depends: bool = True):
     """A robot package (its models in ``models/``) and a MoveIt config package beside it under
     ``root`` (its SRDF in ``config/``), whose package.xml depends on the robot's unless not

@@ -30,7 +30,12 @@ checked against the one that lacks the fewest of the link and joint names it
 gives, the nearest first among equals: where several variants share a robot
 name (``solo.urdf`` and ``solo12.urdf``, both ``solo``), the one the SRDF was
 written for. When that one gives another robot name than the SRDF, a warning
-says so. ``--urdf FILE`` names the URDF instead.
+says so. A URDF of the SRDF's package or of one it depends on comes before any other,
+however many names it lacks (a link renamed in the robot's model, which another package's
+robot of that name still has), and one that cannot be read (a xacro argument it needs)
+is not stood in for by another package's, which the config does not load: the SRDF is
+left unchecked, and the note says why.
+``--urdf FILE`` names the URDF instead.
 """
 
 from __future__ import annotations
@@ -189,8 +194,7 @@ def described(
         if isinstance(found, str) or not found.modelled or not found.robot.links:
             why = found if isinstance(found, str) else _why(found)
             missing = None if isinstance(found, str) else found.document.missing_argument
-            hint = (f"give {missing}:=VALUE after the SRDF (the arguments are the URDF's too), or in [tool.urdfcli.xacro-args]" if missing
-                    else "give --urdf the URDF or xacro model of the robot")
+            hint = _give_argument(missing) if missing else "give --urdf the URDF or xacro model of the robot"
             # asked for by name: a warning, the run fails (an info would pass with the SRDF unchecked)
             return _without(loaded, f"the URDF given with --urdf cannot be read: {why}", Severity.WARNING, hint)
         loaded.described = found
@@ -202,7 +206,8 @@ def described(
     if name is None or document.file is None:
         return None
     srdf = document.file.resolve()
-    fits, failures, beside = [], [], False  # fits: (names the URDF lacks, order, path, model); failures: (order, why)
+    # fits: (names the URDF lacks, order, path, model, of the SRDF's package or a dependency); failures: (order, why, of those)
+    fits, failures, beside = [], [], False
     unread: list[Loaded | str] = []  # what each failure read
     named_by_config = setup_assistant(srdf, name, index)
     tried = None  # (file, arguments) of the URDF the .setup_assistant names, once read
@@ -214,7 +219,7 @@ def described(
         if not isinstance(found, str) and found.modelled and found.robot.links:
             loaded.described = found
             return None if found.robot.name == name else _named_otherwise(loaded, f"{path}, which its {SETUP_ASSISTANT} names,", found)
-        failures.append((-1, f"{path}, which its {SETUP_ASSISTANT} names: {found if isinstance(found, str) else _why(found)}"))
+        failures.append((-1, f"{path}, which its {SETUP_ASSISTANT} names: {found if isinstance(found, str) else _why(found)}", True))
         unread.append(found)
     for order, (file, depended) in enumerate(candidates(srdf, index, arguments_for)):
         arguments = arguments_for(file)
@@ -231,25 +236,29 @@ def described(
         found = load(path, arguments)
         if isinstance(found, str) or not found.modelled or (named and found.robot.name != name) or not found.robot.links:
             if not _library(found):
-                failures.append((order, f"{path}: {found if isinstance(found, str) else _why(found)}"))
+                failures.append((order, f"{path}: {found if isinstance(found, str) else _why(found)}", depended))
                 unread.append(found)
         else:
-            fits.append((_unknown(semantic, found), order, path, found))
+            fits.append((_unknown(semantic, found), order, path, found, depended))
             if fits[-1][0] == 0:
                 break  # nothing later can fit better
         if len(fits) + len(failures) >= TRIES:
             break
-    best = min(fits, key=lambda fit: fit[:2], default=None)
-    if best is not None and best[0] > 0 and any(order < best[1] for order, _ in failures):
-        best = None  # a nearer URDF of the robot could not be read: one that lacks some of the names is another variant's (UR's bare ur5.urdf for a cell's SRDF)
+    own = [fit for fit in fits if fit[4]]  # the config loads its robot from its own package or a dependency, never another's
+    best = min(own or fits, key=lambda fit: fit[:2], default=None)
+    nearer = [own for order, _, own in failures if best is not None and order < best[1]]  # the nearer URDFs that could not be read
+    if nearer and (best[0] > 0 or (any(nearer) and not best[4])):
+        # one that lacks some of the names is another variant's (UR's bare ur5.urdf for a cell's SRDF); one outside the
+        # config's packages is another package's robot of that name (doosan-robot2's m1013 for doosan-robot's config)
+        best = None
     if best is not None:
-        _, _, path, found = best
+        _, _, path, found, _ = best
         loaded.described = found
         if found.robot.name != name:
             return _named_otherwise(loaded, f"{path}, named as it is,", found)
         return None
     if failures:
-        return _without(loaded, f"the URDF of robot '{name}' could not be read ({'; '.join(why for _, why in failures)}): the SRDF's names are not checked",
+        return _without(loaded, f"the URDF of robot '{name}' could not be read ({'; '.join(why for _, why, _ in failures)}): the SRDF's names are not checked",
                         hint=_unread_hint(unread))
     return _without(loaded, f"no URDF of robot '{name}' found in the SRDF's package or workspace: its names are not checked",
                     hint="give the URDF with --urdf FILE")
@@ -260,7 +269,14 @@ def _unread_hint(unread: list[Loaded | str]) -> str:
     all that stopped them (TALOS's calibration package), else name the arguments or the URDF."""
     if unread and all(not isinstance(found, str) and any(d.code == "X004" for d in found.diagnostics) for found in unread):
         return "build and source the workspace that has the package, or give its folder with -P NAME=DIR (package-paths in [tool.urdfcli])"
+    missing = {found.document.missing_argument for found in unread if not isinstance(found, str)}
+    if len(unread) == 1 and None not in missing:
+        return _give_argument(*missing)  # all it lacks is one argument: say which (doosan's m1013.urdf.xacro needs namespace:=)
     return "list its xacro arguments in [tool.urdfcli] models, or give --urdf FILE"
+
+
+def _give_argument(name: str) -> str:
+    return f"give {name}:=VALUE after the SRDF (the arguments are the URDF's too), or in [tool.urdfcli.xacro-args]"
 
 
 def _unknown(semantic: Semantic, model: Loaded) -> int:

@@ -582,7 +582,8 @@ class PackageResolver:
             path = folder / unquote(parsed.path.lstrip("/"))
             return path if path.exists() else Path(self.source_of(str(path)))  # (before a build: where its install rules take it from)
         if parsed.scheme == "file":
-            return Path(unquote(parsed.path))
+            # file:///$(find pkg)/... expands to file:////opt/...: a system reads //opt as /opt, pathlib keeps both slashes
+            return Path("/" + unquote(parsed.path).lstrip("/"))
         if parsed.scheme == "" or len(parsed.scheme) == 1:  # plain or Windows-style path
             path = Path(uri)
             return path if path.is_absolute() or base_dir is None else base_dir / path
