@@ -86,6 +86,21 @@ def test_header_naming_the_generating_machines_path_and_reformatted_urdf_is_no_d
     assert x110(lint_file("kr16_2.urdf")) == []
 
 
+
+@pytest.mark.parametrize("written, drifted", [("1.5708", False), ("1.570796", False), ("1.57", True)])
+def test_a_rotation_rounded_by_hand_is_no_drift_and_one_rounded_coarsely_is(tmp_path, monkeypatch, written, drifted):
+    """ROS-Industrial's motoman sia20d.urdf writes the tool0 turn its macro computes as 3.1415926535 as
+    3.1416 (7 microradians, 0.0004 degrees): the same robot. 1.57 for pi/2 is 0.046 degrees off: a change."""
+    package = kuka_package(tmp_path, generated_with_flange=True)
+    urdf = package / "urdf" / "kr16_2.urdf"
+    urdf.write_text(urdf.read_text().replace('rpy="0 1.5707963267948966 0"', f'rpy="0 {written} 0"'))
+    assert written in urdf.read_text()
+    monkeypatch.chdir(package / "urdf")
+    found = x110(lint_file("kr16_2.urdf"))
+    assert bool(found) == drifted
+    if drifted:
+        assert found[0].message.endswith(f"origin rpy: 0 {written} 0 here, 0 1.5708 0 in kr16_2.xacro)")
+
 def test_source_is_found_in_the_package_when_not_beside_the_urdf(tmp_path, monkeypatch):
     package = kuka_package(tmp_path)
     (package / "robots").mkdir()

@@ -34,7 +34,7 @@ from .project import drift as drift_
 from .project import fixing, linter
 from .project.compatibility import verdicts
 from .project.config import Config, ConfigError
-from .project.semantic import described, describing
+from .project.semantic import described, describing, unknown_names
 from .project.workspace import LIBRARY_SUFFIXES, Aside, Entry, Models, Target, asked, assemble, fragment_includers, model_targets, models_below, plan, search_roots, unchecked_library, unread, xacro_sources
 from .read.document import STDIN, Document, InputError, read_document
 from .read.files import STDIN_NAME
@@ -317,7 +317,22 @@ def _described(loaded: Loaded, session: Session, given: dict[str, str]) -> Diagn
     ``given``: the SRDF's argument set of ``[tool.urdfcli] models``, the URDF's too (a 6-dof arm's SRDF: dof:=6);
     under the URDF's own configuration, the defaults of the SRDF's own arguments (see :func:`_own_defaults`)."""
     own = _own_defaults(loaded, session)
-    return described(loaded, session.index, session.options.urdf, lambda file: {**own, **model_arguments(str(file), session), **given}, partial(_load_urdf, session))
+    found = described(loaded, session.index, session.options.urdf, lambda file: {**own, **model_arguments(str(file), session), **given}, partial(_load_urdf, session))
+    urdf = loaded.described
+    if urdf is not None and urdf.modelled and unknown_names(loaded.semantic, urdf):
+        loaded.described_source = _generating(urdf, session)
+    return found
+
+
+def _generating(urdf: Loaded, session: Session) -> Loaded | None:
+    """The expansion of the xacro file that generated ``urdf`` (a URDF whose header says xacro
+    wrote it, or with a xacro file of its name beside it), or None."""
+    file = urdf.document.file
+    source = drift_.generated_from(file, session) if file is not None and not urdf.document.is_xacro else None
+    if source is None:
+        return None
+    found = drift_.expand_source(source.file, configured(session)(urdf.path), session)
+    return None if isinstance(found, str) else found
 
 
 def _own_defaults(loaded: Loaded, session: Session) -> dict[str, str]:

@@ -56,6 +56,8 @@ class Loaded:
         self.xacro_sources = sources  # the xacro files behind it, for the source rules
         self.semantic: Semantic | None = None  # an SRDF: what it says (then there is no robot)
         self.described: Loaded | None = None  # an SRDF: the URDF of its robot, to check it against (set by the caller)
+        # an SRDF whose URDF lacks names it gives: the expansion of the xacro file that generated that URDF (set by the caller)
+        self.described_source: Loaded | None = None
 
     @property
     def path(self) -> str:

@@ -45,6 +45,11 @@ class GeneratedFrom(NamedTuple):
     header: str | None  # the PATH its header names; None when found by its name beside the URDF
 
 
+DRIFT_TOLERANCE = 1e-5
+"""Relative tolerance (radians for a rotation) of X110: a value xacro wrote, then rounded to six significant
+digits, or pi written ``3.1416`` (7 microradians off), still describes the same robot."""
+
+
 def find_source(
     urdf: Path, head: bytes, package: Callable[[], Path | None], files_below: Callable[[Path], list[Path]],
     real_path: Callable[[Path], Path] = Path.resolve,
@@ -176,7 +181,7 @@ def drift(loaded: Loaded, config: Config, session: Session, asked: bool = False)
         return [_diagnostic(loaded, f"{_name(loaded)} {said}, which was not compared: {found}", None, uncompared)]
     from ..model.compare import compare  # (only where a URDF's source is found)
 
-    comparison = compare(loaded, found)
+    comparison = compare(loaded, found, DRIFT_TOLERANCE)
     if comparison.same:
         return []
     arguments = _explaining_arguments(comparison.changes, found, session)

@@ -200,7 +200,7 @@ def described(
         loaded.described = found
         if found.robot.name != name:
             # the user named this URDF: its robot's, unless the SRDF's names do not fit it (then K001/K002 say which)
-            other = None if _unknown(semantic, found) == 0 else f"give --urdf the URDF of robot '{name}'"
+            other = None if unknown_names(semantic, found) == 0 else f"give --urdf the URDF of robot '{name}'"
             return _named_otherwise(loaded, urdf, found, other)
         return None
     if name is None or document.file is None:
@@ -239,7 +239,7 @@ def described(
                 failures.append((order, f"{path}: {found if isinstance(found, str) else _why(found)}", depended))
                 unread.append(found)
         else:
-            fits.append((_unknown(semantic, found), order, path, found, depended))
+            fits.append((unknown_names(semantic, found), order, path, found, depended))
             if fits[-1][0] == 0:
                 break  # nothing later can fit better
         if len(fits) + len(failures) >= TRIES:
@@ -279,7 +279,7 @@ def _give_argument(name: str) -> str:
     return f"give {name}:=VALUE after the SRDF (the arguments are the URDF's too), or in [tool.urdfcli.xacro-args]"
 
 
-def _unknown(semantic: Semantic, model: Loaded) -> int:
+def unknown_names(semantic: Semantic, model: Loaded) -> int:
     """How many of the link and joint names an SRDF gives a model lacks: the fewer, the better it fits."""
     links = {named.name for _, named in semantic.named_links()} | {named.name for pair in semantic.disabled for named in pair}
     links -= set(model.robot.links)
@@ -319,4 +319,4 @@ def _without(loaded: Loaded, message: str, severity: Severity | None = None, hin
     return diagnostic._replace(severity=severity) if severity is not None else diagnostic
 
 
-__all__ = ["candidates", "described", "describing", "robot_name"]
+__all__ = ["candidates", "described", "describing", "robot_name", "unknown_names"]

@@ -123,6 +123,26 @@ def _one_prefix(loaded: Loaded, found: list[Diagnostic], kind: str, known, given
     return [first._replace(message=message, hint=hint, severity=severity, subjects=tuple(missing))]
 
 
+def _stale(loaded: Loaded, found: list[Diagnostic], kind: str, made) -> list[Diagnostic]:
+    """One diagnostic for all of ``found`` (one for each name the URDF lacks) when the xacro file that
+    generated the URDF makes every one of them (``made(robot)``: its names of ``kind``), else none: the
+    URDF is older than its source (motoman_bmda3_support's bmda3.urdf, generated before its joints were
+    renamed, against the SRDF of the renamed robot), and the way out is to generate it again, not to
+    rename the SRDF's names."""
+    source = loaded.described_source
+    missing = [d.subjects[0] for d in found]
+    if not found or source is None or any(name not in made(source.robot) for name in missing):
+        return []
+    first, urdf = found[0], loaded.described.path
+    makes = f"{source.path}, which generated it, makes {'them' if len(missing) > 1 else 'it'}"
+    hint = f"{urdf} is older than its source ({makes}): generate it again (urdfcli expand {source.path} -o {urdf})"
+    if len(found) == 1:
+        return [first._replace(hint=hint)]
+    severity = None if any(d.severity is None for d in found) else first.severity  # the rule's, unless every one is a collision pair's
+    message = f"the SRDF names {len(missing)} {kind}s that {urdf} lacks: {names(missing)}"
+    return [first._replace(message=message, hint=hint, severity=severity, subjects=tuple(missing))]
+
+
 def _prefix(missing: list[str], known) -> tuple[str, str] | None:
     """The one prefix of ``missing`` (``old``, maybe empty) that, replaced by ``new`` (maybe
     empty), makes each name one of ``known``, as (old, new); None for fewer than two names,
@@ -159,7 +179,9 @@ def _word_end(prefix: str) -> bool:
         a typo leaves the two links meant checked). When one prefix, added to
         each name the URDF lacks, taken from each or put in place of another,
         makes them all its names, one finding names them: the SRDF was written
-        for the robot built with another prefix.
+        for the robot built with another prefix. When the URDF is one xacro
+        generated and the xacro file makes every link it lacks, the hint is to
+        generate it again (one finding for several).
         """,
         """
         MoveIt's SRDF reader logs the unknown name and drops what holds it: the
@@ -182,7 +204,8 @@ def unknown_link(loaded: Loaded, given: Given) -> Iterator[Diagnostic]:
     named = loaded.semantic.named_links()
     given = {name.name for _, name in named} | {link.name for link, _ in pairs}
     colliding = [name for name, link in links.items() if link.collisions]
-    yield from _one_prefix(loaded, list(_missing_once(loaded, "K001", "link", named, links, pairs, colliding)), "link", links, given)
+    found = list(_missing_once(loaded, "K001", "link", named, links, pairs, colliding))
+    yield from _stale(loaded, found, "link", lambda robot: robot.links) or _one_prefix(loaded, found, "link", links, given)
 
 
 @check(
@@ -197,7 +220,9 @@ def unknown_link(loaded: Loaded, given: Given) -> Iterator[Diagnostic]:
         virtual joint). Each missing joint is said once, where it is first named,
         with how many more elements name it. When one prefix, added to each name
         the URDF lacks, taken from each or put in place of another, makes them
-        all its names, one finding names them.
+        all its names, one finding names them. When the URDF is one xacro
+        generated and the xacro file makes every joint it lacks, the hint is to
+        generate it again (one finding for several).
         """,
         """
         MoveIt logs the unknown joint and leaves it out: the group lacks a degree
@@ -215,7 +240,8 @@ def unknown_joint(loaded: Loaded, given: Given) -> Iterator[Diagnostic]:
     joints = set(robot.joints) | loaded.semantic.own_joints
     named = loaded.semantic.named_joints()
     given = {name.name for _, name in named}
-    yield from _one_prefix(loaded, list(_missing_once(loaded, "K002", "joint", named, joints)), "joint", joints, given)
+    found = list(_missing_once(loaded, "K002", "joint", named, joints))
+    yield from _stale(loaded, found, "joint", lambda robot: set(robot.joints) | loaded.semantic.own_joints) or _one_prefix(loaded, found, "joint", joints, given)
 
 
 @check(
