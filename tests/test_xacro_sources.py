@@ -399,6 +399,24 @@ def test_an_unused_parameter_and_a_block_never_inserted_are_warnings_where_param
     assert warnings[1].hint.startswith('insert it with <xacro:insert_block name="origin"/>')
 
 
+def test_a_parameter_written_without_its_dollar_is_found_where_it_is_written(tmp_path):
+    # linorobot2's skid_steer controller: <torque>{wheel_torque}</torque> gives the plugin the text, not the torque
+    model = write(tmp_path / "robot.urdf.xacro", robot("""
+        <xacro:macro name="drive" params="wheel_radius wheel_torque">
+          <!-- {wheel_torque} in a comment is no use -->
+          <gazebo><plugin name="skid" filename="libgazebo_ros_skid_steer_drive.so">
+            <wheelDiameter>${wheel_radius * 2}</wheelDiameter><torque>{wheel_torque}</torque>
+          </plugin></gazebo>
+        </xacro:macro>
+        <link name="base_link"/>
+        <xacro:drive wheel_radius="0.033" wheel_torque="20"/>
+        """))
+    assert "<torque>{wheel_torque}</torque>" in xacro.process_file(str(model)).toxml()  # xacro copies it as written
+    (warning,) = diagnostics(model, "X103")
+    assert (warning.line, warning.column) == column_of(model, "{wheel_torque}", "<torque>")
+    assert "'{wheel_torque}', without its $" in warning.message and warning.hint == "write ${wheel_torque}"
+
+
 def test_a_yaml_file_the_model_loads_hides_no_name_from_the_source_rules(tmp_path):
     # a ros2_control macro fed by initial_positions.yaml, as MoveIt's setup assistant writes it:
     # xacro lists the YAML with its includes, and it defines and uses no xacro name

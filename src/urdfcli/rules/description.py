@@ -16,7 +16,7 @@ from ..read.packages import cmake_project, uri_package
 from .base import ERROR, INFO, PLACED, SAFE, WARNING, Kind, RuleSet, check
 from .meshes import others_there, package_uri, written_with_find
 from .suggestions import close_matches
-from .xacro import unprefixed_calls
+from .xacro import UNEXPANDED, unprefixed_calls
 
 ABSOLUTE = ("file", "absolute")  # the uri_style of a path of one machine
 
@@ -36,13 +36,10 @@ def _suggestion(word: str, known) -> str | None:
     return close[0] if close else None
 
 
-_UNEXPANDED = re.compile(r"(?<!\$)\{(\w+)\}")  # {name}: a xacro expression that lost its $
-
-
 def _name_hint(word: str, known) -> str | None:
     """The hint of a name that is no link or joint: a ``{name}`` that xacro never read (its
     ``$`` missing, so every call wrote the same text), else the name it is closest to."""
-    unexpanded = _UNEXPANDED.search(word)
+    unexpanded = UNEXPANDED.search(word)
     if unexpanded is not None:
         return f"'{unexpanded.group(0)}' lacks its $: xacro copies it as written; write '${unexpanded.group(0)}'"
     close = _suggestion(word, known)

@@ -147,6 +147,8 @@ def parameter_unused(loaded, given) -> Iterator[Diagnostic]:
     Flags a parameter of a `<xacro:macro>` that its body (nested macros
     included) never reads as `${NAME}`, and a block parameter (`*NAME`,
     `**NAME`) it never inserts with `<xacro:insert_block name="NAME"/>`.
+    A parameter written `{NAME}`, without its `$` (`<torque>{wheel_torque}</torque>`),
+    is reported where it is written: xacro copies that text as it is.
     xacro evaluates a macro's body in its caller's scope, so a parameter also
     counts as used when a macro body anywhere in the workspace reads that name
     without defining it, or forwards it (`NAME:=^`). A body that includes a
@@ -218,10 +220,30 @@ def parameter_unused(loaded, given) -> Iterator[Diagnostic]:
                 if parameter.block:
                     message = f"block parameter '*{name}' of macro '{definition.name}' is never inserted: the block each call gives is dropped"
                     hint = f'insert it with <xacro:insert_block name="{name}"/>, or remove *{name} from params'
+                elif (lost := _without_dollar(file, macro, name)) is not None:
+                    written = f"{{{name}}}"
+                    message = (
+                        f"parameter '{name}' of macro '{definition.name}' is written '{written}', without its $: "
+                        "xacro copies it as text, and the value each call gives changes nothing"
+                    )
+                    yield Diagnostic("X103", message, Location(file.name, *file.source.position(lost)), hint=f"write ${written}")
+                    continue
                 else:
                     message = f"parameter '{name}' of macro '{definition.name}' is never used in its body: the value each call gives changes nothing"
                     hint = f"use it as ${{{name}}}, or remove it from params"
                 yield _diagnostic("X103", message, file, parameter_place(file, macro, name), hint)
+
+
+_COMMENT = re.compile(r"<!--.*?-->", re.DOTALL)
+UNEXPANDED = re.compile(r"(?<!\$)\{(\w+)\}")  # {name}: a xacro expression that lost its $
+
+
+def _without_dollar(file: XacroFile, macro: int, name: str) -> int | None:
+    """The offset of ``{name}`` written in the macro's body without its ``$`` (outside
+    comments): ``<torque>{wheel_torque}</torque>`` meant the parameter, and reads none."""
+    _, body, end = file.source.spans[file.macros[macro].place.element]
+    text = _COMMENT.sub(lambda comment: " " * len(comment.group(0)), file.text[body:end])
+    return next((body + found.start() for found in UNEXPANDED.finditer(text) if found.group(1) == name), None)
 
 
 def _unprefixed_blocks(file: XacroFile) -> set[tuple[int, str]]:
