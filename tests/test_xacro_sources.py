@@ -314,7 +314,7 @@ def test_a_property_used_nowhere_is_info_and_one_used_anywhere_is_not(tmp_path):
     assert info.severity.value == "info" and "'wheel_width'" in info.message and info.line == line_of(model, "wheel_width")
 
 
-def test_a_property_written_without_its_dollar_is_a_warning_that_says_where(tmp_path):
+def test_a_property_written_without_its_dollar_is_a_warning_where_it_is_written(tmp_path):
     # Stretch's joints write spring_stiffness="{joint_spring_stiffness}": the URDF gets the braces,
     # and "used nowhere, or remove it" sent the reader to delete the property instead of the typo
     model = write(tmp_path / "robot.urdf.xacro", robot("""
@@ -333,13 +333,12 @@ def test_a_property_written_without_its_dollar_is_a_warning_that_says_where(tmp_
         <xacro:arm prefix="left" reach="1"/>
         """))
     warning, info = sorted(diagnostics(model, "X102"), key=lambda d: d.severity.value, reverse=True)
-    assert info.severity.value == "info" and "'old_damping'" in info.message and "lacks" not in info.message
-    assert warning.severity.value == "warning" and warning.line == line_of(model, '"stiffness" value')
-    assert f"'{{stiffness}}' at line {line_of(model, 'spring_stiffness')} lacks its $" in warning.message
+    assert info.severity.value == "info" and "'old_damping'" in info.message and "without its $" not in info.message
+    assert warning.severity.value == "warning" and (warning.line, warning.column) == column_of(model, "{stiffness}", "spring_stiffness")
+    assert warning.message == "property 'stiffness' is written '{stiffness}', without its $: xacro copies it as text, and the value never reaches the robot"
     assert warning.hint == "write ${stiffness}"
     [parameter] = diagnostics(model, "X103")
-    reach_line = line_of(model, 'reach="{reach}"')
-    assert f"'{{reach}}' at line {reach_line} lacks its $" in parameter.message
+    assert (parameter.line, parameter.column) == column_of(model, "{reach}", "reach=") and "'{reach}', without its $" in parameter.message
 
 
 def test_a_library_property_another_model_of_the_workspace_uses_is_clean(tmp_path):
@@ -425,6 +424,24 @@ def test_an_unused_parameter_and_a_block_never_inserted_are_warnings_where_param
     assert [(d.line, d.column) for d in warnings] == [column_of(model, "xyz", "params="), column_of(model, "*origin", "params=")]
     assert "parameter 'xyz' of macro 'wheel'" in warnings[0].message and "*origin" in warnings[1].message
     assert warnings[1].hint.startswith('insert it with <xacro:insert_block name="origin"/>')
+
+
+def test_a_parameter_written_without_its_dollar_is_found_where_it_is_written(tmp_path):
+    # linorobot2's skid_steer controller: <torque>{wheel_torque}</torque> gives the plugin the text, not the torque
+    model = write(tmp_path / "robot.urdf.xacro", robot("""
+        <xacro:macro name="drive" params="wheel_radius wheel_torque">
+          <!-- {wheel_torque} in a comment is no use -->
+          <gazebo><plugin name="skid" filename="libgazebo_ros_skid_steer_drive.so">
+            <wheelDiameter>${wheel_radius * 2}</wheelDiameter><torque>{wheel_torque}</torque>
+          </plugin></gazebo>
+        </xacro:macro>
+        <link name="base_link"/>
+        <xacro:drive wheel_radius="0.033" wheel_torque="20"/>
+        """))
+    assert "<torque>{wheel_torque}</torque>" in xacro.process_file(str(model)).toxml()  # xacro copies it as written
+    (warning,) = diagnostics(model, "X103")
+    assert (warning.line, warning.column) == column_of(model, "{wheel_torque}", "<torque>")
+    assert "'{wheel_torque}', without its $" in warning.message and warning.hint == "write ${wheel_torque}"
 
 
 def test_a_yaml_file_the_model_loads_hides_no_name_from_the_source_rules(tmp_path):

@@ -35,18 +35,23 @@ def _diagnostic(code: str, message: str, file: XacroFile, place: Place, hint: st
 
 
 UNEXPANDED = re.compile(r"(?<!\$)\{(\w+)\}")  # {name}: a xacro expression that lost its $
+_COMMENT = re.compile(r"<!--.*?-->", re.DOTALL)
 
 
-def _dollarless(file: XacroFile, name: str, start: int = 0, end: int | None = None) -> str | None:
-    """Where ``{name}`` is written without its ``$`` between ``start`` and ``end`` of
-    ``file``, outside comments: the reason the name reads as unused, said in words."""
-    text = file.text
-    for found in UNEXPANDED.finditer(text, start, len(text) if end is None else end):
-        at = found.start()
-        if found.group(1) == name and text.rfind("<!--", 0, at) <= text.rfind("-->", 0, at):
-            line, _ = file.source.position(at)
-            return f"'{{{name}}}' at line {line} lacks its $, so xacro writes it as it stands"
-    return None
+def _without_dollar(file: XacroFile, name: str, start: int = 0, end: int | None = None) -> int | None:
+    """The offset of ``{name}`` written without its ``$`` between ``start`` and ``end`` of
+    ``file``, outside comments (``<torque>{wheel_torque}</torque>``): the name meant, which
+    reads nothing, since xacro copies the text as it is."""
+    text = _COMMENT.sub(lambda comment: " " * len(comment.group(0)), file.text[start:end])
+    return next((start + found.start() for found in UNEXPANDED.finditer(text) if found.group(1) == name), None)
+
+
+def _written_without_dollar(code: str, what: str, name: str, file: XacroFile, at: int) -> Diagnostic:
+    """X102 or X103 where ``{name}`` is written without its ``$``: a typo to mend there, not a leftover to remove."""
+    return Diagnostic(
+        code, f"{what} is written '{{{name}}}', without its $: xacro copies it as text, and the value never reaches the robot",
+        Location(file.name, *file.source.position(at)), hint=f"write ${{{name}}}", severity=WARNING,
+    )
 
 
 def _used(sources: XacroSources, test) -> bool:
@@ -108,9 +113,9 @@ def property_unused(loaded, given) -> Iterator[Diagnostic]:
     workspace around it. A `${width}` in a macro body whose parameter or own
     property is named `width` reads that, not a document's property. Info: a
     library's property may serve a package outside the workspace.
-    Where the file writes `{NAME}` without its `$` (outside comments), the
-    finding is a warning that names that line: the value never reaches the
-    robot, and the braces do.
+    A property written `{NAME}`, without its `$` (outside comments), is a
+    warning where it is written: the value never reaches the robot, and the
+    braces do.
 
     ## Why is this bad?
     A property nobody reads is a value that looks like it sets something and
@@ -145,9 +150,9 @@ def property_unused(loaded, given) -> Iterator[Diagnostic]:
             document_wide = definition.macro is None or definition.scope in ("global", "parent")
             if _used(sources, lambda f: name in (f.unbound if document_wide else f.names) or name in f.blocks or name in f.forwarded):
                 continue
-            dollarless = _dollarless(file, name)
-            if dollarless:  # a typo, not a leftover: the value it should give is missing from the robot
-                yield _diagnostic("X102", f"property '{name}' is used nowhere: {dollarless}", file, definition.place, f"write ${{{name}}}", severity=WARNING)
+            lost = _without_dollar(file, name)
+            if lost is not None:
+                yield _written_without_dollar("X102", f"property '{name}'", name, file, lost)
                 continue
             yield _diagnostic("X102", f"property '{name}' is used nowhere", file, definition.place, f"use it as ${{{name}}}, or remove it")
 
@@ -169,6 +174,8 @@ def parameter_unused(loaded, given) -> Iterator[Diagnostic]:
     Flags a parameter of a `<xacro:macro>` that its body (nested macros
     included) never reads as `${NAME}`, and a block parameter (`*NAME`,
     `**NAME`) it never inserts with `<xacro:insert_block name="NAME"/>`.
+    A parameter written `{NAME}`, without its `$` (`<torque>{wheel_torque}</torque>`),
+    is reported where it is written: xacro copies that text as it is.
     xacro evaluates a macro's body in its caller's scope, so a parameter also
     counts as used when a macro body anywhere in the workspace reads that name
     without defining it, or forwards it (`NAME:=^`). A body that includes a
@@ -240,9 +247,9 @@ def parameter_unused(loaded, given) -> Iterator[Diagnostic]:
                 if parameter.block:
                     message = f"block parameter '*{name}' of macro '{definition.name}' is never inserted: the block each call gives is dropped"
                     hint = f'insert it with <xacro:insert_block name="{name}"/>, or remove *{name} from params'
-                elif dollarless := _dollarless(file, name, *file.source.spans[definition.place.element][1:]):
-                    message = f"parameter '{name}' of macro '{definition.name}' is never used in its body: {dollarless}"
-                    hint = f"write ${{{name}}}"
+                elif (lost := _without_dollar(file, name, *file.source.spans[definition.place.element][1:])) is not None:
+                    yield _written_without_dollar("X103", f"parameter '{name}' of macro '{definition.name}'", name, file, lost)
+                    continue
                 else:
                     message = f"parameter '{name}' of macro '{definition.name}' is never used in its body: the value each call gives changes nothing"
                     hint = f"use it as ${{{name}}}, or remove it from params"
