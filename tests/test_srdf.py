@@ -696,6 +696,26 @@ def test_a_moveit_1_setup_assistant_file_with_its_keys_in_capitals_names_the_urd
     assert ".setup_assistant" in checked["diagnostics"][0]["message"] and "'link_cylinder'" in checked["diagnostics"][1]["message"]
 
 
+def test_a_setup_assistant_urdf_without_a_robot_name_is_said_to_have_none(tmp_path):
+    """open_manipulator_p_with_gripper_moveit's .setup_assistant names
+    open_manipulator_p_with_gripper.urdf.xacro, the part that ..._robot.urdf.xacro includes:
+    its <robot> has no name. K008 said it "describes robot 'None'" and offered
+    <robot name="None">; it says the file gives its robot no name."""
+    robot, config = robot_and_moveit_config(tmp_path / "src", "arm_description", "urdf", "arm_moveit_config")
+    (robot / "urdf" / "arm.urdf.xacro").write_text(
+        '<robot xmlns:xacro="http://www.ros.org/wiki/xacro">\n  <link name="link1"/><link name="link2"/>\n'
+        '  <joint name="joint1" type="continuous"><parent link="link1"/><child link="link2"/></joint>\n</robot>\n')
+    (config / ".setup_assistant").write_text(
+        "moveit_setup_assistant_config:\n  URDF:\n    package: arm_description\n    relative_path: urdf/arm.urdf.xacro\n"
+        "  SRDF:\n    relative_path: config/arm.srdf\n")
+    (config / "config" / "arm.srdf").write_text('<robot name="arm">\n  <group name="arm"><joint name="joint1"/></group>\n</robot>\n')
+    done, document = check("src/arm_moveit_config/config/arm.srdf", cwd=tmp_path)
+    said = [(d["code"], d["message"], d.get("hint")) for d in document["files"][0]["diagnostics"]]
+    assert said == [("K008", "the SRDF is for robot 'arm', but src/arm_description/urdf/arm.urdf.xacro, which its .setup_assistant names, "
+                             "gives its <robot> no name: checked against it",
+                     "check it against the model that includes this file, with --urdf FILE: MoveIt's URDF reader refuses a <robot> without a name")], document
+
+
 def test_the_argument_set_models_lists_for_an_srdf_is_its_urdfs_too(tmp_path):
     """ros_kortex: one gen3.xacro makes the 6- and 7-dof arms (dof defaults to 7), and the 6-dof
     MoveIt config's SRDF names the 6-dof arm's links. Checked against the default, its names

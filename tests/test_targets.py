@@ -228,6 +228,8 @@ def pybullet_changes(robot, built: dict, from_file: bool) -> set[str]:
             changed.add(urdf.name)
         if urdf.type in ("revolute", "prismatic") and joint["lower"] > joint["upper"]:  # Bullet's "no limit"
             changed.add(urdf.name)
+        if urdf.mimic is not None and joint["type"] != 4 and not built["constraints"]:  # nothing couples it to the joint it mimics
+            changed.add(urdf.name)
     return changed
 
 

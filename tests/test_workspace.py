@@ -1080,6 +1080,31 @@ def test_a_model_run_with_two_argument_sets_shows_what_both_find_in_its_own_file
     assert found == [("P001", 3)], report
 
 
+def test_a_package_that_depends_on_the_model_s_package_is_not_offered_as_its_dependency(tmp_path):
+    """open_manipulator_description's <gazebo> block names $(find open_manipulator_bringup)'s
+    controller config, and open_manipulator_bringup depends on open_manipulator_description:
+    the <exec_depend> P001 offered would make a cycle colcon refuses to order. It says the
+    dependency cannot be declared, and offers no fix."""
+    write(tmp_path / "arm_bringup" / "package.xml", package_xml("arm_bringup", ("arm_description",)))
+    write(tmp_path / "arm_bringup" / "config" / "controllers.yaml", "{}\n")
+    write(tmp_path / "arm_description" / "package.xml", package_xml("arm_description"))
+    write(tmp_path / "arm_description" / "urdf" / "arm.urdf.xacro", f"""\
+        <robot name="arm" {XACRO}>
+          <link name="base_link"/>
+          <gazebo><plugin filename="gz_ros2_control-system" name="gz_ros2_control::GazeboSimROS2ControlPlugin">
+            <parameters>$(find arm_bringup)/config/controllers.yaml</parameters>
+          </plugin></gazebo>
+        </robot>
+        """)
+    done = run_cli("lint", "--format", "json", "arm_description/urdf/arm.urdf.xacro", cwd=tmp_path)
+    found = [d for f in json.loads(done.stdout)["files"] for d in f["diagnostics"] if d["code"] == "P001"]
+    assert [(d["line"], d["message"]) for d in found] == [
+        (4, "package 'arm_bringup' is used here but arm_description's package.xml cannot declare it: arm_bringup depends on arm_description")]
+    assert found[0].get("fix") is None
+    run_cli("lint", "--fix", "arm_description/urdf/arm.urdf.xacro", cwd=tmp_path)
+    assert (tmp_path / "arm_description" / "package.xml").read_text() == package_xml("arm_description")
+
+
 def test_a_model_broken_by_a_library_mistake_shown_under_another_model_is_not_ok(tmp_path):
     """ROS-Industrial's sda10f and its test model share a macro whose mesh is missing: the
     batch shows the error once, under the first model, and the other's JSON said ok, though

@@ -308,6 +308,9 @@ def _named_otherwise(loaded: Loaded, urdf: str, found: Loaded, other: str | None
     since srdfdom's Model::initXml logs an error when the names differ (and loads the SRDF all the same).
     ``other``: the way out when the SRDF may be another robot's."""
     name, urdf_name = loaded.semantic.name, found.robot.name
+    if urdf_name is None:  # a part another file includes (urdfdom refuses a robot without a name)
+        return _without(loaded, f"the SRDF is for robot '{name}', but {urdf} gives its <robot> no name: checked against it", Severity.WARNING,
+                        "check it against the model that includes this file, with --urdf FILE: MoveIt's URDF reader refuses a <robot> without a name")
     write = f"write <robot name=\"{urdf_name}\"> in the SRDF"
     hint = (f"{write}: MoveIt's SRDF reader logs an error when the names differ" if other is None
             else f"if the SRDF is for robot '{urdf_name}', {write} (MoveIt's SRDF reader logs an error when the names differ); else {other}")

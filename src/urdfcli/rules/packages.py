@@ -92,7 +92,9 @@ def dependency_undeclared(loaded, given) -> Iterator[Diagnostic]:
     instead of its `<name>` (D005 says which to write), or a name that no package
     has whose path names a file of the file's own package (a package renamed,
     its files still naming the old name): declaring a dependency on it would only
-    make rosdep fail on a key nobody provides.
+    make rosdep fail on a key nobody provides. A package that itself depends on the
+    file's package (a bringup package whose config a description's `<gazebo>` block
+    names) cannot be declared: the message says so, and no line is offered.
 
     ## Why is this bad?
     It works where the package happens to be installed, and breaks in a fresh
@@ -141,6 +143,15 @@ def dependency_undeclared(loaded, given) -> Iterator[Diagnostic]:
             continue  # its own, by another name (X004 or D005 says it is not found): a dependency on that name would only make rosdep fail
         more = f" (and {others} more use{'s' if others > 1 else ''} in this file)" if others else ""
         name = shown(owner / "package.xml")
+        used = index.manifest(folder / "package.xml") if folder is not None else None
+        if used is not None and manifest.name in used.dependencies:
+            yield Diagnostic(
+                "P001",
+                f"package '{package}' is used here{more} but {manifest.name}'s package.xml cannot declare it: {package} depends on {manifest.name}",
+                where(),
+                hint=f"declaring it would make a dependency cycle, which colcon refuses to order: move what is used into {manifest.name}, or let {package} pass it in as a xacro argument",
+            )
+            continue
         fix = declaration(loaded.document.files.get(name), name, package)
         yield Diagnostic(
             "P001",

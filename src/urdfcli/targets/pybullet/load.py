@@ -12,7 +12,7 @@ from ...project.loading import Loader, Outcome, Packages, Said, line_in, package
 
 def built(path: str, variants: frozenset[str], packages: Packages) -> dict:
     """Each link's mass and principal moments (``getDynamicsInfo``), each joint's kind and
-    limits. PyBullet drops ``package://`` and looks the rest up from its working folder
+    limits, how many constraints it made (none for a ``<mimic>``: it has none). PyBullet drops ``package://`` and looks the rest up from its working folder
     first (UrdfFindMeshFile.h): it works, while it loads, in a folder holding one entry per
     package (this runs in a child process of its own)."""
     import pybullet
@@ -33,7 +33,7 @@ def built(path: str, variants: frozenset[str], packages: Packages) -> dict:
             dynamics = pybullet.getDynamicsInfo(body, i, physicsClientId=client)
             links.append({"name": info[12].decode(), "mass": dynamics[0], "inertia": list(dynamics[2])})
             joints.append({"name": info[1].decode(), "type": int(info[2]), "lower": info[8], "upper": info[9]})
-        return {"links": links, "joints": joints}
+        return {"links": links, "joints": joints, "constraints": pybullet.getNumConstraints(physicsClientId=client)}
     finally:
         os.chdir(here)
         pybullet.disconnect(physicsClientId=client)

@@ -9,8 +9,8 @@ from ...model.targets import declared_matrix, declared_moments, declared_tensors
 from .. import build
 from .build import missing_mesh
 from ...rules.base import ERROR, INFO, WARNING, Kind, check, explain
-from ...rules.targets.common import about_joint, inverted_limits, joints_of, limit_at, link_at, names, number, once
-from ...rules.targets.examples import FIXED_JOINT, FLOATING_JOINT, INVERTED_LIMITS, ORDERED_LIMITS, TRIANGLE_BROKEN, TRIANGLE_KEPT
+from ...rules.targets.common import about_joint, inverted_limits, joints_of, limit_at, link_at, mimics_said_once, names, number, once
+from ...rules.targets.examples import FIXED_JOINT, FLOATING_JOINT, INVERTED_LIMITS, MIMIC_GRIPPER, ONE_FINGER, ORDERED_LIMITS, TRIANGLE_BROKEN, TRIANGLE_KEPT
 
 RECOMPUTED_APART = 0.1  # a recomputed tensor further than this (relative) from the declared one is a change worth saying
 
@@ -281,3 +281,24 @@ def unbounded_limit(loaded, given):
         if limit is not None and not limit.has_lower and not limit.has_upper:
             yield about_joint(loaded, "C409", joint, f"PyBullet leaves joint '{joint.name}' unlimited: its <limit> has no lower and no upper",
                               "give lower and upper, or make it continuous", at=limit_at(joint))
+
+
+@check(
+    "C410", "pybullet-ignores-mimic", WARNING, "PyBullet ignores <mimic>.", kind=Kind.TARGET, target="pybullet",
+    doc=explain(
+        """With `--target pybullet`: says, once per model, which joints have a `<mimic>`.""",
+        """PyBullet's parser does not read `<mimic>` (UrdfParser.cpp) and `loadURDF` makes no
+        constraint for it: the joint moves on its own, so a gripper's second finger (the
+        OpenMANIPULATOR-X's `gripper_right_joint`) does not follow the first, and falls
+        under gravity unless a motor holds it. A script couples it after loading
+        (`createConstraint` with `JOINT_GEAR`) or
+        commands both joints.""",
+        MIMIC_GRIPPER,
+        ONE_FINGER,
+    ),
+)
+def ignores_mimic(loaded, given):
+    yield from mimics_said_once(
+        loaded, "C410", "PyBullet ignores the <mimic> of {joints}: {they} freely",
+        "couple them after loadURDF (createConstraint with JOINT_GEAR), or command each joint",
+    )
