@@ -553,6 +553,23 @@ def test_a_parameters_file_named_through_find_is_the_same_file_at_a_revision(tmp
     assert (parameters["old"], parameters["new"]) == ("HEAD~1:robot/config/controllers.yaml", str(repo_a / "robot" / "config" / "other.yaml"))
 
 
+def test_a_revision_named_from_a_folder_outside_the_repository_says_so(tmp_path):
+    """From the root of a colcon workspace (no git repository), HEAD:src/bot/robot.urdf
+    names the file of a repository below: said as such, not only 'no such file'."""
+    repo = tmp_path / "ws" / "src" / "bot"
+    repo.mkdir(parents=True)
+    (repo / "robot.urdf").write_text('<robot name="r"><link name="base"/></robot>\n')
+    git("init", "-q", cwd=repo)
+    git("add", "-A", cwd=repo)
+    git("commit", "-q", "-m", "first", cwd=repo)
+    done = run_cli("diff", "HEAD:src/bot/robot.urdf", "src/bot/robot.urdf", cwd=tmp_path / "ws")
+    assert done.returncode == 2
+    assert done.stderr.decode() == (
+        "urdfcli: HEAD:src/bot/robot.urdf: no such file; read as REV:PATH, no git repository holds the current folder: "
+        "run urdfcli diff from the repository holding src/bot/robot.urdf\n"
+    )
+
+
 def test_revisions_that_cannot_be_read(repository):
     done = run_cli("diff", "HEAD~5:urdf/arm.urdf.xacro", "HEAD:urdf/arm.urdf.xacro", cwd=repository)
     assert done.returncode == 2
