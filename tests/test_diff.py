@@ -547,6 +547,42 @@ def test_a_mesh_named_through_find_is_the_same_file_at_a_revision(tmp_path):
     assert (mesh["old"], mesh["new"]) == ("HEAD~1:robot/meshes/base.stl", str(repo_a / "robot" / "meshes" / "body.stl"))
 
 
+def test_a_parameters_file_named_through_find_is_the_same_file_at_a_revision(tmp_path):
+    """articubot_one's ros2_control.xacro gives gazebo_ros2_control
+    $(find articubot_one)/config/my_controllers.yaml: an absolute path into the revision's
+    temporary copy at one side, into the working tree at the other. Nothing else changed:
+    the robots are the same."""
+    plugin = ('<gazebo><plugin name="gazebo_ros2_control" filename="libgazebo_ros2_control.so">'
+              '<parameters>$(find acme_robot)/config/controllers.yaml</parameters></plugin></gazebo>\n</robot>')
+    repo_a, _ = workspace_robot(tmp_path, WHEELED.replace("</robot>", plugin))
+    robot = repo_a / "robot" / "urdf" / "robot.urdf.xacro"
+    robot.write_text(robot.read_text().replace('radius="0.12"', 'radius="0.1"'))  # back to the first commit's robot
+    done = run_cli("diff", "HEAD~1:robot/urdf/robot.urdf.xacro", "robot/urdf/robot.urdf.xacro", "-f", "json", cwd=repo_a)
+    assert done.returncode == 0, done.stdout.decode()
+    assert json.loads(done.stdout)["changes"] == []
+    robot.write_text(robot.read_text().replace("config/controllers.yaml", "config/other.yaml"))
+    document = json.loads(run_cli("diff", "HEAD~1:robot/urdf/robot.urdf.xacro", "robot/urdf/robot.urdf.xacro", "-f", "json", cwd=repo_a).stdout)
+    (parameters,) = document["changes"]
+    assert (parameters["old"], parameters["new"]) == ("HEAD~1:robot/config/controllers.yaml", str(repo_a / "robot" / "config" / "other.yaml"))
+
+
+def test_a_revision_named_from_a_folder_outside_the_repository_says_so(tmp_path):
+    """From the root of a colcon workspace (no git repository), HEAD:src/bot/robot.urdf
+    names the file of a repository below: said as such, not only 'no such file'."""
+    repo = tmp_path / "ws" / "src" / "bot"
+    repo.mkdir(parents=True)
+    (repo / "robot.urdf").write_text('<robot name="r"><link name="base"/></robot>\n')
+    git("init", "-q", cwd=repo)
+    git("add", "-A", cwd=repo)
+    git("commit", "-q", "-m", "first", cwd=repo)
+    done = run_cli("diff", "HEAD:src/bot/robot.urdf", "src/bot/robot.urdf", cwd=tmp_path / "ws")
+    assert done.returncode == 2
+    assert done.stderr.decode() == (
+        "urdfcli: HEAD:src/bot/robot.urdf: no such file; read as REV:PATH, no git repository holds the current folder: "
+        "run urdfcli diff from the repository holding src/bot/robot.urdf\n"
+    )
+
+
 def test_revisions_that_cannot_be_read(repository):
     done = run_cli("diff", "HEAD~5:urdf/arm.urdf.xacro", "HEAD:urdf/arm.urdf.xacro", cwd=repository)
     assert done.returncode == 2

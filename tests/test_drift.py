@@ -461,6 +461,30 @@ def test_a_ros2_control_block_generated_for_another_mode_names_its_plugin_and_th
     assert found.message.endswith("(ros2_control 'sys' hardware: present here, absent in r.xacro)")
 
 
+def test_a_find_path_of_the_generating_machine_names_the_same_file_here(tmp_path, monkeypatch):
+    """articubot_one's URDF, generated from its install space: gazebo_ros2_control's
+    $(find articubot_one)/config/my_controllers.yaml is written as that machine's absolute
+    path. The same file of the package here is no drift; another file is."""
+    package = tmp_path / "src" / "bot"
+    (package / "config").mkdir(parents=True)
+    (package / "config" / "controllers.yaml").write_text("controller_manager: {}\n")
+    (package / "package.xml").write_text('<package format="3"><name>bot</name></package>\n')
+    model = package / "robot.urdf.xacro"
+    model.write_text(
+        '<robot name="r" xmlns:xacro="http://www.ros.org/wiki/xacro">\n  <link name="base"/>\n'
+        '  <gazebo><plugin name="gazebo_ros2_control" filename="libgazebo_ros2_control.so">'
+        '<parameters>$(find bot)/config/controllers.yaml</parameters></plugin></gazebo>\n</robot>\n'
+    )
+    theirs = generate(model, "/home/them/ws/src/bot/robot.urdf.xacro").replace(str(package), "/home/them/ws/install/bot/share/bot")
+    assert "/home/them/ws/install/bot/share/bot/config/controllers.yaml" in theirs
+    (package / "robot.urdf").write_text(theirs)
+    monkeypatch.chdir(package)
+    assert x110(lint_file("robot.urdf")) == []
+    (package / "robot.urdf").write_text(theirs.replace("controllers.yaml", "other.yaml"))
+    (found,) = x110(lint_file("robot.urdf"))
+    assert "/parameters: /home/them/ws/install/bot/share/bot/config/other.yaml here" in found.message
+
+
 def test_a_urdf_without_header_is_not_said_to_name_its_source(tmp_path, monkeypatch):
     """mir_robot's mir.urdf, a hand-written stub with no xacro header, sits beside mir.urdf.xacro,
     which needs xacro argument mir_hook: the info said "mir.urdf says it was generated from

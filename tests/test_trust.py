@@ -279,6 +279,23 @@ def test_a_material_defined_twice_by_a_file_included_twice_says_so(tmp_path):
     assert n006["hint"] == "first defined at materials.xacro:2; materials.xacro is included twice: include it once"
 
 
+def test_a_part_two_included_files_define_says_to_include_one_of_them(tmp_path):
+    # articubot_one: camera.xacro and depth_camera.xacro each write camera_joint and camera_link,
+    # alternatives of which the model should include one; renaming would make two cameras
+    part = '<robot {ns}>\n<joint name="camera_joint" type="fixed"><parent link="base"/><child link="camera_link"/></joint>\n<link name="camera_link"/>\n</robot>\n'
+    write(tmp_path, "camera.xacro", part.format(ns=XACRO_NS))
+    write(tmp_path, "depth_camera.xacro", part.format(ns=XACRO_NS))
+    model = f'<robot name="r" {XACRO_NS}>\n<link name="base"/>\n<xacro:include filename="camera.xacro"/>\n<xacro:include filename="depth_camera.xacro"/>\n</robot>\n'
+    write(tmp_path, "robot.urdf.xacro", model)
+    done = run_cli("check", "--format", "json", "robot.urdf.xacro", cwd=tmp_path)
+    found = {d["code"]: d for d in json.loads(done.stdout)["files"][0]["diagnostics"]}
+    assert (found["N005"]["path"], found["N005"]["line"]) == ("depth_camera.xacro", 2)
+    assert found["N005"]["hint"] == (
+        "first defined at camera.xacro:2; depth_camera.xacro defines it again: include only one of camera.xacro and depth_camera.xacro, or rename one of them"
+    )
+    assert found["N004"]["hint"].startswith("first defined at camera.xacro:3; depth_camera.xacro defines it again: ")
+
+
 def test_an_attribute_written_on_its_own_line_is_pointed_at(tmp_path):
     joint = ('<link name="base"/><link name="arm"/><joint name="j" type="revolute"><parent link="base"/><child link="arm"/>'
              '<axis xyz="0 0 1"/>\n<limit\n    lower="-1"\n    upper="1,5"\n    effort="1" velocity="1"/></joint>')

@@ -242,6 +242,8 @@ def test_a_library_its_models_include_only_with_an_argument_is_a_gap_the_models_
         "(urdf/arm.urdf.xacro does not read it with its default arguments)"
     )
     assert "not checked through" not in done.stderr.decode()  # X006 says it, once
+    # the hint is the setting to write: the model, and the argument its xacro:if reads
+    assert 'e.g. models = { "urdf/arm.urdf.xacro" = [[], ["hand:=true"]] }' in done.stdout.decode()
     (tmp_path / "pyproject.toml").write_text('[tool.urdfcli]\nmodels = { "urdf/arm.urdf.xacro" = [[], ["hand:=true"]] }\n')
     done, report = check_json("urdf/hand.xacro", cwd=tmp_path)
     assert done.returncode == 0 and report["files"][0]["diagnostics"] == []

@@ -269,12 +269,12 @@ def check_target(target: Target, session: Session) -> Result | Unreadable:
         resolver = session.resolver(config.package_paths, None if path == STDIN else Path(path))
         if target.fragment:  # it cannot be read on its own: only why its models did not check it
             document = Document(path, b"", Path(path), is_xacro=True, files=session.files)
-            loaded = Loaded(document, diagnostics=[unchecked_library(path, target.unchecked, fragment=True, needs=target.needs, stopped=target.stopped)], resolver=resolver)
+            loaded = Loaded(document, diagnostics=[unchecked_library(path, target.unchecked, fragment=True, example=target.example, stopped=target.stopped)], resolver=resolver)
             return Result(path, tuple(linter.lint(loaded, config, rule_set)), None, target.arguments)
         if target.alone:  # a library: its own xacro, and what the source rules find in it
             document, found = read_document(path, session.inputs, resolver, arguments)
             if target.unchecked:
-                found.append(unchecked_library(path, target.unchecked, needs=target.needs, environment=target.environment, stopped=target.stopped))
+                found.append(unchecked_library(path, target.unchecked, example=target.example, environment=target.environment, stopped=target.stopped))
             loaded = Loaded(document, diagnostics=found, resolver=resolver, meshes=session.meshes, sources=sources(document))
             diagnostics = linter.lint(loaded, config, rule_set)
             return Result(path, tuple(diagnostics), None, target.arguments, includes=tuple(document.includes))

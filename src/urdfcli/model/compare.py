@@ -25,6 +25,7 @@ includes and macro calls.
 
 
 import math
+import os
 from collections.abc import Callable, Iterable, Iterator
 from pathlib import Path
 from typing import Any, NamedTuple
@@ -583,11 +584,14 @@ class Comparer:
         return self.links.get(value) or self.joints.get(value) or value
 
     def same_text(self, x: str | None, y: str | None) -> bool:
-        """Two texts of a block: equal, or the same numbers written another way."""
+        """Two texts of a block: equal, the same numbers written another way, or two paths
+        to one place (:func:`compare`'s ``place``)."""
         if x == y:
             return True
         if x is None or y is None:
             return False
+        if os.path.isabs(x) and os.path.isabs(y) and self.place(Path(x)) == self.place(Path(y)):
+            return True  # a $(find) path, in a revision's copy at one side and the working tree at the other
         p, q = numbers_in(x), numbers_in(y)
         if not p or not q or len(p) != len(q):
             return False

@@ -698,6 +698,9 @@ def _twice(document: Document, first: int, again: int) -> str:
         fix = "give the macro a prefix parameter and put it in the names it makes"
     elif same_place and location.file != document.shown:
         fix = f"{location.file} is included twice: include it once"
+    elif location.file != repeated.file and document.shown not in (location.file, repeated.file) and not location.trace and not repeated.trace:
+        # two included files that write the same part (a camera and a depth camera): usually alternatives
+        fix = f"{repeated.file} defines it again: include only one of {location.file} and {repeated.file}, or rename one of them"
     else:
         fix = "rename one of them"
     return f"first defined at {_where(document, first)}; {fix}"

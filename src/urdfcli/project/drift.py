@@ -24,7 +24,7 @@ from typing import TYPE_CHECKING, NamedTuple
 from ..diagnostics import Diagnostic, Edit, Fix, Location, Severity
 from ..model.load import Loaded, load
 from ..read.document import InputError
-from ..read.packages import PackageError, common_tail
+from ..read.packages import PackageError, PackageResolver, common_tail
 from ..read.xacro_scan import ARGUMENT, COMPUTED, header_source
 from ..rules.base import joined
 from ..rules.drift import X110
@@ -181,12 +181,30 @@ def drift(loaded: Loaded, config: Config, session: Session, asked: bool = False)
         return [_diagnostic(loaded, f"{_name(loaded)} {said}, which was not compared: {found}", None, uncompared)]
     from ..model.compare import compare  # (only where a URDF's source is found)
 
-    comparison = compare(loaded, found, DRIFT_TOLERANCE)
+    comparison = compare(loaded, found, DRIFT_TOLERANCE, _here(found.resolver))
     if comparison.same:
         return []
     arguments = _explaining_arguments(comparison.changes, found, session)
     diagnostic = _diagnostic(loaded, summary(comparison, _name(loaded), source), _hint(loaded, source, found, arguments, config))
     return [diagnostic.with_fix(regeneration_fix(loaded, source, found, arguments))]
+
+
+def _here(resolver: PackageResolver) -> Callable[[Path], Path]:
+    """Where a file the generating machine named by its absolute path (what xacro's
+    ``$(find NAME)`` writes: ``/home/them/ws/install/NAME/share/NAME/config/c.yaml``) is
+    on this one: the same file of package NAME, found here; a file of this machine, itself."""
+
+    def place(path: Path) -> Path:
+        if path.exists():
+            return path.resolve()
+        parts = path.parts
+        for at in range(len(parts) - 2, 0, -1):  # the innermost package first
+            root = resolver.find(parts[at])
+            if root is not None and root.joinpath(*parts[at + 1:]).exists():
+                return root.joinpath(*parts[at + 1:]).resolve()
+        return path
+
+    return place
 
 
 def regeneration_fix(loaded: Loaded, source: GeneratedFrom, found: Loaded, arguments: dict[str, str | None]) -> Fix:

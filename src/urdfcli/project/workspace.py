@@ -493,6 +493,9 @@ def _own(document: Document, start: Path | None, index: Index) -> list[str]:
     return inside
 
 
+Example = tuple[str, tuple[tuple[str, ...], ...]]  # a model, and its argument sets (NAME:=VALUE each) for [tool.urdfcli] models
+
+
 class Target(NamedTuple):
     """One expansion to run: a model with an argument set, or a library on its own."""
 
@@ -501,7 +504,7 @@ class Target(NamedTuple):
     alone: bool = False
     unchecked: str = ""  # alone: why the models that include it could not check it
     fragment: bool = False  # alone: a file that cannot be read on its own; only why no model checked it is said
-    needs: tuple[str, str] | None = None  # alone: a model that includes it and the xacro argument it needs
+    example: Example | None = None  # alone: for the hint, a model that includes it and the argument sets that would check it through that model
     environment: tuple[tuple[str, ...], ...] = ()  # alone: the ways environment variables make its models read it (NAME=VALUE each)
     stopped: str | None = None  # alone: a model that includes it whose expansion stopped at an error before reading it, when no other reason is
 
@@ -536,6 +539,16 @@ class Gates(NamedTuple):
 
     include: tuple[tuple[Gate, ...], ...] = ()
     call: tuple[tuple[Gate, ...], ...] = ()
+
+    def arguments(self, reading: bool, calling: bool) -> tuple[str, ...]:
+        """The first way in (of reading the library, of calling its macros) that xacro
+        arguments alone open, each known: its NAME:=VALUE assignments (a condition's
+        "1" or "0" written true or false, as boolean arguments are); () when none is."""
+        ways = (self.include if reading else ()) + (self.call if calling else ())
+        for way in ways:
+            if all(function == "arg" and value in ("1", "0") for function, _, value in way):
+                return tuple(dict.fromkeys(f"{name}:={'true' if value == '1' else 'false'}" for _, name, value in way))
+        return ()
 
     def environment(self, reading: bool, calling: bool) -> tuple[tuple[str, ...], ...]:
         """The ways in (of reading the library, of calling its macros) that environment
@@ -1099,7 +1112,7 @@ def _library_result(
     notes: list[str] = []  # why a model could not be used, or that none includes it
     found: list[Diagnostic] = []
     needing: list[str] = []  # models that include it but cannot be expanded without arguments
-    needs: tuple[str, str] | None = None  # the first of them and the argument it needs, for the hint
+    example: Example | None = None  # the first of them and the argument it needs, for the hint
     unread: list[tuple[str, str]] = []  # models that expand but do not read it: (label, with which arguments)
     stopped: list[str] = []  # models whose expansion stopped at an error before reading it
     used: list[Result] = []  # the models it was checked through
@@ -1111,7 +1124,7 @@ def _library_result(
             continue
         if model.needs_argument is not None:  # the model cannot be expanded as it is: say how to make it, do not fail the library
             needing.append(f"{target.label} needs '{model.needs_argument}'")
-            needs = needs or (target.path, model.needs_argument)
+            example = example or (target.path, ((f"{model.needs_argument}:=VALUE",),))
             notes.append(
                 f"not checked through {target.label}: it needs xacro argument '{model.needs_argument}'; "
                 "list the argument sets it is checked with in [tool.urdfcli] models"
@@ -1128,6 +1141,8 @@ def _library_result(
             continue
         if not reached:  # an include under xacro:if, or a file name made from an argument
             unread.append((target.label, "the arguments it is checked with" if target.arguments else "its default arguments"))
+            opening = entry.gates.arguments(reading=True, calling=False)
+            example = example or ((target.path, ((), opening)) if opening else None)
             continue
         checked_through.append(target.label)
         used.append(model)
@@ -1139,6 +1154,8 @@ def _library_result(
             if target.label in checked_through:
                 arguments = "the arguments it is checked with" if target.arguments else "its default arguments"
                 uncalled.append(f"{target.label} reads it but calls none of its macros ({names}) with {arguments}")
+                opening = entry.gates.arguments(reading=False, calling=True)
+                example = example or ((target.path, ((), opening)) if opening else None)
         checked_through = []
     unused = _unused_in_all(used, resolved)
     for model in used:  # mistakes written in the library, and whatever breaks a model that uses it
@@ -1150,12 +1167,12 @@ def _library_result(
     environment = entry.gates.environment(reading=bool(unread), calling=bool(uncalled))
     if not checked_through and fragment:
         if reasons:  # its X006 says why (the models that do not read it, or stop before), once
-            said = outcome(Target(entry.path, alone=True, unchecked="; ".join(reasons), fragment=True, needs=needs, stopped=stopped_only))
+            said = outcome(Target(entry.path, alone=True, unchecked="; ".join(reasons), fragment=True, example=example, stopped=stopped_only))
             found += said.diagnostics if isinstance(said, Result) else ()
         else:
             notes.append("a fragment of the models that include it (it cannot be read on its own), and none read it: not checked")
     elif not checked_through:  # checked on its own: its X006 says why, and what would check it
-        alone = outcome(Target(entry.path, alone=True, unchecked="; ".join(reasons), needs=needs, environment=environment, stopped=stopped_only))
+        alone = outcome(Target(entry.path, alone=True, unchecked="; ".join(reasons), example=example, environment=environment, stopped=stopped_only))
         if isinstance(alone, Unreadable):
             unreadable.append(alone)
         else:
@@ -1175,6 +1192,11 @@ def _library_result(
                 diagnostics.append(diagnostic)
     read = tuple(dict.fromkeys(file for model in used for file in (model.path, *model.includes)))
     return Result(entry.path, tuple(diagnostics), library=Library(tuple(checked_through), tuple(notes), fragment=fragment, read=read))
+
+
+def _toml_sets(sets: tuple[tuple[str, ...], ...]) -> str:
+    """Argument sets as TOML writes them: ``[[], ["hand:=true"]]``."""
+    return "[" + ", ".join("[" + ", ".join(f'"{assignment}"' for assignment in one) + "]" for one in sets) + "]"
 
 
 def _may_include(maybe: Maybe, outcome, fragment: bool = False) -> str:
@@ -1199,23 +1221,24 @@ def _may_include(maybe: Maybe, outcome, fragment: bool = False) -> str:
 
 
 def unchecked_library(
-    path: str, unchecked: str, fragment: bool = False, needs: tuple[str, str] | None = None, environment: tuple[tuple[str, ...], ...] = (),
+    path: str, unchecked: str, fragment: bool = False, example: Example | None = None, environment: tuple[tuple[str, ...], ...] = (),
     stopped: str | None = None,
 ) -> Diagnostic:
     """X006: a library (or a fragment, which cannot be read alone) that no model including it
-    could check; ``needs``: a model that includes it and the argument it needs, for the hint;
+    could check; ``example``: a model that includes it and the argument sets that would check
+    it (the argument it needs; its default set and the one that makes it read the library), for the hint;
     ``environment``: the ways environment variables make its models use it (NAME=VALUE
     each), which no argument set can give (``[tool.urdfcli] models`` sets xacro arguments only);
     ``stopped``: the model whose expansion stopped at an error before reading it, the only reason."""
     what = "xacro fragment not checked" if fragment else "xacro library checked on its own only"
-    model, argument = needs if needs is not None else ("urdf/robot.urdf.xacro", "name")
+    model, sets = example if example is not None else ("urdf/robot.urdf.xacro", (("name:=VALUE",),))
     if stopped is not None:
         hint = f"correct the error that stops the expansion of {stopped}, then check again"
     elif environment:
         others = "".join(f" (or {' '.join(way)})" for way in environment[1:3])
         hint = f"its models use it only under environment variables, which argument sets cannot set: check with them set, e.g. {' '.join(environment[0])} urdfcli lint {path}{others}"
     else:
-        hint = f'list their argument sets in [tool.urdfcli] models (paths from the configuration\'s folder), e.g. models = {{ "{model}" = [["{argument}:=VALUE"]] }}'
+        hint = f'list their argument sets in [tool.urdfcli] models (paths from the configuration\'s folder), e.g. models = {{ "{model}" = {_toml_sets(sets)} }}'
     return Diagnostic("X006", f"{what}: no model that includes it could check it ({unchecked})", Location("<stdin>" if path == STDIN else path), hint=hint)
 
 

@@ -59,6 +59,8 @@ def revision_of(text: str, cwd: Path | None = None) -> Revision | None:
         return None
     top = _git(cwd, "rev-parse", "--show-toplevel")
     if top is None:
+        if (cwd / path).is_file():  # REV:PATH given from a colcon workspace above the repository
+            raise RevisionError(f"{text}: no such file; read as REV:PATH, no git repository holds the current folder: run urdfcli diff from the repository holding {path}")
         return None
     if _git(cwd, "rev-parse", "--verify", "--quiet", f"{revision}^{{commit}}") is None:
         return None
