@@ -192,6 +192,25 @@ def test_the_command_line_sets_its_ctrl_c_handler_before_it_imports_anything():
     assert done.returncode == 0 and done.stdout.splitlines()[0] == "[]", done.stdout + done.stderr
 
 
+def test_an_error_that_follows_a_swallowed_ctrl_c_ends_as_interrupted(monkeypatch, capsys):
+    """Ctrl-C reaches lint's -j workers too: when the main process's KeyboardInterrupt was
+    swallowed by a library (trimesh importing scipy) and the pool then breaks for the
+    workers Ctrl-C ended, the run is interrupted (130), not an internal error (2)."""
+    from urdfcli import cli
+
+    def command(**_):
+        try:
+            os.kill(os.getpid(), signal.SIGINT)  # Ctrl-C, as the terminal sends it
+            time.sleep(1)
+        except BaseException:  # noqa: BLE001 - as the library does
+            pass
+        raise RuntimeError("A process in the process pool was terminated abruptly")
+
+    monkeypatch.setattr(cli, "program_for", lambda argv: command)
+    assert cli.main(["lint", "robot.urdf"]) == 130
+    assert capsys.readouterr().err == "urdfcli: interrupted\n"
+
+
 @pytest.mark.parametrize("after", [0.2, 1.0, 2.0])  # while Python starts; while trimesh imports scipy (it swallows the exception); later
 def test_lint_interrupted_restores_the_terminal(after):
     data = example_robot_data()
@@ -199,7 +218,7 @@ def test_lint_interrupted_restores_the_terminal(after):
     out, code = on_terminal("lint", "-P", f"example-robot-data={data}", *map(str, models), interrupt_after=after)
     # 130, or ended by the signal itself: CPython does that at exit when the interrupt reached code
     # it ran for a library (scipy's modules, while trimesh imports them); a shell shows 130 for both
-    assert code in (130, -signal.SIGINT)
+    assert code in (130, -signal.SIGINT), text(out)[-1000:]
     assert "urdfcli: interrupted" in text(out)
     assert cursor_restored(out)
     assert "Traceback" not in text(out)

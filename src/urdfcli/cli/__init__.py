@@ -139,6 +139,9 @@ def main(argv: list[str] | None = None) -> int:
     except BrokenPipeError:
         return 1
     except Exception as error:  # noqa: BLE001
+        if ctrl_c.pressed:  # what Ctrl-C caused once a library swallowed it: a -j worker it ended (BrokenProcessPool)
+            sys.stderr.write("urdfcli: interrupted\n")
+            return INTERRUPTED
         if os.environ.get("URDFCLI_DEBUG"):
             raise
         name = " ".join(a for a in argv if not a.startswith("-"))
