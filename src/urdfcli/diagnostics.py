@@ -166,3 +166,9 @@ class Diagnostic(NamedTuple):
     def sort_key(self) -> tuple:
         trace = tuple((c.file, c.line or 0, c.column or 0) for c in self.location.trace)
         return (self.path, self.line or 0, self.column or 0, self.code, trace)
+
+
+def joined(parts) -> str:
+    """``a, b and c``: how a message lists what it names."""
+    parts = list(parts)
+    return ", ".join(parts[:-1]) + " and " + parts[-1] if len(parts) > 1 else "".join(parts)

@@ -14,7 +14,7 @@ from functools import cached_property
 from pathlib import Path
 from typing import TYPE_CHECKING
 
-from ..diagnostics import Diagnostic, Location
+from ..diagnostics import Diagnostic, Location, joined
 from ..read import positions
 from ..read.document import STDIN, SUPPRESSION_MARK, Document, Inputs, read_document
 from ..read.packages import PackageResolver
@@ -195,7 +195,8 @@ def needs_argument(diagnostic: Diagnostic, name: str, key: str, also: list[str] 
     names = (name, *also)
     given = " ".join(f"{n}:=VALUE" for n in names)
     table = ", ".join(f'{n} = "VALUE"' for n in names)
-    more = f" (the files also read {_listed(also)} without a <xacro:arg> default: they may be needed too)" if also else ""
+    listed = joined(f"'{n}'" for n in also)
+    more = f" (the files also read {listed} without a <xacro:arg> default: they may be needed too)" if also else ""
     hint = (f'give {given} after the file on the command line{more}, or in pyproject.toml: [tool.urdfcli.xacro-args] "{key}" = {{ {table} }} '
             f"(each of several values: [tool.urdfcli] models)")
     return diagnostic._replace(message=message, hint=diagnostic.hint or hint)
@@ -215,11 +216,6 @@ def also_unset(document: Document, mappings: dict[str, str], missing: str) -> li
     declared = {d.name for scanned in scans for d in scanned.definitions if d.kind == "argument"}
     read = {s.argument.strip() for scanned in scans for s in scanned.substitutions if s.function == "arg"}
     return sorted(n for n in read - declared - set(mappings) - {missing} if _ARGUMENT_NAME.fullmatch(n))
-
-
-def _listed(names) -> str:
-    quoted = [f"'{n}'" for n in names]
-    return quoted[0] if len(quoted) == 1 else f"{', '.join(quoted[:-1])} and {quoted[-1]}"
 
 
 def _unreadable(loaded: Loaded, error: XmlError) -> None:

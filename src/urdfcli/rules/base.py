@@ -20,7 +20,7 @@ from inspect import cleandoc
 from types import MappingProxyType
 from typing import TYPE_CHECKING, Any, NamedTuple
 
-from ..diagnostics import Applicability, Severity
+from ..diagnostics import Applicability, Severity, joined  # noqa: F401 - the rules list names with it
 from .suggestions import close_matches
 
 if TYPE_CHECKING:
@@ -249,7 +249,3 @@ def names(items, most: int = 3) -> str:
     return shown + (f" and {len(items) - most} more" if len(items) > most else "")
 
 
-def joined(parts) -> str:
-    """``a, b and c``."""
-    parts = list(parts)
-    return ", ".join(parts[:-1]) + " and " + parts[-1] if len(parts) > 1 else "".join(parts)
